@@ -1,0 +1,173 @@
+"""The decoupling law ``F*(r, r', a)`` and the arm's terms, evaluated by the compiled C."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import native
+from .errors import HybridError, NonFiniteError, SingularConfigurationError
+from .parameters import Arm, Circle, Plane
+
+#: default lower bound on ``2 |det J| / |J|_F^2`` (``~ |sin q2|``) before a pose counts as singular
+SINGULAR_TOL = 1e-3
+_STATUS = {1: "singular", 2: "non-finite"}
+
+
+def check_surface(surface) -> str:
+    if not isinstance(surface, (Circle, Plane)):
+        raise HybridError(f"surface must be a hybrid.Circle or hybrid.Plane, got {type(surface).__name__}")
+    return surface.kind
+
+
+def check_arm(arm) -> None:
+    if not isinstance(arm, Arm):
+        raise HybridError(f"arm must be a hybrid.Arm (see hybrid.paper_arm()), got {type(arm).__name__}")
+
+
+def as_states(name: str, x) -> np.ndarray:
+    """``x`` as a C-contiguous float64 array of shape ``(2,)`` or ``(N, 2)``."""
+    try:
+        arr = np.ascontiguousarray(x, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise HybridError(f"{name} must be numbers of shape (2,) or (N, 2), got {x!r:.80}") from None
+    if np.iscomplexobj(x):
+        raise HybridError(f"{name} must be real, got complex values")
+    if arr.ndim not in (1, 2) or arr.shape[-1] != 2 or (arr.ndim == 2 and arr.shape[0] == 0):
+        raise HybridError(f"{name} must have shape (2,) or (N, 2) with N >= 1, got {arr.shape}")
+    return arr
+
+
+def status_error(status: int, where: str, **inputs) -> HybridError:
+    """The exception for a native status code, naming the inputs that caused it."""
+    shown = ", ".join(f"{k}={np.array2string(np.asarray(v), precision=6)}" for k, v in inputs.items())
+    if status == 1:
+        return SingularConfigurationError(
+            f"{where}: the Jacobian is singular or nearly so at {shown} (elbow q2 near 0 or pi); "
+            "keep the arm away from full extension/folding, or lower singular_tol")
+    bad = [k for k, v in inputs.items() if not np.isfinite(np.asarray(v, float)).all()]
+    hint = f"non-finite input {', '.join(bad)}" if bad else "the inputs are finite but extreme"
+    return NonFiniteError(f"{where}: result is NaN or infinite ({hint}) at {shown}")
+
+
+@dataclass
+class DecouplingLaw:
+    """Compiled task-space decoupling law for one arm model and one surface.
+
+    ``law(q, qdot, a, Fc)`` gives ``F*`` [N] (base frame), ``law.torque(...)`` gives
+    ``tau = J^T F*`` [N m]. ``q`` [rad], ``qdot`` [rad/s], ``a`` the task-frame acceleration
+    (tangent, normal) [m/s^2], ``Fc`` the measured contact force on the robot (base frame)
+    [N]; each of shape ``(2,)``, or ``(N, 2)`` for N states in one native call.
+    """
+
+    arm: Arm
+    surface: Circle | Plane
+    curvature: bool = False
+    backend: str = "sympy"
+    singular_tol: float = SINGULAR_TOL
+    _fn: object = field(init=False, repr=False)
+
+    def __post_init__(self):
+        check_arm(self.arm)
+        kind = check_surface(self.surface)
+        if self.backend not in ("sympy", "casadi"):
+            raise HybridError(f"backend must be 'sympy' or 'casadi', got {self.backend!r}")
+        if not (np.isfinite(self.singular_tol) and 0 <= self.singular_tol < 1):
+            raise HybridError(f"singular_tol = {self.singular_tol}; give a value in [0, 1)")
+        mod = native.load(self.backend)
+        self._ffi = mod.ffi
+        name = f"hybrid_{self.backend}_decoupling_law_{kind}"
+        self._single = getattr(mod.lib, name)
+        self._batch = getattr(mod.lib, name + "_batch")
+        # parameters live in C buffers for the law's lifetime: a call passes pointers only
+        self._arm = mod.ffi.new("double[]", self.arm.as_array().tolist())
+        self._surface = mod.ffi.new("double[]", self.surface.as_array().tolist())
+        self._opts = mod.ffi.new("double[]", [1.0 if self.curvature else 0.0])
+
+    def evaluate(self, q, qdot, a, Fc) -> tuple[np.ndarray, np.ndarray]:
+        """``(F*, tau)`` for one state (shape ``(2,)``) or N states (shape ``(N, 2)``)."""
+        ins = [as_states(n, v) for n, v in (("q", q), ("qdot", qdot), ("a", a), ("Fc", Fc))]
+        shape = ins[0].shape
+        if any(x.shape != shape for x in ins):
+            raise HybridError("q, qdot, a and Fc must have the same shape, got "
+                              + ", ".join(str(x.shape) for x in ins))
+        F, tau = np.empty(shape), np.empty(shape)
+        fb = self._ffi.from_buffer
+        ptrs = [fb("double[]", x) for x in ins]
+        if len(shape) == 1:
+            status = self._single(*ptrs, self._arm, self._surface, self._opts, self.singular_tol,
+                                  fb("double[]", F), fb("double[]", tau))
+            if status:
+                raise status_error(status, "decoupling_law", q=ins[0], qdot=ins[1], a=ins[2], Fc=ins[3])
+            return F, tau
+        status = np.empty(shape[0], dtype=np.intc)
+        failed = self._batch(shape[0], *ptrs, self._arm, self._surface, self._opts, self.singular_tol,
+                             fb("double[]", F), fb("double[]", tau), fb("int[]", status))
+        if failed:
+            i = int(np.flatnonzero(status)[0])
+            raise status_error(int(status[i]), f"decoupling_law, state {i} of {shape[0]} "
+                               f"({failed} failed)", q=ins[0][i], qdot=ins[1][i], a=ins[2][i], Fc=ins[3][i])
+        return F, tau
+
+    def __call__(self, q, qdot, a, Fc) -> np.ndarray:
+        """Cartesian ``F*`` [N] in the base frame."""
+        return self.evaluate(q, qdot, a, Fc)[0]
+
+    def torque(self, q, qdot, a, Fc) -> np.ndarray:
+        """Joint torques ``tau = J^T F*`` [N m]."""
+        return self.evaluate(q, qdot, a, Fc)[1]
+
+
+def decoupling_law(arm: Arm, surface: Circle | Plane, curvature: bool = False, *,
+                   backend: str = "sympy", singular_tol: float = SINGULAR_TOL) -> DecouplingLaw:
+    """The paper's decoupling law (NOTES section 2) for ``arm`` on ``surface``, compiled.
+
+    ``curvature=True`` includes the term ``R'(r, r') r'`` (the paper runs without it).
+    Parameters are run-time inputs: another arm or surface needs no recompilation.
+    """
+    return DecouplingLaw(arm, surface, bool(curvature), backend, singular_tol)
+
+
+def _call(backend: str, name: str, inputs: dict, outputs: dict, singular_tol: float | None = None):
+    mod = native.load(backend)
+    fb = mod.ffi.from_buffer
+    ins = {k: np.ascontiguousarray(v, dtype=float) for k, v in inputs.items()}
+    outs = {k: np.empty(n) for k, n in outputs.items()}
+    extra = [] if singular_tol is None else [singular_tol]
+    status = getattr(mod.lib, f"hybrid_{backend}_{name}")(
+        *(fb("double[]", v) for v in ins.values()), *extra, *(fb("double[]", v) for v in outs.values()))
+    if status:
+        raise status_error(status, name, **ins)
+    return tuple(outs.values())
+
+
+def arm_terms(arm: Arm, q, qdot, *, backend: str = "sympy") -> dict[str, np.ndarray]:
+    """Kinematic and dynamic terms of ``arm`` at one state, from the generated C.
+
+    Keys: ``r`` [m], ``J`` (2x2), ``Jdot_qdot`` [m/s^2], ``B`` (2x2) [kg m^2], ``n`` [N m].
+    """
+    check_arm(arm)
+    q, qdot, p = as_states("q", q), as_states("qdot", qdot), arm.as_array()
+    r, J, Jdqd = _call(backend, "arm_kinematics", {"q": q, "qd": qdot, "arm": p}, {"r": 2, "J": 4, "Jdqd": 2})
+    B, n = _call(backend, "arm_dynamics", {"q": q, "qd": qdot, "arm": p}, {"B": 4, "n": 2})
+    return {"r": r, "J": J.reshape(2, 2), "Jdot_qdot": Jdqd, "B": B.reshape(2, 2), "n": n}
+
+
+def operational_space(arm: Arm, q, qdot, *, backend: str = "sympy",
+                      singular_tol: float = SINGULAR_TOL) -> tuple[np.ndarray, np.ndarray]:
+    """``B_o(r)`` [kg] (2x2) and ``n_o(r, r')`` [N] of Khatib's operational-space model."""
+    check_arm(arm)
+    Bo, no = _call(backend, "operational_space",
+                   {"q": as_states("q", q), "qd": as_states("qdot", qdot), "arm": arm.as_array()},
+                   {"Bo": 4, "no": 2}, singular_tol)
+    return Bo.reshape(2, 2), no
+
+
+def task_frame(surface: Circle | Plane, r, rdot, *, backend: str = "sympy") -> tuple[np.ndarray, np.ndarray]:
+    """Task-frame rotation ``R(r)`` (rows: tangent, normal) and its derivative ``R'(r, r')``."""
+    kind = check_surface(surface)
+    R, Rd = _call(backend, f"task_frame_{kind}",
+                  {"r": as_states("r", r), "rd": as_states("rdot", rdot), "surface": surface.as_array()},
+                  {"R": 4, "Rd": 4})
+    return R.reshape(2, 2), Rd.reshape(2, 2)

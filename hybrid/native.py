@@ -1,0 +1,156 @@
+"""Compile the generated C once, cache it, load it: the thin native call path.
+
+Each unit in ``generated/`` is compiled with the system C compiler into a CPython
+extension (cffi, API mode) the first time it is used. The result is cached under
+``$HYBRID_CACHE_DIR`` (default ``~/.cache/hybrid``) by a key that covers the C source,
+the cffi declarations, the compiler's identity, the flags and the Python ABI. Builds
+take a file lock and replace files atomically, so concurrent processes never see a
+partial library; a cache entry whose checksum does not match is rebuilt, not loaded.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import fcntl
+import hashlib
+import importlib.util
+import io
+import json
+import os
+import shutil
+import subprocess
+import sysconfig
+import tempfile
+from functools import lru_cache
+from pathlib import Path
+
+import cffi
+
+from .errors import NativeBuildError
+
+#: flags for the extension; no -ffast-math: the status checks rely on isfinite()
+CFLAGS = ("-O3", "-fPIC", "-fno-math-errno", "-std=gnu99")
+
+
+def source_dir() -> Path:
+    """Where the generated C lives: ``generated/`` of a checkout, else the installed copy."""
+    here = Path(__file__).resolve().parent
+    for candidate in (here.parent / "generated", here / "_generated"):
+        if (candidate / "hybrid_sympy.c").is_file():
+            return candidate
+    raise NativeBuildError(
+        "the generated C sources are missing (looked in generated/ next to the package); "
+        "run `python -m hybrid regenerate` in a checkout of the project")
+
+
+def cache_dir() -> Path:
+    root = os.environ.get("HYBRID_CACHE_DIR") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "hybrid")
+    return Path(root)
+
+
+def compiler() -> tuple[str, str]:
+    """``(path, identity)`` of the C compiler (``$CC`` or ``cc``)."""
+    name = os.environ.get("CC", "cc").split()[0]
+    path = shutil.which(name) or shutil.which("gcc")
+    if path is None:
+        raise NativeBuildError(
+            f"no C compiler found (tried $CC={os.environ.get('CC', '')!r}, cc, gcc): install one, "
+            "e.g. `apt-get install gcc` on Debian/Ubuntu or `xcode-select --install` on macOS, "
+            "or set CC to its path")
+    try:
+        ident = subprocess.run([path, "--version"], capture_output=True, text=True, check=True,
+                               timeout=60).stdout.splitlines()[0]
+    except (OSError, subprocess.SubprocessError, IndexError) as exc:
+        raise NativeBuildError(f"the C compiler {path} does not run ({exc}); reinstall it or set CC") from exc
+    return path, ident
+
+
+def cdef_of(header: str) -> str:
+    """The declarations between the header's cdef markers, for cffi."""
+    try:
+        return header.split("/* cdef-begin */", 1)[1].split("/* cdef-end */", 1)[0]
+    except IndexError:
+        raise NativeBuildError("generated header lacks its cdef markers; run `python -m hybrid regenerate`") from None
+
+
+def _sha256(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def _atomic_write(path: Path, data: bytes) -> None:
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=path.name + ".tmp")
+    try:
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def _build(name: str, source: str, cdef: str, src_dir: Path, cc: str, target: Path) -> None:
+    ffi = cffi.FFI()
+    ffi.cdef(cdef)
+    ffi.set_source(name, source)
+    with tempfile.TemporaryDirectory(dir=target.parent) as tmp:
+        c_file = Path(tmp) / f"{name}.c"
+        with contextlib.redirect_stdout(io.StringIO()):  # cffi announces what it writes
+            ffi.emit_c_code(str(c_file))
+        so = Path(tmp) / target.name
+        includes = {sysconfig.get_paths()["include"], sysconfig.get_paths()["platinclude"]}
+        cmd = [cc, *CFLAGS, "-shared", *(f"-I{p}" for p in sorted(includes)), f"-I{src_dir}",
+               str(c_file), "-o", str(so), "-lm"]
+        proc = subprocess.run(cmd, capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise NativeBuildError(f"compiling {name} failed:\n$ {' '.join(cmd)}\n{proc.stderr[-4000:]}\n"
+                                   "Is the Python development header (Python.h) installed? "
+                                   "On Debian/Ubuntu: apt-get install python3-dev")
+        _atomic_write(target, so.read_bytes())
+
+
+@lru_cache(maxsize=None)
+def load(backend: str = "sympy"):
+    """The compiled unit ``hybrid_<backend>`` as a cffi module (``.ffi``, ``.lib``)."""
+    src_dir = source_dir()
+    c_path, h_path = src_dir / f"hybrid_{backend}.c", src_dir / f"hybrid_{backend}.h"
+    if not c_path.is_file():
+        raise NativeBuildError(f"no generated unit for backend {backend!r} in {src_dir}; "
+                               "known backends are 'sympy' and 'casadi'")
+    header = h_path.read_text()
+    cdef = cdef_of(header)
+    cc, ident = compiler()
+    key_material = json.dumps({
+        "c": c_path.read_text(), "h": header, "cc": [cc, ident], "flags": CFLAGS,
+        "abi": sysconfig.get_config_var("EXT_SUFFIX"), "cffi": cffi.__version__,
+    }, sort_keys=True)
+    key = hashlib.sha256(key_material.encode()).hexdigest()[:20]
+    name = f"_hybrid_{backend}_{key}"
+    entry = cache_dir() / name
+    entry.mkdir(parents=True, exist_ok=True)
+    so = entry / f"{name}{sysconfig.get_config_var('EXT_SUFFIX')}"
+    manifest = entry / "manifest.json"
+
+    def valid() -> bool:
+        try:
+            return so.is_file() and json.loads(manifest.read_text())["sha256"] == _sha256(so)
+        except (OSError, ValueError, KeyError):
+            return False
+
+    if not valid():
+        with open(entry / ".lock", "w") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)  # one builder at a time; others wait, then reuse
+            if not valid():
+                _build(name, f'#include "hybrid_{backend}.c"', cdef, src_dir, cc, so)
+                _atomic_write(manifest, json.dumps({"sha256": _sha256(so), "compiler": ident,
+                                                    "flags": CFLAGS}).encode())
+    spec = importlib.util.spec_from_file_location(name, so)
+    module = importlib.util.module_from_spec(spec)
+    try:
+        spec.loader.exec_module(module)
+    except ImportError as exc:
+        manifest.unlink(missing_ok=True)  # make the next call rebuild it
+        raise NativeBuildError(f"loading {so} failed ({exc}); it will be rebuilt on the next try") from exc
+    return module
