@@ -1,0 +1,68 @@
+"""Write ``generated/`` from the symbolic models, or check that it is up to date."""
+
+from __future__ import annotations
+
+import difflib
+import os
+import tempfile
+from pathlib import Path
+
+from .emit import BACKENDS, build_unit, generated_dir, is_hand_edited
+
+UPDATE_HINT = "run `python -m hybrid regenerate` and commit generated/"
+
+
+def expected_files(backends=BACKENDS) -> dict[str, str]:
+    """Every generated file's name and the text the generators produce now."""
+    files: dict[str, str] = {}
+    for b in backends:
+        files.update(build_unit(b).files)
+    return files
+
+
+def _diff(name: str, old: str, new: str, limit: int = 40) -> str:
+    lines = list(difflib.unified_diff(old.splitlines(), new.splitlines(), f"committed/{name}",
+                                      f"generated-now/{name}", lineterm="", n=1))
+    more = f"\n    ... ({len(lines) - limit} more diff lines)" if len(lines) > limit else ""
+    return "\n".join("    " + ln for ln in lines[:limit]) + more
+
+
+def check(target: Path | None = None) -> list[str]:
+    """Problems with the committed files (empty when they are up to date)."""
+    target = target or generated_dir()
+    problems = []
+    for name, text in expected_files().items():
+        path = target / name
+        if not path.is_file():
+            problems.append(f"{name}: missing; {UPDATE_HINT}")
+        elif (old := path.read_text()) != text:
+            why = "hand-edited" if is_hand_edited(old) else "stale"
+            problems.append(f"{name}: {why}; {UPDATE_HINT}\n{_diff(name, old, text)}")
+    return problems
+
+
+def write(target: Path | None = None, force: bool = False) -> list[str]:
+    """Regenerate every file; refuse (unless ``force``) to overwrite a hand-edited one.
+
+    Returns the names of the files that changed. Files are replaced atomically.
+    """
+    target = target or generated_dir()
+    target.mkdir(parents=True, exist_ok=True)
+    files = expected_files()
+    edited = [n for n in files if (target / n).is_file() and is_hand_edited((target / n).read_text())]
+    if edited and not force:
+        raise FileExistsError(
+            f"{', '.join(edited)} in {target} were edited by hand (their content no longer matches "
+            "the hash in their first line); move your changes into codegen/, or pass --force to "
+            "overwrite them")
+    changed = []
+    for name, text in files.items():
+        path = target / name
+        if path.is_file() and path.read_text() == text:
+            continue
+        fd, tmp = tempfile.mkstemp(dir=target, prefix=name + ".tmp")
+        with os.fdopen(fd, "w") as f:
+            f.write(text)
+        os.replace(tmp, path)
+        changed.append(name)
+    return changed

@@ -1,0 +1,72 @@
+"""Command line: ``python -m hybrid {regenerate,paper,bench}``.
+
+Bad usage or input prints one line on stderr and exits with status 2 (``--debug`` shows
+the traceback).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import traceback
+from pathlib import Path
+
+from .errors import HybridError
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):  # one line, status 2, like every other bad input
+        raise HybridError(f"{self.prog}: {message} (see --help)")
+
+
+def _regenerate(args) -> int:
+    from codegen import regenerate
+
+    target = Path(args.target) if args.target else None
+    if args.check:
+        problems = regenerate.check(target)
+        if problems:
+            print("generated/ is out of date:\n" + "\n".join(problems), file=sys.stderr)
+            return 1
+        print("generated/ is up to date")
+        return 0
+    try:
+        changed = regenerate.write(target, force=args.force)
+    except FileExistsError as exc:
+        raise HybridError(str(exc)) from None
+    print(f"regenerated: {', '.join(changed)}" if changed else "generated/ was already up to date")
+    return 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = _Parser(prog="python -m hybrid", description=__doc__.split("\n\n")[0])
+    p.add_argument("--debug", action="store_true", help="show tracebacks")
+    sub = p.add_subparsers(dest="command", required=True, parser_class=_Parser)
+
+    r = sub.add_parser("regenerate", help="rewrite generated/ from the symbolic models")
+    r.add_argument("--check", action="store_true", help="only compare; exit 1 when generated/ is stale")
+    r.add_argument("--force", action="store_true", help="overwrite generated files edited by hand")
+    r.add_argument("--target", help="write into this folder instead of generated/")
+    r.set_defaults(func=_regenerate)
+
+    from . import bench, experiment_cli
+
+    experiment_cli.add_parser(sub)
+    bench.add_parser(sub)
+    return p
+
+
+def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    debug = "--debug" in argv
+    try:
+        args = build_parser().parse_args(argv)
+        return args.func(args)
+    except HybridError as exc:
+        if debug:
+            traceback.print_exc()
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130

@@ -1,0 +1,135 @@
+"""Plain NumPy implementation of the paper's equations, written independently of codegen/.
+
+It serves as the test reference for the generated C and as the "what a user would
+otherwise write" path of the benchmarks. Closed forms for the two-link arm follow
+NOTES section 3; the law follows NOTES section 2 literally (forming ``B_o`` and ``n_o``).
+All functions take one state; parameters are the arrays of the generated C.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+SURFACE_KINDS = ("plane", "circle")
+
+
+def kinematics(q, qd, arm):
+    """``r`` [m], ``J`` (2x2), ``J'(q, q') q'`` [m/s^2] of the two-link arm."""
+    L1, L2 = arm[0], arm[1]
+    c1, s1, c12, s12 = np.cos(q[0]), np.sin(q[0]), np.cos(q[0] + q[1]), np.sin(q[0] + q[1])
+    r = np.array([L1 * c1 + L2 * c12, L1 * s1 + L2 * s12])
+    J = np.array([[-L1 * s1 - L2 * s12, -L2 * s12], [L1 * c1 + L2 * c12, L2 * c12]])
+    w1, w12 = qd[0], qd[0] + qd[1]
+    Jdqd = -np.array([L1 * c1 * w1**2 + L2 * c12 * w12**2, L1 * s1 * w1**2 + L2 * s12 * w12**2])
+    return r, J, Jdqd
+
+
+def dynamics(q, qd, arm):
+    """``B(q)`` [kg m^2] and ``n(q, q')`` [N m]: Coriolis/centrifugal, viscous, gravity (-y)."""
+    L1, _, m1, m2, d1, d2, I1, I2, V1, V2, g = arm
+    c2, s2 = np.cos(q[1]), np.sin(q[1])
+    b22 = I2 + m2 * d2**2
+    b12 = b22 + m2 * L1 * d2 * c2
+    b11 = I1 + m1 * d1**2 + b22 + m2 * L1**2 + 2 * m2 * L1 * d2 * c2
+    B = np.array([[b11, b12], [b12, b22]])
+    h = m2 * L1 * d2 * s2
+    c1, c12 = np.cos(q[0]), np.cos(q[0] + q[1])
+    grav2 = g * m2 * d2 * c12
+    grav1 = g * (m1 * d1 + m2 * L1) * c1 + grav2
+    n = np.array([-h * (2 * qd[0] * qd[1] + qd[1] ** 2) + V1 * qd[0] + grav1,
+                  h * qd[0] ** 2 + V2 * qd[1] + grav2])
+    return B, n
+
+
+def frame(kind, r, rd, surface):
+    """Task-frame rotation ``R(r)`` (rows: tangent, normal) and ``R'(r, r')``."""
+    if kind == "plane":
+        n = np.asarray(surface[2:4], float) / np.hypot(surface[2], surface[3])
+        nd = np.zeros(2)
+    elif kind == "circle":
+        d = np.asarray(r, float) - surface[:2]
+        dist = np.hypot(*d)
+        n = d / dist
+        nd = (rd - n * (n @ rd)) / dist
+    else:
+        raise ValueError(kind)
+    R = np.array([[-n[1], n[0]], [n[0], n[1]]])
+    Rd = np.array([[-nd[1], nd[0]], [nd[0], nd[1]]])
+    return R, Rd
+
+
+def operational_space(q, qd, arm):
+    """``B_o = J^-T B J^-1`` and ``n_o = J^-T n - B_o J' q'``."""
+    _, J, Jdqd = kinematics(q, qd, arm)
+    B, n = dynamics(q, qd, arm)
+    Jinv = np.linalg.inv(J)
+    Bo = Jinv.T @ B @ Jinv
+    return Bo, Jinv.T @ n - Bo @ Jdqd
+
+
+def decoupling_law(kind, q, qd, a, Fc, arm, surface, curvature):
+    """``(F*, tau)`` of NOTES section 2: ``F* = B_o R^T (a - R' r') + n_o - F_c``."""
+    r, J, _ = kinematics(q, qd, arm)
+    rd = J @ qd
+    R, Rd = frame(kind, r, rd, surface)
+    Bo, no = operational_space(q, qd, arm)
+    F = Bo @ R.T @ (np.asarray(a) - (Rd @ rd if curvature else 0.0)) + no - Fc
+    return F, J.T @ F
+
+
+def sensor_force(x, arm, plant):
+    """Force of the sensor on the robot ``F_c = K_s (s - r) + D_s (s' - r')`` [N]."""
+    q, qd, s, sd = x[0:2], x[2:4], x[4:6], x[6:8]
+    r, J, _ = kinematics(q, qd, arm)
+    return plant[1] * (s - r) + plant[2] * (sd - J @ qd)
+
+
+def contact(kind, s, sd, plant, surface):
+    """Penetration ``delta`` [m], normal force ``N`` [N], friction [N], slide speed [m/s], frame at s."""
+    _, _, _, k_e, d_e, gamma, v_eps = plant
+    R, _ = frame(kind, s, sd, surface)
+    t, n = R[0], R[1]
+    if kind == "circle":
+        delta = surface[2] - np.hypot(*(s - surface[:2]))
+    else:
+        delta = -(s - surface[:2]) @ n
+    N = max(0.0, k_e * delta - d_e * (n @ sd)) if delta > 0 else 0.0
+    v = t @ sd
+    return delta, N, -gamma * N * np.tanh(v / v_eps), v, t, n
+
+
+def plant_rhs(kind, x, tau, arm, plant, surface):
+    """State derivative of arm + elastic sensor + surface, state ``(q, q', s, s')``."""
+    q, qd, s, sd = x[0:2], x[2:4], x[4:6], x[6:8]
+    _, J, _ = kinematics(q, qd, arm)
+    B, n = dynamics(q, qd, arm)
+    Fc = sensor_force(x, arm, plant)
+    _, N, f, _, t, nrm = contact(kind, s, sd, plant, surface)
+    qdd = np.linalg.solve(B, tau + J.T @ Fc - n)
+    sdd = (N * nrm + f * t - Fc) / plant[0]
+    return np.concatenate([qd, qdd, sd, sdd])
+
+
+def plant_advance(kind, x, tau, arm, plant, surface, h, nsteps, trajectory=None):
+    """``nsteps`` RK4 steps of ``h`` [s] with ``tau`` held; fills ``trajectory`` rows if given."""
+    x = np.array(x, float)
+    for k in range(nsteps):
+        k1 = plant_rhs(kind, x, tau, arm, plant, surface)
+        k2 = plant_rhs(kind, x + 0.5 * h * k1, tau, arm, plant, surface)
+        k3 = plant_rhs(kind, x + 0.5 * h * k2, tau, arm, plant, surface)
+        k4 = plant_rhs(kind, x + h * k3, tau, arm, plant, surface)
+        x = x + h / 6 * (k1 + 2 * (k2 + k3) + k4)
+        if trajectory is not None:
+            trajectory[k] = x
+    return x
+
+
+def plant_outputs(kind, x, arm, plant, surface):
+    """The plant's output record, in the order of ``codegen.model.PLANT_OUTPUTS``."""
+    q, qd, s, sd = x[0:2], x[2:4], x[4:6], x[6:8]
+    r, J, _ = kinematics(q, qd, arm)
+    rd = J @ qd
+    R, _ = frame(kind, r, rd, surface)
+    Fc = sensor_force(x, arm, plant)
+    delta, N, f, v, _, _ = contact(kind, s, sd, plant, surface)
+    return np.array([*r, *(R @ rd), *Fc, *(R @ Fc), *s, delta, N, f, v])

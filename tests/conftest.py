@@ -1,0 +1,35 @@
+"""Random arms, surfaces and states shared by the tests (seeded: failures reproduce)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import hybrid
+
+
+def random_arm(rng: np.random.Generator, gravity: bool | None = None) -> hybrid.Arm:
+    """A physically valid two-link arm with every parameter drawn at random."""
+    L1, L2 = rng.uniform(0.2, 1.0, 2)
+    g = (9.81 if rng.random() < 0.5 else 0.0) if gravity is None else (9.81 if gravity else 0.0)
+    return hybrid.Arm(L1=L1, L2=L2, m1=rng.uniform(0, 5), m2=rng.uniform(0.5, 5),
+                      d1=rng.uniform(0, L1), d2=rng.uniform(0, L2), I1=rng.uniform(0.01, 0.5),
+                      I2=rng.uniform(0.01, 0.5), V1=rng.uniform(0, 2), V2=rng.uniform(0, 2), gravity=g)
+
+
+def random_surface(rng: np.random.Generator, kind: str):
+    if kind == "circle":
+        return hybrid.Circle(center=rng.uniform(-1, 1, 2), radius=rng.uniform(0.05, 0.5))
+    return hybrid.Plane(point=rng.uniform(-1, 1, 2), normal=rng.normal(size=2))
+
+
+def random_states(rng: np.random.Generator, n: int, elbow: int = 1) -> dict[str, np.ndarray]:
+    """``n`` non-singular states (|sin q2| >= sin 0.2) with the given elbow sign."""
+    q = np.column_stack([rng.uniform(-np.pi, np.pi, n), elbow * rng.uniform(0.2, np.pi - 0.2, n)])
+    return {"q": q, "qdot": rng.normal(0, 2, (n, 2)), "a": rng.normal(0, 3, (n, 2)),
+            "Fc": rng.normal(0, 10, (n, 2))}
+
+
+@pytest.fixture
+def rng():
+    return np.random.default_rng(20261122)

@@ -1,0 +1,129 @@
+"""The compiled decoupling law and arm terms against independent references."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from conftest import random_arm, random_states, random_surface
+
+import hybrid
+from hybrid import reference as ref
+
+KINDS = ("plane", "circle")
+BACKENDS = ("sympy", "casadi")
+
+
+def rel_err(x, y):
+    return np.linalg.norm(x - y, axis=-1) / np.maximum(np.linalg.norm(y, axis=-1), 1e-12)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("kind", KINDS)
+@pytest.mark.parametrize("curvature", [False, True])
+@pytest.mark.parametrize("elbow", [1, -1])
+def test_law_matches_numpy_reference(rng, backend, kind, curvature, elbow):
+    worst = 0.0
+    for _ in range(20):  # 20 random arms and surfaces x 100 states
+        arm, surface = random_arm(rng), random_surface(rng, kind)
+        st = random_states(rng, 100, elbow)
+        law = hybrid.decoupling_law(arm, surface, curvature=curvature, backend=backend)
+        F, tau = law.evaluate(st["q"], st["qdot"], st["a"], st["Fc"])
+        for i in range(100):
+            Fr, taur = ref.decoupling_law(kind, st["q"][i], st["qdot"][i], st["a"][i], st["Fc"][i],
+                                          arm.as_array(), surface.as_array(), curvature)
+            worst = max(worst, rel_err(F[i], Fr), rel_err(tau[i], taur))
+        # the single-state path gives the batch's numbers
+        np.testing.assert_array_equal(law(st["q"][0], st["qdot"][0], st["a"][0], st["Fc"][0]), F[0])
+    assert worst < 1e-9, worst
+
+
+def test_backends_agree_on_every_kernel(rng):
+    for kind in KINDS:
+        arm, surface = random_arm(rng), random_surface(rng, kind)
+        st = random_states(rng, 500)
+        laws = [hybrid.decoupling_law(arm, surface, curvature=True, backend=b) for b in BACKENDS]
+        (F1, t1), (F2, t2) = (law.evaluate(st["q"], st["qdot"], st["a"], st["Fc"]) for law in laws)
+        assert rel_err(F1, F2).max() < 1e-12 and rel_err(t1, t2).max() < 1e-12
+        for i in range(20):
+            terms = [hybrid.arm_terms(arm, st["q"][i], st["qdot"][i], backend=b) for b in BACKENDS]
+            for key in terms[0]:
+                np.testing.assert_allclose(terms[0][key], terms[1][key], rtol=1e-12, atol=1e-13)
+            frames = [hybrid.task_frame(surface, st["a"][i], st["Fc"][i], backend=b) for b in BACKENDS]
+            np.testing.assert_allclose(frames[0], frames[1], rtol=1e-12, atol=1e-13)
+
+
+def test_arm_terms_match_closed_forms(rng):
+    for _ in range(50):
+        arm = random_arm(rng)
+        st = random_states(rng, 1, elbow=rng.choice([-1, 1]))
+        q, qd = st["q"][0], st["qdot"][0]
+        t = hybrid.arm_terms(arm, q, qd)
+        r, J, Jdqd = ref.kinematics(q, qd, arm.as_array())
+        B, n = ref.dynamics(q, qd, arm.as_array())
+        for got, want in ((t["r"], r), (t["J"], J), (t["Jdot_qdot"], Jdqd), (t["B"], B), (t["n"], n)):
+            np.testing.assert_allclose(got, want, rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(t["B"], arm.inertia_matrix(q[1]), rtol=1e-12)
+        Bo, no = hybrid.operational_space(arm, q, qd)
+        Bo_ref, no_ref = ref.operational_space(q, qd, arm.as_array())
+        np.testing.assert_allclose(Bo, Bo_ref, rtol=1e-10, atol=1e-10)
+        np.testing.assert_allclose(no, no_ref, rtol=1e-10, atol=1e-10)
+
+
+def test_jdot_qdot_by_finite_differences(rng):
+    h = 1e-6
+    for _ in range(50):
+        arm = random_arm(rng)
+        st = random_states(rng, 1)
+        q, qd = st["q"][0], st["qdot"][0]
+        J_plus = hybrid.arm_terms(arm, q + h * qd, qd)["J"]
+        J_minus = hybrid.arm_terms(arm, q - h * qd, qd)["J"]
+        fd = (J_plus - J_minus) / (2 * h) @ qd
+        np.testing.assert_allclose(hybrid.arm_terms(arm, q, qd)["Jdot_qdot"], fd, rtol=1e-6, atol=1e-7)
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_task_frame_derivative_by_finite_differences(rng, kind):
+    h = 1e-6
+    for _ in range(50):
+        surface = random_surface(rng, kind)
+        r = rng.uniform(-1, 1, 2)
+        rd = rng.normal(size=2)
+        R, Rd = hybrid.task_frame(surface, r, rd)
+        fd = (hybrid.task_frame(surface, r + h * rd, rd)[0] - hybrid.task_frame(surface, r - h * rd, rd)[0]) / (2 * h)
+        np.testing.assert_allclose(Rd, fd, rtol=1e-5, atol=1e-6)
+        np.testing.assert_allclose(R @ R.T, np.eye(2), atol=1e-14)  # a rotation...
+        assert np.linalg.det(R) == pytest.approx(-1.0) or np.linalg.det(R) == pytest.approx(1.0)
+        np.testing.assert_allclose(R[1], surface.normal_at(r) if kind == "circle" else surface.normal,
+                                   atol=1e-14)  # ...whose second row is the outward normal
+
+
+@pytest.mark.parametrize("kind", KINDS)
+@pytest.mark.parametrize("curvature", [False, True])
+def test_decoupling_identity(rng, kind, curvature):
+    """Applying tau to the exact model gives R r'' + R' r' = a (R r'' = a with R' dropped)."""
+    for _ in range(200):
+        arm, surface = random_arm(rng), random_surface(rng, kind)
+        st = {k: v[0] for k, v in random_states(rng, 1, elbow=rng.choice([-1, 1])).items()}
+        tau = hybrid.decoupling_law(arm, surface, curvature).torque(st["q"], st["qdot"], st["a"], st["Fc"])
+        B, n = ref.dynamics(st["q"], st["qdot"], arm.as_array())
+        r, J, Jdqd = ref.kinematics(st["q"], st["qdot"], arm.as_array())
+        qdd = np.linalg.solve(B, tau + J.T @ st["Fc"] - n)   # the robot in contact
+        rdd, rd = J @ qdd + Jdqd, J @ st["qdot"]
+        R, Rd = ref.frame(kind, r, rd, surface.as_array())
+        ydot = R @ rdd + (Rd @ rd if curvature else 0.0)
+        np.testing.assert_allclose(ydot, st["a"], rtol=1e-9, atol=1e-9 * (1 + np.abs(st["a"]).max()))
+
+
+def test_parameters_are_runtime_inputs():
+    """Another arm or surface is another array, not another build."""
+    from dataclasses import replace
+
+    from hybrid import native
+
+    arm = hybrid.paper_arm()
+    before = native.load.cache_info().currsize
+    law1 = hybrid.decoupling_law(arm, hybrid.Circle((0.5, 0.0), 0.2))
+    law2 = hybrid.decoupling_law(replace(arm, m2=3.85), hybrid.Circle((0.4, 0.1), 0.3))
+    assert native.load.cache_info().currsize <= max(before, 1)
+    args = ([0.3, 1.2], [0.2, -0.1], [0.1, 0.2], [1.0, 2.0])
+    assert not np.allclose(law1(*args), law2(*args))
