@@ -1,0 +1,215 @@
+"""The paper's experiment as data: every setting of NOTES section 5, validated."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass, field, fields, replace
+
+import numpy as np
+
+from .errors import HybridError
+from .parameters import Arm, Circle, Plane, _finite, paper_arm
+
+CONTROLLERS = ("task", "khatib")
+FRAMES = ("actual", "desired")
+BACKENDS = ("sympy", "casadi", "numpy")
+
+
+@dataclass(frozen=True)
+class Step:
+    """A reference that jumps from ``before`` to ``after`` at time ``at`` [s]."""
+
+    before: float
+    after: float
+    at: float
+
+    def __post_init__(self):
+        _finite("Step", before=self.before, after=self.after, at=self.at)
+
+    def __call__(self, t: float) -> float:
+        return self.before if t < self.at else self.after
+
+    def integral(self, t: float) -> float:
+        """``int_0^t`` of the reference (arc length for a speed) [unit s]."""
+        return self.before * min(t, self.at) + self.after * max(0.0, t - self.at)
+
+
+@dataclass(frozen=True)
+class Gains:
+    """Loop gains of NOTES section 4 (task frame, per axis).
+
+    Velocity: ``a_t = v_d' + KPv e_v + KIv int e_v + KI2v int int e_v``.
+    Force: ``a_n = -KPf e_F - KDf v_n - KIf int e_F`` with ``e_F = F_d - F_c,n``.
+    """
+
+    KPv: float = 40.0     # 1/s
+    KIv: float = 200.0    # 1/s^2
+    KI2v: float = 1000.0  # 1/s^3
+    KPf: float = 2.0      # 1/kg = 1/m_d
+    KDf: float = 90.0     # 1/s = d_v/m_d
+    KIf: float = 25.0     # 1/(kg s)
+
+    def __post_init__(self):
+        _finite("Gains", **asdict(self))
+        for k, v in asdict(self).items():
+            if v < 0:
+                raise HybridError(f"gain {k} = {v} is negative; loop gains must be >= 0")
+
+
+@dataclass(frozen=True)
+class Sensor:
+    """2-D elastic force sensor at the arm tip: tip mass on an isotropic spring-damper."""
+
+    mass: float = 0.025       # m_s [kg]
+    stiffness: float = 1000.0  # K_s [N/m]
+    damping: float = 7.0      # D_s [N s/m]
+
+    def __post_init__(self):
+        _finite("Sensor", **asdict(self))
+        if self.mass <= 0 or self.stiffness <= 0 or self.damping < 0:
+            raise HybridError(f"Sensor needs mass > 0, stiffness > 0, damping >= 0; got {self}")
+
+
+@dataclass(frozen=True)
+class Contact:
+    """Rigid surface as a unilateral penalty ``N = max(0, k_e delta + d_e delta')``, Coulomb friction."""
+
+    stiffness: float = 1e5        # k_e [N/m]
+    damping: float = 50.0         # d_e [N s/m]
+    friction: float = 0.2         # gamma
+    friction_smoothing: float = 1e-3  # v_eps of tanh(v_t / v_eps) [m/s]
+
+    def __post_init__(self):
+        _finite("Contact", **asdict(self))
+        if self.stiffness <= 0 or self.damping < 0 or self.friction < 0 or self.friction_smoothing <= 0:
+            raise HybridError("Contact needs stiffness > 0, damping >= 0, friction >= 0, "
+                              f"friction_smoothing > 0; got {self}")
+
+
+@dataclass(frozen=True)
+class Experiment:
+    """One closed-loop run: plant, controller, references, integration settings.
+
+    ``arm`` is the true arm; the controller's model is ``arm.with_model_error(model_error,
+    viscous_compensation)``. ``frame``: task frame at the actual contact point ``R(r)`` or
+    at the desired one ``R(r_d)`` (the paper's Figure 3). ``backend``: which compiled unit
+    runs the plant and the law, or ``"numpy"`` for the plain NumPy reference path.
+    """
+
+    controller: str = "task"
+    integral: bool = True
+    curvature: bool = False
+    frame: str = "actual"
+    model_error: float = 0.1
+    viscous_compensation: float = 0.5
+    arm: Arm = field(default_factory=paper_arm)
+    surface: Circle | Plane = field(default_factory=lambda: Circle(center=(0.5, 0.0), radius=0.2))
+    start_point: tuple[float, float] = (0.3, 0.0)
+    elbow: int = 1
+    sensor: Sensor = field(default_factory=Sensor)
+    contact: Contact = field(default_factory=Contact)
+    gains: Gains = field(default_factory=Gains)
+    force_reference: Step = field(default_factory=lambda: Step(10.0, 20.0, 0.4))
+    speed_reference: Step = field(default_factory=lambda: Step(0.3, 0.6, 1.0))
+    duration: float = 2.0
+    step: float = 1e-4
+    sample_time: float = 1e-2
+    backend: str = "sympy"
+
+    def __post_init__(self):
+        if self.controller not in CONTROLLERS:
+            raise HybridError(f"unknown controller {self.controller!r}; choose one of {CONTROLLERS}")
+        if self.frame not in FRAMES:
+            raise HybridError(f"unknown frame {self.frame!r}; choose one of {FRAMES}")
+        if self.backend not in BACKENDS:
+            raise HybridError(f"unknown backend {self.backend!r}; choose one of {BACKENDS}")
+        if not isinstance(self.arm, Arm):
+            raise HybridError(f"arm must be a hybrid.Arm, got {type(self.arm).__name__}")
+        if not isinstance(self.surface, (Circle, Plane)):
+            raise HybridError(f"unknown surface {self.surface!r}; give a hybrid.Circle or hybrid.Plane")
+        if self.elbow not in (1, -1):
+            raise HybridError(f"elbow = {self.elbow}; give +1 (q2 > 0) or -1 (q2 < 0)")
+        _finite("Experiment", duration=self.duration, step=self.step, sample_time=self.sample_time)
+        if self.duration <= 0:
+            raise HybridError(f"duration = {self.duration} s; give a positive duration")
+        if self.step <= 0 or self.sample_time <= 0:
+            raise HybridError(f"step = {self.step} s and sample_time = {self.sample_time} s must be positive")
+        ratio = self.sample_time / self.step
+        if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
+            raise HybridError(f"sample_time = {self.sample_time} s is not a whole multiple of step = "
+                              f"{self.step} s; choose step = sample_time / k for a whole k")
+        # fastest plant mode: sensor mass on the contact (and sensor) spring-dampers
+        rate = max(math.sqrt((self.contact.stiffness + self.sensor.stiffness) / self.sensor.mass),
+                   (self.contact.damping + self.sensor.damping) / self.sensor.mass)
+        if self.step * rate > 1.0:
+            raise HybridError(
+                f"step = {self.step} s is too large for the contact: its fastest mode is {rate:.0f} rad/s "
+                f"and RK4 needs step * rate <= 1 for accuracy; use step <= {1.0 / rate:.2e} s")
+        if self.model_error <= -1 or self.viscous_compensation < 0:
+            raise HybridError(f"model_error = {self.model_error} must be > -1 and viscous_compensation = "
+                              f"{self.viscous_compensation} >= 0")
+        from .loops import check_loops
+
+        check_loops(self)
+
+    @property
+    def steps_per_sample(self) -> int:
+        return round(self.sample_time / self.step)
+
+    @property
+    def n_samples(self) -> int:
+        return math.ceil(self.duration / self.sample_time - 1e-9)
+
+    def controller_arm(self) -> Arm:
+        """The controller's (wrong) model of the arm."""
+        return self.arm.with_model_error(self.model_error, self.viscous_compensation)
+
+    def effective_gains(self) -> Gains:
+        """The gains in force: without integral action ``KI2v = KIf = 0`` (NOTES section 4)."""
+        return self.gains if self.integral else replace(self.gains, KI2v=0.0, KIf=0.0)
+
+    def plant_array(self) -> np.ndarray:
+        """The ``plant[7]`` array of the generated C."""
+        s, c = self.sensor, self.contact
+        return np.array([s.mass, s.stiffness, s.damping, c.stiffness, c.damping, c.friction,
+                         c.friction_smoothing])
+
+    def to_dict(self) -> dict:
+        d = asdict(self)
+        d["surface"] = {"kind": self.surface.kind, **asdict(self.surface)}
+        return d
+
+    @classmethod
+    def from_dict(cls, d: dict) -> Experiment:
+        d = dict(d)
+        surf = dict(d.pop("surface"))
+        kind = surf.pop("kind")
+        surface = Circle(**surf) if kind == "circle" else Plane(**surf)
+        parts = {"arm": Arm, "sensor": Sensor, "contact": Contact, "gains": Gains,
+                 "force_reference": Step, "speed_reference": Step}
+        for k, typ in parts.items():
+            d[k] = typ(**d[k])
+        d["start_point"] = tuple(d["start_point"])
+        return cls(surface=surface, **d)
+
+
+def paper_experiment(**overrides) -> Experiment:
+    """The paper's experiment (NOTES section 5), with any setting overridden by keyword.
+
+    Besides every field of :class:`Experiment`, the gains can be given one by one
+    (``KPv=50``) and ``F_d`` / ``v_d`` replace the force / speed references.
+    """
+    names = {f.name for f in fields(Experiment)}
+    gain_names = {f.name for f in fields(Gains)}
+    aliases = {"F_d": "force_reference", "v_d": "speed_reference"}
+    gains = {k: overrides.pop(k) for k in list(overrides) if k in gain_names}
+    for alias, name in aliases.items():
+        if alias in overrides:
+            overrides[name] = overrides.pop(alias)
+    unknown = sorted(set(overrides) - names)
+    if unknown:
+        raise HybridError(f"unknown setting(s) {', '.join(unknown)} for paper_experiment; known: "
+                          f"{', '.join(sorted(names | gain_names | set(aliases)))}")
+    if gains:
+        overrides["gains"] = replace(overrides.get("gains", Gains()), **gains)
+    return Experiment(**overrides)

@@ -1,0 +1,52 @@
+"""Stability of the task-frame loops as sampled by the controller (linear, decoupled).
+
+With ``y' = a`` the closed loop per task axis is linear. Each loop is discretised
+exactly as it runs: zero-order hold on ``a`` over the sample period ``T``, integrals
+advanced once per sample. A loop is accepted when every eigenvalue lies inside the unit
+circle; otherwise the error names the loop and says why.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .errors import HybridError
+
+
+def velocity_loop_matrix(KP: float, KI: float, KI2: float, T: float) -> np.ndarray:
+    """State ``(v, int e, int int e)`` from one sample to the next, ``v_d = 0``."""
+    # at sample k: I1 += T e, I2 += T I1, a = KP e + KI I1 + KI2 I2, v += T a, with e = -v
+    upd = np.array([[1.0, 0, 0], [-T, 1, 0], [-T * T, T, 1]])        # integrals after the update
+    a_row = np.array([-KP, KI, KI2]) @ upd
+    return upd + np.outer([T, 0, 0], a_row)
+
+
+def force_loop_matrix(KP: float, KD: float, KI: float, k: float, T: float) -> np.ndarray:
+    """State ``(beta, beta', int e_F)`` with ``F_c,n = -k beta`` (``beta`` along the normal)."""
+    # e_F = F_d - F_c,n = k beta (F_d = 0); I += T e_F; a = -KP e_F - KD beta' - KI I
+    upd = np.array([[1.0, 0, 0], [0, 1, 0], [T * k, 0, 1]])
+    a_row = np.array([-KP * k, -KD, -KI]) @ upd
+    hold = np.array([T * T / 2, T, 0.0])
+    step = np.array([[1.0, T, 0], [0, 1, 0], [0, 0, 1]])
+    return step @ upd + np.outer(hold, a_row)
+
+
+def check_loops(exp) -> None:
+    """Raise :class:`HybridError` when a loop of ``exp`` is unstable at its sample time."""
+    g, T = exp.effective_gains(), exp.sample_time
+    k = 1.0 / (1.0 / exp.sensor.stiffness + 1.0 / exp.contact.stiffness)  # sensor and surface in series
+    # an integrator whose gain is 0 feeds nothing back: its eigenvalue 1 is left out
+    used_v = 1 + (g.KIv != 0 or g.KI2v != 0) + (g.KI2v != 0)
+    used_f = 2 + (g.KIf != 0)
+    loops = {
+        "velocity (tangent) loop": (velocity_loop_matrix(g.KPv, g.KIv, g.KI2v, T)[:used_v, :used_v],
+                                    "needs KPv*KIv > KI2v and KPv*T well below 2"),
+        "force (normal) loop": (force_loop_matrix(g.KPf, g.KDf, g.KIf, k, T)[:used_f, :used_f],
+                                "needs KDf*KPf > KIf, and KDf*T and sqrt(KPf*k)*T well below 2"),
+    }
+    for name, (M, rule) in loops.items():
+        radius = max(abs(np.linalg.eigvals(M)))
+        if radius >= 1.0:
+            raise HybridError(
+                f"the {name} is unstable with gains {g} at sample_time {T} s "
+                f"(contact stiffness {k:.0f} N/m): spectral radius {radius:.3f} >= 1; it {rule}")

@@ -1,0 +1,341 @@
+"""The runner: plant integrated by fixed-step RK4 between samples, controller under zero-order hold.
+
+The loop over control samples is Python; everything inside a sample (the plant's RK4
+steps, the controller's model terms) is compiled C, or the NumPy reference when
+``Experiment.backend == "numpy"``. Runs are deterministic.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from . import native, reference
+from .controllers import HybridController
+from .errors import HybridError, NonFiniteError, SingularConfigurationError
+from .experiment import Experiment
+from .law import decoupling_law, status_error
+from .metrics import PLANT_OUTPUTS, compute_metrics
+
+OUT = {name: i for i, name in enumerate(PLANT_OUTPUTS)}
+
+
+class SimulationError(HybridError):
+    """The simulation cannot go on (singular pose, non-finite state); says when and where."""
+
+
+# ------------------------------------------------------------------ model terms
+
+
+class NativeTerms:
+    """The controller's model evaluated by the compiled C (single states, preallocated)."""
+
+    def __init__(self, exp: Experiment):
+        arm, surf = exp.controller_arm(), exp.surface
+        curvature = exp.curvature and exp.frame == "actual"
+        self._law = decoupling_law(arm, surf, curvature, backend=exp.backend)
+        mod = native.load(exp.backend)
+        self._ffi = mod.ffi
+        self._measure = getattr(mod.lib, f"hybrid_{exp.backend}_task_measurement_{surf.kind}")
+        self._frame = getattr(mod.lib, f"hybrid_{exp.backend}_task_frame_{surf.kind}")
+        self._arm = mod.ffi.new("double[]", arm.as_array().tolist())
+        self._surface = mod.ffi.new("double[]", surf.as_array().tolist())
+        self._out = np.empty(8)
+        self._R = np.empty(8)
+
+    def measure(self, q, qdot, Fc):
+        fb, o = self._ffi.from_buffer, self._out
+        p = fb("double[]", o)
+        status = self._measure(fb("double[]", q), fb("double[]", qdot), fb("double[]", Fc), self._arm,
+                               self._surface, p, p + 2, p + 4, p + 6)
+        if status:
+            raise status_error(status, "task measurement", q=q, qdot=qdot, Fc=Fc)
+        return o[0:2].copy(), o[2:4].copy(), o[4:6].copy(), o[6:8].copy()
+
+    def frame(self, r, rdot):
+        fb, o = self._ffi.from_buffer, self._R
+        p = fb("double[]", o)
+        status = self._frame(fb("double[]", np.ascontiguousarray(r, float)),
+                             fb("double[]", np.ascontiguousarray(rdot, float)), self._surface, p, p + 4)
+        if status:
+            raise status_error(status, "task frame", r=r, rdot=rdot)
+        return o[0:4].reshape(2, 2).copy(), o[4:8].reshape(2, 2).copy()
+
+    def law(self, q, qdot, a, Fc):
+        return self._law.torque(q, qdot, a, Fc)
+
+
+class NumpyTerms:
+    """The same terms from the plain NumPy reference (the benchmarks' and tests' baseline)."""
+
+    def __init__(self, exp: Experiment):
+        self.kind = exp.surface.kind
+        self.arm, self.surface = exp.controller_arm().as_array(), exp.surface.as_array()
+        self.curvature = exp.curvature and exp.frame == "actual"
+
+    def measure(self, q, qdot, Fc):
+        r, J, _ = reference.kinematics(q, qdot, self.arm)
+        rd = J @ qdot
+        R, _ = reference.frame(self.kind, r, rd, self.surface)
+        return r, rd, R @ rd, R @ Fc
+
+    def frame(self, r, rdot):
+        return reference.frame(self.kind, np.asarray(r, float), np.asarray(rdot, float), self.surface)
+
+    def law(self, q, qdot, a, Fc):
+        _, J, _ = reference.kinematics(q, qdot, self.arm)
+        if abs(np.linalg.det(J)) < 1e-12:
+            raise SingularConfigurationError(f"decoupling law: singular Jacobian at q={q}")
+        return reference.decoupling_law(self.kind, q, qdot, a, Fc, self.arm, self.surface, self.curvature)[1]
+
+
+# ------------------------------------------------------------------------ plant
+
+
+class NativePlant:
+    """Arm + sensor + surface, integrated by the compiled RK4 (``plant_advance``)."""
+
+    def __init__(self, exp: Experiment):
+        mod = native.load(exp.backend)
+        kind, b = exp.surface.kind, exp.backend
+        self._ffi = mod.ffi
+        self._advance = getattr(mod.lib, f"hybrid_{b}_plant_advance_{kind}")
+        self._outputs = getattr(mod.lib, f"hybrid_{b}_plant_outputs_{kind}_batch")
+        self._arm = mod.ffi.new("double[]", exp.arm.as_array().tolist())
+        self._plant = mod.ffi.new("double[]", exp.plant_array().tolist())
+        self._surface = mod.ffi.new("double[]", exp.surface.as_array().tolist())
+        self._done = mod.ffi.new("int *")
+        self.h = exp.step
+
+    def advance(self, x: np.ndarray, tau: np.ndarray, nsteps: int, trajectory: np.ndarray) -> int:
+        """Advance ``x`` in place, writing each step's state to ``trajectory``; steps done."""
+        fb = self._ffi.from_buffer
+        self._advance(fb("double[]", x), fb("double[]", tau), self._arm, self._plant, self._surface,
+                      self.h, nsteps, fb("double[]", trajectory), self._done)
+        return self._done[0]
+
+    def outputs(self, states: np.ndarray) -> np.ndarray:
+        states = np.ascontiguousarray(states)
+        out = np.empty((len(states), len(PLANT_OUTPUTS)))
+        status = np.empty(len(states), dtype=np.intc)
+        fb = self._ffi.from_buffer
+        self._outputs(len(states), fb("double[]", states), self._arm, self._plant, self._surface,
+                      fb("double[]", out), fb("int[]", status))
+        return out
+
+
+class NumpyPlant:
+    """The same plant stepped by the NumPy reference."""
+
+    def __init__(self, exp: Experiment):
+        self.kind, self.h = exp.surface.kind, exp.step
+        self.arm, self.plant, self.surface = exp.arm.as_array(), exp.plant_array(), exp.surface.as_array()
+
+    def advance(self, x, tau, nsteps, trajectory):
+        for k in range(nsteps):
+            x[:] = reference.plant_advance(self.kind, x, tau, self.arm, self.plant, self.surface, self.h, 1)
+            if not np.isfinite(x).all():
+                return k
+            trajectory[k] = x
+        return nsteps
+
+    def outputs(self, states):
+        return np.array([reference.plant_outputs(self.kind, x, self.arm, self.plant, self.surface)
+                         for x in states])
+
+
+# -------------------------------------------------------------- initial state
+
+
+def initial_state(exp: Experiment) -> np.ndarray:
+    """At rest, sensor tip on the surface at ``start_point``, pressing with ``F_d(0)``.
+
+    The sensor tip penetrates ``F/k_e`` (surface in equilibrium), the arm tip sits ``F/K_s``
+    beyond it (sensor spring in equilibrium); joints from inverse kinematics, elbow as asked.
+    """
+    surf, F0 = exp.surface, exp.force_reference(0.0)
+    s_surf = surf.at(surf.arc_coordinate(exp.start_point))
+    n = surf.normal_at(s_surf)
+    s = s_surf - n * max(F0, 0.0) / exp.contact.stiffness
+    r = s - n * F0 / exp.sensor.stiffness
+    q = inverse_kinematics(exp, r)
+    return np.concatenate([q, [0.0, 0.0], s, [0.0, 0.0]])
+
+
+def inverse_kinematics(exp: Experiment, r: np.ndarray) -> np.ndarray:
+    L1, L2 = exp.arm.L1, exp.arm.L2
+    dist2 = float(r @ r)
+    c2 = (dist2 - L1**2 - L2**2) / (2 * L1 * L2)
+    lo, hi = exp.arm.reach()
+    if not -1.0 <= c2 <= 1.0:
+        raise HybridError(f"the start point {np.round(r, 4).tolist()} m is out of the arm's reach "
+                          f"({lo:.3f} m to {hi:.3f} m from the base); move the surface or start_point")
+    q2 = exp.elbow * math.acos(c2)
+    if abs(math.sin(q2)) < 1e-3:
+        raise HybridError(f"the start point {np.round(r, 4).tolist()} m puts the arm at a singularity "
+                          f"(q2 = {q2:.4f} rad); move it inside the workspace")
+    q1 = math.atan2(r[1], r[0]) - math.atan2(L2 * math.sin(q2), L1 + L2 * math.cos(q2))
+    return np.array([q1, q2])
+
+
+def check_path(exp: Experiment, controller: HybridController) -> None:
+    """Refuse a run whose desired path leaves the arm's workspace."""
+    lo, hi = exp.arm.reach()
+    for t in np.arange(exp.n_samples + 1) * exp.sample_time:
+        p, _ = controller.desired_point(min(t, exp.duration))
+        d = math.hypot(*p)
+        if not lo + 1e-3 < d < hi - 1e-3:
+            raise HybridError(f"the desired path leaves the arm's workspace at t = {t:.3f} s "
+                              f"(point {np.round(p, 4).tolist()} m, {d:.3f} m from the base, reach "
+                              f"{lo:.3f}-{hi:.3f} m); shorten duration, lower the speed or move the surface")
+
+
+# --------------------------------------------------------------------- results
+
+
+@dataclass
+class SimulationResult:
+    """Time series of one run (one row per integration step, ``t`` from 0) and its metrics.
+
+    Units: ``t`` [s], ``q`` [rad], ``qdot`` [rad/s], ``tau`` [N m] (held per sample), forces [N],
+    speeds [m/s], lengths [m]. Task quantities are in the frame ``R(r)`` at the arm tip.
+    """
+
+    experiment: Experiment
+    t: np.ndarray
+    state: np.ndarray
+    tau: np.ndarray
+    outputs: np.ndarray
+    force_reference: np.ndarray
+    speed_reference: np.ndarray
+    metrics: dict = field(default_factory=dict)
+
+    UNITS = {"t": "s", "state": "rad, rad, rad/s, rad/s, m, m, m/s, m/s", "tau": "N m",
+             "force_reference": "N", "speed_reference": "m/s",
+             "outputs": "m, m, m/s, m/s, N, N, N, N, m, m, m, N, N, m/s"}
+
+    @property
+    def q(self):
+        return self.state[:, 0:2]
+
+    @property
+    def qdot(self):
+        return self.state[:, 2:4]
+
+    def output(self, name: str) -> np.ndarray:
+        """A column of the plant output record by name (``codegen.model.PLANT_OUTPUTS``)."""
+        return self.outputs[:, OUT[name]]
+
+    @property
+    def force_normal(self):
+        """Normal force measured by the sensor, ``(R(r) F_c)_n`` [N]."""
+        return self.output("Fc_n")
+
+    @property
+    def force_tangential(self):
+        return self.output("Fc_t")
+
+    @property
+    def velocity_tangential(self):
+        """Tangential speed of the arm tip, ``(R(r) r')_t`` [m/s]."""
+        return self.output("v_t")
+
+    @property
+    def velocity_normal(self):
+        return self.output("v_n")
+
+    @property
+    def penetration(self):
+        return self.output("penetration")
+
+    @property
+    def contact_force(self):
+        return self.output("N")
+
+    def save(self, path: str | Path) -> Path:
+        """Write an ``.npz`` with every array, the units and the experiment's settings."""
+        path = Path(path)
+        np.savez_compressed(
+            path, t=self.t, state=self.state, tau=self.tau, outputs=self.outputs,
+            force_reference=self.force_reference, speed_reference=self.speed_reference,
+            output_names=np.array(PLANT_OUTPUTS), units=json.dumps(self.UNITS),
+            experiment=json.dumps(self.experiment.to_dict()), metrics=json.dumps(self.metrics))
+        return path
+
+    @classmethod
+    def load(cls, path: str | Path) -> SimulationResult:
+        try:
+            with np.load(path, allow_pickle=False) as z:
+                return cls(Experiment.from_dict(json.loads(str(z["experiment"]))), z["t"], z["state"],
+                           z["tau"], z["outputs"], z["force_reference"], z["speed_reference"],
+                           json.loads(str(z["metrics"])))
+        except (OSError, KeyError, ValueError) as exc:
+            raise HybridError(f"{path} is not a saved hybrid result ({exc})") from None
+
+    def save_csv(self, path: str | Path) -> Path:
+        """Write the time series as CSV, units in the header."""
+        path = Path(path)
+        cols = {"t_s": self.t, "q1_rad": self.q[:, 0], "q2_rad": self.q[:, 1],
+                "tau1_Nm": self.tau[:, 0], "tau2_Nm": self.tau[:, 1],
+                "force_reference_N": self.force_reference, "speed_reference_m_per_s": self.speed_reference}
+        units = dict(zip(PLANT_OUTPUTS, self.UNITS["outputs"].split(", ")))
+        cols.update({f"{n}_{units[n].replace('/', '_per_').replace(' ', '')}": self.output(n)
+                     for n in PLANT_OUTPUTS})
+        np.savetxt(path, np.column_stack(list(cols.values())), delimiter=",", header=",".join(cols),
+                   comments="", fmt="%.10g")
+        return path
+
+
+# ---------------------------------------------------------------------- runner
+
+
+def simulate(exp: Experiment) -> SimulationResult:
+    """Run ``exp``: controller sampled every ``sample_time``, plant RK4 every ``step``."""
+    if not isinstance(exp, Experiment):
+        raise HybridError(f"simulate() takes an Experiment (see hybrid.paper_experiment()), "
+                          f"got {type(exp).__name__}")
+    numpy_path = exp.backend == "numpy"
+    terms = NumpyTerms(exp) if numpy_path else NativeTerms(exp)
+    plant = NumpyPlant(exp) if numpy_path else NativePlant(exp)
+    controller = HybridController(exp, terms)
+    check_path(exp, controller)
+
+    m, n_samples = exp.steps_per_sample, exp.n_samples
+    total = m * n_samples
+    states = np.empty((total + 1, 8))
+    taus = np.empty((total + 1, 2))
+    x = initial_state(exp)
+    states[0] = x
+    for k in range(n_samples):
+        t = k * exp.sample_time
+        q, qdot = x[0:2].copy(), x[2:4].copy()
+        # the sensor's reading: its spring and damper between arm tip and sensor tip
+        out = plant.outputs(x[None, :])[0]
+        Fc = np.array([out[OUT["Fc_x"]], out[OUT["Fc_y"]]])
+        try:
+            tau = np.ascontiguousarray(controller(t, q, qdot, Fc), dtype=float)
+        except HybridError as exc:
+            raise SimulationError(f"at t = {t:.4f} s (q = {np.round(q, 5).tolist()} rad): {exc}") from exc
+        rows = slice(1 + k * m, 1 + (k + 1) * m)
+        done = plant.advance(x, tau, m, states[rows])
+        taus[rows] = tau
+        if k == 0:
+            taus[0] = tau
+        if done < m:
+            t_fail = t + (done + 1) * exp.step
+            raise SimulationError(
+                f"the plant state became NaN or infinite at t = {t_fail:.5f} s (last finite state "
+                f"q = {np.round(x[0:2], 5).tolist()} rad, qdot = {np.round(x[2:4], 3).tolist()} rad/s, "
+                f"tau = {np.round(tau, 3).tolist()} N m); reduce step or check gains and parameters")
+    if not np.isfinite(taus).all():
+        raise NonFiniteError("the controller produced non-finite torques")
+    t = np.arange(total + 1) * exp.step
+    res = SimulationResult(exp, t, states, taus, plant.outputs(states),
+                           np.array([exp.force_reference(ti) for ti in t]),
+                           np.array([exp.speed_reference(ti) for ti in t]))
+    res.metrics = compute_metrics(res)
+    return res

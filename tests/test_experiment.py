@@ -1,0 +1,124 @@
+"""Closed-loop behaviour checked against physics, not against recorded numbers."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import hybrid
+from codegen.model import PLANT_OUTPUTS
+from hybrid import metrics
+from hybrid.controllers import HybridController
+from hybrid.simulation import NativeTerms
+
+EXACT = dict(model_error=0.0, viscous_compensation=1.0, contact=hybrid.Contact(friction=0.0))
+
+
+def last(res, y, span=0.2):
+    return y[res.t >= res.t[-1] - span]
+
+
+def test_output_names_mirror_the_model():
+    assert metrics.PLANT_OUTPUTS == PLANT_OUTPUTS
+
+
+@pytest.mark.parametrize("speed", [0.4, 0.6])
+def test_missing_centripetal_term_gives_the_predicted_force_error(speed):
+    """No integral, no curvature, exact model: F_c,n settles m_d v^2 / rho_r short of F_d."""
+    exp = hybrid.paper_experiment(integral=False, v_d=hybrid.Step(0.3, speed, 1.0), **EXACT)
+    res = hybrid.simulate(exp)
+    m_d = 1.0 / exp.gains.KPf
+    rho_r = np.hypot(*(last(res, res.outputs[:, :2]) - exp.surface.center).T)  # arm tip's circle
+    predicted = np.mean(m_d * last(res, res.velocity_tangential) ** 2 / rho_r)
+    error = np.mean(last(res, res.force_reference - res.force_normal))
+    assert error == pytest.approx(predicted, abs=0.03)
+    assert error > 0.5 * m_d * speed**2 / exp.surface.radius  # clearly there
+
+
+@pytest.mark.parametrize("fix", [dict(curvature=True), dict(integral=True)])
+def test_curvature_term_or_integral_action_removes_the_force_error(fix):
+    exp = hybrid.paper_experiment(**{"integral": False, **EXACT, **fix})
+    res = hybrid.simulate(exp)
+    assert abs(res.metrics["steady_state_force_error_N"]) < 0.05
+
+
+def test_no_steady_force_error_on_a_plane():
+    exp = hybrid.paper_experiment(integral=False, surface=hybrid.Plane((0.3, 0.0), (-1.0, 0.0)),
+                                  start_point=(0.3, 0.1), duration=1.6, **EXACT)
+    res = hybrid.simulate(exp)
+    assert abs(res.metrics["steady_state_force_error_N"]) < 0.05
+
+
+def test_halving_the_step_changes_the_force_by_less_than_10_mN():
+    a = hybrid.simulate(hybrid.paper_experiment())
+    b = hybrid.simulate(hybrid.paper_experiment(step=5e-5))
+    assert np.max(np.abs(a.force_normal - b.force_normal[::2])) < 0.01
+
+
+def test_sensor_tip_stays_on_the_surface_in_the_paper_run():
+    for ctrl in ("task", "khatib"):
+        res = hybrid.simulate(hybrid.paper_experiment(controller=ctrl))
+        assert res.metrics["contact_losses"] == 0
+        assert np.all(res.contact_force[1:] > 0) and np.all(res.penetration > 0)
+        assert res.metrics["max_penetration_m"] < 1e-3
+
+
+def test_controllers_coincide_when_the_force_equals_its_feedforward():
+    """With F_c = R^T Sigma F_d the task law's -F_c and Khatib's -R^T Sigma F_d are one term."""
+    exps = {c: hybrid.paper_experiment(controller=c) for c in ("task", "khatib")}
+    ctrls = {c: HybridController(e, NativeTerms(e)) for c, e in exps.items()}
+    q, qdot = np.array([2.2, 1.9]), np.array([0.3, -0.4])
+    R, _ = ctrls["task"].terms.frame(*ctrls["task"].terms.measure(q, qdot, np.zeros(2))[:2])
+    Fc_ff = R[1] * exps["task"].force_reference(0.0)
+    tau = {c: ctrl(0.0, q, qdot, Fc_ff) for c, ctrl in ctrls.items()}
+    np.testing.assert_allclose(tau["task"], tau["khatib"], rtol=1e-12)
+    # ...and differ by exactly J^T (F_ff - F_c) when the measured force is off (fresh integrators)
+    ctrls = {c: HybridController(e, NativeTerms(e)) for c, e in exps.items()}
+    Fc = Fc_ff + np.array([1.5, -0.7])
+    diff = ctrls["khatib"](0.0, q, qdot, Fc) - ctrls["task"](0.0, q, qdot, Fc)
+    J = hybrid.arm_terms(exps["task"].controller_arm(), q, qdot)["J"]
+    np.testing.assert_allclose(diff, J.T @ (Fc - Fc_ff), rtol=1e-9)
+
+
+def test_khatib_is_more_sensitive_to_the_orthogonal_disturbance():
+    """The paper's claim: with friction, the force step disturbs Khatib's speed more."""
+    drop = {c: hybrid.simulate(hybrid.paper_experiment(controller=c)).metrics[
+        "speed_drop_after_force_step_m_per_s"] for c in ("task", "khatib")}
+    assert drop["khatib"] > 1.5 * drop["task"]
+
+
+def test_compiled_and_numpy_paths_agree():
+    exp = hybrid.paper_experiment(duration=0.05)
+    a = hybrid.simulate(exp)
+    b = hybrid.simulate(hybrid.paper_experiment(duration=0.05, backend="numpy"))
+    # joints and positions to rounding; the sensor tip's sliding speed passes through the
+    # stiff stiction region of tanh(v / 1e-3) at the start, which amplifies rounding
+    np.testing.assert_allclose(a.state[:, :7], b.state[:, :7], rtol=1e-9, atol=1e-10)
+    np.testing.assert_allclose(a.state[:, 7], b.state[:, 7], atol=1e-5)
+    for name in ("r_x", "r_y", "v_t", "v_n", "Fc_n", "penetration", "N"):
+        np.testing.assert_allclose(a.output(name), b.output(name), rtol=1e-8, atol=1e-8)
+
+
+def test_runs_are_deterministic_and_round_trip(tmp_path):
+    exp = hybrid.paper_experiment(controller="khatib", duration=0.3, frame="desired")
+    a, b = hybrid.simulate(exp), hybrid.simulate(exp)
+    np.testing.assert_array_equal(a.state, b.state)
+    loaded = hybrid.SimulationResult.load(a.save(tmp_path / "r.npz"))
+    assert loaded.experiment == exp and loaded.metrics == a.metrics
+    np.testing.assert_array_equal(loaded.outputs, a.outputs)
+    header = (a.save_csv(tmp_path / "r.csv")).read_text().splitlines()[0]
+    assert "t_s" in header and "Fc_n_N" in header
+
+
+def test_desired_frame_with_exact_curvature_matches_the_actual_frame_on_track():
+    """On the desired path, R(r_d) = R(r): both frames give the same first torque."""
+    exps = [hybrid.paper_experiment(frame=f, curvature=True) for f in ("actual", "desired")]
+    taus = [hybrid.simulate(hybrid.paper_experiment(frame=e.frame, curvature=True, duration=0.01)).tau[0]
+            for e in exps]
+    np.testing.assert_allclose(taus[0], taus[1], rtol=1e-6)
+
+
+def test_task_axis_metrics_on_a_synthetic_step():
+    t = np.linspace(0, 1, 1001)
+    y = 1 - np.exp(-t / 0.1)
+    assert metrics.settling_time(t, y, 1.0, 0.02) == pytest.approx(0.1 * np.log(50), abs=2e-3)
