@@ -11,7 +11,7 @@ surface to the robot (force), ``F_c`` the force on the robot in the base frame.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import sympy as sp
 
@@ -100,7 +100,7 @@ def _expand_angle_sums(e: sp.Expr) -> sp.Expr:
     )
 
 
-@lru_cache(maxsize=None)
+@cache
 def planar_arm(n_links: int = 2) -> ArmModel:
     """Derive the planar serial arm with ``n_links`` revolute joints.
 
@@ -291,7 +291,7 @@ def plant(kind: str, arm: ArmModel):
 # ----------------------------------------------------------------------- kernels
 
 
-@lru_cache(maxsize=None)
+@cache
 def kernels(n_links: int = 2) -> tuple[Kernel, ...]:
     """All kernels of one generated unit, in emission order."""
     arm = planar_arm(n_links)

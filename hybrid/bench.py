@@ -1,2 +1,242 @@
-def add_parser(sub):
-    pass
+"""``python -m hybrid bench``: how fast the generated law and the runner are, against alternatives.
+
+Medians over repeated runs; ratios are computed within the same run. Timings are
+information, never pass/fail.
+"""
+
+from __future__ import annotations
+
+import json
+import platform
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from importlib.metadata import PackageNotFoundError, version
+from pathlib import Path
+
+import numpy as np
+
+from . import native, reference
+from .experiment import paper_experiment
+from .law import decoupling_law
+from .parameters import Circle, paper_arm
+from .simulation import simulate
+
+HARNESS = r"""
+#include <stdio.h>
+#include <time.h>
+#include "hybrid_%(b)s.h"
+static double now(void) { struct timespec ts; clock_gettime(CLOCK_MONOTONIC, &ts); return ts.tv_sec + 1e-9 * ts.tv_nsec; }
+int main(int argc, char **argv) {
+    long n = argc > 1 ? atol(argv[1]) : 1000000, i;
+    int rep, reps = argc > 2 ? atoi(argv[2]) : 7;
+    double arm[11] = {0.45, 0.32, 0.0, 3.5, 0.0, 0.15, 0.25, 0.16, 1.3, 0.2, 0.0};
+    double surface[3] = {0.5, 0.0, 0.2}, opts[1] = {1.0};
+    double q[2] = {2.2, 1.9}, qd[2] = {0.3, -0.4}, a[2] = {0.1, 1.0}, Fc[2] = {-8.0, 3.0};
+    double F[2], tau[2], sink = 0.0;
+    for (rep = 0; rep < reps; ++rep) {
+        double t0 = now();
+        for (i = 0; i < n; ++i) {
+            q[0] = 2.2 + 1e-9 * (double)(i & 1023);   /* a new state each call */
+            hybrid_%(b)s_decoupling_law_circle(q, qd, a, Fc, arm, surface, opts, 1e-3, F, tau);
+            sink += F[0] + tau[1];
+        }
+        printf("%%.3f\n", (now() - t0) / (double)n * 1e9);
+    }
+    fprintf(stderr, "%%g\n", sink);
+    return 0;
+}
+"""
+
+
+def _progress(i: int, total: int, what: str) -> None:
+    print(f"[{i}/{total}] {what} ...", file=sys.stderr, flush=True)
+
+
+def _median_ns(fn, number: int, repeat: int) -> float:
+    times = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        for _ in range(number):
+            fn()
+        times.append((time.perf_counter() - t0) / number * 1e9)
+    return statistics.median(times)
+
+
+def c_harness_ns(backend: str, calls: int, repeat: int) -> float:
+    """F* per call inside C, timed by a compiled loop (same flags as the runtime build)."""
+    cc, _ = native.compiler()
+    src_dir = native.source_dir()
+    with tempfile.TemporaryDirectory() as tmp:
+        main = Path(tmp) / "bench.c"
+        main.write_text("#include <stdlib.h>\n" + HARNESS % {"b": backend})
+        exe = Path(tmp) / "bench"
+        flags = [f for f in native.CFLAGS if f != "-fPIC"]
+        subprocess.run([cc, *flags, f"-I{src_dir}", str(main), str(src_dir / f"hybrid_{backend}.c"),
+                        "-o", str(exe), "-lm"], check=True, capture_output=True)
+        out = subprocess.run([str(exe), str(calls), str(repeat)], check=True, capture_output=True, text=True)
+    return statistics.median(float(x) for x in out.stdout.split())
+
+
+def _versions() -> dict:
+    out = {"python": platform.python_version(), "machine": platform.machine(), "system": platform.platform()}
+    try:
+        cpu = [ln for ln in Path("/proc/cpuinfo").read_text().splitlines() if ln.startswith("model name")]
+        out["cpu"] = cpu[0].split(":", 1)[1].strip() if cpu else platform.processor()
+    except OSError:
+        out["cpu"] = platform.processor()
+    for pkg in ("numpy", "cffi", "sympy", "casadi", "pin"):
+        try:
+            out[pkg] = version(pkg)
+        except PackageNotFoundError:
+            pass
+    out["cc"] = native.compiler()[1]
+    return out
+
+
+def run_benchmarks(quick: bool = False) -> dict:
+    """Every benchmark; returns ``{"machine": ..., "results": [{name, median, unit, ...}]}``."""
+    arm, circle = paper_arm(), Circle((0.5, 0.0), 0.2)
+    law = decoupling_law(arm, circle, curvature=True)
+    q, qd, a, Fc = (np.array(v) for v in ([2.2, 1.9], [0.3, -0.4], [0.1, 1.0], [-8.0, 3.0]))
+    p, s = arm.as_array(), circle.as_array()
+    rep = 3 if quick else 7
+    results = []
+    steps = 11
+    k = 0
+
+    def add(name, ns, unit="ns", **extra):
+        results.append({"name": name, "median": ns, "unit": unit, **extra})
+
+    for b in ("sympy", "casadi"):
+        k += 1
+        _progress(k, steps, f"F* in C ({b} backend)")
+        add(f"F* in C, {b} backend, per call", c_harness_ns(b, 200_000 if quick else 2_000_000, rep))
+    k += 1
+    _progress(k, steps, "F* from Python, single state")
+    add("F* from Python, one state (law(q, qdot, a, Fc))", _median_ns(lambda: law(q, qd, a, Fc), 20000, rep))
+    k += 1
+    _progress(k, steps, "F* from Python, batched")
+    N = 100_000
+    rng = np.random.default_rng(0)
+    Q = np.column_stack([rng.uniform(-3, 3, N), rng.uniform(0.3, 2.8, N)])
+    QD, A, FC = rng.normal(size=(N, 2)), rng.normal(size=(N, 2)), rng.normal(size=(N, 2))
+    add("F* from Python, batched, per state (N = 1e5)", _median_ns(lambda: law(Q, QD, A, FC), 1, rep) / N)
+    k += 1
+    _progress(k, steps, "F* in plain NumPy")
+    add("F* in plain NumPy (hybrid.reference)", _median_ns(
+        lambda: reference.decoupling_law("circle", q, qd, a, Fc, p, s, True), 2000, rep))
+    k += 1
+    _progress(k, steps, "F* by SymPy lambdify")
+    from codegen import model
+
+    kern = {kk.name: kk for kk in model.kernels(2)}["decoupling_law_circle"]
+    import sympy as sp
+
+    args = [m for _, m in kern.inputs]
+    fn = sp.lambdify(args, kern.outputs[0][1], modules="numpy", cse=True)
+    col = [v.reshape(-1, 1) for v in (q, qd, a, Fc, p, s, np.array([1.0]))]
+    add("F* by SymPy lambdify (NumPy, CSE)", _median_ns(lambda: fn(*col), 2000, rep))
+    k += 1
+    _progress(k, steps, "F* by a CasADi Function call")
+    from codegen.casadi_backend import kernel_function
+
+    cf = kernel_function(kern)
+    add("F* by a CasADi Function call", _median_ns(lambda: cf(q, qd, a, Fc, p, s, 1.0), 2000, rep))
+    k += 1
+    _progress(k, steps, "F* by Pinocchio + NumPy")
+    pin_ns = _pinocchio_ns(arm, q, qd, a, Fc, s, rep)
+    if pin_ns is not None:
+        add("F* by Pinocchio (crba, nle) + NumPy", pin_ns)
+    k += 1
+    _progress(k, steps, "paper experiment, compiled")
+    dur = 0.2 if quick else 2.0
+    exp = paper_experiment(duration=dur)
+    add(f"paper experiment end to end ({dur:g} s simulated), compiled", _median_ns(
+        lambda: simulate(exp), 1, 3 if quick else 9) / 1e6, "ms")
+    k += 1
+    _progress(k, steps, "paper experiment, NumPy plant and controller")
+    exp_np = paper_experiment(duration=dur, backend="numpy")
+    add(f"paper experiment end to end ({dur:g} s simulated), NumPy", _median_ns(
+        lambda: simulate(exp_np), 1, 1 if quick else 3) / 1e6, "ms")
+    k += 1
+    _progress(k, steps, "regenerate from scratch")
+    t0 = time.perf_counter()
+    subprocess.run([sys.executable, "-c", "from codegen.regenerate import expected_files; expected_files()"],
+                   check=True, cwd=Path(__file__).resolve().parent.parent)
+    add("regenerate from scratch (both backends, fresh process)", (time.perf_counter() - t0) * 1e3, "ms")
+
+    by = {r["name"]: r for r in results}
+    ours_py = by["F* from Python, one state (law(q, qdot, a, Fc))"]["median"]
+    for r in results:
+        if r["name"].startswith("F* in plain") or r["name"].startswith("F* by"):
+            r["ratio"] = f"{r['median'] / ours_py:.0f}x slower than one compiled call"
+    comp = next(r for r in results if r["name"].endswith("compiled"))
+    slow = next(r for r in results if r["name"].endswith("NumPy") and "experiment" in r["name"])
+    slow["ratio"] = f"{slow['median'] / comp['median']:.0f}x slower than compiled"
+    return {"machine": _versions(), "quick": quick, "results": results}
+
+
+def _pinocchio_ns(arm, q, qd, a, Fc, s, rep):
+    try:
+        import pinocchio as pin
+    except ImportError:
+        return None
+    model = pin.Model()
+    parent = 0
+    for i, (L, m, d, inertia) in enumerate([(0.0, arm.m1, arm.d1, arm.I1), (arm.L1, arm.m2, arm.d2, arm.I2)]):
+        parent = model.addJoint(parent, pin.JointModelRZ(), pin.SE3(np.eye(3), np.array([L, 0, 0])), f"j{i}")
+        model.appendBodyToJoint(parent, pin.Inertia(m, np.array([d, 0, 0]), np.diag([inertia] * 3)),
+                                pin.SE3.Identity())
+    frame = model.addFrame(pin.Frame("tip", parent, 0, pin.SE3(np.eye(3), np.array([arm.L2, 0, 0])),
+                                     pin.FrameType.OP_FRAME))
+    data = model.createData()
+    V = np.array([arm.V1, arm.V2])
+
+    def law():
+        B = pin.crba(model, data, q)
+        B = np.triu(B) + np.triu(B, 1).T
+        n = pin.nonLinearEffects(model, data, q, qd) + V * qd
+        pin.forwardKinematics(model, data, q, qd, np.zeros(2))
+        J = pin.computeFrameJacobian(model, data, q, frame, pin.LOCAL_WORLD_ALIGNED)[:2]
+        r = data.oMf[frame].translation[:2] if pin.updateFramePlacements(model, data) is None else None
+        Jdqd = pin.getFrameClassicalAcceleration(model, data, frame, pin.LOCAL_WORLD_ALIGNED).linear[:2]
+        rd = J @ qd
+        R, Rd = reference.frame("circle", r, rd, s)
+        Jinv = np.linalg.inv(J)
+        Bo = Jinv.T @ B @ Jinv
+        return Bo @ R.T @ (a - Rd @ rd) + Jinv.T @ n - Bo @ Jdqd - Fc
+
+    return _median_ns(law, 2000, rep)
+
+
+def format_table(report: dict) -> str:
+    rows = report["results"]
+    w = max(len(r["name"]) for r in rows)
+    lines = [f"{'benchmark':<{w}}  {'median':>12}  ratio"]
+    for r in rows:
+        lines.append(f"{r['name']:<{w}}  {r['median']:>9.4g} {r['unit']:<2}  {r.get('ratio', '')}")
+    m = report["machine"]
+    lines.append(f"\n{m.get('cpu')} | Python {m['python']} | numpy {m.get('numpy')} | {m['cc']}")
+    return "\n".join(lines)
+
+
+def add_parser(sub) -> None:
+    p = sub.add_parser("bench", help="time the generated law, the runner and the alternatives")
+    p.add_argument("--quick", action="store_true", help="fewer repeats, a shorter experiment")
+    p.add_argument("--json", help="also write the results as JSON to this file")
+    p.set_defaults(func=_run)
+
+
+def _run(args) -> int:
+    from .errors import HybridError
+
+    if args.json and Path(args.json).is_dir():
+        raise HybridError(f"--json {args.json} is a folder; give a file name")
+    report = run_benchmarks(args.quick)
+    print(format_table(report))
+    if args.json:
+        Path(args.json).write_text(json.dumps(report, indent=2) + "\n")
+    return 0

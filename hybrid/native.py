@@ -21,7 +21,7 @@ import shutil
 import subprocess
 import sysconfig
 import tempfile
-from functools import lru_cache
+from functools import cache
 from pathlib import Path
 
 import cffi
@@ -111,7 +111,7 @@ def _build(name: str, source: str, cdef: str, src_dir: Path, cc: str, target: Pa
         _atomic_write(target, so.read_bytes())
 
 
-@lru_cache(maxsize=None)
+@cache
 def load(backend: str = "sympy"):
     """The compiled unit ``hybrid_<backend>`` as a cffi module (``.ffi``, ``.lib``)."""
     src_dir = source_dir()
