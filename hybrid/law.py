@@ -28,12 +28,12 @@ def check_arm(arm) -> None:
 
 def as_states(name: str, x) -> np.ndarray:
     """``x`` as a C-contiguous float64 array of shape ``(2,)`` or ``(N, 2)``."""
+    if np.iscomplexobj(x):
+        raise HybridError(f"{name} must be real, got complex values")
     try:
         arr = np.ascontiguousarray(x, dtype=np.float64)
     except (TypeError, ValueError):
         raise HybridError(f"{name} must be numbers of shape (2,) or (N, 2), got {x!r:.80}") from None
-    if np.iscomplexobj(x):
-        raise HybridError(f"{name} must be real, got complex values")
     if arr.ndim not in (1, 2) or arr.shape[-1] != 2 or (arr.ndim == 2 and arr.shape[0] == 0):
         raise HybridError(f"{name} must have shape (2,) or (N, 2) with N >= 1, got {arr.shape}")
     return arr

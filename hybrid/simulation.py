@@ -302,13 +302,13 @@ def simulate(exp: Experiment) -> SimulationResult:
     terms = NumpyTerms(exp) if numpy_path else NativeTerms(exp)
     plant = NumpyPlant(exp) if numpy_path else NativePlant(exp)
     controller = HybridController(exp, terms)
+    x = initial_state(exp)
     check_path(exp, controller)
 
     m, n_samples = exp.steps_per_sample, exp.n_samples
     total = m * n_samples
     states = np.empty((total + 1, 8))
     taus = np.empty((total + 1, 2))
-    x = initial_state(exp)
     states[0] = x
     for k in range(n_samples):
         t = k * exp.sample_time

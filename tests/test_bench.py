@@ -1,0 +1,12 @@
+"""Smoke test: the benchmark command runs and reports every entry (timings are never asserted)."""
+
+from hybrid import bench
+
+
+def test_bench_quick_reports_every_benchmark():
+    report = bench.run_benchmarks(quick=True)
+    names = " ".join(r["name"] for r in report["results"])
+    for part in ("sympy backend", "casadi backend", "one state", "batched", "plain NumPy", "lambdify",
+                 "CasADi Function", "compiled", "regenerate"):
+        assert part in names
+    assert all(r["median"] > 0 for r in report["results"])

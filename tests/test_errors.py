@@ -1,0 +1,161 @@
+"""Bad input gets a HybridError that names the value and the fix; nothing crashes."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import threading
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import hybrid
+
+ROOT = Path(__file__).resolve().parent.parent
+ARM = hybrid.paper_arm()
+CIRCLE = hybrid.Circle((0.5, 0.0), 0.2)
+GOOD = ([2.2, 1.9], [0.3, -0.4], [0.1, 1.0], [-8.0, 3.0])
+
+
+@pytest.fixture(scope="module")
+def law():
+    return hybrid.decoupling_law(ARM, CIRCLE)
+
+
+@pytest.mark.parametrize("args, match", [
+    (([1.0, 2.0, 3.0], *GOOD[1:]), "q must have shape"),
+    ((GOOD[0], "fast", *GOOD[2:]), "qdot must be numbers"),
+    ((*GOOD[:2], [[0.1, 1.0]] * 3, GOOD[3]), "same shape"),
+    ((*GOOD[:3], [1j, 2.0]), "Fc must be real"),
+    ((np.zeros((0, 2)), *GOOD[1:]), "N >= 1"),
+])
+def test_bad_shapes_and_dtypes(law, args, match):
+    with pytest.raises(hybrid.HybridError, match=match):
+        law(*args)
+
+
+def test_non_finite_state_is_named(law):
+    with pytest.raises(hybrid.NonFiniteError, match="non-finite input qdot"):
+        law(GOOD[0], [np.nan, 0.0], *GOOD[2:])
+    with pytest.raises(hybrid.HybridError, match="state 1 of 2"):
+        law(np.array([GOOD[0]] * 2), np.array([[0.0, 0.0], [np.inf, 0.0]]), np.array([GOOD[2]] * 2),
+            np.array([GOOD[3]] * 2))
+
+
+@pytest.mark.parametrize("q2", [0.0, 1e-7, np.pi, -np.pi + 1e-8])
+def test_singular_jacobian(law, q2):
+    with pytest.raises(hybrid.SingularConfigurationError, match="singular.*q2 near 0 or pi"):
+        law([0.3, q2], *GOOD[1:])
+
+
+@pytest.mark.parametrize("make, match", [
+    (lambda: hybrid.Circle((0.5, 0.0), 0.0), "positive radius"),
+    (lambda: hybrid.Circle((0.5, np.nan), 0.2), "not finite"),
+    (lambda: hybrid.Plane((0.4, 0.0), (0.0, 0.0)), "zero length"),
+    (lambda: replace(ARM, m2=-1.0), "m2 = -1.0 is negative"),
+    (lambda: replace(ARM, L1=0.0), "link lengths must be positive"),
+    (lambda: replace(ARM, I1=0.0, I2=0.0, m2=0.0), "not positive definite"),
+    (lambda: replace(ARM, V1=float("inf")), "V1 is inf"),
+    (lambda: hybrid.decoupling_law(ARM, "circle"), "Circle or hybrid.Plane"),
+    (lambda: hybrid.paper_experiment(controller="raibert"), "unknown controller 'raibert'"),
+    (lambda: hybrid.paper_experiment(surface="sphere"), "unknown surface"),
+    (lambda: hybrid.paper_experiment(sample_time=0.01005), "not a whole multiple of step"),
+    (lambda: hybrid.paper_experiment(step=1e-3, sample_time=1e-2), "too large for the contact"),
+    (lambda: hybrid.paper_experiment(duration=0.0), "positive duration"),
+    (lambda: hybrid.paper_experiment(duration=-1.0), "positive duration"),
+    (lambda: hybrid.paper_experiment(KDf=1.0), "force \\(normal\\) loop is unstable"),
+    (lambda: hybrid.paper_experiment(KPv=400.0), "velocity \\(tangent\\) loop is unstable"),
+    (lambda: hybrid.paper_experiment(KPf=-2.0), "KPf = -2.0 is negative"),
+    (lambda: hybrid.paper_experiment(kpv=40), "unknown setting\\(s\\) kpv"),
+    (lambda: hybrid.simulate(hybrid.paper_experiment(surface=hybrid.Circle((2.0, 0.0), 0.2),
+                                                     start_point=(1.8, 0.0))), "out of the arm's reach"),
+    (lambda: hybrid.simulate(hybrid.paper_experiment(surface=hybrid.Circle((0.75, 0.0), 0.2),
+                                                     start_point=(0.55, 0.0))), "leaves the arm's workspace"),
+    (lambda: hybrid.simulate("paper"), "takes an Experiment"),
+])
+def test_bad_parameters(make, match):
+    with pytest.raises(hybrid.HybridError, match=match):
+        make()
+
+
+def test_concurrent_calls_match_serial(law):
+    rng = np.random.default_rng(1)
+    states = [(np.array([rng.uniform(-3, 3), rng.uniform(0.3, 2.8)]), *rng.normal(size=(3, 2)))
+              for _ in range(400)]
+    serial = [law(*s) for s in states]
+    results = [None] * len(states)
+
+    def work(idx):
+        for i in idx:
+            results[i] = law(*states[i])
+
+    threads = [threading.Thread(target=work, args=(range(k, len(states), 4),)) for k in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for a, b in zip(serial, results):
+        np.testing.assert_array_equal(a, b)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.floats(allow_nan=True, allow_infinity=True, width=64), min_size=8, max_size=8),
+       st.floats(0.05, 5.0), st.floats(0.0, 5.0))
+def test_law_gives_finite_values_or_a_hybrid_error(law, values, m2, d2):
+    local = hybrid.decoupling_law(replace(ARM, m2=m2, d2=min(d2, ARM.L2)), CIRCLE, curvature=True)
+    v = np.array(values).reshape(4, 2)
+    try:
+        F, tau = local.evaluate(*v)
+    except hybrid.HybridError:
+        return
+    assert np.isfinite(F).all() and np.isfinite(tau).all()
+
+
+def run_cli(*args, env=None):
+    return subprocess.run([sys.executable, "-m", "hybrid", *args], cwd=ROOT, capture_output=True, text=True,
+                          env={**os.environ, **(env or {})})
+
+
+def test_cli_bad_usage_is_one_line_and_status_2():
+    proc = run_cli("paper")
+    assert proc.returncode == 2 and proc.stderr.count("\n") == 1 and "--out" in proc.stderr
+    assert "Traceback" not in proc.stderr
+    proc = run_cli("fly")
+    assert proc.returncode == 2 and "Traceback" not in proc.stderr
+
+
+def test_cli_refuses_to_overwrite(tmp_path):
+    target = tmp_path / "notes.txt"
+    target.write_text("mine")
+    proc = run_cli("paper", "--out", str(target))
+    assert proc.returncode == 2 and "existing file" in proc.stderr and target.read_text() == "mine"
+    (tmp_path / "res").mkdir()
+    (tmp_path / "res" / "metrics.json").write_text("{}")
+    proc = run_cli("paper", "--out", str(tmp_path / "res"))
+    assert proc.returncode == 2 and "--force" in proc.stderr
+    assert (tmp_path / "res" / "metrics.json").read_text() == "{}"
+
+
+def test_missing_compiler_says_what_to_install(tmp_path):
+    code = "import hybrid.native as n; n.load('sympy')"
+    proc = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
+                          env={**os.environ, "CC": "no-such-cc", "PATH": str(tmp_path),
+                               "HYBRID_CACHE_DIR": str(tmp_path / "cache")})
+    assert "NativeBuildError" in proc.stderr and "apt-get install gcc" in proc.stderr
+
+
+def test_corrupt_cache_entry_is_rebuilt(tmp_path):
+    env = {**os.environ, "HYBRID_CACHE_DIR": str(tmp_path)}
+    code = ("import hybrid, numpy as np; law = hybrid.decoupling_law(hybrid.paper_arm(), "
+            "hybrid.Circle((0.5, 0), 0.2)); print(law([2.2, 1.9], [0.3, -0.4], [0.1, 1.0], [-8.0, 3.0]))")
+    first = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, env=env)
+    so = next(tmp_path.rglob("*.so"))
+    so.write_bytes(so.read_bytes()[:1000])  # a partial file, as a crash mid-copy would leave
+    second = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, env=env)
+    assert second.returncode == 0, second.stderr
+    assert first.stdout == second.stdout
