@@ -201,7 +201,8 @@ def _pinocchio_ns(arm, q, qd, a, Fc, s, rep):
         n = pin.nonLinearEffects(model, data, q, qd) + V * qd
         pin.forwardKinematics(model, data, q, qd, np.zeros(2))
         J = pin.computeFrameJacobian(model, data, q, frame, pin.LOCAL_WORLD_ALIGNED)[:2]
-        r = data.oMf[frame].translation[:2] if pin.updateFramePlacements(model, data) is None else None
+        pin.updateFramePlacements(model, data)
+        r = data.oMf[frame].translation[:2]
         Jdqd = pin.getFrameClassicalAcceleration(model, data, frame, pin.LOCAL_WORLD_ALIGNED).linear[:2]
         rd = J @ qd
         R, Rd = reference.frame("circle", r, rd, s)

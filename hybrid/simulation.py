@@ -323,14 +323,13 @@ def simulate(exp: Experiment) -> SimulationResult:
         rows = slice(1 + k * m, 1 + (k + 1) * m)
         done = plant.advance(x, tau, m, states[rows])
         taus[rows] = tau
-        if k == 0:
-            taus[0] = tau
         if done < m:
             t_fail = t + (done + 1) * exp.step
             raise SimulationError(
                 f"the plant state became NaN or infinite at t = {t_fail:.5f} s (last finite state "
                 f"q = {np.round(x[0:2], 5).tolist()} rad, qdot = {np.round(x[2:4], 3).tolist()} rad/s, "
                 f"tau = {np.round(tau, 3).tolist()} N m); reduce step or check gains and parameters")
+    taus[0] = taus[1]  # the first sample's torque acts from t = 0
     if not np.isfinite(taus).all():
         raise NonFiniteError("the controller produced non-finite torques")
     t = np.arange(total + 1) * exp.step
