@@ -176,6 +176,20 @@ def run_benchmarks(quick: bool = False) -> dict:
     comp = next(r for r in results if r["name"].endswith("compiled"))
     slow = next(r for r in results if r["name"].endswith("NumPy") and "experiment" in r["name"])
     slow["ratio"] = f"{slow['median'] / comp['median']:.0f}x slower than compiled"
+    numpy_ratio = by["F* in plain NumPy (hybrid.reference)"]["median"] / ours_py
+    targets = [
+        ("F* in C, sympy backend, per call", "<= 60 ns", by["F* in C, sympy backend, per call"]["median"] <= 60),
+        ("F* in C, casadi backend, per call", "<= 60 ns", by["F* in C, casadi backend, per call"]["median"] <= 60),
+        ("F* from Python, one state (law(q, qdot, a, Fc))", "<= 1 us, >= 70x NumPy",
+         ours_py <= 1000 and numpy_ratio >= 70),
+        ("F* from Python, batched, per state (N = 1e5)", "<= 100 ns",
+         by["F* from Python, batched, per state (N = 1e5)"]["median"] <= 100),
+    ]
+    if not quick:  # the experiment's target is for the full 2 s run
+        targets.append((comp["name"], "<= 25 ms, >= 100x NumPy",
+                        comp["median"] <= 25 and slow["median"] / comp["median"] >= 100))
+    for name, target, met in targets:
+        by[name].update(target=target, met=bool(met))
     return {"machine": _versions(), "quick": quick, "results": results}
 
 
@@ -216,9 +230,11 @@ def _pinocchio_ns(arm, q, qd, a, Fc, s, rep):
 def format_table(report: dict) -> str:
     rows = report["results"]
     w = max(len(r["name"]) for r in rows)
-    lines = [f"{'benchmark':<{w}}  {'median':>12}  ratio"]
+    t = max(len(r.get("target", "")) for r in rows) + 6
+    lines = [f"{'benchmark':<{w}}  {'median':>12}  {'target (issue #4)':<{t}}  ratio"]
     for r in rows:
-        lines.append(f"{r['name']:<{w}}  {r['median']:>9.4g} {r['unit']:<2}  {r.get('ratio', '')}")
+        target = f"{r['target']}: {'met' if r['met'] else 'MISSED'}" if "target" in r else ""
+        lines.append(f"{r['name']:<{w}}  {r['median']:>9.4g} {r['unit']:<2}  {target:<{t}}  {r.get('ratio', '')}")
     m = report["machine"]
     lines.append(f"\n{m.get('cpu')} | Python {m['python']} | numpy {m.get('numpy')} | {m['cc']}")
     return "\n".join(lines)
@@ -228,6 +244,7 @@ def add_parser(sub) -> None:
     p = sub.add_parser("bench", help="time the generated law, the runner and the alternatives")
     p.add_argument("--quick", action="store_true", help="fewer repeats, a shorter experiment")
     p.add_argument("--json", help="also write the results as JSON to this file")
+    p.add_argument("--force", action="store_true", help="let --json replace an existing file")
     p.set_defaults(func=_run)
 
 
@@ -236,6 +253,8 @@ def _run(args) -> int:
 
     if args.json and Path(args.json).is_dir():
         raise HybridError(f"--json {args.json} is a folder; give a file name")
+    if args.json and Path(args.json).exists() and not args.force:
+        raise HybridError(f"--json {args.json} exists; choose another name or add --force to replace it")
     report = run_benchmarks(args.quick)
     print(format_table(report))
     if args.json:

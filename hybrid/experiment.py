@@ -8,6 +8,7 @@ from dataclasses import asdict, dataclass, field, fields, replace
 import numpy as np
 
 from .errors import HybridError
+from .law import SINGULAR_TOL
 from .parameters import Arm, Circle, Plane, _finite, paper_arm
 
 CONTROLLERS = ("task", "khatib")
@@ -94,6 +95,8 @@ class Experiment:
     viscous_compensation)``. ``frame``: task frame at the actual contact point ``R(r)`` or
     at the desired one ``R(r_d)`` (the paper's Figure 3). ``backend``: which compiled unit
     runs the plant and the law, or ``"numpy"`` for the plain NumPy reference path.
+    ``singular_tol``: the run stops when ``2 |det J| / |J|_F^2`` (about ``|sin q2|``) at a
+    control sample falls below it.
     """
 
     controller: str = "task"
@@ -115,6 +118,7 @@ class Experiment:
     step: float = 1e-4
     sample_time: float = 1e-2
     backend: str = "sympy"
+    singular_tol: float = SINGULAR_TOL
 
     def __post_init__(self):
         if self.controller not in CONTROLLERS:
@@ -129,7 +133,10 @@ class Experiment:
             raise HybridError(f"unknown surface {self.surface!r}; give a hybrid.Circle or hybrid.Plane")
         if self.elbow not in (1, -1):
             raise HybridError(f"elbow = {self.elbow}; give +1 (q2 > 0) or -1 (q2 < 0)")
-        _finite("Experiment", duration=self.duration, step=self.step, sample_time=self.sample_time)
+        _finite("Experiment", duration=self.duration, step=self.step, sample_time=self.sample_time,
+                singular_tol=self.singular_tol)
+        if not 0 <= self.singular_tol < 1:
+            raise HybridError(f"singular_tol = {self.singular_tol}; give a value in [0, 1) (default {SINGULAR_TOL})")
         if self.duration <= 0:
             raise HybridError(f"duration = {self.duration} s; give a positive duration")
         if self.step <= 0 or self.sample_time <= 0:

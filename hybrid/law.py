@@ -84,9 +84,19 @@ class DecouplingLaw:
         self._arm = mod.ffi.new("double[]", self.arm.as_array().tolist())
         self._surface = mod.ffi.new("double[]", self.surface.as_array().tolist())
         self._opts = mod.ffi.new("double[]", [1.0 if self.curvature else 0.0])
+        # one state from NumPy arrays skips cffi's per-array conversion (see hybrid/fastcall.c)
+        fast = native.load_fastcall(self.backend)
+        self._fast = fast.call
+        self._binding = fast.bind(kind, self.arm.as_array(), self.surface.as_array(),
+                                  np.array([1.0 if self.curvature else 0.0]), float(self.singular_tol))
 
     def evaluate(self, q, qdot, a, Fc) -> tuple[np.ndarray, np.ndarray]:
         """``(F*, tau)`` for one state (shape ``(2,)``) or N states (shape ``(N, 2)``)."""
+        out = self._fast(self._binding, 2, q, qdot, a, Fc)
+        return self._checked(q, qdot, a, Fc) if out is None else out
+
+    def _checked(self, q, qdot, a, Fc) -> tuple[np.ndarray, np.ndarray]:
+        """The general path: any array-like input, N states, and the errors that name the cause."""
         ins = [as_states(n, v) for n, v in (("q", q), ("qdot", qdot), ("a", a), ("Fc", Fc))]
         shape = ins[0].shape
         if any(x.shape != shape for x in ins):
@@ -112,11 +122,13 @@ class DecouplingLaw:
 
     def __call__(self, q, qdot, a, Fc) -> np.ndarray:
         """Cartesian ``F*`` [N] in the base frame."""
-        return self.evaluate(q, qdot, a, Fc)[0]
+        out = self._fast(self._binding, 0, q, qdot, a, Fc)
+        return self._checked(q, qdot, a, Fc)[0] if out is None else out
 
     def torque(self, q, qdot, a, Fc) -> np.ndarray:
         """Joint torques ``tau = J^T F*`` [N m]."""
-        return self.evaluate(q, qdot, a, Fc)[1]
+        out = self._fast(self._binding, 1, q, qdot, a, Fc)
+        return self._checked(q, qdot, a, Fc)[1] if out is None else out
 
 
 def decoupling_law(arm: Arm, surface: Circle | Plane, curvature: bool = False, *,

@@ -8,6 +8,8 @@ circle; otherwise the error names the loop and says why.
 
 from __future__ import annotations
 
+from dataclasses import asdict, replace
+
 import numpy as np
 
 from .errors import HybridError
@@ -31,10 +33,9 @@ def force_loop_matrix(KP: float, KD: float, KI: float, k: float, T: float) -> np
     return step @ upd + np.outer(hold, a_row)
 
 
-def check_loops(exp) -> None:
-    """Raise :class:`HybridError` when a loop of ``exp`` is unstable at its sample time."""
-    g, T = exp.effective_gains(), exp.sample_time
-    k = 1.0 / (1.0 / exp.sensor.stiffness + 1.0 / exp.contact.stiffness)  # sensor and surface in series
+def loop_radii(g, T: float, k: float) -> dict[str, tuple[float, str]]:
+    """Spectral radius of each loop with gains ``g``, sample time ``T`` [s], contact stiffness ``k``
+    [N/m], and the rule a stable loop satisfies."""
     # an integrator whose gain is 0 feeds nothing back: its eigenvalue 1 is left out
     used_v = 1 + (g.KIv != 0 or g.KI2v != 0) + (g.KI2v != 0)
     used_f = 2 + (g.KIf != 0)
@@ -44,9 +45,37 @@ def check_loops(exp) -> None:
         "force (normal) loop": (force_loop_matrix(g.KPf, g.KDf, g.KIf, k, T)[:used_f, :used_f],
                                 "needs KDf*KPf > KIf, and KDf*T and sqrt(KPf*k)*T well below 2"),
     }
-    for name, (M, rule) in loops.items():
-        radius = max(abs(np.linalg.eigvals(M)))
+    return {name: (float(max(abs(np.linalg.eigvals(M)))), rule) for name, (M, rule) in loops.items()}
+
+
+def contact_stiffness(exp) -> float:
+    """Sensor and surface springs in series [N/m]."""
+    return 1.0 / (1.0 / exp.sensor.stiffness + 1.0 / exp.contact.stiffness)
+
+
+def check_loops(exp) -> None:
+    """Raise :class:`HybridError` when a loop of ``exp`` is unstable at its sample time."""
+    g, T, k = exp.effective_gains(), exp.sample_time, contact_stiffness(exp)
+    for name, (radius, rule) in loop_radii(g, T, k).items():
         if radius >= 1.0:
             raise HybridError(
                 f"the {name} is unstable with gains {g} at sample_time {T} s "
                 f"(contact stiffness {k:.0f} N/m): spectral radius {radius:.3f} >= 1; it {rule}")
+
+
+def model_error_note(exp) -> str:
+    """Why a run with stable nominal loops may still diverge: the model error, or ``""``.
+
+    The controller's inertia is ``(1 + model_error)`` times the arm's, so the arm's task
+    acceleration is about ``(1 + model_error) a``: every loop gain is scaled by that factor.
+    """
+    scale = 1.0 + exp.model_error
+    g = exp.effective_gains()
+    scaled = replace(g, **{name: value * scale for name, value in asdict(g).items()})
+    unstable = [f"the {name} (spectral radius {radius:.2f})"
+                for name, (radius, _) in loop_radii(scaled, exp.sample_time, contact_stiffness(exp)).items()
+                if radius >= 1.0]
+    if not unstable:
+        return ""
+    return (f"; with model_error = {exp.model_error} the arm accelerates about {scale:.3g} times the "
+            f"commanded a, which makes {' and '.join(unstable)} unstable: lower the gains or the model error")

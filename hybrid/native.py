@@ -21,6 +21,7 @@ import shutil
 import subprocess
 import sysconfig
 import tempfile
+from collections.abc import Callable
 from functools import cache
 from pathlib import Path
 
@@ -91,43 +92,30 @@ def _atomic_write(path: Path, data: bytes) -> None:
         raise
 
 
-def _build(name: str, source: str, cdef: str, src_dir: Path, cc: str, target: Path) -> None:
-    ffi = cffi.FFI()
-    ffi.cdef(cdef)
-    ffi.set_source(name, source)
-    with tempfile.TemporaryDirectory(dir=target.parent) as tmp:
-        c_file = Path(tmp) / f"{name}.c"
-        with contextlib.redirect_stdout(io.StringIO()):  # cffi announces what it writes
-            ffi.emit_c_code(str(c_file))
-        so = Path(tmp) / target.name
-        includes = {sysconfig.get_paths()["include"], sysconfig.get_paths()["platinclude"]}
-        cmd = [cc, *CFLAGS, "-shared", *(f"-I{p}" for p in sorted(includes)), f"-I{src_dir}",
-               str(c_file), "-o", str(so), "-lm"]
-        proc = subprocess.run(cmd, capture_output=True, text=True)
-        if proc.returncode != 0:
-            raise NativeBuildError(f"compiling {name} failed:\n$ {' '.join(cmd)}\n{proc.stderr[-4000:]}\n"
-                                   "Is the Python development header (Python.h) installed? "
-                                   "On Debian/Ubuntu: apt-get install python3-dev")
-        _atomic_write(target, so.read_bytes())
+def _compile(c_file: Path, target: Path, cc: str, includes: list[str]) -> None:
+    """Compile ``c_file`` into the extension ``target`` (written atomically)."""
+    so = c_file.with_name(target.name)
+    paths = sorted({sysconfig.get_paths()["include"], sysconfig.get_paths()["platinclude"]}) + includes
+    cmd = [cc, *CFLAGS, "-shared", *(f"-I{p}" for p in paths), str(c_file), "-o", str(so), "-lm"]
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    if proc.returncode != 0:
+        raise NativeBuildError(f"compiling {c_file.name} failed:\n$ {' '.join(cmd)}\n{proc.stderr[-4000:]}\n"
+                               "Is the Python development header (Python.h) installed? "
+                               "On Debian/Ubuntu: apt-get install python3-dev")
+    _atomic_write(target, so.read_bytes())
 
 
-@cache
-def load(backend: str = "sympy"):
-    """The compiled unit ``hybrid_<backend>`` as a cffi module (``.ffi``, ``.lib``)."""
-    src_dir = source_dir()
-    c_path, h_path = src_dir / f"hybrid_{backend}.c", src_dir / f"hybrid_{backend}.h"
-    if not c_path.is_file():
-        raise NativeBuildError(f"no generated unit for backend {backend!r} in {src_dir}; "
-                               "known backends are 'sympy' and 'casadi'")
-    header = h_path.read_text()
-    cdef = cdef_of(header)
+def _cached_module(stem: str, key_material: dict, write_source: Callable[[str, Path], None],
+                   includes: list[str]):
+    """Build (once per key) and import the extension whose C ``write_source(name, path)`` writes.
+
+    The name carries a hash of ``key_material`` plus the compiler, flags and ABI, so a change
+    to any of them builds a new entry instead of loading a stale one.
+    """
     cc, ident = compiler()
-    key_material = json.dumps({
-        "c": c_path.read_text(), "h": header, "cc": [cc, ident], "flags": CFLAGS,
-        "abi": sysconfig.get_config_var("EXT_SUFFIX"), "cffi": cffi.__version__,
-    }, sort_keys=True)
-    key = hashlib.sha256(key_material.encode()).hexdigest()[:20]
-    name = f"_hybrid_{backend}_{key}"
+    material = json.dumps({**key_material, "cc": [cc, ident], "flags": CFLAGS,
+                           "abi": sysconfig.get_config_var("EXT_SUFFIX")}, sort_keys=True)
+    name = f"{stem}_{hashlib.sha256(material.encode()).hexdigest()[:20]}"
     entry = cache_dir() / name
     entry.mkdir(parents=True, exist_ok=True)
     so = entry / f"{name}{sysconfig.get_config_var('EXT_SUFFIX')}"
@@ -143,7 +131,10 @@ def load(backend: str = "sympy"):
         with open(entry / ".lock", "w") as lock:
             fcntl.flock(lock, fcntl.LOCK_EX)  # one builder at a time; others wait, then reuse
             if not valid():
-                _build(name, f'#include "hybrid_{backend}.c"', cdef, src_dir, cc, so)
+                with tempfile.TemporaryDirectory(dir=entry) as tmp:
+                    c_file = Path(tmp) / f"{name}.c"
+                    write_source(name, c_file)
+                    _compile(c_file, so, cc, includes)
                 _atomic_write(manifest, json.dumps({"sha256": _sha256(so), "compiler": ident,
                                                     "flags": CFLAGS}).encode())
     spec = importlib.util.spec_from_file_location(name, so)
@@ -154,3 +145,52 @@ def load(backend: str = "sympy"):
         manifest.unlink(missing_ok=True)  # make the next call rebuild it
         raise NativeBuildError(f"loading {so} failed ({exc}); it will be rebuilt on the next try") from exc
     return module
+
+
+def _unit(backend: str) -> tuple[Path, str, str]:
+    """``(source dir, C source, header)`` of the generated unit for ``backend``."""
+    src_dir = source_dir()
+    c_path = src_dir / f"hybrid_{backend}.c"
+    if not c_path.is_file():
+        raise NativeBuildError(f"no generated unit for backend {backend!r} in {src_dir}; "
+                               "known backends are 'sympy' and 'casadi'")
+    return src_dir, c_path.read_text(), (src_dir / f"hybrid_{backend}.h").read_text()
+
+
+@cache
+def load(backend: str = "sympy"):
+    """The compiled unit ``hybrid_<backend>`` as a cffi module (``.ffi``, ``.lib``)."""
+    src_dir, c_source, header = _unit(backend)
+    cdef = cdef_of(header)
+
+    def write_source(name: str, path: Path) -> None:
+        ffi = cffi.FFI()
+        ffi.cdef(cdef)
+        ffi.set_source(name, f'#include "hybrid_{backend}.c"')
+        with contextlib.redirect_stdout(io.StringIO()):  # cffi announces what it writes
+            ffi.emit_c_code(str(path))
+
+    return _cached_module(f"_hybrid_{backend}", {"c": c_source, "h": header, "cffi": cffi.__version__},
+                          write_source, [str(src_dir)])
+
+
+@cache
+def load_fastcall(backend: str = "sympy"):
+    """The one-state CPython entry point of the law (``hybrid/fastcall.c``) for ``backend``.
+
+    ``bind(kind, arm, surface, opts, singular_tol)`` makes a binding, ``call(binding, which,
+    q, qdot, a, Fc)`` evaluates it, returning None off the fast path (see the C file).
+    """
+    import numpy
+
+    src_dir, c_source, header = _unit(backend)
+    shim = (Path(__file__).with_name("fastcall.c")).read_text()
+
+    def write_source(name: str, path: Path) -> None:
+        path.write_text(f'#include "hybrid_{backend}.c"\n'
+                        f"#define HYBRID_LAW(kind) hybrid_{backend}_decoupling_law_##kind\n"
+                        f"#define HYBRID_MODULE {name}\n{shim}")
+
+    return _cached_module(f"_hybrid_fastcall_{backend}",
+                          {"c": c_source, "h": header, "shim": shim, "numpy": numpy.__version__},
+                          write_source, [str(src_dir), numpy.get_include()])

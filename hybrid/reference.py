@@ -24,6 +24,11 @@ def kinematics(q, qd, arm):
     return r, J, Jdqd
 
 
+def conditioning(J):
+    """Distance of ``J`` from singularity, ``2 |det J| / ||J||_F^2`` in [0, 1] (about ``|sin q2|``)."""
+    return 2.0 * abs(np.linalg.det(J)) / float(np.sum(J * J))
+
+
 def dynamics(q, qd, arm):
     """``B(q)`` [kg m^2] and ``n(q, q')`` [N m]: Coriolis/centrifugal, viscous, gravity (-y)."""
     L1, _, m1, m2, d1, d2, I1, I2, V1, V2, g = arm

@@ -16,16 +16,25 @@ import numpy as np
 
 from . import native, reference
 from .controllers import HybridController
-from .errors import HybridError, NonFiniteError, SingularConfigurationError
+from .errors import HybridError, NonFiniteError
 from .experiment import Experiment
 from .law import decoupling_law, status_error
+from .loops import model_error_note
 from .metrics import PLANT_OUTPUTS, compute_metrics
 
 OUT = {name: i for i, name in enumerate(PLANT_OUTPUTS)}
 
 
 class SimulationError(HybridError):
-    """The simulation cannot go on (singular pose, non-finite state); says when and where."""
+    """The simulation cannot go on (singular pose, non-finite state); says when and where.
+
+    ``time`` [s] is when it stopped; ``partial`` holds the run up to then (a
+    :class:`SimulationResult` without metrics), to see how it got there.
+    """
+
+    def __init__(self, message: str, time: float | None = None, partial: SimulationResult | None = None):
+        super().__init__(message)
+        self.time, self.partial = time, partial
 
 
 # ------------------------------------------------------------------ model terms
@@ -37,7 +46,7 @@ class NativeTerms:
     def __init__(self, exp: Experiment):
         arm, surf = exp.controller_arm(), exp.surface
         curvature = exp.curvature and exp.frame == "actual"
-        self._law = decoupling_law(arm, surf, curvature, backend=exp.backend)
+        self._law = decoupling_law(arm, surf, curvature, backend=exp.backend, singular_tol=exp.singular_tol)
         mod = native.load(exp.backend)
         self._ffi = mod.ffi
         self._measure = getattr(mod.lib, f"hybrid_{exp.backend}_task_measurement_{surf.kind}")
@@ -76,6 +85,7 @@ class NumpyTerms:
         self.kind = exp.surface.kind
         self.arm, self.surface = exp.controller_arm().as_array(), exp.surface.as_array()
         self.curvature = exp.curvature and exp.frame == "actual"
+        self.singular_tol = exp.singular_tol
 
     def measure(self, q, qdot, Fc):
         r, J, _ = reference.kinematics(q, qdot, self.arm)
@@ -87,10 +97,15 @@ class NumpyTerms:
         return reference.frame(self.kind, np.asarray(r, float), np.asarray(rdot, float), self.surface)
 
     def law(self, q, qdot, a, Fc):
+        # the same tests as the generated C, so both paths stop at the same sample
         _, J, _ = reference.kinematics(q, qdot, self.arm)
-        if abs(np.linalg.det(J)) < 1e-12:
-            raise SingularConfigurationError(f"decoupling law: singular Jacobian at q={q}")
-        return reference.decoupling_law(self.kind, q, qdot, a, Fc, self.arm, self.surface, self.curvature)[1]
+        inputs = {"q": q, "qdot": qdot, "a": a, "Fc": Fc}
+        if not reference.conditioning(J) >= self.singular_tol:
+            raise status_error(1 if np.isfinite(J).all() else 2, "decoupling_law", **inputs)
+        F, tau = reference.decoupling_law(self.kind, q, qdot, a, Fc, self.arm, self.surface, self.curvature)
+        if not (np.isfinite(F).all() and np.isfinite(tau).all()):
+            raise status_error(2, "decoupling_law", **inputs)
+        return tau
 
 
 # ------------------------------------------------------------------------ plant
@@ -137,10 +152,10 @@ class NumpyPlant:
 
     def advance(self, x, tau, nsteps, trajectory):
         for k in range(nsteps):
-            x[:] = reference.plant_advance(self.kind, x, tau, self.arm, self.plant, self.surface, self.h, 1)
-            if not np.isfinite(x).all():
-                return k
-            trajectory[k] = x
+            nxt = reference.plant_advance(self.kind, x, tau, self.arm, self.plant, self.surface, self.h, 1)
+            if not np.isfinite(nxt).all():
+                return k  # like the C: x keeps the last finite state
+            x[:] = trajectory[k] = nxt
         return nsteps
 
     def outputs(self, states):
@@ -175,11 +190,13 @@ def inverse_kinematics(exp: Experiment, r: np.ndarray) -> np.ndarray:
         raise HybridError(f"the start point {np.round(r, 4).tolist()} m is out of the arm's reach "
                           f"({lo:.3f} m to {hi:.3f} m from the base); move the surface or start_point")
     q2 = exp.elbow * math.acos(c2)
-    if abs(math.sin(q2)) < 1e-3:
-        raise HybridError(f"the start point {np.round(r, 4).tolist()} m puts the arm at a singularity "
-                          f"(q2 = {q2:.4f} rad); move it inside the workspace")
     q1 = math.atan2(r[1], r[0]) - math.atan2(L2 * math.sin(q2), L1 + L2 * math.cos(q2))
-    return np.array([q1, q2])
+    q = np.array([q1, q2])
+    cond = reference.conditioning(reference.kinematics(q, np.zeros(2), exp.arm.as_array())[1])
+    if cond < max(exp.singular_tol, 1e-3):
+        raise HybridError(f"the start point {np.round(r, 4).tolist()} m puts the arm at or near a singularity "
+                          f"(q2 = {q2:.4f} rad, 2|det J|/|J|_F^2 = {cond:.2e}); move it inside the workspace")
+    return q
 
 
 def check_path(exp: Experiment, controller: HybridController) -> None:
@@ -308,7 +325,7 @@ def simulate(exp: Experiment) -> SimulationResult:
     m, n_samples = exp.steps_per_sample, exp.n_samples
     total = m * n_samples
     states = np.empty((total + 1, 8))
-    taus = np.empty((total + 1, 2))
+    taus = np.full((total + 1, 2), np.nan)  # NaN marks "no torque computed" in a partial run
     states[0] = x
     for k in range(n_samples):
         t = k * exp.sample_time
@@ -318,23 +335,33 @@ def simulate(exp: Experiment) -> SimulationResult:
         Fc = np.array([out[OUT["Fc_x"]], out[OUT["Fc_y"]]])
         try:
             tau = np.ascontiguousarray(controller(t, q, qdot, Fc), dtype=float)
+            if not np.isfinite(tau).all():
+                raise NonFiniteError(f"the controller's torque is {tau.tolist()} N m")
         except HybridError as exc:
-            raise SimulationError(f"at t = {t:.4f} s (q = {np.round(q, 5).tolist()} rad): {exc}") from exc
+            raise SimulationError(
+                f"at t = {t:.4f} s (q = {np.round(q, 5).tolist()} rad, qdot = {np.round(qdot, 4).tolist()} "
+                f"rad/s): {exc}", t, _result(exp, plant, states[:1 + k * m], taus[:1 + k * m], False)) from exc
+        if k == 0:
+            taus[0] = tau  # the first sample's torque acts from t = 0
         rows = slice(1 + k * m, 1 + (k + 1) * m)
         done = plant.advance(x, tau, m, states[rows])
         taus[rows] = tau
         if done < m:
             t_fail = t + (done + 1) * exp.step
+            last = 1 + k * m + done
             raise SimulationError(
                 f"the plant state became NaN or infinite at t = {t_fail:.5f} s (last finite state "
                 f"q = {np.round(x[0:2], 5).tolist()} rad, qdot = {np.round(x[2:4], 3).tolist()} rad/s, "
-                f"tau = {np.round(tau, 3).tolist()} N m); reduce step or check gains and parameters")
-    taus[0] = taus[1]  # the first sample's torque acts from t = 0
-    if not np.isfinite(taus).all():
-        raise NonFiniteError("the controller produced non-finite torques")
-    t = np.arange(total + 1) * exp.step
+                f"tau = {np.round(tau, 3).tolist()} N m){model_error_note(exp)}; otherwise reduce step "
+                "or check gains and parameters", t_fail, _result(exp, plant, states[:last], taus[:last], False))
+    return _result(exp, plant, states, taus, True)
+
+
+def _result(exp: Experiment, plant, states: np.ndarray, taus: np.ndarray, metrics: bool) -> SimulationResult:
+    t = np.arange(len(states)) * exp.step
     res = SimulationResult(exp, t, states, taus, plant.outputs(states),
                            np.array([exp.force_reference(ti) for ti in t]),
                            np.array([exp.speed_reference(ti) for ti in t]))
-    res.metrics = compute_metrics(res)
+    if metrics:
+        res.metrics = compute_metrics(res)
     return res

@@ -39,18 +39,27 @@ def test_bad_shapes_and_dtypes(law, args, match):
         law(*args)
 
 
-def test_non_finite_state_is_named(law):
+@pytest.mark.parametrize("as_input", [list, np.array], ids=["lists", "arrays"])
+def test_non_finite_state_is_named(law, as_input):
+    # arrays take the one-state fast path, lists the general one: both must name the cause
+    args = [as_input(x) for x in (GOOD[0], [np.nan, 0.0], *GOOD[2:])]
     with pytest.raises(hybrid.NonFiniteError, match="non-finite input qdot"):
-        law(GOOD[0], [np.nan, 0.0], *GOOD[2:])
+        law(*args)
+    with pytest.raises(hybrid.NonFiniteError, match="non-finite input qdot"):
+        law.torque(*args)
     with pytest.raises(hybrid.HybridError, match="state 1 of 2"):
         law(np.array([GOOD[0]] * 2), np.array([[0.0, 0.0], [np.inf, 0.0]]), np.array([GOOD[2]] * 2),
             np.array([GOOD[3]] * 2))
 
 
 @pytest.mark.parametrize("q2", [0.0, 1e-7, np.pi, -np.pi + 1e-8])
-def test_singular_jacobian(law, q2):
+@pytest.mark.parametrize("as_input", [list, np.array], ids=["lists", "arrays"])
+def test_singular_jacobian(law, q2, as_input):
+    args = [as_input(x) for x in ([0.3, q2], *GOOD[1:])]
     with pytest.raises(hybrid.SingularConfigurationError, match="singular.*q2 near 0 or pi"):
-        law([0.3, q2], *GOOD[1:])
+        law(*args)
+    with pytest.raises(hybrid.SingularConfigurationError, match="singular"):
+        law.evaluate(*args)
 
 
 @pytest.mark.parametrize("make, match", [
@@ -87,14 +96,15 @@ def test_concurrent_calls_match_serial(law):
     rng = np.random.default_rng(1)
     states = [(np.array([rng.uniform(-3, 3), rng.uniform(0.3, 2.8)]), *rng.normal(size=(3, 2)))
               for _ in range(400)]
-    serial = [law(*s) for s in states]
-    results = [None] * len(states)
+    batches = [np.array(states[k:k + 50]).transpose(1, 0, 2) for k in range(0, len(states), 50)]
+    serial = [law(*s) for s in states] + [law.evaluate(*b) for b in batches]
+    results = [None] * len(serial)
 
     def work(idx):
-        for i in idx:
-            results[i] = law(*states[i])
+        for i in idx:  # the batched path releases the GIL inside the C call
+            results[i] = law(*states[i]) if i < len(states) else law.evaluate(*batches[i - len(states)])
 
-    threads = [threading.Thread(target=work, args=(range(k, len(states), 4),)) for k in range(4)]
+    threads = [threading.Thread(target=work, args=(range(k, len(serial), 4),)) for k in range(4)]
     for t in threads:
         t.start()
     for t in threads:
@@ -141,6 +151,13 @@ def test_cli_refuses_to_overwrite(tmp_path):
     assert (tmp_path / "res" / "metrics.json").read_text() == "{}"
 
 
+def test_bench_refuses_to_overwrite_its_json(tmp_path):
+    target = tmp_path / "bench.json"
+    target.write_text("mine")
+    proc = run_cli("bench", "--quick", "--json", str(target))
+    assert proc.returncode == 2 and "--force" in proc.stderr and target.read_text() == "mine"
+
+
 def test_missing_compiler_says_what_to_install(tmp_path):
     code = "import hybrid.native as n; n.load('sympy')"
     proc = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
@@ -154,8 +171,62 @@ def test_corrupt_cache_entry_is_rebuilt(tmp_path):
     code = ("import hybrid, numpy as np; law = hybrid.decoupling_law(hybrid.paper_arm(), "
             "hybrid.Circle((0.5, 0), 0.2)); print(law([2.2, 1.9], [0.3, -0.4], [0.1, 1.0], [-8.0, 3.0]))")
     first = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, env=env)
-    so = next(tmp_path.rglob("*.so"))
-    so.write_bytes(so.read_bytes()[:1000])  # a partial file, as a crash mid-copy would leave
+    libraries = list(tmp_path.rglob("*.so"))
+    assert len(libraries) == 2  # the cffi unit and the one-state entry point
+    for so in libraries:
+        so.write_bytes(so.read_bytes()[:1000])  # a partial file, as a crash mid-copy would leave
     second = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, env=env)
     assert second.returncode == 0, second.stderr
     assert first.stdout == second.stdout
+
+
+def _conditioning_at_samples(res):
+    """``2 |det J| / |J|_F^2`` at each control sample of a run, from the NumPy reference."""
+    exp = res.experiment
+    return np.array([hybrid.reference.conditioning(hybrid.reference.kinematics(q, np.zeros(2),
+                                                                               exp.arm.as_array())[1])
+                     for q in res.q[::exp.steps_per_sample][:exp.n_samples]])
+
+
+@pytest.mark.parametrize("backend, duration, tol", [("sympy", 2.0, 0.9), ("numpy", 0.5, 0.99)])
+def test_singularity_mid_run_stops_at_the_first_sample_past_the_tolerance(backend, duration, tol):
+    # the paper's arm stretches towards full extension as it slides (conditioning 1.0 -> 0.43)
+    nominal = hybrid.simulate(hybrid.paper_experiment(duration=duration, backend=backend))
+    cond = _conditioning_at_samples(nominal)
+    k = int(np.argmax(cond < tol))
+    assert k > 0, "the tolerance must be crossed after the start"
+    exp = hybrid.paper_experiment(duration=duration, backend=backend, singular_tol=tol)
+    with pytest.raises(hybrid.SimulationError) as info:
+        hybrid.simulate(exp)
+    err, t_stop = info.value, k * exp.sample_time
+    q = nominal.q[k * exp.steps_per_sample]
+    assert isinstance(err.__cause__, hybrid.SingularConfigurationError)
+    assert f"at t = {t_stop:.4f} s" in str(err) and str(np.round(q, 5).tolist()) in str(err)
+    assert err.time == pytest.approx(t_stop)
+    # the run up to the stop is kept, and it is the nominal run's
+    np.testing.assert_array_equal(err.partial.state, nominal.state[:len(err.partial.state)])
+    assert len(err.partial.t) == k * exp.steps_per_sample + 1
+
+
+def test_diverging_run_stops_with_time_place_and_cause():
+    # stable nominal loops, but a controller that believes the arm 3x heavier triples every loop gain
+    exp = hybrid.paper_experiment(model_error=2.0)
+    with pytest.raises(hybrid.SimulationError, match=r"NaN or infinite at t = \d") as info:
+        hybrid.simulate(exp)
+    err = info.value
+    assert 0 < err.time < exp.duration and f"t = {err.time:.5f} s" in str(err)
+    assert "model_error = 2.0" in str(err) and "force (normal) loop" in str(err)
+    part = err.partial
+    assert np.isfinite(part.state).all() and part.t[-1] == pytest.approx(err.time - exp.step)
+    assert np.abs(part.qdot[-1]).max() > 1e6 * max(np.abs(part.qdot[:100]).max(), 1e-3)
+    # the note's claim, checked on its own: the same loops with tripled gains fail the up-front check
+    tripled = {name: 3.0 * value for name, value in vars(exp.gains).items()}
+    with pytest.raises(hybrid.HybridError, match="force \\(normal\\) loop is unstable"):
+        hybrid.paper_experiment(model_error=0.0, **tripled)
+    assert hybrid.loops.model_error_note(hybrid.paper_experiment()) == ""
+
+
+@pytest.mark.parametrize("value", [-0.1, 1.0, np.nan, "tight"])
+def test_bad_singular_tolerance(value):
+    with pytest.raises(hybrid.HybridError, match="singular_tol"):
+        hybrid.paper_experiment(singular_tol=value)

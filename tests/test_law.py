@@ -37,6 +37,40 @@ def test_law_matches_numpy_reference(rng, backend, kind, curvature, elbow):
     assert worst < 1e-9, worst
 
 
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_single_state_gives_the_same_numbers_for_any_array_layout(rng, backend):
+    """The one-state entry point reads NumPy memory directly; every other layout takes the general path."""
+    for kind in KINDS:
+        arm, surface = random_arm(rng), random_surface(rng, kind)
+        law = hybrid.decoupling_law(arm, surface, curvature=True, backend=backend)
+        st = random_states(rng, 1)
+        # values exact in float32, so every layout below holds the same numbers
+        base = [st[k][0].astype(np.float32).astype(float) for k in ("q", "qdot", "a", "Fc")]
+        Fr, taur = ref.decoupling_law(kind, *base, arm.as_array(), surface.as_array(), True)
+        F, tau = law(*base), law.torque(*base)
+        assert rel_err(F, Fr) < 1e-9 and rel_err(tau, taur) < 1e-9
+        both = law.evaluate(*base)
+        np.testing.assert_array_equal(both[0], F)
+        np.testing.assert_array_equal(both[1], tau)
+        layouts = {
+            "list": lambda x: x.tolist(),
+            "tuple": lambda x: tuple(x),
+            "strided": lambda x: np.stack([x, -x], axis=1)[:, 0],
+            "big-endian": lambda x: x.astype(">f8"),
+            "float32": lambda x: x.astype(np.float32),
+            "read-only": lambda x: np.frombuffer(x.tobytes()),
+            "column": lambda x: x.reshape(2, 1)[:, 0],
+        }
+        for name, layout in layouts.items():
+            args = [layout(x) for x in base]
+            np.testing.assert_array_equal(law(*args), F, err_msg=name)
+            np.testing.assert_array_equal(law.torque(*args), tau, err_msg=name)
+        # the result is a fresh array each call, never a view of shared memory
+        first = law(*base)
+        first[:] = 0.0
+        np.testing.assert_array_equal(law(*base), F)
+
+
 def test_backends_agree_on_every_kernel(rng):
     for kind in KINDS:
         arm, surface = random_arm(rng), random_surface(rng, kind)

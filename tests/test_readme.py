@@ -1,0 +1,31 @@
+"""The README's library example runs as written and gives the numbers the references give."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+
+import hybrid
+from hybrid import reference as ref
+
+README = Path(__file__).resolve().parent.parent / "README.md"
+
+
+def test_readme_example(tmp_path, monkeypatch, capsys):
+    blocks = re.findall(r"```python\n(.*?)```", README.read_text(), flags=re.S)
+    assert blocks, "README lost its Python example"
+    monkeypatch.chdir(tmp_path)
+    ns: dict = {}
+    exec(compile(blocks[0], "README.md", "exec"), ns)
+    arm, circle = ns["arm"], ns["circle"]
+    F_ref, tau_ref = ref.decoupling_law("circle", ns["q"], ns["qdot"], ns["a"], ns["Fc"], arm.as_array(),
+                                        circle.as_array(), True)
+    np.testing.assert_allclose(ns["F"], F_ref, rtol=1e-10)
+    np.testing.assert_allclose(ns["tau"], tau_ref, rtol=1e-10)
+    np.testing.assert_array_equal(ns["F_many"], np.tile(ns["F"], (1000, 1)))
+    saved = hybrid.SimulationResult.load(tmp_path / "task.npz")
+    np.testing.assert_array_equal(saved.state, ns["res"].state)
+    assert abs(ns["res"].metrics["steady_state_force_error_N"]) < 0.05
+    assert "NaN or infinite at t = " in capsys.readouterr().out  # the diverging run was stopped and told
