@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
 from . import native
 from .errors import HybridError, NonFiniteError, SingularConfigurationError
-from .parameters import Arm, Circle, Plane
+from .parameters import Arm, Circle, Plane, _finite
 
 #: default lower bound on ``2 |det J| / |J|_F^2`` (``~ |sin q2|``) before a pose counts as singular
 SINGULAR_TOL = 1e-3
@@ -51,7 +52,7 @@ def status_error(status: int, where: str, **inputs) -> HybridError:
     return NonFiniteError(f"{where}: result is NaN or infinite ({hint}) at {shown}")
 
 
-@dataclass
+@dataclass(frozen=True)
 class DecouplingLaw:
     """Compiled task-space decoupling law for one arm model and one surface.
 
@@ -66,29 +67,31 @@ class DecouplingLaw:
     curvature: bool = False
     backend: str = "sympy"
     singular_tol: float = SINGULAR_TOL
-    _fn: object = field(init=False, repr=False)
 
     def __post_init__(self):
         check_arm(self.arm)
         kind = check_surface(self.surface)
         if self.backend not in ("sympy", "casadi"):
             raise HybridError(f"backend must be 'sympy' or 'casadi', got {self.backend!r}")
-        if not (np.isfinite(self.singular_tol) and 0 <= self.singular_tol < 1):
-            raise HybridError(f"singular_tol = {self.singular_tol}; give a value in [0, 1)")
+        _finite("decoupling_law", singular_tol=self.singular_tol)
+        if not 0 <= self.singular_tol < 1:
+            raise HybridError(f"singular_tol = {self.singular_tol}; give a value in [0, 1) (default {SINGULAR_TOL})")
+        # frozen: the compiled buffers below must keep matching the fields
+        init = partial(object.__setattr__, self)
         mod = native.load(self.backend)
-        self._ffi = mod.ffi
+        init("_ffi", mod.ffi)
         name = f"hybrid_{self.backend}_decoupling_law_{kind}"
-        self._single = getattr(mod.lib, name)
-        self._batch = getattr(mod.lib, name + "_batch")
+        init("_single", getattr(mod.lib, name))
+        init("_batch", getattr(mod.lib, name + "_batch"))
         # parameters live in C buffers for the law's lifetime: a call passes pointers only
-        self._arm = mod.ffi.new("double[]", self.arm.as_array().tolist())
-        self._surface = mod.ffi.new("double[]", self.surface.as_array().tolist())
-        self._opts = mod.ffi.new("double[]", [1.0 if self.curvature else 0.0])
+        init("_arm", mod.ffi.new("double[]", self.arm.as_array().tolist()))
+        init("_surface", mod.ffi.new("double[]", self.surface.as_array().tolist()))
+        init("_opts", mod.ffi.new("double[]", [1.0 if self.curvature else 0.0]))
         # one state from NumPy arrays skips cffi's per-array conversion (see hybrid/fastcall.c)
         fast = native.load_fastcall(self.backend)
-        self._fast = fast.call
-        self._binding = fast.bind(kind, self.arm.as_array(), self.surface.as_array(),
-                                  np.array([1.0 if self.curvature else 0.0]), float(self.singular_tol))
+        init("_fast", fast.call)
+        init("_binding", fast.bind(kind, self.arm.as_array(), self.surface.as_array(),
+                                   np.array([1.0 if self.curvature else 0.0]), float(self.singular_tol)))
 
     def evaluate(self, q, qdot, a, Fc) -> tuple[np.ndarray, np.ndarray]:
         """``(F*, tau)`` for one state (shape ``(2,)``) or N states (shape ``(N, 2)``)."""

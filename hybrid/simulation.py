@@ -347,14 +347,37 @@ def simulate(exp: Experiment) -> SimulationResult:
         done = plant.advance(x, tau, m, states[rows])
         taus[rows] = tau
         if done < m:
-            t_fail = t + (done + 1) * exp.step
             last = 1 + k * m + done
-            raise SimulationError(
-                f"the plant state became NaN or infinite at t = {t_fail:.5f} s (last finite state "
-                f"q = {np.round(x[0:2], 5).tolist()} rad, qdot = {np.round(x[2:4], 3).tolist()} rad/s, "
-                f"tau = {np.round(tau, 3).tolist()} N m){model_error_note(exp)}; otherwise reduce step "
-                "or check gains and parameters", t_fail, _result(exp, plant, states[:last], taus[:last], False))
+            raise _divergence(_result(exp, plant, states[:last], taus[:last], False), t, q, qdot, tau, x)
     return _result(exp, plant, states, taus, True)
+
+
+def _divergence(partial: SimulationResult, t: float, q, qdot, tau, x) -> SimulationError:
+    """The error for a plant state gone non-finite in the sample from ``t`` (state ``q, qdot`` then,
+    torque ``tau``, last finite state ``x``): when, where, and the likely cause."""
+    exp = partial.experiment
+    t_fail = partial.t[-1] + exp.step
+    cond = reference.conditioning(reference.kinematics(q, qdot, exp.arm.as_array())[1])
+    return SimulationError(
+        f"the plant state became NaN or infinite at t = {t_fail:.5f} s, in the control sample from "
+        f"t = {t:.4f} s (there q = {np.round(q, 5).tolist()} rad, qdot = {np.round(qdot, 4).tolist()} "
+        f"rad/s, 2|det J|/|J|_F^2 = {cond:.3g}, tau = {np.round(tau, 3).tolist()} N m; last finite "
+        f"state q = {np.array2string(x[0:2], precision=4)} rad, qdot = "
+        f"{np.array2string(x[2:4], precision=4)} rad/s){model_error_note(exp)}"
+        f"{_closest_singularity(partial)}; otherwise reduce step or check gains and parameters",
+        t_fail, partial)
+
+
+def _closest_singularity(res: SimulationResult, near: float = 0.1) -> str:
+    """Where a failed run passed closest to a singularity, when that was close (a clause of the message)."""
+    arm, rows = res.experiment.arm.as_array(), range(0, len(res.t), 5)
+    cond = np.array([reference.conditioning(reference.kinematics(res.q[i], res.qdot[i], arm)[1]) for i in rows])
+    i = int(np.argmin(cond))
+    if cond[i] >= near:
+        return ""
+    return (f"; the arm passed near a singularity (2|det J|/|J|_F^2 = {cond[i]:.2g} at t = {res.t[rows[i]]:.4f} s), "
+            "where the law's torques grow without bound: raise singular_tol to stop there, or keep the "
+            "path away from full extension/folding")
 
 
 def _result(exp: Experiment, plant, states: np.ndarray, taus: np.ndarray, metrics: bool) -> SimulationResult:

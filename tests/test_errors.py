@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 import subprocess
 import sys
 import threading
@@ -226,7 +227,34 @@ def test_diverging_run_stops_with_time_place_and_cause():
     assert hybrid.loops.model_error_note(hybrid.paper_experiment()) == ""
 
 
+def test_run_driven_through_a_singularity_between_samples_says_where():
+    # F_d -> 0 lifts the sensor off; the leftover force integral drifts the free arm to full extension,
+    # crossing q2 = 0 within one 10 ms sample, where the law's torque is unbounded
+    with pytest.raises(hybrid.SimulationError, match="NaN or infinite") as info:
+        hybrid.simulate(hybrid.paper_experiment(F_d=hybrid.Step(10.0, 0.0, 0.4)))
+    err = info.value
+    found = re.search(r"passed near a singularity \(2\|det J\|/\|J\|_F\^2 = ([\d.e-]+) at t = ([\d.]+) s\)", str(err))
+    assert found, str(err)
+    t_near = float(found.group(2))
+    assert t_near < err.time
+    q2 = err.partial.q[np.argmin(np.abs(err.partial.t - t_near)), 1]
+    assert abs(np.sin(q2)) < 0.01  # the arm really was at full extension then
+
+
 @pytest.mark.parametrize("value", [-0.1, 1.0, np.nan, "tight"])
 def test_bad_singular_tolerance(value):
     with pytest.raises(hybrid.HybridError, match="singular_tol"):
         hybrid.paper_experiment(singular_tol=value)
+    with pytest.raises(hybrid.HybridError, match="singular_tol"):
+        hybrid.decoupling_law(ARM, CIRCLE, singular_tol=value)
+
+
+def test_contact_loss_is_reported_not_raised():
+    # commanding a pull (F_d = -1 N) from t = 0.4 s lifts the sensor off the surface
+    res = hybrid.simulate(hybrid.paper_experiment(F_d=hybrid.Step(10.0, -1.0, 0.4), duration=0.8))
+    assert res.t[-1] == pytest.approx(0.8) and np.isfinite(res.state).all()
+    separated = res.penetration < 0  # sensor tip above the surface: no surface force can act
+    assert separated.any() and (res.contact_force[separated] == 0).all()
+    assert res.metrics["contact_losses"] >= 1
+    assert res.metrics["time_out_of_contact_s"] >= np.count_nonzero(separated[1:]) * res.experiment.step
+    assert not separated[res.t < 0.4].any()
