@@ -8,7 +8,7 @@ from dataclasses import asdict, dataclass, field, fields, replace
 import numpy as np
 
 from .errors import HybridError
-from .law import SINGULAR_TOL
+from .law import SINGULAR_TOL, check_singular_tol
 from .parameters import Arm, Circle, Plane, _finite, paper_arm
 
 CONTROLLERS = ("task", "khatib")
@@ -133,10 +133,8 @@ class Experiment:
             raise HybridError(f"unknown surface {self.surface!r}; give a hybrid.Circle or hybrid.Plane")
         if self.elbow not in (1, -1):
             raise HybridError(f"elbow = {self.elbow}; give +1 (q2 > 0) or -1 (q2 < 0)")
-        _finite("Experiment", duration=self.duration, step=self.step, sample_time=self.sample_time,
-                singular_tol=self.singular_tol)
-        if not 0 <= self.singular_tol < 1:
-            raise HybridError(f"singular_tol = {self.singular_tol}; give a value in [0, 1) (default {SINGULAR_TOL})")
+        _finite("Experiment", duration=self.duration, step=self.step, sample_time=self.sample_time)
+        check_singular_tol("Experiment", self.singular_tol)
         if self.duration <= 0:
             raise HybridError(f"duration = {self.duration} s; give a positive duration")
         if self.step <= 0 or self.sample_time <= 0:

@@ -27,6 +27,13 @@ def check_arm(arm) -> None:
         raise HybridError(f"arm must be a hybrid.Arm (see hybrid.paper_arm()), got {type(arm).__name__}")
 
 
+def check_singular_tol(owner: str, value) -> None:
+    """``value`` as a singular-pose tolerance: a real number in [0, 1)."""
+    _finite(owner, singular_tol=value)
+    if not 0 <= value < 1:
+        raise HybridError(f"singular_tol = {value}; give a value in [0, 1) (default {SINGULAR_TOL})")
+
+
 def as_states(name: str, x) -> np.ndarray:
     """``x`` as a C-contiguous float64 array of shape ``(2,)`` or ``(N, 2)``."""
     if np.iscomplexobj(x):
@@ -73,9 +80,7 @@ class DecouplingLaw:
         kind = check_surface(self.surface)
         if self.backend not in ("sympy", "casadi"):
             raise HybridError(f"backend must be 'sympy' or 'casadi', got {self.backend!r}")
-        _finite("decoupling_law", singular_tol=self.singular_tol)
-        if not 0 <= self.singular_tol < 1:
-            raise HybridError(f"singular_tol = {self.singular_tol}; give a value in [0, 1) (default {SINGULAR_TOL})")
+        check_singular_tol("decoupling_law", self.singular_tol)
         # frozen: the compiled buffers below must keep matching the fields
         init = partial(object.__setattr__, self)
         mod = native.load(self.backend)
@@ -83,15 +88,15 @@ class DecouplingLaw:
         name = f"hybrid_{self.backend}_decoupling_law_{kind}"
         init("_single", getattr(mod.lib, name))
         init("_batch", getattr(mod.lib, name + "_batch"))
+        arm, surface, opts = self.arm.as_array(), self.surface.as_array(), np.array([1.0 if self.curvature else 0.0])
         # parameters live in C buffers for the law's lifetime: a call passes pointers only
-        init("_arm", mod.ffi.new("double[]", self.arm.as_array().tolist()))
-        init("_surface", mod.ffi.new("double[]", self.surface.as_array().tolist()))
-        init("_opts", mod.ffi.new("double[]", [1.0 if self.curvature else 0.0]))
+        init("_arm", mod.ffi.new("double[]", arm.tolist()))
+        init("_surface", mod.ffi.new("double[]", surface.tolist()))
+        init("_opts", mod.ffi.new("double[]", opts.tolist()))
         # one state from NumPy arrays skips cffi's per-array conversion (see hybrid/fastcall.c)
         fast = native.load_fastcall(self.backend)
         init("_fast", fast.call)
-        init("_binding", fast.bind(kind, self.arm.as_array(), self.surface.as_array(),
-                                   np.array([1.0 if self.curvature else 0.0]), float(self.singular_tol)))
+        init("_binding", fast.bind(kind, arm, surface, opts, float(self.singular_tol)))
 
     def evaluate(self, q, qdot, a, Fc) -> tuple[np.ndarray, np.ndarray]:
         """``(F*, tau)`` for one state (shape ``(2,)``) or N states (shape ``(N, 2)``)."""

@@ -24,8 +24,9 @@ def kinematics(q, qd, arm):
     return r, J, Jdqd
 
 
-def conditioning(J):
-    """Distance of ``J`` from singularity, ``2 |det J| / ||J||_F^2`` in [0, 1] (about ``|sin q2|``)."""
+def conditioning(q, arm):
+    """Distance of ``J(q)`` from singularity, ``2 |det J| / ||J||_F^2`` in [0, 1] (about ``|sin q2|``)."""
+    J = kinematics(q, (0.0, 0.0), arm)[1]
     return 2.0 * abs(np.linalg.det(J)) / float(np.sum(J * J))
 
 

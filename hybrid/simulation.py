@@ -98,10 +98,9 @@ class NumpyTerms:
 
     def law(self, q, qdot, a, Fc):
         # the same tests as the generated C, so both paths stop at the same sample
-        _, J, _ = reference.kinematics(q, qdot, self.arm)
         inputs = {"q": q, "qdot": qdot, "a": a, "Fc": Fc}
-        if not reference.conditioning(J) >= self.singular_tol:
-            raise status_error(1 if np.isfinite(J).all() else 2, "decoupling_law", **inputs)
+        if not reference.conditioning(q, self.arm) >= self.singular_tol:
+            raise status_error(1 if np.isfinite(q).all() else 2, "decoupling_law", **inputs)
         F, tau = reference.decoupling_law(self.kind, q, qdot, a, Fc, self.arm, self.surface, self.curvature)
         if not (np.isfinite(F).all() and np.isfinite(tau).all()):
             raise status_error(2, "decoupling_law", **inputs)
@@ -192,7 +191,7 @@ def inverse_kinematics(exp: Experiment, r: np.ndarray) -> np.ndarray:
     q2 = exp.elbow * math.acos(c2)
     q1 = math.atan2(r[1], r[0]) - math.atan2(L2 * math.sin(q2), L1 + L2 * math.cos(q2))
     q = np.array([q1, q2])
-    cond = reference.conditioning(reference.kinematics(q, np.zeros(2), exp.arm.as_array())[1])
+    cond = reference.conditioning(q, exp.arm.as_array())
     if cond < max(exp.singular_tol, 1e-3):
         raise HybridError(f"the start point {np.round(r, 4).tolist()} m puts the arm at or near a singularity "
                           f"(q2 = {q2:.4f} rad, 2|det J|/|J|_F^2 = {cond:.2e}); move it inside the workspace")
@@ -357,7 +356,7 @@ def _divergence(partial: SimulationResult, t: float, q, qdot, tau, x) -> Simulat
     torque ``tau``, last finite state ``x``): when, where, and the likely cause."""
     exp = partial.experiment
     t_fail = partial.t[-1] + exp.step
-    cond = reference.conditioning(reference.kinematics(q, qdot, exp.arm.as_array())[1])
+    cond = reference.conditioning(q, exp.arm.as_array())
     return SimulationError(
         f"the plant state became NaN or infinite at t = {t_fail:.5f} s, in the control sample from "
         f"t = {t:.4f} s (there q = {np.round(q, 5).tolist()} rad, qdot = {np.round(qdot, 4).tolist()} "
@@ -371,7 +370,7 @@ def _divergence(partial: SimulationResult, t: float, q, qdot, tau, x) -> Simulat
 def _closest_singularity(res: SimulationResult, near: float = 0.1) -> str:
     """Where a failed run passed closest to a singularity, when that was close (a clause of the message)."""
     arm, rows = res.experiment.arm.as_array(), range(0, len(res.t), 5)
-    cond = np.array([reference.conditioning(reference.kinematics(res.q[i], res.qdot[i], arm)[1]) for i in rows])
+    cond = np.array([reference.conditioning(res.q[i], arm) for i in rows])
     i = int(np.argmin(cond))
     if cond[i] >= near:
         return ""
