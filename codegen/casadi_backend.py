@@ -63,17 +63,23 @@ def to_sx(expr: sp.Expr, symbols: dict, memo: dict):
 
 
 def kernel_function(kernel: Kernel) -> ca.Function:
-    """The kernel as a CasADi ``Function`` of its input arrays (also used by the benchmarks)."""
-    symbols, args = {}, []
-    for name, m in kernel.inputs:
-        v = ca.SX.sym(name, m.shape[0])
-        args.append(v)
-        symbols.update({s: v[i] for i, s in enumerate(m)})
-    memo: dict = {}
-    outs = [ca.vertcat(*[to_sx(e, symbols, memo) for e in m]) for _, m in kernel.outputs]
+    """The kernel as a CasADi ``Function`` of its input arrays (also used by the benchmarks).
+
+    A kernel written in CasADi SX is used as it is; one written in SymPy is translated.
+    """
+    outputs = kernel.core_outputs()
+    if all(isinstance(a.expr, ca.SX) for a in (*kernel.inputs, *outputs)):
+        args, outs = [a.expr for a in kernel.inputs], [a.expr for a in outputs]
+    else:
+        symbols, args = {}, []
+        for a in kernel.inputs:
+            v = ca.SX.sym(a.name, a.size)
+            args.append(v)
+            symbols.update({s: v[i] for i, s in enumerate(a.expr)})
+        memo: dict = {}
+        outs = [ca.vertcat(*[to_sx(e, symbols, memo) for e in a.expr]) for a in outputs]
     outs = [ca.cse(o) for o in outs] if hasattr(ca, "cse") else outs
-    return ca.Function(kernel.name, args, outs,
-                       [n for n, _ in kernel.inputs], [n for n, _ in kernel.outputs])
+    return ca.Function(kernel.name, args, outs, [a.name for a in kernel.inputs], [a.name for a in outputs])
 
 
 _FUNCTION_START = re.compile(r"^(?:static int (casadi_f\d+)|casadi_real (casadi_\w+))\(", re.M)
@@ -111,7 +117,7 @@ def kernel_sources(kernels: list[Kernel], prefix: str) -> tuple[str, dict[str, t
             names.append(m.group(1))
             # the work array is ours to size; CasADi's mem and iw go unused
             head, rest = body.split("{", 1)
-            kernels_c.append(f"{head}{{\n  (void)iw; (void)mem; (void)w;{rest}")
+            kernels_c.append(f"{head}{{\n  (void)arg; (void)iw; (void)mem; (void)w;{rest}")
         else:
             helpers.append("static " + body)
     if len(names) != len(funcs):

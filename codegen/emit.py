@@ -16,6 +16,7 @@ no paths, stable ordering, so regenerating gives the same bytes.
 from __future__ import annotations
 
 import hashlib
+import json
 from dataclasses import dataclass
 from importlib.metadata import version
 from pathlib import Path
@@ -24,23 +25,26 @@ from . import model
 from .model import Kernel
 
 BACKENDS = ("sympy", "casadi")
+#: bumped whenever the emitted interface changes; recorded in every manifest and cache key
+GENERATOR_VERSION = "2"
 STAMP = "/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: "
 STATUS = {"HYBRID_OK": 0, "HYBRID_SINGULAR": 1, "HYBRID_NONFINITE": 2}
-#: kernels evaluated over N states by a ``_batch`` entry point, with their per-state inputs
-BATCHED = {"decoupling_law": ("q", "qd", "a", "Fc"), "plant_outputs": ("x",)}
+MANIFEST_STAMP = "hybrid generated file: do not edit; change codegen/ and regenerate"
 
 
 @dataclass(frozen=True)
 class Unit:
-    """One generated translation unit: ``hybrid_<backend>.c`` and its header."""
+    """One generated translation unit: ``<prefix>.c``, its header and its manifest."""
 
-    backend: str
+    prefix: str
     source: str
     header: str
+    manifest: str
 
     @property
     def files(self) -> dict[str, str]:
-        return {f"hybrid_{self.backend}.c": self.source, f"hybrid_{self.backend}.h": self.header}
+        return {f"{self.prefix}.c": self.source, f"{self.prefix}.h": self.header,
+                f"{self.prefix}.json": self.manifest}
 
 
 def stamp(body: str) -> str:
@@ -48,8 +52,19 @@ def stamp(body: str) -> str:
     return f"{STAMP}{hashlib.sha256(body.encode()).hexdigest()} */\n{body}"
 
 
+def _json_body_hash(data: dict) -> str:
+    body = {k: v for k, v in data.items() if k not in ("do_not_edit", "body_sha256")}
+    return hashlib.sha256(json.dumps(body, sort_keys=True).encode()).hexdigest()
+
+
 def is_hand_edited(text: str) -> bool:
-    """True when a generated file's body no longer matches the hash in its first line."""
+    """True when a generated file's body no longer matches the hash it carries."""
+    if text.startswith("{"):
+        try:
+            data = json.loads(text)
+            return data.get("body_sha256") != _json_body_hash(data)
+        except ValueError:
+            return True
     first, _, body = text.partition("\n")
     if not first.startswith(STAMP):
         return True
@@ -59,77 +74,71 @@ def is_hand_edited(text: str) -> bool:
 # ----------------------------------------------------------------- signatures
 
 
-def _has_cond(k: Kernel) -> bool:
-    return any(n == "cond" for n, _ in k.outputs)
-
-
-def _base(k: Kernel) -> str:
-    return k.name.rsplit("_", 1)[0] if k.name.endswith(("_plane", "_circle")) else k.name
-
-
 def _params(k: Kernel) -> list[str]:
     """Public C parameters of a kernel's entry point."""
-    ps = [f"const double *{n}" for n, _ in k.inputs]
-    if _has_cond(k):
+    ps = [f"const double *{a.name}" for a in k.inputs]
+    if k.conditioning is not None:
         ps.append("double singular_tol")
-    ps += [f"double *{n}" for n, _ in k.outputs if n != "cond"]
+    ps += [f"double *{a.name}" for a in k.outputs]
     return ps
 
 
 def _sizes_doc(k: Kernel) -> str:
-    ins = ", ".join(f"{n}[{m.shape[0]}]" for n, m in k.inputs)
-    outs = ", ".join(f"{n}[{m.shape[0]}]" for n, m in k.outputs if n != "cond")
+    ins = ", ".join(f"{a.name}[{a.size}]" for a in k.inputs)
+    outs = ", ".join(f"{a.name}[{a.size}]" for a in k.outputs)
     return f"{k.doc}.\n   in: {ins}; out: {outs}"
 
 
-def prototypes(prefix: str, kernels: tuple[Kernel, ...]) -> list[tuple[str, str]]:
+def _integrator_params(k: Kernel) -> list[str]:
+    x, *held = k.inputs
+    return [f"double *{x.name}", *(f"const double *{a.name}" for a in held), "double h", "int nsteps",
+            "double *trajectory", "int *steps_done"]
+
+
+def prototypes(prefix: str, kernels: tuple[Kernel, ...], cond_doc: str) -> list[tuple[str, str]]:
     """``(doc, prototype)`` of every public function, in order."""
     out = []
     for k in kernels:
-        out.append((_sizes_doc(k) + (
-            ". Returns HYBRID_SINGULAR when 2|det J|/|J|_F^2 < singular_tol" if _has_cond(k) else ""),
-            f"int {prefix}_{k.name}({', '.join(_params(k))});"))
-        if _base(k) in BATCHED:
-            per = BATCHED[_base(k)]
-            ps = ["int n", *_params(k), "int *status"]
-            out.append((f"{k.name} over n states: {', '.join(per)} and the outputs are n rows "
+        out.append((_sizes_doc(k) + (f". Returns HYBRID_SINGULAR when {cond_doc} < singular_tol"
+                                     if k.conditioning is not None else ""),
+                    f"int {prefix}_{k.name}({', '.join(_params(k))});"))
+        if k.batched:
+            ps = ["int nstates", *_params(k), "int *status"]
+            out.append((f"{k.name} over nstates states: {', '.join(k.batched)} and the outputs are nstates rows "
                         "(row-major); status[i] per state; returns how many states failed",
                         f"int {prefix}_{k.name}_batch({', '.join(ps)});"))
-        if k.name.startswith("plant_rhs_"):
-            kind = k.name.rsplit("_", 1)[1]
-            nx = k.input_sizes()["x"]
-            out.append((f"advance the plant state x[{nx}] by nsteps classical RK4 steps of h [s] with tau "
-                        f"held constant (zero-order hold); if trajectory is not NULL it receives the "
-                        f"state after each step (nsteps x {nx}, row-major). On HYBRID_NONFINITE, x "
+        if k.integrator:
+            x, nx = k.inputs[0].name, k.inputs[0].size
+            out.append((f"advance the state {x}[{nx}] by nsteps classical RK4 steps of h [s] with the other "
+                        f"inputs held constant (zero-order hold); if trajectory is not NULL it receives the "
+                        f"state after each step (nsteps x {nx}, row-major). On HYBRID_NONFINITE, {x} "
                         "keeps the last finite state and *steps_done says how many steps completed",
-                        f"int {prefix}_plant_advance_{kind}(double *x, const double *tau, const double *arm, "
-                        "const double *plant, const double *surface, double h, int nsteps, "
-                        "double *trajectory, int *steps_done);"))
+                        f"int {prefix}_{k.integrator}({', '.join(_integrator_params(k))});"))
     return out
 
 
-def _layout_doc(n_links: int) -> str:
-    rows = [
-        ("arm", model.arm_parameter_names(n_links)),
-        ("plant", model.PLANT_PARAMETERS),
-        *((f"surface ({k})", v) for k, v in model.SURFACE_PARAMETERS.items()),
-        ("opts (decoupling law)", model.LAW_OPTIONS),
-        ("y (plant outputs)", model.PLANT_OUTPUTS),
-    ]
-    return "\n".join(f"   {name}[{len(v)}] = {{{', '.join(v)}}}" for name, v in rows)
+def _layout_doc(kernels: tuple[Kernel, ...]) -> str:
+    seen, rows = set(), []
+    for k in kernels:
+        for a in (*k.inputs, *k.outputs):
+            if a.names and (a.name, a.names) not in seen:
+                seen.add((a.name, a.names))
+                rows.append(f"   {a.name}[{a.size}] = {{{', '.join(a.names)}}}")
+    return "\n".join(rows)
 
 
-def header(prefix: str, kernels: tuple[Kernel, ...], n_links: int) -> str:
+def header(prefix: str, kernels: tuple[Kernel, ...], cond_doc: str, defines: dict | None = None) -> str:
     guard = prefix.upper() + "_H"
+    consts = "".join(f"#define {prefix.upper()}_{k} {v}\n" for k, v in (defines or {}).items())
     status = "\n".join(f"#define {k} {v}" for k, v in STATUS.items())
-    protos = "\n\n".join(f"/* {doc}. */\n{p}" for doc, p in prototypes(prefix, kernels))
+    protos = "\n\n".join(f"/* {doc}. */\n{p}" for doc, p in prototypes(prefix, kernels, cond_doc))
     return f"""#ifndef {guard}
 #define {guard}
 
-/* Parameter arrays (SI units: m, kg, kg m^2, N m s/rad, N/m, N s/m, m/s):
-{_layout_doc(n_links)}
+/* Arrays of mixed quantities, element by element (SI units; see {prefix}.json for each unit):
+{_layout_doc(kernels)}
    Matrices are row-major. */
-
+{consts}
 /* cdef-begin */
 {status}
 
@@ -140,11 +149,28 @@ def header(prefix: str, kernels: tuple[Kernel, ...], n_links: int) -> str:
 """
 
 
+def manifest(prefix: str, kernels: tuple[Kernel, ...], tools: str, cond_doc: str, info: dict) -> str:
+    """The unit's interface as JSON: every function's symbol, arguments, sizes, units, properties."""
+    functions = []
+    for k in kernels:
+        f = {"name": k.name, "symbol": f"{prefix}_{k.name}", "doc": k.doc,
+             "inputs": [a.describe() for a in k.inputs], "outputs": [a.describe() for a in k.outputs],
+             "conditioning": cond_doc if k.conditioning is not None else None,
+             "batched": {"symbol": f"{prefix}_{k.name}_batch", "per_state": list(k.batched)} if k.batched else None,
+             "integrator": ({"symbol": f"{prefix}_{k.integrator}", "state": k.inputs[0].name}
+                            if k.integrator else None)}
+        functions.append(f)
+    data = {"do_not_edit": MANIFEST_STAMP, "unit": prefix, "generator": GENERATOR_VERSION, "tools": tools,
+            "status": STATUS, **info, "functions": functions}
+    data["body_sha256"] = _json_body_hash(data)
+    return json.dumps(data, indent=1) + "\n"
+
+
 # ------------------------------------------------------------------- wrappers
 
 
 def _wrappers(prefix: str, kernels: tuple[Kernel, ...]) -> str:
-    """Public entry points: status checks, batch loops and the RK4 integrator."""
+    """Public entry points: status checks, batch loops and the RK4 integrators."""
     out = [f"""#include "{prefix}.h"
 
 static int all_finite(const double *v, int n) {{
@@ -156,57 +182,56 @@ static int all_finite(const double *v, int n) {{
 }}
 """]
     for k in kernels:
-        ins = [n for n, _ in k.inputs]
-        outs = [(n, m.shape[0]) for n, m in k.outputs if n != "cond"]
-        core_args = ins + [n for n, _ in outs] + (["cond"] if _has_cond(k) else [])
+        cond = k.conditioning is not None
+        core_args = [a.name for a in (*k.inputs, *k.core_outputs())]
         lines = [f"int {prefix}_{k.name}({', '.join(_params(k))}) {{"]
-        if _has_cond(k):
+        if cond:
             lines.append("    double cond[1];")
         lines.append(f"    {k.name}_core({', '.join(core_args)});")
-        if _has_cond(k):
+        if cond:
             lines.append("    if (!(fabs(cond[0]) >= singular_tol)) return HYBRID_SINGULAR;")
-        finite = " && ".join(f"all_finite({n}, {s})" for n, s in outs)
+        finite = " && ".join(f"all_finite({a.name}, {a.size})" for a in k.outputs)
         lines.append(f"    return ({finite}) ? HYBRID_OK : HYBRID_NONFINITE;\n}}\n")
         out.append("\n".join(lines))
-        if _base(k) in BATCHED:
-            per = set(BATCHED[_base(k)])
-            sizes = {**k.input_sizes(), **k.output_sizes()}
+        if k.batched:
+            per, sizes = set(k.batched), k.sizes()
             args = []
             for p in _params(k):
                 name = p.split("*")[-1] if "*" in p else p.split()[-1]
                 shifted = name in per or (name in sizes and p.startswith("double *"))
                 args.append(f"{name} + (long)i * {sizes[name]}" if shifted else name)
-            out.append(f"""int {prefix}_{k.name}_batch(int n, {', '.join(_params(k))}, int *status) {{
+            out.append(f"""int {prefix}_{k.name}_batch(int nstates, {', '.join(_params(k))}, int *status) {{
     int i, failed = 0;
-    for (i = 0; i < n; ++i) {{
+    for (i = 0; i < nstates; ++i) {{
         status[i] = {prefix}_{k.name}({', '.join(args)});
         failed += status[i] != HYBRID_OK;
     }}
     return failed;
 }}
 """)
-        if k.name.startswith("plant_rhs_"):
-            kind = k.name.rsplit("_", 1)[1]
-            nx = k.input_sizes()["x"]
-            out.append(f"""int {prefix}_plant_advance_{kind}(double *x, const double *tau, const double *arm, const double *plant, const double *surface, double h, int nsteps, double *trajectory, int *steps_done) {{
+        if k.integrator:
+            x, nx = k.inputs[0].name, k.inputs[0].size
+            held = ", ".join(a.name for a in k.inputs[1:])
+            rhs = k.name + "_core"
+            out.append(f"""int {prefix}_{k.integrator}({', '.join(_integrator_params(k))}) {{
     double k1[{nx}], k2[{nx}], k3[{nx}], k4[{nx}], xt[{nx}];
     int i, step;
     for (step = 0; step < nsteps; ++step) {{
-        plant_rhs_{kind}_core(x, tau, arm, plant, surface, k1);
-        for (i = 0; i < {nx}; ++i) xt[i] = x[i] + 0.5 * h * k1[i];
-        plant_rhs_{kind}_core(xt, tau, arm, plant, surface, k2);
-        for (i = 0; i < {nx}; ++i) xt[i] = x[i] + 0.5 * h * k2[i];
-        plant_rhs_{kind}_core(xt, tau, arm, plant, surface, k3);
-        for (i = 0; i < {nx}; ++i) xt[i] = x[i] + h * k3[i];
-        plant_rhs_{kind}_core(xt, tau, arm, plant, surface, k4);
-        for (i = 0; i < {nx}; ++i) xt[i] = x[i] + h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
+        {rhs}({x}, {held}, k1);
+        for (i = 0; i < {nx}; ++i) xt[i] = {x}[i] + 0.5 * h * k1[i];
+        {rhs}(xt, {held}, k2);
+        for (i = 0; i < {nx}; ++i) xt[i] = {x}[i] + 0.5 * h * k2[i];
+        {rhs}(xt, {held}, k3);
+        for (i = 0; i < {nx}; ++i) xt[i] = {x}[i] + h * k3[i];
+        {rhs}(xt, {held}, k4);
+        for (i = 0; i < {nx}; ++i) xt[i] = {x}[i] + h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
         if (!all_finite(xt, {nx})) {{
             if (steps_done) *steps_done = step;
             return HYBRID_NONFINITE;
         }}
-        for (i = 0; i < {nx}; ++i) x[i] = xt[i];
+        for (i = 0; i < {nx}; ++i) {x}[i] = xt[i];
         if (trajectory) {{
-            for (i = 0; i < {nx}; ++i) trajectory[(long)step * {nx} + i] = x[i];
+            for (i = 0; i < {nx}; ++i) trajectory[(long)step * {nx} + i] = {x}[i];
         }}
     }}
     if (steps_done) *steps_done = nsteps;
@@ -217,7 +242,7 @@ static int all_finite(const double *v, int n) {{
 
 
 def _core_signature(k: Kernel) -> str:
-    ps = [f"const double *{n}" for n, _ in k.inputs] + [f"double *{n}" for n, _ in k.outputs]
+    ps = [f"const double *{a.name}" for a in k.inputs] + [f"double *{a.name}" for a in k.core_outputs()]
     return f"static void {k.name}_core({', '.join(ps)})"
 
 
@@ -234,34 +259,54 @@ def _casadi_cores(prefix: str, kernels: tuple[Kernel, ...]) -> str:
     cores = [code]
     for k in kernels:
         fn, sz_w = table[k.name]
+        outs = k.core_outputs()
         cores.append(f"""{_core_signature(k)} {{
-    const double *arg[{len(k.inputs)}];
-    double *res[{len(k.outputs)}];
+    const double *arg[{max(len(k.inputs), 1)}];
+    double *res[{len(outs)}];
     double w[{max(sz_w, 1)}];
-    {" ".join(f"arg[{i}] = {n};" for i, (n, _) in enumerate(k.inputs))}
-    {" ".join(f"res[{i}] = {n};" for i, (n, _) in enumerate(k.outputs))}
+    {" ".join(f"arg[{i}] = {a.name};" for i, a in enumerate(k.inputs))}
+    {" ".join(f"res[{i}] = {a.name};" for i, a in enumerate(outs))}
     (void){fn}(arg, res, 0, w, 0);
 }}
 """)
     return "\n".join(cores)
 
 
-def build_unit(backend: str, n_links: int = 2) -> Unit:
-    """Generate the C source and header of one backend."""
+def tools(backend: str) -> str:
+    """The symbolic tools (and versions) behind a backend's output."""
+    return f"SymPy {version('sympy')}" + (f", CasADi {version('casadi')}" if backend == "casadi" else "")
+
+
+def assemble(prefix: str, backend: str, kernels: tuple[Kernel, ...], what: str, *,
+             cond_doc: str = "", info: dict | None = None, tool: str | None = None,
+             defines: dict | None = None) -> Unit:
+    """One unit from ``kernels``: C source, header and manifest, each a pure function of its inputs."""
     if backend not in BACKENDS:
         raise ValueError(f"unknown backend {backend!r}; choose one of {BACKENDS}")
-    prefix = f"hybrid_{backend}"
-    kernels = model.kernels(n_links)
-    tool = f"SymPy {version('sympy')}" + (f", CasADi {version('casadi')}" if backend == "casadi" else "")
     cores = _sympy_cores(kernels) if backend == "sympy" else _casadi_cores(prefix, kernels)
-    source = f"""/* {prefix}: hybrid force/velocity control kernels for a planar {n_links}-link arm.
-   Derived by codegen/model.py, emitted by the {backend} backend ({tool}).
+    tool = tool or tools(backend)
+    source = f"""/* {prefix}: {what}.
+   Emitted by the {backend} backend of hybrid's codegen ({tool}), generator version {GENERATOR_VERSION}.
    Compile: cc -std=c99 -O2 -c {prefix}.c (link with -lm). */
 #include <math.h>
 
 {cores}
 {_wrappers(prefix, kernels)}"""
-    return Unit(backend, stamp(source), stamp(header(prefix, kernels, n_links)))
+    return Unit(prefix, stamp(source), stamp(header(prefix, kernels, cond_doc, defines)),
+                manifest(prefix, kernels, tool, cond_doc, info or {}))
+
+
+#: the conditioning measure of the planar units
+PLANAR_CONDITIONING = "2|det J|/|J|_F^2"
+
+
+def build_unit(backend: str, n_links: int = 2) -> Unit:
+    """Generate the C source, header and manifest of one backend for the planar arm."""
+    if backend not in BACKENDS:
+        raise ValueError(f"unknown backend {backend!r}; choose one of {BACKENDS}")
+    return assemble(f"hybrid_{backend}", backend, model.kernels(n_links),
+                    f"hybrid force/velocity control kernels for a planar {n_links}-link arm, "
+                    "derived by codegen/model.py", cond_doc=PLANAR_CONDITIONING)
 
 
 def generated_dir() -> Path:

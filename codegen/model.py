@@ -15,10 +15,14 @@ from functools import cache
 
 import sympy as sp
 
-#: names of the per-link arm parameters, in the order they appear in the ``arm`` array
+from .kernel import Arg, Kernel
+
+#: names of the per-link arm parameters, in the order they appear in the ``arm`` array, and their units
 LINK_PARAMETERS = ("L", "m", "d", "I", "V")
+LINK_PARAMETER_UNITS = ("m", "kg", "m", "kg m^2", "N m s/rad")
 #: sensor, contact and friction parameters of the plant, in ``plant`` array order
 PLANT_PARAMETERS = ("m_s", "K_s", "D_s", "k_e", "d_e", "gamma", "v_eps")
+PLANT_PARAMETER_UNITS = ("kg", "N/m", "N s/m", "N/m", "N s/m", "1", "m/s")
 #: surface parameters, in ``surface`` array order
 SURFACE_PARAMETERS = {"plane": ("p_x", "p_y", "n_x", "n_y"), "circle": ("c_x", "c_y", "rho")}
 #: options of the decoupling law, in ``opts`` array order
@@ -42,28 +46,14 @@ def arm_parameter_names(n_links: int) -> tuple[str, ...]:
     return tuple(f"{p}{i + 1}" for p in LINK_PARAMETERS for i in range(n_links)) + ("g",)
 
 
+def arm_parameter_units(n_links: int) -> tuple[str, ...]:
+    """SI units of the ``arm`` array, element by element."""
+    return tuple(u for u in LINK_PARAMETER_UNITS for _ in range(n_links)) + ("m/s^2",)
+
+
 def vector(name: str, n: int) -> sp.Matrix:
     """Column of symbols ``name0 .. name{n-1}``, the elements of C array ``name``."""
     return sp.Matrix([sp.Symbol(f"{name}{i}", real=True) for i in range(n)])
-
-
-@dataclass(frozen=True)
-class Kernel:
-    """One C function to emit: ordered named inputs and outputs (column vectors).
-
-    Matrices are flattened row-major into their output array.
-    """
-
-    name: str
-    inputs: tuple[tuple[str, sp.Matrix], ...]
-    outputs: tuple[tuple[str, sp.Matrix], ...]
-    doc: str
-
-    def input_sizes(self) -> dict[str, int]:
-        return {n: m.shape[0] for n, m in self.inputs}
-
-    def output_sizes(self) -> dict[str, int]:
-        return {n: m.shape[0] for n, m in self.outputs}
 
 
 def flat(m: sp.Matrix) -> sp.Matrix:
@@ -290,43 +280,69 @@ def plant(kind: str, arm: ArmModel):
 
 # ----------------------------------------------------------------------- kernels
 
+#: units of the plant outputs, in PLANT_OUTPUTS order
+PLANT_OUTPUT_UNITS = ("m", "m", "m/s", "m/s", "N", "N", "N", "N", "m", "m", "m", "N", "N", "m/s")
+
 
 @cache
 def kernels(n_links: int = 2) -> tuple[Kernel, ...]:
     """All kernels of one generated unit, in emission order."""
     arm = planar_arm(n_links)
-    qa = (("q", arm.q), ("qd", arm.qd), ("arm", arm.params))
+    n = n_links
+    q, qd = Arg("q", arm.q, "rad"), Arg("qd", arm.qd, "rad/s")
+    armp = Arg("arm", arm.params, arm_parameter_units(n), names=arm_parameter_names(n))
+    qa = (q, qd, armp)
+
+    def surf(kind):
+        return Arg("surface", surface_symbols(kind), "m", names=SURFACE_PARAMETERS[kind])
+
     Bo, no, cond = operational_space(arm)
     out = [
         Kernel("arm_kinematics", qa,
-               (("r", arm.r), ("J", flat(arm.J)), ("Jdqd", arm.Jdqd)),
+               (Arg("r", arm.r, "m"), Arg("J", flat(arm.J), "m/rad", (2, n)), Arg("Jdqd", arm.Jdqd, "m/s^2")),
                "tip position r = kin(q) [m], Jacobian J(q) (row-major), J'(q, q') q' [m/s^2]"),
-        Kernel("arm_dynamics", qa, (("B", flat(arm.B)), ("n", arm.nvec)),
+        Kernel("arm_dynamics", qa, (Arg("B", flat(arm.B), "kg m^2", (n, n)), Arg("n", arm.nvec, "N m")),
                "joint-space inertia B(q) [kg m^2] (row-major) and n(q, q') [N m]"),
-        Kernel("operational_space", qa,
-               (("Bo", flat(Bo)), ("no", no), ("cond", sp.Matrix([cond]))),
-               "B_o = J^-T B J^-1 [kg], n_o = J^-T n - B_o J' q' [N], conditioning of J"),
+        Kernel("operational_space", qa, (Arg("Bo", flat(Bo), "kg", (2, 2)), Arg("no", no, "N")),
+               "B_o = J^-T B J^-1 [kg], n_o = J^-T n - B_o J' q' [N]", conditioning=sp.Matrix([cond])),
     ]
     for kind in ("plane", "circle"):
-        r, rd, surface = vector("r", 2), vector("rd", 2), surface_symbols(kind)
-        R, Rd = task_frame(kind, r, rd, surface)
-        out.append(Kernel(f"task_frame_{kind}", (("r", r), ("rd", rd), ("surface", surface)),
-                          (("R", flat(R)), ("Rd", flat(Rd))),
+        r, rd = vector("r", 2), vector("rd", 2)
+        R, Rd = task_frame(kind, r, rd, surface_symbols(kind))
+        out.append(Kernel(f"task_frame_{kind}", (Arg("r", r, "m"), Arg("rd", rd, "m/s"), surf(kind)),
+                          (Arg("R", flat(R), "1", (2, 2)), Arg("Rd", flat(Rd), "1/s", (2, 2))),
                           f"task-frame rotation R(r) and R'(r, r') [1/s] of a {kind} (row-major)"))
         law_in, F, tau, cond = decoupling_law(kind, arm)
-        out.append(Kernel(f"decoupling_law_{kind}", law_in,
-                          (("F", F), ("tau", tau), ("cond", sp.Matrix([cond]))),
-                          f"decoupling law F*(r, r', a) [N] and tau = J^T F* [N m] on a {kind}"))
+        units = {"q": "rad", "qd": "rad/s", "a": "m/s^2", "Fc": "N", "arm": armp.unit, "surface": "m", "opts": "1"}
+        names = {"arm": arm_parameter_names(n), "surface": SURFACE_PARAMETERS[kind], "opts": LAW_OPTIONS}
+        out.append(Kernel(f"decoupling_law_{kind}",
+                          tuple(Arg(k, m, units[k], names=names.get(k)) for k, m in law_in),
+                          (Arg("F", F, "N"), Arg("tau", tau, "N m")),
+                          f"decoupling law F*(r, r', a) [N] and tau = J^T F* [N m] on a {kind}",
+                          batched=("q", "qd", "a", "Fc"), conditioning=sp.Matrix([cond])))
         Fc = vector("Fc", 2)
         rr = arm.J * arm.qd
-        Rm, _ = task_frame(kind, arm.r, rr, surface)
-        out.append(Kernel(f"task_measurement_{kind}", qa[:2] + (("Fc", Fc), ("arm", arm.params),
-                                                                 ("surface", surface)),
-                          (("r", arm.r), ("rd", rr), ("v", Rm * rr), ("f", Rm * Fc)),
+        Rm, _ = task_frame(kind, arm.r, rr, surface_symbols(kind))
+        out.append(Kernel(f"task_measurement_{kind}", (q, qd, Arg("Fc", Fc, "N"), armp, surf(kind)),
+                          (Arg("r", arm.r, "m"), Arg("rd", rr, "m/s"), Arg("v", Rm * rr, "m/s"),
+                           Arg("f", Rm * Fc, "N")),
                           "what a controller measures: r, r', task velocity R r', task force R F_c"))
         p_in, xdot, outputs = plant(kind, arm)
-        out.append(Kernel(f"plant_rhs_{kind}", p_in, (("xdot", xdot),),
-                          f"plant state derivative x' = f(x, tau) on a {kind}"))
-        out.append(Kernel(f"plant_outputs_{kind}", p_in[:1] + p_in[2:], (("y", outputs),),
-                          "plant output record (PLANT_OUTPUTS)"))
+        x_units = ("rad",) * n + ("rad/s",) * n + ("m", "m", "m/s", "m/s")
+        xs = Arg("x", p_in[0][1], x_units, names=plant_state_names(n))
+        pins = (xs, Arg("tau", p_in[1][1], "N m"), armp,
+                Arg("plant", p_in[3][1], PLANT_PARAMETER_UNITS, names=PLANT_PARAMETERS), surf(kind))
+        xd_units = ("rad/s",) * n + ("rad/s^2",) * n + ("m/s", "m/s", "m/s^2", "m/s^2")
+        out.append(Kernel(f"plant_rhs_{kind}", pins, (Arg("xdot", xdot, xd_units),),
+                          f"plant state derivative x' = f(x, tau) on a {kind}",
+                          integrator=f"plant_advance_{kind}"))
+        out.append(Kernel(f"plant_outputs_{kind}", pins[:1] + pins[2:],
+                          (Arg("y", outputs, PLANT_OUTPUT_UNITS, names=PLANT_OUTPUTS),),
+                          "plant output record (PLANT_OUTPUTS)", batched=("x",)))
     return tuple(out)
+
+
+def plant_state_names(n_links: int) -> tuple[str, ...]:
+    """Names of the plant state ``x = (q, q', s, s')``."""
+    return (tuple(f"q{i + 1}" for i in range(n_links)) + tuple(f"qd{i + 1}" for i in range(n_links))
+            + ("s_x", "s_y", "sd_x", "sd_y"))

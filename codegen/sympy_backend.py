@@ -37,18 +37,19 @@ def kernel_body(kernel: Kernel, indent: str = "    ") -> str:
     the shared subexpressions become locals ``x0, x1, ...``, and outputs are stored
     last, so an output array may alias nothing but must not alias an input.
     """
-    exprs = [e for _, m in kernel.outputs for e in m]
+    outputs = kernel.core_outputs()
+    exprs = [e for a in outputs for e in a.expr]
     replacements, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("x"), order="none")
     used = set().union(*(e.free_symbols for _, e in replacements), *(e.free_symbols for e in reduced))
     lines = []
-    for name, m in kernel.inputs:
-        reads = [f"const double {s} = {name}[{i}];" for i, s in enumerate(m) if s in used]
-        lines += reads or [f"(void){name};  /* not needed by this kernel */"]
+    for a in kernel.inputs:
+        reads = [f"const double {s} = {a.name}[{i}];" for i, s in enumerate(a.expr) if s in used]
+        lines += reads or [f"(void){a.name};  /* not needed by this kernel */"]
     for sym, e in replacements:
         lines.append(f"const double {sym} = {_PRINTER.doprint(e)};")
     k = 0
-    for name, m in kernel.outputs:
-        for i in range(m.shape[0]):
-            lines.append(f"{name}[{i}] = {_PRINTER.doprint(reduced[k])};")
+    for a in outputs:
+        for i in range(a.size):
+            lines.append(f"{a.name}[{i}] = {_PRINTER.doprint(reduced[k])};")
             k += 1
     return "\n".join(indent + line for line in lines)

@@ -1,6 +1,6 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: f0a8bdbdbf75833411655241374ba97cb4e00c18afb9939732fa407abc94aa18 */
-/* hybrid_casadi: hybrid force/velocity control kernels for a planar 2-link arm.
-   Derived by codegen/model.py, emitted by the casadi backend (SymPy 1.14.0, CasADi 3.8.2).
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 9dd8c49bfe7d721cdf565ac47be03d6265217e4cccafa8183b4b8b8fb4639348 */
+/* hybrid_casadi: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
+   Emitted by the casadi backend of hybrid's codegen (SymPy 1.14.0, CasADi 3.8.2), generator version 2.
    Compile: cc -std=c99 -O2 -c hybrid_casadi.c (link with -lm). */
 #include <math.h>
 
@@ -51,7 +51,7 @@ static casadi_real casadi_fmax(casadi_real x, casadi_real y) {
 }
 
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  (void)iw; (void)mem; (void)w;
+  (void)arg; (void)iw; (void)mem; (void)w;
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8, a9;
   a0=arg[2]? arg[2][0] : 0;
   a1=arg[0]? arg[0][0] : 0;
@@ -115,7 +115,7 @@ static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  (void)iw; (void)mem; (void)w;
+  (void)arg; (void)iw; (void)mem; (void)w;
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13;
   a00=arg[2]? arg[2][6] : 0;
@@ -202,7 +202,7 @@ static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  (void)iw; (void)mem; (void)w;
+  (void)arg; (void)iw; (void)mem; (void)w;
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31;
@@ -424,7 +424,7 @@ static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  (void)iw; (void)mem; (void)w;
+  (void)arg; (void)iw; (void)mem; (void)w;
   casadi_real a0, a1, a2, a3;
   a0=arg[2]? arg[2][3] : 0;
   a1=arg[2]? arg[2][2] : 0;
@@ -448,7 +448,7 @@ static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  (void)iw; (void)mem; (void)w;
+  (void)arg; (void)iw; (void)mem; (void)w;
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -699,7 +699,7 @@ static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  (void)iw; (void)mem; (void)w;
+  (void)arg; (void)iw; (void)mem; (void)w;
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8, a9;
   a0=arg[3]? arg[3][0] : 0;
   a1=arg[0]? arg[0][0] : 0;
@@ -777,7 +777,7 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  (void)iw; (void)mem; (void)w;
+  (void)arg; (void)iw; (void)mem; (void)w;
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30;
@@ -985,7 +985,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  (void)iw; (void)mem; (void)w;
+  (void)arg; (void)iw; (void)mem; (void)w;
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16;
   a00=arg[1]? arg[1][0] : 0;
@@ -1111,7 +1111,7 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  (void)iw; (void)mem; (void)w;
+  (void)arg; (void)iw; (void)mem; (void)w;
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7;
   a0=arg[0]? arg[0][1] : 0;
   a1=arg[2]? arg[2][1] : 0;
@@ -1154,7 +1154,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  (void)iw; (void)mem; (void)w;
+  (void)arg; (void)iw; (void)mem; (void)w;
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -1464,7 +1464,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  (void)iw; (void)mem; (void)w;
+  (void)arg; (void)iw; (void)mem; (void)w;
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12;
   a00=arg[3]? arg[3][0] : 0;
@@ -1547,7 +1547,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  (void)iw; (void)mem; (void)w;
+  (void)arg; (void)iw; (void)mem; (void)w;
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30;
@@ -1748,7 +1748,7 @@ static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  (void)iw; (void)mem; (void)w;
+  (void)arg; (void)iw; (void)mem; (void)w;
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16;
   a00=arg[1]? arg[1][0] : 0;
@@ -2032,9 +2032,9 @@ int hybrid_casadi_decoupling_law_plane(const double *q, const double *qd, const 
     return (all_finite(F, 2) && all_finite(tau, 2)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
-int hybrid_casadi_decoupling_law_plane_batch(int n, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
+int hybrid_casadi_decoupling_law_plane_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
     int i, failed = 0;
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < nstates; ++i) {
         status[i] = hybrid_casadi_decoupling_law_plane(q + (long)i * 2, qd + (long)i * 2, a + (long)i * 2, Fc + (long)i * 2, arm, surface, opts, singular_tol, F + (long)i * 2, tau + (long)i * 2);
         failed += status[i] != HYBRID_OK;
     }
@@ -2081,9 +2081,9 @@ int hybrid_casadi_plant_outputs_plane(const double *x, const double *arm, const 
     return (all_finite(y, 14)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
-int hybrid_casadi_plant_outputs_plane_batch(int n, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
+int hybrid_casadi_plant_outputs_plane_batch(int nstates, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
     int i, failed = 0;
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < nstates; ++i) {
         status[i] = hybrid_casadi_plant_outputs_plane(x + (long)i * 8, arm, plant, surface, y + (long)i * 14);
         failed += status[i] != HYBRID_OK;
     }
@@ -2102,9 +2102,9 @@ int hybrid_casadi_decoupling_law_circle(const double *q, const double *qd, const
     return (all_finite(F, 2) && all_finite(tau, 2)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
-int hybrid_casadi_decoupling_law_circle_batch(int n, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
+int hybrid_casadi_decoupling_law_circle_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
     int i, failed = 0;
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < nstates; ++i) {
         status[i] = hybrid_casadi_decoupling_law_circle(q + (long)i * 2, qd + (long)i * 2, a + (long)i * 2, Fc + (long)i * 2, arm, surface, opts, singular_tol, F + (long)i * 2, tau + (long)i * 2);
         failed += status[i] != HYBRID_OK;
     }
@@ -2151,9 +2151,9 @@ int hybrid_casadi_plant_outputs_circle(const double *x, const double *arm, const
     return (all_finite(y, 14)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
-int hybrid_casadi_plant_outputs_circle_batch(int n, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
+int hybrid_casadi_plant_outputs_circle_batch(int nstates, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
     int i, failed = 0;
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < nstates; ++i) {
         status[i] = hybrid_casadi_plant_outputs_circle(x + (long)i * 8, arm, plant, surface, y + (long)i * 14);
         failed += status[i] != HYBRID_OK;
     }

@@ -1,14 +1,15 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: f522a16683a0b334f22068e6b4f225915cc7fbd15066397f996a3b48c45e0b34 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: f620bf636b6b5988fa75d658c1abcdb110a19d9b4578bc4696d9dad934dec447 */
 #ifndef HYBRID_CASADI_H
 #define HYBRID_CASADI_H
 
-/* Parameter arrays (SI units: m, kg, kg m^2, N m s/rad, N/m, N s/m, m/s):
+/* Arrays of mixed quantities, element by element (SI units; see hybrid_casadi.json for each unit):
    arm[11] = {L1, L2, m1, m2, d1, d2, I1, I2, V1, V2, g}
+   surface[4] = {p_x, p_y, n_x, n_y}
+   opts[1] = {curvature}
+   x[8] = {q1, q2, qd1, qd2, s_x, s_y, sd_x, sd_y}
    plant[7] = {m_s, K_s, D_s, k_e, d_e, gamma, v_eps}
-   surface (plane)[4] = {p_x, p_y, n_x, n_y}
-   surface (circle)[3] = {c_x, c_y, rho}
-   opts (decoupling law)[1] = {curvature}
-   y (plant outputs)[14] = {r_x, r_y, v_t, v_n, Fc_x, Fc_y, Fc_t, Fc_n, s_x, s_y, penetration, N, friction, sensor_v_t}
+   y[14] = {r_x, r_y, v_t, v_n, Fc_x, Fc_y, Fc_t, Fc_n, s_x, s_y, penetration, N, friction, sensor_v_t}
+   surface[3] = {c_x, c_y, rho}
    Matrices are row-major. */
 
 /* cdef-begin */
@@ -24,7 +25,7 @@ int hybrid_casadi_arm_kinematics(const double *q, const double *qd, const double
    in: q[2], qd[2], arm[11]; out: B[4], n[2]. */
 int hybrid_casadi_arm_dynamics(const double *q, const double *qd, const double *arm, double *B, double *n);
 
-/* B_o = J^-T B J^-1 [kg], n_o = J^-T n - B_o J' q' [N], conditioning of J.
+/* B_o = J^-T B J^-1 [kg], n_o = J^-T n - B_o J' q' [N].
    in: q[2], qd[2], arm[11]; out: Bo[4], no[2]. Returns HYBRID_SINGULAR when 2|det J|/|J|_F^2 < singular_tol. */
 int hybrid_casadi_operational_space(const double *q, const double *qd, const double *arm, double singular_tol, double *Bo, double *no);
 
@@ -36,8 +37,8 @@ int hybrid_casadi_task_frame_plane(const double *r, const double *rd, const doub
    in: q[2], qd[2], a[2], Fc[2], arm[11], surface[4], opts[1]; out: F[2], tau[2]. Returns HYBRID_SINGULAR when 2|det J|/|J|_F^2 < singular_tol. */
 int hybrid_casadi_decoupling_law_plane(const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau);
 
-/* decoupling_law_plane over n states: q, qd, a, Fc and the outputs are n rows (row-major); status[i] per state; returns how many states failed. */
-int hybrid_casadi_decoupling_law_plane_batch(int n, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status);
+/* decoupling_law_plane over nstates states: q, qd, a, Fc and the outputs are nstates rows (row-major); status[i] per state; returns how many states failed. */
+int hybrid_casadi_decoupling_law_plane_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status);
 
 /* what a controller measures: r, r', task velocity R r', task force R F_c.
    in: q[2], qd[2], Fc[2], arm[11], surface[4]; out: r[2], rd[2], v[2], f[2]. */
@@ -47,15 +48,15 @@ int hybrid_casadi_task_measurement_plane(const double *q, const double *qd, cons
    in: x[8], tau[2], arm[11], plant[7], surface[4]; out: xdot[8]. */
 int hybrid_casadi_plant_rhs_plane(const double *x, const double *tau, const double *arm, const double *plant, const double *surface, double *xdot);
 
-/* advance the plant state x[8] by nsteps classical RK4 steps of h [s] with tau held constant (zero-order hold); if trajectory is not NULL it receives the state after each step (nsteps x 8, row-major). On HYBRID_NONFINITE, x keeps the last finite state and *steps_done says how many steps completed. */
+/* advance the state x[8] by nsteps classical RK4 steps of h [s] with the other inputs held constant (zero-order hold); if trajectory is not NULL it receives the state after each step (nsteps x 8, row-major). On HYBRID_NONFINITE, x keeps the last finite state and *steps_done says how many steps completed. */
 int hybrid_casadi_plant_advance_plane(double *x, const double *tau, const double *arm, const double *plant, const double *surface, double h, int nsteps, double *trajectory, int *steps_done);
 
 /* plant output record (PLANT_OUTPUTS).
    in: x[8], arm[11], plant[7], surface[4]; out: y[14]. */
 int hybrid_casadi_plant_outputs_plane(const double *x, const double *arm, const double *plant, const double *surface, double *y);
 
-/* plant_outputs_plane over n states: x and the outputs are n rows (row-major); status[i] per state; returns how many states failed. */
-int hybrid_casadi_plant_outputs_plane_batch(int n, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status);
+/* plant_outputs_plane over nstates states: x and the outputs are nstates rows (row-major); status[i] per state; returns how many states failed. */
+int hybrid_casadi_plant_outputs_plane_batch(int nstates, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status);
 
 /* task-frame rotation R(r) and R'(r, r') [1/s] of a circle (row-major).
    in: r[2], rd[2], surface[3]; out: R[4], Rd[4]. */
@@ -65,8 +66,8 @@ int hybrid_casadi_task_frame_circle(const double *r, const double *rd, const dou
    in: q[2], qd[2], a[2], Fc[2], arm[11], surface[3], opts[1]; out: F[2], tau[2]. Returns HYBRID_SINGULAR when 2|det J|/|J|_F^2 < singular_tol. */
 int hybrid_casadi_decoupling_law_circle(const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau);
 
-/* decoupling_law_circle over n states: q, qd, a, Fc and the outputs are n rows (row-major); status[i] per state; returns how many states failed. */
-int hybrid_casadi_decoupling_law_circle_batch(int n, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status);
+/* decoupling_law_circle over nstates states: q, qd, a, Fc and the outputs are nstates rows (row-major); status[i] per state; returns how many states failed. */
+int hybrid_casadi_decoupling_law_circle_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status);
 
 /* what a controller measures: r, r', task velocity R r', task force R F_c.
    in: q[2], qd[2], Fc[2], arm[11], surface[3]; out: r[2], rd[2], v[2], f[2]. */
@@ -76,15 +77,15 @@ int hybrid_casadi_task_measurement_circle(const double *q, const double *qd, con
    in: x[8], tau[2], arm[11], plant[7], surface[3]; out: xdot[8]. */
 int hybrid_casadi_plant_rhs_circle(const double *x, const double *tau, const double *arm, const double *plant, const double *surface, double *xdot);
 
-/* advance the plant state x[8] by nsteps classical RK4 steps of h [s] with tau held constant (zero-order hold); if trajectory is not NULL it receives the state after each step (nsteps x 8, row-major). On HYBRID_NONFINITE, x keeps the last finite state and *steps_done says how many steps completed. */
+/* advance the state x[8] by nsteps classical RK4 steps of h [s] with the other inputs held constant (zero-order hold); if trajectory is not NULL it receives the state after each step (nsteps x 8, row-major). On HYBRID_NONFINITE, x keeps the last finite state and *steps_done says how many steps completed. */
 int hybrid_casadi_plant_advance_circle(double *x, const double *tau, const double *arm, const double *plant, const double *surface, double h, int nsteps, double *trajectory, int *steps_done);
 
 /* plant output record (PLANT_OUTPUTS).
    in: x[8], arm[11], plant[7], surface[3]; out: y[14]. */
 int hybrid_casadi_plant_outputs_circle(const double *x, const double *arm, const double *plant, const double *surface, double *y);
 
-/* plant_outputs_circle over n states: x and the outputs are n rows (row-major); status[i] per state; returns how many states failed. */
-int hybrid_casadi_plant_outputs_circle_batch(int n, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status);
+/* plant_outputs_circle over nstates states: x and the outputs are nstates rows (row-major); status[i] per state; returns how many states failed. */
+int hybrid_casadi_plant_outputs_circle_batch(int nstates, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status);
 /* cdef-end */
 
 #endif

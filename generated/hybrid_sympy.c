@@ -1,6 +1,6 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 6c0a5efcfe16f53d4d3619e0fccf33f51d7c81ec0c6f8bb01092a15a73d0748b */
-/* hybrid_sympy: hybrid force/velocity control kernels for a planar 2-link arm.
-   Derived by codegen/model.py, emitted by the sympy backend (SymPy 1.14.0).
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 98affae947fa204eb2b0872bf17656806f80925831384c8bd276ac5f1db9aa91 */
+/* hybrid_sympy: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
+   Emitted by the sympy backend of hybrid's codegen (SymPy 1.14.0), generator version 2.
    Compile: cc -std=c99 -O2 -c hybrid_sympy.c (link with -lm). */
 #include <math.h>
 
@@ -735,9 +735,9 @@ int hybrid_sympy_decoupling_law_plane(const double *q, const double *qd, const d
     return (all_finite(F, 2) && all_finite(tau, 2)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
-int hybrid_sympy_decoupling_law_plane_batch(int n, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
+int hybrid_sympy_decoupling_law_plane_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
     int i, failed = 0;
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < nstates; ++i) {
         status[i] = hybrid_sympy_decoupling_law_plane(q + (long)i * 2, qd + (long)i * 2, a + (long)i * 2, Fc + (long)i * 2, arm, surface, opts, singular_tol, F + (long)i * 2, tau + (long)i * 2);
         failed += status[i] != HYBRID_OK;
     }
@@ -784,9 +784,9 @@ int hybrid_sympy_plant_outputs_plane(const double *x, const double *arm, const d
     return (all_finite(y, 14)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
-int hybrid_sympy_plant_outputs_plane_batch(int n, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
+int hybrid_sympy_plant_outputs_plane_batch(int nstates, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
     int i, failed = 0;
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < nstates; ++i) {
         status[i] = hybrid_sympy_plant_outputs_plane(x + (long)i * 8, arm, plant, surface, y + (long)i * 14);
         failed += status[i] != HYBRID_OK;
     }
@@ -805,9 +805,9 @@ int hybrid_sympy_decoupling_law_circle(const double *q, const double *qd, const 
     return (all_finite(F, 2) && all_finite(tau, 2)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
-int hybrid_sympy_decoupling_law_circle_batch(int n, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
+int hybrid_sympy_decoupling_law_circle_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
     int i, failed = 0;
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < nstates; ++i) {
         status[i] = hybrid_sympy_decoupling_law_circle(q + (long)i * 2, qd + (long)i * 2, a + (long)i * 2, Fc + (long)i * 2, arm, surface, opts, singular_tol, F + (long)i * 2, tau + (long)i * 2);
         failed += status[i] != HYBRID_OK;
     }
@@ -854,9 +854,9 @@ int hybrid_sympy_plant_outputs_circle(const double *x, const double *arm, const 
     return (all_finite(y, 14)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
-int hybrid_sympy_plant_outputs_circle_batch(int n, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
+int hybrid_sympy_plant_outputs_circle_batch(int nstates, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
     int i, failed = 0;
-    for (i = 0; i < n; ++i) {
+    for (i = 0; i < nstates; ++i) {
         status[i] = hybrid_sympy_plant_outputs_circle(x + (long)i * 8, arm, plant, surface, y + (long)i * 14);
         failed += status[i] != HYBRID_OK;
     }

@@ -6,15 +6,16 @@ the compiled law (:func:`decoupling_law`) and the arm's terms, the experiment
 error raised on bad input.
 """
 
-from .errors import HybridError, NativeBuildError, NonFiniteError, SingularConfigurationError
+from .errors import HybridError, NativeBuildError, NonFiniteError, SingularConfigurationError, URDFError
 from .experiment import Contact, Experiment, Gains, Sensor, Step, paper_experiment
 from .law import DecouplingLaw, arm_terms, decoupling_law, operational_space, task_frame
 from .parameters import Arm, Circle, Plane, paper_arm
+from .robot import Robot
 from .simulation import SimulationError, SimulationResult, simulate
 
 __all__ = [
     "Arm", "Circle", "Contact", "DecouplingLaw", "Experiment", "Gains", "HybridError",
-    "NativeBuildError", "NonFiniteError", "Plane", "Sensor", "SimulationError", "SimulationResult",
-    "SingularConfigurationError", "Step", "arm_terms", "decoupling_law", "operational_space",
+    "NativeBuildError", "NonFiniteError", "Plane", "Robot", "Sensor", "SimulationError", "SimulationResult",
+    "SingularConfigurationError", "Step", "URDFError", "arm_terms", "decoupling_law", "operational_space",
     "paper_arm", "paper_experiment", "simulate", "task_frame",
 ]

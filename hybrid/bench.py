@@ -144,8 +144,8 @@ def run_benchmarks(quick: bool = False) -> dict:
     kern = {kk.name: kk for kk in model.kernels(2)}["decoupling_law_circle"]
     import sympy as sp
 
-    args = [m for _, m in kern.inputs]
-    fn = sp.lambdify(args, kern.outputs[0][1], modules="numpy", cse=True)
+    args = [a.expr for a in kern.inputs]
+    fn = sp.lambdify(args, kern.outputs[0].expr, modules="numpy", cse=True)
     col = [v.reshape(-1, 1) for v in (q, qd, a, Fc, p, s, np.array([1.0]))]
     add("F* by SymPy lambdify (NumPy, CSE)", _median_ns(lambda: fn(*col), 2000, rep))
     k += 1

@@ -1,4 +1,4 @@
-"""Command line: ``python -m hybrid {regenerate,paper,bench}``.
+"""Command line: ``python -m hybrid {regenerate,generate,paper,bench}``.
 
 Bad usage or input prints one line on stderr and exits with status 2 (``--debug`` shows
 the traceback).
@@ -38,6 +38,22 @@ def _regenerate(args) -> int:
     return 0
 
 
+def _lock(text: str) -> tuple[str, float]:
+    name, sep, value = text.partition("=")
+    try:
+        return name, float(value) if sep else 0.0
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"--lock {text!r}: give JOINT or JOINT=POSITION") from None
+
+
+def _generate(args) -> int:
+    from .robot import generate
+
+    written = generate(args.urdf, args.tip, args.out, args.name, dict(args.lock) or None, force=args.force)
+    print("wrote " + ", ".join(str(p) for p in written))
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = _Parser(prog="python -m hybrid", description=__doc__.split("\n\n")[0])
     p.add_argument("--debug", action="store_true", help="show tracebacks")
@@ -48,6 +64,16 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--force", action="store_true", help="overwrite generated files edited by hand")
     r.add_argument("--target", help="write into this folder instead of generated/")
     r.set_defaults(func=_regenerate)
+
+    g = sub.add_parser("generate", help="write standalone C99 (.c, .h, manifest .json) for a URDF arm")
+    g.add_argument("--urdf", required=True, help="the robot's URDF file")
+    g.add_argument("--tip", required=True, help="the link that ends the chain (e.g. tool0)")
+    g.add_argument("--out", required=True, help="folder to write into")
+    g.add_argument("--name", help="prefix of the files and C symbols (default: the URDF's robot name)")
+    g.add_argument("--lock", action="append", type=_lock, default=[], metavar="JOINT[=POSITION]",
+                   help="hold this joint at POSITION (default 0); repeatable")
+    g.add_argument("--force", action="store_true", help="overwrite files with other content")
+    g.set_defaults(func=_generate)
 
     from . import bench, experiment_cli
 

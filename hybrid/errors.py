@@ -15,3 +15,7 @@ class NonFiniteError(HybridError):
 
 class NativeBuildError(HybridError):
     """The generated C could not be compiled or loaded."""
+
+
+class URDFError(HybridError):
+    """A URDF file that cannot describe a controllable serial arm; names the element and line."""

@@ -10,6 +10,7 @@ import numpy as np
 from . import native
 from .errors import HybridError, NonFiniteError, SingularConfigurationError
 from .parameters import Arm, Circle, Plane, _finite
+from .robot import Robot
 
 #: default lower bound on ``2 |det J| / |J|_F^2`` (``~ |sin q2|``) before a pose counts as singular
 SINGULAR_TOL = 1e-3
@@ -162,13 +163,20 @@ def _call(backend: str, name: str, inputs: dict, outputs: dict, singular_tol: fl
     return tuple(outs.values())
 
 
-def arm_terms(arm: Arm, q, qdot, *, backend: str = "sympy") -> dict[str, np.ndarray]:
+def arm_terms(arm: Arm | Robot, q, qdot, *, backend: str = "sympy") -> dict[str, np.ndarray]:
     """Kinematic and dynamic terms of ``arm`` at one state, from the generated C.
 
-    Keys: ``r`` [m], ``J`` (2x2), ``Jdot_qdot`` [m/s^2], ``B`` (2x2) [kg m^2], ``n`` [N m].
+    For the planar :class:`Arm`: ``r`` [m], ``J`` (2x2), ``Jdot_qdot`` [m/s^2], ``B`` (2x2)
+    [kg m^2], ``n`` [N m]. For a :class:`Robot` with ``n`` joints (``q``, ``qdot`` of shape
+    ``(n,)``, or ``(N, n)`` for N states in one native call, every output then gaining a
+    leading N axis): ``r`` (3) [m] and ``rotation`` (3x3) of the tip frame in base axes, the
+    frame Jacobian ``J`` (6 x n, linear rows first, base axes), ``Jdot_qdot`` (6, the classical
+    acceleration at ``q'' = 0``), ``B`` (n x n), ``n`` (n): Coriolis/centrifugal, gravity, viscosity.
     """
+    if isinstance(arm, Robot):
+        return robot_terms(arm, q, qdot)
     check_arm(arm)
-    q, qdot, p = as_states("q", q), as_states("qdot", qdot), arm.as_array()
+    q, qdot, p = _one_state("q", q), _one_state("qdot", qdot), arm.as_array()
     r, J, Jdqd = _call(backend, "arm_kinematics", {"q": q, "qd": qdot, "arm": p}, {"r": 2, "J": 4, "Jdqd": 2})
     B, n = _call(backend, "arm_dynamics", {"q": q, "qd": qdot, "arm": p}, {"B": 4, "n": 2})
     return {"r": r, "J": J.reshape(2, 2), "Jdot_qdot": Jdqd, "B": B.reshape(2, 2), "n": n}
@@ -179,7 +187,7 @@ def operational_space(arm: Arm, q, qdot, *, backend: str = "sympy",
     """``B_o(r)`` [kg] (2x2) and ``n_o(r, r')`` [N] of Khatib's operational-space model."""
     check_arm(arm)
     Bo, no = _call(backend, "operational_space",
-                   {"q": as_states("q", q), "qd": as_states("qdot", qdot), "arm": arm.as_array()},
+                   {"q": _one_state("q", q), "qd": _one_state("qdot", qdot), "arm": arm.as_array()},
                    {"Bo": 4, "no": 2}, singular_tol)
     return Bo.reshape(2, 2), no
 
@@ -188,6 +196,27 @@ def task_frame(surface: Circle | Plane, r, rdot, *, backend: str = "sympy") -> t
     """Task-frame rotation ``R(r)`` (rows: tangent, normal) and its derivative ``R'(r, r')``."""
     kind = check_surface(surface)
     R, Rd = _call(backend, f"task_frame_{kind}",
-                  {"r": as_states("r", r), "rd": as_states("rdot", rdot), "surface": surface.as_array()},
+                  {"r": _one_state("r", r), "rd": _one_state("rdot", rdot), "surface": surface.as_array()},
                   {"R": 4, "Rd": 4})
     return R.reshape(2, 2), Rd.reshape(2, 2)
+
+
+def _one_state(name: str, x) -> np.ndarray:
+    """``x`` as one state of shape ``(2,)``; N states are refused, not silently cut to the first."""
+    arr = as_states(name, x)
+    if arr.ndim != 1:
+        raise HybridError(f"{name} must have shape (2,): this function takes one state, got {arr.shape}; "
+                          "call it once per state")
+    return arr
+
+
+_ROBOT_KEYS = {"p": "r", "rotation": "rotation", "J": "J", "Jdqd": "Jdot_qdot", "B": "B", "n": "n"}
+
+
+def robot_terms(robot: Robot, q, qdot) -> dict[str, np.ndarray]:
+    """:func:`arm_terms` of a :class:`Robot`: one state, or N states in one native call."""
+    terms = robot.unit.function("robot_terms")
+    q_arr = np.asarray(q) if not isinstance(q, np.ndarray) else q
+    call = terms.batch if getattr(q_arr, "ndim", 1) == 2 else terms
+    out = call(q, qdot, robot.as_array())
+    return {_ROBOT_KEYS[k]: v for k, v in out.items()}

@@ -79,9 +79,20 @@ def _sha256(path: Path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
 
+def _read_umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+_UMASK = _read_umask()  # read once, at import: os.umask is process-wide
+
+
 def _atomic_write(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` through a temporary file and a rename: never half-written."""
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=path.name + ".tmp")
     try:
+        os.fchmod(fd, 0o666 & ~_UMASK)  # mkstemp's 0600 would hide generated files from others
         with os.fdopen(fd, "wb") as f:
             f.write(data)
             f.flush()
@@ -149,29 +160,109 @@ def _cached_module(stem: str, key_material: dict, write_source: Callable[[str, P
 
 def _unit(backend: str) -> tuple[Path, str, str]:
     """``(source dir, C source, header)`` of the generated unit for ``backend``."""
+    if backend not in ("sympy", "casadi"):
+        raise NativeBuildError(f"no generated unit for backend {backend!r}; known backends are 'sympy' and 'casadi'")
     src_dir = source_dir()
-    c_path = src_dir / f"hybrid_{backend}.c"
-    if not c_path.is_file():
-        raise NativeBuildError(f"no generated unit for backend {backend!r} in {src_dir}; "
-                               "known backends are 'sympy' and 'casadi'")
-    return src_dir, c_path.read_text(), (src_dir / f"hybrid_{backend}.h").read_text()
+    return src_dir, *_read_unit(src_dir, f"hybrid_{backend}")
 
 
-@cache
-def load(backend: str = "sympy"):
-    """The compiled unit ``hybrid_<backend>`` as a cffi module (``.ffi``, ``.lib``)."""
-    src_dir, c_source, header = _unit(backend)
+def _read_unit(src_dir: Path, prefix: str) -> tuple[str, str]:
+    try:
+        return (src_dir / f"{prefix}.c").read_text(), (src_dir / f"{prefix}.h").read_text()
+    except OSError as exc:
+        raise NativeBuildError(f"the generated unit {prefix} in {src_dir} cannot be read ({exc.strerror}); "
+                               "run `python -m hybrid regenerate` in a checkout of the project") from None
+
+
+def _compile_unit(src_dir: Path, prefix: str):
+    """The unit ``<prefix>.c`` of ``src_dir`` compiled as a cffi module (``.ffi``, ``.lib``)."""
+    c_source, header = _read_unit(src_dir, prefix)
     cdef = cdef_of(header)
 
     def write_source(name: str, path: Path) -> None:
         ffi = cffi.FFI()
         ffi.cdef(cdef)
-        ffi.set_source(name, f'#include "hybrid_{backend}.c"')
+        ffi.set_source(name, f'#include "{prefix}.c"')
         with contextlib.redirect_stdout(io.StringIO()):  # cffi announces what it writes
             ffi.emit_c_code(str(path))
 
-    return _cached_module(f"_hybrid_{backend}", {"c": c_source, "h": header, "cffi": cffi.__version__},
+    return _cached_module(f"_{prefix}", {"c": c_source, "h": header, "cffi": cffi.__version__},
                           write_source, [str(src_dir)])
+
+
+def read_manifest(src_dir: Path, prefix: str) -> dict:
+    """The interface description written by the generator beside ``<prefix>.c``."""
+    try:
+        return json.loads((src_dir / f"{prefix}.json").read_text())
+    except (OSError, ValueError) as exc:
+        raise NativeBuildError(f"the manifest {prefix}.json in {src_dir} is missing or unreadable ({exc}); "
+                               "regenerate the unit") from None
+
+
+@cache
+def load(backend: str = "sympy"):
+    """The compiled unit ``hybrid_<backend>`` as a cffi module (``.ffi``, ``.lib``)."""
+    _unit(backend)
+    return _compile_unit(source_dir(), f"hybrid_{backend}")
+
+
+@cache
+def manifest(backend: str = "sympy") -> dict:
+    """The manifest of the committed unit ``hybrid_<backend>``."""
+    _unit(backend)
+    return read_manifest(source_dir(), f"hybrid_{backend}")
+
+
+def load_generated(src_dir: Path, prefix: str):
+    """Compile (cached) and load the unit ``<prefix>`` written into ``src_dir``: ``(module, manifest)``."""
+    return _compile_unit(src_dir, prefix), read_manifest(src_dir, prefix)
+
+
+def write_unit_files(target: Path, files: dict[str, str]) -> None:
+    """Write a generated unit's files into ``target``, each atomically."""
+    target.mkdir(parents=True, exist_ok=True)
+    for name, text in files.items():
+        _atomic_write(target / name, text.encode())
+
+
+def generated_unit(stem: str, key_material: dict, generate: Callable[[], dict[str, str]]) -> Path:
+    """The folder holding the unit that ``generate()`` writes, generated once per key (cached).
+
+    Generation runs under a file lock; the files are written atomically, and a folder whose
+    files are missing is generated again.
+    """
+    digest = hashlib.sha256(json.dumps(key_material, sort_keys=True).encode()).hexdigest()[:20]
+    folder = _writable_cache() / "units" / f"{stem}_{digest}"
+    done = folder / "complete.json"
+
+    def valid() -> bool:
+        try:
+            names = json.loads(done.read_text())["files"]
+            return all((folder / n).is_file() for n in names)
+        except (OSError, ValueError, KeyError, TypeError):
+            return False
+
+    if not valid():
+        folder.mkdir(parents=True, exist_ok=True)
+        with open(folder / ".lock", "w") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)
+            if not valid():
+                files = generate()
+                write_unit_files(folder, files)
+                _atomic_write(done, json.dumps({"files": sorted(files)}).encode())
+    return folder
+
+
+def _writable_cache() -> Path:
+    root = cache_dir()
+    try:
+        root.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise NativeBuildError(f"the cache folder {root} cannot be created ({exc.strerror}); "
+                               "set HYBRID_CACHE_DIR to a writable folder") from None
+    if not os.access(root, os.W_OK):
+        raise NativeBuildError(f"the cache folder {root} is not writable; set HYBRID_CACHE_DIR to a writable folder")
+    return root
 
 
 @cache

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+from importlib.metadata import PackageNotFoundError, distribution
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -33,3 +36,19 @@ def random_states(rng: np.random.Generator, n: int, elbow: int = 1) -> dict[str,
 @pytest.fixture
 def rng():
     return np.random.default_rng(20261122)
+
+
+def example_robot(relative: str) -> Path:
+    """A URDF shipped by the ``example-robot-data`` package (files nobody here wrote)."""
+    try:
+        dist = distribution("example-robot-data")
+    except PackageNotFoundError:
+        pytest.skip("example-robot-data is not installed (pip install example-robot-data)")
+    for f in dist.files or ():
+        if str(f).endswith(relative):
+            return Path(dist.locate_file(f))
+    pytest.skip(f"example-robot-data has no {relative}")
+
+
+UR5 = ("ur_description/urdf/ur5_robot.urdf", "tool0")
+PANDA = ("panda_description/urdf/panda.urdf", "panda_hand_tcp")

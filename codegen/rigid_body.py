@@ -1,0 +1,308 @@
+"""Recursive rigid-body algorithms of a serial chain, as CasADi SX expressions.
+
+Conventions of ``shared/paper/NOTES.md`` section 9. Every spatial quantity is in base axes,
+about the base origin (Featherstone's "world coordinates"): a motion vector is
+``(w, v_O)``, the angular velocity and the velocity of the body point at the base origin;
+a force vector ``(n_O, f)``. Joint ``i``'s motion subspace is then ``S_i = (z_i, p_i x z_i)``
+(revolute) or ``(0, z_i)`` (prismatic), with ``z_i`` its axis and ``p_i`` a point on it.
+
+- :func:`forward_kinematics`: the joint frames and the tip frame;
+- :func:`frame_jacobian`: the tip frame's ``J`` (6 x n, linear rows first, base axes:
+  Pinocchio's ``LOCAL_WORLD_ALIGNED``);
+- :func:`frame_classical_acceleration`: ``J' q'``, the tip origin's classical acceleration at ``q'' = 0``;
+- :func:`crba`: the joint-space inertia ``B(q)`` by the composite-rigid-body algorithm;
+- :func:`rnea`: inverse dynamics ``tau = B q'' + n(q, q')`` by recursive Newton-Euler,
+  gravity and joint viscosity included;
+- :func:`cholesky_solve`: ``B x = b`` by an unrolled Cholesky factorisation (no inverse).
+
+The kinematic structure (joint origins, axes, types) is numbers compiled into the
+expressions; the inertial parameters, joint viscosities and gravity are symbols, so one
+build serves every model error and parameter sweep.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import casadi as ca
+
+#: the per-link inertial parameters in the ``robot`` array, in order: mass [kg], centre of mass
+#: in the joint frame [m], inertia about the centre of mass in the joint frame's axes [kg m^2]
+INERTIAL = ("m", "cx", "cy", "cz", "Ixx", "Ixy", "Ixz", "Iyy", "Iyz", "Izz")
+INERTIAL_UNITS = ("kg", "m", "m", "m") + ("kg m^2",) * 6
+#: rounding below which a transform's entry is taken as exactly 0 or +-1 (cos(pi/2) = 6e-17)
+_SNAP = 1e-15
+
+
+@dataclass(frozen=True)
+class Joint:
+    """One moving joint of the chain (fixed joints are merged into the next origin).
+
+    ``rotation`` (3x3, row-major tuples) and ``translation`` [m] place this joint's frame in
+    its parent's frame at ``q = 0``; ``axis`` is a unit vector in this joint's frame.
+    """
+
+    name: str
+    kind: str  # "revolute" (also URDF "continuous") or "prismatic"
+    rotation: tuple[tuple[float, float, float], ...]
+    translation: tuple[float, float, float]
+    axis: tuple[float, float, float]
+
+
+@dataclass(frozen=True)
+class Chain:
+    """The kinematic structure of a serial arm: moving joints from the root, then the tip frame.
+
+    ``tip_rotation`` and ``tip_translation`` place the tip frame in the last joint's frame.
+    """
+
+    joints: tuple[Joint, ...]
+    tip_rotation: tuple[tuple[float, float, float], ...]
+    tip_translation: tuple[float, float, float]
+
+    @property
+    def n(self) -> int:
+        return len(self.joints)
+
+
+def parameter_names(chain: Chain) -> tuple[str, ...]:
+    """Names of the ``robot`` array: per link the :data:`INERTIAL` set, then the joint
+    viscosities, then gravity ``g_x, g_y, g_z`` [m/s^2] in base axes."""
+    return (tuple(f"{p}[{j.name}]" for j in chain.joints for p in INERTIAL)
+            + tuple(f"damping[{j.name}]" for j in chain.joints) + ("g_x", "g_y", "g_z"))
+
+
+def parameter_units(chain: Chain) -> tuple[str, ...]:
+    prismatic = {"revolute": "N m s/rad", "prismatic": "N s/m"}
+    return (INERTIAL_UNITS * chain.n + tuple(prismatic[j.kind] for j in chain.joints)
+            + ("m/s^2",) * 3)
+
+
+def _snap(x: float) -> float:
+    for exact in (0.0, 1.0, -1.0):
+        if abs(x - exact) < _SNAP:
+            return exact
+    return float(x)
+
+
+def _const(rows) -> ca.SX:
+    return ca.SX(ca.DM([[_snap(v) for v in row] for row in rows]))
+
+
+def _vec(v) -> ca.SX:
+    return ca.SX(ca.DM([_snap(x) for x in v]))
+
+
+def _axis_rotation(axis, angle) -> ca.SX:
+    """Rotation by ``angle`` about the unit ``axis`` (Rodrigues), zeros kept exact."""
+    c, s = ca.cos(angle), ca.sin(angle)
+    x, y, z = (_snap(a) for a in axis)
+    rows = []
+    for i, (ai, row_k) in enumerate(((x, (0.0, -z, y)), (y, (z, 0.0, -x)), (z, (-y, x, 0.0)))):
+        row = []
+        for j, aj in enumerate((x, y, z)):
+            e = (1.0 if i == j else 0.0) * c + row_k[j] * s + ai * aj * (1 - c)
+            row.append(e)
+        rows.append(ca.horzcat(*row))
+    return ca.vertcat(*rows)
+
+
+def _cross(a, b) -> ca.SX:
+    return ca.vertcat(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+@dataclass
+class Frames:
+    """Joint frames in base axes: rotations ``R``, origins ``p``, axes ``z``, motion subspaces ``S``."""
+
+    R: list
+    p: list
+    z: list
+    S: list  # (angular, linear) pairs
+    tip_R: ca.SX
+    tip_p: ca.SX
+
+
+def forward_kinematics(chain: Chain, q) -> Frames:
+    """Place every joint frame and the tip frame for the joint positions ``q``."""
+    R, p = ca.SX.eye(3), ca.SX.zeros(3, 1)
+    out = Frames([], [], [], [], None, None)
+    for i, j in enumerate(chain.joints):
+        p = p + R @ _vec(j.translation)
+        R = R @ _const(j.rotation)
+        z = R @ _vec(j.axis)
+        if j.kind == "revolute":
+            R = R @ _axis_rotation(j.axis, q[i])
+            S = (z, _cross(p, z))
+        else:
+            p = p + z * q[i]
+            S = (ca.SX.zeros(3, 1), z)
+        out.R.append(R)
+        out.p.append(p)
+        out.z.append(z)
+        out.S.append(S)
+    out.tip_p = p + R @ _vec(chain.tip_translation)
+    out.tip_R = R @ _const(chain.tip_rotation)
+    return out
+
+
+def frame_jacobian(frames: Frames) -> ca.SX:
+    """``J`` (6 x n): the tip origin's velocity and the angular velocity, base axes."""
+    cols = []
+    for w, v in frames.S:
+        cols.append(ca.vertcat(v + _cross(w, frames.tip_p), w))
+    return ca.horzcat(*cols)
+
+
+def _motion_cross(m1, m2):
+    """Spatial motion cross product ``m1 x m2`` of (angular, linear) pairs."""
+    w1, v1 = m1
+    w2, v2 = m2
+    return _cross(w1, w2), _cross(w1, v2) + _cross(v1, w2)
+
+
+def _add(a, b):
+    return a[0] + b[0], a[1] + b[1]
+
+
+def _scale(m, s):
+    return m[0] * s, m[1] * s
+
+
+def _dot(m, f):
+    return ca.dot(m[0], f[0]) + ca.dot(m[1], f[1])
+
+
+def velocities_and_bias(frames: Frames, qd, qdd=None, base_acceleration=None):
+    """Spatial velocities ``v_i`` and accelerations ``a_i`` of every link (forward pass).
+
+    ``a_i = a_{i-1} + S_i q''_i + v_i x S_i q'_i``, from ``a_0 = base_acceleration``
+    (``(0, -g)`` puts gravity in, as a fictitious base acceleration).
+    """
+    zero = ca.SX.zeros(3, 1)
+    v, a = (zero, zero), base_acceleration or (zero, zero)
+    vs, accs = [], []
+    for i, S in enumerate(frames.S):
+        v = _add(v, _scale(S, qd[i]))
+        a = _add(a, _motion_cross(v, _scale(S, qd[i])))
+        if qdd is not None:
+            a = _add(a, _scale(S, qdd[i]))
+        vs.append(v)
+        accs.append(a)
+    return vs, accs
+
+
+def frame_classical_acceleration(frames: Frames, qd) -> ca.SX:
+    """``J'(q, q') q'`` (6): the tip origin's classical linear acceleration and the angular
+    acceleration at ``q'' = 0``, no gravity."""
+    vs, accs = velocities_and_bias(frames, qd)
+    (w, v), (alpha, a) = vs[-1], accs[-1]
+    p = frames.tip_p
+    v_tip = v + _cross(w, p)
+    return ca.vertcat(a + _cross(alpha, p) + _cross(w, v_tip), alpha)
+
+
+@dataclass
+class Inertia:
+    """A (composite) rigid-body inertia about the base origin, in base axes: mass ``m``,
+    first moment ``h = m c`` and rotational inertia ``I_O`` about the origin (3x3)."""
+
+    m: object
+    h: ca.SX
+    I: ca.SX  # noqa: E741
+
+    def __add__(self, other: Inertia) -> Inertia:
+        return Inertia(self.m + other.m, self.h + other.h, self.I + other.I)
+
+    def apply(self, motion):
+        """The momentum (force vector) ``I v`` of the motion ``v = (w, v_O)``."""
+        w, v = motion
+        return self.I @ w + _cross(self.h, v), self.m * v - _cross(self.h, w)
+
+
+def link_inertias(chain: Chain, frames: Frames, params) -> list[Inertia]:
+    """Each link's inertia in base axes about the base origin, from the ``robot`` parameters."""
+    out = []
+    k = len(INERTIAL)
+    for i in range(chain.n):
+        m, cx, cy, cz, ixx, ixy, ixz, iyy, iyz, izz = (params[i * k + j] for j in range(k))
+        R = frames.R[i]
+        c = frames.p[i] + R @ ca.vertcat(cx, cy, cz)
+        Ic = ca.vertcat(ca.horzcat(ixx, ixy, ixz), ca.horzcat(ixy, iyy, iyz), ca.horzcat(ixz, iyz, izz))
+        Iw = R @ Ic @ R.T
+        # parallel axes to the base origin: I_O = I_c + m (|c|^2 1 - c c^T)
+        I_O = Iw + m * (ca.dot(c, c) * ca.SX.eye(3) - c @ c.T)
+        out.append(Inertia(m, m * c, I_O))
+    return out
+
+
+def _gravity_and_damping(chain: Chain, params):
+    base = len(INERTIAL) * chain.n
+    damping = [params[base + i] for i in range(chain.n)]
+    g = ca.vertcat(*(params[base + chain.n + i] for i in range(3)))
+    return damping, g
+
+
+def crba(chain: Chain, frames: Frames, params) -> ca.SX:
+    """``B(q)`` (n x n, symmetric) by the composite-rigid-body algorithm:
+    ``B_ij = S_j . (Ic_i S_i)`` for ``j <= i``, ``Ic_i`` the inertia of links ``i..n``."""
+    inertias = link_inertias(chain, frames, params)
+    B = [[None] * chain.n for _ in range(chain.n)]
+    composite = None
+    for i in reversed(range(chain.n)):
+        composite = inertias[i] if composite is None else composite + inertias[i]
+        F = composite.apply(frames.S[i])
+        for j in range(i + 1):
+            B[i][j] = B[j][i] = _dot(frames.S[j], F)
+    return ca.vertcat(*(ca.horzcat(*row) for row in B))
+
+
+def rnea(chain: Chain, frames: Frames, params, qd, qdd=None) -> ca.SX:
+    """``tau = B q'' + n(q, q')`` by recursive Newton-Euler (``q'' = 0`` when ``qdd`` is None):
+    Coriolis/centrifugal, gravity and joint viscosity ``damping_i q'_i``."""
+    damping, g = _gravity_and_damping(chain, params)
+    inertias = link_inertias(chain, frames, params)
+    vs, accs = velocities_and_bias(frames, qd, qdd, (ca.SX.zeros(3, 1), -g))
+    tau = [None] * chain.n
+    total = None
+    for i in reversed(range(chain.n)):
+        momentum = inertias[i].apply(vs[i])
+        w, v = vs[i]
+        n_mom, f_mom = momentum
+        # f_i = I_i a_i + v_i x* (I_i v_i)
+        ia = inertias[i].apply(accs[i])
+        f = (ia[0] + _cross(w, n_mom) + _cross(v, f_mom), ia[1] + _cross(w, f_mom))
+        total = f if total is None else _add(total, f)
+        tau[i] = _dot(frames.S[i], total) + damping[i] * qd[i]
+    return ca.vertcat(*tau)
+
+
+def cholesky_solve(B: ca.SX, b: ca.SX) -> ca.SX:
+    """``x = B^-1 b`` for a symmetric positive definite ``B``, by an unrolled Cholesky
+    factorisation ``B = L L^T`` and two triangular solves (a non-positive pivot gives NaN,
+    which the entry point reports as ``HYBRID_NONFINITE``)."""
+    n = B.shape[0]
+    L = [[None] * n for _ in range(n)]
+    for j in range(n):
+        s = B[j, j] - sum((L[j][k] ** 2 for k in range(j)), ca.SX(0))
+        L[j][j] = ca.sqrt(s)
+        inv = 1 / L[j][j]
+        for i in range(j + 1, n):
+            L[i][j] = (B[i, j] - sum((L[i][k] * L[j][k] for k in range(j)), ca.SX(0))) * inv
+    y = [None] * n
+    for i in range(n):
+        y[i] = (b[i] - sum((L[i][k] * y[k] for k in range(i)), ca.SX(0))) / L[i][i]
+    x = [None] * n
+    for i in reversed(range(n)):
+        x[i] = (y[i] - sum((L[k][i] * x[k] for k in range(i + 1, n)), ca.SX(0))) / L[i][i]
+    return ca.vertcat(*x)
+
+
+def rotation_rpy(roll: float, pitch: float, yaw: float) -> tuple[tuple[float, float, float], ...]:
+    """URDF's fixed-axis roll-pitch-yaw: ``Rz(yaw) Ry(pitch) Rx(roll)``, as row tuples."""
+    cr, sr, cp, sp, cy, sy = (math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch),
+                              math.cos(yaw), math.sin(yaw))
+    return ((cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr),
+            (sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr),
+            (-sp, cp * sr, cp * cr))

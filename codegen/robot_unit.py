@@ -1,0 +1,80 @@
+"""Kernels of one serial arm (from its URDF), emitted by the CasADi backend.
+
+The kinematic structure (joint origins, axes, types, the tip frame) is compiled in; the
+``robot`` array (inertial parameters, joint viscosities, gravity) is a run-time input, so a
+model error or a parameter sweep never recompiles. Every solve is a factorisation.
+"""
+
+from __future__ import annotations
+
+import re
+
+import casadi as ca
+
+from . import rigid_body as rb
+from .emit import Unit, assemble
+from .kernel import Arg, Kernel
+
+
+def _units(chain: rb.Chain, what: str) -> tuple[str, ...]:
+    per = {"revolute": {"q": "rad", "qd": "rad/s", "qdd": "rad/s^2", "tau": "N m"},
+           "prismatic": {"q": "m", "qd": "m/s", "qdd": "m/s^2", "tau": "N"}}
+    return tuple(per[j.kind][what] for j in chain.joints)
+
+
+def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
+    """``robot_terms`` (tip pose, ``J``, ``J' q'``, ``B``, ``n``), ``inverse_dynamics`` (RNEA) and
+    ``forward_dynamics`` (``B^-1 (tau - n)`` by Cholesky), each batched over states; with
+    ``defaults`` (the URDF's ``robot`` array) also ``urdf_parameters``, which writes them."""
+    n = chain.n
+    names = tuple(j.name for j in chain.joints)
+    q, qd, qdd, tau = (ca.SX.sym(s, n) for s in ("q", "qd", "qdd", "tau"))
+    params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
+    fr = rb.forward_kinematics(chain, q)
+    B = rb.crba(chain, fr, params)
+    bias = rb.rnea(chain, fr, params, qd)
+    a_q, a_qd = Arg("q", q, _units(chain, "q"), names=names), Arg("qd", qd, _units(chain, "qd"), names=names)
+    a_p = Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain))
+    row_major = lambda M: ca.reshape(M.T, -1, 1)  # noqa: E731  (CasADi is column-major)
+    terms = Kernel(
+        "robot_terms", (a_q, a_qd, a_p),
+        (Arg("p", fr.tip_p, "m"), Arg("rotation", row_major(fr.tip_R), "1", (3, 3)),
+         Arg("J", row_major(rb.frame_jacobian(fr)), "m/rad, 1 (linear rows, then angular)", (6, n)),
+         Arg("Jdqd", rb.frame_classical_acceleration(fr, qd), "m/s^2, rad/s^2"),
+         Arg("B", row_major(B), "kg m^2", (n, n)), Arg("n", bias, _units(chain, "tau"))),
+        "tip frame position p [m] and rotation (row-major) in base axes, frame Jacobian J (6 x n, "
+        "LOCAL_WORLD_ALIGNED), J'(q, q') q' (classical), inertia B(q) (CRBA), n(q, q') (RNEA: "
+        "Coriolis/centrifugal, gravity, viscosity)", batched=("q", "qd"))
+    inverse = Kernel(
+        "inverse_dynamics", (a_q, a_qd, Arg("qdd", qdd, _units(chain, "qdd"), names=names), a_p),
+        (Arg("tau", rb.rnea(chain, fr, params, qd, qdd), _units(chain, "tau")),),
+        "inverse dynamics tau = B(q) q'' + n(q, q') by recursive Newton-Euler", batched=("q", "qd", "qdd"))
+    forward = Kernel(
+        "forward_dynamics", (a_q, a_qd, Arg("tau", tau, _units(chain, "tau"), names=names), a_p),
+        (Arg("qdd", rb.cholesky_solve(B, tau - bias), _units(chain, "qdd")),),
+        "forward dynamics q'' = B(q)^-1 (tau - n(q, q')) by a Cholesky factorisation of B",
+        batched=("q", "qd", "tau"))
+    if defaults is None:
+        return terms, inverse, forward
+    values = Arg("robot", ca.SX(ca.DM([float(v) for v in defaults])), a_p.unit, names=a_p.names)
+    urdf = Kernel("urdf_parameters", (), (values,),
+                  "the robot array as the URDF gives it (inertial parameters, viscosities, gravity)")
+    return terms, inverse, forward, urdf
+
+
+def c_identifier(name: str) -> str:
+    """``name`` made a C identifier (the prefix of every emitted symbol)."""
+    ident = re.sub(r"\W", "_", name)
+    return ident if re.match(r"[A-Za-z_]", ident) else f"robot_{ident}"
+
+
+def build_robot_unit(chain: rb.Chain, prefix: str, info: dict, defaults=None) -> Unit:
+    """C source, header and manifest of ``chain``'s kernels, deterministic in its inputs.
+
+    ``info`` (robot name, tip, joint names, ...) goes into the manifest as it is; ``defaults``
+    adds ``<prefix>_urdf_parameters(robot)`` returning the URDF's parameter values.
+    """
+    return assemble(prefix, "casadi", robot_kernels(chain, defaults),
+                    f"rigid-body kernels of the {chain.n}-joint serial arm '{info.get('robot', prefix)}'",
+                    info={"robot": info}, tool=f"CasADi {ca.__version__}",
+                    defines={"NQ": chain.n, "ROBOT_SIZE": len(rb.parameter_names(chain))})

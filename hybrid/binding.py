@@ -1,0 +1,134 @@
+"""Generated C functions bound from their manifest: the one place that reads the interface.
+
+The generator writes beside every unit a manifest (``<prefix>.json``) naming each
+function's symbol, its inputs and outputs with sizes, shapes and units, and its properties
+(``conditioning``, ``batched``, ``integrator``). :class:`Function` calls a function from that
+description alone: it checks and converts the inputs, allocates the outputs, and turns a
+status code into a :class:`~hybrid.errors.HybridError` naming the inputs.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .errors import HybridError, NonFiniteError, SingularConfigurationError
+
+
+def status_error(status: int, where: str, singular_hint: str = "", **inputs) -> HybridError:
+    """The exception for a native status code, naming the inputs that caused it."""
+    shown = ", ".join(f"{k}={np.array2string(np.asarray(v), precision=6)}" for k, v in inputs.items())
+    if status == 1:
+        return SingularConfigurationError(
+            f"{where}: the Jacobian is singular or nearly so at {shown}{singular_hint}; "
+            "keep the arm away from the singular pose, or lower singular_tol")
+    bad = [k for k, v in inputs.items() if not np.isfinite(np.asarray(v, float)).all()]
+    hint = f"non-finite input {', '.join(bad)}" if bad else "the inputs are finite but extreme"
+    return NonFiniteError(f"{where}: result is NaN or infinite ({hint}) at {shown}")
+
+
+def as_array(name: str, x, size: int, batched: bool = False) -> np.ndarray:
+    """``x`` as a C-contiguous float64 array of shape ``(size,)``, or ``(N, size)`` when batched."""
+    if np.iscomplexobj(x):
+        raise HybridError(f"{name} must be real, got complex values")
+    try:
+        arr = np.ascontiguousarray(x, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise HybridError(f"{name} must be {size} numbers, got {x!r:.80}") from None
+    want = f"(N, {size})" if batched else f"({size},)"
+    if arr.ndim != (2 if batched else 1) or arr.shape[-1] != size or arr.shape[0] == 0:
+        raise HybridError(f"{name} must have shape {want}, got {arr.shape}")
+    return arr
+
+
+class Function:
+    """One generated function, called as its manifest describes it.
+
+    ``f(*inputs)`` evaluates one state and returns ``{output name: array}`` shaped as the
+    manifest says; ``f.batch(*inputs)`` evaluates N states (the ``per_state`` inputs of shape
+    ``(N, size)``) in one native call.
+    """
+
+    def __init__(self, module, entry: dict, singular_hint: str = ""):
+        self.entry = entry
+        self.name = entry["name"]
+        self.inputs = [(a["name"], a["size"]) for a in entry["inputs"]]
+        self.outputs = [(a["name"], a["size"], tuple(a["shape"])) for a in entry["outputs"]]
+        self.conditioning = entry["conditioning"] is not None
+        self._ffi = module.ffi
+        self._fn = getattr(module.lib, entry["symbol"])
+        batched = entry["batched"]
+        self.per_state = tuple(batched["per_state"]) if batched else ()
+        self._batch = getattr(module.lib, batched["symbol"]) if batched else None
+        self._hint = singular_hint
+
+    def _extra(self, singular_tol):
+        if not self.conditioning:
+            return []
+        if singular_tol is None:
+            raise HybridError(f"{self.name} needs a singular_tol")
+        return [float(singular_tol)]
+
+    def __call__(self, *args, singular_tol: float | None = None) -> dict[str, np.ndarray]:
+        ins = self._inputs(args, batched=False)
+        outs = {n: np.empty(size) for n, size, _ in self.outputs}
+        fb = self._ffi.from_buffer
+        status = self._fn(*(fb("double[]", v) for v in ins.values()), *self._extra(singular_tol),
+                          *(fb("double[]", v) for v in outs.values()))
+        if status:
+            raise status_error(status, self.name, self._hint, **ins)
+        return {n: outs[n].reshape(shape) for n, _, shape in self.outputs}
+
+    def batch(self, *args, singular_tol: float | None = None) -> dict[str, np.ndarray]:
+        if self._batch is None:
+            raise HybridError(f"{self.name} has no batched entry point")
+        ins = self._inputs(args, batched=True)
+        lengths = {len(ins[n]) for n in self.per_state}
+        if len(lengths) != 1:
+            raise HybridError(f"{', '.join(self.per_state)} must have the same number of rows, got "
+                              + ", ".join(str(ins[n].shape) for n in self.per_state))
+        N = lengths.pop()
+        outs = {n: np.empty((N, size)) for n, size, _ in self.outputs}
+        status = np.empty(N, dtype=np.intc)
+        fb = self._ffi.from_buffer
+        failed = self._batch(N, *(fb("double[]", v) for v in ins.values()), *self._extra(singular_tol),
+                             *(fb("double[]", v) for v in outs.values()), fb("int[]", status))
+        if failed:
+            i = int(np.flatnonzero(status)[0])
+            raise status_error(int(status[i]), f"{self.name}, state {i} of {N} ({failed} failed)", self._hint,
+                               **{n: (v[i] if n in self.per_state else v) for n, v in ins.items()})
+        return {n: outs[n].reshape((N, *shape)) for n, _, shape in self.outputs}
+
+    def _inputs(self, args, batched: bool) -> dict[str, np.ndarray]:
+        if len(args) != len(self.inputs):
+            raise HybridError(f"{self.name} takes {len(self.inputs)} arrays "
+                              f"({', '.join(n for n, _ in self.inputs)}), got {len(args)}")
+        return {n: as_array(n, v, size, batched and n in self.per_state)
+                for (n, size), v in zip(self.inputs, args)}
+
+
+class Unit:
+    """A compiled unit and its manifest: ``unit.function(name)`` binds one function."""
+
+    def __init__(self, module, manifest: dict, singular_hint: str = ""):
+        self.module, self.manifest = module, manifest
+        self._entries = {f["name"]: f for f in manifest["functions"]}
+        self._hint = singular_hint
+        self._bound: dict[str, Function] = {}
+
+    def function(self, name: str) -> Function:
+        if name not in self._bound:
+            if name not in self._entries:
+                raise HybridError(f"the unit {self.manifest['unit']} has no function {name!r}; "
+                                  f"it has {', '.join(self._entries)}")
+            self._bound[name] = Function(self.module, self._entries[name], self._hint)
+        return self._bound[name]
+
+    def entry(self, name: str) -> dict:
+        return self.function(name).entry
+
+    def names(self, function: str, argument: str) -> tuple[str, ...]:
+        """Element names of an argument (parameter arrays, records), from the manifest."""
+        for a in (*self.entry(function)["inputs"], *self.entry(function)["outputs"]):
+            if a["name"] == argument:
+                return tuple(a.get("names", ()))
+        raise HybridError(f"{function} has no argument {argument!r}")
