@@ -7,6 +7,7 @@ information, never pass/fail.
 from __future__ import annotations
 
 import json
+import os
 import platform
 import statistics
 import subprocess
@@ -20,7 +21,7 @@ import numpy as np
 
 from . import native, reference
 from .experiment import paper_experiment
-from .law import decoupling_law
+from .law import decoupling_law, planar_unit
 from .parameters import Circle, paper_arm
 from .simulation import simulate
 
@@ -35,29 +36,59 @@ def in_c(backend: str) -> str:
 
 HARNESS = r"""
 #include <stdio.h>
+#include <stdlib.h>
 #include <time.h>
-#include "hybrid_%(b)s.h"
+#include "%(prefix)s.h"
 static double now(void) { struct timespec ts; clock_gettime(CLOCK_MONOTONIC, &ts); return ts.tv_sec + 1e-9 * ts.tv_nsec; }
 int main(int argc, char **argv) {
-    long n = argc > 1 ? atol(argv[1]) : 1000000, i;
+    long ncalls = argc > 1 ? atol(argv[1]) : 1000000, i;
     int rep, reps = argc > 2 ? atoi(argv[2]) : 7;
-    double arm[11] = {0.45, 0.32, 0.0, 3.5, 0.0, 0.15, 0.25, 0.16, 1.3, 0.2, 0.0};
-    double surface[3] = {0.5, 0.0, 0.2}, opts[1] = {1.0};
-    double q[2] = {2.2, 1.9}, qd[2] = {0.3, -0.4}, a[2] = {0.1, 1.0}, Fc[2] = {-8.0, 3.0};
-    double F[2], tau[2], sink = 0.0;
+    double sink = 0.0;
+%(arrays)s
     for (rep = 0; rep < reps; ++rep) {
         double t0 = now();
-        for (i = 0; i < n; ++i) {
-            q[0] = 2.2 + 1e-9 * (double)(i & 1023);   /* a new state each call */
-            hybrid_%(b)s_decoupling_law_circle(q, qd, a, Fc, arm, surface, opts, 1e-3, F, tau);
-            sink += F[0] + tau[1];
+        for (i = 0; i < ncalls; ++i) {
+            %(first)s[0] = %(first0)r + 1e-9 * (double)(i & 1023);   /* a new state each call */
+            %(symbol)s(%(args)s);
+            sink += %(out)s[0];
         }
-        printf("%%.3f\n", (now() - t0) / (double)n * 1e9);
+        printf("%%.3f\n", (now() - t0) / (double)ncalls * 1e9);
     }
     fprintf(stderr, "%%g\n", sink);
     return 0;
 }
 """
+
+
+def harness_source(prefix: str, entry: dict, values: dict, singular_tol: float = 1e-3) -> str:
+    """A C program timing one call of the manifest function ``entry`` on the input ``values``."""
+    decl = []
+    for a in entry["inputs"]:
+        v = np.asarray(values[a["name"]], float).ravel()
+        if v.size != a["size"]:
+            raise ValueError(f"{a['name']} needs {a['size']} values, got {v.size}")
+        decl.append(f"    double {a['name']}[{a['size']}] = {{{', '.join(repr(float(x)) for x in v)}}};")
+    decl += [f"    double {a['name']}[{a['size']}];" for a in entry["outputs"]]
+    args = [a["name"] for a in entry["inputs"]] + ([repr(singular_tol)] if entry["conditioning"] else [])
+    args += [a["name"] for a in entry["outputs"]]
+    first = entry["inputs"][0]["name"]
+    return HARNESS % {"prefix": prefix, "arrays": "\n".join(decl), "symbol": entry["symbol"], "args": ", ".join(args),
+                      "first": first, "first0": float(np.asarray(values[first]).ravel()[0]),
+                      "out": entry["outputs"][0]["name"]}
+
+
+def c_harness_ns(src_dir: Path, prefix: str, entry: dict, values: dict, calls: int, repeat: int) -> float:
+    """Per-call time of a generated function inside C, by a compiled loop (the runtime's flags)."""
+    cc, _ = native.compiler()
+    with tempfile.TemporaryDirectory() as tmp:
+        main = Path(tmp) / "bench.c"
+        main.write_text(harness_source(prefix, entry, values))
+        exe = Path(tmp) / "bench"
+        flags = [f for f in native.CFLAGS if f != "-fPIC"]
+        subprocess.run([cc, *flags, f"-I{src_dir}", str(main), str(src_dir / f"{prefix}.c"),
+                        "-o", str(exe), "-lm"], check=True, capture_output=True)
+        out = subprocess.run([str(exe), str(calls), str(repeat)], check=True, capture_output=True, text=True)
+    return statistics.median(float(x) for x in out.stdout.split())
 
 
 def _progress(i: int, total: int, what: str) -> None:
@@ -72,21 +103,6 @@ def _median_ns(fn, number: int, repeat: int) -> float:
             fn()
         times.append((time.perf_counter() - t0) / number * 1e9)
     return statistics.median(times)
-
-
-def c_harness_ns(backend: str, calls: int, repeat: int) -> float:
-    """F* per call inside C, timed by a compiled loop (same flags as the runtime build)."""
-    cc, _ = native.compiler()
-    src_dir = native.source_dir()
-    with tempfile.TemporaryDirectory() as tmp:
-        main = Path(tmp) / "bench.c"
-        main.write_text("#include <stdlib.h>\n" + HARNESS % {"b": backend})
-        exe = Path(tmp) / "bench"
-        flags = [f for f in native.CFLAGS if f != "-fPIC"]
-        subprocess.run([cc, *flags, f"-I{src_dir}", str(main), str(src_dir / f"hybrid_{backend}.c"),
-                        "-o", str(exe), "-lm"], check=True, capture_output=True)
-        out = subprocess.run([str(exe), str(calls), str(repeat)], check=True, capture_output=True, text=True)
-    return statistics.median(float(x) for x in out.stdout.split())
 
 
 def _versions() -> dict:
@@ -113,16 +129,19 @@ def run_benchmarks(quick: bool = False) -> dict:
     p, s = arm.as_array(), circle.as_array()
     rep = 3 if quick else 7
     results = []
-    steps = 11
+    steps = 11 + 2 * len(ROBOTS)
     k = 0
 
     def add(name, ns, unit="ns", **extra):
         results.append({"name": name, "median": ns, "unit": unit, **extra})
 
+    values = {"q": q, "qd": qd, "a": a, "Fc": Fc, "arm": p, "surface": s, "opts": [1.0]}
     for b in ("sympy", "casadi"):
         k += 1
         _progress(k, steps, f"F* in C ({b} backend)")
-        add(in_c(b), c_harness_ns(b, 200_000 if quick else 2_000_000, rep))
+        entry = planar_unit(b).entry("decoupling_law_circle")
+        add(in_c(b), c_harness_ns(native.source_dir(), f"hybrid_{b}", entry, values,
+                                  200_000 if quick else 2_000_000, rep))
     k += 1
     _progress(k, steps, "F* from Python, single state")
     add(ONE_STATE, _median_ns(lambda: law(q, qd, a, Fc), 20000, rep))
@@ -194,7 +213,87 @@ def run_benchmarks(quick: bool = False) -> dict:
                         comp["median"] <= 25 and slow["median"] / comp["median"] >= 100))
     for name, target, met in targets:
         by[name].update(target=target, met=bool(met))
+    for name, (path, tip) in ROBOTS.items():
+        k += 2
+        _progress(k, steps, f"{name}: generation, compilation, terms in C, from Python and by Pinocchio")
+        robot_benchmarks(name, path, tip, rep, quick, add)
+    by = {r["name"]: r for r in results}
+    robot_targets = [(f"panda: {TERMS_IN_C}", "<= 1 us", lambda m: m <= 1000),
+                     (f"panda: {GEN_COMPILE}", "<= 30 s", lambda m: m <= 30)]
+    for name, target, ok in robot_targets:
+        if name in by:
+            by[name].update(target=target, met=bool(ok(by[name]["median"])))
     return {"machine": _versions(), "quick": quick, "results": results}
+
+
+#: the URDF arms of the robot benchmarks (files of the example-robot-data package) and their tips
+ROBOTS = {"ur5": ("ur5_robot.urdf", "tool0"), "panda": ("panda.urdf", "panda_hand_tcp")}
+TERMS_IN_C = "r, rotation, J, J'q', B, n in C, per call (robot_terms)"
+GEN_COMPILE = "generate + compile, fresh cache and process"
+
+
+def _shipped_urdf(name: str) -> Path | None:
+    try:
+        from importlib.metadata import distribution
+
+        dist = distribution("example-robot-data")
+    except PackageNotFoundError:
+        return None
+    return next((Path(dist.locate_file(f)) for f in dist.files or () if str(f).endswith("/" + name)), None)
+
+
+def robot_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool, add) -> None:
+    """Terms of a URDF arm: in C, from Python (one state, batched), by Pinocchio; generation time, code size."""
+    from .law import arm_terms
+    from .robot import Robot
+
+    path = _shipped_urdf(urdf)
+    if path is None:
+        print(f"  (skipped {name}: pip install example-robot-data)", file=sys.stderr)
+        return
+    script = (f"import numpy as np, hybrid; r = hybrid.Robot.from_urdf({str(path)!r}, tip={tip!r}); "
+              "hybrid.arm_terms(r, np.zeros(r.n), np.zeros(r.n))")
+    with tempfile.TemporaryDirectory() as cache:
+        t0 = time.perf_counter()
+        subprocess.run([sys.executable, "-c", script], check=True, env={**os.environ, "HYBRID_CACHE_DIR": cache})
+        add(f"{name}: {GEN_COMPILE}", time.perf_counter() - t0, "s")
+    robot = Robot.from_urdf(path, tip=tip)
+    unit = robot.unit
+    source = (unit.folder / f"{unit.manifest['unit']}.c").read_text()
+    add(f"{name}: generated C size", len(source.encode()) / 1024, "KiB", ratio=f"{source.count(chr(10))} lines")
+    rng = np.random.default_rng(1)
+    q, qd = rng.uniform(-1, 1, robot.n), rng.normal(size=robot.n)
+    entry = unit.entry("robot_terms")
+    add(f"{name}: {TERMS_IN_C}", c_harness_ns(unit.folder, unit.manifest["unit"], entry,
+                                              {"q": q, "qd": qd, "robot": robot.as_array()},
+                                              50_000 if quick else 500_000, rep))
+    ours = _median_ns(lambda: arm_terms(robot, q, qd), 500 if quick else 5000, rep)
+    add(f"{name}: the same from Python, one state (arm_terms)", ours)
+    N = 10_000
+    Q, QD = rng.uniform(-1, 1, (N, robot.n)), rng.normal(size=(N, robot.n))
+    add(f"{name}: the same from Python, batched, per state (N = 1e4)", _median_ns(
+        lambda: arm_terms(robot, Q, QD), 1, rep) / N)
+    try:
+        import pinocchio as pin
+    except ImportError:
+        return
+    model = pin.buildModelFromUrdf(str(path))
+    if model.nq != robot.n:  # the Panda's fingers: held at 0, as Robot.from_urdf does
+        extra = [model.getJointId(n) for n in model.names[1:] if n not in robot.joint_names]
+        model = pin.buildReducedModel(model, extra, pin.neutral(model))
+    data, fid, damping = model.createData(), model.getFrameId(tip), np.array(robot.damping)
+
+    def pinocchio_terms():
+        pin.forwardKinematics(model, data, q, qd, np.zeros(robot.n))
+        pin.updateFramePlacements(model, data)
+        J = pin.computeFrameJacobian(model, data, q, fid, pin.LOCAL_WORLD_ALIGNED)
+        acc = pin.getFrameClassicalAcceleration(model, data, fid, pin.LOCAL_WORLD_ALIGNED).vector
+        B = pin.crba(model, data, q)
+        B = np.triu(B) + np.triu(B, 1).T
+        return data.oMf[fid], J, acc, B, pin.nonLinearEffects(model, data, q, qd) + damping * qd
+
+    theirs = _median_ns(pinocchio_terms, 500 if quick else 5000, rep)
+    add(f"{name}: the same by Pinocchio from Python", theirs, ratio=f"{theirs / ours:.2f}x the time of arm_terms")
 
 
 def _pinocchio_ns(arm, q, qd, a, Fc, s, rep):

@@ -28,6 +28,9 @@ def status_error(status: int, where: str, singular_hint: str = "", **inputs) -> 
 
 def as_array(name: str, x, size: int, batched: bool = False) -> np.ndarray:
     """``x`` as a C-contiguous float64 array of shape ``(size,)``, or ``(N, size)`` when batched."""
+    if (type(x) is np.ndarray and x.dtype == np.float64 and x.flags.c_contiguous
+            and x.shape == ((x.shape[0], size) if batched and x.ndim == 2 and x.shape[0] else (size,))):
+        return x  # already what C wants: no copy, no checks to repeat
     if np.iscomplexobj(x):
         raise HybridError(f"{name} must be real, got complex values")
     try:
@@ -48,7 +51,7 @@ class Function:
     ``(N, size)``) in one native call.
     """
 
-    def __init__(self, module, entry: dict, singular_hint: str = ""):
+    def __init__(self, module, entry: dict, singular_hint: str = "", labels: dict | None = None):
         self.entry = entry
         self.name = entry["name"]
         self.inputs = [(a["name"], a["size"]) for a in entry["inputs"]]
@@ -56,10 +59,48 @@ class Function:
         self.conditioning = entry["conditioning"] is not None
         self._ffi = module.ffi
         self._fn = getattr(module.lib, entry["symbol"])
-        batched = entry["batched"]
+        batched, integrator = entry["batched"], entry["integrator"]
         self.per_state = tuple(batched["per_state"]) if batched else ()
         self._batch = getattr(module.lib, batched["symbol"]) if batched else None
+        self._integrator = getattr(module.lib, integrator["symbol"]) if integrator else None
         self._hint = singular_hint
+        self._labels = labels or {}
+        sizes = [size for _, size, _ in self.outputs]
+        self._offsets = [sum(sizes[:i]) for i in range(len(sizes))]
+        self._total = sum(sizes)
+
+    def size(self, name: str) -> int:
+        """Number of elements of the input or output ``name``."""
+        sizes = {n: s for n, s in self.inputs} | {n: s for n, s, _ in self.outputs}
+        return sizes[name]
+
+    def pointers(self, *arrays):
+        """cffi pointers to C-contiguous float64 arrays (the caller vouches for sizes and layout)."""
+        fb = self._ffi.from_buffer
+        return [fb("double[]", a) for a in arrays]
+
+    def into(self, *arrays, singular_tol: float | None = None) -> int:
+        """The raw call for hot loops: inputs then outputs as C-contiguous float64 arrays of the
+        manifest's sizes (not checked), outputs written in place; returns the status code."""
+        ptrs = self.pointers(*arrays)
+        k = len(self.inputs)
+        return self._fn(*ptrs[:k], *self._extra(singular_tol), *ptrs[k:])
+
+    def batch_into(self, *arrays, status: np.ndarray, singular_tol: float | None = None) -> int:
+        """The raw batched call: like :meth:`into` with ``len(status)`` states (per-state arrays of
+        shape ``(N, size)``); ``status`` (``intc``) receives each state's code. Returns how many failed."""
+        ptrs = self.pointers(*arrays)
+        k = len(self.inputs)
+        return self._batch(len(status), *ptrs[:k], *self._extra(singular_tol), *ptrs[k:],
+                           self._ffi.from_buffer("int[]", status))
+
+    def integrate(self, x: np.ndarray, *held, h: float, nsteps: int, trajectory: np.ndarray | None,
+                  done) -> int:
+        """``nsteps`` RK4 steps of ``h`` [s] on ``x`` (in place) with ``held`` inputs constant;
+        ``done`` is a cffi ``int *`` receiving the steps completed. Returns the status code."""
+        ptrs = self.pointers(x, *held)
+        traj = self._ffi.NULL if trajectory is None else self._ffi.from_buffer("double[]", trajectory)
+        return self._integrator(*ptrs, h, nsteps, traj, done)
 
     def _extra(self, singular_tol):
         if not self.conditioning:
@@ -70,13 +111,18 @@ class Function:
 
     def __call__(self, *args, singular_tol: float | None = None) -> dict[str, np.ndarray]:
         ins = self._inputs(args, batched=False)
-        outs = {n: np.empty(size) for n, size, _ in self.outputs}
+        # one buffer for all outputs, handed out as views: one allocation, one conversion
+        buf = np.empty(self._total)
+        base = self._ffi.from_buffer("double[]", buf)
         fb = self._ffi.from_buffer
         status = self._fn(*(fb("double[]", v) for v in ins.values()), *self._extra(singular_tol),
-                          *(fb("double[]", v) for v in outs.values()))
+                          *(base + o for o in self._offsets))
         if status:
-            raise status_error(status, self.name, self._hint, **ins)
-        return {n: outs[n].reshape(shape) for n, _, shape in self.outputs}
+            raise status_error(status, self.name, self._hint, **self._labelled(ins))
+        return {n: buf[o:o + size].reshape(shape) for (n, size, shape), o in zip(self.outputs, self._offsets)}
+
+    def _labelled(self, ins: dict) -> dict:
+        return {self._labels.get(n, n): v for n, v in ins.items()}
 
     def batch(self, *args, singular_tol: float | None = None) -> dict[str, np.ndarray]:
         if self._batch is None:
@@ -95,24 +141,29 @@ class Function:
         if failed:
             i = int(np.flatnonzero(status)[0])
             raise status_error(int(status[i]), f"{self.name}, state {i} of {N} ({failed} failed)", self._hint,
-                               **{n: (v[i] if n in self.per_state else v) for n, v in ins.items()})
+                               **self._labelled({n: (v[i] if n in self.per_state else v) for n, v in ins.items()}))
         return {n: outs[n].reshape((N, *shape)) for n, _, shape in self.outputs}
 
     def _inputs(self, args, batched: bool) -> dict[str, np.ndarray]:
         if len(args) != len(self.inputs):
             raise HybridError(f"{self.name} takes {len(self.inputs)} arrays "
                               f"({', '.join(n for n, _ in self.inputs)}), got {len(args)}")
-        return {n: as_array(n, v, size, batched and n in self.per_state)
+        return {n: as_array(self._labels.get(n, n), v, size, batched and n in self.per_state)
                 for (n, size), v in zip(self.inputs, args)}
 
 
 class Unit:
-    """A compiled unit and its manifest: ``unit.function(name)`` binds one function."""
+    """A compiled unit and its manifest: ``unit.function(name)`` binds one function.
 
-    def __init__(self, module, manifest: dict, singular_hint: str = ""):
-        self.module, self.manifest = module, manifest
+    ``labels`` renames arguments in messages (the manifest's ``qd`` is the API's ``qdot``);
+    ``folder`` is where the unit's C lives, when known.
+    """
+
+    def __init__(self, module, manifest: dict, singular_hint: str = "", labels: dict | None = None,
+                 folder=None):
+        self.module, self.manifest, self.folder = module, manifest, folder
         self._entries = {f["name"]: f for f in manifest["functions"]}
-        self._hint = singular_hint
+        self._hint, self._labels = singular_hint, labels
         self._bound: dict[str, Function] = {}
 
     def function(self, name: str) -> Function:
@@ -120,7 +171,7 @@ class Unit:
             if name not in self._entries:
                 raise HybridError(f"the unit {self.manifest['unit']} has no function {name!r}; "
                                   f"it has {', '.join(self._entries)}")
-            self._bound[name] = Function(self.module, self._entries[name], self._hint)
+            self._bound[name] = Function(self.module, self._entries[name], self._hint, self._labels)
         return self._bound[name]
 
     def entry(self, name: str) -> dict:

@@ -6,8 +6,12 @@
  * this file:
  *
  *   #include "hybrid_<backend>.c"          the generated unit
- *   #define HYBRID_LAW(kind)  ...            hybrid_<backend>_decoupling_law_<kind>
+ *   #define HYBRID_NQ         ...            size of q, qdot, a, Fc, F*, tau
+ *   #define HYBRID_ARM_SIZE, HYBRID_SURFACE_SIZE, HYBRID_OPTS_SIZE   the largest parameter arrays
+ *   #define HYBRID_LAWS       ...            {"symbol", function, arm size, surface size, opts size}, ...
  *   #define HYBRID_MODULE     ...            the module's name (its cache key)
+ *
+ * all read off the unit's manifest by hybrid/native.py.
  *
  * Anything off the fast path (lists, other dtypes, N states, a non-OK status) returns None,
  * and the Python caller takes its checked path, which raises the descriptive error. The
@@ -28,10 +32,18 @@
 typedef int (*law_fn)(const double *, const double *, const double *, const double *, const double *,
                       const double *, const double *, double, double *, double *);
 
+typedef struct {
+    const char *symbol;
+    law_fn law;
+    Py_ssize_t n_arm, n_surface, n_opts;
+} law_entry;
+
+static const law_entry LAWS[] = {HYBRID_LAWS};
+
 /* the parameters of one DecouplingLaw, copied at bind time */
 typedef struct {
     law_fn law;
-    double arm[16], surface[8], opts[4];
+    double arm[HYBRID_ARM_SIZE], surface[HYBRID_SURFACE_SIZE], opts[HYBRID_OPTS_SIZE];
     double singular_tol;
 } binding;
 
@@ -53,29 +65,28 @@ static int copy_doubles(PyObject *obj, double *dst, Py_ssize_t n, const char *wh
     return 0;
 }
 
-/* bind(kind, arm, surface, opts, singular_tol) -> capsule; kind is "plane" or "circle" */
+/* bind(symbol, arm, surface, opts, singular_tol) -> capsule; symbol names a law of the unit */
 static PyObject *bind(PyObject *self, PyObject *args) {
-    const char *kind;
+    const char *symbol;
     PyObject *arm, *surface, *opts;
     double tol;
+    size_t i;
+    const law_entry *entry = NULL;
     (void)self;
-    if (!PyArg_ParseTuple(args, "sOOOd", &kind, &arm, &surface, &opts, &tol)) return NULL;
-    binding b;
-    memset(&b, 0, sizeof b);
-    Py_ssize_t n_surface;
-    if (strcmp(kind, "plane") == 0) {
-        b.law = HYBRID_LAW(plane);
-        n_surface = 4;
-    } else if (strcmp(kind, "circle") == 0) {
-        b.law = HYBRID_LAW(circle);
-        n_surface = 3;
-    } else {
-        PyErr_Format(PyExc_ValueError, "fastcall.bind: unknown surface kind '%s'", kind);
+    if (!PyArg_ParseTuple(args, "sOOOd", &symbol, &arm, &surface, &opts, &tol)) return NULL;
+    for (i = 0; i < sizeof LAWS / sizeof LAWS[0]; ++i) {
+        if (strcmp(LAWS[i].symbol, symbol) == 0) entry = &LAWS[i];
+    }
+    if (entry == NULL) {
+        PyErr_Format(PyExc_ValueError, "fastcall.bind: the unit has no law '%s'", symbol);
         return NULL;
     }
+    binding b;
+    memset(&b, 0, sizeof b);
+    b.law = entry->law;
     b.singular_tol = tol;
-    if (copy_doubles(arm, b.arm, 11, "arm") || copy_doubles(surface, b.surface, n_surface, "surface")
-        || copy_doubles(opts, b.opts, 1, "opts"))
+    if (copy_doubles(arm, b.arm, entry->n_arm, "arm") || copy_doubles(surface, b.surface, entry->n_surface, "surface")
+        || copy_doubles(opts, b.opts, entry->n_opts, "opts"))
         return NULL;
     binding *heap = malloc(sizeof b);
     if (heap == NULL) return PyErr_NoMemory();
@@ -85,11 +96,11 @@ static PyObject *bind(PyObject *self, PyObject *args) {
     return capsule;
 }
 
-/* the data of a 1-D C-contiguous aligned float64 array of two values, else NULL */
+/* the data of a 1-D C-contiguous aligned float64 array of HYBRID_NQ values, else NULL */
 static const double *pair(PyObject *obj) {
     if (!PyArray_Check(obj)) return NULL;
     PyArrayObject *arr = (PyArrayObject *)obj;
-    if (PyArray_NDIM(arr) != 1 || PyArray_DIM(arr, 0) != 2 || PyArray_TYPE(arr) != NPY_DOUBLE
+    if (PyArray_NDIM(arr) != 1 || PyArray_DIM(arr, 0) != HYBRID_NQ || PyArray_TYPE(arr) != NPY_DOUBLE
         || !PyArray_ISCARRAY_RO(arr) || PyArray_ISBYTESWAPPED(arr))
         return NULL;
     return (const double *)PyArray_DATA(arr);
@@ -108,9 +119,9 @@ static PyObject *call(PyObject *self, PyObject *const *args, Py_ssize_t nargs) {
     if (which == -1 && PyErr_Occurred()) return NULL;
     const double *q = pair(args[2]), *qd = pair(args[3]), *a = pair(args[4]), *Fc = pair(args[5]);
     if (q == NULL || qd == NULL || a == NULL || Fc == NULL) Py_RETURN_NONE;
-    double F[2], tau[2];
+    double F[HYBRID_NQ], tau[HYBRID_NQ];
     if (b->law(q, qd, a, Fc, b->arm, b->surface, b->opts, b->singular_tol, F, tau) != 0) Py_RETURN_NONE;
-    npy_intp dims[1] = {2};
+    npy_intp dims[1] = {HYBRID_NQ};
     if (which == 0 || which == 1) {
         PyObject *out = PyArray_SimpleNew(1, dims, NPY_DOUBLE);
         if (out != NULL) memcpy(PyArray_DATA((PyArrayObject *)out), which == 0 ? F : tau, sizeof F);
@@ -131,7 +142,7 @@ static PyObject *call(PyObject *self, PyObject *const *args, Py_ssize_t nargs) {
 }
 
 static PyMethodDef methods[] = {
-    {"bind", bind, METH_VARARGS, "bind(kind, arm, surface, opts, singular_tol) -> binding"},
+    {"bind", bind, METH_VARARGS, "bind(symbol, arm, surface, opts, singular_tol) -> binding"},
     {"call", (PyCFunction)(void (*)(void))call, METH_FASTCALL,
      "call(binding, which, q, qdot, a, Fc) -> F* (which=0), tau (1), (F*, tau) (2), or None off the fast path"},
     {NULL, NULL, 0, NULL},

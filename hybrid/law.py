@@ -3,18 +3,33 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import partial
+from functools import cache, partial
 
 import numpy as np
 
-from . import native
-from .errors import HybridError, NonFiniteError, SingularConfigurationError
+from . import binding, native
+from .binding import Unit
+from .errors import HybridError
 from .parameters import Arm, Circle, Plane, _finite
 from .robot import Robot
 
 #: default lower bound on ``2 |det J| / |J|_F^2`` (``~ |sin q2|``) before a pose counts as singular
 SINGULAR_TOL = 1e-3
-_STATUS = {1: "singular", 2: "non-finite"}
+#: what a singular planar pose means, added to SingularConfigurationError messages
+PLANAR_SINGULAR = " (elbow q2 near 0 or pi)"
+
+
+@cache
+def planar_unit(backend: str) -> Unit:
+    """The committed planar unit of ``backend``, bound from its manifest."""
+    if backend not in ("sympy", "casadi"):
+        raise HybridError(f"backend must be 'sympy' or 'casadi', got {backend!r}")
+    return Unit(native.load(backend), native.manifest(backend), PLANAR_SINGULAR, {"qd": "qdot", "rd": "rdot"})
+
+
+def status_error(status: int, where: str, **inputs) -> HybridError:
+    """The exception for a planar unit's status code, naming the inputs that caused it."""
+    return binding.status_error(status, where, PLANAR_SINGULAR, **inputs)
 
 
 def check_surface(surface) -> str:
@@ -35,29 +50,17 @@ def check_singular_tol(owner: str, value) -> None:
         raise HybridError(f"singular_tol = {value}; give a value in [0, 1) (default {SINGULAR_TOL})")
 
 
-def as_states(name: str, x) -> np.ndarray:
-    """``x`` as a C-contiguous float64 array of shape ``(2,)`` or ``(N, 2)``."""
+def as_states(name: str, x, size: int = 2) -> np.ndarray:
+    """``x`` as a C-contiguous float64 array of shape ``(size,)`` or ``(N, size)``."""
     if np.iscomplexobj(x):
         raise HybridError(f"{name} must be real, got complex values")
     try:
         arr = np.ascontiguousarray(x, dtype=np.float64)
     except (TypeError, ValueError):
-        raise HybridError(f"{name} must be numbers of shape (2,) or (N, 2), got {x!r:.80}") from None
-    if arr.ndim not in (1, 2) or arr.shape[-1] != 2 or (arr.ndim == 2 and arr.shape[0] == 0):
-        raise HybridError(f"{name} must have shape (2,) or (N, 2) with N >= 1, got {arr.shape}")
+        raise HybridError(f"{name} must be numbers of shape ({size},) or (N, {size}), got {x!r:.80}") from None
+    if arr.ndim not in (1, 2) or arr.shape[-1] != size or (arr.ndim == 2 and arr.shape[0] == 0):
+        raise HybridError(f"{name} must have shape ({size},) or (N, {size}) with N >= 1, got {arr.shape}")
     return arr
-
-
-def status_error(status: int, where: str, **inputs) -> HybridError:
-    """The exception for a native status code, naming the inputs that caused it."""
-    shown = ", ".join(f"{k}={np.array2string(np.asarray(v), precision=6)}" for k, v in inputs.items())
-    if status == 1:
-        return SingularConfigurationError(
-            f"{where}: the Jacobian is singular or nearly so at {shown} (elbow q2 near 0 or pi); "
-            "keep the arm away from full extension/folding, or lower singular_tol")
-    bad = [k for k, v in inputs.items() if not np.isfinite(np.asarray(v, float)).all()]
-    hint = f"non-finite input {', '.join(bad)}" if bad else "the inputs are finite but extreme"
-    return NonFiniteError(f"{where}: result is NaN or infinite ({hint}) at {shown}")
 
 
 @dataclass(frozen=True)
@@ -84,20 +87,13 @@ class DecouplingLaw:
         check_singular_tol("decoupling_law", self.singular_tol)
         # frozen: the compiled buffers below must keep matching the fields
         init = partial(object.__setattr__, self)
-        mod = native.load(self.backend)
-        init("_ffi", mod.ffi)
-        name = f"hybrid_{self.backend}_decoupling_law_{kind}"
-        init("_single", getattr(mod.lib, name))
-        init("_batch", getattr(mod.lib, name + "_batch"))
-        arm, surface, opts = self.arm.as_array(), self.surface.as_array(), np.array([1.0 if self.curvature else 0.0])
-        # parameters live in C buffers for the law's lifetime: a call passes pointers only
-        init("_arm", mod.ffi.new("double[]", arm.tolist()))
-        init("_surface", mod.ffi.new("double[]", surface.tolist()))
-        init("_opts", mod.ffi.new("double[]", opts.tolist()))
+        fn = planar_unit(self.backend).function(f"decoupling_law_{kind}")
+        init("_fn", fn)
+        init("_params", (self.arm.as_array(), self.surface.as_array(), np.array([1.0 if self.curvature else 0.0])))
         # one state from NumPy arrays skips cffi's per-array conversion (see hybrid/fastcall.c)
         fast = native.load_fastcall(self.backend)
         init("_fast", fast.call)
-        init("_binding", fast.bind(kind, arm, surface, opts, float(self.singular_tol)))
+        init("_binding", fast.bind(fn.entry["symbol"], *self._params, float(self.singular_tol)))
 
     def evaluate(self, q, qdot, a, Fc) -> tuple[np.ndarray, np.ndarray]:
         """``(F*, tau)`` for one state (shape ``(2,)``) or N states (shape ``(N, 2)``)."""
@@ -106,28 +102,15 @@ class DecouplingLaw:
 
     def _checked(self, q, qdot, a, Fc) -> tuple[np.ndarray, np.ndarray]:
         """The general path: any array-like input, N states, and the errors that name the cause."""
-        ins = [as_states(n, v) for n, v in (("q", q), ("qdot", qdot), ("a", a), ("Fc", Fc))]
+        size = self._fn.size("q")
+        ins = [as_states(n, v, size) for n, v in (("q", q), ("qdot", qdot), ("a", a), ("Fc", Fc))]
         shape = ins[0].shape
         if any(x.shape != shape for x in ins):
             raise HybridError("q, qdot, a and Fc must have the same shape, got "
                               + ", ".join(str(x.shape) for x in ins))
-        F, tau = np.empty(shape), np.empty(shape)
-        fb = self._ffi.from_buffer
-        ptrs = [fb("double[]", x) for x in ins]
-        if len(shape) == 1:
-            status = self._single(*ptrs, self._arm, self._surface, self._opts, self.singular_tol,
-                                  fb("double[]", F), fb("double[]", tau))
-            if status:
-                raise status_error(status, "decoupling_law", q=ins[0], qdot=ins[1], a=ins[2], Fc=ins[3])
-            return F, tau
-        status = np.empty(shape[0], dtype=np.intc)
-        failed = self._batch(shape[0], *ptrs, self._arm, self._surface, self._opts, self.singular_tol,
-                             fb("double[]", F), fb("double[]", tau), fb("int[]", status))
-        if failed:
-            i = int(np.flatnonzero(status)[0])
-            raise status_error(int(status[i]), f"decoupling_law, state {i} of {shape[0]} "
-                               f"({failed} failed)", q=ins[0][i], qdot=ins[1][i], a=ins[2][i], Fc=ins[3][i])
-        return F, tau
+        call = self._fn if len(shape) == 1 else self._fn.batch
+        out = call(*ins, *self._params, singular_tol=self.singular_tol)
+        return out["F"], out["tau"]
 
     def __call__(self, q, qdot, a, Fc) -> np.ndarray:
         """Cartesian ``F*`` [N] in the base frame."""
@@ -150,19 +133,6 @@ def decoupling_law(arm: Arm, surface: Circle | Plane, curvature: bool = False, *
     return DecouplingLaw(arm, surface, bool(curvature), backend, singular_tol)
 
 
-def _call(backend: str, name: str, inputs: dict, outputs: dict, singular_tol: float | None = None):
-    mod = native.load(backend)
-    fb = mod.ffi.from_buffer
-    ins = {k: np.ascontiguousarray(v, dtype=float) for k, v in inputs.items()}
-    outs = {k: np.empty(n) for k, n in outputs.items()}
-    extra = [] if singular_tol is None else [singular_tol]
-    status = getattr(mod.lib, f"hybrid_{backend}_{name}")(
-        *(fb("double[]", v) for v in ins.values()), *extra, *(fb("double[]", v) for v in outs.values()))
-    if status:
-        raise status_error(status, name, **ins)
-    return tuple(outs.values())
-
-
 def arm_terms(arm: Arm | Robot, q, qdot, *, backend: str = "sympy") -> dict[str, np.ndarray]:
     """Kinematic and dynamic terms of ``arm`` at one state, from the generated C.
 
@@ -176,29 +146,28 @@ def arm_terms(arm: Arm | Robot, q, qdot, *, backend: str = "sympy") -> dict[str,
     if isinstance(arm, Robot):
         return robot_terms(arm, q, qdot)
     check_arm(arm)
+    unit = planar_unit(backend)
     q, qdot, p = _one_state("q", q), _one_state("qdot", qdot), arm.as_array()
-    r, J, Jdqd = _call(backend, "arm_kinematics", {"q": q, "qd": qdot, "arm": p}, {"r": 2, "J": 4, "Jdqd": 2})
-    B, n = _call(backend, "arm_dynamics", {"q": q, "qd": qdot, "arm": p}, {"B": 4, "n": 2})
-    return {"r": r, "J": J.reshape(2, 2), "Jdot_qdot": Jdqd, "B": B.reshape(2, 2), "n": n}
+    kin = unit.function("arm_kinematics")(q, qdot, p)
+    dyn = unit.function("arm_dynamics")(q, qdot, p)
+    return {"r": kin["r"], "J": kin["J"], "Jdot_qdot": kin["Jdqd"], "B": dyn["B"], "n": dyn["n"]}
 
 
 def operational_space(arm: Arm, q, qdot, *, backend: str = "sympy",
                       singular_tol: float = SINGULAR_TOL) -> tuple[np.ndarray, np.ndarray]:
     """``B_o(r)`` [kg] (2x2) and ``n_o(r, r')`` [N] of Khatib's operational-space model."""
     check_arm(arm)
-    Bo, no = _call(backend, "operational_space",
-                   {"q": _one_state("q", q), "qd": _one_state("qdot", qdot), "arm": arm.as_array()},
-                   {"Bo": 4, "no": 2}, singular_tol)
-    return Bo.reshape(2, 2), no
+    out = planar_unit(backend).function("operational_space")(
+        _one_state("q", q), _one_state("qdot", qdot), arm.as_array(), singular_tol=singular_tol)
+    return out["Bo"], out["no"]
 
 
 def task_frame(surface: Circle | Plane, r, rdot, *, backend: str = "sympy") -> tuple[np.ndarray, np.ndarray]:
     """Task-frame rotation ``R(r)`` (rows: tangent, normal) and its derivative ``R'(r, r')``."""
     kind = check_surface(surface)
-    R, Rd = _call(backend, f"task_frame_{kind}",
-                  {"r": _one_state("r", r), "rd": _one_state("rdot", rdot), "surface": surface.as_array()},
-                  {"R": 4, "Rd": 4})
-    return R.reshape(2, 2), Rd.reshape(2, 2)
+    out = planar_unit(backend).function(f"task_frame_{kind}")(
+        _one_state("r", r), _one_state("rdot", rdot), surface.as_array())
+    return out["R"], out["Rd"]
 
 
 def _one_state(name: str, x) -> np.ndarray:

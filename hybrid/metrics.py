@@ -4,9 +4,22 @@ from __future__ import annotations
 
 import numpy as np
 
-#: columns of the plant output record; mirrors codegen.model.PLANT_OUTPUTS (a test checks it)
-PLANT_OUTPUTS = ("r_x", "r_y", "v_t", "v_n", "Fc_x", "Fc_y", "Fc_t", "Fc_n", "s_x", "s_y",
-                 "penetration", "N", "friction", "sensor_v_t")
+from .native import manifest
+
+
+def _plant_record() -> dict:
+    """Names and units of the planar plant's state and output record, from the unit's manifest."""
+    functions = {f["name"]: f for f in manifest("sympy")["functions"]}
+    x = functions["plant_rhs_circle"]["inputs"][0]
+    tau = functions["plant_rhs_circle"]["inputs"][1]
+    y = functions["plant_outputs_circle"]["outputs"][0]
+    return {"outputs": tuple(y["names"]), "output_units": tuple(y["unit"]), "state": tuple(x["names"]),
+            "state_units": tuple(x["unit"]), "nq": tau["size"]}
+
+
+PLANT = _plant_record()
+#: columns of the plant output record (``codegen.model.PLANT_OUTPUTS``, read from the manifest)
+PLANT_OUTPUTS = PLANT["outputs"]
 
 
 def settling_time(t: np.ndarray, y: np.ndarray, target: float, band: float) -> float:

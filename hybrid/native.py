@@ -265,23 +265,45 @@ def _writable_cache() -> Path:
     return root
 
 
+#: the law signature the one-state entry point serves (hybrid/fastcall.c)
+LAW_INPUTS, LAW_OUTPUTS = ("q", "qd", "a", "Fc", "arm", "surface", "opts"), ("F", "tau")
+
+
+def fastcall_defines(manifest: dict) -> str:
+    """The macros ``hybrid/fastcall.c`` expects, read off the unit's manifest."""
+    laws = [f for f in manifest["functions"]
+            if tuple(a["name"] for a in f["inputs"]) == LAW_INPUTS
+            and tuple(a["name"] for a in f["outputs"]) == LAW_OUTPUTS and f["conditioning"]]
+    if not laws:
+        raise NativeBuildError(f"the unit {manifest['unit']} has no decoupling law for the one-state entry point")
+    sizes = [{a["name"]: a["size"] for a in f["inputs"]} for f in laws]
+    nq = {s["q"] for s in sizes}
+    if len(nq) != 1 or any(s[k] != s["q"] for s in sizes for k in ("qd", "a", "Fc")):
+        raise NativeBuildError(f"the laws of {manifest['unit']} differ in state size; the entry point needs one")
+    table = ", ".join(f'{{"{f["symbol"]}", {f["symbol"]}, {s["arm"]}, {s["surface"]}, {s["opts"]}}}'
+                      for f, s in zip(laws, sizes))
+    return "".join(f"#define {k} {v}\n" for k, v in (
+        ("HYBRID_NQ", nq.pop()), ("HYBRID_ARM_SIZE", max(s["arm"] for s in sizes)),
+        ("HYBRID_SURFACE_SIZE", max(s["surface"] for s in sizes)),
+        ("HYBRID_OPTS_SIZE", max(s["opts"] for s in sizes)), ("HYBRID_LAWS", table)))
+
+
 @cache
 def load_fastcall(backend: str = "sympy"):
     """The one-state CPython entry point of the law (``hybrid/fastcall.c``) for ``backend``.
 
-    ``bind(kind, arm, surface, opts, singular_tol)`` makes a binding, ``call(binding, which,
+    ``bind(symbol, arm, surface, opts, singular_tol)`` makes a binding, ``call(binding, which,
     q, qdot, a, Fc)`` evaluates it, returning None off the fast path (see the C file).
     """
     import numpy
 
     src_dir, c_source, header = _unit(backend)
     shim = (Path(__file__).with_name("fastcall.c")).read_text()
+    defines = fastcall_defines(manifest(backend))
 
     def write_source(name: str, path: Path) -> None:
-        path.write_text(f'#include "hybrid_{backend}.c"\n'
-                        f"#define HYBRID_LAW(kind) hybrid_{backend}_decoupling_law_##kind\n"
-                        f"#define HYBRID_MODULE {name}\n{shim}")
+        path.write_text(f'#include "hybrid_{backend}.c"\n{defines}#define HYBRID_MODULE {name}\n{shim}')
 
     return _cached_module(f"_hybrid_fastcall_{backend}",
-                          {"c": c_source, "h": header, "shim": shim, "numpy": numpy.__version__},
-                          write_source, [str(src_dir), numpy.get_include()])
+                          {"c": c_source, "h": header, "shim": shim, "defines": defines,
+                           "numpy": numpy.__version__}, write_source, [str(src_dir), numpy.get_include()])

@@ -63,6 +63,10 @@ class Robot:
             _finite(f"Robot damping[{name}]", damping=d)
             if d < 0:
                 raise HybridError(f"damping of joint '{name}' is {d}; give a viscosity >= 0")
+        # frozen: the parameter array is built once and read-only, like the fields it comes from
+        params = np.concatenate([*(link.as_array() for link in self.links), self.damping, self.gravity])
+        params.setflags(write=False)
+        object.__setattr__(self, "_params", params)
 
     # ------------------------------------------------------------- construction
 
@@ -112,8 +116,9 @@ class Robot:
         return rb.parameter_names(self.chain)
 
     def as_array(self) -> np.ndarray:
-        """The ``robot`` array: per link ``m, c (3), I (6)``, then the viscosities, then gravity."""
-        return np.concatenate([*(link.as_array() for link in self.links), self.damping, self.gravity])
+        """The ``robot`` array: per link ``m, c (3), I (6)``, then the viscosities, then gravity
+        (read-only)."""
+        return self._params
 
     # ------------------------------------------------------------ model changes
 
@@ -151,7 +156,11 @@ class Robot:
     @property
     def unit(self) -> Unit:
         """The compiled kernels of this robot's structure (generated and compiled on first use)."""
-        return compiled_unit(self.chain, self.name)
+        unit = self.__dict__.get("_unit")
+        if unit is None:
+            unit = compiled_unit(self.chain, self.name)
+            object.__setattr__(self, "_unit", unit)  # a cache, not state: the structure is frozen
+        return unit
 
 
 def _vector(name: str, v, shape) -> np.ndarray:
@@ -196,7 +205,7 @@ def compiled_unit(chain: rb.Chain, name: str) -> Unit:
            "prefix": prefix}
     folder = native.generated_unit(prefix, key, lambda: build_robot_unit(chain, prefix, info).files)
     module, manifest = native.load_generated(folder, prefix)
-    return Unit(module, manifest)
+    return Unit(module, manifest, folder=folder)
 
 
 def robot_info(chain: rb.Chain, name: str) -> dict:

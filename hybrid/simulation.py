@@ -14,13 +14,13 @@ from pathlib import Path
 
 import numpy as np
 
-from . import native, reference
+from . import reference
 from .controllers import HybridController
 from .errors import HybridError, NonFiniteError
 from .experiment import Experiment
-from .law import decoupling_law, status_error
+from .law import decoupling_law, planar_unit, status_error
 from .loops import model_error_note
-from .metrics import PLANT_OUTPUTS, compute_metrics
+from .metrics import PLANT, PLANT_OUTPUTS, compute_metrics
 
 OUT = {name: i for i, name in enumerate(PLANT_OUTPUTS)}
 
@@ -47,32 +47,28 @@ class NativeTerms:
         arm, surf = exp.controller_arm(), exp.surface
         curvature = exp.curvature and exp.frame == "actual"
         self._law = decoupling_law(arm, surf, curvature, backend=exp.backend, singular_tol=exp.singular_tol)
-        mod = native.load(exp.backend)
-        self._ffi = mod.ffi
-        self._measure = getattr(mod.lib, f"hybrid_{exp.backend}_task_measurement_{surf.kind}")
-        self._frame = getattr(mod.lib, f"hybrid_{exp.backend}_task_frame_{surf.kind}")
-        self._arm = mod.ffi.new("double[]", arm.as_array().tolist())
-        self._surface = mod.ffi.new("double[]", surf.as_array().tolist())
-        self._out = np.empty(8)
-        self._R = np.empty(8)
+        unit = planar_unit(exp.backend)
+        self._measure = unit.function(f"task_measurement_{surf.kind}")
+        self._frame = unit.function(f"task_frame_{surf.kind}")
+        self._arm, self._surface = arm.as_array(), surf.as_array()
+        self._m_out = [np.empty(n) for _, n, _ in self._measure.outputs]
+        self._f_out = [np.empty(n) for _, n, _ in self._frame.outputs]
+        self._f_shapes = [shape for _, _, shape in self._frame.outputs]
 
     def measure(self, q, qdot, Fc):
-        fb, o = self._ffi.from_buffer, self._out
-        p = fb("double[]", o)
-        status = self._measure(fb("double[]", q), fb("double[]", qdot), fb("double[]", Fc), self._arm,
-                               self._surface, p, p + 2, p + 4, p + 6)
+        """``(r, r', R r', R F_c)``: what the controller measures."""
+        status = self._measure.into(q, qdot, Fc, self._arm, self._surface, *self._m_out)
         if status:
             raise status_error(status, "task measurement", q=q, qdot=qdot, Fc=Fc)
-        return o[0:2].copy(), o[2:4].copy(), o[4:6].copy(), o[6:8].copy()
+        return tuple(o.copy() for o in self._m_out)
 
     def frame(self, r, rdot):
-        fb, o = self._ffi.from_buffer, self._R
-        p = fb("double[]", o)
-        status = self._frame(fb("double[]", np.ascontiguousarray(r, float)),
-                             fb("double[]", np.ascontiguousarray(rdot, float)), self._surface, p, p + 4)
+        """``(R, R')`` at ``r, r'``."""
+        r, rdot = np.ascontiguousarray(r, float), np.ascontiguousarray(rdot, float)
+        status = self._frame.into(r, rdot, self._surface, *self._f_out)
         if status:
             raise status_error(status, "task frame", r=r, rdot=rdot)
-        return o[0:4].reshape(2, 2).copy(), o[4:8].reshape(2, 2).copy()
+        return tuple(o.reshape(shape).copy() for o, shape in zip(self._f_out, self._f_shapes))
 
     def law(self, q, qdot, a, Fc):
         return self._law.torque(q, qdot, a, Fc)
@@ -111,34 +107,30 @@ class NumpyTerms:
 
 
 class NativePlant:
-    """Arm + sensor + surface, integrated by the compiled RK4 (``plant_advance``)."""
+    """Arm + sensor + surface, integrated by the compiled RK4 (the ``integrator`` of ``plant_rhs``)."""
 
     def __init__(self, exp: Experiment):
-        mod = native.load(exp.backend)
-        kind, b = exp.surface.kind, exp.backend
-        self._ffi = mod.ffi
-        self._advance = getattr(mod.lib, f"hybrid_{b}_plant_advance_{kind}")
-        self._outputs = getattr(mod.lib, f"hybrid_{b}_plant_outputs_{kind}_batch")
-        self._arm = mod.ffi.new("double[]", exp.arm.as_array().tolist())
-        self._plant = mod.ffi.new("double[]", exp.plant_array().tolist())
-        self._surface = mod.ffi.new("double[]", exp.surface.as_array().tolist())
-        self._done = mod.ffi.new("int *")
+        unit = planar_unit(exp.backend)
+        kind = exp.surface.kind
+        self._rhs = unit.function(f"plant_rhs_{kind}")
+        self._outputs = unit.function(f"plant_outputs_{kind}")
+        self._arm, self._plant, self._surface = exp.arm.as_array(), exp.plant_array(), exp.surface.as_array()
+        self._done = unit.module.ffi.new("int *")
         self.h = exp.step
 
     def advance(self, x: np.ndarray, tau: np.ndarray, nsteps: int, trajectory: np.ndarray) -> int:
         """Advance ``x`` in place, writing each step's state to ``trajectory``; steps done."""
-        fb = self._ffi.from_buffer
-        self._advance(fb("double[]", x), fb("double[]", tau), self._arm, self._plant, self._surface,
-                      self.h, nsteps, fb("double[]", trajectory), self._done)
+        self._rhs.integrate(x, tau, self._arm, self._plant, self._surface, h=self.h, nsteps=nsteps,
+                            trajectory=trajectory, done=self._done)
         return self._done[0]
 
     def outputs(self, states: np.ndarray) -> np.ndarray:
+        """The output record (``PLANT_OUTPUTS``) of each state, in one native call."""
         states = np.ascontiguousarray(states)
         out = np.empty((len(states), len(PLANT_OUTPUTS)))
-        status = np.empty(len(states), dtype=np.intc)
-        fb = self._ffi.from_buffer
-        self._outputs(len(states), fb("double[]", states), self._arm, self._plant, self._surface,
-                      fb("double[]", out), fb("int[]", status))
+        # a partial run's last states may be non-finite: their records are kept as they come
+        self._outputs.batch_into(states, self._arm, self._plant, self._surface, out,
+                                 status=np.empty(len(states), dtype=np.intc))
         return out
 
 
@@ -230,17 +222,16 @@ class SimulationResult:
     speed_reference: np.ndarray
     metrics: dict = field(default_factory=dict)
 
-    UNITS = {"t": "s", "state": "rad, rad, rad/s, rad/s, m, m, m/s, m/s", "tau": "N m",
-             "force_reference": "N", "speed_reference": "m/s",
-             "outputs": "m, m, m/s, m/s, N, N, N, N, m, m, m, N, N, m/s"}
+    UNITS = {"t": "s", "state": ", ".join(PLANT["state_units"]), "tau": "N m",
+             "force_reference": "N", "speed_reference": "m/s", "outputs": ", ".join(PLANT["output_units"])}
 
     @property
     def q(self):
-        return self.state[:, 0:2]
+        return self.state[:, 0:PLANT["nq"]]
 
     @property
     def qdot(self):
-        return self.state[:, 2:4]
+        return self.state[:, PLANT["nq"]:2 * PLANT["nq"]]
 
     def output(self, name: str) -> np.ndarray:
         """A column of the plant output record by name (``codegen.model.PLANT_OUTPUTS``)."""
@@ -323,12 +314,13 @@ def simulate(exp: Experiment) -> SimulationResult:
 
     m, n_samples = exp.steps_per_sample, exp.n_samples
     total = m * n_samples
-    states = np.empty((total + 1, 8))
-    taus = np.full((total + 1, 2), np.nan)  # NaN marks "no torque computed" in a partial run
+    nq = PLANT["nq"]
+    states = np.empty((total + 1, len(PLANT["state"])))
+    taus = np.full((total + 1, nq), np.nan)  # NaN marks "no torque computed" in a partial run
     states[0] = x
     for k in range(n_samples):
         t = k * exp.sample_time
-        q, qdot = x[0:2].copy(), x[2:4].copy()
+        q, qdot = x[0:nq].copy(), x[nq:2 * nq].copy()
         # the sensor's reading: its spring and damper between arm tip and sensor tip
         out = plant.outputs(x[None, :])[0]
         Fc = np.array([out[OUT["Fc_x"]], out[OUT["Fc_y"]]])
@@ -361,8 +353,8 @@ def _divergence(partial: SimulationResult, t: float, q, qdot, tau, x) -> Simulat
         f"the plant state became NaN or infinite at t = {t_fail:.5f} s, in the control sample from "
         f"t = {t:.4f} s (there q = {np.round(q, 5).tolist()} rad, qdot = {np.round(qdot, 4).tolist()} "
         f"rad/s, 2|det J|/|J|_F^2 = {cond:.3g}, tau = {np.round(tau, 3).tolist()} N m; last finite "
-        f"state q = {np.array2string(x[0:2], precision=4)} rad, qdot = "
-        f"{np.array2string(x[2:4], precision=4)} rad/s){model_error_note(exp)}"
+        f"state q = {np.array2string(x[:len(q)], precision=4)} rad, qdot = "
+        f"{np.array2string(x[len(q):2 * len(q)], precision=4)} rad/s){model_error_note(exp)}"
         f"{_closest_singularity(partial)}; otherwise reduce step or check gains and parameters",
         t_fail, partial)
 

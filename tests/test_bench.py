@@ -7,10 +7,12 @@ def test_bench_quick_reports_every_benchmark():
     report = bench.run_benchmarks(quick=True)
     names = " ".join(r["name"] for r in report["results"])
     for part in ("sympy backend", "casadi backend", "one state", "batched", "plain NumPy", "lambdify",
-                 "CasADi Function", "compiled", "regenerate"):
+                 "CasADi Function", "compiled", "regenerate", "ur5: r, rotation, J", "panda: generate + compile",
+                 "panda: the same by Pinocchio", "panda: generated C size"):
         assert part in names
     assert all(r["median"] > 0 for r in report["results"])
     # the issue's targets are reported (met or not), never asserted
     assert {r["name"] for r in report["results"] if "target" in r} >= {
-        "F* in C, sympy backend, per call", "F* from Python, one state (law(q, qdot, a, Fc))"}
+        "F* in C, sympy backend, per call", "F* from Python, one state (law(q, qdot, a, Fc))",
+        "panda: r, rotation, J, J'q', B, n in C, per call (robot_terms)"}
     assert "target (issue #4)" in bench.format_table(report)
