@@ -7,7 +7,9 @@ Every public function of a unit ``hybrid_<backend>``:
 - takes the arm, surface and plant parameters as run-time arrays (one build serves
   every parameter value);
 - returns an ``int`` status: ``HYBRID_OK``, ``HYBRID_SINGULAR`` (Jacobian conditioning
-  below the caller's tolerance) or ``HYBRID_NONFINITE`` (an output is NaN or infinite).
+  below the caller's tolerance), ``HYBRID_NONFINITE`` (an output is NaN or infinite),
+  ``HYBRID_FRAME_UNDEFINED`` (the task frame's reference direction is parallel to the
+  surface normal) or ``HYBRID_EULER_SINGULAR`` (``cos beta = 0`` in ZYX Euler angles).
 
 The text is a pure function of the symbolic model and the backend's version: no dates,
 no paths, stable ordering, so regenerating gives the same bytes.
@@ -26,9 +28,10 @@ from .model import Kernel
 
 BACKENDS = ("sympy", "casadi")
 #: bumped whenever the emitted interface changes; recorded in every manifest and cache key
-GENERATOR_VERSION = "2"
+GENERATOR_VERSION = "3"
 STAMP = "/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: "
-STATUS = {"HYBRID_OK": 0, "HYBRID_SINGULAR": 1, "HYBRID_NONFINITE": 2}
+STATUS = {"HYBRID_OK": 0, "HYBRID_SINGULAR": 1, "HYBRID_NONFINITE": 2, "HYBRID_FRAME_UNDEFINED": 3,
+          "HYBRID_EULER_SINGULAR": 4}
 MANIFEST_STAMP = "hybrid generated file: do not edit; change codegen/ and regenerate"
 
 
@@ -77,7 +80,7 @@ def is_hand_edited(text: str) -> bool:
 def _params(k: Kernel) -> list[str]:
     """Public C parameters of a kernel's entry point."""
     ps = [f"const double *{a.name}" for a in k.inputs]
-    if k.conditioning is not None:
+    if k.takes_singular_tol:
         ps.append("double singular_tol")
     ps += [f"double *{a.name}" for a in k.outputs]
     return ps
@@ -95,12 +98,15 @@ def _integrator_params(k: Kernel) -> list[str]:
             "double *trajectory", "int *steps_done"]
 
 
-def prototypes(prefix: str, kernels: tuple[Kernel, ...], cond_doc: str) -> list[tuple[str, str]]:
+def _guards_doc(k: Kernel) -> str:
+    return "".join(f". Returns {g.status} when {g.doc} < {g.tolerance}" for g in k.guards)
+
+
+def prototypes(prefix: str, kernels: tuple[Kernel, ...]) -> list[tuple[str, str]]:
     """``(doc, prototype)`` of every public function, in order."""
     out = []
     for k in kernels:
-        out.append((_sizes_doc(k) + (f". Returns HYBRID_SINGULAR when {cond_doc} < singular_tol"
-                                     if k.conditioning is not None else ""),
+        out.append((_sizes_doc(k) + _guards_doc(k),
                     f"int {prefix}_{k.name}({', '.join(_params(k))});"))
         if k.batched:
             ps = ["int nstates", *_params(k), "int *status"]
@@ -127,11 +133,11 @@ def _layout_doc(kernels: tuple[Kernel, ...]) -> str:
     return "\n".join(rows)
 
 
-def header(prefix: str, kernels: tuple[Kernel, ...], cond_doc: str, defines: dict | None = None) -> str:
+def header(prefix: str, kernels: tuple[Kernel, ...], defines: dict | None = None) -> str:
     guard = prefix.upper() + "_H"
     consts = "".join(f"#define {prefix.upper()}_{k} {v}\n" for k, v in (defines or {}).items())
     status = "\n".join(f"#define {k} {v}" for k, v in STATUS.items())
-    protos = "\n\n".join(f"/* {doc}. */\n{p}" for doc, p in prototypes(prefix, kernels, cond_doc))
+    protos = "\n\n".join(f"/* {doc}. */\n{p}" for doc, p in prototypes(prefix, kernels))
     return f"""#ifndef {guard}
 #define {guard}
 
@@ -149,13 +155,13 @@ def header(prefix: str, kernels: tuple[Kernel, ...], cond_doc: str, defines: dic
 """
 
 
-def manifest(prefix: str, kernels: tuple[Kernel, ...], tools: str, cond_doc: str, info: dict) -> str:
+def manifest(prefix: str, kernels: tuple[Kernel, ...], tools: str, info: dict) -> str:
     """The unit's interface as JSON: every function's symbol, arguments, sizes, units, properties."""
     functions = []
     for k in kernels:
         f = {"name": k.name, "symbol": f"{prefix}_{k.name}", "doc": k.doc,
              "inputs": [a.describe() for a in k.inputs], "outputs": [a.describe() for a in k.outputs],
-             "conditioning": cond_doc if k.conditioning is not None else None,
+             "guards": [g.describe() for g in k.guards], "singular_tol": k.takes_singular_tol,
              "batched": {"symbol": f"{prefix}_{k.name}_batch", "per_state": list(k.batched)} if k.batched else None,
              "integrator": ({"symbol": f"{prefix}_{k.integrator}", "state": k.inputs[0].name}
                             if k.integrator else None)}
@@ -182,14 +188,13 @@ static int all_finite(const double *v, int n) {{
 }}
 """]
     for k in kernels:
-        cond = k.conditioning is not None
         core_args = [a.name for a in (*k.inputs, *k.core_outputs())]
         lines = [f"int {prefix}_{k.name}({', '.join(_params(k))}) {{"]
-        if cond:
-            lines.append("    double cond[1];")
+        lines += [f"    double {g.name}[1];" for g in k.guards]
         lines.append(f"    {k.name}_core({', '.join(core_args)});")
-        if cond:
-            lines.append("    if (!(fabs(cond[0]) >= singular_tol)) return HYBRID_SINGULAR;")
+        for g in k.guards:  # NaN fails the test too: it is not >= anything
+            tol = g.tolerance if isinstance(g.tolerance, str) else repr(float(g.tolerance))
+            lines.append(f"    if (!(fabs({g.name}[0]) >= {tol})) return {g.status};")
         finite = " && ".join(f"all_finite({a.name}, {a.size})" for a in k.outputs)
         lines.append(f"    return ({finite}) ? HYBRID_OK : HYBRID_NONFINITE;\n}}\n")
         out.append("\n".join(lines))
@@ -278,8 +283,7 @@ def tools(backend: str) -> str:
 
 
 def assemble(prefix: str, backend: str, kernels: tuple[Kernel, ...], what: str, *,
-             cond_doc: str = "", info: dict | None = None, tool: str | None = None,
-             defines: dict | None = None) -> Unit:
+             info: dict | None = None, tool: str | None = None, defines: dict | None = None) -> Unit:
     """One unit from ``kernels``: C source, header and manifest, each a pure function of its inputs."""
     if backend not in BACKENDS:
         raise ValueError(f"unknown backend {backend!r}; choose one of {BACKENDS}")
@@ -292,12 +296,8 @@ def assemble(prefix: str, backend: str, kernels: tuple[Kernel, ...], what: str, 
 
 {cores}
 {_wrappers(prefix, kernels)}"""
-    return Unit(prefix, stamp(source), stamp(header(prefix, kernels, cond_doc, defines)),
-                manifest(prefix, kernels, tool, cond_doc, info or {}))
-
-
-#: the conditioning measure of the planar units
-PLANAR_CONDITIONING = "2|det J|/|J|_F^2"
+    return Unit(prefix, stamp(source), stamp(header(prefix, kernels, defines)),
+                manifest(prefix, kernels, tool, info or {}))
 
 
 def build_unit(backend: str, n_links: int = 2) -> Unit:
@@ -306,7 +306,7 @@ def build_unit(backend: str, n_links: int = 2) -> Unit:
         raise ValueError(f"unknown backend {backend!r}; choose one of {BACKENDS}")
     return assemble(f"hybrid_{backend}", backend, model.kernels(n_links),
                     f"hybrid force/velocity control kernels for a planar {n_links}-link arm, "
-                    "derived by codegen/model.py", cond_doc=PLANAR_CONDITIONING)
+                    "derived by codegen/model.py")
 
 
 def generated_dir() -> Path:

@@ -4,8 +4,10 @@ Inputs and outputs are named column vectors of SymPy or CasADi SX expressions. W
 special about a kernel is stated as a property, never read off its name:
 
 - ``batched``: its per-state inputs; a ``_batch`` entry point evaluates N states in one call;
-- ``conditioning``: it computes a conditioning measure of ``J``, and returns
-  ``HYBRID_SINGULAR`` when that measure is below the caller's ``singular_tol``;
+- ``guards``: measures it computes beside its outputs (the conditioning of ``J``, the
+  task frame's definition, the Euler angles' distance from their singularity), each with the
+  status it returns when the measure falls below its tolerance (the caller's
+  ``singular_tol``, or a constant);
 - ``integrator``: it is a state derivative ``x' = f(x, ...)``; an RK4 entry point
   ``<integrator>`` advances ``x`` by fixed steps with the other inputs held.
 
@@ -45,12 +47,32 @@ class Arg:
 
 
 @dataclass(frozen=True)
+class Guard:
+    """A measure computed beside a kernel's outputs; below ``tolerance`` the entry point returns
+    ``status`` instead of ``HYBRID_OK``. ``tolerance`` is ``"singular_tol"`` (a run-time argument
+    of the entry point) or a number compiled in."""
+
+    name: str
+    expr: object  # a one-element column
+    status: str
+    tolerance: str | float
+    doc: str
+
+    def describe(self) -> dict:
+        return {"name": self.name, "status": self.status, "tolerance": self.tolerance, "doc": self.doc}
+
+
+def conditioning_guard(expr, doc: str) -> Guard:
+    """The conditioning of ``J`` compared with the caller's ``singular_tol``."""
+    return Guard("cond", expr, "HYBRID_SINGULAR", "singular_tol", doc)
+
+
+@dataclass(frozen=True)
 class Kernel:
     """One C function: ordered named inputs and outputs, a one-line doc, explicit properties.
 
-    ``conditioning``, when set, is a one-element column holding the conditioning measure (not
-    an output: the entry point compares it with ``singular_tol``). ``integrator`` names the RK4 entry
-    point of a state derivative whose first input is the state ``x``.
+    ``guards`` are checked in order after the outputs are computed (they are not outputs).
+    ``integrator`` names the RK4 entry point of a state derivative whose first input is the state ``x``.
     """
 
     name: str
@@ -58,12 +80,16 @@ class Kernel:
     outputs: tuple[Arg, ...]
     doc: str
     batched: tuple[str, ...] = ()
-    conditioning: object = None
+    guards: tuple[Guard, ...] = ()
     integrator: str | None = None
 
     def sizes(self) -> dict[str, int]:
         return {a.name: a.size for a in (*self.inputs, *self.outputs)}
 
+    @property
+    def takes_singular_tol(self) -> bool:
+        return any(g.tolerance == "singular_tol" for g in self.guards)
+
     def core_outputs(self) -> tuple[Arg, ...]:
-        """What the backend computes: the outputs, then ``cond`` (a 1-column) when checked."""
-        return self.outputs + ((Arg("cond", self.conditioning),) if self.conditioning is not None else ())
+        """What the backend computes: the outputs, then each guard's measure (a 1-column)."""
+        return self.outputs + tuple(Arg(g.name, g.expr) for g in self.guards)

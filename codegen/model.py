@@ -15,7 +15,7 @@ from functools import cache
 
 import sympy as sp
 
-from .kernel import Arg, Kernel
+from .kernel import Arg, Kernel, conditioning_guard
 
 #: names of the per-link arm parameters, in the order they appear in the ``arm`` array, and their units
 LINK_PARAMETERS = ("L", "m", "d", "I", "V")
@@ -146,6 +146,10 @@ def inverse_2x2(M: sp.Matrix) -> tuple[sp.Matrix, sp.Expr]:
     inv_det = 1 / det
     adj = sp.Matrix([[M[1, 1], -M[0, 1]], [-M[1, 0], M[0, 0]]])
     return adj * inv_det, det
+
+
+#: the conditioning measure of the planar kernels
+PLANAR_CONDITIONING = "2|det J|/|J|_F^2"
 
 
 def conditioning(J: sp.Matrix, det: sp.Expr) -> sp.Expr:
@@ -304,7 +308,8 @@ def kernels(n_links: int = 2) -> tuple[Kernel, ...]:
         Kernel("arm_dynamics", qa, (Arg("B", flat(arm.B), "kg m^2", (n, n)), Arg("n", arm.nvec, "N m")),
                "joint-space inertia B(q) [kg m^2] (row-major) and n(q, q') [N m]"),
         Kernel("operational_space", qa, (Arg("Bo", flat(Bo), "kg", (2, 2)), Arg("no", no, "N")),
-               "B_o = J^-T B J^-1 [kg], n_o = J^-T n - B_o J' q' [N]", conditioning=sp.Matrix([cond])),
+               "B_o = J^-T B J^-1 [kg], n_o = J^-T n - B_o J' q' [N]",
+               guards=(conditioning_guard(sp.Matrix([cond]), PLANAR_CONDITIONING),)),
     ]
     for kind in ("plane", "circle"):
         r, rd = vector("r", 2), vector("rd", 2)
@@ -319,7 +324,8 @@ def kernels(n_links: int = 2) -> tuple[Kernel, ...]:
                           tuple(Arg(k, m, units[k], names=names.get(k)) for k, m in law_in),
                           (Arg("F", F, "N"), Arg("tau", tau, "N m")),
                           f"decoupling law F*(r, r', a) [N] and tau = J^T F* [N m] on a {kind}",
-                          batched=("q", "qd", "a", "Fc"), conditioning=sp.Matrix([cond])))
+                          batched=("q", "qd", "a", "Fc"),
+                          guards=(conditioning_guard(sp.Matrix([cond]), PLANAR_CONDITIONING),)))
         Fc = vector("Fc", 2)
         rr = arm.J * arm.qd
         Rm, _ = task_frame(kind, arm.r, rr, surface_symbols(kind))

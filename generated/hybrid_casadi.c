@@ -1,6 +1,6 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 9dd8c49bfe7d721cdf565ac47be03d6265217e4cccafa8183b4b8b8fb4639348 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: bf90a2d6864c91b62f1452a25d5ef7d75236aa8a87c18e5463918d2fb20e4a7a */
 /* hybrid_casadi: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
-   Emitted by the casadi backend of hybrid's codegen (SymPy 1.14.0, CasADi 3.8.2), generator version 2.
+   Emitted by the casadi backend of hybrid's codegen (SymPy 1.14.0, CasADi 3.8.2), generator version 3.
    Compile: cc -std=c99 -O2 -c hybrid_casadi.c (link with -lm). */
 #include <math.h>
 

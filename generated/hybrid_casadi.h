@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: f620bf636b6b5988fa75d658c1abcdb110a19d9b4578bc4696d9dad934dec447 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 29f15b523a776cbcb0cbb301afdaef6e96440f00234bb125972c9fea6314e1fe */
 #ifndef HYBRID_CASADI_H
 #define HYBRID_CASADI_H
 
@@ -16,6 +16,8 @@
 #define HYBRID_OK 0
 #define HYBRID_SINGULAR 1
 #define HYBRID_NONFINITE 2
+#define HYBRID_FRAME_UNDEFINED 3
+#define HYBRID_EULER_SINGULAR 4
 
 /* tip position r = kin(q) [m], Jacobian J(q) (row-major), J'(q, q') q' [m/s^2].
    in: q[2], qd[2], arm[11]; out: r[2], J[4], Jdqd[2]. */

@@ -1,6 +1,6 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 98affae947fa204eb2b0872bf17656806f80925831384c8bd276ac5f1db9aa91 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 58a750e3a11e9ccf4c1aeccf87b4543254493014b1efee75a2ff70ca08bbb446 */
 /* hybrid_sympy: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
-   Emitted by the sympy backend of hybrid's codegen (SymPy 1.14.0), generator version 2.
+   Emitted by the sympy backend of hybrid's codegen (SymPy 1.14.0), generator version 3.
    Compile: cc -std=c99 -O2 -c hybrid_sympy.c (link with -lm). */
 #include <math.h>
 

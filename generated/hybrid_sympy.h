@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: e6f64b1096c85c2c00a8e3cecf67e2be136468fbe82598b998d15138537ae2dc */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: af451228b6d47dd728a39902dbec08a7c42cf5e32cb0e13fa2c5b48524eaddab */
 #ifndef HYBRID_SYMPY_H
 #define HYBRID_SYMPY_H
 
@@ -16,6 +16,8 @@
 #define HYBRID_OK 0
 #define HYBRID_SINGULAR 1
 #define HYBRID_NONFINITE 2
+#define HYBRID_FRAME_UNDEFINED 3
+#define HYBRID_EULER_SINGULAR 4
 
 /* tip position r = kin(q) [m], Jacobian J(q) (row-major), J'(q, q') q' [m/s^2].
    in: q[2], qd[2], arm[11]; out: r[2], J[4], Jdqd[2]. */

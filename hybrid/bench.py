@@ -69,7 +69,7 @@ def harness_source(prefix: str, entry: dict, values: dict, singular_tol: float =
             raise ValueError(f"{a['name']} needs {a['size']} values, got {v.size}")
         decl.append(f"    double {a['name']}[{a['size']}] = {{{', '.join(repr(float(x)) for x in v)}}};")
     decl += [f"    double {a['name']}[{a['size']}];" for a in entry["outputs"]]
-    args = [a["name"] for a in entry["inputs"]] + ([repr(singular_tol)] if entry["conditioning"] else [])
+    args = [a["name"] for a in entry["inputs"]] + ([repr(singular_tol)] if entry["singular_tol"] else [])
     args += [a["name"] for a in entry["outputs"]]
     first = entry["inputs"][0]["name"]
     return HARNESS % {"prefix": prefix, "arrays": "\n".join(decl), "symbol": entry["symbol"], "args": ", ".join(args),

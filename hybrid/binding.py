@@ -2,7 +2,7 @@
 
 The generator writes beside every unit a manifest (``<prefix>.json``) naming each
 function's symbol, its inputs and outputs with sizes, shapes and units, and its properties
-(``conditioning``, ``batched``, ``integrator``). :class:`Function` calls a function from that
+(``guards``, ``batched``, ``integrator``). :class:`Function` calls a function from that
 description alone: it checks and converts the inputs, allocates the outputs, and turns a
 status code into a :class:`~hybrid.errors.HybridError` naming the inputs.
 """
@@ -56,7 +56,7 @@ class Function:
         self.name = entry["name"]
         self.inputs = [(a["name"], a["size"]) for a in entry["inputs"]]
         self.outputs = [(a["name"], a["size"], tuple(a["shape"])) for a in entry["outputs"]]
-        self.conditioning = entry["conditioning"] is not None
+        self.takes_singular_tol = entry["singular_tol"]
         self._ffi = module.ffi
         self._fn = getattr(module.lib, entry["symbol"])
         batched, integrator = entry["batched"], entry["integrator"]
@@ -103,7 +103,7 @@ class Function:
         return self._integrator(*ptrs, h, nsteps, traj, done)
 
     def _extra(self, singular_tol):
-        if not self.conditioning:
+        if not self.takes_singular_tol:
             return []
         if singular_tol is None:
             raise HybridError(f"{self.name} needs a singular_tol")

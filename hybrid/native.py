@@ -273,7 +273,7 @@ def fastcall_defines(manifest: dict) -> str:
     """The macros ``hybrid/fastcall.c`` expects, read off the unit's manifest."""
     laws = [f for f in manifest["functions"]
             if tuple(a["name"] for a in f["inputs"]) == LAW_INPUTS
-            and tuple(a["name"] for a in f["outputs"]) == LAW_OUTPUTS and f["conditioning"]]
+            and tuple(a["name"] for a in f["outputs"]) == LAW_OUTPUTS and f["singular_tol"]]
     if not laws:
         raise NativeBuildError(f"the unit {manifest['unit']} has no decoupling law for the one-state entry point")
     sizes = [{a["name"]: a["size"] for a in f["inputs"]} for f in laws]
