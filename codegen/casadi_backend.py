@@ -14,7 +14,9 @@ import sympy as sp
 
 from .model import Kernel
 
-_UNARY = {sp.sin: ca.sin, sp.cos: ca.cos, sp.tanh: ca.tanh, sp.Abs: ca.fabs}
+_UNARY = {sp.sin: ca.sin, sp.cos: ca.cos, sp.tan: ca.tan, sp.tanh: ca.tanh, sp.Abs: ca.fabs, sp.exp: ca.exp,
+          sp.log: ca.log, sp.asin: ca.asin, sp.acos: ca.acos, sp.atan: ca.atan, sp.sinh: ca.sinh,
+          sp.cosh: ca.cosh}
 
 
 def to_sx(expr: sp.Expr, symbols: dict, memo: dict):
@@ -43,11 +45,12 @@ def to_sx(expr: sp.Expr, symbols: dict, memo: dict):
             out = base ** float(exp) if not exp.is_Integer else base ** int(exp)
     elif type(expr) in _UNARY:
         out = _UNARY[type(expr)](to_sx(expr.args[0], symbols, memo))
-    elif isinstance(expr, sp.Max):
+    elif isinstance(expr, (sp.Max, sp.Min)):
         args = [to_sx(a, symbols, memo) for a in expr.args]
+        pick = ca.fmax if isinstance(expr, sp.Max) else ca.fmin
         out = args[0]
         for a in args[1:]:
-            out = ca.fmax(out, a)
+            out = pick(out, a)
     elif isinstance(expr, sp.Piecewise):
         out = to_sx(expr.args[-1][0], symbols, memo)
         for value, cond in reversed(expr.args[:-1]):
@@ -78,6 +81,8 @@ def kernel_function(kernel: Kernel) -> ca.Function:
             symbols.update({s: v[i] for i, s in enumerate(a.expr)})
         memo: dict = {}
         outs = [ca.vertcat(*[to_sx(e, symbols, memo) for e in a.expr]) for a in outputs]
+    # our C fills every element of an output: structural zeros must become stored zeros
+    outs = [ca.densify(o) for o in outs]
     outs = [ca.cse(o) for o in outs] if hasattr(ca, "cse") else outs
     return ca.Function(kernel.name, args, outs, [a.name for a in kernel.inputs], [a.name for a in outputs])
 

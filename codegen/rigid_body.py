@@ -13,7 +13,6 @@ a force vector ``(n_O, f)``. Joint ``i``'s motion subspace is then ``S_i = (z_i,
 - :func:`crba`: the joint-space inertia ``B(q)`` by the composite-rigid-body algorithm;
 - :func:`rnea`: inverse dynamics ``tau = B q'' + n(q, q')`` by recursive Newton-Euler,
   gravity and joint viscosity included;
-- :func:`cholesky_solve`: ``B x = b`` by an unrolled Cholesky factorisation (no inverse).
 
 The kinematic structure (joint origins, axes, types) is numbers compiled into the
 expressions; the inertial parameters, joint viscosities and gravity are symbols, so one
@@ -276,27 +275,6 @@ def rnea(chain: Chain, frames: Frames, params, qd, qdd=None) -> ca.SX:
         total = f if total is None else _add(total, f)
         tau[i] = _dot(frames.S[i], total) + damping[i] * qd[i]
     return ca.vertcat(*tau)
-
-
-def cholesky_solve(B: ca.SX, b: ca.SX) -> ca.SX:
-    """``x = B^-1 b`` for a symmetric positive definite ``B``, by an unrolled Cholesky
-    factorisation ``B = L L^T`` and two triangular solves (a non-positive pivot gives NaN,
-    which the entry point reports as ``HYBRID_NONFINITE``)."""
-    n = B.shape[0]
-    L = [[None] * n for _ in range(n)]
-    for j in range(n):
-        s = B[j, j] - sum((L[j][k] ** 2 for k in range(j)), ca.SX(0))
-        L[j][j] = ca.sqrt(s)
-        inv = 1 / L[j][j]
-        for i in range(j + 1, n):
-            L[i][j] = (B[i, j] - sum((L[i][k] * L[j][k] for k in range(j)), ca.SX(0))) * inv
-    y = [None] * n
-    for i in range(n):
-        y[i] = (b[i] - sum((L[i][k] * y[k] for k in range(i)), ca.SX(0))) / L[i][i]
-    x = [None] * n
-    for i in reversed(range(n)):
-        x[i] = (y[i] - sum((L[k][i] * x[k] for k in range(i + 1, n)), ca.SX(0))) / L[i][i]
-    return ca.vertcat(*x)
 
 
 def rotation_rpy(roll: float, pitch: float, yaw: float) -> tuple[tuple[float, float, float], ...]:

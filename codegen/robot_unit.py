@@ -13,6 +13,7 @@ import casadi as ca
 
 from . import rigid_body as rb
 from .emit import Unit, assemble
+from .factor import cholesky_solve
 from .kernel import Arg, Kernel
 
 
@@ -51,15 +52,20 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
         "inverse dynamics tau = B(q) q'' + n(q, q') by recursive Newton-Euler", batched=("q", "qd", "qdd"))
     forward = Kernel(
         "forward_dynamics", (a_q, a_qd, Arg("tau", tau, _units(chain, "tau"), names=names), a_p),
-        (Arg("qdd", rb.cholesky_solve(B, tau - bias), _units(chain, "qdd")),),
+        (Arg("qdd", cholesky_solve(B, tau - bias), _units(chain, "qdd")),),
         "forward dynamics q'' = B(q)^-1 (tau - n(q, q')) by a Cholesky factorisation of B",
         batched=("q", "qd", "tau"))
+    kernels = (terms, inverse, forward)
+    if chain.n >= 6:  # a full-rank 6 x n Jacobian is possible: the operational space exists
+        from .task_law import operational_space_kernels
+
+        kernels += operational_space_kernels(chain)
     if defaults is None:
-        return terms, inverse, forward
+        return kernels
     values = Arg("robot", ca.SX(ca.DM([float(v) for v in defaults])), a_p.unit, names=a_p.names)
     urdf = Kernel("urdf_parameters", (), (values,),
                   "the robot array as the URDF gives it (inertial parameters, viscosities, gravity)")
-    return terms, inverse, forward, urdf
+    return (*kernels, urdf)
 
 
 def c_identifier(name: str) -> str:
@@ -78,3 +84,15 @@ def build_robot_unit(chain: rb.Chain, prefix: str, info: dict, defaults=None) ->
                     f"rigid-body kernels of the {chain.n}-joint serial arm '{info.get('robot', prefix)}'",
                     info={"robot": info}, tool=f"CasADi {ca.__version__}",
                     defines={"NQ": chain.n, "ROBOT_SIZE": len(rb.parameter_names(chain))})
+
+
+def build_law_unit(chain: rb.Chain, spec, axes: tuple[int, ...], prefix: str, info: dict) -> Unit:
+    """The task frame and decoupling law of ``chain`` on the surface ``spec`` for the task ``axes``."""
+    from .task_law import AXIS_NAMES, law_kernels
+
+    return assemble(prefix, "casadi", law_kernels(chain, spec, axes),
+                    f"decoupling law of the {chain.n}-joint arm '{info.get('robot', prefix)}' on a {spec.kind}, "
+                    f"task axes {', '.join(AXIS_NAMES[i] for i in axes)}",
+                    info={"robot": info, "surface": {"kind": spec.kind, "parameters": list(spec.parameters),
+                                                      "phi": str(spec.phi)}, "axes": list(axes)},
+                    tool=f"CasADi {ca.__version__}", defines={"NQ": chain.n, "M": len(axes)})

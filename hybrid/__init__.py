@@ -6,16 +6,19 @@ the compiled law (:func:`decoupling_law`) and the arm's terms, the experiment
 error raised on bad input.
 """
 
-from .errors import HybridError, NativeBuildError, NonFiniteError, SingularConfigurationError, URDFError
+from .errors import HybridError, NativeBuildError, NonFiniteError, SingularConfigurationError, TaskFrameError, URDFError
 from .experiment import Contact, Experiment, Gains, Sensor, Step, paper_experiment
-from .law import DecouplingLaw, arm_terms, decoupling_law, operational_space, task_frame
+from .law import DecouplingLaw, OperationalSpace, arm_terms, decoupling_law, operational_space, task_frame
 from .parameters import Arm, Circle, Plane, paper_arm
 from .robot import Robot
 from .simulation import SimulationError, SimulationResult, simulate
+from .spatial_law import SpatialDecouplingLaw
+from .surfaces import Cylinder, ImplicitSurface, Sphere
 
 __all__ = [
-    "Arm", "Circle", "Contact", "DecouplingLaw", "Experiment", "Gains", "HybridError",
-    "NativeBuildError", "NonFiniteError", "Plane", "Robot", "Sensor", "SimulationError", "SimulationResult",
-    "SingularConfigurationError", "Step", "URDFError", "arm_terms", "decoupling_law", "operational_space",
-    "paper_arm", "paper_experiment", "simulate", "task_frame",
+    "Arm", "Circle", "Contact", "Cylinder", "DecouplingLaw", "Experiment", "Gains", "HybridError",
+    "ImplicitSurface", "NativeBuildError", "NonFiniteError", "OperationalSpace", "Plane", "Robot", "Sensor",
+    "SimulationError", "SimulationResult", "SingularConfigurationError", "SpatialDecouplingLaw", "Sphere", "Step",
+    "TaskFrameError", "URDFError", "arm_terms", "decoupling_law", "operational_space", "paper_arm",
+    "paper_experiment", "simulate", "task_frame",
 ]

@@ -19,3 +19,7 @@ class NativeBuildError(HybridError):
 
 class URDFError(HybridError):
     """A URDF file that cannot describe a controllable serial arm; names the element and line."""
+
+
+class TaskFrameError(HybridError):
+    """The task frame is undefined: its reference direction is parallel to the surface normal."""

@@ -1,4 +1,4 @@
-"""Parameters of the arm and the surfaces, as validated dataclasses (SI units)."""
+"""Parameters of the paper's planar arm, as a validated dataclass (SI units)."""
 
 from __future__ import annotations
 
@@ -8,26 +8,8 @@ from dataclasses import asdict, dataclass, fields, replace
 import numpy as np
 
 from .errors import HybridError
-
-
-def _finite(owner: str, **values: float) -> None:
-    for name, v in values.items():
-        if not isinstance(v, (int, float, np.floating, np.integer)) or isinstance(v, bool):
-            raise HybridError(f"{owner}.{name} must be a real number, got {v!r}")
-        if not math.isfinite(v):
-            raise HybridError(f"{owner}.{name} is {v}; give a finite value")
-
-
-def _point(owner: str, name: str, p) -> tuple[float, float]:
-    try:
-        arr = np.asarray(p, dtype=float)
-    except (TypeError, ValueError):
-        raise HybridError(f"{owner}.{name} must be two numbers (x, y) in m, got {p!r}") from None
-    if arr.shape != (2,):
-        raise HybridError(f"{owner}.{name} must be two numbers (x, y) in m, got shape {arr.shape}")
-    if not np.isfinite(arr).all():
-        raise HybridError(f"{owner}.{name} = {p!r} is not finite; give finite coordinates")
-    return float(arr[0]), float(arr[1])
+from .surfaces import Circle, Plane, Surface  # noqa: F401  (the planar surfaces, as before)
+from .validate import _finite, _point  # noqa: F401
 
 
 @dataclass(frozen=True)
@@ -102,83 +84,3 @@ class Arm:
 def paper_arm() -> Arm:
     """The two-link SCARA of the paper (NOTES section 5)."""
     return Arm(L1=0.45, L2=0.32, m1=0.0, m2=3.5, d1=0.0, d2=0.15, I1=0.25, I2=0.16, V1=1.3, V2=0.2)
-
-
-@dataclass(frozen=True)
-class Circle:
-    """A disc of centre ``center`` [m] and radius ``radius`` [m], touched from outside.
-
-    Task frame: normal ``n = (r - c)/|r - c|`` (out of the disc, towards the robot),
-    tangent ``t = (-n_y, n_x)`` (counter-clockwise). Arc coordinate ``s = radius * angle``.
-    """
-
-    center: tuple[float, float]
-    radius: float
-    kind = "circle"
-
-    def __post_init__(self):
-        object.__setattr__(self, "center", _point("Circle", "center", self.center))
-        _finite("Circle", radius=self.radius)
-        if self.radius <= 0:
-            raise HybridError(f"Circle.radius = {self.radius} m; a circle needs a positive radius")
-
-    def as_array(self) -> np.ndarray:
-        return np.array([*self.center, self.radius])
-
-    def normal_at(self, p) -> np.ndarray:
-        """Unit normal towards the robot at the surface point nearest ``p``."""
-        d = np.asarray(p, float) - self.center
-        norm = np.hypot(*d)
-        if norm == 0:
-            raise HybridError(f"the point {p} is the circle's centre, where its normal is undefined")
-        return d / norm
-
-    def arc_coordinate(self, p) -> float:
-        d = np.asarray(p, float) - self.center
-        return self.radius * math.atan2(d[1], d[0])
-
-    def at(self, s: float) -> np.ndarray:
-        """The surface point at arc coordinate ``s`` [m]."""
-        ang = s / self.radius
-        return np.array(self.center) + self.radius * np.array([math.cos(ang), math.sin(ang)])
-
-
-@dataclass(frozen=True)
-class Plane:
-    """A straight surface through ``point`` [m] with ``normal`` pointing towards the robot.
-
-    Tangent ``t = (-n_y, n_x)``; arc coordinate ``s = (p - point) . t``.
-    """
-
-    point: tuple[float, float]
-    normal: tuple[float, float]
-    kind = "plane"
-
-    def __post_init__(self):
-        object.__setattr__(self, "point", _point("Plane", "point", self.point))
-        n = _point("Plane", "normal", self.normal)
-        norm = math.hypot(*n)
-        if norm < 1e-12:
-            raise HybridError(f"Plane.normal = {self.normal} has zero length; give the direction "
-                              "from the surface towards the robot, e.g. (-1, 0)")
-        object.__setattr__(self, "normal", (n[0] / norm, n[1] / norm))
-
-    def as_array(self) -> np.ndarray:
-        return np.array([*self.point, *self.normal])
-
-    def normal_at(self, p) -> np.ndarray:
-        """Unit normal towards the robot (the same everywhere)."""
-        return np.array(self.normal)
-
-    def _tangent(self) -> np.ndarray:
-        return np.array([-self.normal[1], self.normal[0]])
-
-    def arc_coordinate(self, p) -> float:
-        return float((np.asarray(p, float) - self.point) @ self._tangent())
-
-    def at(self, s: float) -> np.ndarray:
-        """The surface point at arc coordinate ``s`` [m]."""
-        return np.array(self.point) + s * self._tangent()
-
-
-Surface = Circle | Plane

@@ -8,6 +8,8 @@ All functions take one state; parameters are the arrays of the generated C.
 
 from __future__ import annotations
 
+from functools import cache
+
 import numpy as np
 
 SURFACE_KINDS = ("plane", "circle")
@@ -139,3 +141,70 @@ def plant_outputs(kind, x, arm, plant, surface):
     Fc = sensor_force(x, arm, plant)
     delta, N, f, v, _, _ = contact(kind, s, sd, plant, surface)
     return np.array([*r, *(R @ rd), *Fc, *(R @ Fc), *s, delta, N, f, v])
+
+
+# ------------------------------------------------------------ spatial (NOTES section 9)
+
+
+def _gradient_and_hessian(surface, p):
+    """``grad phi`` and its Hessian at ``p``, written out for each kind (SymPy for an implicit one)."""
+    p = np.asarray(p, float)
+    if surface.kind == "plane":
+        return np.asarray(surface.normal, float), np.zeros((3, 3))
+    if surface.kind == "sphere":
+        d = p - np.asarray(surface.center)
+        r = np.linalg.norm(d)
+        return d / r, (np.eye(3) - np.outer(d, d) / r**2) / r
+    if surface.kind == "cylinder":
+        u = np.asarray(surface.axis)
+        P = np.eye(3) - np.outer(u, u)
+        d = P @ (p - np.asarray(surface.point))
+        r = np.linalg.norm(d)
+        return d / r, (P - np.outer(d, d) / r**2) / r
+    grad, hess = _implicit_derivatives(surface)
+    return np.array(grad(*p), dtype=float), np.array(hess(*p), dtype=float)
+
+
+@cache
+def _implicit_derivatives(surface):
+    """``grad phi`` and its Hessian of an implicit surface, differentiated and compiled to NumPy by SymPy."""
+    import sympy as sp
+
+    xyz = sp.symbols("x y z", real=True)
+    phi = surface.phi.xreplace({sp.Symbol(k, real=True): v for k, v in surface.parameters.items()})
+    grad = [sp.diff(phi, s) for s in xyz]
+    hess = [[sp.diff(g, s) for s in xyz] for g in grad]
+    return sp.lambdify(xyz, grad, "numpy"), sp.lambdify(xyz, hess, "numpy")
+
+
+def spatial_frame(surface, p, pd, e):
+    """``R_L`` (rows ``t1, t2, n``) and ``R_L'`` of NOTES section 9, differentiated by hand:
+    ``n' = (I - n n^T) H p' / |grad phi|``, ``t1' = (I - t1 t1^T)(e x n') / |e x n|``,
+    ``t2' = n' x t1 + n x t1'``."""
+    g, H = _gradient_and_hessian(surface, p)
+    n = g / np.linalg.norm(g)
+    nd = (np.eye(3) - np.outer(n, n)) @ H @ np.asarray(pd, float) / np.linalg.norm(g)
+    e = np.asarray(e, float) / np.linalg.norm(e)
+    c = np.cross(e, n)
+    t1 = c / np.linalg.norm(c)
+    t1d = (np.eye(3) - np.outer(t1, t1)) @ np.cross(e, nd) / np.linalg.norm(c)
+    t2 = np.cross(n, t1)
+    t2d = np.cross(nd, t1) + np.cross(n, t1d)
+    return np.array([t1, t2, n]), np.array([t1d, t2d, nd])
+
+
+def spatial_decoupling_law(J, Jdqd, B, n, R_L, Rd_L, qd, a, Fc, tau0, axes, curvature):
+    """``(F*, tau)`` of NOTES section 9 from the arm's terms, written literally with inverses:
+    ``f_y = Lambda_y (a - R_m' v - R_m J' q') + Jbar_y^T (n - J^T F_c)``, ``F* = R_m^T f_y``,
+    ``tau = J_y^T f_y + (I - J_y^T Jbar_y^T) tau0``, ``J_y = R_m J``."""
+    Z = np.zeros((3, 3))
+    R = np.block([[R_L, Z], [Z, R_L]])[list(axes)]
+    Rd = np.block([[Rd_L, Z], [Z, Rd_L]])[list(axes)]
+    v = J @ qd
+    Jy = R @ J
+    Binv = np.linalg.inv(B)
+    Lam = np.linalg.inv(Jy @ Binv @ Jy.T)
+    JbarT = Lam @ Jy @ Binv
+    f = Lam @ (np.asarray(a) - (Rd @ v if curvature else 0.0) - R @ Jdqd) + JbarT @ (n - J.T @ Fc)
+    tau = Jy.T @ f + (np.eye(len(qd)) - Jy.T @ JbarT) @ tau0
+    return R.T @ f, tau

@@ -191,21 +191,38 @@ def _check_link(joint: str, link: LinkInertia) -> None:
                           "positive semi-definite and satisfy the triangle inequality")
 
 
-@cache
-def compiled_unit(chain: rb.Chain, name: str) -> Unit:
-    """Generate (cached), compile (cached) and load the kernels of ``chain``."""
+def _compiled(prefix: str, key: dict, build) -> Unit:
+    """Generate (cached by ``key``, the generator's source and CasADi's version), compile (cached)
+    and load the unit ``build()`` returns."""
     from importlib.metadata import version
 
-    from codegen.emit import GENERATOR_VERSION
+    from codegen.emit import fingerprint
+
+    key = {**key, "generator": fingerprint(), "casadi": version("casadi"), "prefix": prefix}
+    folder = native.generated_unit(prefix, key, lambda: build().files)
+    module, manifest = native.load_generated(folder, prefix)
+    return Unit(module, manifest, " (a wrist, elbow or shoulder singularity)",
+                {"qd": "qdot", "pd": "pdot"}, folder=folder)
+
+
+@cache
+def compiled_unit(chain: rb.Chain, name: str) -> Unit:
+    """The rigid-body kernels of ``chain`` (terms, dynamics, operational space), compiled."""
     from codegen.robot_unit import build_robot_unit, c_identifier
 
     prefix = c_identifier(f"hybrid_{name}")
-    info = robot_info(chain, name)
-    key = {"chain": _chain_key(chain), "generator": GENERATOR_VERSION, "casadi": version("casadi"),
-           "prefix": prefix}
-    folder = native.generated_unit(prefix, key, lambda: build_robot_unit(chain, prefix, info).files)
-    module, manifest = native.load_generated(folder, prefix)
-    return Unit(module, manifest, folder=folder)
+    return _compiled(prefix, {"chain": _chain_key(chain)},
+                     lambda: build_robot_unit(chain, prefix, robot_info(chain, name)))
+
+
+@cache
+def compiled_law_unit(chain: rb.Chain, name: str, spec, axes: tuple[int, ...]) -> Unit:
+    """The task frame and decoupling law of ``chain`` on the surface ``spec``, compiled."""
+    from codegen.robot_unit import build_law_unit, c_identifier
+
+    prefix = c_identifier(f"hybrid_{name}_{spec.kind}_law")
+    return _compiled(prefix, {"chain": _chain_key(chain), "surface": spec.key(), "axes": list(axes)},
+                     lambda: build_law_unit(chain, spec, axes, prefix, robot_info(chain, name)))
 
 
 def robot_info(chain: rb.Chain, name: str) -> dict:

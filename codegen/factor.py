@@ -1,0 +1,97 @@
+"""Unrolled factorisations on CasADi SX matrices: every linear solve the generated C performs.
+
+No symbolic inverse is formed: a solve is a factorisation (Cholesky ``A = L L^T`` of a
+symmetric positive definite matrix, or a thin QR of a full-column-rank matrix by modified
+Gram-Schmidt) followed by triangular substitutions. A zero or negative pivot gives NaN or
+infinity, which the entry points report as ``HYBRID_NONFINITE`` (or a guard catches first).
+"""
+
+from __future__ import annotations
+
+import casadi as ca
+
+
+def _zero():
+    return ca.SX(0)
+
+
+def cholesky(A) -> list[list]:
+    """Lower-triangular ``L`` (a list of rows) with ``A = L L^T``."""
+    n = A.shape[0]
+    L = [[None] * n for _ in range(n)]
+    for j in range(n):
+        L[j][j] = ca.sqrt(A[j, j] - sum((L[j][k] ** 2 for k in range(j)), _zero()))
+        inv = 1 / L[j][j]
+        for i in range(j + 1, n):
+            L[i][j] = (A[i, j] - sum((L[i][k] * L[j][k] for k in range(j)), _zero())) * inv
+    return L
+
+
+def forward_substitution(L, b) -> list:
+    """``y = L^-1 b`` for lower-triangular ``L`` (list of rows) and a column ``b``."""
+    n = len(L)
+    y = [None] * n
+    for i in range(n):
+        y[i] = (b[i] - sum((L[i][k] * y[k] for k in range(i)), _zero())) / L[i][i]
+    return y
+
+
+def back_substitution_transposed(L, y) -> list:
+    """``x = L^-T y`` for lower-triangular ``L``."""
+    n = len(L)
+    x = [None] * n
+    for i in reversed(range(n)):
+        x[i] = (y[i] - sum((L[k][i] * x[k] for k in range(i + 1, n)), _zero())) / L[i][i]
+    return x
+
+
+def cholesky_solve(A, b) -> ca.SX:
+    """``x = A^-1 b`` for symmetric positive definite ``A``, by Cholesky and two substitutions."""
+    L = cholesky(A)
+    return ca.vertcat(*back_substitution_transposed(L, forward_substitution(L, b)))
+
+
+def factor_solve(L, b) -> ca.SX:
+    """``(L L^T)^-1 b`` with ``L`` already computed."""
+    return ca.vertcat(*back_substitution_transposed(L, forward_substitution(L, b)))
+
+
+def lower_columns_solve(L, M) -> ca.SX:
+    """``L^-1 M`` column by column (``M`` a matrix)."""
+    return ca.horzcat(*(ca.vertcat(*forward_substitution(L, M[:, j])) for j in range(M.shape[1])))
+
+
+def thin_qr(A) -> tuple[list, list[list]]:
+    """``A = Q R`` for an ``n x m`` matrix of full column rank (``n >= m``), modified Gram-Schmidt:
+    ``Q`` as a list of m orthonormal columns, ``R`` upper triangular (list of rows)."""
+    m = A.shape[1]
+    Q, R = [], [[_zero()] * m for _ in range(m)]
+    for j in range(m):
+        v = A[:, j]
+        for i in range(j):
+            R[i][j] = ca.dot(Q[i], v)
+            v = v - R[i][j] * Q[i]
+        R[j][j] = ca.norm_2(v)
+        Q.append(v / R[j][j])
+    return Q, R
+
+
+def upper_inverse_frobenius2(R) -> ca.SX:
+    """``|R^-1|_F^2`` for upper-triangular ``R`` (list of rows), by back substitution on ``I``."""
+    m = len(R)
+    total = _zero()
+    for col in range(m):
+        x = [_zero()] * m
+        for i in reversed(range(col + 1)):
+            rhs = (1.0 if i == col else 0.0) - sum((R[i][k] * x[k] for k in range(i + 1, col + 1)), _zero())
+            x[i] = rhs / R[i][i]
+        total = total + sum((xi * xi for xi in x[:col + 1]), _zero())
+    return total
+
+
+def frobenius_conditioning(A, R) -> ca.SX:
+    """``m / (|A|_F |A^+|_F)`` in (0, 1] for the ``m x n`` matrix ``A`` (``m <= n``), from the R of
+    the thin QR of ``A^T``: 1 when all singular values are equal, 0 at a rank loss, about
+    ``sigma_min / sigma_max`` near one; for ``m = 2`` it equals ``2 |det A| / |A|_F^2``."""
+    m = len(R)
+    return m / ca.sqrt(ca.sumsqr(A) * upper_inverse_frobenius2(R))

@@ -1,0 +1,127 @@
+"""Surfaces ``phi(p) = 0`` and the task frame ``R_L(p)`` on them, with its exact ``R_L'(p, p')``.
+
+Conventions of ``shared/paper/NOTES.md`` section 9: ``phi > 0`` on the robot's side, unit
+normal ``n = grad phi / |grad phi|`` from the surface to the robot; task-frame rows
+``t1 = e x n / |e x n|``, ``t2 = n x t1``, ``n`` for a reference direction ``e``. ``R_L'`` is
+the directional derivative of ``R_L`` along ``p'``: it carries the surface's curvature.
+
+A surface is a :class:`SurfaceSpec`: a kind, its parameter names (run-time inputs of the
+generated C) and ``phi`` as a SymPy expression of ``x, y, z`` and those parameters. The
+built-in plane, sphere and cylinder are specs like any surface a user writes down.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+from functools import cache
+
+import casadi as ca
+import sympy as sp
+
+from .casadi_backend import to_sx
+
+X, Y, Z = sp.symbols("x y z", real=True)
+#: below this ``|e x n|`` (the sine of the angle between ``e`` and ``n``) the task frame is undefined
+FRAME_TOL = 1e-6
+
+
+@dataclass(frozen=True)
+class SurfaceSpec:
+    """``phi(x, y, z; parameters)``; ``kind`` names it in the generated code."""
+
+    kind: str
+    parameters: tuple[str, ...]
+    phi: sp.Expr
+
+    def key(self) -> str:
+        """A stable text identifying the surface's expression (for cache keys and unit names)."""
+        return f"{self.kind}:{','.join(self.parameters)}:{sp.srepr(self.phi)}"
+
+    def digest(self) -> str:
+        return hashlib.sha256(self.key().encode()).hexdigest()[:12]
+
+
+def _params(names: str) -> tuple:
+    return sp.symbols(names, real=True)
+
+
+@cache
+def builtin(kind: str) -> SurfaceSpec:
+    """The plane, sphere and cylinder of NOTES section 9."""
+    p = sp.Matrix([X, Y, Z])
+    if kind == "plane":
+        px, py, pz, nx, ny, nz = _params("p_x p_y p_z n_x n_y n_z")
+        n = sp.Matrix([nx, ny, nz])
+        phi = n.dot(p - sp.Matrix([px, py, pz])) / sp.sqrt(n.dot(n))
+        names = (px, py, pz, nx, ny, nz)
+    elif kind == "sphere":
+        cx, cy, cz, rho = _params("c_x c_y c_z rho")
+        d = p - sp.Matrix([cx, cy, cz])
+        phi, names = sp.sqrt(d.dot(d)) - rho, (cx, cy, cz, rho)
+    elif kind == "cylinder":
+        px, py, pz, ux, uy, uz, rho = _params("p_x p_y p_z u_x u_y u_z rho")
+        u = sp.Matrix([ux, uy, uz])
+        d = p - sp.Matrix([px, py, pz])
+        radial = d - u * (u.dot(d) / u.dot(u))
+        phi, names = sp.sqrt(radial.dot(radial)) - rho, (px, py, pz, ux, uy, uz, rho)
+    else:
+        raise ValueError(f"unknown surface kind {kind!r}")
+    return SurfaceSpec(kind, tuple(str(s) for s in names), phi)
+
+
+def implicit(phi: sp.Expr, parameters: tuple[str, ...]) -> SurfaceSpec:
+    """A surface written by the user: ``phi`` in ``x, y, z`` and the named parameters."""
+    spec = SurfaceSpec("implicit", tuple(parameters), phi)
+    return SurfaceSpec(f"implicit_{spec.digest()}", spec.parameters, phi)
+
+
+def phi_sx(spec: SurfaceSpec, p, theta) -> ca.SX:
+    """``phi`` as CasADi SX of the point ``p`` (3) and the parameter column ``theta``."""
+    symbols = {X: p[0], Y: p[1], Z: p[2]}
+    symbols.update({sp.Symbol(n, real=True): theta[i] for i, n in enumerate(spec.parameters)})
+    # the user's symbols may lack real=True: map them by name too
+    by_name = {str(k): v for k, v in symbols.items()}
+    for s in spec.phi.free_symbols:
+        if s not in symbols:
+            symbols[s] = by_name[str(s)]
+    return to_sx(spec.phi, symbols, {})
+
+
+def _cross(a, b):
+    return ca.vertcat(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+@dataclass
+class TaskFrame:
+    """``R_L`` (3x3, rows t1, t2, n), its derivative ``R_L'``, and ``|e x n|`` (the frame's guard)."""
+
+    R: ca.SX
+    Rd: ca.SX
+    sine: ca.SX
+    normal: ca.SX
+
+
+def task_frame(spec: SurfaceSpec, p, pd, theta, e) -> TaskFrame:
+    """The task frame at ``p`` on ``spec`` for the reference direction ``e`` and its time
+    derivative along ``p'`` (exact: a forward-mode directional derivative).
+
+    ``p`` may be an expression (the arm's tip): the frame is derived on symbols, then applied.
+    """
+    args = [ca.SX.sym(name, size) for name, size in (("p", 3), ("pd", 3), ("theta", theta.shape[0]), ("e", 3))]
+    f = ca.Function("task_frame", args, list(_frame_on_symbols(spec, *args)))
+    return TaskFrame(*f(p, pd, theta, e))
+
+
+def _frame_on_symbols(spec: SurfaceSpec, p, pd, theta, e):
+    phi = phi_sx(spec, p, theta)
+    grad = ca.gradient(phi, p)
+    n = grad / ca.norm_2(grad)
+    e_unit = e / ca.norm_2(e)
+    c = _cross(e_unit, n)
+    sine = ca.norm_2(c)
+    t1 = c / sine
+    t2 = _cross(n, t1)
+    R = ca.vertcat(t1.T, t2.T, n.T)
+    Rd = ca.reshape(ca.jtimes(ca.reshape(R, 9, 1), p, pd), 3, 3)
+    return R, Rd, sine, n

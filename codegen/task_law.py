@@ -1,0 +1,217 @@
+"""The decoupling law in its general (spatial) form, NOTES section 9, for any serial arm and surface.
+
+Task axes: the six rows of ``R = diag(R_L, R_L)`` (``t1, t2, n`` linear, then angular about
+the same axes); a task uses ``m`` of them (``axes``): all six, the three linear ones
+(position only), or the planar arm's ``(t1, n)`` = axes ``(0, 2)``. With ``R_m`` those rows,
+``J_y = R_m J``, ``Lambda_y = (J_y B^-1 J_y^T)^-1`` and ``Jbar_y^T = Lambda_y J_y B^-1``:
+
+    f_y  = Lambda_y (a - kappa R_m' v - R_m J' q') + Jbar_y^T (n - J^T F_c)
+    F*   = R_m^T f_y                                   (a wrench, base axes)
+    tau  = J_y^T f_y + (I - J_y^T Jbar_y^T) tau0       (= J^T F* + null-space torque)
+
+For all six axes this is ``F* = Lambda (R^T (a - R' v) - J' q') + Jbar^T n - F_c`` of NOTES
+section 9; applying ``tau`` gives ``R_m v' + R_m' v = a`` whatever ``tau0``. A square task
+(``m = n``) is solved through the thin QR of ``J_y^T`` (no factorisation of ``B``, ``tau0`` has no
+effect); a redundant one through the Cholesky factors of ``B`` and of ``Lambda_y^-1``.
+The conditioning guard is ``m / (|J_y|_F |J_y^+|_F)``, from the same QR.
+"""
+
+from __future__ import annotations
+
+import casadi as ca
+
+from . import factor
+from . import rigid_body as rb
+from .kernel import Arg, Guard, Kernel, conditioning_guard
+from .surfaces import FRAME_TOL, SurfaceSpec, task_frame
+
+AXIS_NAMES = ("t1", "t2", "n", "rot_t1", "rot_t2", "rot_n")
+CONDITIONING = "m/(|J_y|_F |J_y^+|_F)"
+#: below this ``|cos beta|`` the ZYX Euler angles (and ``T_A``) are singular
+EULER_TOL = 1e-6
+
+
+def frame_guard(sine) -> Guard:
+    return Guard("frame", sine, "HYBRID_FRAME_UNDEFINED", FRAME_TOL,
+                 "|e x n| (the reference direction e is parallel to the surface normal n)")
+
+
+def _blockdiag(A):
+    Z = ca.SX.zeros(3, 3)
+    return ca.vertcat(ca.horzcat(A, Z), ca.horzcat(Z, A))
+
+
+def _row_major(M):
+    return ca.reshape(M.T, -1, 1)
+
+
+def _rows(M, axes):
+    return ca.vertcat(*(M[i, :] for i in axes))
+
+
+def _joint_units(chain, what):
+    per = {"revolute": {"tau": "N m"}, "prismatic": {"tau": "N"}}
+    return tuple(per[j.kind][what] for j in chain.joints)
+
+
+def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tuple[Kernel, ...]:
+    """``task_frame`` and ``decoupling_law`` of ``chain`` on ``spec`` for the task ``axes``."""
+    n, m = chain.n, len(axes)
+    if m > n:
+        raise ValueError(f"a task of {m} axes needs at least {m} joints; the arm has {n}")
+    q, qd, tau0 = (ca.SX.sym(s, n) for s in ("q", "qd", "tau0"))
+    a, Fc = ca.SX.sym("a", m), ca.SX.sym("Fc", 6)
+    params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
+    theta, e, opts = ca.SX.sym("surface", len(spec.parameters)), ca.SX.sym("e", 3), ca.SX.sym("opts", 1)
+
+    fr = rb.forward_kinematics(chain, q)
+    J = rb.frame_jacobian(fr)
+    Jdqd = rb.frame_classical_acceleration(fr, qd)
+    B = rb.crba(chain, fr, params)
+    bias = rb.rnea(chain, fr, params, qd)
+    v = J @ qd
+    tf = task_frame(spec, fr.tip_p, v[:3], theta, e)
+    Rm, Rdm = _rows(_blockdiag(tf.R), axes), _rows(_blockdiag(tf.Rd), axes)
+    Jy = Rm @ J
+    b = a - opts[0] * (Rdm @ v) - Rm @ Jdqd
+    Q, Rq = factor.thin_qr(Jy.T)
+    cond = factor.frobenius_conditioning(Jy, Rq)
+    h = bias - J.T @ Fc
+    if m == n:
+        # J_y square: q''* = J_y^-1 b = Q R^-T b, tau = B q''* + n - J^T F_c, f_y = J_y^-T tau
+        z = factor.forward_substitution([[Rq[j][i] for j in range(m)] for i in range(m)], b)  # R^T z = b
+        qdd = sum((Q[i] * z[i] for i in range(m)), ca.SX.zeros(n, 1))
+        tau = B @ qdd + h
+        y = ca.vertcat(*(ca.dot(Q[i], tau) for i in range(m)))
+        f_y = _upper_solve(Rq, y)
+    else:
+        L = factor.cholesky(B)
+        Y = factor.lower_columns_solve(L, Jy.T)           # L^-1 J_y^T, n x m
+        K = factor.cholesky(Y.T @ Y)                      # Lambda_y^-1 = K K^T
+        u = ca.vertcat(*factor.forward_substitution(L, h))
+        u0 = ca.vertcat(*factor.forward_substitution(L, tau0))
+        f_y = factor.factor_solve(K, b + Y.T @ u)
+        g = factor.factor_solve(K, Y.T @ u0)
+        tau = Jy.T @ (f_y - g) + tau0
+    F = Rm.T @ f_y
+
+    names = tuple(j.name for j in chain.joints)
+    units = {"revolute": ("rad", "rad/s"), "prismatic": ("m", "m/s")}
+    a_q = Arg("q", q, tuple(units[j.kind][0] for j in chain.joints), names=names)
+    a_qd = Arg("qd", qd, tuple(units[j.kind][1] for j in chain.joints), names=names)
+    a_p = Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain))
+    a_s = Arg("surface", theta, "m (lengths), 1 (directions)", names=spec.parameters)
+    a_e = Arg("e", e, "1", names=("e_x", "e_y", "e_z"))
+    acc_units = tuple("m/s^2" if i < 3 else "rad/s^2" for i in axes)
+    law = Kernel(
+        "decoupling_law",
+        (a_q, a_qd, Arg("a", a, acc_units, names=tuple(AXIS_NAMES[i] for i in axes)),
+         Arg("Fc", Fc, ("N",) * 3 + ("N m",) * 3, names=("f_x", "f_y", "f_z", "m_x", "m_y", "m_z")),
+         Arg("tau0", tau0, _joint_units(chain, "tau"), names=names), a_p, a_s, a_e,
+         Arg("opts", opts, "1", names=("curvature",))),
+        (Arg("F", F, ("N",) * 3 + ("N m",) * 3), Arg("tau", tau, _joint_units(chain, "tau"))),
+        f"decoupling law F* [N, N m] (base axes) and tau = J^T F* + null-space tau0 [N m], task axes "
+        f"{', '.join(AXIS_NAMES[i] for i in axes)} on a {spec.kind}",
+        batched=("q", "qd", "a", "Fc", "tau0"),
+        guards=(frame_guard(tf.sine), conditioning_guard(cond, CONDITIONING)))
+    p, pd = ca.SX.sym("p", 3), ca.SX.sym("pd", 3)
+    tf_p = task_frame(spec, p, pd, theta, e)
+    frame = Kernel(
+        "task_frame", (Arg("p", p, "m"), Arg("pd", pd, "m/s"), a_s, a_e),
+        (Arg("R", _row_major(tf_p.R), "1", (3, 3)), Arg("Rd", _row_major(tf_p.Rd), "1/s", (3, 3)),
+         Arg("normal", tf_p.normal, "1")),
+        f"task frame R_L (rows t1, t2, n) at p on a {spec.kind}, its derivative R_L'(p, p'), and the "
+        "unit normal n", batched=("p", "pd"), guards=(frame_guard(tf_p.sine),))
+    return frame, law
+
+
+def _upper_solve(R, y) -> ca.SX:
+    """``x = R^-1 y`` for upper-triangular ``R`` (list of rows)."""
+    m = len(R)
+    x = [None] * m
+    for i in reversed(range(m)):
+        x[i] = (y[i] - sum((R[i][k] * x[k] for k in range(i + 1, m)), ca.SX(0))) / R[i][i]
+    return ca.vertcat(*x)
+
+
+# ------------------------------------------------------------- operational space
+
+
+def euler_zyx(Rot):
+    """ZYX Euler angles ``(alpha, beta, gamma)`` of ``Rot = Rz(alpha) Ry(beta) Rx(gamma)``."""
+    alpha = ca.atan2(Rot[1, 0], Rot[0, 0])
+    beta = ca.atan2(-Rot[2, 0], ca.sqrt(Rot[0, 0] ** 2 + Rot[1, 0] ** 2))
+    gamma = ca.atan2(Rot[2, 1], Rot[2, 2])
+    return ca.vertcat(alpha, beta, gamma)
+
+
+def euler_map(phi) -> ca.SX:
+    """``T_A(phi)`` with ``w = T_A phi'`` (NOTES section 9)."""
+    sa, ca_, sb, cb = ca.sin(phi[0]), ca.cos(phi[0]), ca.sin(phi[1]), ca.cos(phi[1])
+    return ca.vertcat(ca.horzcat(0, -sa, ca_ * cb), ca.horzcat(0, ca_, sa * cb), ca.horzcat(1, 0, -sb))
+
+
+def euler_map_rate(phi, phid) -> ca.SX:
+    """``T_A'(phi, phi')``: ``dT_A/dalpha alpha' + dT_A/dbeta beta'``."""
+    sa, ca_, sb, cb = ca.sin(phi[0]), ca.cos(phi[0]), ca.sin(phi[1]), ca.cos(phi[1])
+    ad, bd = phid[0], phid[1]
+    return ca.vertcat(ca.horzcat(0, -ca_ * ad, -sa * cb * ad - ca_ * sb * bd),
+                      ca.horzcat(0, -sa * ad, ca_ * cb * ad - sa * sb * bd),
+                      ca.horzcat(0, 0, -cb * bd))
+
+
+def euler_rates(phi, w) -> ca.SX:
+    """``phi' = T_A^-1 w`` in closed form (singular at ``cos beta = 0``)."""
+    sa, ca_, sb, cb = ca.sin(phi[0]), ca.cos(phi[0]), ca.sin(phi[1]), ca.cos(phi[1])
+    gamma_d = (ca_ * w[0] + sa * w[1]) / cb
+    return ca.vertcat(w[2] + sb * gamma_d, -sa * w[0] + ca_ * w[1], gamma_d)
+
+
+def operational_space_kernels(chain: rb.Chain) -> tuple[Kernel, ...]:
+    """``Lambda`` and ``n_o`` in twist coordinates, and ``B_o, n_o, T, T'`` in ``r = (p, phi_ZYX)``."""
+    n = chain.n
+    q, qd = ca.SX.sym("q", n), ca.SX.sym("qd", n)
+    params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
+    fr = rb.forward_kinematics(chain, q)
+    J = rb.frame_jacobian(fr)
+    Jdqd = rb.frame_classical_acceleration(fr, qd)
+    B = rb.crba(chain, fr, params)
+    bias = rb.rnea(chain, fr, params, qd)
+    L = factor.cholesky(B)
+    Y = factor.lower_columns_solve(L, J.T)
+    K = factor.cholesky(Y.T @ Y)
+    # Lambda = (K K^T)^-1, column by column; mu = Lambda (J B^-1 n - J' q') = Jbar^T n - Lambda J' q'
+    Lam = ca.horzcat(*(factor.factor_solve(K, ca.DM.eye(6)[:, j]) for j in range(6)))
+    Lam = 0.5 * (Lam + Lam.T)
+    u = ca.vertcat(*factor.forward_substitution(L, bias))
+    mu = factor.factor_solve(K, Y.T @ u - Jdqd)
+    _, Rq = factor.thin_qr(J.T)
+    guard = conditioning_guard(factor.frobenius_conditioning(J, Rq), CONDITIONING)
+    v = J @ qd
+    phi = euler_zyx(fr.tip_R)
+    phid = euler_rates(phi, v[3:])
+    TA = euler_map(phi)
+    TAd = euler_map_rate(phi, phid)
+    T = ca.diagcat(ca.SX.eye(3), TA)
+    Td = ca.diagcat(ca.SX.zeros(3, 3), TAd)
+    r, rd = ca.vertcat(fr.tip_p, phi), ca.vertcat(v[:3], phid)
+    Bo = T.T @ Lam @ T
+    no = T.T @ (Lam @ (Td @ rd) + mu)
+    names = tuple(j.name for j in chain.joints)
+    a_q, a_qd = Arg("q", q, "rad or m", names=names), Arg("qd", qd, "rad/s or m/s", names=names)
+    a_p = Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain))
+    twist = Kernel(
+        "operational_space", (a_q, a_qd, a_p),
+        (Arg("Lambda", _row_major(Lam), "kg, kg m, kg m^2", (6, 6)), Arg("no", mu, "N, N m")),
+        "operational-space inertia Lambda = (J B^-1 J^T)^-1 and n_o = Jbar^T n - Lambda J' q' in twist "
+        "coordinates v = (p', w), base axes", guards=(guard,))
+    euler = Kernel(
+        "operational_space_euler", (a_q, a_qd, a_p),
+        (Arg("r", r, "m, rad", names=("x", "y", "z", "alpha", "beta", "gamma")),
+         Arg("rd", rd, "m/s, rad/s"), Arg("Bo", _row_major(Bo), "kg, kg m, kg m^2", (6, 6)),
+         Arg("no", no, "N, N m"), Arg("T", _row_major(T), "1", (6, 6)), Arg("Td", _row_major(Td), "1/s", (6, 6))),
+        "the paper's coordinates r = (p, phi_ZYX): B_o(r) = T^T Lambda T, n_o(r, r') = T^T (Lambda T' r' + "
+        "n_o,twist), T = diag(I, T_A) and T'(r, r')",
+        guards=(guard, Guard("euler", ca.cos(phi[1]), "HYBRID_EULER_SINGULAR", EULER_TOL,
+                             "|cos beta| (ZYX Euler angles at their singularity, beta = +-pi/2)")))
+    return twist, euler

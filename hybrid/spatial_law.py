@@ -1,0 +1,137 @@
+"""The decoupling law for any serial arm on any surface (NOTES section 9), evaluated by generated C.
+
+``law = decoupling_law(robot, surface)`` builds it; ``law(q, qdot, a, Fc)`` gives ``F*`` (a
+wrench in base axes), ``law.torque(q, qdot, a, Fc, tau0)`` the joint torques. The task axes
+are rows of ``R = diag(R_L, R_L)``: ``t1, t2, n`` (linear), then rotations about them.
+See :mod:`codegen.task_law` for the equations.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import partial
+
+import numpy as np
+
+from .errors import HybridError
+from .robot import Robot, compiled_law_unit
+from .surfaces import Circle, Cylinder, ImplicitSurface, Plane, Sphere
+from .validate import _finite
+
+#: named task-axis selections: all six, position only, the planar arm's (t1, n)
+AXES = {"all": (0, 1, 2, 3, 4, 5), "position": (0, 1, 2), "planar": (0, 2)}
+
+
+def check_axes(robot: Robot, axes) -> tuple[int, ...]:
+    """``axes`` as a sorted tuple of distinct task-axis indices the robot can serve."""
+    if axes is None:
+        if robot.n < 6:
+            raise HybridError(f"a {robot.n}-joint arm cannot control all six task axes; pass axes="
+                              "'planar' (t1, n) for an arm moving in the base xy-plane, 'position' "
+                              "(t1, t2, n), or a tuple of axis indices 0-5")
+        axes = "all"
+    if isinstance(axes, str):
+        if axes not in AXES:
+            raise HybridError(f"axes = {axes!r}; name one of {', '.join(AXES)} or give indices 0-5")
+        axes = AXES[axes]
+    try:
+        out = tuple(sorted(int(i) for i in axes))
+    except (TypeError, ValueError):
+        raise HybridError(f"axes = {axes!r}; give task-axis indices 0-5 (t1, t2, n, then rotations)") from None
+    if not out or len(set(out)) != len(out) or not all(0 <= i <= 5 for i in out) or \
+            any(isinstance(i, bool) for i in axes):
+        raise HybridError(f"axes = {axes!r}; give distinct task-axis indices 0-5")
+    if len(out) > robot.n:
+        raise HybridError(f"{len(out)} task axes need at least {len(out)} joints; the arm has {robot.n}")
+    return out
+
+
+def spatial_surface(surface):
+    """The 3-D surface of ``surface`` (a planar one lifted), checked."""
+    if not isinstance(surface, (Circle, Plane, Sphere, Cylinder, ImplicitSurface)):
+        raise HybridError(f"surface must be a hybrid Plane, Circle, Sphere, Cylinder or ImplicitSurface, "
+                          f"got {type(surface).__name__}")
+    return surface.lift()
+
+
+def _reference(e) -> np.ndarray:
+    try:
+        arr = np.asarray(e, dtype=float)
+    except (TypeError, ValueError):
+        arr = np.array([])
+    if arr.shape != (3,) or not np.isfinite(arr).all() or np.linalg.norm(arr) < 1e-12:
+        raise HybridError(f"reference = {e!r}; give a nonzero direction (e_x, e_y, e_z) in base axes")
+    return arr / np.linalg.norm(arr)
+
+
+@dataclass(frozen=True)
+class SpatialDecouplingLaw:
+    """Compiled decoupling law of ``robot`` on ``surface`` for the task ``axes``.
+
+    ``law(q, qdot, a, Fc)`` gives ``F*`` (6: force [N], moment [N m], base axes);
+    ``law.torque(q, qdot, a, Fc, tau0=None)`` gives ``tau`` (n) [N m or N]. ``q``, ``qdot``,
+    ``tau0`` have n entries, ``a`` one task acceleration per axis (m/s^2 or rad/s^2, task
+    frame), ``Fc`` (6) the measured wrench on the robot at the tip, base axes; or N rows of
+    each for N states in one native call. ``tau0`` acts in the task's null space only.
+    """
+
+    robot: Robot
+    surface: object
+    curvature: bool = False
+    reference: tuple[float, float, float] = (0.0, 0.0, 1.0)
+    axes: tuple[int, ...] | str | None = None
+    singular_tol: float = 1e-3
+
+    def __post_init__(self):
+        from .law import check_singular_tol
+
+        if not isinstance(self.robot, Robot):
+            raise HybridError(f"robot must be a hybrid.Robot, got {type(self.robot).__name__}")
+        if not isinstance(self.curvature, bool):
+            raise HybridError(f"curvature must be True or False, got {self.curvature!r}")
+        check_singular_tol("decoupling_law", self.singular_tol)
+        init = partial(object.__setattr__, self)
+        init("axes", check_axes(self.robot, self.axes))
+        init("reference", tuple(_reference(self.reference)))
+        spatial = spatial_surface(self.surface)
+        unit = compiled_law_unit(self.robot.chain, self.robot.name, spatial.spec(), self.axes)
+        init("_law", unit.function("decoupling_law"))
+        init("_frame", unit.function("task_frame"))
+        init("_params", (self.robot.as_array(), spatial.as_array(), np.array(self.reference),
+                         np.array([1.0 if self.curvature else 0.0])))
+        init("_zeros", np.zeros(self.robot.n))
+        init("_spatial", spatial)
+
+    @property
+    def m(self) -> int:
+        """Number of task axes."""
+        return len(self.axes)
+
+    def evaluate(self, q, qdot, a, Fc, tau0=None) -> tuple[np.ndarray, np.ndarray]:
+        """``(F*, tau)`` for one state or N states."""
+        batched = np.ndim(q) == 2
+        if tau0 is None:
+            tau0 = np.zeros((len(q), self.robot.n)) if batched else self._zeros
+        call = self._law.batch if batched else self._law
+        out = call(q, qdot, a, Fc, tau0, *self._params, singular_tol=self.singular_tol)
+        return out["F"], out["tau"]
+
+    def __call__(self, q, qdot, a, Fc) -> np.ndarray:
+        """``F*`` [N, N m] in base axes."""
+        return self.evaluate(q, qdot, a, Fc)[0]
+
+    def torque(self, q, qdot, a, Fc, tau0=None) -> np.ndarray:
+        """``tau = J^T F* + (I - J^T Jbar^T) tau0`` [N m or N]."""
+        return self.evaluate(q, qdot, a, Fc, tau0)[1]
+
+    def task_frame(self, p, pdot) -> tuple[np.ndarray, np.ndarray]:
+        """``R_L`` (rows ``t1, t2, n``) at the point ``p`` [m] and ``R_L'`` [1/s] for its velocity ``pdot``."""
+        out = self._frame(p, pdot, self._params[1], self._params[2])
+        return out["R"], out["Rd"]
+
+
+def spatial_law(robot: Robot, surface, curvature: bool = False, *, reference=(0.0, 0.0, 1.0), axes=None,
+                singular_tol: float = 1e-3) -> SpatialDecouplingLaw:
+    """The general decoupling law of NOTES section 9, compiled for ``robot`` on ``surface``."""
+    _finite("decoupling_law", singular_tol=singular_tol)
+    return SpatialDecouplingLaw(robot, surface, curvature, reference, axes, singular_tol)

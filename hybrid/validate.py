@@ -1,0 +1,34 @@
+"""Strict checks of user-given values, shared by every validated dataclass."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .errors import HybridError
+
+
+def _finite(owner: str, **values: float) -> None:
+    """Each value a real number (not a bool), finite."""
+    for name, v in values.items():
+        if not isinstance(v, (int, float, np.floating, np.integer)) or isinstance(v, bool):
+            raise HybridError(f"{owner}.{name} must be a real number, got {v!r}")
+        if not math.isfinite(v):
+            raise HybridError(f"{owner}.{name} is {v}; give a finite value")
+
+
+def _point(owner: str, name: str, p, dims: tuple[int, ...] = (2,)) -> tuple[float, ...]:
+    """``p`` as a tuple of finite coordinates, of one of the lengths ``dims``."""
+    what = " or ".join({2: "two numbers (x, y)", 3: "three numbers (x, y, z)"}[d] for d in dims)
+    if isinstance(p, (str, bytes)):
+        raise HybridError(f"{owner}.{name} must be {what} in m, got {p!r}")
+    try:
+        arr = np.asarray(p, dtype=float)
+    except (TypeError, ValueError):
+        raise HybridError(f"{owner}.{name} must be {what} in m, got {p!r}") from None
+    if arr.ndim != 1 or arr.shape[0] not in dims:
+        raise HybridError(f"{owner}.{name} must be {what} in m, got shape {arr.shape}")
+    if not np.isfinite(arr).all():
+        raise HybridError(f"{owner}.{name} = {p!r} is not finite; give finite coordinates")
+    return tuple(float(v) for v in arr)

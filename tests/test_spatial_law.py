@@ -1,0 +1,223 @@
+"""The general (6-D) decoupling law of NOTES section 9 against Pinocchio + NumPy, finite differences and physics."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from conftest import PANDA, UR5, example_robot
+
+import hybrid
+from hybrid import reference as ref
+
+pin = pytest.importorskip("pinocchio")
+
+SURFACES = {
+    "plane": hybrid.Plane((0.3, 0.1, 0.2), (0.2, -0.3, 1.0)),
+    "sphere": hybrid.Sphere((0.4, 0.1, 0.3), 0.15),
+    "cylinder": hybrid.Cylinder((0.3, -0.2, 0.1), (0.2, 1.0, 0.4), 0.12),
+    "ellipsoid": hybrid.ImplicitSurface("(x - x0)**2/a**2 + (y/b)**2 + (z - z0)**2/c**2 - 1",
+                                        {"x0": 0.4, "z0": 0.3, "a": 0.25, "b": 0.2, "c": 0.15}),
+    "torus": hybrid.ImplicitSurface("(sqrt(x**2 + y**2) - R)**2 + (z - h)**2 - r**2", {"R": 0.4, "r": 0.1, "h": 0.3}),
+}
+
+
+@pytest.fixture(scope="module")
+def robots():
+    out = {}
+    for key, (path, tip) in {"ur5": UR5, "panda": PANDA}.items():
+        urdf = example_robot(path)
+        robot = hybrid.Robot.from_urdf(urdf, tip=tip)
+        robot = hybrid.Robot(robot.name, robot.chain, robot.links, tuple(np.linspace(0.1, 0.6, robot.n)),
+                             robot.gravity, robot.limits)  # viscosity on every joint
+        model = pin.buildModelFromUrdf(str(urdf))
+        if model.nq != robot.n:
+            extra = [model.getJointId(n) for n in model.names[1:] if n not in robot.joint_names]
+            model = pin.buildReducedModel(model, extra, pin.neutral(model))
+        out[key] = (robot, model, model.getFrameId(tip))
+    return out
+
+
+def pinocchio_terms(model, fid, q, qd, damping):
+    """J, J' q', B, n and the tip position from Pinocchio (the reference's inputs)."""
+    data = model.createData()
+    pin.forwardKinematics(model, data, q, qd, np.zeros_like(q))
+    pin.updateFramePlacements(model, data)
+    B = pin.crba(model, data, q)
+    return (pin.computeFrameJacobian(model, data, q, fid, pin.LOCAL_WORLD_ALIGNED),
+            pin.getFrameClassicalAcceleration(model, data, fid, pin.LOCAL_WORLD_ALIGNED).vector.copy(),
+            np.triu(B) + np.triu(B, 1).T, pin.nonLinearEffects(model, data, q, qd) + damping * qd,
+            data.oMf[fid].translation.copy())
+
+
+def well_conditioned_states(rng, robot, model, fid, surface, N, e=(0.0, 0.0, 1.0)):
+    """Random states with a well-conditioned J and a defined task frame (and their Pinocchio terms)."""
+    out = []
+    while len(out) < N:
+        q = rng.uniform(robot.limits.lower, robot.limits.upper)
+        qd = rng.normal(0, 1, robot.n)
+        terms = pinocchio_terms(model, fid, q, qd, np.array(robot.damping))
+        s = np.linalg.svd(terms[0], compute_uv=False)
+        R, _ = ref.spatial_frame(surface, terms[4], terms[0][:3] @ qd, e)
+        if s[-1] / s[0] > 0.05 and np.isfinite(R).all() and np.linalg.norm(np.cross(e, R[2])) > 0.1:
+            out.append((q, qd, terms))
+    return out
+
+
+@pytest.mark.parametrize("surface", list(SURFACES), ids=list(SURFACES))
+@pytest.mark.parametrize("key", ["ur5", "panda"])
+def test_law_matches_numpy_reference_on_pinocchio_terms(rng, robots, key, surface):
+    robot, model, fid = robots[key]
+    surf = SURFACES[surface]
+    states = well_conditioned_states(rng, robot, model, fid, surf, 500)
+    q = np.array([s[0] for s in states])
+    qd = np.array([s[1] for s in states])
+    a, Fc = rng.normal(0, 2, (len(q), 6)), rng.normal(0, 10, (len(q), 6))
+    tau0 = rng.normal(0, 3, (len(q), robot.n))
+    for curvature in (False, True):
+        law = hybrid.decoupling_law(robot, surf, curvature=curvature)
+        F, tau = law.evaluate(q, qd, a, Fc, tau0)
+        for i, (_, qdi, (J, Jdqd, B, n, p)) in enumerate(states):
+            R, Rd = ref.spatial_frame(surf, p, J[:3] @ qdi, (0, 0, 1))
+            F_ref, tau_ref = ref.spatial_decoupling_law(J, Jdqd, B, n, R, Rd, qdi, a[i], Fc[i], tau0[i],
+                                                        range(6), curvature)
+            np.testing.assert_allclose(F[i], F_ref, rtol=1e-9, atol=1e-9 * np.abs(F_ref).max())
+            np.testing.assert_allclose(tau[i], tau_ref, rtol=1e-9, atol=1e-9 * np.abs(tau_ref).max())
+
+
+@pytest.mark.parametrize("key", ["ur5", "panda"])
+def test_decoupling_identity_in_pinocchio_forward_dynamics(rng, robots, key):
+    """Apply tau and the wrench F_c to Pinocchio's arm: R v' + R' v = a, whatever tau0."""
+    robot, model, fid = robots[key]
+    surf = SURFACES["sphere"]
+    law = hybrid.decoupling_law(robot, surf, curvature=True)
+    data = model.createData()
+    damping = np.array(robot.damping)
+    worst = 0.0
+    for q, qd, (J, Jdqd, _, _, p) in well_conditioned_states(rng, robot, model, fid, surf, 100):
+        a, Fc = rng.normal(0, 2, 6), rng.normal(0, 10, 6)
+        tau0 = rng.normal(0, 5, robot.n) if key == "panda" else None
+        tau = law.torque(q, qd, a, Fc, tau0)
+        qdd = pin.aba(model, data, q, qd, tau + J.T @ Fc - damping * qd)
+        v, vdot = J @ qd, J @ qdd + Jdqd
+        R, Rd = ref.spatial_frame(surf, p, v[:3], (0, 0, 1))
+        Z = np.zeros((3, 3))
+        R6, Rd6 = np.block([[R, Z], [Z, R]]), np.block([[Rd, Z], [Z, Rd]])
+        y_dot = R6 @ vdot + Rd6 @ v
+        worst = max(worst, np.abs(y_dot - a).max() / max(1.0, np.abs(a).max()))
+    assert worst < 1e-8
+
+
+def test_null_space_torque_does_not_disturb_the_task(rng, robots):
+    robot, model, fid = robots["panda"]
+    law = hybrid.decoupling_law(robot, SURFACES["plane"])
+    q, qd, (J, *_) = well_conditioned_states(rng, robot, model, fid, SURFACES["plane"], 1)[0]
+    a, Fc, tau0 = rng.normal(size=6), rng.normal(size=6), rng.normal(0, 5, robot.n)
+    t0, t1 = law.torque(q, qd, a, Fc), law.torque(q, qd, a, Fc, tau0)
+    B = pinocchio_terms(model, fid, q, qd, 0 * qd)[2]
+    assert np.linalg.norm(t1 - t0) > 1.0                              # tau0 does act ...
+    np.testing.assert_allclose(J @ np.linalg.solve(B, t1 - t0), 0, atol=1e-10)   # ... but not on the task
+    np.testing.assert_array_equal(law(q, qd, a, Fc), law.evaluate(q, qd, a, Fc, tau0)[0])
+
+
+@pytest.mark.parametrize("surface", list(SURFACES), ids=list(SURFACES))
+def test_task_frame_derivative_by_finite_differences(rng, robots, surface):
+    robot = robots["ur5"][0]
+    surf = SURFACES[surface]
+    law = hybrid.decoupling_law(robot, surf)
+    h = 1e-6
+    for _ in range(30):
+        p, pd = rng.uniform(-0.6, 0.6, 3), rng.normal(0, 0.5, 3)
+        R, Rd = law.task_frame(p, pd)
+        fd = (law.task_frame(p + h * pd, pd)[0] - law.task_frame(p - h * pd, pd)[0]) / (2 * h)
+        np.testing.assert_allclose(Rd, fd, atol=1e-6 * max(1.0, np.abs(Rd).max()))
+        np.testing.assert_allclose(R @ R.T, np.eye(3), atol=1e-12)
+        assert np.linalg.det(R) == pytest.approx(1.0)
+        np.testing.assert_allclose(R[2], surf.normal_at(p), atol=1e-12)   # third row: the normal
+        np.testing.assert_allclose(R[0], np.cross((0, 0, 1), R[2]) / np.linalg.norm(np.cross((0, 0, 1), R[2])),
+                                   atol=1e-12)
+
+
+def test_planar_arm_through_the_general_pipeline_equals_the_planar_law(rng):
+    arm = hybrid.paper_arm()
+    robot = hybrid.Robot.planar(arm)
+    for surf in (hybrid.Circle((0.5, 0.0), 0.2), hybrid.Plane((0.4, 0.0), (-1.0, 0.3))):
+        for curvature in (False, True):
+            planar = hybrid.decoupling_law(arm, surf, curvature=curvature)
+            general = hybrid.decoupling_law(robot, surf, curvature=curvature, axes="planar")
+            q = np.column_stack([rng.uniform(-np.pi, np.pi, 500), rng.uniform(0.3, np.pi - 0.3, 500)])
+            qd, a, Fc2 = rng.normal(0, 1, (500, 2)), rng.normal(0, 2, (500, 2)), rng.normal(0, 10, (500, 2))
+            Fc = np.column_stack([Fc2, np.zeros((500, 4))])
+            F1, tau1 = planar.evaluate(q, qd, a, Fc2)
+            F2, tau2 = general.evaluate(q, qd, a, Fc)
+            np.testing.assert_allclose(F2[:, :2], F1, rtol=1e-12, atol=1e-12 * np.abs(F1).max())
+            np.testing.assert_allclose(tau2, tau1, rtol=1e-12, atol=1e-12 * np.abs(tau1).max())
+            assert np.abs(F2[:, 2:]).max() == 0.0
+
+
+def test_position_only_task(rng, robots):
+    """Three linear task axes on the UR5: the linear rows of y' = a hold, tau0 acts in the null space."""
+    robot, model, fid = robots["ur5"]
+    law = hybrid.decoupling_law(robot, SURFACES["sphere"], curvature=True, axes="position")
+    assert law.m == 3
+    data = model.createData()
+    for q, qd, (J, Jdqd, _, _, p) in well_conditioned_states(rng, robot, model, fid, SURFACES["sphere"], 20):
+        a, Fc, tau0 = rng.normal(size=3), rng.normal(0, 5, 6), rng.normal(0, 2, 6)
+        tau = law.torque(q, qd, a, Fc, tau0)
+        qdd = pin.aba(model, data, q, qd, tau + J.T @ Fc - np.array(robot.damping) * qd)
+        v, vdot = J @ qd, J @ qdd + Jdqd
+        R, Rd = ref.spatial_frame(SURFACES["sphere"], p, v[:3], (0, 0, 1))
+        np.testing.assert_allclose(R @ vdot[:3] + Rd @ v[:3], a, atol=1e-8)
+
+
+def test_operational_space_twist_and_euler(rng, robots):
+    robot, model, fid = robots["ur5"]
+    for q, qd, (J, Jdqd, B, n, _) in well_conditioned_states(rng, robot, model, fid, SURFACES["plane"], 20):
+        tw = hybrid.operational_space(robot, q, qd)
+        Lam = np.linalg.inv(J @ np.linalg.solve(B, J.T))
+        np.testing.assert_allclose(tw.B_o, Lam, rtol=1e-9, atol=1e-9 * np.abs(Lam).max())
+        mu = Lam @ J @ np.linalg.solve(B, n) - Lam @ Jdqd
+        np.testing.assert_allclose(tw.n_o, mu, rtol=1e-9, atol=1e-9 * np.abs(mu).max())
+        eu = hybrid.operational_space(robot, q, qd, coordinates="euler_zyx")
+        Tinv = np.linalg.inv(eu.T)
+        np.testing.assert_allclose(Tinv.T @ eu.B_o @ Tinv, Lam, rtol=1e-9, atol=1e-9 * np.abs(Lam).max())  # Bbar_o
+        # the angles reproduce the tip rotation, and w = T_A phi'
+        alpha, beta, gamma = eu.r[3:]
+        rot = hybrid.arm_terms(robot, q, qd)["rotation"]
+        Rz = np.array([[np.cos(alpha), -np.sin(alpha), 0], [np.sin(alpha), np.cos(alpha), 0], [0, 0, 1]])
+        Ry = np.array([[np.cos(beta), 0, np.sin(beta)], [0, 1, 0], [-np.sin(beta), 0, np.cos(beta)]])
+        Rx = np.array([[1, 0, 0], [0, np.cos(gamma), -np.sin(gamma)], [0, np.sin(gamma), np.cos(gamma)]])
+        np.testing.assert_allclose(Rz @ Ry @ Rx, rot, atol=1e-12)
+        np.testing.assert_allclose(eu.T @ eu.rdot, J @ qd, atol=1e-12)
+        # T_A by finite differences of the rotation: w^ = R' R^T along phi'
+        h = 1e-6
+        qp, qm = q + h * qd, q - h * qd
+        Rp, Rm = (hybrid.arm_terms(robot, x, qd)["rotation"] for x in (qp, qm))
+        W = (Rp - Rm) / (2 * h) @ rot.T
+        np.testing.assert_allclose([W[2, 1], W[0, 2], W[1, 0]], eu.T[3:, 3:] @ eu.rdot[3:], atol=1e-7)
+        # T' by finite differences of T along the motion
+        Tp = hybrid.operational_space(robot, qp, qd, coordinates="euler_zyx").T
+        Tm = hybrid.operational_space(robot, qm, qd, coordinates="euler_zyx").T
+        np.testing.assert_allclose(eu.Tdot, (Tp - Tm) / (2 * h), atol=1e-6)
+        # B_o r'' + n_o = T^T F for the same motion as Lambda v' + mu = F
+        F = rng.normal(size=6)
+        vdot = np.linalg.solve(Lam, F - mu)
+        rdd = np.linalg.solve(eu.T, vdot - eu.Tdot @ eu.rdot)
+        np.testing.assert_allclose(eu.B_o @ rdd + eu.n_o, eu.T.T @ F, atol=1e-9 * max(1, np.abs(F).max()))
+
+
+def test_every_output_element_is_written(rng, robots):
+    """Outputs pre-filled with NaN come back finite: no element is left to the caller's garbage."""
+    robot, model, fid = robots["ur5"]
+    law = hybrid.decoupling_law(robot, SURFACES["torus"], curvature=True)
+    q, qd, _ = well_conditioned_states(rng, robot, model, fid, SURFACES["torus"], 1)[0]
+    values = {"q": q, "qd": qd, "qdd": rng.normal(size=6), "tau": rng.normal(size=6), "tau0": rng.normal(size=6),
+              "a": rng.normal(size=6), "Fc": rng.normal(size=6), "robot": robot.as_array(),
+              "surface": SURFACES["torus"].as_array(), "e": np.array([0.0, 0.0, 1.0]), "opts": np.ones(1),
+              "p": np.array([0.5, 0.1, 0.35]), "pd": rng.normal(size=3)}
+    functions = [robot.unit.function(f["name"]) for f in robot.unit.manifest["functions"]]
+    functions += [law._law, law._frame]
+    for fn in functions:
+        ins = [np.ascontiguousarray(values[name], dtype=float) for name, _ in fn.inputs]
+        outs = [np.full(size, np.nan) for _, size, _ in fn.outputs]
+        assert fn.into(*ins, *outs, singular_tol=1e-6) == 0, fn.name
+        assert all(np.isfinite(o).all() for o in outs), fn.name
