@@ -83,7 +83,7 @@ def kernel_function(kernel: Kernel) -> ca.Function:
         outs = [ca.vertcat(*[to_sx(e, symbols, memo) for e in a.expr]) for a in outputs]
     # our C fills every element of an output: structural zeros must become stored zeros
     outs = [ca.densify(o) for o in outs]
-    outs = [ca.cse(o) for o in outs] if hasattr(ca, "cse") else outs
+    outs = ca.cse(outs)  # jointly: a subexpression shared by two outputs is computed once
     return ca.Function(kernel.name, args, outs, [a.name for a in kernel.inputs], [a.name for a in outputs])
 
 

@@ -15,13 +15,19 @@ def _zero():
     return ca.SX(0)
 
 
+def reciprocal(y) -> ca.SX:
+    """``1/y`` that stays a reciprocal: CasADi rewrites ``x * (1/y)`` as ``x / y``, and a division
+    costs several multiplications; ``copysign`` (exact: ``1/y`` has the sign of ``y``) stops that."""
+    return ca.copysign(1 / y, y)
+
+
 def cholesky(A) -> list[list]:
     """Lower-triangular ``L`` (a list of rows) with ``A = L L^T``."""
     n = A.shape[0]
     L = [[None] * n for _ in range(n)]
     for j in range(n):
         L[j][j] = ca.sqrt(A[j, j] - sum((L[j][k] ** 2 for k in range(j)), _zero()))
-        inv = 1 / L[j][j]
+        inv = reciprocal(L[j][j])
         for i in range(j + 1, n):
             L[i][j] = (A[i, j] - sum((L[i][k] * L[j][k] for k in range(j)), _zero())) * inv
     return L
@@ -32,7 +38,7 @@ def forward_substitution(L, b) -> list:
     n = len(L)
     y = [None] * n
     for i in range(n):
-        y[i] = (b[i] - sum((L[i][k] * y[k] for k in range(i)), _zero())) / L[i][i]
+        y[i] = (b[i] - sum((L[i][k] * y[k] for k in range(i)), _zero())) * reciprocal(L[i][i])
     return y
 
 
@@ -41,7 +47,7 @@ def back_substitution_transposed(L, y) -> list:
     n = len(L)
     x = [None] * n
     for i in reversed(range(n)):
-        x[i] = (y[i] - sum((L[k][i] * x[k] for k in range(i + 1, n)), _zero())) / L[i][i]
+        x[i] = (y[i] - sum((L[k][i] * x[k] for k in range(i + 1, n)), _zero())) * reciprocal(L[i][i])
     return x
 
 
@@ -72,7 +78,7 @@ def thin_qr(A) -> tuple[list, list[list]]:
             R[i][j] = ca.dot(Q[i], v)
             v = v - R[i][j] * Q[i]
         R[j][j] = ca.norm_2(v)
-        Q.append(v / R[j][j])
+        Q.append(v * reciprocal(R[j][j]))
     return Q, R
 
 
@@ -84,7 +90,7 @@ def upper_inverse_frobenius2(R) -> ca.SX:
         x = [_zero()] * m
         for i in reversed(range(col + 1)):
             rhs = (1.0 if i == col else 0.0) - sum((R[i][k] * x[k] for k in range(i + 1, col + 1)), _zero())
-            x[i] = rhs / R[i][i]
+            x[i] = rhs * reciprocal(R[i][i])
         total = total + sum((xi * xi for xi in x[:col + 1]), _zero())
     return total
 

@@ -20,6 +20,7 @@ import casadi as ca
 import sympy as sp
 
 from .casadi_backend import to_sx
+from .factor import reciprocal
 
 X, Y, Z = sp.symbols("x y z", real=True)
 #: below this ``|e x n|`` (the sine of the angle between ``e`` and ``n``) the task frame is undefined
@@ -116,11 +117,11 @@ def task_frame(spec: SurfaceSpec, p, pd, theta, e) -> TaskFrame:
 def _frame_on_symbols(spec: SurfaceSpec, p, pd, theta, e):
     phi = phi_sx(spec, p, theta)
     grad = ca.gradient(phi, p)
-    n = grad / ca.norm_2(grad)
-    e_unit = e / ca.norm_2(e)
+    n = grad * reciprocal(ca.norm_2(grad))
+    e_unit = e * reciprocal(ca.norm_2(e))
     c = _cross(e_unit, n)
     sine = ca.norm_2(c)
-    t1 = c / sine
+    t1 = c * reciprocal(sine)
     t2 = _cross(n, t1)
     R = ca.vertcat(t1.T, t2.T, n.T)
     Rd = ca.reshape(ca.jtimes(ca.reshape(R, 9, 1), p, pd), 3, 3)

@@ -11,8 +11,9 @@ the same axes); a task uses ``m`` of them (``axes``): all six, the three linear 
 
 For all six axes this is ``F* = Lambda (R^T (a - R' v) - J' q') + Jbar^T n - F_c`` of NOTES
 section 9; applying ``tau`` gives ``R_m v' + R_m' v = a`` whatever ``tau0``. A square task
-(``m = n``) is solved through the thin QR of ``J_y^T`` (no factorisation of ``B``, ``tau0`` has no
-effect); a redundant one through the Cholesky factors of ``B`` and of ``Lambda_y^-1``.
+(``m = n``) is solved through the thin QR of ``J_y^T``, and ``tau = B q''* + n - J^T F_c`` by one
+Newton-Euler pass (no ``B`` at all; ``tau0`` has no effect); a redundant one through the Cholesky
+factors of ``B`` and of ``Lambda_y^-1``.
 The conditioning guard is ``m / (|J_y|_F |J_y^+|_F)``, from the same QR.
 """
 
@@ -67,8 +68,6 @@ def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tu
     fr = rb.forward_kinematics(chain, q)
     J = rb.frame_jacobian(fr)
     Jdqd = rb.frame_classical_acceleration(fr, qd)
-    B = rb.crba(chain, fr, params)
-    bias = rb.rnea(chain, fr, params, qd)
     v = J @ qd
     tf = task_frame(spec, fr.tip_p, v[:3], theta, e)
     Rm, Rdm = _rows(_blockdiag(tf.R), axes), _rows(_blockdiag(tf.Rd), axes)
@@ -76,15 +75,17 @@ def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tu
     b = a - opts[0] * (Rdm @ v) - Rm @ Jdqd
     Q, Rq = factor.thin_qr(Jy.T)
     cond = factor.frobenius_conditioning(Jy, Rq)
-    h = bias - J.T @ Fc
     if m == n:
-        # J_y square: q''* = J_y^-1 b = Q R^-T b, tau = B q''* + n - J^T F_c, f_y = J_y^-T tau
+        # J_y square: q''* = J_y^-1 b = Q R^-T b; tau = B q''* + n - J^T F_c is one RNEA pass (no B);
+        # f_y = J_y^-T tau
         z = factor.forward_substitution([[Rq[j][i] for j in range(m)] for i in range(m)], b)  # R^T z = b
         qdd = sum((Q[i] * z[i] for i in range(m)), ca.SX.zeros(n, 1))
-        tau = B @ qdd + h
+        tau = rb.rnea(chain, fr, params, qd, qdd) - J.T @ Fc
         y = ca.vertcat(*(ca.dot(Q[i], tau) for i in range(m)))
         f_y = _upper_solve(Rq, y)
     else:
+        B = rb.crba(chain, fr, params)
+        h = rb.rnea(chain, fr, params, qd) - J.T @ Fc
         L = factor.cholesky(B)
         Y = factor.lower_columns_solve(L, Jy.T)           # L^-1 J_y^T, n x m
         K = factor.cholesky(Y.T @ Y)                      # Lambda_y^-1 = K K^T
@@ -130,7 +131,7 @@ def _upper_solve(R, y) -> ca.SX:
     m = len(R)
     x = [None] * m
     for i in reversed(range(m)):
-        x[i] = (y[i] - sum((R[i][k] * x[k] for k in range(i + 1, m)), ca.SX(0))) / R[i][i]
+        x[i] = (y[i] - sum((R[i][k] * x[k] for k in range(i + 1, m)), ca.SX(0))) * factor.reciprocal(R[i][i])
     return ca.vertcat(*x)
 
 

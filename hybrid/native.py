@@ -17,6 +17,7 @@ import importlib.util
 import io
 import json
 import os
+import platform
 import shutil
 import subprocess
 import sysconfig
@@ -29,8 +30,22 @@ import cffi
 
 from .errors import NativeBuildError
 
-#: flags for the extension; no -ffast-math: the status checks rely on isfinite()
-CFLAGS = ("-O3", "-fPIC", "-fno-math-errno", "-std=gnu99")
+#: flags for the extension; no -ffast-math: the status checks rely on isfinite(). On x86-64 the
+#: code is tuned for this processor (FMA, AVX-512 where present): the cache key then carries the
+#: processor's identity, so a shared cache never hands a build to a machine that cannot run it.
+CFLAGS = ("-O3", "-fPIC", "-fno-math-errno", "-std=gnu99") + (
+    ("-march=native",) if platform.machine() in ("x86_64", "AMD64") else ())
+
+
+@cache
+def processor() -> str:
+    """The processor's identity (model and instruction-set flags) for the cache key."""
+    try:
+        lines = Path("/proc/cpuinfo").read_text().splitlines()
+    except OSError:
+        return f"{platform.machine()} {platform.processor()}"
+    pick = [ln.split(":", 1)[1].strip() for ln in lines if ln.startswith(("model name", "flags", "Features"))]
+    return hashlib.sha256(" | ".join(dict.fromkeys(pick)).encode()).hexdigest()[:16] + f" {platform.machine()}"
 
 
 def source_dir() -> Path:
@@ -124,7 +139,7 @@ def _cached_module(stem: str, key_material: dict, write_source: Callable[[str, P
     to any of them builds a new entry instead of loading a stale one.
     """
     cc, ident = compiler()
-    material = json.dumps({**key_material, "cc": [cc, ident], "flags": CFLAGS,
+    material = json.dumps({**key_material, "cc": [cc, ident], "flags": CFLAGS, "cpu": processor(),
                            "abi": sysconfig.get_config_var("EXT_SUFFIX")}, sort_keys=True)
     name = f"{stem}_{hashlib.sha256(material.encode()).hexdigest()[:20]}"
     entry = cache_dir() / name
