@@ -9,6 +9,8 @@ status code into a :class:`~hybrid.errors.HybridError` naming the inputs.
 
 from __future__ import annotations
 
+import os
+
 import numpy as np
 
 from .errors import HybridError, NonFiniteError, SingularConfigurationError, TaskFrameError
@@ -52,6 +54,34 @@ def as_array(name: str, x, size: int, batched: bool = False) -> np.ndarray:
     return arr
 
 
+#: fewer states than this run on the calling thread (a thread hand-off costs some microseconds)
+PARALLEL_MIN_STATES = 512
+_POOL = None
+
+
+def _workers() -> int:
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
+def parallel_chunks(run, N: int) -> list[int]:
+    """``run(lo, hi)`` over ``[0, N)`` in one contiguous chunk per core (the native call releases
+    the GIL, so the chunks run at once); results in chunk order. States are independent, so the
+    outputs do not depend on the split."""
+    global _POOL
+    workers = min(_workers(), N // PARALLEL_MIN_STATES)
+    if workers <= 1:
+        return [run(0, N)]
+    if _POOL is None:
+        from concurrent.futures import ThreadPoolExecutor
+
+        _POOL = ThreadPoolExecutor(max_workers=_workers(), thread_name_prefix="hybrid-batch")
+    bounds = np.linspace(0, N, workers + 1).astype(int)
+    return list(_POOL.map(run, bounds[:-1], bounds[1:]))
+
+
 class Function:
     """One generated function, called as its manifest describes it.
 
@@ -60,8 +90,8 @@ class Function:
     ``(N, size)``) in one native call.
     """
 
-    def __init__(self, module, entry: dict, singular_hint: str = "", labels: dict | None = None):
-        self.entry = entry
+    def __init__(self, module, entry: dict, singular_hint: str = "", labels: dict | None = None, unit=None):
+        self.entry, self.unit = entry, unit
         self.name = entry["name"]
         self.inputs = [(a["name"], a["size"]) for a in entry["inputs"]]
         self.outputs = [(a["name"], a["size"], tuple(a["shape"])) for a in entry["outputs"]]
@@ -77,6 +107,14 @@ class Function:
         sizes = [size for _, size, _ in self.outputs]
         self._offsets = [sum(sizes[:i]) for i in range(len(sizes))]
         self._total = sum(sizes)
+
+    def fast_bind(self, n_state: int, *params, singular_tol: float | None = None):
+        """``(call, binding)`` of the one-state entry point with the inputs after the first
+        ``n_state`` fixed to ``params``: ``call(binding, which, *states)`` returns output ``which``
+        (-1: all, as a tuple), or None off the fast path (then call this function for the error)."""
+        fast = self.unit.fast()
+        tol = float(singular_tol) if self.takes_singular_tol else 0.0
+        return fast.call, fast.bind(self.entry["symbol"], n_state, tuple(np.asarray(p, float) for p in params), tol)
 
     def size(self, name: str) -> int:
         """Number of elements of the input or output ``name``."""
@@ -144,9 +182,15 @@ class Function:
         N = lengths.pop()
         outs = {n: np.empty((N, size)) for n, size, _ in self.outputs}
         status = np.empty(N, dtype=np.intc)
+        extra = self._extra(singular_tol)
         fb = self._ffi.from_buffer
-        failed = self._batch(N, *(fb("double[]", v) for v in ins.values()), *self._extra(singular_tol),
-                             *(fb("double[]", v) for v in outs.values()), fb("int[]", status))
+
+        def run(lo: int, hi: int) -> int:
+            rows = [v[lo:hi] if n in self.per_state else v for n, v in ins.items()]
+            return self._batch(hi - lo, *(fb("double[]", v) for v in rows), *extra,
+                               *(fb("double[]", v[lo:hi]) for v in outs.values()), fb("int[]", status[lo:hi]))
+
+        failed = sum(parallel_chunks(run, N))
         if failed:
             i = int(np.flatnonzero(status)[0])
             raise status_error(int(status[i]), f"{self.name}, state {i} of {N} ({failed} failed)", self._hint,
@@ -171,6 +215,7 @@ class Unit:
     def __init__(self, module, manifest: dict, singular_hint: str = "", labels: dict | None = None,
                  folder=None):
         self.module, self.manifest, self.folder = module, manifest, folder
+        self._fast = None
         self._entries = {f["name"]: f for f in manifest["functions"]}
         self._hint, self._labels = singular_hint, labels
         self._bound: dict[str, Function] = {}
@@ -180,8 +225,18 @@ class Unit:
             if name not in self._entries:
                 raise HybridError(f"the unit {self.manifest['unit']} has no function {name!r}; "
                                   f"it has {', '.join(self._entries)}")
-            self._bound[name] = Function(self.module, self._entries[name], self._hint, self._labels)
+            self._bound[name] = Function(self.module, self._entries[name], self._hint, self._labels, self)
         return self._bound[name]
+
+    def fast(self):
+        """The unit's one-state CPython entry point (``hybrid/fastcall.c``), compiled on first use."""
+        if self._fast is None:
+            from pathlib import Path
+
+            from .native import load_fastcall
+
+            self._fast = load_fastcall(Path(self.folder), self.manifest["unit"], self.manifest)
+        return self._fast
 
     def entry(self, name: str) -> dict:
         return self.function(name).entry

@@ -1,21 +1,22 @@
-/* One-state entry point of the decoupling law for CPython: the call path of `law(q, qdot, a, Fc)`.
+/* One-state entry point for CPython: any function of a generated unit, called on NumPy arrays.
  *
  * cffi costs about 1 us per call (a buffer conversion per array); this extension reads the
- * NumPy arrays' data pointers directly and calls the generated C, so the law is a few hundred
- * nanoseconds from Python. It is compiled and cached by hybrid/native.py, which puts before
- * this file:
+ * NumPy arrays' data pointers directly and calls the generated C, so a law is a few hundred
+ * nanoseconds from Python. It is compiled and cached by hybrid/native.py, which writes before
+ * this file, from the unit's manifest:
  *
- *   #include "hybrid_<backend>.c"          the generated unit
- *   #define HYBRID_NQ         ...            size of q, qdot, a, Fc, F*, tau
- *   #define HYBRID_ARM_SIZE, HYBRID_SURFACE_SIZE, HYBRID_OPTS_SIZE   the largest parameter arrays
- *   #define HYBRID_LAWS       ...            {"symbol", function, arm size, surface size, opts size}, ...
- *   #define HYBRID_MODULE     ...            the module's name (its cache key)
+ *   #include "<prefix>.c"                 the generated unit
+ *   static int adapt_K(const double *const *in, double tol, double *const *out) { ... }
+ *                                         one per function: calls it with its arguments in order
+ *   #define HYBRID_FAST_FUNCTIONS ...     {"symbol", adapt_K, n_in, n_out, {in sizes}, {out rows, cols}}, ...
+ *   #define HYBRID_FAST_MAX_OUT ...       the largest total output size
+ *   #define HYBRID_MODULE ...             the module's name (its cache key)
  *
- * all read off the unit's manifest by hybrid/native.py.
- *
- * Anything off the fast path (lists, other dtypes, N states, a non-OK status) returns None,
- * and the Python caller takes its checked path, which raises the descriptive error. The
- * binding is read-only once made, so concurrent calls from threads are safe.
+ * bind(symbol, n_state, params, singular_tol) fixes the trailing inputs (the parameters);
+ * call(binding, which, *states) takes the leading ones. Anything off the fast path (lists,
+ * other dtypes, strided or byte-swapped arrays, N states, a non-OK status) returns None, and
+ * the Python caller takes its checked path, which raises the descriptive error. A binding is
+ * read-only once made, so concurrent calls from threads are safe.
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
@@ -28,128 +29,150 @@
 #define HYBRID_STR(x) HYBRID_STR_(x)
 #define HYBRID_INIT_(name) PyInit_##name
 #define HYBRID_INIT(name) HYBRID_INIT_(name)
+#define HYBRID_FAST_MAX_ARGS 16
 
-typedef int (*law_fn)(const double *, const double *, const double *, const double *, const double *,
-                      const double *, const double *, double, double *, double *);
+typedef int (*adapter)(const double *const *in, double tol, double *const *out);
 
 typedef struct {
     const char *symbol;
-    law_fn law;
-    Py_ssize_t n_arm, n_surface, n_opts;
-} law_entry;
+    adapter fn;
+    int n_in, n_out;
+    Py_ssize_t in_size[HYBRID_FAST_MAX_ARGS];
+    npy_intp out_shape[HYBRID_FAST_MAX_ARGS][2]; /* rows, cols (cols 0: a vector) */
+} fast_function;
 
-static const law_entry LAWS[] = {HYBRID_LAWS};
+static const fast_function FUNCTIONS[] = {HYBRID_FAST_FUNCTIONS};
 
-/* the parameters of one DecouplingLaw, copied at bind time */
+/* a function with its parameters (the inputs after the state ones) copied at bind time */
 typedef struct {
-    law_fn law;
-    double arm[HYBRID_ARM_SIZE], surface[HYBRID_SURFACE_SIZE], opts[HYBRID_OPTS_SIZE];
-    double singular_tol;
+    const fast_function *f;
+    int n_state;
+    double tol;
+    double *params[HYBRID_FAST_MAX_ARGS];
 } binding;
 
 static const char CAPSULE[] = "hybrid.fastcall.binding";
 
-static void binding_free(PyObject *capsule) { free(PyCapsule_GetPointer(capsule, CAPSULE)); }
-
-static int copy_doubles(PyObject *obj, double *dst, Py_ssize_t n, const char *what) {
-    PyArrayObject *arr = (PyArrayObject *)PyArray_FROMANY(obj, NPY_DOUBLE, 1, 1, NPY_ARRAY_CARRAY_RO);
-    if (arr == NULL) return -1;
-    if (PyArray_DIM(arr, 0) != n) {
-        PyErr_Format(PyExc_ValueError, "fastcall.bind: %s must hold %zd values, got %zd", what, n,
-                     (Py_ssize_t)PyArray_DIM(arr, 0));
-        Py_DECREF(arr);
-        return -1;
-    }
-    memcpy(dst, PyArray_DATA(arr), (size_t)n * sizeof(double));
-    Py_DECREF(arr);
-    return 0;
+static void binding_release(binding *b) {
+    int i;
+    for (i = 0; i < HYBRID_FAST_MAX_ARGS; ++i) free(b->params[i]);
+    free(b);
 }
 
-/* bind(symbol, arm, surface, opts, singular_tol) -> capsule; symbol names a law of the unit */
+static void binding_free(PyObject *capsule) { binding_release(PyCapsule_GetPointer(capsule, CAPSULE)); }
+
+/* bind(symbol, n_state, params, singular_tol) -> capsule */
 static PyObject *bind(PyObject *self, PyObject *args) {
     const char *symbol;
-    PyObject *arm, *surface, *opts;
+    int n_state, i;
+    PyObject *params;
     double tol;
-    size_t i;
-    const law_entry *entry = NULL;
+    const fast_function *f = NULL;
+    size_t k;
     (void)self;
-    if (!PyArg_ParseTuple(args, "sOOOd", &symbol, &arm, &surface, &opts, &tol)) return NULL;
-    for (i = 0; i < sizeof LAWS / sizeof LAWS[0]; ++i) {
-        if (strcmp(LAWS[i].symbol, symbol) == 0) entry = &LAWS[i];
+    if (!PyArg_ParseTuple(args, "siO!d", &symbol, &n_state, &PyTuple_Type, &params, &tol)) return NULL;
+    for (k = 0; k < sizeof FUNCTIONS / sizeof FUNCTIONS[0]; ++k) {
+        if (strcmp(FUNCTIONS[k].symbol, symbol) == 0) f = &FUNCTIONS[k];
     }
-    if (entry == NULL) {
-        PyErr_Format(PyExc_ValueError, "fastcall.bind: the unit has no law '%s'", symbol);
-        return NULL;
+    if (f == NULL) return PyErr_Format(PyExc_ValueError, "fastcall.bind: the unit has no function '%s'", symbol);
+    if (n_state < 0 || n_state + PyTuple_GET_SIZE(params) != f->n_in)
+        return PyErr_Format(PyExc_ValueError, "fastcall.bind: %s takes %d inputs", symbol, f->n_in);
+    binding *b = calloc(1, sizeof *b);
+    if (b == NULL) return PyErr_NoMemory();
+    b->f = f;
+    b->n_state = n_state;
+    b->tol = tol;
+    for (i = n_state; i < f->n_in; ++i) {
+        PyArrayObject *arr = (PyArrayObject *)PyArray_FROMANY(PyTuple_GET_ITEM(params, i - n_state), NPY_DOUBLE,
+                                                              1, 1, NPY_ARRAY_CARRAY_RO);
+        Py_ssize_t n = f->in_size[i];
+        if (arr == NULL || PyArray_DIM(arr, 0) != n) {
+            Py_XDECREF(arr);
+            binding_release(b);
+            if (!PyErr_Occurred()) PyErr_Format(PyExc_ValueError, "fastcall.bind: input %d needs %zd values", i, n);
+            return NULL;
+        }
+        b->params[i] = malloc((size_t)(n > 0 ? n : 1) * sizeof(double));
+        if (b->params[i] != NULL) memcpy(b->params[i], PyArray_DATA(arr), (size_t)n * sizeof(double));
+        Py_DECREF(arr);
+        if (b->params[i] == NULL) {
+            binding_release(b);
+            return PyErr_NoMemory();
+        }
     }
-    binding b;
-    memset(&b, 0, sizeof b);
-    b.law = entry->law;
-    b.singular_tol = tol;
-    if (copy_doubles(arm, b.arm, entry->n_arm, "arm") || copy_doubles(surface, b.surface, entry->n_surface, "surface")
-        || copy_doubles(opts, b.opts, entry->n_opts, "opts"))
-        return NULL;
-    binding *heap = malloc(sizeof b);
-    if (heap == NULL) return PyErr_NoMemory();
-    *heap = b;
-    PyObject *capsule = PyCapsule_New(heap, CAPSULE, binding_free);
-    if (capsule == NULL) free(heap);
+    PyObject *capsule = PyCapsule_New(b, CAPSULE, binding_free);
+    if (capsule == NULL) binding_release(b);
     return capsule;
 }
 
-/* the data of a 1-D C-contiguous aligned float64 array of HYBRID_NQ values, else NULL */
-static const double *pair(PyObject *obj) {
+/* the data of a 1-D C-contiguous aligned native float64 array of n values, else NULL */
+static const double *vector(PyObject *obj, Py_ssize_t n) {
     if (!PyArray_Check(obj)) return NULL;
     PyArrayObject *arr = (PyArrayObject *)obj;
-    if (PyArray_NDIM(arr) != 1 || PyArray_DIM(arr, 0) != HYBRID_NQ || PyArray_TYPE(arr) != NPY_DOUBLE
+    if (PyArray_NDIM(arr) != 1 || PyArray_DIM(arr, 0) != n || PyArray_TYPE(arr) != NPY_DOUBLE
         || !PyArray_ISCARRAY_RO(arr) || PyArray_ISBYTESWAPPED(arr))
         return NULL;
     return (const double *)PyArray_DATA(arr);
 }
 
-/* call(binding, which, q, qdot, a, Fc) -> F* (which 0), tau (1), (F*, tau) (2), or None */
+static PyObject *new_output(const fast_function *f, int k, const double *data) {
+    npy_intp dims[2] = {f->out_shape[k][0], f->out_shape[k][1]};
+    PyObject *out = PyArray_SimpleNew(dims[1] ? 2 : 1, dims, NPY_DOUBLE);
+    if (out != NULL) memcpy(PyArray_DATA((PyArrayObject *)out), data, (size_t)PyArray_SIZE((PyArrayObject *)out) * sizeof(double));
+    return out;
+}
+
+/* call(binding, which, *states) -> output `which`, a tuple of all (which = -1), or None */
 static PyObject *call(PyObject *self, PyObject *const *args, Py_ssize_t nargs) {
+    const double *in[HYBRID_FAST_MAX_ARGS];
+    double buf[HYBRID_FAST_MAX_OUT];
+    double *out[HYBRID_FAST_MAX_ARGS];
+    int i, k;
+    Py_ssize_t offset = 0;
     (void)self;
-    if (nargs != 6) {
-        PyErr_SetString(PyExc_TypeError, "fastcall.call takes (binding, which, q, qdot, a, Fc)");
+    if (nargs < 2) {
+        PyErr_SetString(PyExc_TypeError, "fastcall.call takes (binding, which, *states)");
         return NULL;
     }
     const binding *b = PyCapsule_GetPointer(args[0], CAPSULE);
     if (b == NULL) return NULL;
+    const fast_function *f = b->f;
     long which = PyLong_AsLong(args[1]);
     if (which == -1 && PyErr_Occurred()) return NULL;
-    const double *q = pair(args[2]), *qd = pair(args[3]), *a = pair(args[4]), *Fc = pair(args[5]);
-    if (q == NULL || qd == NULL || a == NULL || Fc == NULL) Py_RETURN_NONE;
-    double F[HYBRID_NQ], tau[HYBRID_NQ];
-    if (b->law(q, qd, a, Fc, b->arm, b->surface, b->opts, b->singular_tol, F, tau) != 0) Py_RETURN_NONE;
-    npy_intp dims[1] = {HYBRID_NQ};
-    if (which == 0 || which == 1) {
-        PyObject *out = PyArray_SimpleNew(1, dims, NPY_DOUBLE);
-        if (out != NULL) memcpy(PyArray_DATA((PyArrayObject *)out), which == 0 ? F : tau, sizeof F);
-        return out;
+    if (nargs - 2 != b->n_state || which < -1 || which >= f->n_out) Py_RETURN_NONE;
+    for (i = 0; i < b->n_state; ++i) {
+        in[i] = vector(args[2 + i], f->in_size[i]);
+        if (in[i] == NULL) Py_RETURN_NONE;
     }
-    PyObject *pair_out = PyTuple_New(2);
-    if (pair_out == NULL) return NULL;
-    for (int k = 0; k < 2; ++k) {
-        PyObject *out = PyArray_SimpleNew(1, dims, NPY_DOUBLE);
-        if (out == NULL) {
-            Py_DECREF(pair_out);
+    for (i = b->n_state; i < f->n_in; ++i) in[i] = b->params[i];
+    for (k = 0; k < f->n_out; ++k) {
+        out[k] = buf + offset;
+        offset += f->out_shape[k][0] * (f->out_shape[k][1] ? f->out_shape[k][1] : 1);
+    }
+    if (f->fn(in, b->tol, out) != 0) Py_RETURN_NONE;
+    if (which >= 0) return new_output(f, (int)which, out[which]);
+    PyObject *all = PyTuple_New(f->n_out);
+    if (all == NULL) return NULL;
+    for (k = 0; k < f->n_out; ++k) {
+        PyObject *o = new_output(f, k, out[k]);
+        if (o == NULL) {
+            Py_DECREF(all);
             return NULL;
         }
-        memcpy(PyArray_DATA((PyArrayObject *)out), k == 0 ? F : tau, sizeof F);
-        PyTuple_SET_ITEM(pair_out, k, out);
+        PyTuple_SET_ITEM(all, k, o);
     }
-    return pair_out;
+    return all;
 }
 
 static PyMethodDef methods[] = {
-    {"bind", bind, METH_VARARGS, "bind(symbol, arm, surface, opts, singular_tol) -> binding"},
+    {"bind", bind, METH_VARARGS, "bind(symbol, n_state, params, singular_tol) -> binding"},
     {"call", (PyCFunction)(void (*)(void))call, METH_FASTCALL,
-     "call(binding, which, q, qdot, a, Fc) -> F* (which=0), tau (1), (F*, tau) (2), or None off the fast path"},
+     "call(binding, which, *states) -> output which, all outputs (which=-1), or None off the fast path"},
     {NULL, NULL, 0, NULL},
 };
 
 static struct PyModuleDef module = {PyModuleDef_HEAD_INIT, HYBRID_STR(HYBRID_MODULE),
-                                    "one-state decoupling law for CPython", -1, methods,
+                                    "one-state calls of a generated unit for CPython", -1, methods,
                                     NULL, NULL, NULL, NULL};
 
 PyMODINIT_FUNC HYBRID_INIT(HYBRID_MODULE)(void) {

@@ -24,7 +24,8 @@ def planar_unit(backend: str) -> Unit:
     """The committed planar unit of ``backend``, bound from its manifest."""
     if backend not in ("sympy", "casadi"):
         raise HybridError(f"backend must be 'sympy' or 'casadi', got {backend!r}")
-    return Unit(native.load(backend), native.manifest(backend), PLANAR_SINGULAR, {"qd": "qdot", "rd": "rdot"})
+    return Unit(native.load(backend), native.manifest(backend), PLANAR_SINGULAR, {"qd": "qdot", "rd": "rdot"},
+                folder=native.source_dir())
 
 
 def status_error(status: int, where: str, **inputs) -> HybridError:
@@ -93,13 +94,13 @@ class DecouplingLaw:
         init("_fn", fn)
         init("_params", (self.arm.as_array(), self.surface.as_array(), np.array([1.0 if self.curvature else 0.0])))
         # one state from NumPy arrays skips cffi's per-array conversion (see hybrid/fastcall.c)
-        fast = native.load_fastcall(self.backend)
-        init("_fast", fast.call)
-        init("_binding", fast.bind(fn.entry["symbol"], *self._params, float(self.singular_tol)))
+        fast, handle = fn.fast_bind(4, *self._params, singular_tol=self.singular_tol)
+        init("_fast", fast)
+        init("_binding", handle)
 
     def evaluate(self, q, qdot, a, Fc) -> tuple[np.ndarray, np.ndarray]:
         """``(F*, tau)`` for one state (shape ``(2,)``) or N states (shape ``(N, 2)``)."""
-        out = self._fast(self._binding, 2, q, qdot, a, Fc)
+        out = self._fast(self._binding, -1, q, qdot, a, Fc)
         return self._checked(q, qdot, a, Fc) if out is None else out
 
     def _checked(self, q, qdot, a, Fc) -> tuple[np.ndarray, np.ndarray]:
@@ -211,9 +212,12 @@ _ROBOT_KEYS = {"p": "r", "rotation": "rotation", "J": "J", "Jdqd": "Jdot_qdot", 
 
 def robot_terms(robot: Robot, q, qdot) -> dict[str, np.ndarray]:
     """:func:`arm_terms` of a :class:`Robot`: one state, or N states in one native call."""
+    fast, handle, names = robot.fast_terms
+    out = fast(handle, -1, q, qdot)
+    if out is not None:
+        return {_ROBOT_KEYS[n]: v for n, v in zip(names, out)}
     terms = robot.unit.function("robot_terms")
-    q_arr = np.asarray(q) if not isinstance(q, np.ndarray) else q
-    call = terms.batch if getattr(q_arr, "ndim", 1) == 2 else terms
+    call = terms.batch if np.ndim(q) == 2 else terms
     out = call(q, qdot, robot.as_array())
     return {_ROBOT_KEYS[k]: v for k, v in out.items()}
 

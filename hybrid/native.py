@@ -280,45 +280,46 @@ def _writable_cache() -> Path:
     return root
 
 
-#: the law signature the one-state entry point serves (hybrid/fastcall.c)
-LAW_INPUTS, LAW_OUTPUTS = ("q", "qd", "a", "Fc", "arm", "surface", "opts"), ("F", "tau")
+#: the most arguments a function may have for the one-state entry point (hybrid/fastcall.c)
+FAST_MAX_ARGS = 16
 
 
-def fastcall_defines(manifest: dict) -> str:
-    """The macros ``hybrid/fastcall.c`` expects, read off the unit's manifest."""
-    laws = [f for f in manifest["functions"]
-            if tuple(a["name"] for a in f["inputs"]) == LAW_INPUTS
-            and tuple(a["name"] for a in f["outputs"]) == LAW_OUTPUTS and f["singular_tol"]]
-    if not laws:
-        raise NativeBuildError(f"the unit {manifest['unit']} has no decoupling law for the one-state entry point")
-    sizes = [{a["name"]: a["size"] for a in f["inputs"]} for f in laws]
-    nq = {s["q"] for s in sizes}
-    if len(nq) != 1 or any(s[k] != s["q"] for s in sizes for k in ("qd", "a", "Fc")):
-        raise NativeBuildError(f"the laws of {manifest['unit']} differ in state size; the entry point needs one")
-    table = ", ".join(f'{{"{f["symbol"]}", {f["symbol"]}, {s["arm"]}, {s["surface"]}, {s["opts"]}}}'
-                      for f, s in zip(laws, sizes))
-    return "".join(f"#define {k} {v}\n" for k, v in (
-        ("HYBRID_NQ", nq.pop()), ("HYBRID_ARM_SIZE", max(s["arm"] for s in sizes)),
-        ("HYBRID_SURFACE_SIZE", max(s["surface"] for s in sizes)),
-        ("HYBRID_OPTS_SIZE", max(s["opts"] for s in sizes)), ("HYBRID_LAWS", table)))
+def fastcall_prelude(manifest: dict) -> str:
+    """What ``hybrid/fastcall.c`` expects before it, written from the unit's manifest: an adapter
+    per function (its arguments in order) and the table of sizes and shapes."""
+    adapters, table, max_out = [], [], 1
+    for k, f in enumerate(manifest["functions"]):
+        n_in, n_out = len(f["inputs"]), len(f["outputs"])
+        if n_in > FAST_MAX_ARGS or n_out > FAST_MAX_ARGS:
+            continue
+        args = ([f"in[{i}]" for i in range(n_in)] + (["tol"] if f["singular_tol"] else [])
+                + [f"out[{i}]" for i in range(n_out)])
+        adapters.append(f"static int adapt_{k}(const double *const *in, double tol, double *const *out) {{\n"
+                        f"    (void)in; (void)tol; (void)out;\n    return {f['symbol']}({', '.join(args)});\n}}\n")
+        sizes = ", ".join(str(a["size"]) for a in f["inputs"]) or "0"
+        shapes = ", ".join(f"{{{a['shape'][0]}, {a['shape'][1] if len(a['shape']) == 2 else 0}}}"
+                           for a in f["outputs"])
+        table.append(f'{{"{f["symbol"]}", adapt_{k}, {n_in}, {n_out}, {{{sizes}}}, {{{shapes}}}}}')
+        max_out = max(max_out, sum(a["size"] for a in f["outputs"]))
+    return ("".join(adapters) + f"#define HYBRID_FAST_FUNCTIONS {', '.join(table)}\n"
+            f"#define HYBRID_FAST_MAX_OUT {max_out}\n")
 
 
-@cache
-def load_fastcall(backend: str = "sympy"):
-    """The one-state CPython entry point of the law (``hybrid/fastcall.c``) for ``backend``.
+def load_fastcall(src_dir: Path, prefix: str, manifest: dict):
+    """The one-state CPython entry point (``hybrid/fastcall.c``) of the unit ``<prefix>`` in ``src_dir``.
 
-    ``bind(symbol, arm, surface, opts, singular_tol)`` makes a binding, ``call(binding, which,
-    q, qdot, a, Fc)`` evaluates it, returning None off the fast path (see the C file).
+    ``bind(symbol, n_state, params, singular_tol)`` fixes a function's parameters; ``call(binding,
+    which, *states)`` evaluates it, returning None off the fast path (see the C file).
     """
     import numpy
 
-    src_dir, c_source, header = _unit(backend)
+    c_source, header = _read_unit(src_dir, prefix)
     shim = (Path(__file__).with_name("fastcall.c")).read_text()
-    defines = fastcall_defines(manifest(backend))
+    prelude = fastcall_prelude(manifest)
 
     def write_source(name: str, path: Path) -> None:
-        path.write_text(f'#include "hybrid_{backend}.c"\n{defines}#define HYBRID_MODULE {name}\n{shim}')
+        path.write_text(f'#include "{prefix}.c"\n{prelude}#define HYBRID_MODULE {name}\n{shim}')
 
-    return _cached_module(f"_hybrid_fastcall_{backend}",
-                          {"c": c_source, "h": header, "shim": shim, "defines": defines,
+    return _cached_module(f"_{prefix}_fastcall",
+                          {"c": c_source, "h": header, "shim": shim, "prelude": prelude,
                            "numpy": numpy.__version__}, write_source, [str(src_dir), numpy.get_include()])

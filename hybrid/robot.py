@@ -154,6 +154,17 @@ class Robot:
     # ---------------------------------------------------------------- compiled
 
     @property
+    def fast_terms(self):
+        """``(call, binding, output names)`` of ``robot_terms`` on this robot's parameters (the
+        one-state entry point; a cache, like :attr:`unit`)."""
+        bound = self.__dict__.get("_fast_terms")
+        if bound is None:
+            fn = self.unit.function("robot_terms")
+            bound = (*fn.fast_bind(2, self.as_array()), tuple(n for n, _, _ in fn.outputs))
+            object.__setattr__(self, "_fast_terms", bound)
+        return bound
+
+    @property
     def unit(self) -> Unit:
         """The compiled kernels of this robot's structure (generated and compiled on first use)."""
         unit = self.__dict__.get("_unit")

@@ -101,6 +101,10 @@ class SpatialDecouplingLaw:
                          np.array([1.0 if self.curvature else 0.0])))
         init("_zeros", np.zeros(self.robot.n))
         init("_spatial", spatial)
+        # one state from NumPy arrays skips cffi's per-array conversion (see hybrid/fastcall.c)
+        fast, handle = self._law.fast_bind(5, *self._params, singular_tol=self.singular_tol)
+        init("_fast", fast)
+        init("_binding", handle)
 
     @property
     def m(self) -> int:
@@ -109,6 +113,11 @@ class SpatialDecouplingLaw:
 
     def evaluate(self, q, qdot, a, Fc, tau0=None) -> tuple[np.ndarray, np.ndarray]:
         """``(F*, tau)`` for one state or N states."""
+        out = self._fast(self._binding, -1, q, qdot, a, Fc, self._zeros if tau0 is None else tau0)
+        return self._checked(q, qdot, a, Fc, tau0) if out is None else out
+
+    def _checked(self, q, qdot, a, Fc, tau0) -> tuple[np.ndarray, np.ndarray]:
+        """The general path: any array-like input, N states, and the errors that name the cause."""
         batched = np.ndim(q) == 2
         if tau0 is None:
             tau0 = np.zeros((len(q), self.robot.n)) if batched else self._zeros
@@ -118,11 +127,13 @@ class SpatialDecouplingLaw:
 
     def __call__(self, q, qdot, a, Fc) -> np.ndarray:
         """``F*`` [N, N m] in base axes."""
-        return self.evaluate(q, qdot, a, Fc)[0]
+        out = self._fast(self._binding, 0, q, qdot, a, Fc, self._zeros)
+        return self._checked(q, qdot, a, Fc, None)[0] if out is None else out
 
     def torque(self, q, qdot, a, Fc, tau0=None) -> np.ndarray:
         """``tau = J^T F* + (I - J^T Jbar^T) tau0`` [N m or N]."""
-        return self.evaluate(q, qdot, a, Fc, tau0)[1]
+        out = self._fast(self._binding, 1, q, qdot, a, Fc, self._zeros if tau0 is None else tau0)
+        return self._checked(q, qdot, a, Fc, tau0)[1] if out is None else out
 
     def task_frame(self, p, pdot) -> tuple[np.ndarray, np.ndarray]:
         """``R_L`` (rows ``t1, t2, n``) at the point ``p`` [m] and ``R_L'`` [1/s] for its velocity ``pdot``."""
