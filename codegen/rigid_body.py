@@ -173,23 +173,19 @@ def _dot(m, f):
     return ca.dot(m[0], f[0]) + ca.dot(m[1], f[1])
 
 
-def velocities_and_bias(frames: Frames, qd, qdd=None, base_acceleration=None):
-    """Spatial velocities ``v_i`` and accelerations ``a_i`` of every link (forward pass).
-
-    ``a_i = a_{i-1} + S_i q''_i + v_i x S_i q'_i``, from ``a_0 = base_acceleration``
-    (``(0, -g)`` puts gravity in, as a fictitious base acceleration).
-    """
+def velocities_and_bias(frames: Frames, qd):
+    """Spatial velocities ``v_i`` and bias accelerations ``c_i`` (at ``q'' = 0``, no gravity) of every
+    link: ``v_i = v_{i-1} + S_i q'_i``, ``c_i = c_{i-1} + v_i x S_i q'_i``. Shared by ``J' q'`` and
+    the Newton-Euler pass, which adds ``sum S_j q''_j`` and gravity to them."""
     zero = ca.SX.zeros(3, 1)
-    v, a = (zero, zero), base_acceleration or (zero, zero)
-    vs, accs = [], []
+    v, c = (zero, zero), (zero, zero)
+    vs, bias = [], []
     for i, S in enumerate(frames.S):
         v = _add(v, _scale(S, qd[i]))
-        a = _add(a, _motion_cross(v, _scale(S, qd[i])))
-        if qdd is not None:
-            a = _add(a, _scale(S, qdd[i]))
+        c = _add(c, _motion_cross(v, _scale(S, qd[i])))
         vs.append(v)
-        accs.append(a)
-    return vs, accs
+        bias.append(c)
+    return vs, bias
 
 
 def frame_classical_acceleration(frames: Frames, qd) -> ca.SX:
@@ -262,7 +258,14 @@ def rnea(chain: Chain, frames: Frames, params, qd, qdd=None) -> ca.SX:
     Coriolis/centrifugal, gravity and joint viscosity ``damping_i q'_i``."""
     damping, g = _gravity_and_damping(chain, params)
     inertias = link_inertias(chain, frames, params)
-    vs, accs = velocities_and_bias(frames, qd, qdd, (ca.SX.zeros(3, 1), -g))
+    vs, bias = velocities_and_bias(frames, qd)
+    # a_i = c_i + sum_{j <= i} S_j q''_j + a_0, with gravity as the base's fictitious acceleration
+    # a_0 = (0, -g): in base axes it is the same vector for every link
+    accs, acc = [], (ca.SX.zeros(3, 1), -g)
+    for i in range(chain.n):
+        if qdd is not None:
+            acc = _add(acc, _scale(frames.S[i], qdd[i]))
+        accs.append(_add(bias[i], acc))
     tau = [None] * chain.n
     total = None
     for i in reversed(range(chain.n)):
