@@ -221,3 +221,18 @@ def test_every_output_element_is_written(rng, robots):
         outs = [np.full(size, np.nan) for _, size, _ in fn.outputs]
         assert fn.into(*ins, *outs, singular_tol=1e-6) == 0, fn.name
         assert all(np.isfinite(o).all() for o in outs), fn.name
+
+
+def test_readme_six_d_example_runs():
+    import re
+    from pathlib import Path
+
+    readme = (Path(__file__).resolve().parent.parent / "README.md").read_text()
+    block = next(b for b in re.findall(r"```python\n(.*?)```", readme, flags=re.S) if "hybrid.Sphere" in b)
+    ns: dict = {}
+    exec(compile(block, "README.md", "exec"), ns)
+    terms = hybrid.arm_terms(ns["ur5"], ns["q"], ns["qdot"])
+    np.testing.assert_allclose(ns["tau"], terms["J"].T @ ns["F"], rtol=1e-10, atol=1e-10)
+    assert ns["position_only"].m == 3 and ns["paper"].m == 2
+    np.testing.assert_allclose(ns["R"] @ ns["R"].T, np.eye(3), atol=1e-12)
+    np.testing.assert_allclose(ns["euler"].B_o, ns["euler"].T.T @ ns["ops"].B_o @ ns["euler"].T, rtol=1e-10)
