@@ -192,10 +192,10 @@ static int all_finite(const double *v, int n) {{
         lines = [f"int {prefix}_{k.name}({', '.join(_params(k))}) {{"]
         lines += [f"    double {g.name}[1];" for g in k.guards]
         lines.append(f"    {k.name}_core({', '.join(core_args)});")
-        for g in k.guards:  # NaN fails the test too: it is not >= anything
+        for g in k.guards:  # a NaN measure is not "below": it is reported as non-finite, below
             tol = g.tolerance if isinstance(g.tolerance, str) else repr(float(g.tolerance))
-            lines.append(f"    if (!(fabs({g.name}[0]) >= {tol})) return {g.status};")
-        finite = " && ".join(f"all_finite({a.name}, {a.size})" for a in k.outputs)
+            lines.append(f"    if (fabs({g.name}[0]) < {tol}) return {g.status};")
+        finite = " && ".join(f"all_finite({a.name}, {a.size})" for a in k.core_outputs())
         lines.append(f"    return ({finite}) ? HYBRID_OK : HYBRID_NONFINITE;\n}}\n")
         out.append("\n".join(lines))
         if k.batched:

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: b1cb3486361055ec09e9be5b155f4d9ef28aefaffa2ef49772023adc116f8f06 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 092e23bfe95fc93fc81df6c1013e901f54a734b3326a8d2c5ce4425af090d215 */
 /* hybrid_casadi: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
    Emitted by the casadi backend of hybrid's codegen (SymPy 1.14.0, CasADi 3.8.2), generator version 3.
    Compile: cc -std=c99 -O2 -c hybrid_casadi.c (link with -lm). */
@@ -1797,8 +1797,8 @@ int hybrid_casadi_arm_dynamics(const double *q, const double *qd, const double *
 int hybrid_casadi_operational_space(const double *q, const double *qd, const double *arm, double singular_tol, double *Bo, double *no) {
     double cond[1];
     operational_space_core(q, qd, arm, Bo, no, cond);
-    if (!(fabs(cond[0]) >= singular_tol)) return HYBRID_SINGULAR;
-    return (all_finite(Bo, 4) && all_finite(no, 2)) ? HYBRID_OK : HYBRID_NONFINITE;
+    if (fabs(cond[0]) < singular_tol) return HYBRID_SINGULAR;
+    return (all_finite(Bo, 4) && all_finite(no, 2) && all_finite(cond, 1)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
 int hybrid_casadi_task_frame_plane(const double *r, const double *rd, const double *surface, double *R, double *Rd) {
@@ -1809,8 +1809,8 @@ int hybrid_casadi_task_frame_plane(const double *r, const double *rd, const doub
 int hybrid_casadi_decoupling_law_plane(const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau) {
     double cond[1];
     decoupling_law_plane_core(q, qd, a, Fc, arm, surface, opts, F, tau, cond);
-    if (!(fabs(cond[0]) >= singular_tol)) return HYBRID_SINGULAR;
-    return (all_finite(F, 2) && all_finite(tau, 2)) ? HYBRID_OK : HYBRID_NONFINITE;
+    if (fabs(cond[0]) < singular_tol) return HYBRID_SINGULAR;
+    return (all_finite(F, 2) && all_finite(tau, 2) && all_finite(cond, 1)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
 int hybrid_casadi_decoupling_law_plane_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
@@ -1879,8 +1879,8 @@ int hybrid_casadi_task_frame_circle(const double *r, const double *rd, const dou
 int hybrid_casadi_decoupling_law_circle(const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau) {
     double cond[1];
     decoupling_law_circle_core(q, qd, a, Fc, arm, surface, opts, F, tau, cond);
-    if (!(fabs(cond[0]) >= singular_tol)) return HYBRID_SINGULAR;
-    return (all_finite(F, 2) && all_finite(tau, 2)) ? HYBRID_OK : HYBRID_NONFINITE;
+    if (fabs(cond[0]) < singular_tol) return HYBRID_SINGULAR;
+    return (all_finite(F, 2) && all_finite(tau, 2) && all_finite(cond, 1)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
 int hybrid_casadi_decoupling_law_circle_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 58a750e3a11e9ccf4c1aeccf87b4543254493014b1efee75a2ff70ca08bbb446 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: b505399dea5760d6aa46d29b22af48c60b7206328fc925f9e4e63d99aa0f3802 */
 /* hybrid_sympy: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
    Emitted by the sympy backend of hybrid's codegen (SymPy 1.14.0), generator version 3.
    Compile: cc -std=c99 -O2 -c hybrid_sympy.c (link with -lm). */
@@ -719,8 +719,8 @@ int hybrid_sympy_arm_dynamics(const double *q, const double *qd, const double *a
 int hybrid_sympy_operational_space(const double *q, const double *qd, const double *arm, double singular_tol, double *Bo, double *no) {
     double cond[1];
     operational_space_core(q, qd, arm, Bo, no, cond);
-    if (!(fabs(cond[0]) >= singular_tol)) return HYBRID_SINGULAR;
-    return (all_finite(Bo, 4) && all_finite(no, 2)) ? HYBRID_OK : HYBRID_NONFINITE;
+    if (fabs(cond[0]) < singular_tol) return HYBRID_SINGULAR;
+    return (all_finite(Bo, 4) && all_finite(no, 2) && all_finite(cond, 1)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
 int hybrid_sympy_task_frame_plane(const double *r, const double *rd, const double *surface, double *R, double *Rd) {
@@ -731,8 +731,8 @@ int hybrid_sympy_task_frame_plane(const double *r, const double *rd, const doubl
 int hybrid_sympy_decoupling_law_plane(const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau) {
     double cond[1];
     decoupling_law_plane_core(q, qd, a, Fc, arm, surface, opts, F, tau, cond);
-    if (!(fabs(cond[0]) >= singular_tol)) return HYBRID_SINGULAR;
-    return (all_finite(F, 2) && all_finite(tau, 2)) ? HYBRID_OK : HYBRID_NONFINITE;
+    if (fabs(cond[0]) < singular_tol) return HYBRID_SINGULAR;
+    return (all_finite(F, 2) && all_finite(tau, 2) && all_finite(cond, 1)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
 int hybrid_sympy_decoupling_law_plane_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
@@ -801,8 +801,8 @@ int hybrid_sympy_task_frame_circle(const double *r, const double *rd, const doub
 int hybrid_sympy_decoupling_law_circle(const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau) {
     double cond[1];
     decoupling_law_circle_core(q, qd, a, Fc, arm, surface, opts, F, tau, cond);
-    if (!(fabs(cond[0]) >= singular_tol)) return HYBRID_SINGULAR;
-    return (all_finite(F, 2) && all_finite(tau, 2)) ? HYBRID_OK : HYBRID_NONFINITE;
+    if (fabs(cond[0]) < singular_tol) return HYBRID_SINGULAR;
+    return (all_finite(F, 2) && all_finite(tau, 2) && all_finite(cond, 1)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
 int hybrid_sympy_decoupling_law_circle_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {

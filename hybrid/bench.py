@@ -375,7 +375,9 @@ def _run(args) -> int:
     report = run_benchmarks(args.quick)
     print(format_table(report))
     if args.json:
-        Path(args.json).write_text(json.dumps(report, indent=2) + "\n")
+        from . import files
+
+        files.write_text(Path(args.json), json.dumps(report, indent=2) + "\n", overwrite=True)
     return 0
 
 

@@ -9,7 +9,7 @@ import numpy as np
 
 from .errors import HybridError
 from .law import SINGULAR_TOL, check_singular_tol
-from .parameters import Arm, Circle, Plane, _finite, paper_arm
+from .parameters import Arm, Circle, Plane, _finite, _point, paper_arm
 
 CONTROLLERS = ("task", "khatib")
 FRAMES = ("actual", "desired")
@@ -121,6 +121,7 @@ class Experiment:
     singular_tol: float = SINGULAR_TOL
 
     def __post_init__(self):
+        self._check_types()
         if self.controller not in CONTROLLERS:
             raise HybridError(f"unknown controller {self.controller!r}; choose one of {CONTROLLERS}")
         if self.frame not in FRAMES:
@@ -153,10 +154,36 @@ class Experiment:
         if self.model_error <= -1 or self.viscous_compensation < 0:
             raise HybridError(f"model_error = {self.model_error} must be > -1 and viscous_compensation = "
                               f"{self.viscous_compensation} >= 0")
+        if abs(self.duration / self.sample_time - round(self.duration / self.sample_time)) > 1e-9 * self.n_samples:
+            k = max(1, round(self.duration / self.sample_time))
+            raise HybridError(f"duration = {self.duration} s is not a whole number of samples of "
+                              f"{self.sample_time} s; give duration = {k * self.sample_time:g} s")
         from .loops import check_loops
 
         check_loops(self)
 
+    def _check_types(self) -> None:
+        """Every field of the kind it must be: a bool is a bool, a reference a Step or a number."""
+        for name in ("integral", "curvature"):
+            if not isinstance(getattr(self, name), bool):
+                raise HybridError(f"{name} = {getattr(self, name)!r}; give True or False")
+        for name in ("controller", "frame", "backend"):
+            if not isinstance(getattr(self, name), str):
+                raise HybridError(f"{name} = {getattr(self, name)!r}; give its name as a string")
+        for name, typ in (("sensor", Sensor), ("contact", Contact), ("gains", Gains)):
+            if not isinstance(getattr(self, name), typ):
+                raise HybridError(f"{name} = {getattr(self, name)!r:.60}; give a hybrid.{typ.__name__}(...)")
+        for name in ("force_reference", "speed_reference"):
+            ref = getattr(self, name)
+            if isinstance(ref, (int, float, np.integer, np.floating)) and not isinstance(ref, bool):
+                _finite("Experiment", **{name: ref})
+                object.__setattr__(self, name, Step(float(ref), float(ref), 0.0))  # a constant reference
+            elif not isinstance(ref, Step):
+                raise HybridError(f"{name} = {ref!r:.60}; give a hybrid.Step(before, after, at) or a number")
+        if isinstance(self.elbow, bool) or not isinstance(self.elbow, (int, np.integer)):
+            raise HybridError(f"elbow = {self.elbow!r}; give +1 (q2 > 0) or -1 (q2 < 0)")
+        _finite("Experiment", model_error=self.model_error, viscous_compensation=self.viscous_compensation)
+        object.__setattr__(self, "start_point", _point("Experiment", "start_point", self.start_point))
     @property
     def steps_per_sample(self) -> int:
         return round(self.sample_time / self.step)
@@ -186,6 +213,16 @@ class Experiment:
 
     @classmethod
     def from_dict(cls, d: dict) -> Experiment:
+        """The experiment :meth:`to_dict` wrote; anything else is a HybridError."""
+        try:
+            return cls._from_dict(d)
+        except (KeyError, TypeError, AttributeError, ValueError) as exc:
+            if isinstance(exc, HybridError):
+                raise
+            raise HybridError(f"not an experiment's settings ({type(exc).__name__}: {exc})") from None
+
+    @classmethod
+    def _from_dict(cls, d: dict) -> Experiment:
         d = dict(d)
         surf = dict(d.pop("surface"))
         kind = surf.pop("kind")

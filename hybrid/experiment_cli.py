@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import csv
+import io
 import json
 from pathlib import Path
 
+from . import files
 from .errors import HybridError
 from .experiment import paper_experiment
 from .simulation import simulate
@@ -25,14 +27,15 @@ def add_parser(sub) -> None:
 
 
 def prepare_out(out: Path, force: bool) -> None:
-    """Create ``out``; refuse to overwrite a file or earlier results unless ``force``."""
+    """Create ``out`` and check it is writable before the work; refuse to overwrite a file or
+    earlier results unless ``force``."""
     if out.exists() and not out.is_dir():
         raise HybridError(f"--out {out} is an existing file; give a folder (nothing was written)")
     clash = [n for n in PRODUCTS if (out / n).exists()] + sorted(p.name for p in out.glob("figure*.png"))
     if clash and not force:
         raise HybridError(f"--out {out} already holds results ({', '.join(clash[:3])}...); "
                           "choose another folder or pass --force to overwrite them")
-    out.mkdir(parents=True, exist_ok=True)
+    files.writable_folder(out, "--out folder")
 
 
 def format_table(metrics: dict[str, dict]) -> str:
@@ -53,17 +56,20 @@ def run(args) -> int:
     for ctrl in ("khatib", "task"):
         exp = paper_experiment(controller=ctrl, integral=args.integral, curvature=args.curvature,
                                backend=args.backend)
-        results[ctrl] = res = simulate(exp)
-        res.save(out / f"{ctrl}.npz")
-        res.save_csv(out / f"{ctrl}.csv")
+        results[ctrl] = simulate(exp)
+    # every product is written atomically: an interrupted run leaves whole files or none
+    for ctrl, res in results.items():
+        res.save(out / f"{ctrl}.npz", overwrite=True)
+        res.save_csv(out / f"{ctrl}.csv", overwrite=True)
     metrics = {c: r.metrics for c, r in results.items()}
-    (out / "metrics.json").write_text(json.dumps(metrics, indent=2) + "\n")
-    with open(out / "metrics.csv", "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["metric", *metrics])
-        for name in metrics["task"]:
-            w.writerow([name, *(metrics[c][name] for c in metrics)])
-    files = paper_figures(results, out)
+    files.write_text(out / "metrics.json", json.dumps(metrics, indent=2) + "\n", overwrite=True)
+    table = io.StringIO()
+    w = csv.writer(table)
+    w.writerow(["metric", *metrics])
+    for name in metrics["task"]:
+        w.writerow([name, *(metrics[c][name] for c in metrics)])
+    files.write_text(out / "metrics.csv", table.getvalue(), overwrite=True)
+    figures = paper_figures(results, out)
     print(format_table(metrics))
-    print(f"\nwrote {len(files)} figures, metrics.json/csv and time series (.npz, .csv) to {out}")
+    print(f"\nwrote {len(figures)} figures, metrics.json/csv and time series (.npz, .csv) to {out}")
     return 0

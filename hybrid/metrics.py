@@ -35,7 +35,8 @@ def settling_time(t: np.ndarray, y: np.ndarray, target: float, band: float) -> f
 def compute_metrics(res) -> dict:
     """Force overshoot and 2 % settling after the force step, steady-state force error, speed
     drop after the force step, force deviation and speed overshoot after the speed step,
-    RMS errors, penetration, contact losses, peak torques."""
+    RMS errors, penetration, contact losses, peak torques. The step metrics are NaN when the
+    reference does not step, or steps outside the run."""
     exp, t = res.experiment, res.t
     F, v = res.force_normal, res.velocity_tangential
     Fd, vd = res.force_reference, res.speed_reference
@@ -48,15 +49,19 @@ def compute_metrics(res) -> dict:
     last = t >= end - 0.2
     in_contact = res.contact_force > 0
     losses = int(np.count_nonzero(in_contact[:-1] & ~in_contact[1:]))
-    m = {}
-    if after_f.any():
+    nan = float("nan")
+    # every metric is always reported: one after a step that falls outside the run is NaN, not missing
+    m = dict.fromkeys(("force_overshoot_N", "force_overshoot_percent", "force_settling_time_2pct_s",
+                       "speed_drop_after_force_step_m_per_s", "force_deviation_after_speed_step_N",
+                       "speed_overshoot_after_speed_step_m_per_s"), nan)
+    if after_f.any() and fs.after != fs.before:
         step = fs.after - fs.before
         peak = F[after_f].max() if step >= 0 else F[after_f].min()
-        m["force_overshoot_N"] = float((peak - fs.after) * np.sign(step or 1.0))
-        m["force_overshoot_percent"] = float(100 * m["force_overshoot_N"] / abs(step)) if step else 0.0
+        m["force_overshoot_N"] = float((peak - fs.after) * np.sign(step))
+        m["force_overshoot_percent"] = float(100 * m["force_overshoot_N"] / abs(step))
         m["force_settling_time_2pct_s"] = settling_time(t[after_f], F[after_f], fs.after, 0.02 * abs(fs.after))
         m["speed_drop_after_force_step_m_per_s"] = float(np.max(vd[after_f] - v[after_f]))
-    if after_v.any():
+    if after_v.any() and vs.after != vs.before:
         m["force_deviation_after_speed_step_N"] = float(np.max(np.abs(F[after_v] - Fd[after_v])))
         m["speed_overshoot_after_speed_step_m_per_s"] = float(np.max(v[after_v]) - vs.after)
     m["steady_state_force_error_N"] = float(np.mean(Fd[last] - F[last]))

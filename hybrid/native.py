@@ -16,6 +16,7 @@ import hashlib
 import importlib.util
 import io
 import json
+import logging
 import os
 import platform
 import shutil
@@ -29,6 +30,8 @@ from pathlib import Path
 import cffi
 
 from .errors import NativeBuildError
+
+log = logging.getLogger("hybrid")
 
 #: flags for the extension; no -ffast-math: the status checks rely on isfinite(). On x86-64 the
 #: code is tuned for this processor (FMA, AVX-512 where present): the cache key then carries the
@@ -66,19 +69,32 @@ def cache_dir() -> Path:
 
 
 def compiler() -> tuple[str, str]:
-    """``(path, identity)`` of the C compiler (``$CC`` or ``cc``)."""
-    name = os.environ.get("CC", "cc").split()[0]
-    path = shutil.which(name) or shutil.which("gcc")
-    if path is None:
-        raise NativeBuildError(
-            f"no C compiler found (tried $CC={os.environ.get('CC', '')!r}, cc, gcc): install one, "
-            "e.g. `apt-get install gcc` on Debian/Ubuntu or `xcode-select --install` on macOS, "
-            "or set CC to its path")
+    """``(path, identity)`` of the C compiler: ``$CC`` when set (and then only it), else ``cc``,
+    else ``gcc``. Probed once per process and value of ``$CC``."""
+    return _compiler(os.environ.get("CC", ""))
+
+
+@cache
+def _compiler(cc_env: str) -> tuple[str, str]:
+    if cc_env.strip():
+        name, why = cc_env.split()[0], f"$CC={cc_env!r}"
+        path = shutil.which(name)
+        if path is None:
+            raise NativeBuildError(f"$CC={cc_env!r} names no program on PATH; set CC to a C compiler's path, "
+                                   "or unset it to use cc")
+    else:
+        path, why = shutil.which("cc") or shutil.which("gcc"), "cc or gcc on PATH ($CC unset)"
+        if path is None:
+            raise NativeBuildError(
+                "no C compiler found (tried cc and gcc; $CC is unset): install one, e.g. `apt-get install gcc` "
+                "on Debian/Ubuntu or `xcode-select --install` on macOS, or set CC to its path")
     try:
         ident = subprocess.run([path, "--version"], capture_output=True, text=True, check=True,
                                timeout=60).stdout.splitlines()[0]
     except (OSError, subprocess.SubprocessError, IndexError) as exc:
-        raise NativeBuildError(f"the C compiler {path} does not run ({exc}); reinstall it or set CC") from exc
+        raise NativeBuildError(f"the C compiler {path} (chosen by {why}) does not run ({exc}); "
+                               "reinstall it or set CC") from exc
+    log.info("hybrid: C compiler %s (%s), chosen by %s", path, ident, why)
     return path, ident
 
 
@@ -125,9 +141,12 @@ def _compile(c_file: Path, target: Path, cc: str, includes: list[str]) -> None:
     cmd = [cc, *CFLAGS, "-shared", *(f"-I{p}" for p in paths), str(c_file), "-o", str(so), "-lm"]
     proc = subprocess.run(cmd, capture_output=True, text=True)
     if proc.returncode != 0:
-        raise NativeBuildError(f"compiling {c_file.name} failed:\n$ {' '.join(cmd)}\n{proc.stderr[-4000:]}\n"
-                               "Is the Python development header (Python.h) installed? "
-                               "On Debian/Ubuntu: apt-get install python3-dev")
+        raise NativeBuildError(f"compiling {c_file.name} with {cc} failed; is Python.h installed "
+                               "(apt-get install python3-dev)?\n"
+                               f"$ {' '.join(cmd)}\n{proc.stderr[-4000:]}")
+    if not so.is_file() or so.stat().st_size == 0:
+        raise NativeBuildError(f"the compiler {cc} exited 0 but wrote no library for {c_file.name}; "
+                               "set CC to a working C compiler")
     _atomic_write(target, so.read_bytes())
 
 
@@ -153,23 +172,40 @@ def _cached_module(stem: str, key_material: dict, write_source: Callable[[str, P
         except (OSError, ValueError, KeyError):
             return False
 
-    if not valid():
+    def build() -> None:
         with open(entry / ".lock", "w") as lock:
             fcntl.flock(lock, fcntl.LOCK_EX)  # one builder at a time; others wait, then reuse
             if not valid():
+                log.info("hybrid: building %s with %s", name, cc)
                 with tempfile.TemporaryDirectory(dir=entry) as tmp:
                     c_file = Path(tmp) / f"{name}.c"
                     write_source(name, c_file)
                     _compile(c_file, so, cc, includes)
                 _atomic_write(manifest, json.dumps({"sha256": _sha256(so), "compiler": ident,
                                                     "flags": CFLAGS}).encode())
-    spec = importlib.util.spec_from_file_location(name, so)
-    module = importlib.util.module_from_spec(spec)
+
+    if not valid():
+        build()
     try:
-        spec.loader.exec_module(module)
-    except ImportError as exc:
-        manifest.unlink(missing_ok=True)  # make the next call rebuild it
-        raise NativeBuildError(f"loading {so} failed ({exc}); it will be rebuilt on the next try") from exc
+        return _import(name, so)
+    except (ImportError, OSError) as exc:
+        # a library that matches its checksum but does not load (a foreign or damaged build): heal it
+        log.warning("hybrid: %s does not load (%s); rebuilding it", so, exc)
+        manifest.unlink(missing_ok=True)
+        build()
+        try:
+            return _import(name, so)
+        except (ImportError, OSError) as again:
+            raise NativeBuildError(f"{so.name} does not load even after a rebuild ({again}); delete {entry} "
+                                   "or set HYBRID_CACHE_DIR to a fresh folder") from None
+
+
+def _import(name: str, so: Path):
+    spec = importlib.util.spec_from_file_location(name, so)
+    if spec is None or spec.loader is None:
+        raise ImportError(f"no loader for {so}")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
     return module
 
 
@@ -216,9 +252,27 @@ def read_manifest(src_dir: Path, prefix: str) -> dict:
 
 @cache
 def load(backend: str = "sympy"):
-    """The compiled unit ``hybrid_<backend>`` as a cffi module (``.ffi``, ``.lib``)."""
-    _unit(backend)
-    return _compile_unit(source_dir(), f"hybrid_{backend}")
+    """The compiled unit ``hybrid_<backend>`` as a cffi module (``.ffi``, ``.lib``).
+
+    A unit edited by hand (its body no longer matches the hash in its first line) is used as it
+    is, with a :class:`HandEditedWarning` saying so.
+    """
+    import warnings
+
+    from codegen.emit import is_hand_edited
+
+    src_dir, c_source, header = _unit(backend)
+    edited = [n for n, text in ((f"hybrid_{backend}.c", c_source), (f"hybrid_{backend}.h", header))
+              if is_hand_edited(text)]
+    if edited:
+        warnings.warn(f"{', '.join(edited)} in {src_dir} were edited by hand; using them as they are "
+                      "(`python -m hybrid regenerate --force` restores the generated code)",
+                      HandEditedWarning, stacklevel=3)
+    return _compile_unit(src_dir, f"hybrid_{backend}")
+
+
+class HandEditedWarning(UserWarning):
+    """Generated code that was edited by hand is being compiled."""
 
 
 @cache

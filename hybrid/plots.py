@@ -6,6 +6,8 @@ from pathlib import Path
 
 import matplotlib
 
+from . import files
+
 matplotlib.use("Agg")  # files only: no display needed
 import matplotlib.pyplot as plt  # noqa: E402
 
@@ -33,7 +35,7 @@ def _finish(fig, ax, path: Path) -> Path:
     ax.grid(alpha=0.3)
     ax.legend(loc="best", fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, dpi=150)
+    files.write_with(Path(path), lambda tmp: fig.savefig(tmp, dpi=150, format="png"), overwrite=True)
     plt.close(fig)
     return path
 

@@ -9,12 +9,15 @@ from __future__ import annotations
 
 import json
 import math
+import os
+import zipfile
+import zlib
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
-from . import reference
+from . import files, reference
 from .controllers import HybridController
 from .errors import HybridError, NonFiniteError
 from .experiment import Experiment
@@ -157,6 +160,27 @@ class NumpyPlant:
 # -------------------------------------------------------------- initial state
 
 
+#: how far from the surface a start point may lie [m] (it is projected onto it)
+START_TOL = 1e-3
+#: the most memory a run's record may take, as a fraction of the machine's
+MEMORY_FRACTION = 0.5
+
+
+def check_memory(exp: Experiment) -> None:
+    """Refuse, before any work, a run whose record would not fit in memory (with the numbers)."""
+    steps = exp.steps_per_sample * exp.n_samples + 1
+    per_step = 8 * (len(PLANT["state"]) + PLANT["nq"] + len(PLANT_OUTPUTS) + 3)  # doubles kept per RK4 step
+    need = steps * per_step
+    try:
+        total = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    except (ValueError, OSError, AttributeError):
+        return
+    if need > MEMORY_FRACTION * total:
+        raise HybridError(f"duration = {exp.duration} s at step = {exp.step} s is {steps:,} RK4 steps, whose record "
+                          f"needs {need / 2**30:.1f} GiB; this machine has {total / 2**30:.1f} GiB: shorten "
+                          "duration or lengthen step")
+
+
 def initial_state(exp: Experiment) -> np.ndarray:
     """At rest, sensor tip on the surface at ``start_point``, pressing with ``F_d(0)``.
 
@@ -165,6 +189,10 @@ def initial_state(exp: Experiment) -> np.ndarray:
     """
     surf, F0 = exp.surface, exp.force_reference(0.0)
     s_surf = surf.at(surf.arc_coordinate(exp.start_point))
+    gap = float(np.linalg.norm(np.asarray(exp.start_point) - s_surf))
+    if gap > START_TOL:
+        raise HybridError(f"start_point {list(exp.start_point)} m is {gap * 1000:.1f} mm off the surface; give a "
+                          f"point on it (within {START_TOL * 1000:g} mm), e.g. {np.round(s_surf, 4).tolist()}")
     n = surf.normal_at(s_surf)
     s = s_surf - n * max(F0, 0.0) / exp.contact.stiffness
     r = s - n * F0 / exp.sensor.stiffness
@@ -263,28 +291,40 @@ class SimulationResult:
     def contact_force(self):
         return self.output("N")
 
-    def save(self, path: str | Path) -> Path:
-        """Write an ``.npz`` with every array, the units and the experiment's settings."""
+    def save(self, path: str | Path, overwrite: bool = False) -> Path:
+        """Write an ``.npz`` with every array, the units and the experiment's settings; returns the
+        path written (``.npz`` is added when missing). Atomic; refuses an existing file unless
+        ``overwrite``."""
         path = Path(path)
-        np.savez_compressed(
-            path, t=self.t, state=self.state, tau=self.tau, outputs=self.outputs,
-            force_reference=self.force_reference, speed_reference=self.speed_reference,
-            output_names=np.array(PLANT_OUTPUTS), units=json.dumps(self.UNITS),
-            experiment=json.dumps(self.experiment.to_dict()), metrics=json.dumps(self.metrics))
-        return path
+        if path.suffix != ".npz":
+            path = path.with_name(path.name + ".npz")
+
+        def write(tmp: Path) -> None:
+            with open(tmp, "wb") as f:  # a file object: NumPy adds no suffix to it
+                np.savez_compressed(
+                    f, t=self.t, state=self.state, tau=self.tau, outputs=self.outputs,
+                    force_reference=self.force_reference, speed_reference=self.speed_reference,
+                    output_names=np.array(PLANT_OUTPUTS), units=json.dumps(self.UNITS),
+                    experiment=json.dumps(self.experiment.to_dict()), metrics=json.dumps(self.metrics))
+
+        return files.write_with(path, write, overwrite)
 
     @classmethod
     def load(cls, path: str | Path) -> SimulationResult:
+        """A result written by :meth:`save`; a missing, truncated or foreign file is a HybridError."""
         try:
             with np.load(path, allow_pickle=False) as z:
                 return cls(Experiment.from_dict(json.loads(str(z["experiment"]))), z["t"], z["state"],
                            z["tau"], z["outputs"], z["force_reference"], z["speed_reference"],
                            json.loads(str(z["metrics"])))
-        except (OSError, KeyError, ValueError) as exc:
-            raise HybridError(f"{path} is not a saved hybrid result ({exc})") from None
+        except (OSError, KeyError, ValueError, EOFError, zipfile.BadZipFile, zlib.error, TypeError) as exc:
+            why = getattr(exc, "strerror", None) or f"{type(exc).__name__}: {exc}"
+            raise HybridError(f"{path} is not a readable saved hybrid result ({why:.120}); "
+                              "save it again with SimulationResult.save") from None
 
-    def save_csv(self, path: str | Path) -> Path:
-        """Write the time series as CSV, units in the header."""
+    def save_csv(self, path: str | Path, overwrite: bool = False) -> Path:
+        """Write the time series as CSV, units in the header (atomic; refuses an existing file
+        unless ``overwrite``)."""
         path = Path(path)
         cols = {"t_s": self.t, "q1_rad": self.q[:, 0], "q2_rad": self.q[:, 1],
                 "tau1_Nm": self.tau[:, 0], "tau2_Nm": self.tau[:, 1],
@@ -292,9 +332,9 @@ class SimulationResult:
         units = dict(zip(PLANT_OUTPUTS, self.UNITS["outputs"].split(", ")))
         cols.update({f"{n}_{units[n].replace('/', '_per_').replace(' ', '')}": self.output(n)
                      for n in PLANT_OUTPUTS})
-        np.savetxt(path, np.column_stack(list(cols.values())), delimiter=",", header=",".join(cols),
-                   comments="", fmt="%.10g")
-        return path
+        return files.write_with(path, lambda tmp: np.savetxt(
+            tmp, np.column_stack(list(cols.values())), delimiter=",", header=",".join(cols), comments="",
+            fmt="%.10g"), overwrite)
 
 
 # ---------------------------------------------------------------------- runner
@@ -309,6 +349,7 @@ def simulate(exp: Experiment) -> SimulationResult:
     terms = NumpyTerms(exp) if numpy_path else NativeTerms(exp)
     plant = NumpyPlant(exp) if numpy_path else NativePlant(exp)
     controller = HybridController(exp, terms)
+    check_memory(exp)
     x = initial_state(exp)
     check_path(exp, controller)
 

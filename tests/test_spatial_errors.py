@@ -143,3 +143,20 @@ def test_implicit_surface_parameters_are_run_time(ur5):
     p, pd = np.array([0.5, 0.1, 0.4]), np.array([0.1, -0.2, 0.05])
     np.testing.assert_allclose(b.task_frame(p, pd)[0], sphere.task_frame(p, pd)[0], atol=1e-14)
     np.testing.assert_allclose(b.task_frame(p, pd)[1], sphere.task_frame(p, pd)[1], atol=1e-13)
+
+
+@pytest.mark.parametrize("as_input", [list, np.array], ids=["lists", "arrays"])
+def test_nan_state_is_non_finite_not_singular(ur5, law, as_input):
+    """A NaN joint angle makes every measure NaN: it is named as non-finite input, not as a singular pose."""
+    z6 = np.zeros(6)
+    q = Q.copy()
+    q[2] = np.nan
+    with pytest.raises(hybrid.NonFiniteError, match="non-finite input q") as info:
+        law(as_input(q), as_input(z6), as_input(z6), as_input(z6))
+    assert not isinstance(info.value, hybrid.SingularConfigurationError)
+    with pytest.raises(hybrid.NonFiniteError, match="non-finite input q"):
+        hybrid.operational_space(ur5, q, z6)
+    planar = hybrid.decoupling_law(hybrid.paper_arm(), hybrid.Circle((0.5, 0), 0.2))
+    for bad in ([np.nan, 1.0], [0.3, np.inf]):
+        with pytest.raises(hybrid.NonFiniteError, match="non-finite input q"):
+            planar(as_input(bad), as_input([0.0, 0.0]), as_input([0.0, 0.0]), as_input([0.0, 0.0]))

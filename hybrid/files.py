@@ -1,0 +1,69 @@
+"""Writing what a user asked for: atomically, never over their files unasked, one clear line on failure.
+
+Every output goes to a temporary file in the target's folder and is renamed into place, so an
+interrupted run leaves either the old file or the new one, never half of one. A file-system
+failure (missing, read-only or non-folder parent, full disk) is a :class:`HybridError` naming
+the path and what to do.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import tempfile
+from collections.abc import Callable, Iterator
+from pathlib import Path
+
+from .errors import HybridError
+
+
+def _why(exc: OSError) -> str:
+    return exc.strerror or exc.__class__.__name__
+
+
+def writable_folder(folder: Path, what: str = "output folder") -> Path:
+    """``folder``, created if missing, checked to be a writable folder before any long work."""
+    folder = Path(folder)
+    if folder.exists() and not folder.is_dir():
+        raise HybridError(f"the {what} {folder} is a file; give a folder (nothing was written)")
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        with tempfile.NamedTemporaryFile(dir=folder, prefix=".hybrid-probe-"):
+            pass
+    except OSError as exc:
+        raise HybridError(f"the {what} {folder} is not writable ({_why(exc)}); choose another folder") from None
+    return folder
+
+
+@contextlib.contextmanager
+def atomic_path(path: Path, overwrite: bool = False) -> Iterator[Path]:
+    """A temporary path beside ``path`` to write to; renamed onto ``path`` when the block ends
+    without error (removed otherwise). Refuses an existing ``path`` unless ``overwrite``."""
+    path = Path(path)
+    if path.is_dir():
+        raise HybridError(f"{path} is a folder; give a file name")
+    if path.exists() and not overwrite:
+        raise HybridError(f"{path} exists; choose another name or pass overwrite=True (--force) to replace it")
+    writable_folder(path.parent, "folder")
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=path.suffix)
+    os.close(fd)
+    try:
+        yield Path(tmp)
+        os.replace(tmp, path)
+    except OSError as exc:
+        raise HybridError(f"writing {path} failed ({_why(exc)}); nothing was changed there") from None
+    finally:
+        Path(tmp).unlink(missing_ok=True)
+
+
+def write_text(path: Path, text: str, overwrite: bool = False) -> Path:
+    with atomic_path(path, overwrite) as tmp:
+        tmp.write_text(text)
+    return Path(path)
+
+
+def write_with(path: Path, writer: Callable[[Path], None], overwrite: bool = False) -> Path:
+    """``writer(tmp)`` writes the content; it lands at ``path`` whole or not at all."""
+    with atomic_path(path, overwrite) as tmp:
+        writer(tmp)
+    return Path(path)

@@ -1,0 +1,81 @@
+"""Results on disk: real paths, no silent overwrite, whole files or none, clear errors for broken ones."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import hybrid
+from hybrid import files
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+@pytest.fixture(scope="module")
+def result():
+    return hybrid.simulate(hybrid.paper_experiment(duration=0.05))
+
+
+def test_save_returns_the_path_it_wrote(tmp_path, result):
+    path = result.save(tmp_path / "run")
+    assert path == tmp_path / "run.npz" and path.is_file()
+    loaded = hybrid.SimulationResult.load(path)
+    np.testing.assert_array_equal(loaded.state, result.state)
+    assert result.save(tmp_path / "run.v2").name == "run.v2.npz"
+
+
+def test_save_never_overwrites_unasked(tmp_path, result):
+    path = tmp_path / "r.npz"
+    path.write_bytes(b"precious")
+    with pytest.raises(hybrid.HybridError, match="r.npz exists; choose another name or pass overwrite=True"):
+        result.save(path)
+    assert path.read_bytes() == b"precious"
+    with pytest.raises(hybrid.HybridError, match="exists"):
+        result.save_csv(tmp_path / "r.npz")
+    result.save(path, overwrite=True)
+    assert hybrid.SimulationResult.load(path).t[-1] == result.t[-1]
+
+
+@pytest.mark.parametrize("damage", ["truncate", "garbage", "missing", "empty", "foreign npz"])
+def test_broken_result_files_are_hybrid_errors(tmp_path, result, damage):
+    path = result.save(tmp_path / "r.npz")
+    if damage == "truncate":
+        path.write_bytes(path.read_bytes()[:300])
+    elif damage == "garbage":
+        path.write_bytes(b"PK\x03\x04" + bytes(range(256)) * 4)
+    elif damage == "missing":
+        path.unlink()
+    elif damage == "empty":
+        path.write_bytes(b"")
+    else:
+        np.savez(path, x=np.zeros(3))
+    with pytest.raises(hybrid.HybridError, match="is not a readable saved hybrid result") as info:
+        hybrid.SimulationResult.load(path)
+    assert len(str(info.value).splitlines()) == 1
+
+
+def test_a_failed_write_leaves_nothing_behind(tmp_path):
+    target = tmp_path / "out.npz"
+
+    def half_then_fail(tmp: Path) -> None:
+        tmp.write_bytes(b"half a file")
+        raise OSError(28, "No space left on device")
+
+    with pytest.raises(hybrid.HybridError, match="writing .*out.npz failed \\(No space left on device\\)"):
+        files.write_with(target, half_then_fail)
+    assert list(tmp_path.iterdir()) == []  # neither the target nor a temporary file
+
+
+def test_output_under_a_file_is_one_clear_line(tmp_path, result):
+    afile = tmp_path / "afile"
+    afile.write_text("x")
+    with pytest.raises(hybrid.HybridError, match="is a file; give a folder"):
+        result.save(afile / "r.npz")
+    proc = subprocess.run([sys.executable, "-m", "hybrid", "paper", "--out", str(afile / "sub")], cwd=ROOT,
+                          capture_output=True, text=True)
+    assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1, proc.stderr
+    assert afile.read_text() == "x"

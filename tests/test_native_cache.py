@@ -1,0 +1,80 @@
+"""The native build cache: the compiler it uses and why, and healing from any broken entry."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+import warnings
+from pathlib import Path
+
+import pytest
+
+import hybrid
+from hybrid import native
+
+ROOT = Path(__file__).resolve().parent.parent
+LAW = ("import hybrid; law = hybrid.decoupling_law(hybrid.paper_arm(), hybrid.Circle((0.5, 0), 0.2)); "
+       "print(law([2.2, 1.9], [0.3, -0.4], [0.1, 1.0], [-8.0, 3.0]))")
+
+
+def run(code: str, **env) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
+                          env={**os.environ, **env})
+
+
+def test_cc_naming_a_missing_program_is_an_error_not_a_fallback(tmp_path):
+    proc = run(LAW, CC="no-such-compiler", HYBRID_CACHE_DIR=str(tmp_path))
+    assert proc.returncode != 0
+    assert "NativeBuildError: $CC='no-such-compiler' names no program on PATH" in proc.stderr
+    assert not list(tmp_path.rglob("*.so"))  # gcc was not used behind the user's back
+
+
+def test_a_compiler_that_writes_nothing_is_reported(tmp_path):
+    proc = run(LAW, CC=shutil.which("true"), HYBRID_CACHE_DIR=str(tmp_path))
+    assert proc.returncode != 0 and "exited 0 but wrote no library" in proc.stderr
+    assert "FileNotFoundError" not in proc.stderr
+    good = run(LAW, HYBRID_CACHE_DIR=str(tmp_path))  # the next run with a real compiler is fine
+    assert good.returncode == 0, good.stderr
+
+
+def test_an_entry_that_matches_its_checksum_but_does_not_load_heals(tmp_path):
+    first = run(LAW, HYBRID_CACHE_DIR=str(tmp_path))
+    assert first.returncode == 0, first.stderr
+    for so in tmp_path.rglob("*.so"):
+        so.write_bytes(b"\x7fELF not really a library")
+        manifest = so.parent / "manifest.json"
+        data = json.loads(manifest.read_text())
+        data["sha256"] = native._sha256(so)  # the checksum agrees: only loading can tell
+        manifest.write_text(json.dumps(data))
+    second = run(LAW, HYBRID_CACHE_DIR=str(tmp_path))
+    assert second.returncode == 0, second.stderr
+    assert second.stdout == first.stdout
+
+
+def test_hand_edited_generated_code_is_used_with_a_warning(tmp_path, monkeypatch):
+    src = tmp_path / "generated"
+    shutil.copytree(ROOT / "generated", src)
+    c = src / "hybrid_sympy.c"
+    c.write_text(c.read_text() + "\n/* my tuning */\n")
+    monkeypatch.setattr(native, "source_dir", lambda: src)
+    monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
+    native.load.cache_clear()
+    try:
+        with pytest.warns(native.HandEditedWarning, match="hybrid_sympy.c in .* were edited by hand"):
+            native.load("sympy")
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            native.load("casadi")  # untouched: no warning
+    finally:
+        native.load.cache_clear()
+
+
+def test_the_compiler_is_probed_once_per_process():
+    native._compiler.cache_clear()
+    native.compiler()
+    native.compiler()
+    assert native._compiler.cache_info().misses == 1
+    assert isinstance(hybrid.NativeBuildError("x"), hybrid.HybridError)
