@@ -232,6 +232,37 @@ def link_inertias(chain: Chain, frames: Frames, params) -> list[Inertia]:
     return out
 
 
+@dataclass
+class Body:
+    """A link's inertia kept in its own frame: mass ``m``, centre of mass ``c`` (base axes, about
+    the origin) and the constant inertia ``Ic`` about it in link axes, with the link's rotation
+    ``R``. Applying it rotates the motion in and the moment out (cheaper than forming ``R Ic R^T``
+    when it is applied only a few times, as in Newton-Euler)."""
+
+    m: object
+    c: ca.SX
+    Ic: ca.SX
+    R: ca.SX
+
+    def apply(self, motion):
+        """The momentum ``I v`` of ``v = (w, v_O)``: ``(R Ic R^T w + c x h, h)`` with ``h = m (v_O + w x c)``."""
+        w, v = motion
+        h = self.m * (v + _cross(w, self.c))
+        return self.R @ (self.Ic @ (self.R.T @ w)) + _cross(self.c, h), h
+
+
+def link_bodies(chain: Chain, frames: Frames, params) -> list[Body]:
+    """Each link's :class:`Body` from the ``robot`` parameters."""
+    out = []
+    k = len(INERTIAL)
+    for i in range(chain.n):
+        m, cx, cy, cz, ixx, ixy, ixz, iyy, iyz, izz = (params[i * k + j] for j in range(k))
+        R = frames.R[i]
+        Ic = ca.vertcat(ca.horzcat(ixx, ixy, ixz), ca.horzcat(ixy, iyy, iyz), ca.horzcat(ixz, iyz, izz))
+        out.append(Body(m, frames.p[i] + R @ ca.vertcat(cx, cy, cz), Ic, R))
+    return out
+
+
 def _gravity_and_damping(chain: Chain, params):
     base = len(INERTIAL) * chain.n
     damping = [params[base + i] for i in range(chain.n)]
@@ -239,10 +270,10 @@ def _gravity_and_damping(chain: Chain, params):
     return damping, g
 
 
-def crba(chain: Chain, frames: Frames, params) -> ca.SX:
+def crba(chain: Chain, frames: Frames, params, inertias: list[Inertia] | None = None) -> ca.SX:
     """``B(q)`` (n x n, symmetric) by the composite-rigid-body algorithm:
     ``B_ij = S_j . (Ic_i S_i)`` for ``j <= i``, ``Ic_i`` the inertia of links ``i..n``."""
-    inertias = link_inertias(chain, frames, params)
+    inertias = inertias or link_inertias(chain, frames, params)
     B = [[None] * chain.n for _ in range(chain.n)]
     composite = None
     for i in reversed(range(chain.n)):
@@ -253,11 +284,12 @@ def crba(chain: Chain, frames: Frames, params) -> ca.SX:
     return ca.vertcat(*(ca.horzcat(*row) for row in B))
 
 
-def rnea(chain: Chain, frames: Frames, params, qd, qdd=None) -> ca.SX:
+def rnea(chain: Chain, frames: Frames, params, qd, qdd=None, bodies=None) -> ca.SX:
     """``tau = B q'' + n(q, q')`` by recursive Newton-Euler (``q'' = 0`` when ``qdd`` is None):
-    Coriolis/centrifugal, gravity and joint viscosity ``damping_i q'_i``."""
+    Coriolis/centrifugal, gravity and joint viscosity ``damping_i q'_i``. ``bodies`` (anything with
+    ``apply``) reuses inertias already formed, e.g. the CRBA's."""
     damping, g = _gravity_and_damping(chain, params)
-    inertias = link_inertias(chain, frames, params)
+    inertias = bodies or link_bodies(chain, frames, params)
     vs, bias = velocities_and_bias(frames, qd)
     # a_i = c_i + sum_{j <= i} S_j q''_j + a_0, with gravity as the base's fictitious acceleration
     # a_0 = (0, -g): in base axes it is the same vector for every link

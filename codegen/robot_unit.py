@@ -32,8 +32,9 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
     q, qd, qdd, tau = (ca.SX.sym(s, n) for s in ("q", "qd", "qdd", "tau"))
     params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
     fr = rb.forward_kinematics(chain, q)
-    B = rb.crba(chain, fr, params)
-    bias = rb.rnea(chain, fr, params, qd)
+    inertias = rb.link_inertias(chain, fr, params)  # one set for B and n
+    B = rb.crba(chain, fr, params, inertias)
+    bias = rb.rnea(chain, fr, params, qd, bodies=inertias)
     a_q, a_qd = Arg("q", q, _units(chain, "q"), names=names), Arg("qd", qd, _units(chain, "qd"), names=names)
     a_p = Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain))
     row_major = lambda M: ca.reshape(M.T, -1, 1)  # noqa: E731  (CasADi is column-major)

@@ -3,7 +3,8 @@
 Task axes: the six rows of ``R = diag(R_L, R_L)`` (``t1, t2, n`` linear, then angular about
 the same axes); a task uses ``m`` of them (``axes``): all six, the three linear ones
 (position only), or the planar arm's ``(t1, n)`` = axes ``(0, 2)``. With ``R_m`` those rows,
-``J_y = R_m J``, ``Lambda_y = (J_y B^-1 J_y^T)^-1`` and ``Jbar_y^T = Lambda_y J_y B^-1``:
+``J_y = R_m J``, ``Lambda_y = (J_y B^-1 J_y^T)^-1`` and ``Jbar_y^T = Lambda_y J_y B^-1`` (for all six
+axes, where ``R_m = R`` is a rotation, the code works with ``J`` and ``R^T a``, the same law):
 
     f_y  = Lambda_y (a - kappa R_m' v - R_m J' q') + Jbar_y^T (n - J^T F_c)
     F*   = R_m^T f_y                                   (a wrench, base axes)
@@ -71,8 +72,11 @@ def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tu
     v = J @ qd
     tf = task_frame(spec, fr.tip_p, v[:3], theta, e)
     Rm, Rdm = _rows(_blockdiag(tf.R), axes), _rows(_blockdiag(tf.Rd), axes)
-    Jy = Rm @ J
     b = a - opts[0] * (Rdm @ v) - Rm @ Jdqd
+    full = m == 6  # R_m = R is a rotation: work with J itself (same conditioning) and rotate b and f
+    Jy = J if full else Rm @ J
+    if full:
+        b = Rm.T @ b
     Q, Rq = factor.thin_qr(Jy.T)
     cond = factor.frobenius_conditioning(Jy, Rq)
     if m == n:
@@ -84,8 +88,9 @@ def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tu
         y = ca.vertcat(*(ca.dot(Q[i], tau) for i in range(m)))
         f_y = _upper_solve(Rq, y)
     else:
-        B = rb.crba(chain, fr, params)
-        h = rb.rnea(chain, fr, params, qd) - J.T @ Fc
+        inertias = rb.link_inertias(chain, fr, params)  # one set for B and n
+        B = rb.crba(chain, fr, params, inertias)
+        h = rb.rnea(chain, fr, params, qd, bodies=inertias) - J.T @ Fc
         L = factor.cholesky(B)
         Y = factor.lower_columns_solve(L, Jy.T)           # L^-1 J_y^T, n x m
         K = factor.cholesky(Y.T @ Y)                      # Lambda_y^-1 = K K^T
@@ -94,7 +99,7 @@ def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tu
         f_y = factor.factor_solve(K, b + Y.T @ u)
         g = factor.factor_solve(K, Y.T @ u0)
         tau = Jy.T @ (f_y - g) + tau0
-    F = Rm.T @ f_y
+    F = f_y if full else Rm.T @ f_y
 
     names = tuple(j.name for j in chain.joints)
     units = {"revolute": ("rad", "rad/s"), "prismatic": ("m", "m/s")}
@@ -176,8 +181,9 @@ def operational_space_kernels(chain: rb.Chain) -> tuple[Kernel, ...]:
     fr = rb.forward_kinematics(chain, q)
     J = rb.frame_jacobian(fr)
     Jdqd = rb.frame_classical_acceleration(fr, qd)
-    B = rb.crba(chain, fr, params)
-    bias = rb.rnea(chain, fr, params, qd)
+    inertias = rb.link_inertias(chain, fr, params)
+    B = rb.crba(chain, fr, params, inertias)
+    bias = rb.rnea(chain, fr, params, qd, bodies=inertias)
     L = factor.cholesky(B)
     Y = factor.lower_columns_solve(L, J.T)
     K = factor.cholesky(Y.T @ Y)
