@@ -216,22 +216,6 @@ class Inertia:
         return self.I @ w + _cross(self.h, v), self.m * v - _cross(self.h, w)
 
 
-def link_inertias(chain: Chain, frames: Frames, params) -> list[Inertia]:
-    """Each link's inertia in base axes about the base origin, from the ``robot`` parameters."""
-    out = []
-    k = len(INERTIAL)
-    for i in range(chain.n):
-        m, cx, cy, cz, ixx, ixy, ixz, iyy, iyz, izz = (params[i * k + j] for j in range(k))
-        R = frames.R[i]
-        c = frames.p[i] + R @ ca.vertcat(cx, cy, cz)
-        Ic = ca.vertcat(ca.horzcat(ixx, ixy, ixz), ca.horzcat(ixy, iyy, iyz), ca.horzcat(ixz, iyz, izz))
-        Iw = R @ Ic @ R.T
-        # parallel axes to the base origin: I_O = I_c + m (|c|^2 1 - c c^T)
-        I_O = Iw + m * (ca.dot(c, c) * ca.SX.eye(3) - c @ c.T)
-        out.append(Inertia(m, m * c, I_O))
-    return out
-
-
 @dataclass
 class Body:
     """A link's inertia kept in its own frame: mass ``m``, centre of mass ``c`` (base axes, about
@@ -250,6 +234,13 @@ class Body:
         h = self.m * (v + _cross(w, self.c))
         return self.R @ (self.Ic @ (self.R.T @ w)) + _cross(self.c, h), h
 
+    def about_origin(self) -> Inertia:
+        """The same inertia as an :class:`Inertia` about the base origin (parallel axes:
+        ``I_O = R Ic R^T + m (|c|^2 1 - c c^T)``), which composites add up."""
+        c = self.c
+        I_O = self.R @ self.Ic @ self.R.T + self.m * (ca.dot(c, c) * ca.SX.eye(3) - c @ c.T)
+        return Inertia(self.m, self.m * c, I_O)
+
 
 def link_bodies(chain: Chain, frames: Frames, params) -> list[Body]:
     """Each link's :class:`Body` from the ``robot`` parameters."""
@@ -261,6 +252,11 @@ def link_bodies(chain: Chain, frames: Frames, params) -> list[Body]:
         Ic = ca.vertcat(ca.horzcat(ixx, ixy, ixz), ca.horzcat(ixy, iyy, iyz), ca.horzcat(ixz, iyz, izz))
         out.append(Body(m, frames.p[i] + R @ ca.vertcat(cx, cy, cz), Ic, R))
     return out
+
+
+def link_inertias(chain: Chain, frames: Frames, params) -> list[Inertia]:
+    """Each link's inertia in base axes about the base origin (for composites, as in the CRBA)."""
+    return [b.about_origin() for b in link_bodies(chain, frames, params)]
 
 
 def _gravity_and_damping(chain: Chain, params):

@@ -256,6 +256,27 @@ def _shipped_urdf(name: str) -> Path | None:
     return next((Path(dist.locate_file(f)) for f in dist.files or () if str(f).endswith("/" + name)), None)
 
 
+def _pinocchio_terms(pin, path: Path, robot, tip: str):
+    """``terms(q, qd) -> (tip placement, J, J' q', B, n)`` by Pinocchio from Python, on its own
+    reading of the URDF (joints off our chain held at 0, as Robot.from_urdf does)."""
+    model = pin.buildModelFromUrdf(str(path))
+    if model.nq != robot.n:
+        extra = [model.getJointId(n) for n in model.names[1:] if n not in robot.joint_names]
+        model = pin.buildReducedModel(model, extra, pin.neutral(model))
+    data, fid, damping = model.createData(), model.getFrameId(tip), np.array(robot.damping)
+
+    def terms(q, qd):
+        pin.forwardKinematics(model, data, q, qd, np.zeros(robot.n))
+        pin.updateFramePlacements(model, data)
+        J = pin.computeFrameJacobian(model, data, q, fid, pin.LOCAL_WORLD_ALIGNED)
+        acc = pin.getFrameClassicalAcceleration(model, data, fid, pin.LOCAL_WORLD_ALIGNED).vector
+        B = pin.crba(model, data, q)
+        B = np.triu(B) + np.triu(B, 1).T
+        return data.oMf[fid], J, acc, B, pin.nonLinearEffects(model, data, q, qd) + damping * qd
+
+    return terms
+
+
 def robot_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool, add) -> None:
     """Terms of a URDF arm: in C, from Python (one state, batched), by Pinocchio; generation time, code size."""
     from .law import arm_terms
@@ -291,22 +312,8 @@ def robot_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool, add)
         import pinocchio as pin
     except ImportError:
         return
-    model = pin.buildModelFromUrdf(str(path))
-    if model.nq != robot.n:  # the Panda's fingers: held at 0, as Robot.from_urdf does
-        extra = [model.getJointId(n) for n in model.names[1:] if n not in robot.joint_names]
-        model = pin.buildReducedModel(model, extra, pin.neutral(model))
-    data, fid, damping = model.createData(), model.getFrameId(tip), np.array(robot.damping)
-
-    def pinocchio_terms():
-        pin.forwardKinematics(model, data, q, qd, np.zeros(robot.n))
-        pin.updateFramePlacements(model, data)
-        J = pin.computeFrameJacobian(model, data, q, fid, pin.LOCAL_WORLD_ALIGNED)
-        acc = pin.getFrameClassicalAcceleration(model, data, fid, pin.LOCAL_WORLD_ALIGNED).vector
-        B = pin.crba(model, data, q)
-        B = np.triu(B) + np.triu(B, 1).T
-        return data.oMf[fid], J, acc, B, pin.nonLinearEffects(model, data, q, qd) + damping * qd
-
-    theirs = _median_ns(pinocchio_terms, 500 if quick else 5000, rep)
+    pinocchio_terms = _pinocchio_terms(pin, path, robot, tip)
+    theirs = _median_ns(lambda: pinocchio_terms(q, qd), 500 if quick else 5000, rep)
     add(f"{name}: the same by Pinocchio from Python", theirs, ratio=f"{theirs / ours:.2f}x the time of arm_terms")
 
 
@@ -416,21 +423,11 @@ def spatial_law_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool
         add(f"{name}: {LAW_ONE}", ours)
         add(f"{name}: {LAW_BATCHED}", batched)
         return
-    model = pin.buildModelFromUrdf(str(path))
-    if model.nq != robot.n:
-        extra = [model.getJointId(n) for n in model.names[1:] if n not in robot.joint_names]
-        model = pin.buildReducedModel(model, extra, pin.neutral(model))
-    data, fid, damping = model.createData(), model.getFrameId(tip), np.array(robot.damping)
+    pinocchio_terms = _pinocchio_terms(pin, path, robot, tip)
 
     def pinocchio_law():
-        pin.forwardKinematics(model, data, q, qd, np.zeros(robot.n))
-        pin.updateFramePlacements(model, data)
-        J = pin.computeFrameJacobian(model, data, q, fid, pin.LOCAL_WORLD_ALIGNED)
-        Jdqd = pin.getFrameClassicalAcceleration(model, data, fid, pin.LOCAL_WORLD_ALIGNED).vector
-        B = pin.crba(model, data, q)
-        B = np.triu(B) + np.triu(B, 1).T
-        n = pin.nonLinearEffects(model, data, q, qd) + damping * qd
-        R, Rd = reference.spatial_frame(sphere, data.oMf[fid].translation, J[:3] @ qd, (0.0, 0.0, 1.0))
+        placement, J, Jdqd, B, n = pinocchio_terms(q, qd)
+        R, Rd = reference.spatial_frame(sphere, placement.translation, J[:3] @ qd, (0.0, 0.0, 1.0))
         return reference.spatial_decoupling_law(J, Jdqd, B, n, R, Rd, qd, a, Fc, np.zeros(robot.n), range(6), True)
 
     theirs = _median_ns(pinocchio_law, 300 if quick else 3000, rep)

@@ -44,11 +44,11 @@ def as_array(name: str, x, size: int, batched: bool = False) -> np.ndarray:
         return x  # already what C wants: no copy, no checks to repeat
     if np.iscomplexobj(x):
         raise HybridError(f"{name} must be real, got complex values")
+    want = f"(N, {size}) with N >= 1" if batched else f"({size},)"
     try:
         arr = np.ascontiguousarray(x, dtype=np.float64)
     except (TypeError, ValueError):
-        raise HybridError(f"{name} must be {size} numbers, got {x!r:.80}") from None
-    want = f"(N, {size})" if batched else f"({size},)"
+        raise HybridError(f"{name} must be numbers of shape {want}, got {x!r:.80}") from None
     if arr.ndim != (2 if batched else 1) or arr.shape[-1] != size or arr.shape[0] == 0:
         raise HybridError(f"{name} must have shape {want}, got {arr.shape}")
     return arr

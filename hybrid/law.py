@@ -55,15 +55,7 @@ def check_singular_tol(owner: str, value) -> None:
 
 def as_states(name: str, x, size: int = 2) -> np.ndarray:
     """``x`` as a C-contiguous float64 array of shape ``(size,)`` or ``(N, size)``."""
-    if np.iscomplexobj(x):
-        raise HybridError(f"{name} must be real, got complex values")
-    try:
-        arr = np.ascontiguousarray(x, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise HybridError(f"{name} must be numbers of shape ({size},) or (N, {size}), got {x!r:.80}") from None
-    if arr.ndim not in (1, 2) or arr.shape[-1] != size or (arr.ndim == 2 and arr.shape[0] == 0):
-        raise HybridError(f"{name} must have shape ({size},) or (N, {size}) with N >= 1, got {arr.shape}")
-    return arr
+    return binding.as_array(name, x, size, batched=np.ndim(x) == 2 if not isinstance(x, str) else False)
 
 
 @dataclass(frozen=True)

@@ -9,7 +9,7 @@ import numpy as np
 
 from .errors import HybridError
 from .surfaces import Circle, Plane, Surface  # noqa: F401  (the planar surfaces, as before)
-from .validate import _finite, _point  # noqa: F401
+from .validate import _finite, _point, check_model_error  # noqa: F401
 
 
 @dataclass(frozen=True)
@@ -67,12 +67,7 @@ class Arm:
     def with_model_error(self, inertial: float = 0.1, viscous_compensation: float = 0.5) -> Arm:
         """The controller's model of this arm: inertial parameters ``(1 + inertial)`` times
         the true ones, joint viscosity ``viscous_compensation`` times the true one."""
-        _finite("model error", inertial=inertial, viscous_compensation=viscous_compensation)
-        if inertial <= -1:
-            raise HybridError(f"model_error = {inertial} makes masses non-positive; give a value > -1")
-        if viscous_compensation < 0:
-            raise HybridError(f"viscous_compensation = {viscous_compensation}; give a fraction >= 0")
-        k = 1.0 + inertial
+        k = check_model_error(inertial, viscous_compensation)
         return replace(self, m1=self.m1 * k, m2=self.m2 * k, I1=self.I1 * k, I2=self.I2 * k,
                        V1=self.V1 * viscous_compensation, V2=self.V2 * viscous_compensation)
 

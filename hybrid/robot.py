@@ -23,8 +23,9 @@ from codegen import rigid_body as rb
 from . import native
 from .binding import Unit
 from .errors import HybridError
-from .parameters import Arm, _finite
+from .parameters import Arm
 from .urdf import JointLimits, LinkInertia, read_chain
+from .validate import _finite, check_model_error
 
 
 def _gravity(g) -> tuple[float, float, float]:
@@ -125,12 +126,7 @@ class Robot:
     def with_model_error(self, inertial: float = 0.1, viscous_compensation: float = 0.5) -> Robot:
         """The controller's model of this arm: masses and inertias ``(1 + inertial)`` times the
         true ones (centres of mass unchanged), viscosities ``viscous_compensation`` times."""
-        _finite("model error", inertial=inertial, viscous_compensation=viscous_compensation)
-        if inertial <= -1:
-            raise HybridError(f"model_error = {inertial} makes masses non-positive; give a value > -1")
-        if viscous_compensation < 0:
-            raise HybridError(f"viscous_compensation = {viscous_compensation}; give a fraction >= 0")
-        k = 1.0 + inertial
+        k = check_model_error(inertial, viscous_compensation)
         links = tuple(LinkInertia(lk.mass * k, lk.com, tuple(tuple(v * k for v in r) for r in lk.inertia))
                       for lk in self.links)
         return dataclasses.replace(self, links=links, damping=tuple(d * viscous_compensation for d in self.damping))

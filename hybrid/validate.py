@@ -32,3 +32,13 @@ def _point(owner: str, name: str, p, dims: tuple[int, ...] = (2,)) -> tuple[floa
     if not np.isfinite(arr).all():
         raise HybridError(f"{owner}.{name} = {p!r} is not finite; give finite coordinates")
     return tuple(float(v) for v in arr)
+
+
+def check_model_error(inertial, viscous_compensation) -> float:
+    """The factor ``1 + inertial`` of a controller's model, after checking both settings."""
+    _finite("model error", inertial=inertial, viscous_compensation=viscous_compensation)
+    if inertial <= -1:
+        raise HybridError(f"model_error = {inertial} makes masses non-positive; give a value > -1")
+    if viscous_compensation < 0:
+        raise HybridError(f"viscous_compensation = {viscous_compensation}; give a fraction >= 0")
+    return 1.0 + inertial

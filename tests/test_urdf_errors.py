@@ -115,7 +115,7 @@ def test_wrong_state_sizes_are_errors(tmp_path):
     robot = hybrid.Robot.from_urdf(write(tmp_path, SLIDER), tip="tool")
     with pytest.raises(hybrid.HybridError, match=r"q must have shape \(3,\), got \(2,\)"):
         hybrid.arm_terms(robot, np.zeros(2), np.zeros(3))
-    with pytest.raises(hybrid.HybridError, match=r"qdot must have shape \(N, 3\), got \(4, 2\)"):
+    with pytest.raises(hybrid.HybridError, match=r"qdot must have shape \(N, 3\) with N >= 1, got \(4, 2\)"):
         hybrid.arm_terms(robot, np.zeros((4, 3)), np.zeros((4, 2)))
     with pytest.raises(hybrid.HybridError, match="same number of rows"):
         hybrid.arm_terms(robot, np.zeros((4, 3)), np.zeros((5, 3)))
