@@ -25,7 +25,7 @@ def to_sx(expr: sp.Expr, symbols: dict, memo: dict):
         return memo[expr]
     if expr.is_Symbol:
         out = symbols[expr]
-    elif expr.is_Number:
+    elif expr.is_Number or expr.is_number and not expr.free_symbols:  # 3, 1/2, pi, E, sqrt(2)
         out = ca.SX(float(expr))
     elif expr.is_Add:
         out = sum((to_sx(a, symbols, memo) for a in expr.args[1:]), to_sx(expr.args[0], symbols, memo))
@@ -41,8 +41,10 @@ def to_sx(expr: sp.Expr, symbols: dict, memo: dict):
             out = 1 / ca.sqrt(base)
         elif exp.is_Integer and int(exp) < 0:
             out = 1 / base ** int(-exp) if int(exp) != -1 else 1 / base
-        else:
+        elif exp.is_number:
             out = base ** float(exp) if not exp.is_Integer else base ** int(exp)
+        else:  # a symbolic exponent
+            out = base ** to_sx(exp, symbols, memo)
     elif type(expr) in _UNARY:
         out = _UNARY[type(expr)](to_sx(expr.args[0], symbols, memo))
     elif isinstance(expr, (sp.Max, sp.Min)):

@@ -71,7 +71,7 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
 
 def c_identifier(name: str) -> str:
     """``name`` made a C identifier (the prefix of every emitted symbol)."""
-    ident = re.sub(r"\W", "_", name)
+    ident = re.sub(r"\W", "_", name, flags=re.ASCII)
     return ident if re.match(r"[A-Za-z_]", ident) else f"robot_{ident}"
 
 

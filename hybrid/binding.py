@@ -10,6 +10,7 @@ status code into a :class:`~hybrid.errors.HybridError` naming the inputs.
 from __future__ import annotations
 
 import os
+import threading
 
 import numpy as np
 
@@ -37,26 +38,44 @@ def status_error(status: int, where: str, singular_hint: str = "", **inputs) -> 
     return NonFiniteError(f"{where}: result is NaN or infinite ({hint}) at {shown}")
 
 
-def as_array(name: str, x, size: int, batched: bool = False) -> np.ndarray:
-    """``x`` as a C-contiguous float64 array of shape ``(size,)``, or ``(N, size)`` when batched."""
-    if (type(x) is np.ndarray and x.dtype == np.float64 and x.flags.c_contiguous
-            and x.shape == ((x.shape[0], size) if batched and x.ndim == 2 and x.shape[0] else (size,))):
+def as_array(name: str, x, size: int, batched: bool | None = False) -> np.ndarray:
+    """``x`` as a C-contiguous float64 array of shape ``(size,)``, or ``(N, size)`` when batched
+    (``batched=None``: whichever ``x`` is)."""
+    if type(x) is np.ndarray and x.dtype == np.float64 and x.flags.c_contiguous and batched is not True \
+            and x.shape == (size,):
         return x  # already what C wants: no copy, no checks to repeat
-    if np.iscomplexobj(x):
-        raise HybridError(f"{name} must be real, got complex values")
-    want = f"(N, {size}) with N >= 1" if batched else f"({size},)"
     try:
-        arr = np.ascontiguousarray(x, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise HybridError(f"{name} must be numbers of shape {want}, got {x!r:.80}") from None
+        arr = np.asarray(x)
+        if np.iscomplexobj(arr):
+            raise HybridError(f"{name} must be real, got complex values")
+        arr = np.ascontiguousarray(arr, dtype=np.float64)
+    except (TypeError, ValueError) as exc:  # ragged, text, objects
+        if isinstance(exc, HybridError):
+            raise
+        arr = None
+    if batched is None:
+        batched = arr is not None and arr.ndim == 2
+    want = f"(N, {size}) with N >= 1" if batched else f"({size},)"
+    if arr is None:
+        raise HybridError(f"{name} must be numbers of shape {want}, got {x!r:.80}")
     if arr.ndim != (2 if batched else 1) or arr.shape[-1] != size or arr.shape[0] == 0:
         raise HybridError(f"{name} must have shape {want}, got {arr.shape}")
     return arr
 
 
+def is_batch(x) -> bool:
+    """Whether ``x`` holds N states (two dimensions); ragged or foreign input counts as one state,
+    whose check then says what is wrong."""
+    try:
+        return np.ndim(x) == 2
+    except (TypeError, ValueError):
+        return False
+
+
 #: fewer states than this run on the calling thread (a thread hand-off costs some microseconds)
 PARALLEL_MIN_STATES = 512
-_POOL = None
+_POOL: tuple | None = None  # (process id, executor): a forked child builds its own
+_POOL_LOCK = threading.Lock()
 
 
 def _workers() -> int:
@@ -74,12 +93,14 @@ def parallel_chunks(run, N: int) -> list[int]:
     workers = min(_workers(), N // PARALLEL_MIN_STATES)
     if workers <= 1:
         return [run(0, N)]
-    if _POOL is None:
-        from concurrent.futures import ThreadPoolExecutor
+    with _POOL_LOCK:
+        if _POOL is None or _POOL[0] != os.getpid():  # a pool inherited through fork has no threads
+            from concurrent.futures import ThreadPoolExecutor
 
-        _POOL = ThreadPoolExecutor(max_workers=_workers(), thread_name_prefix="hybrid-batch")
+            _POOL = (os.getpid(), ThreadPoolExecutor(max_workers=_workers(), thread_name_prefix="hybrid-batch"))
+        pool = _POOL[1]
     bounds = np.linspace(0, N, workers + 1).astype(int)
-    return list(_POOL.map(run, bounds[:-1], bounds[1:]))
+    return list(pool.map(run, bounds[:-1], bounds[1:]))
 
 
 class Function:

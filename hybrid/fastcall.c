@@ -10,6 +10,7 @@
  *                                         one per function: calls it with its arguments in order
  *   #define HYBRID_FAST_FUNCTIONS ...     {"symbol", adapt_K, n_in, n_out, {in sizes}, {out rows, cols}}, ...
  *   #define HYBRID_FAST_MAX_OUT ...       the largest total output size
+ *   #define HYBRID_FAST_MAX_ARGS ...      the most inputs (or outputs) a function may have
  *   #define HYBRID_MODULE ...             the module's name (its cache key)
  *
  * bind(symbol, n_state, params, singular_tol) fixes the trailing inputs (the parameters);
@@ -29,7 +30,6 @@
 #define HYBRID_STR(x) HYBRID_STR_(x)
 #define HYBRID_INIT_(name) PyInit_##name
 #define HYBRID_INIT(name) HYBRID_INIT_(name)
-#define HYBRID_FAST_MAX_ARGS 16
 
 typedef int (*adapter)(const double *const *in, double tol, double *const *out);
 

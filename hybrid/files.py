@@ -17,6 +17,23 @@ from pathlib import Path
 from .errors import HybridError
 
 
+def _read_umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+_UMASK = _read_umask()  # read once, at import: os.umask is process-wide
+
+
+def temporary(path: Path) -> tuple[int, str]:
+    """``(fd, name)`` of a new temporary file beside ``path``, with the permissions a plain
+    ``open`` would give (``mkstemp``'s 0600 would hide the result from other users)."""
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=path.suffix)
+    os.fchmod(fd, 0o666 & ~_UMASK)
+    return fd, tmp
+
+
 def _why(exc: OSError) -> str:
     return exc.strerror or exc.__class__.__name__
 
@@ -45,7 +62,7 @@ def atomic_path(path: Path, overwrite: bool = False) -> Iterator[Path]:
     if path.exists() and not overwrite:
         raise HybridError(f"{path} exists; choose another name or pass overwrite=True (--force) to replace it")
     writable_folder(path.parent, "folder")
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=path.suffix)
+    fd, tmp = temporary(path)
     os.close(fd)
     try:
         yield Path(tmp)

@@ -55,7 +55,7 @@ def check_singular_tol(owner: str, value) -> None:
 
 def as_states(name: str, x, size: int = 2) -> np.ndarray:
     """``x`` as a C-contiguous float64 array of shape ``(size,)`` or ``(N, size)``."""
-    return binding.as_array(name, x, size, batched=np.ndim(x) == 2 if not isinstance(x, str) else False)
+    return binding.as_array(name, x, size, batched=None)
 
 
 @dataclass(frozen=True)
@@ -89,6 +89,10 @@ class DecouplingLaw:
         fast, handle = fn.fast_bind(4, *self._params, singular_tol=self.singular_tol)
         init("_fast", fast)
         init("_binding", handle)
+
+    def __reduce__(self):
+        # the compiled handles do not pickle: a copy is built again from the settings
+        return (type(self), (self.arm, self.surface, self.curvature, self.backend, self.singular_tol))
 
     def evaluate(self, q, qdot, a, Fc) -> tuple[np.ndarray, np.ndarray]:
         """``(F*, tau)`` for one state (shape ``(2,)``) or N states (shape ``(N, 2)``)."""
@@ -209,7 +213,7 @@ def robot_terms(robot: Robot, q, qdot) -> dict[str, np.ndarray]:
     if out is not None:
         return {_ROBOT_KEYS[n]: v for n, v in zip(names, out)}
     terms = robot.unit.function("robot_terms")
-    call = terms.batch if np.ndim(q) == 2 else terms
+    call = terms.batch if binding.is_batch(q) else terms
     out = call(q, qdot, robot.as_array())
     return {_ROBOT_KEYS[k]: v for k, v in out.items()}
 

@@ -29,6 +29,7 @@ from pathlib import Path
 
 import cffi
 
+from . import files
 from .errors import NativeBuildError
 
 log = logging.getLogger("hybrid")
@@ -110,20 +111,10 @@ def _sha256(path: Path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
 
-def _read_umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
-
-
-_UMASK = _read_umask()  # read once, at import: os.umask is process-wide
-
-
 def _atomic_write(path: Path, data: bytes) -> None:
     """Write ``data`` to ``path`` through a temporary file and a rename: never half-written."""
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=path.name + ".tmp")
+    fd, tmp = files.temporary(path)
     try:
-        os.fchmod(fd, 0o666 & ~_UMASK)  # mkstemp's 0600 would hide generated files from others
         with os.fdopen(fd, "wb") as f:
             f.write(data)
             f.flush()
@@ -137,7 +128,8 @@ def _atomic_write(path: Path, data: bytes) -> None:
 def _compile(c_file: Path, target: Path, cc: str, includes: list[str]) -> None:
     """Compile ``c_file`` into the extension ``target`` (written atomically)."""
     so = c_file.with_name(target.name)
-    paths = sorted({sysconfig.get_paths()["include"], sysconfig.get_paths()["platinclude"]}) + includes
+    paths = [str(c_file.parent), *sorted({sysconfig.get_paths()["include"], sysconfig.get_paths()["platinclude"]}),
+             *includes]
     cmd = [cc, *CFLAGS, "-shared", *(f"-I{p}" for p in paths), str(c_file), "-o", str(so), "-lm"]
     proc = subprocess.run(cmd, capture_output=True, text=True)
     if proc.returncode != 0:
@@ -161,8 +153,12 @@ def _cached_module(stem: str, key_material: dict, write_source: Callable[[str, P
     material = json.dumps({**key_material, "cc": [cc, ident], "flags": CFLAGS, "cpu": processor(),
                            "abi": sysconfig.get_config_var("EXT_SUFFIX")}, sort_keys=True)
     name = f"{stem}_{hashlib.sha256(material.encode()).hexdigest()[:20]}"
-    entry = cache_dir() / name
-    entry.mkdir(parents=True, exist_ok=True)
+    entry = _writable_cache() / name
+    try:
+        entry.mkdir(exist_ok=True)
+    except OSError as exc:
+        raise NativeBuildError(f"the cache entry {entry} cannot be created ({exc.strerror}); "
+                               "set HYBRID_CACHE_DIR to a writable folder") from None
     so = entry / f"{name}{sysconfig.get_config_var('EXT_SUFFIX')}"
     manifest = entry / "manifest.json"
 
@@ -231,14 +227,21 @@ def _compile_unit(src_dir: Path, prefix: str):
     cdef = cdef_of(header)
 
     def write_source(name: str, path: Path) -> None:
+        _copy_unit(path.parent, prefix, c_source, header)
         ffi = cffi.FFI()
         ffi.cdef(cdef)
         ffi.set_source(name, f'#include "{prefix}.c"')
         with contextlib.redirect_stdout(io.StringIO()):  # cffi announces what it writes
             ffi.emit_c_code(str(path))
 
-    return _cached_module(f"_{prefix}", {"c": c_source, "h": header, "cffi": cffi.__version__},
-                          write_source, [str(src_dir)])
+    return _cached_module(f"_{prefix}", {"c": c_source, "h": header, "cffi": cffi.__version__}, write_source, [])
+
+
+def _copy_unit(folder: Path, prefix: str, c_source: str, header: str) -> None:
+    """The unit's text, as read (and hashed into the cache key), beside the build's own source:
+    a ``regenerate`` running meanwhile cannot slip other code under the same key."""
+    (folder / f"{prefix}.c").write_text(c_source)
+    (folder / f"{prefix}.h").write_text(header)
 
 
 def read_manifest(src_dir: Path, prefix: str) -> dict:
@@ -356,7 +359,7 @@ def fastcall_prelude(manifest: dict) -> str:
         table.append(f'{{"{f["symbol"]}", adapt_{k}, {n_in}, {n_out}, {{{sizes}}}, {{{shapes}}}}}')
         max_out = max(max_out, sum(a["size"] for a in f["outputs"]))
     return ("".join(adapters) + f"#define HYBRID_FAST_FUNCTIONS {', '.join(table)}\n"
-            f"#define HYBRID_FAST_MAX_OUT {max_out}\n")
+            f"#define HYBRID_FAST_MAX_OUT {max_out}\n#define HYBRID_FAST_MAX_ARGS {FAST_MAX_ARGS}\n")
 
 
 def load_fastcall(src_dir: Path, prefix: str, manifest: dict):
@@ -372,8 +375,9 @@ def load_fastcall(src_dir: Path, prefix: str, manifest: dict):
     prelude = fastcall_prelude(manifest)
 
     def write_source(name: str, path: Path) -> None:
+        _copy_unit(path.parent, prefix, c_source, header)
         path.write_text(f'#include "{prefix}.c"\n{prelude}#define HYBRID_MODULE {name}\n{shim}')
 
     return _cached_module(f"_{prefix}_fastcall",
                           {"c": c_source, "h": header, "shim": shim, "prelude": prelude,
-                           "numpy": numpy.__version__}, write_source, [str(src_dir), numpy.get_include()])
+                           "numpy": numpy.__version__}, write_source, [numpy.get_include()])

@@ -12,7 +12,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
 
@@ -51,7 +51,7 @@ class Robot:
     links: tuple[LinkInertia, ...]
     damping: tuple[float, ...]
     gravity: tuple[float, float, float] = (0.0, 0.0, -9.81)
-    limits: JointLimits | None = None
+    limits: JointLimits | None = field(default=None, compare=False)  # arrays: information, not identity
 
     def __post_init__(self):
         object.__setattr__(self, "gravity", _gravity(self.gravity))
@@ -100,6 +100,13 @@ class Robot:
                       for m, d, inertia in ((arm.m1, arm.d1, arm.I1), (arm.m2, arm.d2, arm.I2)))
         limits = JointLimits(*(np.full(2, v) for v in (-math.inf, math.inf, math.inf, math.inf)))
         return cls("planar_arm", chain, links, (arm.V1, arm.V2), (0.0, -arm.gravity, 0.0), limits)
+
+    def __getstate__(self) -> dict:
+        """Pickled without its compiled caches (rebuilt, from the cache folder, where it lands)."""
+        return {k: v for k, v in self.__dict__.items() if k not in ("_unit", "_fast_terms")}
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
 
     # -------------------------------------------------------------- properties
 

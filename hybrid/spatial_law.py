@@ -13,17 +13,18 @@ from functools import partial
 
 import numpy as np
 
+from .binding import is_batch
 from .errors import HybridError
 from .robot import Robot, compiled_law_unit
 from .surfaces import Circle, Cylinder, ImplicitSurface, Plane, Sphere
-from .validate import _finite
 
 #: named task-axis selections: all six, position only, the planar arm's (t1, n)
 AXES = {"all": (0, 1, 2, 3, 4, 5), "position": (0, 1, 2), "planar": (0, 2)}
 
 
 def check_axes(robot: Robot, axes) -> tuple[int, ...]:
-    """``axes`` as a sorted tuple of distinct task-axis indices the robot can serve."""
+    """``axes`` as a tuple of distinct task-axis indices the robot can serve, in the given order
+    (``a[k]`` is the acceleration along ``axes[k]``)."""
     if axes is None:
         if robot.n < 6:
             raise HybridError(f"a {robot.n}-joint arm cannot control all six task axes; pass axes="
@@ -35,7 +36,7 @@ def check_axes(robot: Robot, axes) -> tuple[int, ...]:
             raise HybridError(f"axes = {axes!r}; name one of {', '.join(AXES)} or give indices 0-5")
         axes = AXES[axes]
     try:
-        out = tuple(sorted(int(i) for i in axes))
+        out = tuple(int(i) for i in axes)  # in the user's order: a[k] acts on axis axes[k]
     except (TypeError, ValueError):
         raise HybridError(f"axes = {axes!r}; give task-axis indices 0-5 (t1, t2, n, then rotations)") from None
     if not out or len(set(out)) != len(out) or not all(0 <= i <= 5 for i in out) or \
@@ -106,6 +107,11 @@ class SpatialDecouplingLaw:
         init("_fast", fast)
         init("_binding", handle)
 
+    def __reduce__(self):
+        # the compiled handles do not pickle: a copy is built again from the settings
+        return (type(self), (self.robot, self.surface, self.curvature, self.reference, self.axes,
+                             self.singular_tol))
+
     @property
     def m(self) -> int:
         """Number of task axes."""
@@ -118,7 +124,7 @@ class SpatialDecouplingLaw:
 
     def _checked(self, q, qdot, a, Fc, tau0) -> tuple[np.ndarray, np.ndarray]:
         """The general path: any array-like input, N states, and the errors that name the cause."""
-        batched = np.ndim(q) == 2
+        batched = is_batch(q)
         if tau0 is None:
             tau0 = np.zeros((len(q), self.robot.n)) if batched else self._zeros
         call = self._law.batch if batched else self._law
@@ -144,5 +150,4 @@ class SpatialDecouplingLaw:
 def spatial_law(robot: Robot, surface, curvature: bool = False, *, reference=(0.0, 0.0, 1.0), axes=None,
                 singular_tol: float = 1e-3) -> SpatialDecouplingLaw:
     """The general decoupling law of NOTES section 9, compiled for ``robot`` on ``surface``."""
-    _finite("decoupling_law", singular_tol=singular_tol)
     return SpatialDecouplingLaw(robot, surface, curvature, reference, axes, singular_tol)

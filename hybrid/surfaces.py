@@ -31,6 +31,13 @@ def _unit(owner: str, name: str, v) -> tuple[float, ...]:
     return tuple(x / norm for x in v)
 
 
+def _unit_normal(g: np.ndarray, where: str) -> np.ndarray:
+    norm = float(np.linalg.norm(g))
+    if not norm > 1e-12:
+        raise HybridError(f"{where}, where the normal is undefined; give a point off it")
+    return g / norm
+
+
 def _positive(owner: str, name: str, value) -> None:
     _finite(owner, **{name: value})
     if value <= 0:
@@ -173,7 +180,7 @@ class Sphere(_Spatial):
 
     def normal_at(self, p) -> np.ndarray:
         d = np.asarray(p, float) - self.center
-        return d / np.linalg.norm(d)
+        return _unit_normal(d, f"the point {p} is the sphere's centre")
 
 
 @dataclass(frozen=True)
@@ -200,7 +207,7 @@ class Cylinder(_Spatial):
     def normal_at(self, p) -> np.ndarray:
         d = np.asarray(p, float) - self.point
         radial = d - np.dot(d, self.axis) * np.asarray(self.axis)
-        return radial / np.linalg.norm(radial)
+        return _unit_normal(radial, f"the point {p} is on the cylinder's axis")
 
 
 @dataclass(frozen=True)
@@ -249,9 +256,10 @@ class ImplicitSurface(_Spatial):
             import casadi as ca
 
             cs.phi_sx(spec, ca.SX.sym("p", 3), ca.SX.sym("theta", max(len(self.parameters), 1)))
-        except NotImplementedError as exc:
-            raise HybridError(f"ImplicitSurface.phi: {exc}; write phi with +, -, *, /, powers, sqrt, "
-                              "exp, log, trigonometric and hyperbolic functions, Abs, Min, Max") from None
+        except (NotImplementedError, TypeError, ValueError, RuntimeError) as exc:
+            raise HybridError(f"ImplicitSurface.phi cannot be translated ({str(exc)[:80]}); write phi with +, -, "
+                              "*, /, powers, sqrt, exp, log, trigonometric and hyperbolic functions, Abs, Min, "
+                              "Max") from None
         object.__setattr__(self, "phi", phi)
         object.__setattr__(self, "_spec", spec)
 
@@ -269,7 +277,7 @@ class ImplicitSurface(_Spatial):
         grad = [sp.diff(self.phi, s) for s in (x, y, z)]
         subs = {x: p[0], y: p[1], z: p[2], **{sp.Symbol(k, real=True): v for k, v in self.parameters.items()}}
         g = np.array([float(gi.subs(subs)) for gi in grad])
-        return g / np.linalg.norm(g)
+        return _unit_normal(g, f"grad phi vanishes at {p}")
 
 
 PlanarSurface = Circle | Plane

@@ -238,7 +238,8 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
     for name, value in locked.items():
         if name not in joints:
             raise URDFError(f"locked names joint '{name}', which {source} does not define")
-        if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value):
+        if not isinstance(value, (int, float, np.integer, np.floating)) or isinstance(value, bool) \
+                or not math.isfinite(value):
             raise URDFError(f"locked['{name}'] = {value!r}; give a finite joint position (rad or m)")
 
     # the chain: tip up to the root

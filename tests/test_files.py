@@ -79,3 +79,15 @@ def test_output_under_a_file_is_one_clear_line(tmp_path, result):
                           capture_output=True, text=True)
     assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1, proc.stderr
     assert afile.read_text() == "x"
+
+
+def test_written_files_have_ordinary_permissions(tmp_path, result):
+    import os
+
+    mask = os.umask(0o022)
+    try:
+        path = result.save(tmp_path / "r.npz")
+        text = files.write_text(tmp_path / "t.txt", "x")
+    finally:
+        os.umask(mask)
+    assert path.stat().st_mode & 0o777 == 0o644 and text.stat().st_mode & 0o777 == 0o644

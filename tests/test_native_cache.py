@@ -78,3 +78,22 @@ def test_the_compiler_is_probed_once_per_process():
     native.compiler()
     assert native._compiler.cache_info().misses == 1
     assert isinstance(hybrid.NativeBuildError("x"), hybrid.HybridError)
+
+
+def test_a_cache_folder_under_a_file_is_a_native_build_error(tmp_path):
+    afile = tmp_path / "afile"
+    afile.write_text("x")
+    proc = run(LAW, HYBRID_CACHE_DIR=str(afile / "cache"))
+    assert proc.returncode != 0 and "NativeBuildError" in proc.stderr and "HYBRID_CACHE_DIR" in proc.stderr
+    assert "NotADirectoryError" not in proc.stderr.splitlines()[-1]
+
+
+def test_robot_names_become_ascii_c_identifiers(tmp_path):
+    from codegen.robot_unit import c_identifier
+
+    assert c_identifier("robôt arm") == "rob_t_arm"
+    text = (Path(__file__).parent / "data" / "slider_arm.urdf").read_text().replace('name="slider_arm"', 'name="robôt"')
+    path = tmp_path / "r.urdf"
+    path.write_text(text)
+    robot = hybrid.Robot.from_urdf(path, tip="tool")
+    assert hybrid.arm_terms(robot, [0.0, 0.1, 0.2], [0.0, 0.0, 0.0])["B"].shape == (3, 3)

@@ -160,3 +160,83 @@ def test_nan_state_is_non_finite_not_singular(ur5, law, as_input):
     for bad in ([np.nan, 1.0], [0.3, np.inf]):
         with pytest.raises(hybrid.NonFiniteError, match="non-finite input q"):
             planar(as_input(bad), as_input([0.0, 0.0]), as_input([0.0, 0.0]), as_input([0.0, 0.0]))
+
+
+def test_a_one_state_row_among_batched_inputs_is_refused(ur5, law):
+    """A per-state input given as one row, whose length happens to equal N, is not read as N rows."""
+    Q6 = np.tile(Q, (6, 1))
+    with pytest.raises(hybrid.HybridError, match=r"qdot must have shape \(N, 6\)"):
+        hybrid.arm_terms(ur5, Q6, Q6[0])
+    with pytest.raises(hybrid.HybridError, match=r"a must have shape \(N, 6\)"):
+        law(Q6, np.zeros((6, 6)), np.zeros(6), np.zeros((6, 6)))
+
+
+@pytest.mark.parametrize("bad", [[[0.0] * 6, [0.0] * 5], "abc", [[1j] * 6]])
+def test_ragged_or_foreign_input_is_a_hybrid_error(ur5, law, bad):
+    with pytest.raises(hybrid.HybridError):
+        hybrid.arm_terms(ur5, bad, np.zeros(6))
+    with pytest.raises(hybrid.HybridError):
+        law(bad, np.zeros(6), np.zeros(6), np.zeros(6))
+    planar = hybrid.decoupling_law(hybrid.paper_arm(), hybrid.Circle((0.5, 0), 0.2))
+    with pytest.raises(hybrid.HybridError):
+        planar([[0.3, 1.0], [1.0]], [0.0, 0.0], [0.0, 0.0], [0.0, 0.0])
+
+
+def test_axes_keep_the_given_order(rng, ur5):
+    """a[k] acts along axes[k]: the same task with the axes listed in another order gives the same F*."""
+    sphere = hybrid.Sphere((0.45, 0.1, 0.3), 0.15)
+    one = hybrid.decoupling_law(ur5, sphere, axes=(0, 1, 2))
+    other = hybrid.decoupling_law(ur5, sphere, axes=(2, 0, 1))
+    assert other.axes == (2, 0, 1)
+    qd, a, Fc = rng.normal(size=6), rng.normal(size=3), rng.normal(size=6)
+    np.testing.assert_allclose(other(Q, qd, a[[2, 0, 1]], Fc), one(Q, qd, a, Fc), rtol=1e-12, atol=1e-12)
+
+
+def test_surface_expressions_with_constants_and_symbolic_powers(ur5):
+    tilted = hybrid.ImplicitSurface("z - 0.3 - x*sin(pi/8)", {})
+    plane = hybrid.Plane((0.0, 0.0, 0.3), (-np.sin(np.pi / 8), 0.0, 1.0))
+    p, pd = np.array([0.5, 0.1, 0.4]), np.array([0.1, 0.0, 0.0])
+    R1 = hybrid.decoupling_law(ur5, tilted).task_frame(p, pd)[0]
+    R2 = hybrid.decoupling_law(ur5, plane).task_frame(p, pd)[0]
+    np.testing.assert_allclose(R1, R2, atol=1e-14)
+    hybrid.ImplicitSurface("x**k + y**2 + z**2 - 1", {"k": 2.0})  # a symbolic exponent translates
+    with pytest.raises(hybrid.HybridError, match="normal is undefined"):
+        hybrid.Sphere((0, 0, 0), 1.0).normal_at((0, 0, 0))
+
+
+def test_robots_compare_and_hash(ur5):
+    again = hybrid.Robot.from_urdf(example_robot(UR5[0]), tip=UR5[1])
+    assert again == ur5 and hash(again) == hash(ur5)
+    assert ur5.with_model_error(0.1) != ur5
+
+
+def test_batched_calls_work_after_fork(ur5):
+    """The thread pool behind batched calls is rebuilt in a forked child (it would otherwise hang)."""
+    import multiprocessing
+
+    many = np.tile(Q, (4096, 1))
+    hybrid.arm_terms(ur5, many, np.zeros_like(many))  # the parent's pool exists now
+    ctx = multiprocessing.get_context("fork")
+    with ctx.Pool(1) as pool:
+        result = pool.apply_async(_batched_rows, (ur5,))
+        assert result.get(timeout=60) == 4096
+
+
+def _batched_rows(robot) -> int:
+    many = np.tile(Q, (4096, 1))
+    return len(hybrid.arm_terms(robot, many, np.zeros_like(many))["B"])
+
+
+def test_robots_and_laws_pickle(ur5, law):
+    import pickle
+
+    robot = pickle.loads(pickle.dumps(ur5))
+    assert robot == ur5
+    np.testing.assert_array_equal(hybrid.arm_terms(robot, Q, np.zeros(6))["B"],
+                                  hybrid.arm_terms(ur5, Q, np.zeros(6))["B"])
+    copy = pickle.loads(pickle.dumps(law))
+    z = np.zeros(6)
+    np.testing.assert_array_equal(copy(Q, z, z, z), law(Q, z, z, z))
+    planar = hybrid.decoupling_law(hybrid.paper_arm(), hybrid.Circle((0.5, 0), 0.2))
+    np.testing.assert_array_equal(pickle.loads(pickle.dumps(planar))([2.2, 1.9], [0, 0], [0, 0], [0, 0]),
+                                  planar([2.2, 1.9], [0, 0], [0, 0], [0, 0]))
