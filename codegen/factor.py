@@ -51,6 +51,15 @@ def back_substitution_transposed(L, y) -> list:
     return x
 
 
+def back_substitution_upper(R, y) -> list:
+    """``x = R^-1 y`` for upper-triangular ``R`` (list of rows)."""
+    m = len(R)
+    x = [None] * m
+    for i in reversed(range(m)):
+        x[i] = (y[i] - sum((R[i][k] * x[k] for k in range(i + 1, m)), _zero())) * reciprocal(R[i][i])
+    return x
+
+
 def cholesky_solve(A, b) -> ca.SX:
     """``x = A^-1 b`` for symmetric positive definite ``A``, by Cholesky and two substitutions."""
     L = cholesky(A)
@@ -83,15 +92,13 @@ def thin_qr(A) -> tuple[list, list[list]]:
 
 
 def upper_inverse_frobenius2(R) -> ca.SX:
-    """``|R^-1|_F^2`` for upper-triangular ``R`` (list of rows), by back substitution on ``I``."""
-    m = len(R)
+    """``|R^-1|_F^2`` for upper-triangular ``R`` (list of rows): column ``j`` of ``R^-1`` solves the
+    leading ``(j+1) x (j+1)`` block against the unit vector ``e_j``."""
     total = _zero()
-    for col in range(m):
-        x = [_zero()] * m
-        for i in reversed(range(col + 1)):
-            rhs = (1.0 if i == col else 0.0) - sum((R[i][k] * x[k] for k in range(i + 1, col + 1)), _zero())
-            x[i] = rhs * reciprocal(R[i][i])
-        total = total + sum((xi * xi for xi in x[:col + 1]), _zero())
+    for col in range(len(R)):
+        block = [row[:col + 1] for row in R[:col + 1]]
+        x = back_substitution_upper(block, [_zero()] * col + [ca.SX(1.0)])
+        total = total + sum((xi * xi for xi in x), _zero())
     return total
 
 

@@ -72,9 +72,24 @@ def parameter_names(chain: Chain) -> tuple[str, ...]:
             + tuple(f"damping[{j.name}]" for j in chain.joints) + ("g_x", "g_y", "g_z"))
 
 
+#: SI units of a joint's position, rate, acceleration and effort, by joint kind
+JOINT_UNITS = {"revolute": {"q": "rad", "qd": "rad/s", "qdd": "rad/s^2", "tau": "N m"},
+               "prismatic": {"q": "m", "qd": "m/s", "qdd": "m/s^2", "tau": "N"}}
+
+
+def joint_units(chain: Chain, what: str) -> tuple[str, ...]:
+    """The unit of ``what`` (``q``, ``qd``, ``qdd``, ``tau``) for each joint."""
+    return tuple(JOINT_UNITS[j.kind][what] for j in chain.joints)
+
+
+def row_major(M) -> ca.SX:
+    """A matrix flattened row by row (CasADi stores by column) into an output column."""
+    return ca.reshape(M.T, -1, 1)
+
+
 def parameter_units(chain: Chain) -> tuple[str, ...]:
-    prismatic = {"revolute": "N m s/rad", "prismatic": "N s/m"}
-    return (INERTIAL_UNITS * chain.n + tuple(prismatic[j.kind] for j in chain.joints)
+    viscosity = {"revolute": "N m s/rad", "prismatic": "N s/m"}
+    return (INERTIAL_UNITS * chain.n + tuple(viscosity[j.kind] for j in chain.joints)
             + ("m/s^2",) * 3)
 
 
@@ -107,7 +122,8 @@ def _axis_rotation(axis, angle) -> ca.SX:
     return ca.vertcat(*rows)
 
 
-def _cross(a, b) -> ca.SX:
+def cross(a, b) -> ca.SX:
+    """``a x b`` of two 3-columns."""
     return ca.vertcat(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
 
@@ -133,7 +149,7 @@ def forward_kinematics(chain: Chain, q) -> Frames:
         z = R @ _vec(j.axis)
         if j.kind == "revolute":
             R = R @ _axis_rotation(j.axis, q[i])
-            S = (z, _cross(p, z))
+            S = (z, cross(p, z))
         else:
             p = p + z * q[i]
             S = (ca.SX.zeros(3, 1), z)
@@ -150,7 +166,7 @@ def frame_jacobian(frames: Frames) -> ca.SX:
     """``J`` (6 x n): the tip origin's velocity and the angular velocity, base axes."""
     cols = []
     for w, v in frames.S:
-        cols.append(ca.vertcat(v + _cross(w, frames.tip_p), w))
+        cols.append(ca.vertcat(v + cross(w, frames.tip_p), w))
     return ca.horzcat(*cols)
 
 
@@ -158,7 +174,7 @@ def _motion_cross(m1, m2):
     """Spatial motion cross product ``m1 x m2`` of (angular, linear) pairs."""
     w1, v1 = m1
     w2, v2 = m2
-    return _cross(w1, w2), _cross(w1, v2) + _cross(v1, w2)
+    return cross(w1, w2), cross(w1, v2) + cross(v1, w2)
 
 
 def _add(a, b):
@@ -194,8 +210,8 @@ def frame_classical_acceleration(frames: Frames, qd) -> ca.SX:
     vs, accs = velocities_and_bias(frames, qd)
     (w, v), (alpha, a) = vs[-1], accs[-1]
     p = frames.tip_p
-    v_tip = v + _cross(w, p)
-    return ca.vertcat(a + _cross(alpha, p) + _cross(w, v_tip), alpha)
+    v_tip = v + cross(w, p)
+    return ca.vertcat(a + cross(alpha, p) + cross(w, v_tip), alpha)
 
 
 @dataclass
@@ -213,7 +229,7 @@ class Inertia:
     def apply(self, motion):
         """The momentum (force vector) ``I v`` of the motion ``v = (w, v_O)``."""
         w, v = motion
-        return self.I @ w + _cross(self.h, v), self.m * v - _cross(self.h, w)
+        return self.I @ w + cross(self.h, v), self.m * v - cross(self.h, w)
 
 
 @dataclass
@@ -231,8 +247,8 @@ class Body:
     def apply(self, motion):
         """The momentum ``I v`` of ``v = (w, v_O)``: ``(R Ic R^T w + c x h, h)`` with ``h = m (v_O + w x c)``."""
         w, v = motion
-        h = self.m * (v + _cross(w, self.c))
-        return self.R @ (self.Ic @ (self.R.T @ w)) + _cross(self.c, h), h
+        h = self.m * (v + cross(w, self.c))
+        return self.R @ (self.Ic @ (self.R.T @ w)) + cross(self.c, h), h
 
     def about_origin(self) -> Inertia:
         """The same inertia as an :class:`Inertia` about the base origin (parallel axes:
@@ -302,7 +318,7 @@ def rnea(chain: Chain, frames: Frames, params, qd, qdd=None, bodies=None) -> ca.
         n_mom, f_mom = momentum
         # f_i = I_i a_i + v_i x* (I_i v_i)
         ia = inertias[i].apply(accs[i])
-        f = (ia[0] + _cross(w, n_mom) + _cross(v, f_mom), ia[1] + _cross(w, f_mom))
+        f = (ia[0] + cross(w, n_mom) + cross(v, f_mom), ia[1] + cross(w, f_mom))
         total = f if total is None else _add(total, f)
         tau[i] = _dot(frames.S[i], total) + damping[i] * qd[i]
     return ca.vertcat(*tau)

@@ -17,12 +17,6 @@ from .factor import cholesky_solve
 from .kernel import Arg, Kernel
 
 
-def _units(chain: rb.Chain, what: str) -> tuple[str, ...]:
-    per = {"revolute": {"q": "rad", "qd": "rad/s", "qdd": "rad/s^2", "tau": "N m"},
-           "prismatic": {"q": "m", "qd": "m/s", "qdd": "m/s^2", "tau": "N"}}
-    return tuple(per[j.kind][what] for j in chain.joints)
-
-
 def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
     """``robot_terms`` (tip pose, ``J``, ``J' q'``, ``B``, ``n``), ``inverse_dynamics`` (RNEA) and
     ``forward_dynamics`` (``B^-1 (tau - n)`` by Cholesky), each batched over states; with
@@ -35,25 +29,25 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
     inertias = rb.link_inertias(chain, fr, params)  # one set for B and n
     B = rb.crba(chain, fr, params, inertias)
     bias = rb.rnea(chain, fr, params, qd, bodies=inertias)
-    a_q, a_qd = Arg("q", q, _units(chain, "q"), names=names), Arg("qd", qd, _units(chain, "qd"), names=names)
+    a_q = Arg("q", q, rb.joint_units(chain, "q"), names=names)
+    a_qd = Arg("qd", qd, rb.joint_units(chain, "qd"), names=names)
     a_p = Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain))
-    row_major = lambda M: ca.reshape(M.T, -1, 1)  # noqa: E731  (CasADi is column-major)
     terms = Kernel(
         "robot_terms", (a_q, a_qd, a_p),
-        (Arg("p", fr.tip_p, "m"), Arg("rotation", row_major(fr.tip_R), "1", (3, 3)),
-         Arg("J", row_major(rb.frame_jacobian(fr)), "m/rad, 1 (linear rows, then angular)", (6, n)),
+        (Arg("p", fr.tip_p, "m"), Arg("rotation", rb.row_major(fr.tip_R), "1", (3, 3)),
+         Arg("J", rb.row_major(rb.frame_jacobian(fr)), "m/rad, 1 (linear rows, then angular)", (6, n)),
          Arg("Jdqd", rb.frame_classical_acceleration(fr, qd), "m/s^2, rad/s^2"),
-         Arg("B", row_major(B), "kg m^2", (n, n)), Arg("n", bias, _units(chain, "tau"))),
+         Arg("B", rb.row_major(B), "kg m^2", (n, n)), Arg("n", bias, rb.joint_units(chain, "tau"))),
         "tip frame position p [m] and rotation (row-major) in base axes, frame Jacobian J (6 x n, "
         "LOCAL_WORLD_ALIGNED), J'(q, q') q' (classical), inertia B(q) (CRBA), n(q, q') (RNEA: "
         "Coriolis/centrifugal, gravity, viscosity)", batched=("q", "qd"))
     inverse = Kernel(
-        "inverse_dynamics", (a_q, a_qd, Arg("qdd", qdd, _units(chain, "qdd"), names=names), a_p),
-        (Arg("tau", rb.rnea(chain, fr, params, qd, qdd), _units(chain, "tau")),),
+        "inverse_dynamics", (a_q, a_qd, Arg("qdd", qdd, rb.joint_units(chain, "qdd"), names=names), a_p),
+        (Arg("tau", rb.rnea(chain, fr, params, qd, qdd), rb.joint_units(chain, "tau")),),
         "inverse dynamics tau = B(q) q'' + n(q, q') by recursive Newton-Euler", batched=("q", "qd", "qdd"))
     forward = Kernel(
-        "forward_dynamics", (a_q, a_qd, Arg("tau", tau, _units(chain, "tau"), names=names), a_p),
-        (Arg("qdd", cholesky_solve(B, tau - bias), _units(chain, "qdd")),),
+        "forward_dynamics", (a_q, a_qd, Arg("tau", tau, rb.joint_units(chain, "tau"), names=names), a_p),
+        (Arg("qdd", cholesky_solve(B, tau - bias), rb.joint_units(chain, "qdd")),),
         "forward dynamics q'' = B(q)^-1 (tau - n(q, q')) by a Cholesky factorisation of B",
         batched=("q", "qd", "tau"))
     kernels = (terms, inverse, forward)

@@ -21,6 +21,7 @@ import sympy as sp
 
 from .casadi_backend import to_sx
 from .factor import reciprocal
+from .rigid_body import cross
 
 X, Y, Z = sp.symbols("x y z", real=True)
 #: below this ``|e x n|`` (the sine of the angle between ``e`` and ``n``) the task frame is undefined
@@ -89,10 +90,6 @@ def phi_sx(spec: SurfaceSpec, p, theta) -> ca.SX:
     return to_sx(spec.phi, symbols, {})
 
 
-def _cross(a, b):
-    return ca.vertcat(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-
-
 @dataclass
 class TaskFrame:
     """``R_L`` (3x3, rows t1, t2, n), its derivative ``R_L'``, and ``|e x n|`` (the frame's guard)."""
@@ -119,10 +116,10 @@ def _frame_on_symbols(spec: SurfaceSpec, p, pd, theta, e):
     grad = ca.gradient(phi, p)
     n = grad * reciprocal(ca.norm_2(grad))
     e_unit = e * reciprocal(ca.norm_2(e))
-    c = _cross(e_unit, n)
+    c = cross(e_unit, n)
     sine = ca.norm_2(c)
     t1 = c * reciprocal(sine)
-    t2 = _cross(n, t1)
+    t2 = cross(n, t1)
     R = ca.vertcat(t1.T, t2.T, n.T)
     Rd = ca.reshape(ca.jtimes(ca.reshape(R, 9, 1), p, pd), 3, 3)
     return R, Rd, sine, n

@@ -43,17 +43,8 @@ def _blockdiag(A):
     return ca.vertcat(ca.horzcat(A, Z), ca.horzcat(Z, A))
 
 
-def _row_major(M):
-    return ca.reshape(M.T, -1, 1)
-
-
 def _rows(M, axes):
     return ca.vertcat(*(M[i, :] for i in axes))
-
-
-def _joint_units(chain, what):
-    per = {"revolute": {"tau": "N m"}, "prismatic": {"tau": "N"}}
-    return tuple(per[j.kind][what] for j in chain.joints)
 
 
 def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tuple[Kernel, ...]:
@@ -86,7 +77,7 @@ def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tu
         qdd = sum((Q[i] * z[i] for i in range(m)), ca.SX.zeros(n, 1))
         tau = rb.rnea(chain, fr, params, qd, qdd) - J.T @ Fc
         y = ca.vertcat(*(ca.dot(Q[i], tau) for i in range(m)))
-        f_y = _upper_solve(Rq, y)
+        f_y = ca.vertcat(*factor.back_substitution_upper(Rq, y))
     else:
         inertias = rb.link_inertias(chain, fr, params)  # one set for B and n
         B = rb.crba(chain, fr, params, inertias)
@@ -102,9 +93,8 @@ def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tu
     F = f_y if full else Rm.T @ f_y
 
     names = tuple(j.name for j in chain.joints)
-    units = {"revolute": ("rad", "rad/s"), "prismatic": ("m", "m/s")}
-    a_q = Arg("q", q, tuple(units[j.kind][0] for j in chain.joints), names=names)
-    a_qd = Arg("qd", qd, tuple(units[j.kind][1] for j in chain.joints), names=names)
+    a_q = Arg("q", q, rb.joint_units(chain, "q"), names=names)
+    a_qd = Arg("qd", qd, rb.joint_units(chain, "qd"), names=names)
     a_p = Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain))
     a_s = Arg("surface", theta, "m (lengths), 1 (directions)", names=spec.parameters)
     a_e = Arg("e", e, "1", names=("e_x", "e_y", "e_z"))
@@ -113,9 +103,9 @@ def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tu
         "decoupling_law",
         (a_q, a_qd, Arg("a", a, acc_units, names=tuple(AXIS_NAMES[i] for i in axes)),
          Arg("Fc", Fc, ("N",) * 3 + ("N m",) * 3, names=("f_x", "f_y", "f_z", "m_x", "m_y", "m_z")),
-         Arg("tau0", tau0, _joint_units(chain, "tau"), names=names), a_p, a_s, a_e,
+         Arg("tau0", tau0, rb.joint_units(chain, "tau"), names=names), a_p, a_s, a_e,
          Arg("opts", opts, "1", names=("curvature",))),
-        (Arg("F", F, ("N",) * 3 + ("N m",) * 3), Arg("tau", tau, _joint_units(chain, "tau"))),
+        (Arg("F", F, ("N",) * 3 + ("N m",) * 3), Arg("tau", tau, rb.joint_units(chain, "tau"))),
         f"decoupling law F* [N, N m] (base axes) and tau = J^T F* + null-space tau0 [N m], task axes "
         f"{', '.join(AXIS_NAMES[i] for i in axes)} on a {spec.kind}",
         batched=("q", "qd", "a", "Fc", "tau0"),
@@ -124,20 +114,11 @@ def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tu
     tf_p = task_frame(spec, p, pd, theta, e)
     frame = Kernel(
         "task_frame", (Arg("p", p, "m"), Arg("pd", pd, "m/s"), a_s, a_e),
-        (Arg("R", _row_major(tf_p.R), "1", (3, 3)), Arg("Rd", _row_major(tf_p.Rd), "1/s", (3, 3)),
+        (Arg("R", rb.row_major(tf_p.R), "1", (3, 3)), Arg("Rd", rb.row_major(tf_p.Rd), "1/s", (3, 3)),
          Arg("normal", tf_p.normal, "1")),
         f"task frame R_L (rows t1, t2, n) at p on a {spec.kind}, its derivative R_L'(p, p'), and the "
         "unit normal n", batched=("p", "pd"), guards=(frame_guard(tf_p.sine),))
     return frame, law
-
-
-def _upper_solve(R, y) -> ca.SX:
-    """``x = R^-1 y`` for upper-triangular ``R`` (list of rows)."""
-    m = len(R)
-    x = [None] * m
-    for i in reversed(range(m)):
-        x[i] = (y[i] - sum((R[i][k] * x[k] for k in range(i + 1, m)), ca.SX(0))) * factor.reciprocal(R[i][i])
-    return ca.vertcat(*x)
 
 
 # ------------------------------------------------------------- operational space
@@ -205,18 +186,19 @@ def operational_space_kernels(chain: rb.Chain) -> tuple[Kernel, ...]:
     Bo = T.T @ Lam @ T
     no = T.T @ (Lam @ (Td @ rd) + mu)
     names = tuple(j.name for j in chain.joints)
-    a_q, a_qd = Arg("q", q, "rad or m", names=names), Arg("qd", qd, "rad/s or m/s", names=names)
+    a_q = Arg("q", q, rb.joint_units(chain, "q"), names=names)
+    a_qd = Arg("qd", qd, rb.joint_units(chain, "qd"), names=names)
     a_p = Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain))
     twist = Kernel(
         "operational_space", (a_q, a_qd, a_p),
-        (Arg("Lambda", _row_major(Lam), "kg, kg m, kg m^2", (6, 6)), Arg("no", mu, "N, N m")),
+        (Arg("Lambda", rb.row_major(Lam), "kg, kg m, kg m^2", (6, 6)), Arg("no", mu, "N, N m")),
         "operational-space inertia Lambda = (J B^-1 J^T)^-1 and n_o = Jbar^T n - Lambda J' q' in twist "
         "coordinates v = (p', w), base axes", guards=(guard,))
     euler = Kernel(
         "operational_space_euler", (a_q, a_qd, a_p),
         (Arg("r", r, "m, rad", names=("x", "y", "z", "alpha", "beta", "gamma")),
-         Arg("rd", rd, "m/s, rad/s"), Arg("Bo", _row_major(Bo), "kg, kg m, kg m^2", (6, 6)),
-         Arg("no", no, "N, N m"), Arg("T", _row_major(T), "1", (6, 6)), Arg("Td", _row_major(Td), "1/s", (6, 6))),
+         Arg("rd", rd, "m/s, rad/s"), Arg("Bo", rb.row_major(Bo), "kg, kg m, kg m^2", (6, 6)),
+         Arg("no", no, "N, N m"), Arg("T", rb.row_major(T), "1", (6, 6)), Arg("Td", rb.row_major(Td), "1/s", (6, 6))),
         "the paper's coordinates r = (p, phi_ZYX): B_o(r) = T^T Lambda T, n_o(r, r') = T^T (Lambda T' r' + "
         "n_o,twist), T = diag(I, T_A) and T'(r, r')",
         guards=(guard, Guard("euler", ca.cos(phi[1]), "HYBRID_EULER_SINGULAR", EULER_TOL,

@@ -25,7 +25,7 @@ from .binding import Unit
 from .errors import HybridError
 from .parameters import Arm
 from .urdf import JointLimits, LinkInertia, read_chain
-from .validate import _finite, check_model_error
+from .validate import _finite, check_model_error, inertia_problem
 
 
 def _gravity(g) -> tuple[float, float, float]:
@@ -197,12 +197,9 @@ def _check_link(joint: str, link: LinkInertia) -> None:
     _vector(f"centre of mass of the link moved by '{joint}'", link.com, (3,))
     if not np.allclose(I, I.T, rtol=0, atol=1e-12 * max(1.0, np.abs(I).max())):
         raise HybridError(f"inertia of the link moved by '{joint}' is not symmetric; give a symmetric 3x3 tensor")
-    eig = np.linalg.eigvalsh(I)
-    tol = 1e-9 * max(float(np.trace(I)), 1e-300)
-    if eig[0] < -tol or eig[0] + eig[1] < eig[2] - tol:
-        raise HybridError(f"inertia of the link moved by '{joint}' (principal moments "
-                          f"{', '.join(f'{e:.4g}' for e in eig)} kg m^2) is not a rigid body's: it must be "
-                          "positive semi-definite and satisfy the triangle inequality")
+    problem = inertia_problem(I)
+    if problem:
+        raise HybridError(f"inertia of the link moved by '{joint}' {problem}; give a rigid body's inertia")
 
 
 def _compiled(prefix: str, key: dict, build) -> Unit:

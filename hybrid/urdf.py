@@ -18,6 +18,7 @@ import numpy as np
 from codegen.rigid_body import Chain, Joint, rotation_rpy
 
 from .errors import URDFError
+from .validate import inertia_problem
 
 MOVING = ("revolute", "continuous", "prismatic")
 KNOWN = (*MOVING, "fixed", "floating", "planar")
@@ -173,15 +174,9 @@ def _link_inertial(link: Node, source: str) -> tuple[float, np.ndarray, np.ndarr
     ixx, ixy, ixz, iyy, iyz, izz = (_scalar(node, k, 0.0, where) for k in keys)
     I = np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])  # noqa: E741
     line = node.line if node is not None else inertial.line
-    eig = np.linalg.eigvalsh(I)
-    tol = 1e-9 * max(float(np.trace(I)), 1e-300)
-    if eig[0] < -tol:
-        raise URDFError(f"{where} (line {line}): inertia tensor is not positive semi-definite "
-                        f"(eigenvalues {', '.join(f'{e:.4g}' for e in eig)} kg m^2); correct ixx..izz")
-    if eig[0] + eig[1] < eig[2] - tol:
-        raise URDFError(f"{where} (line {line}): principal moments {', '.join(f'{e:.4g}' for e in eig)} "
-                        "kg m^2 break the triangle inequality (the two smaller must add up to at least the "
-                        "largest): no rigid body has them; correct ixx..izz")
+    problem = inertia_problem(I)
+    if problem:
+        raise URDFError(f"{where} (line {line}): the inertia tensor {problem}; correct ixx..izz")
     R = T[:3, :3]
     return m, T[:3, 3], R @ I @ R.T
 

@@ -42,3 +42,17 @@ def check_model_error(inertial, viscous_compensation) -> float:
     if viscous_compensation < 0:
         raise HybridError(f"viscous_compensation = {viscous_compensation}; give a fraction >= 0")
     return 1.0 + inertial
+
+
+def inertia_problem(I: np.ndarray) -> str | None:  # noqa: E741
+    """Why the 3x3 ``I`` [kg m^2] cannot be a rigid body's inertia about its centre of mass (not
+    positive semi-definite, or breaking the triangle inequality), or None when it can."""
+    eig = np.linalg.eigvalsh(0.5 * (I + I.T))
+    tol = 1e-9 * max(float(np.trace(I)), 1e-300)
+    moments = ", ".join(f"{e:.4g}" for e in eig)
+    if eig[0] < -tol:
+        return f"is not positive semi-definite (eigenvalues {moments} kg m^2)"
+    if eig[0] + eig[1] < eig[2] - tol:
+        return (f"has principal moments {moments} kg m^2, which break the triangle inequality (the two "
+                "smaller must add up to at least the largest): no rigid body has them")
+    return None
