@@ -50,6 +50,12 @@ class Unit:
                 f"{self.prefix}.json": self.manifest}
 
 
+def comment_safe(text: str) -> str:
+    """``text`` that cannot end or break a C comment (names come from users' URDF files)."""
+    kept = "".join(c if (c.isprintable() or c == "\n") and c != "\\" else " " for c in text)
+    return kept.replace("*/", "* /").replace("/*", "/ *")
+
+
 def stamp(body: str) -> str:
     """Prefix ``body`` with the do-not-edit line carrying its hash."""
     return f"{STAMP}{hashlib.sha256(body.encode()).hexdigest()} */\n{body}"
@@ -129,7 +135,7 @@ def _layout_doc(kernels: tuple[Kernel, ...]) -> str:
         for a in (*k.inputs, *k.outputs):
             if a.names and (a.name, a.names) not in seen:
                 seen.add((a.name, a.names))
-                rows.append(f"   {a.name}[{a.size}] = {{{', '.join(a.names)}}}")
+                rows.append(f"   {a.name}[{a.size}] = {{{comment_safe(', '.join(a.names))}}}")
     return "\n".join(rows)
 
 
@@ -137,7 +143,7 @@ def header(prefix: str, kernels: tuple[Kernel, ...], defines: dict | None = None
     guard = prefix.upper() + "_H"
     consts = "".join(f"#define {prefix.upper()}_{k} {v}\n" for k, v in (defines or {}).items())
     status = "\n".join(f"#define {k} {v}" for k, v in STATUS.items())
-    protos = "\n\n".join(f"/* {doc}. */\n{p}" for doc, p in prototypes(prefix, kernels))
+    protos = "\n\n".join(f"/* {comment_safe(doc)}. */\n{p}" for doc, p in prototypes(prefix, kernels))
     return f"""#ifndef {guard}
 #define {guard}
 
@@ -289,7 +295,7 @@ def assemble(prefix: str, backend: str, kernels: tuple[Kernel, ...], what: str, 
         raise ValueError(f"unknown backend {backend!r}; choose one of {BACKENDS}")
     cores = _sympy_cores(kernels) if backend == "sympy" else _casadi_cores(prefix, kernels)
     tool = tool or tools(backend)
-    source = f"""/* {prefix}: {what}.
+    source = f"""/* {prefix}: {comment_safe(what)}.
    Emitted by the {backend} backend of hybrid's codegen ({tool}), generator version {GENERATOR_VERSION}.
    Compile: cc -std=c99 -O2 -c {prefix}.c (link with -lm). */
 #include <math.h>

@@ -7,6 +7,7 @@ model error or a parameter sweep never recompiles. Every solve is a factorisatio
 
 from __future__ import annotations
 
+import hashlib
 import re
 
 import casadi as ca
@@ -63,10 +64,18 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
     return (*kernels, urdf)
 
 
+#: the longest prefix of emitted symbols and file names (a longer name is cut and given a hash)
+MAX_PREFIX = 48
+
+
 def c_identifier(name: str) -> str:
-    """``name`` made a C identifier (the prefix of every emitted symbol)."""
+    """``name`` made a C identifier (the prefix of every emitted symbol and file), at most
+    :data:`MAX_PREFIX` characters."""
     ident = re.sub(r"\W", "_", name, flags=re.ASCII)
-    return ident if re.match(r"[A-Za-z_]", ident) else f"robot_{ident}"
+    ident = ident if re.match(r"[A-Za-z_]", ident) else f"robot_{ident}"
+    if len(ident) > MAX_PREFIX:
+        ident = f"{ident[:MAX_PREFIX - 13]}_{hashlib.sha256(name.encode()).hexdigest()[:12]}"
+    return ident
 
 
 def build_robot_unit(chain: rb.Chain, prefix: str, info: dict, defaults=None) -> Unit:

@@ -23,6 +23,8 @@ def _regenerate(args) -> int:
     from codegen import regenerate
 
     target = Path(args.target) if args.target else None
+    if args.check and target is not None and not target.is_dir():
+        raise HybridError(f"--target {target} is not a folder of generated files")
     if args.check:
         problems = regenerate.check(target)
         if problems:
@@ -30,10 +32,15 @@ def _regenerate(args) -> int:
             return 1
         print("generated/ is up to date")
         return 0
+    if target is not None and target.exists() and not target.is_dir():
+        raise HybridError(f"--target {target} is a file; give a folder")
     try:
         changed = regenerate.write(target, force=args.force)
     except FileExistsError as exc:
         raise HybridError(str(exc)) from None
+    except OSError as exc:
+        raise HybridError(f"cannot write into {target or 'generated/'} ({exc.strerror or exc}); "
+                          "give a writable --target") from None
     print(f"regenerated: {', '.join(changed)}" if changed else "generated/ was already up to date")
     return 0
 

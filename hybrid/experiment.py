@@ -130,8 +130,9 @@ class Experiment:
             raise HybridError(f"unknown backend {self.backend!r}; choose one of {BACKENDS}")
         if not isinstance(self.arm, Arm):
             raise HybridError(f"arm must be a hybrid.Arm, got {type(self.arm).__name__}")
-        if not isinstance(self.surface, (Circle, Plane)):
-            raise HybridError(f"unknown surface {self.surface!r}; give a hybrid.Circle or hybrid.Plane")
+        if not isinstance(self.surface, (Circle, Plane)) or self.surface.dim != 2:
+            raise HybridError(f"unknown surface {self.surface!r:.60} for the paper's experiment; give a "
+                              "hybrid.Circle or a 2-D hybrid.Plane")
         if self.elbow not in (1, -1):
             raise HybridError(f"elbow = {self.elbow}; give +1 (q2 > 0) or -1 (q2 < 0)")
         _finite("Experiment", duration=self.duration, step=self.step, sample_time=self.sample_time)
@@ -141,6 +142,9 @@ class Experiment:
         if self.step <= 0 or self.sample_time <= 0:
             raise HybridError(f"step = {self.step} s and sample_time = {self.sample_time} s must be positive")
         ratio = self.sample_time / self.step
+        if not math.isfinite(ratio) or ratio > 1e9:
+            raise HybridError(f"step = {self.step} s is too small for sample_time = {self.sample_time} s "
+                              "(over 1e9 steps a sample); give a step of at least sample_time / 1e9")
         if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
             raise HybridError(f"sample_time = {self.sample_time} s is not a whole multiple of step = "
                               f"{self.step} s; choose step = sample_time / k for a whole k")
@@ -253,5 +257,8 @@ def paper_experiment(**overrides) -> Experiment:
         raise HybridError(f"unknown setting(s) {', '.join(unknown)} for paper_experiment; known: "
                           f"{', '.join(sorted(names | gain_names | set(aliases)))}")
     if gains:
-        overrides["gains"] = replace(overrides.get("gains", Gains()), **gains)
+        base = overrides.get("gains", Gains())
+        if not isinstance(base, Gains):
+            raise HybridError(f"gains = {base!r:.60}; give a hybrid.Gains(...) to combine with {', '.join(gains)}")
+        overrides["gains"] = replace(base, **gains)
     return Experiment(**overrides)

@@ -38,6 +38,16 @@ def _why(exc: OSError) -> str:
     return exc.strerror or exc.__class__.__name__
 
 
+def output_path(path) -> Path:
+    """``path`` as a file name to write, or a HybridError saying why it cannot be one."""
+    if not isinstance(path, (str, os.PathLike)) or not str(path).strip() or "\0" in str(path):
+        raise HybridError(f"the output path {path!r:.60} is not a file name; give one")
+    path = Path(path)
+    if len(path.name.encode()) > 200:
+        raise HybridError(f"the file name {path.name[:40]}... is {len(path.name)} characters; give a shorter one")
+    return path
+
+
 def writable_folder(folder: Path, what: str = "output folder") -> Path:
     """``folder``, created if missing, checked to be a writable folder before any long work."""
     folder = Path(folder)
@@ -56,14 +66,17 @@ def writable_folder(folder: Path, what: str = "output folder") -> Path:
 def atomic_path(path: Path, overwrite: bool = False) -> Iterator[Path]:
     """A temporary path beside ``path`` to write to; renamed onto ``path`` when the block ends
     without error (removed otherwise). Refuses an existing ``path`` unless ``overwrite``."""
-    path = Path(path)
+    path = output_path(path)
     if path.is_dir():
         raise HybridError(f"{path} is a folder; give a file name")
     if path.exists() and not overwrite:
         raise HybridError(f"{path} exists; choose another name or pass overwrite=True (--force) to replace it")
     writable_folder(path.parent, "folder")
-    fd, tmp = temporary(path)
-    os.close(fd)
+    try:
+        fd, tmp = temporary(path)
+        os.close(fd)
+    except OSError as exc:
+        raise HybridError(f"cannot write beside {path} ({_why(exc)}); choose another folder") from None
     try:
         yield Path(tmp)
         os.replace(tmp, path)

@@ -19,11 +19,15 @@ SINGULAR_TOL = 1e-3
 PLANAR_SINGULAR = " (elbow q2 near 0 or pi)"
 
 
-@cache
 def planar_unit(backend: str) -> Unit:
     """The committed planar unit of ``backend``, bound from its manifest."""
-    if backend not in ("sympy", "casadi"):
-        raise HybridError(f"backend must be 'sympy' or 'casadi', got {backend!r}")
+    if not isinstance(backend, str) or backend not in ("sympy", "casadi"):
+        raise HybridError(f"backend must be 'sympy' or 'casadi', got {backend!r:.40}")
+    return _planar_unit(backend)
+
+
+@cache
+def _planar_unit(backend: str) -> Unit:
     return Unit(native.load(backend), native.manifest(backend), PLANAR_SINGULAR, {"qd": "qdot", "rd": "rdot"},
                 folder=native.source_dir())
 
@@ -77,8 +81,6 @@ class DecouplingLaw:
     def __post_init__(self):
         check_arm(self.arm)
         kind = check_surface(self.surface)
-        if self.backend not in ("sympy", "casadi"):
-            raise HybridError(f"backend must be 'sympy' or 'casadi', got {self.backend!r}")
         check_singular_tol("decoupling_law", self.singular_tol)
         # frozen: the compiled buffers below must keep matching the fields
         init = partial(object.__setattr__, self)
@@ -181,6 +183,7 @@ def operational_space(arm: Arm | Robot, q, qdot, *, backend: str = "sympy", sing
     if isinstance(arm, Robot):
         return robot_operational_space(arm, q, qdot, singular_tol, coordinates)
     check_arm(arm)
+    check_singular_tol("operational_space", singular_tol)
     out = planar_unit(backend).function("operational_space")(
         _one_state("q", q), _one_state("qdot", qdot), arm.as_array(), singular_tol=singular_tol)
     return out["Bo"], out["no"]

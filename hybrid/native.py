@@ -133,8 +133,9 @@ def _compile(c_file: Path, target: Path, cc: str, includes: list[str]) -> None:
     cmd = [cc, *CFLAGS, "-shared", *(f"-I{p}" for p in paths), str(c_file), "-o", str(so), "-lm"]
     proc = subprocess.run(cmd, capture_output=True, text=True)
     if proc.returncode != 0:
-        raise NativeBuildError(f"compiling {c_file.name} with {cc} failed; is Python.h installed "
-                               "(apt-get install python3-dev)?\n"
+        hint = ("install the Python headers (apt-get install python3-dev)" if "Python.h" in proc.stderr
+                else "the compiler's messages follow")
+        raise NativeBuildError(f"compiling {c_file.name} with {cc} failed: {hint}\n"
                                f"$ {' '.join(cmd)}\n{proc.stderr[-4000:]}")
     if not so.is_file() or so.stat().st_size == 0:
         raise NativeBuildError(f"the compiler {cc} exited 0 but wrote no library for {c_file.name}; "

@@ -60,6 +60,10 @@ class Robot:
                               f"{len(self.links)} and {len(self.damping)}")
         for name, link in zip(self.joint_names, self.links):
             _check_link(name, link)
+        last = self.links[-1] if self.links else None
+        if last is not None and last.mass == 0 and not np.any(last.inertia):
+            raise HybridError(f"the link moved by the last joint '{self.joint_names[-1]}' has no mass and no "
+                              "inertia, so B(q) is singular; give it mass or inertia")
         for name, d in zip(self.joint_names, self.damping):
             _finite(f"Robot damping[{name}]", damping=d)
             if d < 0:

@@ -295,7 +295,7 @@ class SimulationResult:
         """Write an ``.npz`` with every array, the units and the experiment's settings; returns the
         path written (``.npz`` is added when missing). Atomic; refuses an existing file unless
         ``overwrite``."""
-        path = Path(path)
+        path = files.output_path(path)
         if path.suffix != ".npz":
             path = path.with_name(path.name + ".npz")
 
@@ -314,10 +314,19 @@ class SimulationResult:
         """A result written by :meth:`save`; a missing, truncated or foreign file is a HybridError."""
         try:
             with np.load(path, allow_pickle=False) as z:
-                return cls(Experiment.from_dict(json.loads(str(z["experiment"]))), z["t"], z["state"],
-                           z["tau"], z["outputs"], z["force_reference"], z["speed_reference"],
-                           json.loads(str(z["metrics"])))
-        except (OSError, KeyError, ValueError, EOFError, zipfile.BadZipFile, zlib.error, TypeError) as exc:
+                arrays = {k: z[k] for k in ("t", "state", "tau", "outputs", "force_reference", "speed_reference")}
+                experiment = Experiment.from_dict(json.loads(str(z["experiment"])))
+                metrics = json.loads(str(z["metrics"]))
+            n = len(arrays["t"])
+            shapes = {"t": (n,), "state": (n, len(PLANT["state"])), "tau": (n, PLANT["nq"]),
+                      "outputs": (n, len(PLANT_OUTPUTS)), "force_reference": (n,), "speed_reference": (n,)}
+            wrong = [k for k, shape in shapes.items() if arrays[k].shape != shape]
+            if wrong or n == 0 or not np.isfinite(arrays["t"]).all() or not isinstance(metrics, dict):
+                raise ValueError(f"arrays {', '.join(wrong) or 't'} do not have the shapes of a run")
+            return cls(experiment, arrays["t"], arrays["state"], arrays["tau"], arrays["outputs"],
+                       arrays["force_reference"], arrays["speed_reference"], metrics)
+        except (OSError, KeyError, ValueError, EOFError, zipfile.BadZipFile, zlib.error, TypeError,
+                AttributeError) as exc:
             why = getattr(exc, "strerror", None) or f"{type(exc).__name__}: {exc}"
             raise HybridError(f"{path} is not a readable saved hybrid result ({why:.120}); "
                               "save it again with SimulationResult.save") from None
@@ -325,7 +334,7 @@ class SimulationResult:
     def save_csv(self, path: str | Path, overwrite: bool = False) -> Path:
         """Write the time series as CSV, units in the header (atomic; refuses an existing file
         unless ``overwrite``)."""
-        path = Path(path)
+        path = files.output_path(path)
         cols = {"t_s": self.t, "q1_rad": self.q[:, 0], "q2_rad": self.q[:, 1],
                 "tau1_Nm": self.tau[:, 0], "tau2_Nm": self.tau[:, 1],
                 "force_reference_N": self.force_reference, "speed_reference_m_per_s": self.speed_reference}

@@ -14,9 +14,10 @@ from functools import partial
 import numpy as np
 
 from .binding import is_batch
-from .errors import HybridError
+from .errors import HybridError, NonFiniteError
 from .robot import Robot, compiled_law_unit
 from .surfaces import Circle, Cylinder, ImplicitSurface, Plane, Sphere
+from .validate import unit_vector
 
 #: named task-axis selections: all six, position only, the planar arm's (t1, n)
 AXES = {"all": (0, 1, 2, 3, 4, 5), "position": (0, 1, 2), "planar": (0, 2)}
@@ -35,13 +36,13 @@ def check_axes(robot: Robot, axes) -> tuple[int, ...]:
         if axes not in AXES:
             raise HybridError(f"axes = {axes!r}; name one of {', '.join(AXES)} or give indices 0-5")
         axes = AXES[axes]
-    try:
-        out = tuple(int(i) for i in axes)  # in the user's order: a[k] acts on axis axes[k]
-    except (TypeError, ValueError):
-        raise HybridError(f"axes = {axes!r}; give task-axis indices 0-5 (t1, t2, n, then rotations)") from None
-    if not out or len(set(out)) != len(out) or not all(0 <= i <= 5 for i in out) or \
-            any(isinstance(i, bool) for i in axes):
-        raise HybridError(f"axes = {axes!r}; give distinct task-axis indices 0-5")
+    items = tuple(axes) if isinstance(axes, (tuple, list)) else None
+    if items is None or not all(isinstance(i, (int, np.integer)) and not isinstance(i, bool) for i in items):
+        raise HybridError(f"axes = {axes!r:.60}; give a tuple of distinct task-axis indices 0-5 "
+                          "(t1, t2, n, then rotations), or 'all', 'position', 'planar'")
+    out = tuple(int(i) for i in items)  # in the user's order: a[k] acts on axis axes[k]
+    if not out or len(set(out)) != len(out) or not all(0 <= i <= 5 for i in out):
+        raise HybridError(f"axes = {axes!r:.60}; give distinct task-axis indices 0-5")
     if len(out) > robot.n:
         raise HybridError(f"{len(out)} task axes need at least {len(out)} joints; the arm has {robot.n}")
     return out
@@ -58,11 +59,11 @@ def spatial_surface(surface):
 def _reference(e) -> np.ndarray:
     try:
         arr = np.asarray(e, dtype=float)
-    except (TypeError, ValueError):
-        arr = np.array([])
-    if arr.shape != (3,) or not np.isfinite(arr).all() or np.linalg.norm(arr) < 1e-12:
-        raise HybridError(f"reference = {e!r}; give a nonzero direction (e_x, e_y, e_z) in base axes")
-    return arr / np.linalg.norm(arr)
+        if arr.shape != (3,):
+            raise ValueError
+        return np.array(unit_vector("decoupling_law", "reference", arr))
+    except (TypeError, ValueError, OverflowError, HybridError):
+        raise HybridError(f"reference = {e!r:.60}; give a nonzero direction (e_x, e_y, e_z) in base axes") from None
 
 
 @dataclass(frozen=True)
@@ -119,6 +120,7 @@ class SpatialDecouplingLaw:
 
     def evaluate(self, q, qdot, a, Fc, tau0=None) -> tuple[np.ndarray, np.ndarray]:
         """``(F*, tau)`` for one state or N states."""
+        _finite_tau0(tau0)
         out = self._fast(self._binding, -1, q, qdot, a, Fc, self._zeros if tau0 is None else tau0)
         return self._checked(q, qdot, a, Fc, tau0) if out is None else out
 
@@ -138,6 +140,7 @@ class SpatialDecouplingLaw:
 
     def torque(self, q, qdot, a, Fc, tau0=None) -> np.ndarray:
         """``tau = J^T F* + (I - J^T Jbar^T) tau0`` [N m or N]."""
+        _finite_tau0(tau0)
         out = self._fast(self._binding, 1, q, qdot, a, Fc, self._zeros if tau0 is None else tau0)
         return self._checked(q, qdot, a, Fc, tau0)[1] if out is None else out
 
@@ -145,6 +148,18 @@ class SpatialDecouplingLaw:
         """``R_L`` (rows ``t1, t2, n``) at the point ``p`` [m] and ``R_L'`` [1/s] for its velocity ``pdot``."""
         out = self._frame(p, pdot, self._params[1], self._params[2])
         return out["R"], out["Rd"]
+
+
+def _finite_tau0(tau0) -> None:
+    """A square task ignores ``tau0`` (no null space): a non-finite one must still be refused."""
+    if tau0 is None:
+        return
+    try:
+        finite = bool(np.isfinite(np.asarray(tau0, dtype=float)).all())
+    except (TypeError, ValueError):
+        return  # the shape and type checks name it
+    if not finite:
+        raise NonFiniteError(f"tau0 = {np.array2string(np.asarray(tau0, float), precision=4):.100} is not finite")
 
 
 def spatial_law(robot: Robot, surface, curvature: bool = False, *, reference=(0.0, 0.0, 1.0), axes=None,

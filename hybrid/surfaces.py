@@ -11,6 +11,7 @@ is the cross-section of (so the general law can run the paper's case).
 
 from __future__ import annotations
 
+import ast
 import keyword
 import math
 from dataclasses import dataclass
@@ -21,14 +22,7 @@ import sympy as sp
 from codegen import surfaces as cs
 
 from .errors import HybridError
-from .validate import _finite, _point
-
-
-def _unit(owner: str, name: str, v) -> tuple[float, ...]:
-    norm = math.sqrt(sum(x * x for x in v))
-    if norm < 1e-12:
-        raise HybridError(f"{owner}.{name} = {v} has zero length; give a direction")
-    return tuple(x / norm for x in v)
+from .validate import _finite, _point, unit_vector
 
 
 def _unit_normal(g: np.ndarray, where: str) -> np.ndarray:
@@ -109,7 +103,7 @@ class Plane:
             raise HybridError(f"Plane.normal = {self.normal} has zero length; give the direction "
                               f"from the surface towards the robot, e.g. {example}")
         object.__setattr__(self, "point", point)
-        object.__setattr__(self, "normal", _unit("Plane", "normal", normal))
+        object.__setattr__(self, "normal", unit_vector("Plane", "normal", normal))
 
     @property
     def dim(self) -> int:
@@ -195,7 +189,7 @@ class Cylinder(_Spatial):
 
     def __post_init__(self):
         object.__setattr__(self, "point", _point("Cylinder", "point", self.point, (3,)))
-        object.__setattr__(self, "axis", _unit("Cylinder", "axis", _point("Cylinder", "axis", self.axis, (3,))))
+        object.__setattr__(self, "axis", unit_vector("Cylinder", "axis", _point("Cylinder", "axis", self.axis, (3,))))
         _positive("Cylinder", "radius", self.radius)
 
     def spec(self) -> cs.SurfaceSpec:
@@ -236,10 +230,7 @@ class ImplicitSurface(_Spatial):
             _finite("ImplicitSurface", **{name: value})
         phi = self.phi
         if isinstance(phi, str):
-            try:
-                phi = sp.sympify(phi, locals={n: sp.Symbol(n, real=True) for n in (*self.parameters, "x", "y", "z")})
-            except (sp.SympifyError, SyntaxError, TypeError) as exc:
-                raise HybridError(f"ImplicitSurface.phi {self.phi!r} is not a SymPy expression ({exc})") from None
+            phi = parse_phi(phi, tuple(self.parameters))
         if not isinstance(phi, sp.Expr):
             raise HybridError(f"ImplicitSurface.phi must be a SymPy expression of x, y, z, got {type(phi).__name__}")
         # one symbol per name, real, whatever assumptions the user's symbols carried
@@ -278,6 +269,57 @@ class ImplicitSurface(_Spatial):
         subs = {x: p[0], y: p[1], z: p[2], **{sp.Symbol(k, real=True): v for k, v in self.parameters.items()}}
         g = np.array([float(gi.subs(subs)) for gi in grad])
         return _unit_normal(g, f"grad phi vanishes at {p}")
+
+
+#: what a surface written as text may use besides numbers, x, y, z and its parameters
+PHI_FUNCTIONS = ("sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "exp", "log", "sqrt",
+                 "Abs", "Min", "Max")
+PHI_CONSTANTS = ("pi", "E")
+MAX_PHI_CHARS = 2000
+_PHI_NODES = (ast.Expression, ast.BinOp, ast.UnaryOp, ast.Add, ast.Sub, ast.Mult, ast.Div, ast.Pow,
+              ast.USub, ast.UAdd, ast.Load, ast.Name, ast.Constant, ast.Call)
+
+
+def parse_phi(text: str, parameters: tuple[str, ...]) -> sp.Expr:
+    """``phi`` written as text, read without running it: only arithmetic, numbers, ``x, y, z``,
+    the parameters, :data:`PHI_FUNCTIONS` and :data:`PHI_CONSTANTS` are accepted."""
+    shown = f"{text[:60]!r}" + ("..." if len(text) > 60 else "")
+    if len(text) > MAX_PHI_CHARS:
+        raise HybridError(f"ImplicitSurface.phi is {len(text)} characters; write it in at most {MAX_PHI_CHARS}")
+    try:
+        tree = ast.parse(text.strip(), mode="eval")
+    except SyntaxError as exc:
+        raise HybridError(f"ImplicitSurface.phi {shown} is not an expression ({exc.msg}, "
+                          f"column {exc.offset})") from None
+    names = {*parameters, "x", "y", "z", *PHI_FUNCTIONS, *PHI_CONSTANTS}
+    for node in ast.walk(tree):
+        bad = None
+        if not isinstance(node, _PHI_NODES):
+            bad = f"{type(node).__name__.lower()} syntax"
+        elif isinstance(node, ast.Name) and node.id not in names:
+            bad = f"the name {node.id!r} (not x, y, z, a parameter, a known function or pi, E)"
+        elif isinstance(node, ast.Constant) and (not isinstance(node.value, (int, float))
+                                                 or isinstance(node.value, bool) or not abs(node.value) < 1e300):
+            bad = f"the constant {node.value!r:.30}"
+        elif isinstance(node, ast.Call) and (node.keywords or not isinstance(node.func, ast.Name)
+                                             or node.func.id not in PHI_FUNCTIONS):
+            bad = "a call that is not one of " + ", ".join(PHI_FUNCTIONS)
+        elif isinstance(node, ast.BinOp) and isinstance(node.op, ast.Pow) and not _small_exponent(node.right):
+            bad = "an exponent that is not a number of at most 64 in size or an expression of x, y, z"
+        if bad:
+            raise HybridError(f"ImplicitSurface.phi {shown} uses {bad}; write phi with +, -, *, /, **, numbers, "
+                              "x, y, z, its parameters and " + ", ".join(PHI_FUNCTIONS))
+    symbols = {n: sp.Symbol(n, real=True) for n in (*parameters, "x", "y", "z")}
+    return sp.sympify(text, locals=symbols, evaluate=False)
+
+
+def _small_exponent(node) -> bool:
+    """An exponent is a number of size at most 64, or anything involving a name (not a tower of numbers)."""
+    if any(isinstance(n, ast.Name) for n in ast.walk(node)):
+        return True
+    if isinstance(node, ast.UnaryOp):
+        node = node.operand
+    return isinstance(node, ast.Constant) and isinstance(node.value, (int, float)) and abs(node.value) <= 64
 
 
 PlanarSurface = Circle | Plane

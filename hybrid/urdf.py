@@ -9,6 +9,7 @@ a :class:`~hybrid.errors.URDFError` naming the element, its line, and what to do
 from __future__ import annotations
 
 import math
+import os
 import xml.parsers.expat
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -21,6 +22,8 @@ from .errors import URDFError
 from .validate import inertia_problem
 
 MOVING = ("revolute", "continuous", "prismatic")
+#: the largest URDF file read (a description, not a mesh)
+MAX_URDF_BYTES = 64 * 2**20
 KNOWN = (*MOVING, "fixed", "floating", "planar")
 
 
@@ -183,13 +186,23 @@ def _link_inertial(link: Node, source: str) -> tuple[float, np.ndarray, np.ndarr
 
 def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
     """The serial chain from the URDF at ``path`` to the link ``tip`` (see the module doc)."""
-    path = Path(path)
-    source = path.name
+    if not isinstance(path, (str, os.PathLike)):
+        raise URDFError(f"the URDF path must be a file name, got {type(path).__name__}")
     try:
+        path = Path(path)
+        if not path.is_file():
+            raise URDFError(f"cannot read the URDF file {path} ({'a folder' if path.is_dir() else 'no such file'}"
+                            " or not a regular file); check the path")
+        if path.stat().st_size > MAX_URDF_BYTES:
+            raise URDFError(f"{path} is {path.stat().st_size / 2**20:.0f} MiB; a URDF of more than "
+                            f"{MAX_URDF_BYTES // 2**20} MiB is not read (meshes belong in their own files)")
         text = path.read_text()
-    except (OSError, UnicodeDecodeError) as exc:
-        raise URDFError(f"cannot read the URDF file {path} ({exc.__class__.__name__}: "
+    except (OSError, UnicodeDecodeError, ValueError) as exc:
+        if isinstance(exc, URDFError):
+            raise
+        raise URDFError(f"cannot read the URDF file {str(path)[:200]} ({exc.__class__.__name__}: "
                         f"{getattr(exc, 'strerror', None) or exc}); check the path") from None
+    source = path.name
     root = parse_xml(text, source)
     links = {}
     for link in root.findall("link"):
@@ -241,6 +254,9 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
     path_joints = []
     link = tip
     while link in parent_of:
+        if parent_of[link] in path_joints:  # a loop of links that never reaches the root
+            raise URDFError(f"{source}: the links above the tip '{tip}' form a closed loop (through joint "
+                            f"'{parent_of[link]}'); a serial arm's chain must reach the root")
         path_joints.append(parent_of[link])
         link = ends[parent_of[link]][0]
     path_joints.reverse()
@@ -343,6 +359,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
 
 def _unit_axis(j: Node, where: str) -> np.ndarray:
     axis = _floats(j.find("axis"), "xyz", 3, (1.0, 0.0, 0.0), where)
+    axis = axis / max(float(np.max(np.abs(axis))), 1e-300)  # scaled first: huge components do not overflow
     norm = float(np.linalg.norm(axis))
     if norm < 1e-12:
         raise URDFError(f"{where} (line {j.line}): the joint axis is zero; "

@@ -10,12 +10,26 @@ from .errors import HybridError
 
 
 def _finite(owner: str, **values: float) -> None:
-    """Each value a real number (not a bool), finite."""
+    """Each value a real number (not a bool), finite as a float."""
     for name, v in values.items():
         if not isinstance(v, (int, float, np.floating, np.integer)) or isinstance(v, bool):
-            raise HybridError(f"{owner}.{name} must be a real number, got {v!r}")
-        if not math.isfinite(v):
-            raise HybridError(f"{owner}.{name} is {v}; give a finite value")
+            raise HybridError(f"{owner}.{name} must be a real number, got {v!r:.60}")
+        try:
+            ok = math.isfinite(float(v))
+        except OverflowError:  # a Python int beyond float range
+            ok = False
+        if not ok:
+            raise HybridError(f"{owner}.{name} is {str(v)[:30]}; give a finite value (within float range)")
+
+
+def unit_vector(owner: str, name: str, v) -> tuple[float, ...]:
+    """``v / |v|`` without overflow for huge components; a zero or non-finite ``v`` is an error."""
+    arr = np.asarray(v, dtype=float)
+    scale = float(np.max(np.abs(arr))) if arr.size else 0.0
+    if not np.isfinite(arr).all() or not scale > 0:
+        raise HybridError(f"{owner}.{name} = {tuple(v)} has zero length or is not finite; give a direction")
+    arr = arr / scale
+    return tuple(float(x) for x in arr / np.linalg.norm(arr))
 
 
 def _point(owner: str, name: str, p, dims: tuple[int, ...] = (2,)) -> tuple[float, ...]:
@@ -25,8 +39,8 @@ def _point(owner: str, name: str, p, dims: tuple[int, ...] = (2,)) -> tuple[floa
         raise HybridError(f"{owner}.{name} must be {what} in m, got {p!r}")
     try:
         arr = np.asarray(p, dtype=float)
-    except (TypeError, ValueError):
-        raise HybridError(f"{owner}.{name} must be {what} in m, got {p!r}") from None
+    except (TypeError, ValueError, OverflowError):
+        raise HybridError(f"{owner}.{name} must be {what} in m, got {p!r:.80}") from None
     if arr.ndim != 1 or arr.shape[0] not in dims:
         raise HybridError(f"{owner}.{name} must be {what} in m, got shape {arr.shape}")
     if not np.isfinite(arr).all():

@@ -91,3 +91,33 @@ def test_written_files_have_ordinary_permissions(tmp_path, result):
     finally:
         os.umask(mask)
     assert path.stat().st_mode & 0o777 == 0o644 and text.stat().st_mode & 0o777 == 0o644
+
+
+
+@pytest.mark.parametrize("name", [None, 123, "", "bad\x00name", "a" * 300])
+def test_bad_output_names(tmp_path, result, name):
+    target = name if not isinstance(name, str) or not name or "\0" in name else tmp_path / name
+    with pytest.raises(hybrid.HybridError):
+        result.save(target)
+    with pytest.raises(hybrid.HybridError):
+        result.save_csv(target)
+
+
+@pytest.mark.parametrize("forge", [{"state": np.zeros(3)}, {"outputs": np.zeros((3, 2))}, {"t": np.full(3, np.nan)}])
+def test_forged_result_files_are_refused_at_load(tmp_path, result, forge):
+    path = result.save(tmp_path / "r.npz")
+    with np.load(path) as z:
+        arrays = {k: z[k] for k in z.files}
+    arrays.update(forge)
+    np.savez(path, **arrays)
+    with pytest.raises(hybrid.HybridError, match="not a readable saved hybrid result"):
+        hybrid.SimulationResult.load(path)
+
+
+def test_regenerate_into_a_bad_target_is_one_line(tmp_path):
+    afile = tmp_path / "afile"
+    afile.write_text("x")
+    for args in (["--target", str(afile / "sub")], ["--target", str(afile)], ["--check", "--target", str(afile)]):
+        proc = subprocess.run([sys.executable, "-m", "hybrid", "regenerate", *args], cwd=ROOT, capture_output=True,
+                              text=True)
+        assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1, proc.stderr

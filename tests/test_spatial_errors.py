@@ -118,9 +118,14 @@ def test_wrong_shapes_name_the_argument(law):
     (lambda: hybrid.Cylinder((0, 0, 0), (0, 0, 1), "wide"), "Cylinder.radius must be a real number"),
     (lambda: hybrid.Plane((0, 0, 0), (0, 1)), r"Plane.normal must be three numbers"),
     (lambda: hybrid.Plane((0, 0, 0), (0, 0, 0)), "zero length"),
-    (lambda: hybrid.ImplicitSurface("x**2 + y**2 - r**2", {}), "uses r, which parameters does not give"),
+    (lambda: hybrid.ImplicitSurface("x**2 + y**2 - r**2", {}), "uses the name 'r'"),
+    (lambda: hybrid.ImplicitSurface(sp.Symbol("x") ** 2 - sp.Symbol("r"), {}), "uses r, which parameters does not"),
+    (lambda: hybrid.ImplicitSurface("__import__('os').getcwd() or x", {}), "uses .* syntax"),
+    (lambda: hybrid.ImplicitSurface("x - factorial(10)", {}), "a call that is not one of"),
+    (lambda: hybrid.ImplicitSurface("x - 2**2**40", {}), "exponent"),
+    (lambda: hybrid.ImplicitSurface("x" + " + x" * 1000, {}), "characters; write it in at most"),
     (lambda: hybrid.ImplicitSurface("a + 1", {"a": 1.0}), "does not depend on x, y or z"),
-    (lambda: hybrid.ImplicitSurface("x +* y", {}), "is not a SymPy expression"),
+    (lambda: hybrid.ImplicitSurface("x +* y", {}), "is not an expression"),
     (lambda: hybrid.ImplicitSurface("x - a", {"a": float("inf")}), "give a finite value"),
     (lambda: hybrid.ImplicitSurface("x - a", {"x": 1.0}), "identifier other than x, y, z"),
     (lambda: hybrid.ImplicitSurface("x - a", [("a", 1.0)]), "must be a {name: value} dict"),
@@ -240,3 +245,38 @@ def test_robots_and_laws_pickle(ur5, law):
     planar = hybrid.decoupling_law(hybrid.paper_arm(), hybrid.Circle((0.5, 0), 0.2))
     np.testing.assert_array_equal(pickle.loads(pickle.dumps(planar))([2.2, 1.9], [0, 0], [0, 0], [0, 0]),
                                   planar([2.2, 1.9], [0, 0], [0, 0], [0, 0]))
+
+
+
+@pytest.mark.parametrize("make, match", [
+    (lambda: hybrid.Circle((0, 0), 10**400), "within float range"),
+    (lambda: hybrid.Circle((0, 10**400), 1), "must be two numbers"),
+    (lambda: hybrid.ImplicitSurface("x - a", {"a": 10**400}), "within float range"),
+    (lambda: hybrid.paper_experiment(model_error=10**400), "within float range"),
+    (lambda: hybrid.paper_experiment(step=5e-324), "too small for sample_time"),
+    (lambda: hybrid.paper_experiment(gains="x", KPv=1), "give a hybrid.Gains"),
+    (lambda: hybrid.paper_experiment(surface=hybrid.Plane((0, 0, 0), (0, 0, 1))), "2-D hybrid.Plane"),
+    (lambda: hybrid.operational_space(hybrid.paper_arm(), [0.1, 1.0], [0, 0], singular_tol="a"), "real number"),
+    (lambda: hybrid.operational_space(hybrid.paper_arm(), [0.0, 1e-9], [0, 0], singular_tol=float("nan")),
+     "singular_tol is nan"),
+    (lambda: hybrid.arm_terms(hybrid.paper_arm(), [0.1, 1.0], [0, 0], backend=["sympy"]), "backend must be"),
+])
+def test_overflow_and_unchecked_settings(make, match):
+    with pytest.raises(hybrid.HybridError, match=match):
+        make()
+
+
+def test_huge_directions_are_normalised_not_zeroed(ur5):
+    assert hybrid.Plane((0, 0), (1e200, 1e200)).normal == pytest.approx((2**-0.5, 2**-0.5))
+    assert hybrid.Cylinder((0, 0, 0), (1e200, 0, 0), 1.0).axis == (1.0, 0.0, 0.0)
+    law = hybrid.decoupling_law(ur5, hybrid.Sphere((0.45, 0.1, 0.3), 0.15), reference=(0, 0, 1e200))
+    assert law.reference == (0.0, 0.0, 1.0)
+    for axes in [(float("inf"),), (0.5, 1.7, 2.2), ("0", "1", "2"), {0: 1, 1: 1, 2: 1}]:
+        with pytest.raises(hybrid.HybridError, match="axes"):
+            hybrid.decoupling_law(ur5, hybrid.Sphere((0.45, 0.1, 0.3), 0.15), axes=axes)
+
+
+def test_non_finite_tau0_is_refused_even_where_it_has_no_effect(law):
+    z6 = np.zeros(6)
+    with pytest.raises(hybrid.NonFiniteError, match="tau0"):
+        law.torque(Q, z6, z6, z6, tau0=np.full(6, np.nan))

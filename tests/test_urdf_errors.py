@@ -140,3 +140,47 @@ def test_model_changes_are_validated(tmp_path):
         robot.with_model_error(-1.0)
     with pytest.raises(hybrid.HybridError, match="damping of joint 'elbow' is -1"):
         robot.with_link("elbow", damping=-1.0)
+
+
+
+def test_a_loop_above_the_tip_is_an_error_not_a_hang(tmp_path):
+    text = SLIDER.replace("</robot>", '<link name="ca"/><link name="cb"/>'
+                          '<joint name="j1" type="revolute"><parent link="ca"/><child link="cb"/><axis xyz="0 0 1"/>'
+                          '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
+                          '<joint name="j2" type="revolute"><parent link="cb"/><child link="ca"/><axis xyz="0 0 1"/>'
+                          '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint></robot>')
+    with pytest.raises(hybrid.URDFError, match="form a closed loop"):
+        hybrid.Robot.from_urdf(write(tmp_path, text), tip="ca")
+
+
+@pytest.mark.parametrize("path", [None, 123, b"/tmp/x.urdf", "bad\x00path", "/dev/zero"])
+def test_paths_that_are_not_urdf_files(path):
+    with pytest.raises(hybrid.URDFError):
+        hybrid.Robot.from_urdf(path, tip="tool")
+
+
+def test_names_cannot_break_the_generated_c(tmp_path):
+    """A joint name that would end a C comment, and a huge axis, still give C that compiles."""
+    import shutil
+    import subprocess
+
+    text = SLIDER.replace('name="elbow"', 'name="el*/ #error boom /*bow"').replace(
+        '<axis xyz="0 0.6 0.8"/>', '<axis xyz="0 6e200 8e200"/>')
+    path = write(tmp_path, text)
+    robot = hybrid.Robot.from_urdf(path, tip="tool")
+    assert np.allclose(robot.chain.joints[2].axis, (0.0, 0.6, 0.8))
+    from hybrid.robot import generate
+
+    out = generate(path, "tool", tmp_path / "gen", name="x" * 300)
+    assert all(len(p.name) < 80 for p in out)
+    c = next(p for p in out if p.suffix == ".c")
+    cc = shutil.which("gcc") or shutil.which("cc")
+    proc = subprocess.run([cc, "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-c", str(c), "-o",
+                           str(tmp_path / "x.o")], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr[:2000]
+
+
+def test_a_massless_last_link_is_refused(tmp_path):
+    robot = hybrid.Robot.from_urdf(write(tmp_path, SLIDER), tip="tool")
+    with pytest.raises(hybrid.HybridError, match="last joint 'elbow' has no mass and no inertia"):
+        robot.with_link("elbow", mass=0.0, inertia=np.zeros((3, 3)))
