@@ -98,7 +98,8 @@ def main(argv: list[str] | None = None) -> int:
     except HybridError as exc:
         if debug:
             traceback.print_exc()
-        print(f"error: {exc}", file=sys.stderr)
+        # one line: the error's first line names the value and the fix; --debug shows the rest
+        print(f"error: {str(exc).splitlines()[0] if str(exc) else type(exc).__name__}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)

@@ -153,7 +153,7 @@ class Experiment:
                    (self.contact.damping + self.sensor.damping) / self.sensor.mass)
         if self.step * rate > 1.0:
             raise HybridError(
-                f"step = {self.step} s is too large for the contact: its fastest mode is {rate:.0f} rad/s "
+                f"step = {self.step} s is too large for the contact: its fastest mode is {rate:.3g} rad/s "
                 f"and RK4 needs step * rate <= 1 for accuracy; use step <= {1.0 / rate:.2e} s")
         if self.model_error <= -1 or self.viscous_compensation < 0:
             raise HybridError(f"model_error = {self.model_error} must be > -1 and viscous_compensation = "
@@ -254,8 +254,8 @@ def paper_experiment(**overrides) -> Experiment:
             overrides[name] = overrides.pop(alias)
     unknown = sorted(set(overrides) - names)
     if unknown:
-        raise HybridError(f"unknown setting(s) {', '.join(unknown)} for paper_experiment; known: "
-                          f"{', '.join(sorted(names | gain_names | set(aliases)))}")
+        raise HybridError(f"unknown setting(s) {', '.join(unknown)} for paper_experiment; see the known ones below\n"
+                          f"  known: {', '.join(sorted(names | gain_names | set(aliases)))}")
     if gains:
         base = overrides.get("gains", Gains())
         if not isinstance(base, Gains):

@@ -59,8 +59,8 @@ def check_loops(exp) -> None:
     for name, (radius, rule) in loop_radii(g, T, k).items():
         if radius >= 1.0:
             raise HybridError(
-                f"the {name} is unstable with gains {g} at sample_time {T} s "
-                f"(contact stiffness {k:.0f} N/m): spectral radius {radius:.3f} >= 1; it {rule}")
+                f"the {name} is unstable at sample_time {T} s (spectral radius {radius:.3g} >= 1); it {rule}\n"
+                f"  gains {g}, contact stiffness {k:.0f} N/m")
 
 
 def model_error_note(exp) -> str:
@@ -77,5 +77,5 @@ def model_error_note(exp) -> str:
                 if radius >= 1.0]
     if not unstable:
         return ""
-    return (f"; with model_error = {exp.model_error} the arm accelerates about {scale:.3g} times the "
-            f"commanded a, which makes {' and '.join(unstable)} unstable: lower the gains or the model error")
+    return (f"; model_error = {exp.model_error} scales every loop gain by {scale:.3g}, which makes "
+            f"{' and '.join(unstable)} unstable: lower the gains or the model error")

@@ -399,13 +399,15 @@ def _divergence(partial: SimulationResult, t: float, q, qdot, tau, x) -> Simulat
     exp = partial.experiment
     t_fail = partial.t[-1] + exp.step
     cond = reference.conditioning(q, exp.arm.as_array())
+    causes = [c.lstrip("; ") for c in (model_error_note(exp), _closest_singularity(partial)) if c]
+    causes = causes or ["reduce step or check gains and parameters"]
     return SimulationError(
-        f"the plant state became NaN or infinite at t = {t_fail:.5f} s, in the control sample from "
-        f"t = {t:.4f} s (there q = {np.round(q, 5).tolist()} rad, qdot = {np.round(qdot, 4).tolist()} "
-        f"rad/s, 2|det J|/|J|_F^2 = {cond:.3g}, tau = {np.round(tau, 3).tolist()} N m; last finite "
-        f"state q = {np.array2string(x[:len(q)], precision=4)} rad, qdot = "
-        f"{np.array2string(x[len(q):2 * len(q)], precision=4)} rad/s){model_error_note(exp)}"
-        f"{_closest_singularity(partial)}; otherwise reduce step or check gains and parameters",
+        f"the plant state became NaN or infinite at t = {t_fail:.5f} s: {causes[0]}\n"
+        + "".join(f"  also: {c}\n" for c in causes[1:]) +
+        f"  in the control sample from t = {t:.4f} s: q = {np.round(q, 5).tolist()} rad, qdot = "
+        f"{np.round(qdot, 4).tolist()} rad/s, 2|det J|/|J|_F^2 = {cond:.3g}, tau = {np.round(tau, 3).tolist()} N m\n"
+        f"  last finite state: q = {np.array2string(x[:len(q)], precision=4)} rad, qdot = "
+        f"{np.array2string(x[len(q):2 * len(q)], precision=4)} rad/s",
         t_fail, partial)
 
 
@@ -416,9 +418,8 @@ def _closest_singularity(res: SimulationResult, near: float = 0.1) -> str:
     i = int(np.argmin(cond))
     if cond[i] >= near:
         return ""
-    return (f"; the arm passed near a singularity (2|det J|/|J|_F^2 = {cond[i]:.2g} at t = {res.t[rows[i]]:.4f} s), "
-            "where the law's torques grow without bound: raise singular_tol to stop there, or keep the "
-            "path away from full extension/folding")
+    return (f"; the arm passed near a singularity (2|det J|/|J|_F^2 = {cond[i]:.2g} at t = {res.t[rows[i]]:.4f} s): "
+            "raise singular_tol to stop there, or keep the path away from full extension")
 
 
 def _result(exp: Experiment, plant, states: np.ndarray, taus: np.ndarray, metrics: bool) -> SimulationResult:

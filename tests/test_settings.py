@@ -94,3 +94,13 @@ def test_every_setting_combination_runs_or_raises_a_hybrid_error(overrides):
         assert str(exc).strip(), "an error must say something"
         return
     assert np.isfinite(res.state).all()
+
+
+@pytest.mark.parametrize("overrides", [{"KPv": 1e300}, {"model_error": 2.0}, {"v_d": 100.0}, {"foo": 1},
+                                       {"sensor": hybrid.Sensor(mass=1e-300)}])
+def test_first_lines_of_messages_are_short(overrides):
+    """The first line names the value and the fix; the details, if any, follow on their own lines."""
+    with pytest.raises(hybrid.HybridError) as info:
+        hybrid.simulate(hybrid.paper_experiment(**overrides))
+    first = str(info.value).splitlines()[0]
+    assert 20 < len(first) <= 250, first
