@@ -375,6 +375,8 @@ def add_parser(sub) -> None:
 def _run(args) -> int:
     from .errors import HybridError
 
+    if args.json is not None and not args.json.strip():
+        raise HybridError("--json needs a file name")
     if args.json and Path(args.json).is_dir():
         raise HybridError(f"--json {args.json} is a folder; give a file name")
     if args.json and Path(args.json).exists() and not args.force:

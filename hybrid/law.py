@@ -9,7 +9,7 @@ import numpy as np
 
 from . import binding, native
 from .binding import Unit
-from .errors import HybridError
+from .errors import HybridError, NonFiniteError
 from .parameters import Arm, Circle, Plane, _finite
 from .robot import Robot
 
@@ -192,8 +192,10 @@ def operational_space(arm: Arm | Robot, q, qdot, *, backend: str = "sympy", sing
 def task_frame(surface: Circle | Plane, r, rdot, *, backend: str = "sympy") -> tuple[np.ndarray, np.ndarray]:
     """Task-frame rotation ``R(r)`` (rows: tangent, normal) and its derivative ``R'(r, r')``."""
     kind = check_surface(surface)
-    out = planar_unit(backend).function(f"task_frame_{kind}")(
-        _one_state("r", r), _one_state("rdot", rdot), surface.as_array())
+    r, rdot = _one_state("r", r), _one_state("rdot", rdot)
+    if not (np.isfinite(r).all() and np.isfinite(rdot).all()):  # a plane's frame would not show it
+        raise NonFiniteError(f"task_frame: non-finite input r = {r}, rdot = {rdot}")
+    out = planar_unit(backend).function(f"task_frame_{kind}")(r, rdot, surface.as_array())
     return out["R"], out["Rd"]
 
 

@@ -74,11 +74,12 @@ class Circle:
         return d / norm
 
     def arc_coordinate(self, p) -> float:
-        d = np.asarray(p, float) - self.center
+        d = np.asarray(_point("Circle.arc_coordinate", "p", p)) - self.center
         return self.radius * math.atan2(d[1], d[0])
 
     def at(self, s: float) -> np.ndarray:
         """The surface point at arc coordinate ``s`` [m]."""
+        _finite("Circle.at", s=s)
         ang = s / self.radius
         return np.array(self.center) + self.radius * np.array([math.cos(ang), math.sin(ang)])
 
@@ -136,10 +137,11 @@ class Plane:
         return np.array([-self.normal[1], self.normal[0]])
 
     def arc_coordinate(self, p) -> float:
-        return float((np.asarray(p, float) - self.point) @ self._tangent())
+        return float((np.asarray(_point("Plane.arc_coordinate", "p", p)) - self.point) @ self._tangent())
 
     def at(self, s: float) -> np.ndarray:
         """The surface point at arc coordinate ``s`` [m]."""
+        _finite("Plane.at", s=s)
         return np.array(self.point) + s * self._tangent()
 
 
