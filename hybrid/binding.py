@@ -261,10 +261,3 @@ class Unit:
 
     def entry(self, name: str) -> dict:
         return self.function(name).entry
-
-    def names(self, function: str, argument: str) -> tuple[str, ...]:
-        """Element names of an argument (parameter arrays, records), from the manifest."""
-        for a in (*self.entry(function)["inputs"], *self.entry(function)["outputs"]):
-            if a["name"] == argument:
-                return tuple(a.get("names", ()))
-        raise HybridError(f"{function} has no argument {argument!r}")
