@@ -203,13 +203,11 @@ class Function:
         N = lengths.pop()
         outs = {n: np.empty((N, size)) for n, size, _ in self.outputs}
         status = np.empty(N, dtype=np.intc)
-        extra = self._extra(singular_tol)
-        fb = self._ffi.from_buffer
 
         def run(lo: int, hi: int) -> int:
             rows = [v[lo:hi] if n in self.per_state else v for n, v in ins.items()]
-            return self._batch(hi - lo, *(fb("double[]", v) for v in rows), *extra,
-                               *(fb("double[]", v[lo:hi]) for v in outs.values()), fb("int[]", status[lo:hi]))
+            return self.batch_into(*rows, *(v[lo:hi] for v in outs.values()), status=status[lo:hi],
+                                   singular_tol=singular_tol)
 
         failed = sum(parallel_chunks(run, N))
         if failed:

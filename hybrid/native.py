@@ -169,20 +169,18 @@ def _cached_module(stem: str, key_material: dict, write_source: Callable[[str, P
         except (OSError, ValueError, KeyError):
             return False
 
-    def build() -> None:
-        with open(entry / ".lock", "w") as lock:
-            fcntl.flock(lock, fcntl.LOCK_EX)  # one builder at a time; others wait, then reuse
-            if not valid():
-                log.info("hybrid: building %s with %s", name, cc)
-                with tempfile.TemporaryDirectory(dir=entry) as tmp:
-                    c_file = Path(tmp) / f"{name}.c"
-                    write_source(name, c_file)
-                    _compile(c_file, so, cc, includes)
-                _atomic_write(manifest, json.dumps({"sha256": _sha256(so), "compiler": ident,
-                                                    "flags": CFLAGS}).encode())
+    def make() -> None:
+        log.info("hybrid: building %s with %s", name, cc)
+        with tempfile.TemporaryDirectory(dir=entry) as tmp:
+            c_file = Path(tmp) / f"{name}.c"
+            write_source(name, c_file)
+            _compile(c_file, so, cc, includes)
+        _atomic_write(manifest, json.dumps({"sha256": _sha256(so), "compiler": ident, "flags": CFLAGS}).encode())
 
-    if not valid():
-        build()
+    def build() -> None:
+        _once(entry, valid, make)
+
+    build()
     try:
         return _import(name, so)
     except (ImportError, OSError) as exc:
@@ -206,10 +204,14 @@ def _import(name: str, so: Path):
     return module
 
 
-def _unit(backend: str) -> tuple[Path, str, str]:
-    """``(source dir, C source, header)`` of the generated unit for ``backend``."""
+def _check_backend(backend: str) -> None:
     if backend not in ("sympy", "casadi"):
         raise NativeBuildError(f"no generated unit for backend {backend!r}; known backends are 'sympy' and 'casadi'")
+
+
+def _unit(backend: str) -> tuple[Path, str, str]:
+    """``(source dir, C source, header)`` of the generated unit for ``backend``."""
+    _check_backend(backend)
     src_dir = source_dir()
     return src_dir, *_read_unit(src_dir, f"hybrid_{backend}")
 
@@ -282,7 +284,7 @@ class HandEditedWarning(UserWarning):
 @cache
 def manifest(backend: str = "sympy") -> dict:
     """The manifest of the committed unit ``hybrid_<backend>``."""
-    _unit(backend)
+    _check_backend(backend)
     return read_manifest(source_dir(), f"hybrid_{backend}")
 
 
@@ -315,15 +317,26 @@ def generated_unit(stem: str, key_material: dict, generate: Callable[[], dict[st
         except (OSError, ValueError, KeyError, TypeError):
             return False
 
+    def make() -> None:
+        files = generate()
+        write_unit_files(folder, files)
+        _atomic_write(done, json.dumps({"files": sorted(files)}).encode())
+
     if not valid():
         folder.mkdir(parents=True, exist_ok=True)
-        with open(folder / ".lock", "w") as lock:
-            fcntl.flock(lock, fcntl.LOCK_EX)
-            if not valid():
-                files = generate()
-                write_unit_files(folder, files)
-                _atomic_write(done, json.dumps({"files": sorted(files)}).encode())
+        _once(folder, valid, make)
     return folder
+
+
+def _once(folder: Path, valid: Callable[[], bool], make: Callable[[], None]) -> None:
+    """``make()`` unless ``valid()``, under a file lock in ``folder``: across processes one builds,
+    the others wait and then find the result valid."""
+    if valid():
+        return
+    with open(folder / ".lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not valid():
+            make()
 
 
 def _writable_cache() -> Path:
