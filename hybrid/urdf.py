@@ -260,7 +260,6 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
         path_joints.append(parent_of[link])
         link = ends[parent_of[link]][0]
     path_joints.reverse()
-    on_chain = set(path_joints)
 
     def joint_transform(name: str, value: float) -> np.ndarray:
         """Transform parent link -> child link of a joint held at ``value``."""
@@ -287,9 +286,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
         R = T[:3, :3]
         body.add(m, R @ c + T[:3, 3], R @ I_c @ R.T)
         for jn in children.get(link_name, []):
-            if jn == skip:
-                continue
-            if jn in on_chain and moving(jn):
+            if jn == skip:  # the chain goes on through it
                 continue
             # off the chain (any type, mimic or not): held at its locked value, 0 by default
             merge_subtree(body, ends[jn][1], T @ joint_transform(jn, locked.get(jn, 0.0)), None)
@@ -298,7 +295,6 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
     chain_joints, bodies, damping, lims = [], [], [], []
     T_acc = np.eye(4)
     body = _Body()  # the base body: its mass does not move, but keep the structure uniform
-    current = link
     for idx, jn in enumerate(path_joints):
         j = joints[jn]
         kind = j.attrib["type"]
@@ -314,8 +310,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
                             "on the controlled chain (lock it with locked={...}, or pick another tip)")
         if not moving(jn):
             T_acc = T_acc @ joint_transform(jn, locked.get(jn, 0.0))
-            current = ends[jn][1]
-            merge_subtree(body, current, T_acc, next_on_path)
+            merge_subtree(body, ends[jn][1], T_acc, next_on_path)
             continue
         if chain_joints:
             bodies.append(body)
@@ -337,8 +332,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
             lo, hi = -math.inf, math.inf
         lims.append((lo, hi, _scalar(lim, "velocity", math.inf, where), _scalar(lim, "effort", math.inf, where)))
         T_acc = np.eye(4)
-        current = ends[jn][1]
-        merge_subtree(body, current, T_acc, next_on_path)
+        merge_subtree(body, ends[jn][1], T_acc, next_on_path)
     if not chain_joints:
         raise URDFError(f"{source}: no moving joint between the root '{link}' and the tip '{tip}'; "
                         "pick a tip further along the arm")
