@@ -231,6 +231,12 @@ class Inertia:
         w, v = motion
         return self.I @ w + cross(self.h, v), self.m * v - cross(self.h, w)
 
+    def wrench(self, motion, acc):
+        """The spatial force ``I a + v x* (I v)`` that gives the body the acceleration ``acc``."""
+        w, v = motion
+        ia, (n_mom, f_mom) = self.apply(acc), self.apply(motion)
+        return ia[0] + cross(w, n_mom) + cross(v, f_mom), ia[1] + cross(w, f_mom)
+
 
 @dataclass
 class Body:
@@ -256,6 +262,16 @@ class Body:
         c = self.c
         I_O = self.R @ self.Ic @ self.R.T + self.m * (ca.dot(c, c) * ca.SX.eye(3) - c @ c.T)
         return Inertia(self.m, self.m * c, I_O)
+
+    def wrench(self, motion, acc):
+        """``I a + v x* (I v)`` by Newton and Euler about the centre of mass (fewer operations):
+        ``F = m a_c`` with ``a_c = a_O + alpha x c + w x v_c``, and about the origin
+        ``c x F + R (Ic alpha_L + w_L x Ic w_L)`` with ``alpha_L, w_L`` in link axes."""
+        (w, v), (alpha, a) = motion, acc
+        v_c = v + cross(w, self.c)
+        F = self.m * (a + cross(alpha, self.c) + cross(w, v_c))
+        w_l, alpha_l = self.R.T @ w, self.R.T @ alpha
+        return self.R @ (self.Ic @ alpha_l + cross(w_l, self.Ic @ w_l)) + cross(self.c, F), F
 
 
 def link_bodies(chain: Chain, frames: Frames, params) -> list[Body]:
@@ -299,7 +315,7 @@ def crba(chain: Chain, frames: Frames, params, inertias: list[Inertia] | None = 
 def rnea(chain: Chain, frames: Frames, params, qd, qdd=None, bodies=None) -> ca.SX:
     """``tau = B q'' + n(q, q')`` by recursive Newton-Euler (``q'' = 0`` when ``qdd`` is None):
     Coriolis/centrifugal, gravity and joint viscosity ``damping_i q'_i``. ``bodies`` (anything with
-    ``apply``) reuses inertias already formed, e.g. the CRBA's."""
+    ``wrench``) reuses inertias already formed, e.g. the CRBA's."""
     damping, g = _gravity_and_damping(chain, params)
     inertias = bodies or link_bodies(chain, frames, params)
     vs, bias = velocities_and_bias(frames, qd)
@@ -313,12 +329,7 @@ def rnea(chain: Chain, frames: Frames, params, qd, qdd=None, bodies=None) -> ca.
     tau = [None] * chain.n
     total = None
     for i in reversed(range(chain.n)):
-        momentum = inertias[i].apply(vs[i])
-        w, v = vs[i]
-        n_mom, f_mom = momentum
-        # f_i = I_i a_i + v_i x* (I_i v_i)
-        ia = inertias[i].apply(accs[i])
-        f = (ia[0] + cross(w, n_mom) + cross(v, f_mom), ia[1] + cross(w, f_mom))
+        f = inertias[i].wrench(vs[i], accs[i])
         total = f if total is None else _add(total, f)
         tau[i] = _dot(frames.S[i], total) + damping[i] * qd[i]
     return ca.vertcat(*tau)
