@@ -92,10 +92,23 @@ def build_robot_unit(chain: rb.Chain, prefix: str, info: dict, defaults=None) ->
 
 def build_law_unit(chain: rb.Chain, spec, axes: tuple[int, ...], prefix: str, info: dict) -> Unit:
     """The task frame and decoupling law of ``chain`` on the surface ``spec`` for the task ``axes``."""
-    from .task_law import AXIS_NAMES, law_kernels
+    from .task_law import law_kernels
 
-    return assemble(prefix, "casadi", law_kernels(chain, spec, axes),
-                    f"decoupling law of the {chain.n}-joint arm '{info.get('robot', prefix)}' on a {spec.kind}, "
+    return _task_unit(law_kernels(chain, spec, axes), "decoupling law", chain, spec, axes, prefix, info)
+
+
+def build_controller_unit(chain: rb.Chain, spec, axes: tuple[int, ...], prefix: str, info: dict) -> Unit:
+    """One control sample (measurement, loops, law) of ``chain`` on ``spec`` for the task ``axes``."""
+    from .controller_step import controller_kernels
+
+    return _task_unit(controller_kernels(chain, spec, axes), "controller step", chain, spec, axes, prefix, info)
+
+
+def _task_unit(kernels, what: str, chain: rb.Chain, spec, axes, prefix: str, info: dict) -> Unit:
+    from .task_law import AXIS_NAMES
+
+    return assemble(prefix, "casadi", kernels,
+                    f"{what} of the {chain.n}-joint arm '{info.get('robot', prefix)}' on a {spec.kind}, "
                     f"task axes {', '.join(AXIS_NAMES[i] for i in axes)}",
                     info={"robot": info, "surface": {"kind": spec.kind, "parameters": list(spec.parameters),
                                                       "phi": str(spec.phi)}, "axes": list(axes)},

@@ -20,6 +20,8 @@ The conditioning guard is ``m / (|J_y|_F |J_y^+|_F)``, from the same QR.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import casadi as ca
 
 from . import factor
@@ -47,23 +49,32 @@ def _rows(M, axes):
     return ca.vertcat(*(M[i, :] for i in axes))
 
 
-def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tuple[Kernel, ...]:
-    """``task_frame`` and ``decoupling_law`` of ``chain`` on ``spec`` for the task ``axes``."""
-    n, m = chain.n, len(axes)
-    if m > n:
-        raise ValueError(f"a task of {m} axes needs at least {m} joints; the arm has {n}")
-    q, qd, tau0 = (ca.SX.sym(s, n) for s in ("q", "qd", "tau0"))
-    a, Fc = ca.SX.sym("a", m), ca.SX.sym("Fc", 6)
-    params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
-    theta, e, opts = ca.SX.sym("surface", len(spec.parameters)), ca.SX.sym("e", 3), ca.SX.sym("opts", 1)
+@dataclass(frozen=True)
+class ArmMotion:
+    """The arm's symbolic kinematics at ``(q, q')``: frames, ``J`` (6 x n), ``J' q'`` and ``v = J q'``."""
 
+    frames: rb.Frames
+    J: ca.SX
+    Jdqd: ca.SX
+    v: ca.SX
+
+
+def arm_motion(chain: rb.Chain, q, qd) -> ArmMotion:
     fr = rb.forward_kinematics(chain, q)
     J = rb.frame_jacobian(fr)
-    Jdqd = rb.frame_classical_acceleration(fr, qd)
-    v = J @ qd
-    tf = task_frame(spec, fr.tip_p, v[:3], theta, e)
-    Rm, Rdm = _rows(_blockdiag(tf.R), axes), _rows(_blockdiag(tf.Rd), axes)
-    b = a - opts[0] * (Rdm @ v) - Rm @ Jdqd
+    return ArmMotion(fr, J, rb.frame_classical_acceleration(fr, qd), J @ qd)
+
+
+def task_rows(tf, axes) -> tuple[ca.SX, ca.SX]:
+    """``R_m`` and ``R_m'``: the task ``axes``' rows of ``R = diag(R_L, R_L)`` and of its derivative."""
+    return _rows(_blockdiag(tf.R), axes), _rows(_blockdiag(tf.Rd), axes)
+
+
+def decoupling(chain: rb.Chain, arm: ArmMotion, params, qd, Rm, Rdm, a, Fc, tau0, curvature):
+    """``(F*, tau, conditioning)`` of the law (module docstring) for the task rows ``Rm`` (m x 6)."""
+    n, m = chain.n, Rm.shape[0]
+    J, fr = arm.J, arm.frames
+    b = a - curvature * (Rdm @ arm.v) - Rm @ arm.Jdqd
     full = m == 6  # R_m = R is a rotation: work with J itself (same conditioning) and rotate b and f
     Jy = J if full else Rm @ J
     if full:
@@ -90,7 +101,23 @@ def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tu
         f_y = factor.factor_solve(K, b + Y.T @ u)
         g = factor.factor_solve(K, Y.T @ u0)
         tau = Jy.T @ (f_y - g) + tau0
-    F = f_y if full else Rm.T @ f_y
+    return (f_y if full else Rm.T @ f_y), tau, cond
+
+
+def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tuple[Kernel, ...]:
+    """``task_frame`` and ``decoupling_law`` of ``chain`` on ``spec`` for the task ``axes``."""
+    n, m = chain.n, len(axes)
+    if m > n:
+        raise ValueError(f"a task of {m} axes needs at least {m} joints; the arm has {n}")
+    q, qd, tau0 = (ca.SX.sym(s, n) for s in ("q", "qd", "tau0"))
+    a, Fc = ca.SX.sym("a", m), ca.SX.sym("Fc", 6)
+    params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
+    theta, e, opts = ca.SX.sym("surface", len(spec.parameters)), ca.SX.sym("e", 3), ca.SX.sym("opts", 1)
+
+    arm = arm_motion(chain, q, qd)
+    tf = task_frame(spec, arm.frames.tip_p, arm.v[:3], theta, e)
+    Rm, Rdm = task_rows(tf, axes)
+    F, tau, cond = decoupling(chain, arm, params, qd, Rm, Rdm, a, Fc, tau0, opts[0])
 
     names = tuple(j.name for j in chain.joints)
     a_q = Arg("q", q, rb.joint_units(chain, "q"), names=names)

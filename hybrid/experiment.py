@@ -196,6 +196,14 @@ class Experiment:
     def n_samples(self) -> int:
         return math.ceil(self.duration / self.sample_time - 1e-9)
 
+    def desired_point(self, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """``r_d(t)`` [m] on the surface, reached from ``start_point`` at the desired speed, and
+        ``r_d'(t)`` [m/s] (along the tangent ``t = (-n_y, n_x)``)."""
+        surf, vref = self.surface, self.speed_reference
+        p = surf.at(surf.arc_coordinate(self.start_point) + vref.integral(t))
+        n = surf.normal_at(p)
+        return p, vref(t) * np.array([-n[1], n[0]])
+
     def controller_arm(self) -> Arm:
         """The controller's (wrong) model of the arm."""
         return self.arm.with_model_error(self.model_error, self.viscous_compensation)

@@ -71,6 +71,12 @@ class Arm:
         return replace(self, m1=self.m1 * k, m2=self.m2 * k, I1=self.I1 * k, I2=self.I2 * k,
                        V1=self.V1 * viscous_compensation, V2=self.V2 * viscous_compensation)
 
+    def conditioning(self, q):
+        """Distance of ``J(q)`` from singularity, ``2 |det J| / |J|_F^2`` in [0, 1] (about
+        ``|sin q2|``); ``q`` of shape (2,) or (2, N)."""
+        L1, L2, c2 = self.L1, self.L2, np.cos(q[1])
+        return 2.0 * L1 * L2 * np.abs(np.sin(q[1])) / (L1**2 + 2.0 * L2**2 + 2.0 * L1 * L2 * c2)
+
     def reach(self) -> tuple[float, float]:
         """Smallest and largest distance of the tip from the base [m]."""
         return abs(self.L1 - self.L2), self.L1 + self.L2

@@ -208,3 +208,77 @@ def spatial_decoupling_law(J, Jdqd, B, n, R_L, Rd_L, qd, a, Fc, tau0, axes, curv
     f = Lam @ (np.asarray(a) - (Rd @ v if curvature else 0.0) - R @ Jdqd) + JbarT @ (n - J.T @ Fc)
     tau = Jy.T @ f + (np.eye(len(qd)) - Jy.T @ JbarT) @ tau0
     return R.T @ f, tau
+
+
+# ------------------------------------------------- the paper's closed loop in NumPy
+
+
+class NumpyPlant:
+    """The paper's plant (arm, 2-D sensor, surface) stepped by :func:`plant_advance`."""
+
+    def __init__(self, exp):
+        self.kind, self.h = exp.surface.kind, exp.step
+        self.arm, self.plant, self.surface = exp.arm.as_array(), exp.plant_array(), exp.surface.as_array()
+
+    def advance(self, x, tau, nsteps, trajectory):
+        for k in range(nsteps):
+            nxt = plant_advance(self.kind, x, tau, self.arm, self.plant, self.surface, self.h, 1)
+            if not np.isfinite(nxt).all():
+                return k  # like the C: x keeps the last finite state
+            x[:] = trajectory[k] = nxt
+        return nsteps
+
+    def outputs(self, states):
+        return np.array([plant_outputs(self.kind, x, self.arm, self.plant, self.surface) for x in states])
+
+
+class NumpyController:
+    """The paper's sampled controller written from NOTES sections 4 and 7 (tangent velocity loop
+    PI^2, normal force loop impedance + integral; integrals advanced once per sample, current
+    error included), on the closed forms above: ``tau = controller(t, q, qdot, Fc)``."""
+
+    def __init__(self, exp):
+        self.exp, self.g, self.T = exp, exp.effective_gains(), exp.sample_time
+        self.kind = exp.surface.kind
+        self.arm, self.surface = exp.controller_arm().as_array(), exp.surface.as_array()
+        self.int_v = self.int2_v = self.int_f = 0.0
+
+    def loops(self, t, v, f):
+        """``a = (a_t, a_n)`` from the task velocity ``v`` and task force ``f``."""
+        g, T, exp = self.g, self.T, self.exp
+        e_v = exp.speed_reference(t) - v[0]
+        self.int_v += T * e_v
+        self.int2_v += T * self.int_v
+        e_f = exp.force_reference(t) - f[1]
+        self.int_f += T * e_f
+        a_t = g.KPv * e_v + g.KIv * self.int_v + g.KI2v * self.int2_v  # v_d' = 0 between steps
+        a_n = -g.KPf * e_f - g.KDf * v[1] - g.KIf * self.int_f
+        return np.array([a_t, a_n])
+
+    def __call__(self, t, q, qdot, Fc):
+        from .errors import NonFiniteError, SingularConfigurationError
+
+        exp = self.exp
+        r, J, _ = kinematics(q, qdot, self.arm)
+        rdot = J @ qdot
+        R, _ = frame(self.kind, r, rdot, self.surface)
+        if exp.frame == "desired":
+            # loops in R(r_d); the law, in R(r), gets R(r) R_d^T (a - R_d' r')
+            rd_point, rd_vel = exp.desired_point(t)
+            R_d, Rdot_d = frame(self.kind, rd_point, rd_vel, self.surface)
+            a = self.loops(t, R_d @ rdot, R_d @ Fc)
+            if exp.curvature:
+                a = a - Rdot_d @ rdot
+            a = R @ (R_d.T @ a)
+        else:
+            a = self.loops(t, R @ rdot, R @ Fc)
+        if exp.controller == "khatib":
+            Fc = R[1] * exp.force_reference(t)  # R^T Sigma F_d: the desired normal force
+        # the same tests as the generated C, so both paths stop at the same sample
+        if not conditioning(q, self.arm) >= exp.singular_tol:
+            raise SingularConfigurationError(f"decoupling_law: the Jacobian is singular or nearly so at q={q}")
+        curvature = exp.curvature and exp.frame == "actual"
+        _, tau = decoupling_law(self.kind, q, qdot, a, Fc, self.arm, self.surface, curvature)
+        if not np.isfinite(tau).all():
+            raise NonFiniteError(f"decoupling_law: result is NaN or infinite at q={q}, qdot={qdot}")
+        return tau

@@ -240,6 +240,16 @@ def compiled_law_unit(chain: rb.Chain, name: str, spec, axes: tuple[int, ...]) -
                      lambda: build_law_unit(chain, spec, axes, prefix, robot_info(chain, name)))
 
 
+@cache
+def compiled_controller_unit(chain: rb.Chain, name: str, spec, axes: tuple[int, ...]) -> Unit:
+    """One control sample (measurement, loops, law) of ``chain`` on the surface ``spec``, compiled."""
+    from codegen.robot_unit import build_controller_unit, c_identifier
+
+    prefix = c_identifier(f"hybrid_{name}_{spec.kind}_controller")
+    return _compiled(prefix, {"chain": _chain_key(chain), "surface": spec.key(), "axes": list(axes)},
+                     lambda: build_controller_unit(chain, spec, axes, prefix, robot_info(chain, name)))
+
+
 def robot_info(chain: rb.Chain, name: str) -> dict:
     return {"robot": name, "joints": [{"name": j.name, "type": j.kind} for j in chain.joints]}
 

@@ -52,3 +52,51 @@ def example_robot(relative: str) -> Path:
 
 UR5 = ("ur_description/urdf/ur5_robot.urdf", "tool0")
 PANDA = ("panda_description/urdf/panda.urdf", "panda_hand_tcp")
+
+
+@pytest.fixture(scope="module")
+def robots():
+    """The UR5 and the Panda of example-robot-data, viscosity on every joint, with Pinocchio's models."""
+    pin = pytest.importorskip("pinocchio")
+    out = {}
+    for key, (path, tip) in {"ur5": UR5, "panda": PANDA}.items():
+        urdf = example_robot(path)
+        robot = hybrid.Robot.from_urdf(urdf, tip=tip)
+        robot = hybrid.Robot(robot.name, robot.chain, robot.links, tuple(np.linspace(0.1, 0.6, robot.n)),
+                             robot.gravity, robot.limits)  # viscosity on every joint
+        model = pin.buildModelFromUrdf(str(urdf))
+        if model.nq != robot.n:
+            extra = [model.getJointId(n) for n in model.names[1:] if n not in robot.joint_names]
+            model = pin.buildReducedModel(model, extra, pin.neutral(model))
+        out[key] = (robot, model, model.getFrameId(tip))
+    return out
+
+
+def pinocchio_terms(model, fid, q, qd, damping):
+    """J, J' q', B, n and the tip position from Pinocchio (the reference's inputs)."""
+    import pinocchio as pin
+
+    data = model.createData()
+    pin.forwardKinematics(model, data, q, qd, np.zeros_like(q))
+    pin.updateFramePlacements(model, data)
+    B = pin.crba(model, data, q)
+    return (pin.computeFrameJacobian(model, data, q, fid, pin.LOCAL_WORLD_ALIGNED),
+            pin.getFrameClassicalAcceleration(model, data, fid, pin.LOCAL_WORLD_ALIGNED).vector.copy(),
+            np.triu(B) + np.triu(B, 1).T, pin.nonLinearEffects(model, data, q, qd) + damping * qd,
+            data.oMf[fid].translation.copy())
+
+
+def well_conditioned_states(rng, robot, model, fid, surface, N, e=(0.0, 0.0, 1.0)):
+    """Random states with a well-conditioned J and a defined task frame (and their Pinocchio terms)."""
+    from hybrid import reference as ref
+
+    out = []
+    while len(out) < N:
+        q = rng.uniform(robot.limits.lower, robot.limits.upper)
+        qd = rng.normal(0, 1, robot.n)
+        terms = pinocchio_terms(model, fid, q, qd, np.array(robot.damping))
+        s = np.linalg.svd(terms[0], compute_uv=False)
+        R, _ = ref.spatial_frame(surface, terms[4], terms[0][:3] @ qd, e)
+        if s[-1] / s[0] > 0.05 and np.isfinite(R).all() and np.linalg.norm(np.cross(e, R[2])) > 0.1:
+            out.append((q, qd, terms))
+    return out

@@ -10,8 +10,6 @@ import pytest
 import hybrid
 from codegen.model import PLANT_OUTPUTS
 from hybrid import metrics
-from hybrid.controllers import HybridController
-from hybrid.simulation import NativeTerms
 
 EXACT = dict(model_error=0.0, viscous_compensation=1.0, contact=hybrid.Contact(friction=0.0))
 
@@ -68,14 +66,16 @@ def test_sensor_tip_stays_on_the_surface_in_the_paper_run():
 def test_controllers_coincide_when_the_force_equals_its_feedforward():
     """With F_c = R^T Sigma F_d the task law's -F_c and Khatib's -R^T Sigma F_d are one term."""
     exps = {c: hybrid.paper_experiment(controller=c) for c in ("task", "khatib")}
-    ctrls = {c: HybridController(e, NativeTerms(e)) for c, e in exps.items()}
+    ctrls = {c: hybrid.Controller.from_experiment(e) for c, e in exps.items()}
     q, qdot = np.array([2.2, 1.9]), np.array([0.3, -0.4])
-    R, _ = ctrls["task"].terms.frame(*ctrls["task"].terms.measure(q, qdot, np.zeros(2))[:2])
-    Fc_ff = R[1] * exps["task"].force_reference(0.0)
+    n = ctrls["task"].measure(q, qdot, np.zeros(2))
+    R_L = hybrid.task_frame(exps["task"].surface, n.p[:2], n.v[:2])[0]
+    Fc_ff = R_L[1] * exps["task"].force_reference(0.0)
     tau = {c: ctrl(0.0, q, qdot, Fc_ff) for c, ctrl in ctrls.items()}
     np.testing.assert_allclose(tau["task"], tau["khatib"], rtol=1e-12)
     # ...and differ by exactly J^T (F_ff - F_c) when the measured force is off (fresh integrators)
-    ctrls = {c: HybridController(e, NativeTerms(e)) for c, e in exps.items()}
+    for ctrl in ctrls.values():
+        ctrl.reset()
     Fc = Fc_ff + np.array([1.5, -0.7])
     diff = ctrls["khatib"](0.0, q, qdot, Fc) - ctrls["task"](0.0, q, qdot, Fc)
     J = hybrid.arm_terms(exps["task"].controller_arm(), q, qdot)["J"]

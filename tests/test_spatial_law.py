@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import PANDA, UR5, example_robot
+from conftest import pinocchio_terms, well_conditioned_states
 
 import hybrid
 from hybrid import reference as ref
@@ -19,48 +19,6 @@ SURFACES = {
                                         {"x0": 0.4, "z0": 0.3, "a": 0.25, "b": 0.2, "c": 0.15}),
     "torus": hybrid.ImplicitSurface("(sqrt(x**2 + y**2) - R)**2 + (z - h)**2 - r**2", {"R": 0.4, "r": 0.1, "h": 0.3}),
 }
-
-
-@pytest.fixture(scope="module")
-def robots():
-    out = {}
-    for key, (path, tip) in {"ur5": UR5, "panda": PANDA}.items():
-        urdf = example_robot(path)
-        robot = hybrid.Robot.from_urdf(urdf, tip=tip)
-        robot = hybrid.Robot(robot.name, robot.chain, robot.links, tuple(np.linspace(0.1, 0.6, robot.n)),
-                             robot.gravity, robot.limits)  # viscosity on every joint
-        model = pin.buildModelFromUrdf(str(urdf))
-        if model.nq != robot.n:
-            extra = [model.getJointId(n) for n in model.names[1:] if n not in robot.joint_names]
-            model = pin.buildReducedModel(model, extra, pin.neutral(model))
-        out[key] = (robot, model, model.getFrameId(tip))
-    return out
-
-
-def pinocchio_terms(model, fid, q, qd, damping):
-    """J, J' q', B, n and the tip position from Pinocchio (the reference's inputs)."""
-    data = model.createData()
-    pin.forwardKinematics(model, data, q, qd, np.zeros_like(q))
-    pin.updateFramePlacements(model, data)
-    B = pin.crba(model, data, q)
-    return (pin.computeFrameJacobian(model, data, q, fid, pin.LOCAL_WORLD_ALIGNED),
-            pin.getFrameClassicalAcceleration(model, data, fid, pin.LOCAL_WORLD_ALIGNED).vector.copy(),
-            np.triu(B) + np.triu(B, 1).T, pin.nonLinearEffects(model, data, q, qd) + damping * qd,
-            data.oMf[fid].translation.copy())
-
-
-def well_conditioned_states(rng, robot, model, fid, surface, N, e=(0.0, 0.0, 1.0)):
-    """Random states with a well-conditioned J and a defined task frame (and their Pinocchio terms)."""
-    out = []
-    while len(out) < N:
-        q = rng.uniform(robot.limits.lower, robot.limits.upper)
-        qd = rng.normal(0, 1, robot.n)
-        terms = pinocchio_terms(model, fid, q, qd, np.array(robot.damping))
-        s = np.linalg.svd(terms[0], compute_uv=False)
-        R, _ = ref.spatial_frame(surface, terms[4], terms[0][:3] @ qd, e)
-        if s[-1] / s[0] > 0.05 and np.isfinite(R).all() and np.linalg.norm(np.cross(e, R[2])) > 0.1:
-            out.append((q, qd, terms))
-    return out
 
 
 @pytest.mark.parametrize("surface", list(SURFACES), ids=list(SURFACES))

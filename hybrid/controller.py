@@ -1,0 +1,296 @@
+"""The hybrid controller as a component: ``tau = ctrl(t, q, qdot, Fc)`` in any loop.
+
+One control sample is one native call (see :mod:`codegen.controller_step`): the task-frame
+measurement, the loops of NOTES section 4 on every task axis, and the decoupling law. The
+controller keeps the loops' integrals between calls; the references are evaluated in
+Python at the sample time ``t``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from .errors import HybridError
+from .experiment import Gains, Step
+from .parameters import Arm
+from .robot import Robot, compiled_controller_unit
+from .schemes import Scheme, scheme_of
+from .spatial_law import _reference, check_axes, spatial_surface
+from .validate import _finite
+
+AXIS_NAMES = ("t1", "t2", "n", "rot_t1", "rot_t2", "rot_n")
+#: in the options array of the generated step: curvature, sample_time, khatib, desired_frame
+_OPTIONS = 4
+
+
+@dataclass(frozen=True)
+class Reference:
+    """A reference signal ``y_d(t)`` and its rate ``y_d'(t)`` (the velocity loops' feedforward).
+
+    A number is constant; a :class:`~hybrid.Step` has rate 0 between its jumps (as the paper's);
+    any other callable ``f(t)`` gives the value and, when it has a ``rate`` method, the rate
+    (else 0: no feedforward).
+    """
+
+    value: Callable[[float], float]
+    rate: Callable[[float], float] | None
+    constant: float | None
+
+    @classmethod
+    def of(cls, name: str, ref) -> Reference:
+        if isinstance(ref, Reference):
+            return ref
+        if isinstance(ref, (int, float, np.integer, np.floating)) and not isinstance(ref, bool):
+            _finite("Controller", **{name: ref})
+            return cls(lambda t, v=float(ref): v, None, float(ref))
+        if isinstance(ref, Step):
+            return cls(ref, None, ref.before if ref.before == ref.after else None)
+        if callable(ref):
+            rate = getattr(ref, "rate", None)
+            return cls(ref, rate if callable(rate) else None, None)
+        raise HybridError(f"{name} = {ref!r:.60}; give a number, a hybrid.Step or a callable f(t)")
+
+
+@dataclass(frozen=True)
+class Measurement:
+    """What the controller measures, at the arm tip: position ``p`` [m] and twist ``v = (p', w)``
+    [m/s, rad/s] in base axes; on all six task axes ``t1, t2, n`` (then rotations about them) the
+    task velocity ``R v`` and the task wrench ``R F_c`` [N, N m]."""
+
+    p: np.ndarray
+    v: np.ndarray
+    task_velocity: np.ndarray
+    task_wrench: np.ndarray
+
+
+class Controller:
+    """A sampled hybrid force/velocity controller of ``robot`` in contact with ``surface``.
+
+    Parameters
+    ----------
+    robot : Robot or Arm
+        The controller's own model (possibly wrong). A planar :class:`~hybrid.Arm` is the chain of
+        :meth:`Robot.planar` with the planar task axes ``(t1, n)``.
+    surface : Plane, Circle, Sphere, Cylinder or ImplicitSurface
+    scheme : str or Scheme
+        ``"task"`` (De Luca & Manes), ``"khatib"`` or a :class:`~hybrid.schemes.Scheme`.
+    axes : task axes (see :func:`hybrid.decoupling_law`); default all six, ``"planar"`` for an Arm.
+    selection : the force-controlled axes, by name (``"n"``) or index; default the normal ``n``.
+    gains : :class:`Gains` for every axis (velocity axes use ``KPv, KIv, KI2v``; force axes
+        ``KPf, KDf, KIf``), or ``{axis name: Gains}`` for some axes.
+    force_reference, velocity_reference : the force-axes' ``F_d`` [N, N m] and the velocity-axes'
+        ``v_d`` [m/s, rad/s]: one :class:`Reference`-like value (a number, a Step or ``f(t)``) for the
+        normal force and the speed along ``t1`` (the other axes' references are 0), or
+        ``{axis name: value}``.
+    sample_time : the period ``T`` [s] at which the integrals advance.
+    integral : with ``False`` the integral actions ``KI2v, KIf`` are 0 (NOTES section 4).
+    curvature : give ``R'`` to the law (with ``frame="desired"``: the loop frame's ``R_d'``).
+    frame : ``"actual"`` (loops in ``R(r)``) or ``"desired"`` (in ``R(r_d)``, the paper's Figure 3),
+        which needs ``path(t) -> (p_d, p_d')`` [m, m/s].
+    reference : the task frame's reference direction ``e`` (base axes).
+    singular_tol : conditioning below which a sample raises :class:`SingularConfigurationError`.
+    """
+
+    def __init__(self, robot: Robot | Arm, surface, scheme: str | Scheme = "task", *, axes=None, selection=None,
+                 gains: Gains | Mapping | None = None, force_reference=10.0, velocity_reference=0.0,
+                 sample_time: float = 0.01, integral: bool = True, curvature: bool = False,
+                 frame: str = "actual", path: Callable | None = None, reference=(0.0, 0.0, 1.0),
+                 singular_tol: float = 1e-3):
+        from .law import check_singular_tol
+
+        if isinstance(robot, Arm):
+            robot, axes = Robot.planar(robot), "planar" if axes is None else axes
+        if not isinstance(robot, Robot):
+            raise HybridError(f"robot must be a hybrid.Robot or hybrid.Arm, got {type(robot).__name__}")
+        for name, value in (("integral", integral), ("curvature", curvature)):
+            if not isinstance(value, bool):
+                raise HybridError(f"{name} = {value!r}; give True or False")
+        if frame not in ("actual", "desired"):
+            raise HybridError(f"frame = {frame!r}; give 'actual' or 'desired'")
+        if frame == "desired" and not callable(path):
+            raise HybridError("frame='desired' needs path=f(t) returning the desired point and its velocity "
+                              "(p_d [m], p_d' [m/s])")
+        _finite("Controller", sample_time=sample_time)
+        if sample_time <= 0:
+            raise HybridError(f"sample_time = {sample_time} s; give a positive sample period")
+        check_singular_tol("Controller", singular_tol)
+        self.robot, self.scheme = robot, scheme_of(scheme)
+        self.axes = check_axes(robot, axes)
+        self.surface, self._spatial = surface, spatial_surface(surface)
+        self.sample_time, self.integral, self.curvature, self.frame = float(sample_time), integral, curvature, frame
+        self.reference, self.singular_tol, self.path = tuple(_reference(reference)), float(singular_tol), path
+        self.selection = self._selection(selection)
+        self.gains = self._gains(gains)
+        self._references = self._axis_references(force_reference, velocity_reference)
+        unit = compiled_controller_unit(robot.chain, robot.name, self._spatial.spec(), self.axes)
+        self._step, self._measure = unit.function("controller_step"), unit.function("task_measurement")
+        m = len(self.axes)
+        options = np.array([float(curvature), self.sample_time, float(self.scheme.feeds_desired_force),
+                            float(frame == "desired")])
+        self._params = (self._gain_array(), np.array(self.selection, float), robot.as_array(),
+                        self._spatial.as_array(), np.array(self.reference), options)
+        self._fast, self._binding = self._step.fast_bind(7, *self._params, singular_tol=self.singular_tol)
+        self._yd, self._rate, self._target = np.zeros(m), np.zeros(m), np.zeros(6)
+        for i, ref in enumerate(self._references):
+            self._yd[i] = ref.constant if ref.constant is not None else 0.0
+        self._varying = [(i, ref.value) for i, ref in enumerate(self._references) if ref.constant is None]
+        self._rates = [(i, ref.rate) for i, ref in enumerate(self._references) if ref.rate is not None]
+        self._z = np.zeros(2 * m)
+        self.last = None
+
+    # ----------------------------------------------------------------- settings
+
+    @classmethod
+    def from_experiment(cls, exp) -> Controller:
+        """Exactly the controller ``exp`` runs (its model of the arm, loops, references, options)."""
+        path = exp.desired_point if exp.frame == "desired" else None
+        return cls(exp.controller_arm(), exp.surface, exp.controller, selection=("n",), gains=exp.gains,
+                   force_reference=exp.force_reference, velocity_reference=exp.speed_reference,
+                   sample_time=exp.sample_time, integral=exp.integral, curvature=exp.curvature,
+                   frame=exp.frame, path=path, singular_tol=exp.singular_tol)
+
+    @property
+    def axis_names(self) -> tuple[str, ...]:
+        return tuple(AXIS_NAMES[i] for i in self.axes)
+
+    def _axis(self, what: str, key) -> int:
+        """The position in ``axes`` of the axis named or numbered ``key``."""
+        index = AXIS_NAMES.index(key) if key in AXIS_NAMES else key
+        if isinstance(index, (int, np.integer)) and not isinstance(index, bool) and index in self.axes:
+            return self.axes.index(int(index))
+        raise HybridError(f"{what}: {key!r} is not one of the task axes {', '.join(self.axis_names)}; name one of "
+                          "them (or give its index 0-5)")
+
+    def _selection(self, selection) -> tuple[int, ...]:
+        if selection is None:
+            selection = ("n",) if 2 in self.axes else ()
+        if isinstance(selection, (str, int)):
+            selection = (selection,)
+        try:
+            chosen = {self._axis("selection", k) for k in selection}
+        except TypeError:
+            raise HybridError(f"selection = {selection!r:.60}; give the force-controlled axes by name, "
+                              "e.g. ('n',)") from None
+        return tuple(int(k in chosen) for k in range(len(self.axes)))
+
+    def _gains(self, gains) -> tuple[Gains, ...]:
+        per_axis = [Gains()] * len(self.axes)
+        if gains is None:
+            pass
+        elif isinstance(gains, Gains):
+            per_axis = [gains] * len(self.axes)
+        elif isinstance(gains, Mapping):
+            for key, g in gains.items():
+                if not isinstance(g, Gains):
+                    raise HybridError(f"gains[{key!r}] = {g!r:.60}; give a hybrid.Gains(...)")
+                per_axis[self._axis("gains", key)] = g
+        else:
+            raise HybridError(f"gains = {gains!r:.60}; give a hybrid.Gains(...) or {{axis name: Gains}}")
+        if not self.integral:
+            per_axis = [replace(g, KI2v=0.0, KIf=0.0) for g in per_axis]
+        return tuple(per_axis)
+
+    def _gain_array(self) -> np.ndarray:
+        """``(KP, KI, KI2, KD)`` per axis, as the generated step reads them."""
+        rows = [(g.KPf, g.KIf, 0.0, g.KDf) if s else (g.KPv, g.KIv, g.KI2v, 0.0)
+                for g, s in zip(self.gains, self.selection)]
+        return np.array(rows, float).ravel()
+
+    def _axis_references(self, force, velocity) -> list[Reference]:
+        refs: list = [0.0] * len(self.axes)
+        for what, given, force_axes in (("force_reference", force, True), ("velocity_reference", velocity, False)):
+            if isinstance(given, Mapping):
+                items = {self._axis(what, k): v for k, v in given.items()}
+            else:
+                main = 2 if force_axes else 0  # the normal force, the speed along t1
+                items = {self.axes.index(main): given} if main in self.axes else {}
+            for k, v in items.items():
+                if bool(self.selection[k]) != force_axes:
+                    kind = "force" if force_axes else "velocity"
+                    raise HybridError(f"{what} names axis {self.axis_names[k]}, which is not a {kind}-controlled "
+                                      f"axis (selection: {self._selected()}); move it to the other reference")
+                refs[k] = Reference.of(f"{what}[{self.axis_names[k]}]", v)
+        return [Reference.of("reference", r) for r in refs]
+
+    def _selected(self) -> str:
+        return ", ".join(n for n, s in zip(self.axis_names, self.selection) if s) or "none"
+
+    # ------------------------------------------------------------------ running
+
+    def reset(self) -> None:
+        """Zero the loops' integrals (a new run)."""
+        self._z[:] = 0.0
+        self.last = None
+
+    @property
+    def state(self) -> np.ndarray:
+        """The loops' integrals, one row per task axis: ``(int e, int int e)`` (a copy)."""
+        return self._z.reshape(-1, 2).copy()
+
+    @state.setter
+    def state(self, value) -> None:
+        arr = np.asarray(value, dtype=float)
+        if arr.shape != (len(self.axes), 2) or not np.isfinite(arr).all():
+            raise HybridError(f"state must be {len(self.axes)} x 2 finite numbers (int e, int int e per axis "
+                              f"{', '.join(self.axis_names)}), got shape {arr.shape}")
+        self._z[:] = arr.ravel()
+
+    def references(self, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """Per task axis, ``y_d(t)`` and its rate ``y_d'(t)``."""
+        for i, value in self._varying:
+            self._yd[i] = value(t)
+        for i, rate in self._rates:
+            self._rate[i] = rate(t)
+        return self._yd, self._rate
+
+    def __call__(self, t: float, q, qdot, Fc) -> np.ndarray:
+        """``tau`` [N m or N] for the sample at time ``t`` [s], from the joint state and the measured
+        wrench on the robot ``Fc`` (base axes: force [N] of 2 or 3 entries, or force and moment, 6);
+        advances the integrals by one sample."""
+        yd, rate = self.references(t)
+        if self.path is not None:
+            self._target[:] = self._desired(t)
+        Fc = Fc if type(Fc) is np.ndarray and Fc.shape == (6,) else _wrench(Fc)
+        out = self._fast(self._binding, -1, q, qdot, Fc, self._z, yd, rate, self._target)
+        if out is None:
+            out = self._checked(t, q, qdot, Fc, yd, rate)
+        self._z[:] = out[1]
+        self.last = out
+        return out[0]
+
+    def _desired(self, t: float) -> np.ndarray:
+        p, pd = self.path(t)
+        return np.concatenate([_vector3("path point", p), _vector3("path velocity", pd)])
+
+    def _checked(self, t, q, qdot, Fc, yd, rate):
+        if not all(np.isfinite(v).all() for v in (yd, rate, self._target)):
+            raise HybridError(f"the references at t = {t} s are not finite: yd = {yd}, rate = {rate}")
+        out = self._step(q, qdot, Fc, self._z, yd, rate, self._target, *self._params, singular_tol=self.singular_tol)
+        return tuple(out[name] for name, _, _ in self._step.outputs)
+
+    def measure(self, q, qdot, Fc) -> Measurement:
+        """What the controller measures at ``q, qdot, Fc`` (see :class:`Measurement`)."""
+        out = self._measure(q, qdot, _wrench(Fc), self._params[3], self._params[4])
+        return Measurement(out["p"], out["v"], out["task_velocity"], out["task_wrench"])
+
+
+def _wrench(Fc) -> np.ndarray:
+    """A measured force (2 or 3 entries) or wrench (6) as the 6-vector ``(f, m)``."""
+    try:
+        arr = np.asarray(Fc, dtype=float).ravel()
+    except (TypeError, ValueError):
+        arr = None
+    if arr is None or np.ndim(Fc) != 1 or arr.size not in (2, 3, 6):
+        raise HybridError(f"Fc = {Fc!r:.60}; give the measured force on the robot (2 or 3 numbers, base axes) "
+                          "or the wrench (force, moment: 6 numbers)")
+    return np.concatenate([arr, np.zeros(6 - arr.size)])
+
+
+def _vector3(name: str, v) -> np.ndarray:
+    arr = np.asarray(v, dtype=float).ravel()
+    if arr.size not in (2, 3) or not np.isfinite(arr).all():
+        raise HybridError(f"the desired {name} {v!r:.60} must be 2 or 3 finite numbers [m, m/s]")
+    return np.concatenate([arr, np.zeros(3 - arr.size)])

@@ -1,0 +1,131 @@
+"""The result of a run: time series, units, metrics; saved and loaded atomically."""
+
+from __future__ import annotations
+
+import json
+import zipfile
+import zlib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from . import files
+from .errors import HybridError
+from .experiment import Experiment
+from .metrics import PLANT, PLANT_OUTPUTS
+
+OUT = {name: i for i, name in enumerate(PLANT_OUTPUTS)}
+
+
+@dataclass
+class SimulationResult:
+    """Time series of one run (one row per integration step, ``t`` from 0) and its metrics.
+
+    Units: ``t`` [s], ``q`` [rad], ``qdot`` [rad/s], ``tau`` [N m] (held per sample), forces [N],
+    speeds [m/s], lengths [m]. Task quantities are in the frame ``R(r)`` at the arm tip.
+    """
+
+    experiment: Experiment
+    t: np.ndarray
+    state: np.ndarray
+    tau: np.ndarray
+    outputs: np.ndarray
+    force_reference: np.ndarray
+    speed_reference: np.ndarray
+    metrics: dict = field(default_factory=dict)
+
+    UNITS = {"t": "s", "state": ", ".join(PLANT["state_units"]), "tau": "N m",
+             "force_reference": "N", "speed_reference": "m/s", "outputs": ", ".join(PLANT["output_units"])}
+
+    @property
+    def q(self):
+        return self.state[:, 0:PLANT["nq"]]
+
+    @property
+    def qdot(self):
+        return self.state[:, PLANT["nq"]:2 * PLANT["nq"]]
+
+    def output(self, name: str) -> np.ndarray:
+        """A column of the plant output record by name (``codegen.model.PLANT_OUTPUTS``)."""
+        return self.outputs[:, OUT[name]]
+
+    @property
+    def force_normal(self):
+        """Normal force measured by the sensor, ``(R(r) F_c)_n`` [N]."""
+        return self.output("Fc_n")
+
+    @property
+    def force_tangential(self):
+        return self.output("Fc_t")
+
+    @property
+    def velocity_tangential(self):
+        """Tangential speed of the arm tip, ``(R(r) r')_t`` [m/s]."""
+        return self.output("v_t")
+
+    @property
+    def velocity_normal(self):
+        return self.output("v_n")
+
+    @property
+    def penetration(self):
+        return self.output("penetration")
+
+    @property
+    def contact_force(self):
+        return self.output("N")
+
+    def save(self, path: str | Path, overwrite: bool = False) -> Path:
+        """Write an ``.npz`` with every array, the units and the experiment's settings; returns the
+        path written (``.npz`` is added when missing). Atomic; refuses an existing file unless
+        ``overwrite``."""
+        path = files.output_path(path)
+        if path.suffix != ".npz":
+            path = path.with_name(path.name + ".npz")
+
+        def write(tmp: Path) -> None:
+            with open(tmp, "wb") as f:  # a file object: NumPy adds no suffix to it
+                np.savez_compressed(
+                    f, t=self.t, state=self.state, tau=self.tau, outputs=self.outputs,
+                    force_reference=self.force_reference, speed_reference=self.speed_reference,
+                    output_names=np.array(PLANT_OUTPUTS), units=json.dumps(self.UNITS),
+                    experiment=json.dumps(self.experiment.to_dict()), metrics=json.dumps(self.metrics))
+
+        return files.write_with(path, write, overwrite)
+
+    @classmethod
+    def load(cls, path: str | Path) -> SimulationResult:
+        """A result written by :meth:`save`; a missing, truncated or foreign file is a HybridError."""
+        try:
+            with np.load(path, allow_pickle=False) as z:
+                arrays = {k: z[k] for k in ("t", "state", "tau", "outputs", "force_reference", "speed_reference")}
+                experiment = Experiment.from_dict(json.loads(str(z["experiment"])))
+                metrics = json.loads(str(z["metrics"]))
+            n = len(arrays["t"])
+            shapes = {"t": (n,), "state": (n, len(PLANT["state"])), "tau": (n, PLANT["nq"]),
+                      "outputs": (n, len(PLANT_OUTPUTS)), "force_reference": (n,), "speed_reference": (n,)}
+            wrong = [k for k, shape in shapes.items() if arrays[k].shape != shape]
+            if wrong or n == 0 or not np.isfinite(arrays["t"]).all() or not isinstance(metrics, dict):
+                raise ValueError(f"arrays {', '.join(wrong) or 't'} do not have the shapes of a run")
+            return cls(experiment, arrays["t"], arrays["state"], arrays["tau"], arrays["outputs"],
+                       arrays["force_reference"], arrays["speed_reference"], metrics)
+        except (OSError, KeyError, ValueError, EOFError, zipfile.BadZipFile, zlib.error, TypeError,
+                AttributeError) as exc:
+            why = getattr(exc, "strerror", None) or f"{type(exc).__name__}: {exc}"
+            raise HybridError(f"{path} is not a readable saved hybrid result ({why:.120}); "
+                              "save it again with SimulationResult.save") from None
+
+    def save_csv(self, path: str | Path, overwrite: bool = False) -> Path:
+        """Write the time series as CSV, units in the header (atomic; refuses an existing file
+        unless ``overwrite``)."""
+        path = files.output_path(path)
+        cols = {"t_s": self.t, "q1_rad": self.q[:, 0], "q2_rad": self.q[:, 1],
+                "tau1_Nm": self.tau[:, 0], "tau2_Nm": self.tau[:, 1],
+                "force_reference_N": self.force_reference, "speed_reference_m_per_s": self.speed_reference}
+        units = dict(zip(PLANT_OUTPUTS, self.UNITS["outputs"].split(", ")))
+        cols.update({f"{n}_{units[n].replace('/', '_per_').replace(' ', '')}": self.output(n)
+                     for n in PLANT_OUTPUTS})
+        return files.write_with(path, lambda tmp: np.savetxt(
+            tmp, np.column_stack(list(cols.values())), delimiter=",", header=",".join(cols), comments="",
+            fmt="%.10g"), overwrite)

@@ -1,0 +1,236 @@
+"""The controller component: its loops against hand-computed samples, its law against Pinocchio + NumPy,
+decoupling in closed loop, and the paper's controller against an independent NumPy one."""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+import pytest
+from conftest import pinocchio_terms, well_conditioned_states
+
+import hybrid
+from hybrid import reference as ref
+from hybrid.results import OUT
+from hybrid.simulation import initial_state
+
+SPHERE = hybrid.Sphere((0.4, 0.1, 0.3), 0.15)
+Z3 = np.zeros((3, 3))
+
+
+def blockdiag(R):
+    return np.block([[R, Z3], [Z3, R]])
+
+
+def closed_loop(exp, plant, ctrl):
+    """The sampled loop written out: ZOH torque, sensor reading at the sample instant."""
+    x = initial_state(exp)
+    m, out = exp.steps_per_sample, []
+    traj = np.empty((m, len(x)))
+    for k in range(exp.n_samples):
+        o = plant.outputs(x[None, :])[0]
+        tau = ctrl(k * exp.sample_time, x[:2].copy(), x[2:4].copy(), o[[OUT["Fc_x"], OUT["Fc_y"]]])
+        assert plant.advance(x, tau, m, traj) == m
+        out.append(plant.outputs(traj[-1:])[0])
+    return np.array(out)
+
+
+@pytest.mark.parametrize("settings", [{}, dict(controller="khatib", frame="desired", curvature=True),
+                                      dict(integral=False, curvature=True)], ids=["paper", "khatib-desired", "curv"])
+def test_from_experiment_in_an_independent_numpy_plant_gives_simulates_forces_and_speeds(settings):
+    exp = hybrid.paper_experiment(duration=0.3, **settings)
+    res = hybrid.simulate(exp)
+    ours = closed_loop(exp, ref.NumpyPlant(exp), hybrid.Controller.from_experiment(exp))
+    at_samples = res.outputs[exp.steps_per_sample::exp.steps_per_sample]
+    for col in ("Fc_n", "v_t"):  # the NumPy plant rounds differently: agreement to 1e-9, not bit for bit
+        np.testing.assert_allclose(ours[:, OUT[col]], at_samples[:, OUT[col]], rtol=1e-9, atol=1e-9)
+
+
+def test_paper_controller_equals_the_numpy_controller_on_random_samples(rng):
+    """Every option of the experiment maps onto the component: same torques as the NumPy controller
+    written from NOTES sections 4 and 7, over sequences of random samples (the integrals carry over)."""
+    for controller, frame, curvature, integral in itertools.product(("task", "khatib"), ("actual", "desired"),
+                                                                    (False, True), (False, True)):
+        exp = hybrid.paper_experiment(controller=controller, frame=frame, curvature=curvature, integral=integral)
+        ours, theirs = hybrid.Controller.from_experiment(exp), ref.NumpyController(exp)
+        for k in range(40):
+            t = k * exp.sample_time * 1.7  # across both reference steps
+            q = np.array([rng.uniform(1.5, 2.8), rng.uniform(1.0, 2.5)])
+            qd, Fc = rng.normal(0, 1, 2), rng.normal(0, 10, 2)
+            np.testing.assert_allclose(ours(t, q, qd, Fc), theirs(t, q, qd, Fc), rtol=1e-9, atol=1e-9)
+
+
+def loops_by_hand(y, f, z, yd, rate, gains, sigma, T):
+    """NOTES section 4 per axis, written from the text (z: one (int e, int int e) row per axis)."""
+    a, z = np.zeros(len(y)), z.copy()
+    for i in range(len(y)):
+        g = gains[i]
+        if sigma[i]:
+            e = yd[i] - f[i]
+            z[i, 0] += T * e
+            a[i] = -g.KPf * e - g.KDf * y[i] - g.KIf * z[i, 0]
+        else:
+            e = yd[i] - y[i]
+            z[i, 0] += T * e
+            z[i, 1] += T * z[i, 0]
+            a[i] = rate[i] + g.KPv * e + g.KIv * z[i, 0] + g.KI2v * z[i, 1]
+    return a, z
+
+
+class Ramp:
+    """A reference with a rate: the velocity loops' feedforward."""
+
+    def __call__(self, t):
+        return 0.1 + 0.5 * t
+
+    def rate(self, t):
+        return 0.5
+
+
+@pytest.mark.parametrize("scheme", ["task", "khatib"])
+def test_ur5_loops_and_law_sample_by_sample(rng, robots, scheme):
+    """Six loops (two force axes, per-axis gains, a ramp with feedforward) against the hand-written
+    loops on Pinocchio's measurement, and the torque against the NumPy law of NOTES section 9."""
+    robot, model, fid = robots["ur5"]
+    T = 0.01
+    gains = {"t1": hybrid.Gains(KPv=30.0, KIv=150.0, KI2v=600.0), "rot_t1": hybrid.Gains(KPf=3.0, KDf=40.0, KIf=9.0)}
+    ctrl = hybrid.Controller(robot, SPHERE, scheme, selection=("n", "rot_t1"), gains=gains, sample_time=T,
+                             force_reference={"n": hybrid.Step(10.0, 20.0, 0.05), "rot_t1": 0.3},
+                             velocity_reference={"t1": Ramp(), "rot_n": -0.2}, curvature=True)
+    per_axis = [gains.get(n, hybrid.Gains()) for n in ctrl.axis_names]
+    sigma = np.array([0, 0, 1, 1, 0, 0])
+    z = np.zeros((6, 2))
+    for k, (q, qd, (J, Jdqd, B, n, p)) in enumerate(well_conditioned_states(rng, robot, model, fid, SPHERE, 12)):
+        t = k * T
+        Fc = rng.normal(0, 10, 6)
+        tau = ctrl(t, q, qd, Fc)
+        v = J @ qd
+        R, Rd = ref.spatial_frame(SPHERE, p, v[:3], (0, 0, 1))
+        y, f = blockdiag(R) @ v, blockdiag(R) @ Fc
+        yd = np.array([Ramp()(t), 0.0, 10.0 if t < 0.05 else 20.0, 0.3, 0.0, -0.2])
+        rate = np.array([0.5, 0, 0, 0, 0, 0])
+        a, z = loops_by_hand(y, f, z, yd, rate, per_axis, sigma, T)
+        np.testing.assert_allclose(ctrl.last[3], y, rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(ctrl.last[4], f, rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(ctrl.last[2], a, rtol=1e-10, atol=1e-10)
+        np.testing.assert_allclose(ctrl.state, z, rtol=1e-12, atol=1e-14)
+        contact = blockdiag(R).T @ (sigma * yd) if scheme == "khatib" else Fc
+        _, tau_ref = ref.spatial_decoupling_law(J, Jdqd, B, n, R, Rd, qd, a, contact, np.zeros(6), range(6), True)
+        np.testing.assert_allclose(tau, tau_ref, rtol=1e-9, atol=1e-9 * np.abs(tau_ref).max())
+
+
+def test_khatib_and_task_torques_coincide_when_the_force_is_the_feedforward(rng, robots):
+    robot, model, fid = robots["panda"]
+    q, qd, (J, _, _, _, p) = well_conditioned_states(rng, robot, model, fid, SPHERE, 1)[0]
+    ctrls = [hybrid.Controller(robot, SPHERE, s, force_reference=15.0) for s in ("task", "khatib")]
+    R, _ = ref.spatial_frame(SPHERE, p, J[:3] @ qd, (0, 0, 1))
+    Fc_ff = np.concatenate([R[2] * 15.0, np.zeros(3)])  # R^T Sigma F_d
+    taus = [c(0.0, q, qd, Fc_ff) for c in ctrls]
+    np.testing.assert_allclose(taus[0], taus[1], rtol=1e-11, atol=1e-11)
+
+
+def test_closed_loop_task_acceleration_equals_the_loops_command(robots):
+    """Exact model, UR5 in Pinocchio under zero-order hold with a spring pulling at the tip: at
+    every sample the arm's task acceleration R v' + R' v equals the loops' a (decoupling)."""
+    import pinocchio as pin
+
+    robot, model, fid = robots["ur5"]
+    data = model.createData()
+    damping = np.array(robot.damping)
+    ctrl = hybrid.Controller(robot, SPHERE, force_reference=5.0, velocity_reference=0.1, curvature=True)
+    anchor = np.array([0.5, 0.2, 0.4])
+
+    def wrench(q):
+        pin.framesForwardKinematics(model, data, q)
+        return np.concatenate([200.0 * (anchor - data.oMf[fid].translation), np.zeros(3)])
+
+    def qdd(q, qd, tau):
+        J = pin.computeFrameJacobian(model, data, q, fid, pin.LOCAL_WORLD_ALIGNED)
+        return pin.aba(model, data, q, qd, tau + J.T @ wrench(q) - damping * qd)
+
+    q, qd, h = np.array([0.3, -1.0, 1.2, -0.4, 1.1, 0.2]), np.zeros(6), 1e-3
+    worst = 0.0
+    for k in range(30):
+        Fc = wrench(q)
+        tau = ctrl(k * ctrl.sample_time, q, qd, Fc)
+        J, Jdqd, _, _, p = pinocchio_terms(model, fid, q, qd, damping)
+        v, vdot = J @ qd, J @ qdd(q, qd, tau) + Jdqd
+        R, Rd = ref.spatial_frame(SPHERE, p, v[:3], (0, 0, 1))
+        worst = max(worst, np.abs(blockdiag(R) @ vdot + blockdiag(Rd) @ v - ctrl.last[2]).max())
+        for _ in range(10):  # RK4 on (q, q') with tau held
+            k1 = (qd, qdd(q, qd, tau))
+            k2 = (qd + h / 2 * k1[1], qdd(q + h / 2 * k1[0], qd + h / 2 * k1[1], tau))
+            k3 = (qd + h / 2 * k2[1], qdd(q + h / 2 * k2[0], qd + h / 2 * k2[1], tau))
+            k4 = (qd + h * k3[1], qdd(q + h * k3[0], qd + h * k3[1], tau))
+            q = q + h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
+            qd = qd + h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
+    assert np.abs(ctrl.last[2]).max() > 0.1  # the loops were busy
+    assert worst < 1e-8
+
+
+def test_desired_frame_at_the_tip_is_the_actual_frame(rng, robots):
+    """With the desired point where the tip is, the rotated loops equal the actual-frame loops."""
+    robot, model, fid = robots["ur5"]
+    q, qd, (J, _, _, _, p) = well_conditioned_states(rng, robot, model, fid, SPHERE, 1)[0]
+
+    def path(t):
+        return p, J[:3] @ qd
+
+    kw = dict(force_reference=8.0, velocity_reference=0.2, curvature=True)
+    actual, desired = hybrid.Controller(robot, SPHERE, **kw), hybrid.Controller(robot, SPHERE, frame="desired",
+                                                                                 path=path, **kw)
+    Fc = rng.normal(0, 5, 6)
+    np.testing.assert_allclose(desired(0.0, q, qd, Fc), actual(0.0, q, qd, Fc), rtol=1e-9, atol=1e-9)
+
+
+def test_measure_and_state(robots):
+    robot, model, fid = robots["ur5"]
+    ctrl = hybrid.Controller(robot, SPHERE)
+    q, qd = np.array([0.3, -1.0, 1.2, -0.4, 1.1, 0.2]), np.full(6, 0.1)
+    Fc = np.array([1.0, 2.0, 3.0, 0.1, 0.2, 0.3])
+    m = ctrl.measure(q, qd, Fc)
+    J, _, _, _, p = pinocchio_terms(model, fid, q, qd, np.zeros(6))
+    R, _ = ref.spatial_frame(SPHERE, p, J[:3] @ qd, (0, 0, 1))
+    np.testing.assert_allclose(m.p, p, atol=1e-12)
+    np.testing.assert_allclose(m.task_velocity, blockdiag(R) @ J @ qd, atol=1e-12)
+    np.testing.assert_allclose(m.task_wrench, blockdiag(R) @ Fc, atol=1e-12)
+    ctrl(0.0, q, qd, Fc)
+    saved = ctrl.state
+    first = ctrl(0.01, q, qd, Fc)
+    ctrl.state = saved  # restoring the integrals replays the sample exactly
+    np.testing.assert_array_equal(ctrl(0.01, q, qd, Fc), first)
+    ctrl.reset()
+    assert not ctrl.state.any()
+
+
+@pytest.mark.parametrize("kwargs, words", [
+    (dict(selection=("up",)), "not one of the task axes"),
+    (dict(scheme="hybrid"), "unknown scheme"),
+    (dict(force_reference={"t1": 3.0}), "not a force-controlled axis"),
+    (dict(velocity_reference="fast"), "give a number"),
+    (dict(gains={"n": 3}), "hybrid.Gains"),
+    (dict(frame="desired"), "needs path"),
+    (dict(sample_time=0.0), "positive sample period"),
+    (dict(curvature=1), "True or False"),
+    (dict(axes="planar"), None),  # a UR5 can serve a planar task: no error
+])
+def test_bad_settings_are_named(robots, kwargs, words):
+    robot = robots["ur5"][0]
+    if words is None:
+        hybrid.Controller(robot, SPHERE, **kwargs)
+        return
+    with pytest.raises(hybrid.HybridError, match=words):
+        hybrid.Controller(robot, SPHERE, **kwargs)
+
+
+def test_bad_samples_are_named(robots):
+    ctrl = hybrid.Controller(robots["ur5"][0], SPHERE)
+    q, qd = np.array([0.3, -1.0, 1.2, -0.4, 1.1, 0.2]), np.zeros(6)
+    with pytest.raises(hybrid.HybridError, match="Fc"):
+        ctrl(0.0, q, qd, [1.0, 2.0, 3.0, 4.0])
+    with pytest.raises(hybrid.NonFiniteError):
+        ctrl(0.0, q * np.nan, qd, np.zeros(6))
+    with pytest.raises(hybrid.SingularConfigurationError):
+        ctrl(0.0, np.zeros(6), qd, np.zeros(6))  # the UR5 stretched out
+    with pytest.raises(hybrid.HybridError, match="state must be"):
+        ctrl.state = np.zeros(3)
