@@ -1,4 +1,4 @@
-"""One control sample in generated C: measurement, the task-frame loops, the decoupling law.
+"""One control sample in generated C: measurement, the task-frame loops, the control law.
 
 The loops of NOTES section 4, one per task axis ``i`` in the loop frame ``R_f`` (rows of
 ``R = diag(R_L, R_L)`` at the arm tip, or at a desired point), with ``sigma_i = 1`` on a
@@ -8,74 +8,136 @@ included (``z1 += T e``, ``z2 += T z1``):
     velocity axis:  e = y_d - y,   a = y_d' + KP e + KI z1 + KI2 z2      (PI^2, feedforward)
     force axis:     e = y_d - f,   a = -KP e - KD y - KI z1               (impedance + integral)
 
-with ``y = R_f v`` the task velocity and ``f = R_f F_c`` the task wrench. The law then gets
-``a`` (in the desired frame ``R_d``, rotated into ``R(r)`` with ``R_d'``'s term, as the
-paper's Figure 3) and the contact term: the measured ``F_c`` (the task law) or Khatib's
-feedforward ``R^T Sigma F_d`` of the desired force. Run-time switches are 0/1 numbers
-blended arithmetically, exact for 0 and 1, so one build serves every selection and scheme.
+with ``y = R_f v`` the task velocity and ``f = R_f F_c`` the task wrench. Options (0/1 switches
+and numbers in the ``options`` array, blended arithmetically, exact for 0 and 1, so one build
+serves every selection, scheme and option):
+
+- ``position_error``: the paper's last equations: on velocity axes ``z1`` is the position error
+  ``r_E = R_f T(r) (r_d - r)`` (``r = (p, phi_ZYX)``, the angle error wrapped to (-pi, pi]) and
+  ``z2`` its integral, so ``KI`` and ``KI2`` act as ``KP_p`` and ``KI_p``.
+- ``integral_limit``: anti-windup by conditional integration: a sample whose integral action
+  (``KI z1 + KI2 z2``; ``KI2 z2`` with ``position_error``) would exceed it in magnitude keeps the
+  axis's integrals as they were.
+- ``loss_threshold``, ``approach_speed``: a force axis whose measured force falls below the
+  threshold has lost contact: it holds its integral and approaches at ``approach_speed``
+  (``a = -KD (y + approach_speed)``, the impedance's own damping) until the force returns.
+
+The law then gets ``a`` (in the desired frame ``R_d``, rotated into ``R(r)`` with ``R_d'``'s
+term, as the paper's Figure 3). ``controller_step`` is the decoupling law with the measured
+``F_c`` (the task law) or Khatib's feedforward ``R^T Sigma F_d`` of the desired force;
+``raibert_craig_step`` maps the same loops without dynamic decoupling (NOTES section 7):
+
+    tau = diag(B) q''_m + J_y^T Sigma w + g(q),   w_i = -F_d,i + a_i / KP_i  (m_d a_i, force axes)
+
+with ``q''_m = J_y^+ Sigma^A a`` (Raibert & Craig: the inverse of the task Jacobian) or
+``q''_m = (Sigma^A J_y)^+ Sigma^A a`` (Fisher & Mujtaba's pseudo-inverse of the selected rows).
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import casadi as ca
 
+from . import factor
 from . import rigid_body as rb
 from .kernel import Arg, Guard, Kernel, conditioning_guard
 from .surfaces import SurfaceSpec, task_frame
-from .task_law import AXIS_NAMES, CONDITIONING, arm_motion, decoupling, frame_guard, task_rows
+from .task_law import (
+    AXIS_NAMES,
+    CONDITIONING,
+    EULER_TOL,
+    arm_motion,
+    decoupling,
+    euler_map,
+    euler_zyx,
+    frame_guard,
+    task_rows,
+)
 
 #: per-axis loop gains, in this order in the ``gains`` array
 LOOP_GAINS = ("KP", "KI", "KI2", "KD")
-#: the ``options`` array: switches (0/1) and the sample period
-OPTIONS = ("curvature", "sample_time", "khatib", "desired_frame")
+#: the ``options`` array: switches (0/1) and numbers
+OPTIONS = ("curvature", "sample_time", "khatib", "desired_frame", "position_error", "integral_limit",
+           "loss_threshold", "approach_speed", "pseudoinverse")
 
 
-def loops(y, f, z, yd, yd_rate, gains, sigma, T):
-    """Task accelerations ``a`` and the integrals after this sample (module docstring).
+@dataclass(frozen=True)
+class LoopInputs:
+    """What the loops read at one sample (symbols or expressions), per task axis."""
 
-    ``z`` holds ``(z1, z2)`` per axis; the double integral is kept at 0 on force axes.
-    """
+    y: object        # task velocity in the loop frame
+    f: object        # task wrench in the loop frame
+    z: object        # integrals (z1, z2) per axis
+    yd: object       # references
+    yd_rate: object  # their rates (feedforward)
+    r_err: object    # position error R_f T (r_d - r)
+    gains: object    # (KP, KI, KI2, KD) per axis
+    sigma: object    # 1 on force axes
+    opts: dict       # OPTIONS by name
+
+
+def loops(x: LoopInputs):
+    """Task accelerations ``a`` and the integrals after this sample (module docstring)."""
+    o = x.opts
+    T, pe = o["sample_time"], o["position_error"]
     a, z_next = [], []
-    for i in range(y.shape[0]):
-        KP, KI, KI2, KD = (gains[len(LOOP_GAINS) * i + k] for k in range(len(LOOP_GAINS)))
-        s = sigma[i]
-        e = s * (yd[i] - f[i]) + (1 - s) * (yd[i] - y[i])
-        z1 = z[2 * i] + T * e
-        z2 = (1 - s) * (z[2 * i + 1] + T * z1)
-        a_velocity = yd_rate[i] + KP * e + KI * z1 + KI2 * z2
-        a_force = -KP * e - KD * y[i] - KI * z1
+    for i in range(x.y.shape[0]):
+        KP, KI, KI2, KD = (x.gains[len(LOOP_GAINS) * i + k] for k in range(len(LOOP_GAINS)))
+        s, z1, z2 = x.sigma[i], x.z[2 * i], x.z[2 * i + 1]
+        e = s * (x.yd[i] - x.f[i]) + (1 - s) * (x.yd[i] - x.y[i])
+        pe_i = pe * (1 - s)  # the position error serves velocity axes only
+        z1n = pe_i * x.r_err[i] + (1 - pe_i) * (z1 + T * e)
+        z2n = (1 - s) * (z2 + T * z1n)
+        # anti-windup: keep the integrals when the integral action would leave the limit
+        held = ca.fabs((1 - pe_i) * KI * z1n + KI2 * z2n) > o["integral_limit"]
+        # contact loss on a force axis: hold the integral, approach the surface
+        lost = s * (x.f[i] < o["loss_threshold"])
+        keep = ca.fmax(held, lost)
+        z1n = keep * ((1 - pe_i) * z1 + pe_i * z1n) + (1 - keep) * z1n
+        z2n = keep * (1 - s) * z2 + (1 - keep) * z2n
+        a_velocity = x.yd_rate[i] + KP * e + KI * z1n + KI2 * z2n
+        a_force = (1 - lost) * (-KP * e - KD * x.y[i] - KI * z1n) - lost * KD * (x.y[i] + o["approach_speed"])
         a.append(s * a_force + (1 - s) * a_velocity)
-        z_next += [z1, z2]
+        z_next += [z1n, z2n]
     return ca.vertcat(*a), ca.vertcat(*z_next)
 
 
+def _wrapped(angle):
+    return ca.atan2(ca.sin(angle), ca.cos(angle))
+
+
 def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tuple[Kernel, ...]:
-    """``controller_step`` (one sample: measure, loops, law) and ``task_measurement`` of ``chain``
-    on ``spec`` for the task ``axes``."""
+    """``controller_step`` (one sample: measure, loops, decoupling law), ``raibert_craig_step`` (the
+    same loops, no decoupling) and ``task_measurement`` of ``chain`` on ``spec`` for the task ``axes``."""
     n, m = chain.n, len(axes)
     q, qd = ca.SX.sym("q", n), ca.SX.sym("qd", n)
     Fc, z = ca.SX.sym("Fc", 6), ca.SX.sym("integrals", 2 * m)
-    yd, yd_rate, target = ca.SX.sym("yd", m), ca.SX.sym("yd_rate", m), ca.SX.sym("target", 6)
+    yd, yd_rate, target = ca.SX.sym("yd", m), ca.SX.sym("yd_rate", m), ca.SX.sym("target", 9)
     gains, sigma = ca.SX.sym("gains", len(LOOP_GAINS) * m), ca.SX.sym("selection", m)
     params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
     theta, e, opts = ca.SX.sym("surface", len(spec.parameters)), ca.SX.sym("e", 3), ca.SX.sym("options", len(OPTIONS))
-    curvature, T, khatib, desired = (opts[i] for i in range(len(OPTIONS)))
+    o = {name: opts[i] for i, name in enumerate(OPTIONS)}
+    desired, curvature = o["desired_frame"], o["curvature"]
 
     arm = arm_motion(chain, q, qd)
     p, v = arm.frames.tip_p, arm.v
     tf = task_frame(spec, p, v[:3], theta, e)
     Rm, Rdm = task_rows(tf, axes)
-    # the loop frame: at the tip, or at the desired point target = (p_d, p_d')
+    # the loop frame: at the tip, or at the desired point target = (p_d, p_d', phi_d)
     tf_f = task_frame(spec, desired * target[:3] + (1 - desired) * p,
-                      desired * target[3:] + (1 - desired) * v[:3], theta, e)
+                      desired * target[3:6] + (1 - desired) * v[:3], theta, e)
     Rf, Rdf = task_rows(tf_f, axes)
     y, f = Rf @ v, Rf @ Fc
-    a_f, z_next = loops(y, f, z, yd, yd_rate, gains, sigma, T)
+    phi = euler_zyx(arm.frames.tip_R)
+    r_err = Rf @ ca.vertcat(target[:3] - p, euler_map(phi) @ _wrapped(target[6:9] - phi))
+    a_f, z_next = loops(LoopInputs(y, f, z, yd, yd_rate, r_err, gains, sigma, o))
     # in the desired frame: R(r) R_d^T (a - R_d' r'), the law's own curvature term off
     a = desired * (Rm @ (Rf.T @ (a_f - curvature * (Rdf @ v)))) + (1 - desired) * a_f
-    contact = khatib * (Rm.T @ (sigma * yd)) + (1 - khatib) * Fc
+    contact = o["khatib"] * (Rm.T @ (sigma * yd)) + (1 - o["khatib"]) * Fc
     _, tau, cond = decoupling(chain, arm, params, qd, Rm, Rdm, a, contact, ca.SX.zeros(n, 1),
                               curvature * (1 - desired))
+    tau_rc, cond_rc = _raibert_craig(chain, arm, params, Rm, a, yd, gains, sigma, o["pseudoinverse"])
 
     names = tuple(j.name for j in chain.joints)
     axis_names = tuple(AXIS_NAMES[i] for i in axes)
@@ -87,30 +149,41 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
     a_s = Arg("surface", theta, "m (lengths), 1 (directions)", names=spec.parameters)
     a_e = Arg("e", e, "1", names=("e_x", "e_y", "e_z"))
     integral_names = tuple(f"{k}_{ax}" for ax in axis_names for k in ("z1", "z2"))
-    frame_guards = (frame_guard(tf.sine), Guard(
+    guards = (frame_guard(tf.sine), Guard(
         "loop_frame", tf_f.sine, "HYBRID_FRAME_UNDEFINED", frame_guard(tf.sine).tolerance,
         "|e x n| at the loop frame's point (the desired point with desired_frame)"))
-    step = Kernel(
-        "controller_step",
-        (a_q, a_qd, a_fc,
-         Arg("integrals", z, "per axis: unit of e times s, then times s^2", names=integral_names),
-         Arg("yd", yd, "m/s, rad/s (velocity axes); N, N m (force axes)", names=axis_names),
-         Arg("yd_rate", yd_rate, "m/s^2, rad/s^2 (velocity axes; unused on force axes)", names=axis_names),
-         Arg("target", target, "m, m/s", names=("p_x", "p_y", "p_z", "pd_x", "pd_y", "pd_z")),
-         Arg("gains", gains, "per axis KP, KI, KI2, KD (see codegen/controller_step.py)",
-             names=tuple(f"{g}_{ax}" for ax in axis_names for g in LOOP_GAINS)),
-         Arg("selection", sigma, "1 (1: force-controlled axis)", names=axis_names),
-         Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain)), a_s, a_e,
-         Arg("options", opts, "1, s, 1, 1", names=OPTIONS)),
-        (Arg("tau", tau, rb.joint_units(chain, "tau")),
-         Arg("integrals_next", z_next, "as integrals"),
-         Arg("a", a_f, tuple("m/s^2" if i < 3 else "rad/s^2" for i in axes), names=axis_names),
-         Arg("y", y, velocity_units, names=axis_names), Arg("f", f, force_units, names=axis_names)),
-        f"one control sample on a {spec.kind}: task velocity y = R_f v and wrench f = R_f F_c in the loop "
-        "frame, the loops' task acceleration a and integrals after the sample, and the torque tau of the "
-        f"decoupling law (task axes {', '.join(axis_names)})",
-        batched=("q", "qd", "Fc", "integrals", "yd", "yd_rate", "target"),
-        guards=(*frame_guards, conditioning_guard(cond, CONDITIONING)))
+    if max(axes) >= 3:  # T(r) enters the position error of an angular axis
+        pe = o["position_error"]
+        guards += (Guard("euler", pe * ca.cos(phi[1]) + (1 - pe), "HYBRID_EULER_SINGULAR", EULER_TOL,
+                         "|cos beta| of the tip's ZYX Euler angles (with position_error)"),)
+    inputs = (
+        a_q, a_qd, a_fc,
+        Arg("integrals", z, "per axis: unit of e times s, then times s^2", names=integral_names),
+        Arg("yd", yd, "m/s, rad/s (velocity axes); N, N m (force axes)", names=axis_names),
+        Arg("yd_rate", yd_rate, "m/s^2, rad/s^2 (velocity axes; unused on force axes)", names=axis_names),
+        Arg("target", target, "m, m/s, rad",
+            names=("p_x", "p_y", "p_z", "pd_x", "pd_y", "pd_z", "alpha", "beta", "gamma")),
+        Arg("gains", gains, "per axis KP, KI, KI2, KD (see codegen/controller_step.py)",
+            names=tuple(f"{g}_{ax}" for ax in axis_names for g in LOOP_GAINS)),
+        Arg("selection", sigma, "1 (1: force-controlled axis)", names=axis_names),
+        Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain)), a_s, a_e,
+        Arg("options", opts, "1, s, 1, 1, 1, unit of a, N or N m, m/s or rad/s, 1", names=OPTIONS))
+
+    def outputs(torque):
+        return (Arg("tau", torque, rb.joint_units(chain, "tau")),
+                Arg("integrals_next", z_next, "as integrals"),
+                Arg("a", a_f, tuple("m/s^2" if i < 3 else "rad/s^2" for i in axes), names=axis_names),
+                Arg("y", y, velocity_units, names=axis_names), Arg("f", f, force_units, names=axis_names))
+
+    what = (f"one control sample on a {spec.kind}: task velocity y = R_f v and wrench f = R_f F_c in the loop "
+            "frame, the loops' task acceleration a and integrals after the sample, and the torque tau of ")
+    per_state = ("q", "qd", "Fc", "integrals", "yd", "yd_rate", "target")
+    step = Kernel("controller_step", inputs, outputs(tau),
+                  what + f"the decoupling law (task axes {', '.join(axis_names)})", batched=per_state,
+                  guards=(*guards, conditioning_guard(cond, CONDITIONING)))
+    raibert_craig = Kernel("raibert_craig_step", inputs, outputs(tau_rc),
+                           what + f"Raibert & Craig's scheme (task axes {', '.join(axis_names)})", batched=per_state,
+                           guards=(*guards, conditioning_guard(cond_rc, CONDITIONING)))
     R6 = ca.diagcat(tf.R, tf.R)
     measurement = Kernel(
         "task_measurement", (a_q, a_qd, a_fc, a_s, a_e),
@@ -120,4 +193,27 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
         "what the controller measures: tip position p and twist v = (p', w) in base axes, and on all six "
         "task axes at the tip the task velocity R v and the task wrench R F_c",
         batched=("q", "qd", "Fc"), guards=(frame_guard(tf.sine),))
-    return step, measurement
+    return step, raibert_craig, measurement
+
+
+def _raibert_craig(chain: rb.Chain, arm, params, Rm, a, yd, gains, sigma, pseudoinverse):
+    """``(tau, conditioning)`` of Raibert & Craig's mapping (module docstring)."""
+    n, m = chain.n, Rm.shape[0]
+    Jy = Rm @ arm.J
+    Q, Rq = factor.thin_qr(Jy.T)
+    motion = (1 - sigma) * a
+    # J_y^+ b = Q R^-T b (J_y^-1 when square)
+    z = factor.forward_substitution([[Rq[j][i] for j in range(m)] for i in range(m)], motion)
+    qdd_inverse = sum((Q[i] * z[i] for i in range(m)), ca.SX.zeros(n, 1))
+    # (Sigma^A J_y)^+ Sigma^A a = J_y^T Sigma^A (Sigma^A J_y J_y^T Sigma^A + Sigma)^-1 Sigma^A a: the
+    # identity on the force rows keeps the matrix invertible and their multipliers at 0
+    keep = 1 - sigma
+    M = (keep @ keep.T) * (Jy @ Jy.T) + ca.diag(sigma)
+    qdd_selected = Jy.T @ (keep * factor.cholesky_solve(M, motion))
+    qdd = pseudoinverse * qdd_selected + (1 - pseudoinverse) * qdd_inverse
+    B = rb.crba(chain, arm.frames, params)
+    gravity = rb.rnea(chain, arm.frames, params, ca.SX.zeros(n, 1))
+    KP = ca.vertcat(*(gains[len(LOOP_GAINS) * i] for i in range(m)))
+    w = ca.vertcat(*(ca.if_else(sigma[i], -yd[i] + a[i] / KP[i], 0) for i in range(m)))  # m_d a = a / KP
+    tau = ca.diag(B) * qdd + Jy.T @ w + gravity
+    return tau, factor.frobenius_conditioning(Jy, Rq)

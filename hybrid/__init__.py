@@ -6,7 +6,7 @@ the compiled law (:func:`decoupling_law`) and the arm's terms, the experiment
 error raised on bad input.
 """
 
-from .controller import Controller, Measurement, Reference
+from .controller import ContactLoss, Controller, Measurement, Reference
 from .errors import HybridError, NativeBuildError, NonFiniteError, SingularConfigurationError, TaskFrameError, URDFError
 from .experiment import Contact, Experiment, Gains, Sensor, Step, paper_experiment
 from .law import DecouplingLaw, OperationalSpace, arm_terms, decoupling_law, operational_space, task_frame
@@ -19,10 +19,10 @@ from .spatial_law import SpatialDecouplingLaw
 from .surfaces import Cylinder, ImplicitSurface, Sphere
 
 __all__ = [
-    "Arm", "Circle", "Contact", "Controller", "Cylinder", "DecouplingLaw", "Experiment", "Gains", "HybridError",
-    "ImplicitSurface", "Khatib", "Measurement", "NativeBuildError", "NonFiniteError", "OperationalSpace", "Plane",
-    "Reference", "Robot", "SCHEMES", "Scheme", "Sensor", "SimulationError", "SimulationResult",
-    "SingularConfigurationError", "SpatialDecouplingLaw", "Sphere", "Step", "TaskDecoupling", "TaskFrameError",
-    "URDFError", "arm_terms", "decoupling_law", "operational_space", "paper_arm", "paper_experiment", "simulate",
-    "task_frame",
+    "Arm", "Circle", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw", "Experiment", "Gains",
+    "HybridError", "ImplicitSurface", "Khatib", "Measurement", "NativeBuildError", "NonFiniteError",
+    "OperationalSpace", "Plane", "Reference", "Robot", "SCHEMES", "Scheme", "Sensor", "SimulationError",
+    "SimulationResult", "SingularConfigurationError", "SpatialDecouplingLaw", "Sphere", "Step", "TaskDecoupling",
+    "TaskFrameError", "URDFError", "arm_terms", "decoupling_law", "operational_space", "paper_arm",
+    "paper_experiment", "simulate", "task_frame",
 ]

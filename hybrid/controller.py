@@ -22,8 +22,23 @@ from .spatial_law import _reference, check_axes, spatial_surface
 from .validate import _finite
 
 AXIS_NAMES = ("t1", "t2", "n", "rot_t1", "rot_t2", "rot_n")
-#: in the options array of the generated step: curvature, sample_time, khatib, desired_frame
-_OPTIONS = 4
+#: "no limit" for the options that are off (the generated step takes finite numbers only)
+_OFF = 1e300
+
+
+@dataclass(frozen=True)
+class ContactLoss:
+    """What a force axis does when its measured force falls below ``threshold`` [N or N m]: it
+    holds its integral and approaches the surface at ``approach_speed`` [m/s or rad/s] (through
+    the impedance's damping ``KDf``) until the force comes back."""
+
+    threshold: float = 0.5
+    approach_speed: float = 0.02
+
+    def __post_init__(self):
+        _finite("ContactLoss", threshold=self.threshold, approach_speed=self.approach_speed)
+        if self.approach_speed < 0:
+            raise HybridError(f"ContactLoss approach_speed = {self.approach_speed}; give a speed >= 0")
 
 
 @dataclass(frozen=True)
@@ -89,7 +104,15 @@ class Controller:
     integral : with ``False`` the integral actions ``KI2v, KIf`` are 0 (NOTES section 4).
     curvature : give ``R'`` to the law (with ``frame="desired"``: the loop frame's ``R_d'``).
     frame : ``"actual"`` (loops in ``R(r)``) or ``"desired"`` (in ``R(r_d)``, the paper's Figure 3),
-        which needs ``path(t) -> (p_d, p_d')`` [m, m/s].
+        which needs ``path``.
+    path : ``path(t) -> (p_d, p_d')`` [m, m/s], or ``(p_d, p_d', phi_d)`` with the desired ZYX Euler
+        angles [rad]: the desired point (for ``frame="desired"`` and ``position_error``).
+    position_error : velocity axes use the position error ``R T(r) (r_d - r)`` and its integral in
+        place of the velocity error's integrals (the paper's last equations; ``KIv, KI2v`` act as
+        ``KP_p, KI_p``); needs ``path``.
+    integral_limit : anti-windup: the largest integral action per axis [m/s^2 or rad/s^2]; a sample
+        that would exceed it keeps the axis's integrals (conditional integration). Off by default.
+    contact_loss : a :class:`ContactLoss` rule for force axes; off by default.
     reference : the task frame's reference direction ``e`` (base axes).
     singular_tol : conditioning below which a sample raises :class:`SingularConfigurationError`.
     """
@@ -98,21 +121,29 @@ class Controller:
                  gains: Gains | Mapping | None = None, force_reference=10.0, velocity_reference=0.0,
                  sample_time: float = 0.01, integral: bool = True, curvature: bool = False,
                  frame: str = "actual", path: Callable | None = None, reference=(0.0, 0.0, 1.0),
-                 singular_tol: float = 1e-3):
+                 position_error: bool = False, integral_limit: float | None = None,
+                 contact_loss: ContactLoss | None = None, singular_tol: float = 1e-3):
         from .law import check_singular_tol
 
         if isinstance(robot, Arm):
             robot, axes = Robot.planar(robot), "planar" if axes is None else axes
         if not isinstance(robot, Robot):
             raise HybridError(f"robot must be a hybrid.Robot or hybrid.Arm, got {type(robot).__name__}")
-        for name, value in (("integral", integral), ("curvature", curvature)):
+        for name, value in (("integral", integral), ("curvature", curvature), ("position_error", position_error)):
             if not isinstance(value, bool):
                 raise HybridError(f"{name} = {value!r}; give True or False")
         if frame not in ("actual", "desired"):
             raise HybridError(f"frame = {frame!r}; give 'actual' or 'desired'")
-        if frame == "desired" and not callable(path):
-            raise HybridError("frame='desired' needs path=f(t) returning the desired point and its velocity "
-                              "(p_d [m], p_d' [m/s])")
+        if (frame == "desired" or position_error) and not callable(path):
+            raise HybridError(f"{'position_error' if position_error else 'frame=desired'} needs path=f(t) returning "
+                              "the desired point and its velocity (p_d [m], p_d' [m/s])")
+        if contact_loss is not None and not isinstance(contact_loss, ContactLoss):
+            raise HybridError(f"contact_loss = {contact_loss!r:.60}; give a hybrid.ContactLoss(threshold, "
+                              "approach_speed) or None")
+        if integral_limit is not None:
+            _finite("Controller", integral_limit=integral_limit)
+            if integral_limit < 0:
+                raise HybridError(f"integral_limit = {integral_limit}; give a magnitude >= 0 or None")
         _finite("Controller", sample_time=sample_time)
         if sample_time <= 0:
             raise HybridError(f"sample_time = {sample_time} s; give a positive sample period")
@@ -124,16 +155,22 @@ class Controller:
         self.reference, self.singular_tol, self.path = tuple(_reference(reference)), float(singular_tol), path
         self.selection = self._selection(selection)
         self.gains = self._gains(gains)
+        if self.scheme.needs_force_gain and any(s and g.KPf <= 0 for g, s in zip(self.gains, self.selection)):
+            raise HybridError(f"the {self.scheme.name} scheme commands m_d a = a / KPf on force axes: give KPf > 0")
+        self.position_error, self.integral_limit, self.contact_loss = position_error, integral_limit, contact_loss
         self._references = self._axis_references(force_reference, velocity_reference)
         unit = compiled_controller_unit(robot.chain, robot.name, self._spatial.spec(), self.axes)
-        self._step, self._measure = unit.function("controller_step"), unit.function("task_measurement")
+        self._step, self._measure = unit.function(self.scheme.step), unit.function("task_measurement")
         m = len(self.axes)
+        loss = contact_loss or ContactLoss(-_OFF, 0.0)
         options = np.array([float(curvature), self.sample_time, float(self.scheme.feeds_desired_force),
-                            float(frame == "desired")])
+                            float(frame == "desired"), float(position_error),
+                            _OFF if integral_limit is None else float(integral_limit), loss.threshold,
+                            loss.approach_speed, float(self.scheme.pseudoinverse)])
         self._params = (self._gain_array(), np.array(self.selection, float), robot.as_array(),
                         self._spatial.as_array(), np.array(self.reference), options)
         self._fast, self._binding = self._step.fast_bind(7, *self._params, singular_tol=self.singular_tol)
-        self._yd, self._rate, self._target = np.zeros(m), np.zeros(m), np.zeros(6)
+        self._yd, self._rate, self._target = np.zeros(m), np.zeros(m), np.zeros(9)
         for i, ref in enumerate(self._references):
             self._yd[i] = ref.constant if ref.constant is not None else 0.0
         self._varying = [(i, ref.value) for i, ref in enumerate(self._references) if ref.constant is None]
@@ -262,8 +299,11 @@ class Controller:
         return out[0]
 
     def _desired(self, t: float) -> np.ndarray:
-        p, pd = self.path(t)
-        return np.concatenate([_vector3("path point", p), _vector3("path velocity", pd)])
+        got = self.path(t)
+        if not isinstance(got, tuple) or len(got) not in (2, 3):
+            raise HybridError(f"path({t}) returned {got!r:.60}; return (p_d, p_d') or (p_d, p_d', phi_d)")
+        phi = _vector3("path angles", got[2]) if len(got) == 3 else np.zeros(3)
+        return np.concatenate([_vector3("path point", got[0]), _vector3("path velocity", got[1]), phi])
 
     def _checked(self, t, q, qdot, Fc, yd, rate):
         if not all(np.isfinite(v).all() for v in (yd, rate, self._target)):

@@ -25,12 +25,18 @@ def register(cls: type[Scheme]) -> type[Scheme]:
 class Scheme:
     """A hybrid force/velocity control scheme.
 
+    ``step``: the generated function that runs one sample (see :mod:`codegen.controller_step`).
     ``feeds_desired_force``: the law's contact term is the desired force ``R^T Sigma F_d``
     (fed forward) rather than the measured ``F_c`` (cancelled).
+    ``pseudoinverse``: motion axes mapped by the pseudo-inverse of the selected Jacobian rows.
+    ``needs_force_gain``: force axes need ``KPf > 0`` (their command is ``m_d a = a / KPf``).
     """
 
     name: ClassVar[str]
+    step: ClassVar[str] = "controller_step"
     feeds_desired_force: ClassVar[bool] = False
+    pseudoinverse: ClassVar[bool] = False
+    needs_force_gain: ClassVar[bool] = False
 
     def __repr__(self) -> str:
         return f"{type(self).__name__}()"
@@ -57,6 +63,26 @@ class Khatib(Scheme):
 
     name = "khatib"
     feeds_desired_force = True
+
+
+@register
+class RaibertCraig(Scheme):
+    """Raibert & Craig 1981: the selected motion axes' accelerations mapped to joints through the
+    inverse task Jacobian and scaled by the joints' own inertias ``diag(B)``, the force axes'
+    commands ``-F_d + m_d a`` through ``J^T``, gravity compensated; no dynamic decoupling."""
+
+    name = "raibert_craig"
+    step = "raibert_craig_step"
+    needs_force_gain = True
+
+
+@register
+class FisherMujtaba(RaibertCraig):
+    """Raibert & Craig with Fisher & Mujtaba's (1992) correction: the motion axes mapped by the
+    pseudo-inverse of the *selected* rows of the task Jacobian, ``(Sigma^A J_y)^+``."""
+
+    name = "fisher_mujtaba"
+    pseudoinverse = True
 
 
 def scheme_of(scheme) -> Scheme:

@@ -60,21 +60,47 @@ def test_paper_controller_equals_the_numpy_controller_on_random_samples(rng):
             np.testing.assert_allclose(ours(t, q, qd, Fc), theirs(t, q, qd, Fc), rtol=1e-9, atol=1e-9)
 
 
-def loops_by_hand(y, f, z, yd, rate, gains, sigma, T):
-    """NOTES section 4 per axis, written from the text (z: one (int e, int int e) row per axis)."""
-    a, z = np.zeros(len(y)), z.copy()
+def loops_by_hand(y, f, z, yd, rate, gains, sigma, T, r_err=None, limit=np.inf, loss=None):
+    """NOTES section 4 per axis, written from the text (z: one (int e, int int e) row per axis), with
+    the options of the controller: position error r_err, anti-windup limit, contact-loss rule."""
+    a, z_old, z = np.zeros(len(y)), z.copy(), z.copy()
     for i in range(len(y)):
         g = gains[i]
         if sigma[i]:
             e = yd[i] - f[i]
             z[i, 0] += T * e
+            if loss is not None and f[i] < loss.threshold:
+                z[i] = z_old[i]
+                a[i] = -g.KDf * (y[i] + loss.approach_speed)
+                continue
+            if abs(g.KIf * z[i, 0]) > limit:
+                z[i] = z_old[i]
             a[i] = -g.KPf * e - g.KDf * y[i] - g.KIf * z[i, 0]
         else:
             e = yd[i] - y[i]
-            z[i, 0] += T * e
-            z[i, 1] += T * z[i, 0]
+            if r_err is None:
+                z[i, 0] += T * e
+                z[i, 1] += T * z[i, 0]
+                if abs(g.KIv * z[i, 0] + g.KI2v * z[i, 1]) > limit:
+                    z[i] = z_old[i]
+            else:
+                z[i, 0] = r_err[i]
+                z[i, 1] += T * z[i, 0]
+                if abs(g.KI2v * z[i, 1]) > limit:
+                    z[i, 1] = z_old[i, 1]
             a[i] = rate[i] + g.KPv * e + g.KIv * z[i, 0] + g.KI2v * z[i, 1]
     return a, z
+
+
+def zyx_angles(R):
+    """ZYX Euler angles of a rotation matrix, R = Rz(alpha) Ry(beta) Rx(gamma)."""
+    return np.array([np.arctan2(R[1, 0], R[0, 0]), -np.arcsin(np.clip(R[2, 0], -1, 1)), np.arctan2(R[2, 1], R[2, 2])])
+
+
+def euler_map(phi):
+    """T_A of NOTES section 9: w = T_A phi'."""
+    sa, ca, sb, cb = np.sin(phi[0]), np.cos(phi[0]), np.sin(phi[1]), np.cos(phi[1])
+    return np.array([[0, -sa, ca * cb], [0, ca, sa * cb], [1, 0, -sb]])
 
 
 class Ramp:
@@ -87,16 +113,51 @@ class Ramp:
         return 0.5
 
 
-@pytest.mark.parametrize("scheme", ["task", "khatib"])
-def test_ur5_loops_and_law_sample_by_sample(rng, robots, scheme):
-    """Six loops (two force axes, per-axis gains, a ramp with feedforward) against the hand-written
-    loops on Pinocchio's measurement, and the torque against the NumPy law of NOTES section 9."""
+def hand_torque(scheme, J, Jdqd, B, n, gravity, R, Rd, qd, a, Fc, yd, sigma, gains):
+    """The scheme's torque from Pinocchio's terms, written from NOTES sections 7 and 9."""
+    if scheme in ("task", "khatib"):
+        contact = blockdiag(R).T @ (sigma * yd) if scheme == "khatib" else Fc
+        return ref.spatial_decoupling_law(J, Jdqd, B, n, R, Rd, qd, a, contact, np.zeros(len(qd)), range(6), True)[1]
+    Jy = blockdiag(R) @ J
+    motion = sigma == 0
+    if scheme == "raibert_craig":
+        qdd = np.linalg.solve(Jy, np.where(motion, a, 0.0))
+    else:  # Fisher & Mujtaba: the pseudo-inverse of the selected rows
+        qdd = np.linalg.pinv(Jy[motion]) @ a[motion]
+    m_d = np.array([1.0 / g.KPf for g in gains])
+    w = np.where(motion, 0.0, -yd + m_d * a)
+    return np.diag(B) * qdd + Jy.T @ w + gravity
+
+
+OPTION_CASES = {
+    "plain": {},
+    "position-error": dict(position_error=True),
+    "anti-windup": dict(integral_limit=0.05),
+    "contact-loss": dict(contact_loss=hybrid.ContactLoss(threshold=2.0, approach_speed=0.03)),
+}
+
+
+@pytest.mark.parametrize("option", list(OPTION_CASES))
+@pytest.mark.parametrize("scheme", ["task", "khatib", "raibert_craig", "fisher_mujtaba"])
+def test_ur5_loops_and_torque_sample_by_sample(rng, robots, scheme, option):
+    """Six loops (two force axes, per-axis gains, a ramp with feedforward, each option) against the
+    hand-written loops on Pinocchio's measurement, and the torque against the scheme written by hand."""
+    import pinocchio as pin
+
     robot, model, fid = robots["ur5"]
+    data = model.createData()
     T = 0.01
     gains = {"t1": hybrid.Gains(KPv=30.0, KIv=150.0, KI2v=600.0), "rot_t1": hybrid.Gains(KPf=3.0, KDf=40.0, KIf=9.0)}
+    kw = dict(OPTION_CASES[option])
+    phi_d = rng.uniform(-1, 1, 3)
+    p_d = np.array([0.45, 0.1, 0.46])
+
+    def path(t):
+        return p_d, np.zeros(3), phi_d
+
     ctrl = hybrid.Controller(robot, SPHERE, scheme, selection=("n", "rot_t1"), gains=gains, sample_time=T,
                              force_reference={"n": hybrid.Step(10.0, 20.0, 0.05), "rot_t1": 0.3},
-                             velocity_reference={"t1": Ramp(), "rot_n": -0.2}, curvature=True)
+                             velocity_reference={"t1": Ramp(), "rot_n": -0.2}, curvature=True, path=path, **kw)
     per_axis = [gains.get(n, hybrid.Gains()) for n in ctrl.axis_names]
     sigma = np.array([0, 0, 1, 1, 0, 0])
     z = np.zeros((6, 2))
@@ -109,13 +170,20 @@ def test_ur5_loops_and_law_sample_by_sample(rng, robots, scheme):
         y, f = blockdiag(R) @ v, blockdiag(R) @ Fc
         yd = np.array([Ramp()(t), 0.0, 10.0 if t < 0.05 else 20.0, 0.3, 0.0, -0.2])
         rate = np.array([0.5, 0, 0, 0, 0, 0])
-        a, z = loops_by_hand(y, f, z, yd, rate, per_axis, sigma, T)
+        r_err = None
+        if kw.get("position_error"):
+            pin.framesForwardKinematics(model, data, q)
+            phi = zyx_angles(data.oMf[fid].rotation)
+            dphi = np.angle(np.exp(1j * (phi_d - phi)))
+            r_err = blockdiag(R) @ np.concatenate([p_d - p, euler_map(phi) @ dphi])
+        a, z = loops_by_hand(y, f, z, yd, rate, per_axis, sigma, T, r_err, kw.get("integral_limit", np.inf),
+                             kw.get("contact_loss"))
         np.testing.assert_allclose(ctrl.last[3], y, rtol=1e-12, atol=1e-12)
         np.testing.assert_allclose(ctrl.last[4], f, rtol=1e-12, atol=1e-12)
         np.testing.assert_allclose(ctrl.last[2], a, rtol=1e-10, atol=1e-10)
         np.testing.assert_allclose(ctrl.state, z, rtol=1e-12, atol=1e-14)
-        contact = blockdiag(R).T @ (sigma * yd) if scheme == "khatib" else Fc
-        _, tau_ref = ref.spatial_decoupling_law(J, Jdqd, B, n, R, Rd, qd, a, contact, np.zeros(6), range(6), True)
+        gravity = pin.computeGeneralizedGravity(model, data, q)
+        tau_ref = hand_torque(scheme, J, Jdqd, B, n, gravity, R, Rd, qd, a, Fc, yd, sigma, per_axis)
         np.testing.assert_allclose(tau, tau_ref, rtol=1e-9, atol=1e-9 * np.abs(tau_ref).max())
 
 
