@@ -8,9 +8,12 @@ included (``z1 += T e``, ``z2 += T z1``):
     velocity axis:  e = y_d - y,   a = y_d' + KP e + KI z1 + KI2 z2      (PI^2, feedforward)
     force axis:     e = y_d - f,   a = -KP e - KD y - KI z1               (impedance + integral)
 
-with ``y = R_f v`` the task velocity and ``f = R_f F_c`` the task wrench. Options (0/1 switches
+with ``y = R_f v`` the task velocity and ``f = R_f F_c`` the task wrench. The references
+``y_d(t)`` are steps evaluated in C at the sample time ``t`` (constants are steps without a
+jump) plus what the caller adds (``yd_extra``: references given as code). Options (0/1 switches
 and numbers in the ``options`` array, blended arithmetically, exact for 0 and 1, so one build
-serves every selection, scheme and option):
+serves every selection, scheme and option, but the two that change what is computed: the
+desired frame and the position error are compiled in):
 
 - ``position_error``: the paper's last equations: on velocity axes ``z1`` is the position error
   ``r_E = R_f T(r) (r_d - r)`` (``r = (p, phi_ZYX)``, the angle error wrapped to (-pi, pi]) and
@@ -49,7 +52,6 @@ from .task_law import (
     EULER_TOL,
     arm_motion,
     decoupling,
-    euler_map,
     euler_zyx,
     frame_guard,
     task_rows,
@@ -58,8 +60,8 @@ from .task_law import (
 #: per-axis loop gains, in this order in the ``gains`` array
 LOOP_GAINS = ("KP", "KI", "KI2", "KD")
 #: the ``options`` array: switches (0/1) and numbers
-OPTIONS = ("curvature", "sample_time", "khatib", "desired_frame", "position_error", "integral_limit",
-           "loss_threshold", "approach_speed", "pseudoinverse")
+OPTIONS = ("curvature", "sample_time", "khatib", "integral_limit", "loss_threshold", "approach_speed",
+           "pseudoinverse")
 
 
 @dataclass(frozen=True)
@@ -104,20 +106,43 @@ def loops(x: LoopInputs):
 
 
 def _wrapped(angle):
-    return ca.atan2(ca.sin(angle), ca.cos(angle))
+    """``angle`` in [-pi, pi) (cheaper than atan2 of its sine and cosine)."""
+    return angle - 2 * ca.pi * ca.floor((angle + ca.pi) / (2 * ca.pi))
 
 
-def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tuple[Kernel, ...]:
+def _euler_map_of(Rot):
+    """``T_A(phi)`` (NOTES section 9) from the rotation itself: the sines and cosines of ``alpha,
+    beta`` are ratios of its entries, so no trigonometric call is needed."""
+    cb = ca.sqrt(Rot[0, 0] ** 2 + Rot[1, 0] ** 2)
+    sb, inv = -Rot[2, 0], 1 / cb
+    ca_, sa = Rot[0, 0] * inv, Rot[1, 0] * inv
+    return ca.vertcat(ca.horzcat(0, -sa, ca_ * cb), ca.horzcat(0, ca_, sa * cb), ca.horzcat(1, 0, -sb)), cb
+
+
+def references(t, steps, extra):
+    """Per axis ``before`` until ``at``, ``after`` from then on (``steps`` = (before, after, at) per
+    axis), plus ``extra`` (the values of references evaluated by the caller)."""
+    m = extra.shape[0]
+    return ca.vertcat(*(ca.if_else(t >= steps[3 * i + 2], steps[3 * i + 1], steps[3 * i]) for i in range(m))) + extra
+
+
+def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...], desired_frame: bool = False,
+                       position_error: bool = False) -> tuple[Kernel, ...]:
     """``controller_step`` (one sample: measure, loops, decoupling law), ``raibert_craig_step`` (the
-    same loops, no decoupling) and ``task_measurement`` of ``chain`` on ``spec`` for the task ``axes``."""
+    same loops, no decoupling) and ``task_measurement`` of ``chain`` on ``spec`` for the task ``axes``.
+
+    ``desired_frame`` and ``position_error`` change what is computed, so they are compiled in (a
+    variant each); the other options are run-time numbers."""
     n, m = chain.n, len(axes)
     q, qd = ca.SX.sym("q", n), ca.SX.sym("qd", n)
     Fc, z = ca.SX.sym("Fc", 6), ca.SX.sym("integrals", 2 * m)
-    yd, yd_rate, target = ca.SX.sym("yd", m), ca.SX.sym("yd_rate", m), ca.SX.sym("target", 9)
+    t, steps = ca.SX.sym("t"), ca.SX.sym("steps", 3 * m)
+    yd_extra, yd_rate, target = ca.SX.sym("yd_extra", m), ca.SX.sym("yd_rate", m), ca.SX.sym("target", 9)
     gains, sigma = ca.SX.sym("gains", len(LOOP_GAINS) * m), ca.SX.sym("selection", m)
     params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
     theta, e, opts = ca.SX.sym("surface", len(spec.parameters)), ca.SX.sym("e", 3), ca.SX.sym("options", len(OPTIONS))
     o = {name: opts[i] for i, name in enumerate(OPTIONS)}
+    o.update(desired_frame=float(desired_frame), position_error=float(position_error))
     desired, curvature = o["desired_frame"], o["curvature"]
 
     arm = arm_motion(chain, q, qd)
@@ -129,8 +154,10 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
                       desired * target[3:6] + (1 - desired) * v[:3], theta, e)
     Rf, Rdf = task_rows(tf_f, axes)
     y, f = Rf @ v, Rf @ Fc
+    yd = references(t, steps, yd_extra)
     phi = euler_zyx(arm.frames.tip_R)
-    r_err = Rf @ ca.vertcat(target[:3] - p, euler_map(phi) @ _wrapped(target[6:9] - phi))
+    TA, cos_beta = _euler_map_of(arm.frames.tip_R)
+    r_err = Rf @ ca.vertcat(target[:3] - p, TA @ _wrapped(target[6:9] - phi))
     a_f, z_next = loops(LoopInputs(y, f, z, yd, yd_rate, r_err, gains, sigma, o))
     # in the desired frame: R(r) R_d^T (a - R_d' r'), the law's own curvature term off
     a = desired * (Rm @ (Rf.T @ (a_f - curvature * (Rdf @ v)))) + (1 - desired) * a_f
@@ -149,25 +176,28 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
     a_s = Arg("surface", theta, "m (lengths), 1 (directions)", names=spec.parameters)
     a_e = Arg("e", e, "1", names=("e_x", "e_y", "e_z"))
     integral_names = tuple(f"{k}_{ax}" for ax in axis_names for k in ("z1", "z2"))
-    guards = (frame_guard(tf.sine), Guard(
-        "loop_frame", tf_f.sine, "HYBRID_FRAME_UNDEFINED", frame_guard(tf.sine).tolerance,
-        "|e x n| at the loop frame's point (the desired point with desired_frame)"))
-    if max(axes) >= 3:  # T(r) enters the position error of an angular axis
-        pe = o["position_error"]
-        guards += (Guard("euler", pe * ca.cos(phi[1]) + (1 - pe), "HYBRID_EULER_SINGULAR", EULER_TOL,
-                         "|cos beta| of the tip's ZYX Euler angles (with position_error)"),)
+    guards = (frame_guard(tf.sine),)
+    if desired_frame:
+        guards += (Guard("loop_frame", tf_f.sine, "HYBRID_FRAME_UNDEFINED", frame_guard(tf.sine).tolerance,
+                         "|e x n| at the desired point (the loop frame)"),)
+    if position_error and max(axes) >= 3:  # T(r) enters the position error of an angular axis
+        guards += (Guard("euler", cos_beta, "HYBRID_EULER_SINGULAR", EULER_TOL,
+                         "|cos beta| of the tip's ZYX Euler angles (the position error's T(r))"),)
     inputs = (
         a_q, a_qd, a_fc,
         Arg("integrals", z, "per axis: unit of e times s, then times s^2", names=integral_names),
-        Arg("yd", yd, "m/s, rad/s (velocity axes); N, N m (force axes)", names=axis_names),
+        Arg("t", t, "s"),
+        Arg("yd_extra", yd_extra, "m/s, rad/s (velocity axes); N, N m (force axes)", names=axis_names),
         Arg("yd_rate", yd_rate, "m/s^2, rad/s^2 (velocity axes; unused on force axes)", names=axis_names),
         Arg("target", target, "m, m/s, rad",
             names=("p_x", "p_y", "p_z", "pd_x", "pd_y", "pd_z", "alpha", "beta", "gamma")),
+        Arg("steps", steps, "as yd_extra, then s", names=tuple(f"{k}_{ax}" for ax in axis_names
+                                                                for k in ("before", "after", "at"))),
         Arg("gains", gains, "per axis KP, KI, KI2, KD (see codegen/controller_step.py)",
             names=tuple(f"{g}_{ax}" for ax in axis_names for g in LOOP_GAINS)),
         Arg("selection", sigma, "1 (1: force-controlled axis)", names=axis_names),
         Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain)), a_s, a_e,
-        Arg("options", opts, "1, s, 1, 1, 1, unit of a, N or N m, m/s or rad/s, 1", names=OPTIONS))
+        Arg("options", opts, "1, s, 1, unit of a, N or N m, m/s or rad/s, 1", names=OPTIONS))
 
     def outputs(torque):
         return (Arg("tau", torque, rb.joint_units(chain, "tau")),
@@ -177,7 +207,7 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
 
     what = (f"one control sample on a {spec.kind}: task velocity y = R_f v and wrench f = R_f F_c in the loop "
             "frame, the loops' task acceleration a and integrals after the sample, and the torque tau of ")
-    per_state = ("q", "qd", "Fc", "integrals", "yd", "yd_rate", "target")
+    per_state = ("q", "qd", "Fc", "integrals", "t", "yd_extra", "yd_rate", "target")
     step = Kernel("controller_step", inputs, outputs(tau),
                   what + f"the decoupling law (task axes {', '.join(axis_names)})", batched=per_state,
                   guards=(*guards, conditioning_guard(cond, CONDITIONING)))

@@ -97,19 +97,24 @@ def build_law_unit(chain: rb.Chain, spec, axes: tuple[int, ...], prefix: str, in
     return _task_unit(law_kernels(chain, spec, axes), "decoupling law", chain, spec, axes, prefix, info)
 
 
-def build_controller_unit(chain: rb.Chain, spec, axes: tuple[int, ...], prefix: str, info: dict) -> Unit:
-    """One control sample (measurement, loops, law) of ``chain`` on ``spec`` for the task ``axes``."""
+def build_controller_unit(chain: rb.Chain, spec, axes: tuple[int, ...], prefix: str, info: dict,
+                          variant: dict) -> Unit:
+    """One control sample (measurement, loops, law) of ``chain`` on ``spec`` for the task ``axes``;
+    ``variant`` holds the compiled-in options (``desired_frame``, ``position_error``)."""
     from .controller_step import controller_kernels
 
-    return _task_unit(controller_kernels(chain, spec, axes), "controller step", chain, spec, axes, prefix, info)
+    return _task_unit(controller_kernels(chain, spec, axes, **variant), "controller step", chain, spec, axes,
+                      prefix, info, variant)
 
 
-def _task_unit(kernels, what: str, chain: rb.Chain, spec, axes, prefix: str, info: dict) -> Unit:
+def _task_unit(kernels, what: str, chain: rb.Chain, spec, axes, prefix: str, info: dict,
+               variant: dict | None = None) -> Unit:
     from .task_law import AXIS_NAMES
 
+    extra = {"variant": variant} if variant else {}
     return assemble(prefix, "casadi", kernels,
                     f"{what} of the {chain.n}-joint arm '{info.get('robot', prefix)}' on a {spec.kind}, "
                     f"task axes {', '.join(AXIS_NAMES[i] for i in axes)}",
                     info={"robot": info, "surface": {"kind": spec.kind, "parameters": list(spec.parameters),
-                                                      "phi": str(spec.phi)}, "axes": list(axes)},
+                                                      "phi": str(spec.phi)}, "axes": list(axes), **extra},
                     tool=f"CasADi {ca.__version__}", defines={"NQ": chain.n, "M": len(axes)})

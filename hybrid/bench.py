@@ -222,6 +222,7 @@ def run_benchmarks(quick: bool = False) -> dict:
         k += 1
         _progress(k, steps, f"{name}: the 6-D decoupling law in C, from Python, batched, by Pinocchio + NumPy")
         spatial_law_benchmarks(name, path, tip, rep, quick, add)
+        controller_benchmarks(name, path, tip, rep, quick, add)
     by = {r["name"]: r for r in results}
     robot_targets = [(f"panda: {TERMS_IN_C}", "<= 1 us", lambda r: r["median"] <= 1000),
                      (f"panda: {GEN_COMPILE}", "<= 30 s", lambda r: r["median"] <= 30),
@@ -229,7 +230,8 @@ def run_benchmarks(quick: bool = False) -> dict:
                      (f"panda: {LAW_IN_C}", "<= 1.5 us", lambda r: r["median"] <= 1500),
                      (f"ur5: {LAW_ONE}", "<= 1.5 us, >= 20x Pinocchio + NumPy",
                       lambda r: r["median"] <= 1500 and r.get("speedup", 0) >= 20),
-                     (f"ur5: {LAW_BATCHED}", "<= 0.5 us", lambda r: r["median"] <= 500)]
+                     (f"ur5: {LAW_BATCHED}", "<= 0.5 us", lambda r: r["median"] <= 500),
+                     (f"ur5: {STEP_ONE}", "<= 2 us", lambda r: r["median"] <= 2000)]
     for name, target, ok in robot_targets:
         if name in by:
             by[name].update(target=target, met=bool(ok(by[name])))
@@ -242,6 +244,8 @@ TERMS_IN_C = "r, rotation, J, J'q', B, n in C, per call (robot_terms)"
 LAW_IN_C = "6-D F* on a sphere in C, per call (curvature on)"
 LAW_ONE = "6-D F* from Python, one state (law(q, qdot, a, Fc))"
 LAW_BATCHED = "6-D F* from Python, batched, per state (N = 1e5, both cores)"
+STEP_IN_C = "controller step in C (measurement, six loops, law), per sample"
+STEP_ONE = "controller step from Python, per sample (ctrl(t, q, qdot, Fc))"
 SPHERE = (0.45, 0.1, 0.3, 0.15)
 GEN_COMPILE = "generate + compile, fresh cache and process"
 
@@ -436,3 +440,31 @@ def spatial_law_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool
     add(f"{name}: {LAW_ONE}", ours, speedup=theirs / ours, ratio=f"{theirs / ours:.0f}x faster than Pinocchio + NumPy")
     add(f"{name}: {LAW_BATCHED}", batched)
     add(f"{name}: 6-D F* by Pinocchio (crba, nle, frame terms) + NumPy", theirs)
+
+
+def controller_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool, add) -> None:
+    """One sample of :class:`hybrid.Controller` (task scheme, six axes, step references) on a sphere:
+    in C, and from Python."""
+    from codegen.casadi_backend import kernel_function
+    from codegen.controller_step import controller_kernels
+
+    from .controller import Controller
+    from .experiment import Step
+    from .robot import Robot
+    from .surfaces import Sphere
+
+    path = _shipped_urdf(urdf)
+    if path is None:
+        return
+    robot = Robot.from_urdf(path, tip=tip)
+    sphere = Sphere(SPHERE[:3], SPHERE[3])
+    ctrl = Controller(robot, sphere, force_reference=Step(10.0, 20.0, 0.5), velocity_reference=Step(0.15, 0.3, 1.5))
+    q = np.array([0.3, -1.0, 1.2, -0.4, 1.1, 0.2, 0.5][:robot.n])
+    qd, Fc = np.full(robot.n, 0.1), np.array([1.0, 2.0, 3.0, 0.0, 0.0, 0.0])
+    step = ctrl._step  # the function the controller binds
+    values = dict(zip((n for n, _ in step.inputs), (q, qd, Fc, np.zeros(12), [0.3], np.zeros(6), np.zeros(6),
+                                                    np.zeros(9), *ctrl._params)))
+    ops = kernel_function(controller_kernels(robot.chain, sphere.lift().spec(), ctrl.axes)[0]).n_instructions()
+    add(f"{name}: {STEP_IN_C}", c_harness_ns(step.unit.folder, step.unit.manifest["unit"], step.entry, values,
+                                             50_000 if quick else 500_000, rep), ratio=f"{ops} generated operations")
+    add(f"{name}: {STEP_ONE}", _median_ns(lambda: ctrl(0.3, q, qd, Fc), 2000 if quick else 20000, rep))

@@ -45,14 +45,15 @@ class ContactLoss:
 class Reference:
     """A reference signal ``y_d(t)`` and its rate ``y_d'(t)`` (the velocity loops' feedforward).
 
-    A number is constant; a :class:`~hybrid.Step` has rate 0 between its jumps (as the paper's);
-    any other callable ``f(t)`` gives the value and, when it has a ``rate`` method, the rate
-    (else 0: no feedforward).
+    A number is constant and a :class:`~hybrid.Step` jumps once: both are evaluated in the
+    compiled step (``step`` = (before, after, at)), with rate 0 between jumps (as the paper's).
+    Any other callable ``f(t)`` is evaluated in Python at each sample; its ``rate(t)`` method, when
+    it has one, gives the feedforward (else 0).
     """
 
-    value: Callable[[float], float]
+    step: tuple[float, float, float] | None
+    value: Callable[[float], float] | None
     rate: Callable[[float], float] | None
-    constant: float | None
 
     @classmethod
     def of(cls, name: str, ref) -> Reference:
@@ -60,12 +61,12 @@ class Reference:
             return ref
         if isinstance(ref, (int, float, np.integer, np.floating)) and not isinstance(ref, bool):
             _finite("Controller", **{name: ref})
-            return cls(lambda t, v=float(ref): v, None, float(ref))
+            return cls((float(ref), float(ref), 0.0), None, None)
         if isinstance(ref, Step):
-            return cls(ref, None, ref.before if ref.before == ref.after else None)
+            return cls((ref.before, ref.after, ref.at), None, None)
         if callable(ref):
             rate = getattr(ref, "rate", None)
-            return cls(ref, rate if callable(rate) else None, None)
+            return cls(None, ref, rate if callable(rate) else None)
         raise HybridError(f"{name} = {ref!r:.60}; give a number, a hybrid.Step or a callable f(t)")
 
 
@@ -159,24 +160,31 @@ class Controller:
             raise HybridError(f"the {self.scheme.name} scheme commands m_d a = a / KPf on force axes: give KPf > 0")
         self.position_error, self.integral_limit, self.contact_loss = position_error, integral_limit, contact_loss
         self._references = self._axis_references(force_reference, velocity_reference)
-        unit = compiled_controller_unit(robot.chain, robot.name, self._spatial.spec(), self.axes)
+        unit = compiled_controller_unit(robot.chain, robot.name, self._spatial.spec(), self.axes,
+                                        frame == "desired", position_error)
         self._step, self._measure = unit.function(self.scheme.step), unit.function("task_measurement")
         m = len(self.axes)
         loss = contact_loss or ContactLoss(-_OFF, 0.0)
         options = np.array([float(curvature), self.sample_time, float(self.scheme.feeds_desired_force),
-                            float(frame == "desired"), float(position_error),
                             _OFF if integral_limit is None else float(integral_limit), loss.threshold,
                             loss.approach_speed, float(self.scheme.pseudoinverse)])
-        self._params = (self._gain_array(), np.array(self.selection, float), robot.as_array(),
+        steps = np.array([ref.step or (0.0, 0.0, 0.0) for ref in self._references], float).ravel()
+        self._params = (steps, self._gain_array(), np.array(self.selection, float), robot.as_array(),
                         self._spatial.as_array(), np.array(self.reference), options)
-        self._fast, self._binding = self._step.fast_bind(7, *self._params, singular_tol=self.singular_tol)
-        self._yd, self._rate, self._target = np.zeros(m), np.zeros(m), np.zeros(9)
-        for i, ref in enumerate(self._references):
-            self._yd[i] = ref.constant if ref.constant is not None else 0.0
-        self._varying = [(i, ref.value) for i, ref in enumerate(self._references) if ref.constant is None]
+        self._t, self._extra, self._rate, self._target = np.zeros(1), np.zeros(m), np.zeros(m), np.zeros(9)
+        self._fc = np.zeros(6)
+        self._fc_head = {2: self._fc[:2], 3: self._fc[:3]}
+        self._varying = [(i, ref.value) for i, ref in enumerate(self._references) if ref.value is not None]
         self._rates = [(i, ref.rate) for i, ref in enumerate(self._references) if ref.rate is not None]
-        self._z = np.zeros(2 * m)
-        self.last = None
+        # with references all steps and no path, the per-sample inputs end at t: the rest is bound
+        self._short = not (self._varying or self._rates or path)
+        held = (self._extra, self._rate, self._target) if self._short else ()
+        _, self._binding = self._step.fast_bind(5 if self._short else 8, *held, *self._params,
+                                                singular_tol=self.singular_tol)
+        self._into = self._step.unit.fast().call_into
+        # outputs written in place: tau, the integrals' next buffer, a, y, f
+        self._out = [np.empty(size) for _, size, _ in self._step.outputs]
+        self._z, self._sampled = np.zeros(2 * m), False
 
     # ----------------------------------------------------------------- settings
 
@@ -260,7 +268,7 @@ class Controller:
     def reset(self) -> None:
         """Zero the loops' integrals (a new run)."""
         self._z[:] = 0.0
-        self.last = None
+        self._sampled = False
 
     @property
     def state(self) -> np.ndarray:
@@ -277,26 +285,56 @@ class Controller:
 
     def references(self, t: float) -> tuple[np.ndarray, np.ndarray]:
         """Per task axis, ``y_d(t)`` and its rate ``y_d'(t)``."""
+        self._python_references(t)
+        yd = self._extra + [ref.step[1] if ref.step and t >= ref.step[2] else ref.step[0] if ref.step else 0.0
+                            for ref in self._references]
+        return yd, self._rate.copy()
+
+    def _python_references(self, t: float) -> None:
+        """The references given as code, at ``t``: into the step's ``yd_extra`` and ``yd_rate``."""
         for i, value in self._varying:
-            self._yd[i] = value(t)
+            self._extra[i] = value(t)
         for i, rate in self._rates:
             self._rate[i] = rate(t)
-        return self._yd, self._rate
 
     def __call__(self, t: float, q, qdot, Fc) -> np.ndarray:
         """``tau`` [N m or N] for the sample at time ``t`` [s], from the joint state and the measured
         wrench on the robot ``Fc`` (base axes: force [N] of 2 or 3 entries, or force and moment, 6);
         advances the integrals by one sample."""
-        yd, rate = self.references(t)
-        if self.path is not None:
-            self._target[:] = self._desired(t)
-        Fc = Fc if type(Fc) is np.ndarray and Fc.shape == (6,) else _wrench(Fc)
-        out = self._fast(self._binding, -1, q, qdot, Fc, self._z, yd, rate, self._target)
-        if out is None:
-            out = self._checked(t, q, qdot, Fc, yd, rate)
-        self._z[:] = out[1]
-        self.last = out
-        return out[0]
+        if type(Fc) is not np.ndarray or Fc.shape != (6,):
+            Fc = self._padded(Fc)
+        self._t[0] = t
+        out, z = self._out, self._z
+        if self._short:
+            done = self._into(self._binding, out, q, qdot, Fc, z, self._t)
+        else:
+            self._python_references(t)
+            if self.path is not None:
+                self._target[:] = self._desired(t)
+            done = self._into(self._binding, out, q, qdot, Fc, z, self._t, self._extra, self._rate, self._target)
+        if done is None:
+            self._checked(q, qdot, Fc)
+        # the integrals' two buffers trade places: no copy
+        self._z, out[1] = out[1], z
+        self._sampled = True
+        return out[0].copy()
+
+    @property
+    def last(self) -> dict[str, np.ndarray] | None:
+        """The latest sample's ``tau``, integrals after it, loop accelerations ``a``, task velocity ``y``
+        and task wrench ``f`` (loop frame), by name; None before the first sample."""
+        if not self._sampled:
+            return None
+        return {"tau": self._out[0].copy(), "integrals": self._z.copy(),
+                **{name: o.copy() for (name, _, _), o in zip(self._step.outputs[2:], self._out[2:])}}
+
+    def _padded(self, Fc) -> np.ndarray:
+        """``Fc`` as the step's 6-vector (into a buffer for the common 2 or 3 forces)."""
+        if type(Fc) is np.ndarray and Fc.dtype == np.float64 and Fc.shape in ((2,), (3,)):
+            self._fc[2] = 0.0
+            self._fc_head[Fc.shape[0]][...] = Fc  # the moment entries stay 0
+            return self._fc
+        return _wrench(Fc)
 
     def _desired(self, t: float) -> np.ndarray:
         got = self.path(t)
@@ -305,15 +343,20 @@ class Controller:
         phi = _vector3("path angles", got[2]) if len(got) == 3 else np.zeros(3)
         return np.concatenate([_vector3("path point", got[0]), _vector3("path velocity", got[1]), phi])
 
-    def _checked(self, t, q, qdot, Fc, yd, rate):
-        if not all(np.isfinite(v).all() for v in (yd, rate, self._target)):
-            raise HybridError(f"the references at t = {t} s are not finite: yd = {yd}, rate = {rate}")
-        out = self._step(q, qdot, Fc, self._z, yd, rate, self._target, *self._params, singular_tol=self.singular_tol)
-        return tuple(out[name] for name, _, _ in self._step.outputs)
+    def _checked(self, q, qdot, Fc) -> None:
+        """The general path: any array-like input, and the error that names the cause."""
+        t = self._t[0]
+        if not all(np.isfinite(v).all() for v in (self._t, self._extra, self._rate, self._target)):
+            raise HybridError(f"the references at t = {t} s are not finite: values {self._extra}, rates "
+                              f"{self._rate}, desired point {self._target}")
+        got = self._step(q, qdot, Fc, self._z, self._t, self._extra, self._rate, self._target, *self._params,
+                         singular_tol=self.singular_tol)
+        for (name, _, _), o in zip(self._step.outputs, self._out):
+            o[:] = got[name].ravel()
 
     def measure(self, q, qdot, Fc) -> Measurement:
         """What the controller measures at ``q, qdot, Fc`` (see :class:`Measurement`)."""
-        out = self._measure(q, qdot, _wrench(Fc), self._params[3], self._params[4])
+        out = self._measure(q, qdot, _wrench(Fc), self._params[4], self._params[5])
         return Measurement(out["p"], out["v"], out["task_velocity"], out["task_wrench"])
 
 

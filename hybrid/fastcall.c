@@ -14,7 +14,8 @@
  *   #define HYBRID_MODULE ...             the module's name (its cache key)
  *
  * bind(symbol, n_state, params, singular_tol) fixes the trailing inputs (the parameters);
- * call(binding, which, *states) takes the leading ones. Anything off the fast path (lists,
+ * call(binding, which, *states) takes the leading ones and returns new arrays;
+ * call_into(binding, outs, *states) writes the outputs into the caller's arrays instead. Anything off the fast path (lists,
  * other dtypes, strided or byte-swapped arrays, N states, a non-OK status) returns None, and
  * the Python caller takes its checked path, which raises the descriptive error. A binding is
  * read-only once made, so concurrent calls from threads are safe.
@@ -164,10 +165,57 @@ static PyObject *call(PyObject *self, PyObject *const *args, Py_ssize_t nargs) {
     return all;
 }
 
+/* the data of a writable 1-D C-contiguous aligned native float64 array of n values, else NULL */
+static double *writable(PyObject *obj, Py_ssize_t n) {
+    if (!PyArray_Check(obj) || !PyArray_ISWRITEABLE((PyArrayObject *)obj)) return NULL;
+    return (double *)vector(obj, n);
+}
+
+/* call_into(binding, outs, *states) -> True (outputs written into the arrays of the list or tuple
+ * outs), or None off the fast path (outputs untouched when the function failed) */
+static PyObject *call_into(PyObject *self, PyObject *const *args, Py_ssize_t nargs) {
+    const double *in[HYBRID_FAST_MAX_ARGS];
+    double buf[HYBRID_FAST_MAX_OUT];
+    double *out[HYBRID_FAST_MAX_ARGS], *dest[HYBRID_FAST_MAX_ARGS];
+    int i, k;
+    Py_ssize_t offset = 0;
+    (void)self;
+    if (nargs < 2 || !(PyList_Check(args[1]) || PyTuple_Check(args[1]))) {
+        PyErr_SetString(PyExc_TypeError, "fastcall.call_into takes (binding, outs, *states)");
+        return NULL;
+    }
+    const binding *b = PyCapsule_GetPointer(args[0], CAPSULE);
+    if (b == NULL) return NULL;
+    const fast_function *f = b->f;
+    PyObject *outs = args[1];
+    if (nargs - 2 != b->n_state || PySequence_Fast_GET_SIZE(outs) != f->n_out) Py_RETURN_NONE;
+    for (i = 0; i < b->n_state; ++i) {
+        in[i] = vector(args[2 + i], f->in_size[i]);
+        if (in[i] == NULL) Py_RETURN_NONE;
+    }
+    for (i = b->n_state; i < f->n_in; ++i) in[i] = b->params[i];
+    for (k = 0; k < f->n_out; ++k) {
+        Py_ssize_t size = f->out_shape[k][0] * (f->out_shape[k][1] ? f->out_shape[k][1] : 1);
+        dest[k] = writable(PySequence_Fast_GET_ITEM(outs, k), size);
+        if (dest[k] == NULL) Py_RETURN_NONE;
+        out[k] = buf + offset;
+        offset += size;
+    }
+    /* computed into a local buffer first: an output array may also be an input */
+    if (f->fn(in, b->tol, out) != 0) Py_RETURN_NONE;
+    for (k = 0; k < f->n_out; ++k) {
+        Py_ssize_t size = f->out_shape[k][0] * (f->out_shape[k][1] ? f->out_shape[k][1] : 1);
+        memcpy(dest[k], out[k], (size_t)size * sizeof(double));
+    }
+    Py_RETURN_TRUE;
+}
+
 static PyMethodDef methods[] = {
     {"bind", bind, METH_VARARGS, "bind(symbol, n_state, params, singular_tol) -> binding"},
     {"call", (PyCFunction)(void (*)(void))call, METH_FASTCALL,
      "call(binding, which, *states) -> output which, all outputs (which=-1), or None off the fast path"},
+    {"call_into", (PyCFunction)(void (*)(void))call_into, METH_FASTCALL,
+     "call_into(binding, outs, *states) -> True (outputs written into outs), or None off the fast path"},
     {NULL, NULL, 0, NULL},
 };
 

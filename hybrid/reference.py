@@ -258,7 +258,7 @@ class NumpyController:
     def __call__(self, t, q, qdot, Fc):
         from .errors import NonFiniteError, SingularConfigurationError
 
-        exp = self.exp
+        exp, Fc = self.exp, np.asarray(Fc, float)[:2]  # the planar force of a (f, m) wrench
         r, J, _ = kinematics(q, qdot, self.arm)
         rdot = J @ qdot
         R, _ = frame(self.kind, r, rdot, self.surface)

@@ -241,13 +241,17 @@ def compiled_law_unit(chain: rb.Chain, name: str, spec, axes: tuple[int, ...]) -
 
 
 @cache
-def compiled_controller_unit(chain: rb.Chain, name: str, spec, axes: tuple[int, ...]) -> Unit:
-    """One control sample (measurement, loops, law) of ``chain`` on the surface ``spec``, compiled."""
+def compiled_controller_unit(chain: rb.Chain, name: str, spec, axes: tuple[int, ...], desired_frame: bool = False,
+                             position_error: bool = False) -> Unit:
+    """One control sample (measurement, loops, law) of ``chain`` on the surface ``spec``, compiled;
+    the loop frame at the desired point and the position-error loops are compiled-in variants."""
     from codegen.robot_unit import build_controller_unit, c_identifier
 
-    prefix = c_identifier(f"hybrid_{name}_{spec.kind}_controller")
-    return _compiled(prefix, {"chain": _chain_key(chain), "surface": spec.key(), "axes": list(axes)},
-                     lambda: build_controller_unit(chain, spec, axes, prefix, robot_info(chain, name)))
+    variant = {"desired_frame": desired_frame, "position_error": position_error}
+    suffix = "".join(f"_{k}" for k, on in variant.items() if on)
+    prefix = c_identifier(f"hybrid_{name}_{spec.kind}_controller{suffix}")
+    return _compiled(prefix, {"chain": _chain_key(chain), "surface": spec.key(), "axes": list(axes), **variant},
+                     lambda: build_controller_unit(chain, spec, axes, prefix, robot_info(chain, name), variant))
 
 
 def robot_info(chain: rb.Chain, name: str) -> dict:

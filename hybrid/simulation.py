@@ -142,7 +142,7 @@ def run(exp: Experiment, plant, controller) -> SimulationResult:
         q, qdot = x[0:nq].copy(), x[nq:2 * nq].copy()
         # the sensor's reading: its spring and damper between arm tip and sensor tip
         out = plant.outputs(x[None, :])[0]
-        Fc = np.array([out[OUT["Fc_x"]], out[OUT["Fc_y"]]])
+        Fc = np.array([out[OUT["Fc_x"]], out[OUT["Fc_y"]], 0.0, 0.0, 0.0, 0.0])  # a wrench: (f, m), base axes
         try:
             tau = np.ascontiguousarray(controller(t, q, qdot, Fc), dtype=float)
             if not np.isfinite(tau).all():

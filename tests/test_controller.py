@@ -178,9 +178,9 @@ def test_ur5_loops_and_torque_sample_by_sample(rng, robots, scheme, option):
             r_err = blockdiag(R) @ np.concatenate([p_d - p, euler_map(phi) @ dphi])
         a, z = loops_by_hand(y, f, z, yd, rate, per_axis, sigma, T, r_err, kw.get("integral_limit", np.inf),
                              kw.get("contact_loss"))
-        np.testing.assert_allclose(ctrl.last[3], y, rtol=1e-12, atol=1e-12)
-        np.testing.assert_allclose(ctrl.last[4], f, rtol=1e-12, atol=1e-12)
-        np.testing.assert_allclose(ctrl.last[2], a, rtol=1e-10, atol=1e-10)
+        np.testing.assert_allclose(ctrl.last["y"], y, rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(ctrl.last["f"], f, rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(ctrl.last["a"], a, rtol=1e-10, atol=1e-10)
         np.testing.assert_allclose(ctrl.state, z, rtol=1e-12, atol=1e-14)
         gravity = pin.computeGeneralizedGravity(model, data, q)
         tau_ref = hand_torque(scheme, J, Jdqd, B, n, gravity, R, Rd, qd, a, Fc, yd, sigma, per_axis)
@@ -224,7 +224,7 @@ def test_closed_loop_task_acceleration_equals_the_loops_command(robots):
         J, Jdqd, _, _, p = pinocchio_terms(model, fid, q, qd, damping)
         v, vdot = J @ qd, J @ qdd(q, qd, tau) + Jdqd
         R, Rd = ref.spatial_frame(SPHERE, p, v[:3], (0, 0, 1))
-        worst = max(worst, np.abs(blockdiag(R) @ vdot + blockdiag(Rd) @ v - ctrl.last[2]).max())
+        worst = max(worst, np.abs(blockdiag(R) @ vdot + blockdiag(Rd) @ v - ctrl.last["a"]).max())
         for _ in range(10):  # RK4 on (q, q') with tau held
             k1 = (qd, qdd(q, qd, tau))
             k2 = (qd + h / 2 * k1[1], qdd(q + h / 2 * k1[0], qd + h / 2 * k1[1], tau))
@@ -232,7 +232,7 @@ def test_closed_loop_task_acceleration_equals_the_loops_command(robots):
             k4 = (qd + h * k3[1], qdd(q + h * k3[0], qd + h * k3[1], tau))
             q = q + h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
             qd = qd + h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
-    assert np.abs(ctrl.last[2]).max() > 0.1  # the loops were busy
+    assert np.abs(ctrl.last["a"]).max() > 0.1  # the loops were busy
     assert worst < 1e-8
 
 
