@@ -11,6 +11,7 @@ from .errors import HybridError, NativeBuildError, NonFiniteError, SingularConfi
 from .experiment import Contact, Experiment, Gains, Sensor, Step, paper_experiment
 from .law import DecouplingLaw, OperationalSpace, arm_terms, decoupling_law, operational_space, task_frame
 from .parameters import Arm, Circle, Plane, paper_arm
+from .performance import metrics
 from .results import SimulationResult
 from .robot import Robot
 from .schemes import SCHEMES, Khatib, Scheme, TaskDecoupling
@@ -23,6 +24,6 @@ __all__ = [
     "HybridError", "ImplicitSurface", "Khatib", "Measurement", "NativeBuildError", "NonFiniteError",
     "OperationalSpace", "Plane", "Reference", "Robot", "SCHEMES", "Scheme", "Sensor", "SimulationError",
     "SimulationResult", "SingularConfigurationError", "SpatialDecouplingLaw", "Sphere", "Step", "TaskDecoupling",
-    "TaskFrameError", "URDFError", "arm_terms", "decoupling_law", "operational_space", "paper_arm",
+    "TaskFrameError", "URDFError", "arm_terms", "decoupling_law", "metrics", "operational_space", "paper_arm",
     "paper_experiment", "simulate", "task_frame",
 ]

@@ -10,7 +10,22 @@ import numpy as np
 
 from .experiment import Experiment
 from .law import planar_unit
-from .metrics import PLANT_OUTPUTS
+from .native import manifest
+
+
+def _plant_record() -> dict:
+    """Names and units of the planar plant's state and output record, from the unit's manifest."""
+    functions = {f["name"]: f for f in manifest("sympy")["functions"]}
+    x = functions["plant_rhs_circle"]["inputs"][0]
+    tau = functions["plant_rhs_circle"]["inputs"][1]
+    y = functions["plant_outputs_circle"]["outputs"][0]
+    return {"outputs": tuple(y["names"]), "output_units": tuple(y["unit"]), "state": tuple(x["names"]),
+            "state_units": tuple(x["unit"]), "nq": tau["size"]}
+
+
+PLANT = _plant_record()
+#: columns of the plant output record (``codegen.model.PLANT_OUTPUTS``, read from the manifest)
+PLANT_OUTPUTS = PLANT["outputs"]
 
 
 class NativePlant:

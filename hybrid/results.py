@@ -13,7 +13,7 @@ import numpy as np
 from . import files
 from .errors import HybridError
 from .experiment import Experiment
-from .metrics import PLANT, PLANT_OUTPUTS
+from .plants import PLANT, PLANT_OUTPUTS
 
 OUT = {name: i for i, name in enumerate(PLANT_OUTPUTS)}
 

@@ -17,8 +17,8 @@ from .controller import Controller
 from .errors import HybridError, NonFiniteError
 from .experiment import Experiment
 from .loops import model_error_note
-from .metrics import PLANT, PLANT_OUTPUTS, compute_metrics
-from .plants import NativePlant
+from .performance import run_metrics
+from .plants import PLANT, PLANT_OUTPUTS, NativePlant
 from .results import OUT, SimulationResult
 
 
@@ -197,5 +197,5 @@ def _result(exp: Experiment, plant, states: np.ndarray, taus: np.ndarray, metric
                            np.array([exp.force_reference(ti) for ti in t]),
                            np.array([exp.speed_reference(ti) for ti in t]))
     if metrics:
-        res.metrics = compute_metrics(res)
+        res.metrics = run_metrics(res)
     return res

@@ -9,7 +9,8 @@ import pytest
 
 import hybrid
 from codegen.model import PLANT_OUTPUTS
-from hybrid import metrics
+from hybrid import plants
+from hybrid.performance import settling_time
 
 EXACT = dict(model_error=0.0, viscous_compensation=1.0, contact=hybrid.Contact(friction=0.0))
 
@@ -19,7 +20,7 @@ def last(res, y, span=0.2):
 
 
 def test_output_names_mirror_the_model():
-    assert metrics.PLANT_OUTPUTS == PLANT_OUTPUTS
+    assert plants.PLANT_OUTPUTS == PLANT_OUTPUTS
 
 
 @pytest.mark.parametrize("speed", [0.4, 0.6])
@@ -123,4 +124,25 @@ def test_desired_frame_with_exact_curvature_matches_the_actual_frame_on_track():
 def test_task_axis_metrics_on_a_synthetic_step():
     t = np.linspace(0, 1, 1001)
     y = 1 - np.exp(-t / 0.1)
-    assert metrics.settling_time(t, y, 1.0, 0.02) == pytest.approx(0.1 * np.log(50), abs=2e-3)
+    assert settling_time(t, y, 1.0, 0.02) == pytest.approx(0.1 * np.log(50), abs=2e-3)
+
+
+def test_metrics_of_any_series_read_the_steps_from_the_references():
+    """hybrid.metrics on a run's bare time series (steps inferred) equals the run's own metrics; on a
+    synthetic second-order force response the overshoot is the analytic one."""
+    res = hybrid.simulate(hybrid.paper_experiment(duration=1.2))
+    m = hybrid.metrics(res.t, res.force_normal, res.velocity_tangential, res.force_reference,
+                       res.speed_reference, penetration=res.penetration, contact_force=res.contact_force,
+                       tau=res.tau)
+    assert json.dumps(m) == json.dumps(res.metrics)
+    zeta, wn = 0.3, 40.0
+    t = np.linspace(0, 2, 20001)
+    s = np.clip(t - 0.5, 0, None)
+    wd = wn * np.sqrt(1 - zeta**2)
+    unit = 1 - np.exp(-zeta * wn * s) * (np.cos(wd * s) + zeta / np.sqrt(1 - zeta**2) * np.sin(wd * s))
+    F = 10 + 10 * unit
+    m = hybrid.metrics(t, F, np.full_like(t, 0.3), np.where(t >= 0.5, 20.0, 10.0), np.full_like(t, 0.3))
+    assert m["force_overshoot_percent"] == pytest.approx(100 * np.exp(-zeta * np.pi / np.sqrt(1 - zeta**2)), rel=1e-3)
+    assert np.isnan(m["speed_overshoot_after_speed_step_m_per_s"]) and np.isnan(m["contact_losses"])
+    with pytest.raises(hybrid.HybridError, match="one value per time sample"):
+        hybrid.metrics(t, F[:-1], F, F, F)
