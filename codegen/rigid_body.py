@@ -291,7 +291,7 @@ def link_inertias(chain: Chain, frames: Frames, params) -> list[Inertia]:
     return [b.about_origin() for b in link_bodies(chain, frames, params)]
 
 
-def _gravity_and_damping(chain: Chain, params):
+def gravity_and_damping(chain: Chain, params):
     base = len(INERTIAL) * chain.n
     damping = [params[base + i] for i in range(chain.n)]
     g = ca.vertcat(*(params[base + chain.n + i] for i in range(3)))
@@ -316,7 +316,7 @@ def rnea(chain: Chain, frames: Frames, params, qd, qdd=None, bodies=None) -> ca.
     """``tau = B q'' + n(q, q')`` by recursive Newton-Euler (``q'' = 0`` when ``qdd`` is None):
     Coriolis/centrifugal, gravity and joint viscosity ``damping_i q'_i``. ``bodies`` (anything with
     ``wrench``) reuses inertias already formed, e.g. the CRBA's."""
-    damping, g = _gravity_and_damping(chain, params)
+    damping, g = gravity_and_damping(chain, params)
     inertias = bodies or link_bodies(chain, frames, params)
     vs, bias = velocities_and_bias(frames, qd)
     # a_i = c_i + sum_{j <= i} S_j q''_j + a_0, with gravity as the base's fictitious acceleration

@@ -107,6 +107,18 @@ def build_controller_unit(chain: rb.Chain, spec, axes: tuple[int, ...], prefix: 
                       prefix, info, variant)
 
 
+def build_plant_unit(chain: rb.Chain, spec, prefix: str, info: dict) -> Unit:
+    """The 3-D experiment's plant (arm, sensor, contact on ``spec``) with its RK4 entry point."""
+    from .spatial_plant import plant_kernels
+
+    return assemble(prefix, "casadi", plant_kernels(chain, spec),
+                    f"plant of the 3-D experiment: the {chain.n}-joint arm '{info.get('robot', prefix)}', a 3-D "
+                    f"elastic sensor and penalty contact with friction on a {spec.kind}",
+                    info={"robot": info, "surface": {"kind": spec.kind, "parameters": list(spec.parameters),
+                                                      "phi": str(spec.phi)}},
+                    tool=f"CasADi {ca.__version__}", defines={"NQ": chain.n, "NX": 2 * chain.n + 6})
+
+
 def _task_unit(kernels, what: str, chain: rb.Chain, spec, axes, prefix: str, info: dict,
                variant: dict | None = None) -> Unit:
     from .task_law import AXIS_NAMES

@@ -18,12 +18,14 @@ from .schemes import SCHEMES, Khatib, Scheme, TaskDecoupling
 from .simulation import SimulationError, simulate
 from .spatial_law import SpatialDecouplingLaw
 from .surfaces import Cylinder, ImplicitSurface, Sphere
+from .sweeps import sweep
+from .tracing import TracingExperiment, tracing_experiment, ur5
 
 __all__ = [
     "Arm", "Circle", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw", "Experiment", "Gains",
     "HybridError", "ImplicitSurface", "Khatib", "Measurement", "NativeBuildError", "NonFiniteError",
     "OperationalSpace", "Plane", "Reference", "Robot", "SCHEMES", "Scheme", "Sensor", "SimulationError",
     "SimulationResult", "SingularConfigurationError", "SpatialDecouplingLaw", "Sphere", "Step", "TaskDecoupling",
-    "TaskFrameError", "URDFError", "arm_terms", "decoupling_law", "metrics", "operational_space", "paper_arm",
-    "paper_experiment", "simulate", "task_frame",
+    "TaskFrameError", "TracingExperiment", "URDFError", "arm_terms", "decoupling_law", "metrics", "operational_space",
+    "paper_arm", "paper_experiment", "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",
 ]

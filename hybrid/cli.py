@@ -82,9 +82,10 @@ def build_parser() -> argparse.ArgumentParser:
     g.add_argument("--force", action="store_true", help="overwrite files with other content")
     g.set_defaults(func=_generate)
 
-    from . import bench, experiment_cli
+    from . import bench, experiment_cli, sweep_cli
 
     experiment_cli.add_parser(sub)
+    sweep_cli.add_parser(sub)
     bench.add_parser(sub)
     return p
 

@@ -10,8 +10,10 @@ import numpy as np
 from .errors import HybridError
 from .law import SINGULAR_TOL, check_singular_tol
 from .parameters import Arm, Circle, Plane, _finite, _point, paper_arm
+from .schemes import SCHEMES
 
-CONTROLLERS = ("task", "khatib")
+#: the schemes the NumPy reference path implements
+NUMPY_SCHEMES = ("task", "khatib")
 FRAMES = ("actual", "desired")
 BACKENDS = ("sympy", "casadi", "numpy")
 
@@ -30,8 +32,14 @@ class Step:
     def __call__(self, t: float) -> float:
         return self.before if t < self.at else self.after
 
-    def integral(self, t: float) -> float:
-        """``int_0^t`` of the reference (arc length for a speed) [unit s]."""
+    def sampled(self, t: np.ndarray) -> np.ndarray:
+        """The reference at each time of ``t`` [s] (one array operation)."""
+        return np.where(np.asarray(t) < self.at, self.before, self.after).astype(float)
+
+    def integral(self, t):
+        """``int_0^t`` of the reference (arc length for a speed) [unit s]; ``t`` a time or an array."""
+        if isinstance(t, np.ndarray):
+            return self.before * np.minimum(t, self.at) + self.after * np.maximum(0.0, t - self.at)
         return self.before * min(t, self.at) + self.after * max(0.0, t - self.at)
 
 
@@ -122,8 +130,11 @@ class Experiment:
 
     def __post_init__(self):
         self._check_types()
-        if self.controller not in CONTROLLERS:
-            raise HybridError(f"unknown controller {self.controller!r}; choose one of {CONTROLLERS}")
+        if self.controller not in SCHEMES:
+            raise HybridError(f"unknown controller {self.controller!r}; choose one of {tuple(SCHEMES)}")
+        if self.backend == "numpy" and self.controller not in NUMPY_SCHEMES:
+            raise HybridError(f"the NumPy reference runs {' and '.join(NUMPY_SCHEMES)} only; use backend 'sympy' "
+                              f"for {self.controller}")
         if self.frame not in FRAMES:
             raise HybridError(f"unknown frame {self.frame!r}; choose one of {FRAMES}")
         if self.backend not in BACKENDS:
@@ -135,36 +146,8 @@ class Experiment:
                               "hybrid.Circle or a 2-D hybrid.Plane")
         if self.elbow not in (1, -1):
             raise HybridError(f"elbow = {self.elbow}; give +1 (q2 > 0) or -1 (q2 < 0)")
-        _finite("Experiment", duration=self.duration, step=self.step, sample_time=self.sample_time)
         check_singular_tol("Experiment", self.singular_tol)
-        if self.duration <= 0:
-            raise HybridError(f"duration = {self.duration} s; give a positive duration")
-        if self.step <= 0 or self.sample_time <= 0:
-            raise HybridError(f"step = {self.step} s and sample_time = {self.sample_time} s must be positive")
-        ratio = self.sample_time / self.step
-        if not math.isfinite(ratio) or ratio > 1e9:
-            raise HybridError(f"step = {self.step} s is too small for sample_time = {self.sample_time} s "
-                              "(over 1e9 steps a sample); give a step of at least sample_time / 1e9")
-        if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
-            raise HybridError(f"sample_time = {self.sample_time} s is not a whole multiple of step = "
-                              f"{self.step} s; choose step = sample_time / k for a whole k")
-        # fastest plant mode: sensor mass on the contact (and sensor) spring-dampers
-        rate = max(math.sqrt((self.contact.stiffness + self.sensor.stiffness) / self.sensor.mass),
-                   (self.contact.damping + self.sensor.damping) / self.sensor.mass)
-        if self.step * rate > 1.0:
-            raise HybridError(
-                f"step = {self.step} s is too large for the contact: its fastest mode is {rate:.3g} rad/s "
-                f"and RK4 needs step * rate <= 1 for accuracy; use step <= {1.0 / rate:.2e} s")
-        if self.model_error <= -1 or self.viscous_compensation < 0:
-            raise HybridError(f"model_error = {self.model_error} must be > -1 and viscous_compensation = "
-                              f"{self.viscous_compensation} >= 0")
-        if abs(self.duration / self.sample_time - round(self.duration / self.sample_time)) > 1e-9 * self.n_samples:
-            k = max(1, round(self.duration / self.sample_time))
-            raise HybridError(f"duration = {self.duration} s is not a whole number of samples of "
-                              f"{self.sample_time} s; give duration = {k * self.sample_time:g} s")
-        from .loops import check_loops
-
-        check_loops(self)
+        check_timing(self)
 
     def _check_types(self) -> None:
         """Every field of the kind it must be: a bool is a bool, a reference a Step or a number."""
@@ -245,6 +228,42 @@ class Experiment:
             d[k] = typ(**d[k])
         d["start_point"] = tuple(d["start_point"])
         return cls(surface=surface, **d)
+
+
+
+def check_timing(exp) -> None:
+    """The run's timing and physics settings, checked alike for every experiment: duration, RK4 step
+    and sample time (whole multiples, fast enough for the contact), model error, stable loops."""
+    owner = type(exp).__name__
+    _finite(owner, duration=exp.duration, step=exp.step, sample_time=exp.sample_time)
+    if exp.duration <= 0:
+        raise HybridError(f"duration = {exp.duration} s; give a positive duration")
+    if exp.step <= 0 or exp.sample_time <= 0:
+        raise HybridError(f"step = {exp.step} s and sample_time = {exp.sample_time} s must be positive")
+    ratio = exp.sample_time / exp.step
+    if not math.isfinite(ratio) or ratio > 1e9:
+        raise HybridError(f"step = {exp.step} s is too small for sample_time = {exp.sample_time} s "
+                          "(over 1e9 steps a sample); give a step of at least sample_time / 1e9")
+    if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
+        raise HybridError(f"sample_time = {exp.sample_time} s is not a whole multiple of step = "
+                          f"{exp.step} s; choose step = sample_time / k for a whole k")
+    # fastest plant mode: sensor mass on the contact (and sensor) spring-dampers
+    rate = max(math.sqrt((exp.contact.stiffness + exp.sensor.stiffness) / exp.sensor.mass),
+               (exp.contact.damping + exp.sensor.damping) / exp.sensor.mass)
+    if exp.step * rate > 1.0:
+        raise HybridError(
+            f"step = {exp.step} s is too large for the contact: its fastest mode is {rate:.3g} rad/s "
+            f"and RK4 needs step * rate <= 1 for accuracy; use step <= {1.0 / rate:.2e} s")
+    if exp.model_error <= -1 or exp.viscous_compensation < 0:
+        raise HybridError(f"model_error = {exp.model_error} must be > -1 and viscous_compensation = "
+                          f"{exp.viscous_compensation} >= 0")
+    if abs(exp.duration / exp.sample_time - round(exp.duration / exp.sample_time)) > 1e-9 * exp.n_samples:
+        k = max(1, round(exp.duration / exp.sample_time))
+        raise HybridError(f"duration = {exp.duration} s is not a whole number of samples of "
+                          f"{exp.sample_time} s; give duration = {k * exp.sample_time:g} s")
+    from .loops import check_loops
+
+    check_loops(exp)
 
 
 def paper_experiment(**overrides) -> Experiment:

@@ -13,44 +13,115 @@ from .law import planar_unit
 from .native import manifest
 
 
-def _plant_record() -> dict:
-    """Names and units of the planar plant's state and output record, from the unit's manifest."""
-    functions = {f["name"]: f for f in manifest("sympy")["functions"]}
-    x = functions["plant_rhs_circle"]["inputs"][0]
-    tau = functions["plant_rhs_circle"]["inputs"][1]
-    y = functions["plant_outputs_circle"]["outputs"][0]
+def plant_record(rhs: dict, outputs: dict) -> dict:
+    """Names and units of a plant's state and output record, from its manifest entries."""
+    x, tau, y = rhs["inputs"][0], rhs["inputs"][1], outputs["outputs"][0]
     return {"outputs": tuple(y["names"]), "output_units": tuple(y["unit"]), "state": tuple(x["names"]),
             "state_units": tuple(x["unit"]), "nq": tau["size"]}
 
 
-PLANT = _plant_record()
-#: columns of the plant output record (``codegen.model.PLANT_OUTPUTS``, read from the manifest)
+def _planar_record() -> dict:
+    functions = {f["name"]: f for f in manifest("sympy")["functions"]}
+    return plant_record(functions["plant_rhs_circle"], functions["plant_outputs_circle"])
+
+
+#: the planar plant's record
+PLANT = _planar_record()
+#: columns of the planar plant's output record (``codegen.model.PLANT_OUTPUTS``, read from the manifest)
 PLANT_OUTPUTS = PLANT["outputs"]
 
 
-class NativePlant:
-    """Arm + sensor + surface, integrated by the compiled RK4 (the ``integrator`` of ``plant_rhs``)."""
+class Plant:
+    """What the runner needs of a plant besides ``advance`` and ``outputs``: the sensor's reading."""
+
+    #: the output-record columns of the sensor's force on the robot (base axes)
+    force_columns: tuple[str, ...] = ("Fc_x", "Fc_y")
+
+    def sensor_wrench(self, x: np.ndarray) -> np.ndarray:
+        """The sensor's reading at the state ``x`` (what the controller is given at a sample), as the
+        wrench ``(f, m)`` on the robot, base axes."""
+        row = self.outputs(x[None, :])[0]
+        Fc = np.zeros(6)
+        Fc[:len(self.force_columns)] = [row[self.record["outputs"].index(c)] for c in self.force_columns]
+        return Fc
+
+
+class CompiledPlant(Plant):
+    """A plant whose state derivative ``plant_rhs`` (with its RK4 entry point) and output record
+    ``plant_outputs`` are generated C; ``held`` are the inputs after ``(x, tau)``, ``shown`` those
+    after ``x`` of the outputs."""
+
+    def __init__(self, rhs, outputs, held: tuple, shown: tuple, step: float, force_columns: tuple[str, ...]):
+        self._rhs, self._outputs, self._held, self._shown = rhs, outputs, held, shown
+        self.record = plant_record(rhs.entry, outputs.entry)
+        self.nq, self.h, self.force_columns = self.record["nq"], step, force_columns
+        self._done = rhs.unit.module.ffi.new("int *")
+        self._force = [self.record["outputs"].index(c) for c in force_columns]
+        # one state through the one-state entry point (a sample's reading in about a microsecond)
+        self._fast, self._binding = outputs.fast_bind(1, *shown)
+
+    def advance(self, x: np.ndarray, tau: np.ndarray, nsteps: int, trajectory: np.ndarray) -> int:
+        """Advance ``x`` in place, writing each step's state to ``trajectory``; steps done."""
+        self._rhs.integrate(x, tau, *self._held, h=self.h, nsteps=nsteps, trajectory=trajectory, done=self._done)
+        return self._done[0]
+
+    def outputs(self, states: np.ndarray) -> np.ndarray:
+        """The output record of each state, in one native call."""
+        states = np.ascontiguousarray(states)
+        out = np.empty((len(states), len(self.record["outputs"])))
+        # a partial run's last states may be non-finite: their records are kept as they come
+        self._outputs.batch_into(states, *self._shown, out, status=np.empty(len(states), dtype=np.intc))
+        return out
+
+    def sensor_wrench(self, x: np.ndarray) -> np.ndarray:
+        row = self._fast(self._binding, 0, x)
+        if row is None:  # off the fast path (a non-finite state): the record as the batch gives it
+            row = self.outputs(x[None, :])[0]
+        Fc = np.zeros(6)
+        Fc[:len(self._force)] = row[self._force]
+        return Fc
+
+
+class NativePlant(CompiledPlant):
+    """The paper's plant: arm + 2-D sensor + surface (NOTES section 5)."""
 
     def __init__(self, exp: Experiment):
         unit = planar_unit(exp.backend)
         kind = exp.surface.kind
-        self._rhs = unit.function(f"plant_rhs_{kind}")
-        self._outputs = unit.function(f"plant_outputs_{kind}")
-        self._arm, self._plant, self._surface = exp.arm.as_array(), exp.plant_array(), exp.surface.as_array()
-        self._done = unit.module.ffi.new("int *")
-        self.h = exp.step
+        arm, plant, surface = exp.arm.as_array(), exp.plant_array(), exp.surface.as_array()
+        super().__init__(unit.function(f"plant_rhs_{kind}"), unit.function(f"plant_outputs_{kind}"),
+                         (arm, plant, surface), (arm, plant, surface), exp.step, ("Fc_x", "Fc_y"))
+        self._arm = exp.arm
 
-    def advance(self, x: np.ndarray, tau: np.ndarray, nsteps: int, trajectory: np.ndarray) -> int:
-        """Advance ``x`` in place, writing each step's state to ``trajectory``; steps done."""
-        self._rhs.integrate(x, tau, self._arm, self._plant, self._surface, h=self.h, nsteps=nsteps,
-                            trajectory=trajectory, done=self._done)
-        return self._done[0]
+    conditioning_name = "2|det J|/|J|_F^2"
 
-    def outputs(self, states: np.ndarray) -> np.ndarray:
-        """The output record (``PLANT_OUTPUTS``) of each state, in one native call."""
-        states = np.ascontiguousarray(states)
-        out = np.empty((len(states), len(PLANT_OUTPUTS)))
-        # a partial run's last states may be non-finite: their records are kept as they come
-        self._outputs.batch_into(states, self._arm, self._plant, self._surface, out,
-                                 status=np.empty(len(states), dtype=np.intc))
-        return out
+    def conditioning(self, q) -> np.ndarray:
+        """``2 |det J| / |J|_F^2`` at ``q`` (one state, or one per row)."""
+        return self._arm.conditioning(np.asarray(q, float).T)
+
+
+class SpatialPlant(CompiledPlant):
+    """The 3-D experiment's plant: a URDF arm, 3-D sensor, contact on any surface (NOTES section 10)."""
+
+    def __init__(self, exp):
+        from .robot import compiled_plant_unit
+
+        spatial = exp.surface.lift()
+        unit = compiled_plant_unit(exp.robot.chain, exp.robot.name, spatial.spec())
+        robot, plant, surface = exp.robot.as_array(), exp.plant_array(), spatial.as_array()
+        super().__init__(unit.function("plant_rhs"), unit.function("plant_outputs"), (robot, plant, surface),
+                         (robot, plant, surface, np.asarray(exp.reference, float)), exp.step,
+                         ("Fc_x", "Fc_y", "Fc_z"))
+        self._robot = exp.robot
+
+    conditioning_name = "6/(|J|_F |J^+|_F)"
+
+    def conditioning(self, q) -> np.ndarray:
+        """``6 / (|J|_F |J^+|_F)`` of the tip's frame Jacobian at ``q`` (one state, or one per row)."""
+        from .law import robot_terms
+
+        rows = np.atleast_2d(np.asarray(q, float))
+        J = robot_terms(self._robot, rows, np.zeros_like(rows))["J"]
+        s = np.linalg.svd(J, compute_uv=False)
+        cond = J.shape[1] / np.sqrt(np.sum(s**2, axis=-1) * np.sum(1.0 / s**2, axis=-1))
+        return cond if np.ndim(q) == 2 else cond[0]

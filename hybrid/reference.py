@@ -214,11 +214,28 @@ def spatial_decoupling_law(J, Jdqd, B, n, R_L, Rd_L, qd, a, Fc, tau0, axes, curv
 
 
 class NumpyPlant:
-    """The paper's plant (arm, 2-D sensor, surface) stepped by :func:`plant_advance`."""
+    """The paper's plant (arm, 2-D sensor, surface) stepped by :func:`plant_advance` (the runner's
+    plant interface: see :class:`hybrid.plants.Plant`)."""
 
     def __init__(self, exp):
+        from .plants import PLANT
+
         self.kind, self.h = exp.surface.kind, exp.step
         self.arm, self.plant, self.surface = exp.arm.as_array(), exp.plant_array(), exp.surface.as_array()
+        self.record, self.nq = PLANT, 2
+
+    def sensor_wrench(self, x):
+        """The sensor's force at the state ``x``, as a wrench (f, m)."""
+        Fc = np.zeros(6)
+        Fc[:2] = sensor_force(x, self.arm, self.plant)
+        return Fc
+
+    conditioning_name = "2|det J|/|J|_F^2"
+
+    def conditioning(self, q):
+        q = np.atleast_2d(q)
+        out = np.array([conditioning(qi, self.arm) for qi in q])
+        return out if len(q) > 1 or np.ndim(q) == 2 and q.shape[0] > 1 else out[0]
 
     def advance(self, x, tau, nsteps, trajectory):
         for k in range(nsteps):

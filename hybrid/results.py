@@ -34,21 +34,30 @@ class SimulationResult:
     force_reference: np.ndarray
     speed_reference: np.ndarray
     metrics: dict = field(default_factory=dict)
+    #: the plant's record: names and units of the state and output columns, number of joints
+    record: dict = field(default_factory=lambda: PLANT)
 
-    UNITS = {"t": "s", "state": ", ".join(PLANT["state_units"]), "tau": "N m",
-             "force_reference": "N", "speed_reference": "m/s", "outputs": ", ".join(PLANT["output_units"])}
+    @property
+    def UNITS(self) -> dict:  # noqa: N802 (a table, as before)
+        rec = self.record
+        return {"t": "s", "state": ", ".join(rec["state_units"]), "tau": "N m",
+                "force_reference": "N", "speed_reference": "m/s", "outputs": ", ".join(rec["output_units"])}
 
     @property
     def q(self):
-        return self.state[:, 0:PLANT["nq"]]
+        return self.state[:, 0:self.record["nq"]]
 
     @property
     def qdot(self):
-        return self.state[:, PLANT["nq"]:2 * PLANT["nq"]]
+        return self.state[:, self.record["nq"]:2 * self.record["nq"]]
 
     def output(self, name: str) -> np.ndarray:
-        """A column of the plant output record by name (``codegen.model.PLANT_OUTPUTS``)."""
-        return self.outputs[:, OUT[name]]
+        """A column of the plant output record by name (``result.record["outputs"]``)."""
+        try:
+            return self.outputs[:, self.record["outputs"].index(name)]
+        except ValueError:
+            names = ", ".join(self.record["outputs"])
+            raise HybridError(f"the plant records no {name!r}; it records {names}") from None
 
     @property
     def force_normal(self):
@@ -89,7 +98,7 @@ class SimulationResult:
                 np.savez_compressed(
                     f, t=self.t, state=self.state, tau=self.tau, outputs=self.outputs,
                     force_reference=self.force_reference, speed_reference=self.speed_reference,
-                    output_names=np.array(PLANT_OUTPUTS), units=json.dumps(self.UNITS),
+                    output_names=np.array(self.record["outputs"]), units=json.dumps(self.UNITS),
                     experiment=json.dumps(self.experiment.to_dict()), metrics=json.dumps(self.metrics))
 
         return files.write_with(path, write, overwrite)
@@ -100,7 +109,11 @@ class SimulationResult:
         try:
             with np.load(path, allow_pickle=False) as z:
                 arrays = {k: z[k] for k in ("t", "state", "tau", "outputs", "force_reference", "speed_reference")}
-                experiment = Experiment.from_dict(json.loads(str(z["experiment"])))
+                settings = json.loads(str(z["experiment"]))
+                if isinstance(settings, dict) and settings.get("kind") == "tracing":
+                    raise HybridError(f"{path} holds a 3-D run: its arrays load with numpy.load (names in "
+                                      "'output_names'); SimulationResult.load rebuilds paper runs only")
+                experiment = Experiment.from_dict(settings)
                 metrics = json.loads(str(z["metrics"]))
             n = len(arrays["t"])
             shapes = {"t": (n,), "state": (n, len(PLANT["state"])), "tau": (n, PLANT["nq"]),
@@ -120,12 +133,13 @@ class SimulationResult:
         """Write the time series as CSV, units in the header (atomic; refuses an existing file
         unless ``overwrite``)."""
         path = files.output_path(path)
-        cols = {"t_s": self.t, "q1_rad": self.q[:, 0], "q2_rad": self.q[:, 1],
-                "tau1_Nm": self.tau[:, 0], "tau2_Nm": self.tau[:, 1],
+        joint_units = self.record["state_units"][:self.record["nq"]]
+        cols = {"t_s": self.t, **{f"q{j + 1}_{u}": self.q[:, j] for j, u in enumerate(joint_units)},
+                **{f"tau{j + 1}_{'Nm' if u == 'rad' else 'N'}": self.tau[:, j] for j, u in enumerate(joint_units)},
                 "force_reference_N": self.force_reference, "speed_reference_m_per_s": self.speed_reference}
-        units = dict(zip(PLANT_OUTPUTS, self.UNITS["outputs"].split(", ")))
+        units = dict(zip(self.record["outputs"], self.record["output_units"]))
         cols.update({f"{n}_{units[n].replace('/', '_per_').replace(' ', '')}": self.output(n)
-                     for n in PLANT_OUTPUTS})
+                     for n in self.record["outputs"]})
         return files.write_with(path, lambda tmp: np.savetxt(
             tmp, np.column_stack(list(cols.values())), delimiter=",", header=",".join(cols), comments="",
             fmt="%.10g"), overwrite)

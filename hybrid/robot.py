@@ -171,6 +171,35 @@ class Robot:
             object.__setattr__(self, "_fast_terms", bound)
         return bound
 
+    def inverse_kinematics(self, position, rotation=None, q0=None, tol: float = 1e-10) -> np.ndarray:
+        """Joint positions putting the tip frame at ``position`` [m] (and ``rotation``, a 3x3 matrix in
+        base axes, when given), by damped least squares from ``q0`` (default: mid-range of the limits).
+        Raises :class:`HybridError` when the pose is not reached (out of reach, or a poor ``q0``)."""
+        from .law import robot_terms
+
+        p_goal = _vector("position", position, (3,))
+        R_goal = None if rotation is None else _vector("rotation", rotation, (3, 3))
+        q = np.array(self._start_guess() if q0 is None else _vector("q0", q0, (self.n,)))
+        zeros = np.zeros(self.n)
+        for _ in range(200):
+            terms = robot_terms(self, q, zeros)
+            err = p_goal - terms["r"]
+            J = terms["J"] if R_goal is not None else terms["J"][:3]
+            if R_goal is not None:
+                R = terms["rotation"]
+                # orientation error: 1/2 sum of column cross products (small-angle rotation vector)
+                err = np.concatenate([err, 0.5 * sum(np.cross(R[:, i], R_goal[:, i]) for i in range(3))])
+            if np.abs(err).max() < tol:
+                return q
+            lam = 1e-4 + np.dot(err, err)
+            q = q + J.T @ np.linalg.solve(J @ J.T + lam * np.eye(len(err)), err)
+        raise HybridError(f"inverse kinematics did not reach the pose (position {np.round(p_goal, 4).tolist()} m, "
+                          f"error {np.abs(err).max():.2g}): it may be out of reach; move it or give q0 near a solution")
+
+    def _start_guess(self) -> np.ndarray:
+        lo, hi = np.maximum(self.limits.lower, -np.pi), np.minimum(self.limits.upper, np.pi)
+        return 0.5 * (lo + hi)
+
     @property
     def unit(self) -> Unit:
         """The compiled kernels of this robot's structure (generated and compiled on first use)."""
@@ -252,6 +281,16 @@ def compiled_controller_unit(chain: rb.Chain, name: str, spec, axes: tuple[int, 
     prefix = c_identifier(f"hybrid_{name}_{spec.kind}_controller{suffix}")
     return _compiled(prefix, {"chain": _chain_key(chain), "surface": spec.key(), "axes": list(axes), **variant},
                      lambda: build_controller_unit(chain, spec, axes, prefix, robot_info(chain, name), variant))
+
+
+@cache
+def compiled_plant_unit(chain: rb.Chain, name: str, spec) -> Unit:
+    """The 3-D experiment's plant of ``chain`` in contact with the surface ``spec``, compiled."""
+    from codegen.robot_unit import build_plant_unit, c_identifier
+
+    prefix = c_identifier(f"hybrid_{name}_{spec.kind}_plant")
+    return _compiled(prefix, {"chain": _chain_key(chain), "surface": spec.key(), "plant": 1},
+                     lambda: build_plant_unit(chain, spec, prefix, robot_info(chain, name)))
 
 
 def robot_info(chain: rb.Chain, name: str) -> dict:

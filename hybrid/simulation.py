@@ -18,8 +18,8 @@ from .errors import HybridError, NonFiniteError
 from .experiment import Experiment
 from .loops import model_error_note
 from .performance import run_metrics
-from .plants import PLANT, PLANT_OUTPUTS, NativePlant
-from .results import OUT, SimulationResult
+from .plants import PLANT, NativePlant, SpatialPlant
+from .results import SimulationResult
 
 
 class SimulationError(HybridError):
@@ -43,10 +43,10 @@ START_TOL = 1e-3
 MEMORY_FRACTION = 0.5
 
 
-def check_memory(exp: Experiment) -> None:
+def check_memory(exp, record: dict = PLANT) -> None:
     """Refuse, before any work, a run whose record would not fit in memory (with the numbers)."""
     steps = exp.steps_per_sample * exp.n_samples + 1
-    per_step = 8 * (len(PLANT["state"]) + PLANT["nq"] + len(PLANT_OUTPUTS) + 3)  # doubles kept per RK4 step
+    per_step = 8 * (len(record["state"]) + record["nq"] + len(record["outputs"]) + 3)  # doubles kept per RK4 step
     need = steps * per_step
     try:
         total = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
@@ -98,13 +98,16 @@ def inverse_kinematics(exp: Experiment, r: np.ndarray) -> np.ndarray:
 def check_path(exp: Experiment) -> None:
     """Refuse a run whose desired path leaves the arm's workspace."""
     lo, hi = exp.arm.reach()
-    for t in np.arange(exp.n_samples + 1) * exp.sample_time:
-        p, _ = exp.desired_point(min(t, exp.duration))
-        d = math.hypot(*p)
-        if not lo + 1e-3 < d < hi - 1e-3:
-            raise HybridError(f"the desired path leaves the arm's workspace at t = {t:.3f} s "
-                              f"(point {np.round(p, 4).tolist()} m, {d:.3f} m from the base, reach "
-                              f"{lo:.3f}-{hi:.3f} m); shorten duration, lower the speed or move the surface")
+    t = np.minimum(np.arange(exp.n_samples + 1) * exp.sample_time, exp.duration)
+    surf = exp.surface
+    points = surf.points_at(surf.arc_coordinate(exp.start_point) + exp.speed_reference.integral(t))
+    d = np.hypot(points[:, 0], points[:, 1])
+    outside = np.flatnonzero(~((lo + 1e-3 < d) & (d < hi - 1e-3)))
+    if len(outside):
+        i = outside[0]
+        raise HybridError(f"the desired path leaves the arm's workspace at t = {t[i]:.3f} s "
+                          f"(point {np.round(points[i], 4).tolist()} m, {d[i]:.3f} m from the base, reach "
+                          f"{lo:.3f}-{hi:.3f} m); shorten duration, lower the speed or move the surface")
 
 
 # --------------------------------------------------------------------- results
@@ -113,36 +116,52 @@ def check_path(exp: Experiment) -> None:
 # ---------------------------------------------------------------------- runner
 
 
-def simulate(exp: Experiment) -> SimulationResult:
-    """Run ``exp``: controller sampled every ``sample_time``, plant RK4 every ``step``."""
+def simulate(exp, plant: str = "generated") -> SimulationResult:
+    """Run ``exp`` (the paper's :class:`Experiment` or a :class:`~hybrid.tracing.TracingExperiment`):
+    controller sampled every ``sample_time``, plant RK4 every ``step``. ``plant="mujoco"`` runs the
+    paper's experiment with MuJoCo as the plant (:mod:`hybrid.mujoco_plant`)."""
+    if plant not in ("generated", "mujoco"):
+        raise HybridError(f"plant = {plant!r}; give 'generated' (the compiled plant) or 'mujoco'")
+    from .tracing import TracingExperiment, initial_tracing_state
+
+    if isinstance(exp, TracingExperiment):
+        if plant == "mujoco":
+            raise HybridError("the MuJoCo plant runs the paper's experiment; the 3-D one runs on the generated plant")
+        spatial = SpatialPlant(exp)
+        return run(exp, spatial, Controller.from_experiment(exp), initial_tracing_state(exp, spatial))
     if not isinstance(exp, Experiment):
-        raise HybridError(f"simulate() takes an Experiment (see hybrid.paper_experiment()), "
-                          f"got {type(exp).__name__}")
+        raise HybridError(f"simulate() takes an experiment (see hybrid.paper_experiment() and "
+                          f"hybrid.tracing_experiment()), got {type(exp).__name__}")
+    check_memory(exp)  # before the path check, whose arrays grow with the run too
+    x0 = initial_state(exp)
+    check_path(exp)
+    if plant == "mujoco":
+        from .mujoco_plant import MujocoPlant
+
+        return run(exp, MujocoPlant(exp), Controller.from_experiment(exp), x0)
     if exp.backend == "numpy":
         from . import reference  # the reference path only: the compiled runtime does not need it
 
-        return run(exp, reference.NumpyPlant(exp), reference.NumpyController(exp))
-    return run(exp, NativePlant(exp), Controller.from_experiment(exp))
+        return run(exp, reference.NumpyPlant(exp), reference.NumpyController(exp), x0)
+    return run(exp, NativePlant(exp), Controller.from_experiment(exp), x0)
 
 
-def run(exp: Experiment, plant, controller) -> SimulationResult:
-    """Run ``exp`` with the given plant (see :mod:`hybrid.plants`) and ``controller(t, q, qdot, Fc)``."""
-    check_memory(exp)
-    x = initial_state(exp)
-    check_path(exp)
-
+def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
+    """Run ``exp`` from the state ``x0`` with ``plant`` (see :mod:`hybrid.plants`) and
+    ``tau = controller(t, q, qdot, Fc)`` under zero-order hold."""
+    check_memory(exp, plant.record)
+    x = np.array(x0, dtype=float)
     m, n_samples = exp.steps_per_sample, exp.n_samples
     total = m * n_samples
-    nq = PLANT["nq"]
-    states = np.empty((total + 1, len(PLANT["state"])))
+    nq = plant.nq
+    states = np.empty((total + 1, len(x)))
     taus = np.full((total + 1, nq), np.nan)  # NaN marks "no torque computed" in a partial run
     states[0] = x
     for k in range(n_samples):
         t = k * exp.sample_time
         q, qdot = x[0:nq].copy(), x[nq:2 * nq].copy()
         # the sensor's reading: its spring and damper between arm tip and sensor tip
-        out = plant.outputs(x[None, :])[0]
-        Fc = np.array([out[OUT["Fc_x"]], out[OUT["Fc_y"]], 0.0, 0.0, 0.0, 0.0])  # a wrench: (f, m), base axes
+        Fc = plant.sensor_wrench(x)
         try:
             tau = np.ascontiguousarray(controller(t, q, qdot, Fc), dtype=float)
             if not np.isfinite(tau).all():
@@ -158,44 +177,44 @@ def run(exp: Experiment, plant, controller) -> SimulationResult:
         taus[rows] = tau
         if done < m:
             last = 1 + k * m + done
-            raise _divergence(_result(exp, plant, states[:last], taus[:last], False), t, q, qdot, tau, x)
+            raise _divergence(_result(exp, plant, states[:last], taus[:last], False), plant, t, q, qdot, tau, x)
     return _result(exp, plant, states, taus, True)
 
 
-def _divergence(partial: SimulationResult, t: float, q, qdot, tau, x) -> SimulationError:
+def _divergence(partial: SimulationResult, plant, t: float, q, qdot, tau, x) -> SimulationError:
     """The error for a plant state gone non-finite in the sample from ``t`` (state ``q, qdot`` then,
     torque ``tau``, last finite state ``x``): when, where, and the likely cause."""
     exp = partial.experiment
     t_fail = partial.t[-1] + exp.step
-    cond = exp.arm.conditioning(q)
-    causes = [c.lstrip("; ") for c in (model_error_note(exp), _closest_singularity(partial)) if c]
+    cond = plant.conditioning(q)
+    causes = [c.lstrip("; ") for c in (model_error_note(exp), _closest_singularity(partial, plant)) if c]
     causes = causes or ["reduce step or check gains and parameters"]
     return SimulationError(
         f"the plant state became NaN or infinite at t = {t_fail:.5f} s: {causes[0]}\n"
         + "".join(f"  also: {c}\n" for c in causes[1:]) +
         f"  in the control sample from t = {t:.4f} s: q = {np.round(q, 5).tolist()} rad, qdot = "
-        f"{np.round(qdot, 4).tolist()} rad/s, 2|det J|/|J|_F^2 = {cond:.3g}, tau = {np.round(tau, 3).tolist()} N m\n"
+        f"{np.round(qdot, 4).tolist()} rad/s, {plant.conditioning_name} = {cond:.3g}, "
+        f"tau = {np.round(tau, 3).tolist()} N m\n"
         f"  last finite state: q = {np.array2string(x[:len(q)], precision=4)} rad, qdot = "
         f"{np.array2string(x[len(q):2 * len(q)], precision=4)} rad/s",
         t_fail, partial)
 
 
-def _closest_singularity(res: SimulationResult, near: float = 0.1) -> str:
+def _closest_singularity(res: SimulationResult, plant, near: float = 0.1) -> str:
     """Where a failed run passed closest to a singularity, when that was close (a clause of the message)."""
     rows = range(0, len(res.t), 5)
-    cond = res.experiment.arm.conditioning(res.q[rows.start::rows.step].T)
+    cond = plant.conditioning(res.q[rows.start::rows.step])
     i = int(np.argmin(cond))
     if cond[i] >= near:
         return ""
-    return (f"; the arm passed near a singularity (2|det J|/|J|_F^2 = {cond[i]:.2g} at t = {res.t[rows[i]]:.4f} s): "
-            "raise singular_tol to stop there, or keep the path away from full extension")
+    return (f"; the arm passed near a singularity ({plant.conditioning_name} = {cond[i]:.2g} at "
+            f"t = {res.t[rows[i]]:.4f} s): raise singular_tol to stop there, or keep the path away from full extension")
 
 
-def _result(exp: Experiment, plant, states: np.ndarray, taus: np.ndarray, metrics: bool) -> SimulationResult:
+def _result(exp, plant, states: np.ndarray, taus: np.ndarray, metrics: bool) -> SimulationResult:
     t = np.arange(len(states)) * exp.step
-    res = SimulationResult(exp, t, states, taus, plant.outputs(states),
-                           np.array([exp.force_reference(ti) for ti in t]),
-                           np.array([exp.speed_reference(ti) for ti in t]))
+    res = SimulationResult(exp, t, states, taus, plant.outputs(states), exp.force_reference.sampled(t),
+                           exp.speed_reference.sampled(t), record=plant.record)
     if metrics:
         res.metrics = run_metrics(res)
     return res

@@ -83,6 +83,11 @@ class Circle:
         ang = s / self.radius
         return np.array(self.center) + self.radius * np.array([math.cos(ang), math.sin(ang)])
 
+    def points_at(self, s: np.ndarray) -> np.ndarray:
+        """The surface points at the arc coordinates ``s`` [m] (one row each)."""
+        ang = np.asarray(s, float) / self.radius
+        return np.array(self.center) + self.radius * np.column_stack([np.cos(ang), np.sin(ang)])
+
 
 @dataclass(frozen=True)
 class Plane:
@@ -143,6 +148,10 @@ class Plane:
         """The surface point at arc coordinate ``s`` [m]."""
         _finite("Plane.at", s=s)
         return np.array(self.point) + s * self._tangent()
+
+    def points_at(self, s: np.ndarray) -> np.ndarray:
+        """The surface points at the arc coordinates ``s`` [m] (one row each)."""
+        return np.array(self.point) + np.outer(np.asarray(s, float), self._tangent())
 
 
 # -------------------------------------------------------------------------- spatial

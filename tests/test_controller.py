@@ -302,3 +302,18 @@ def test_bad_samples_are_named(robots):
         ctrl(0.0, np.zeros(6), qd, np.zeros(6))  # the UR5 stretched out
     with pytest.raises(hybrid.HybridError, match="state must be"):
         ctrl.state = np.zeros(3)
+
+
+def test_readme_controller_example_runs_and_is_the_law():
+    """The README's controller block runs as written; its torque is the 6-D law's for the loops' a."""
+    import re
+    from pathlib import Path
+
+    readme = (Path(__file__).resolve().parent.parent / "README.md").read_text()
+    block = next(b for b in re.findall(r"```python\n(.*?)```", readme, flags=re.S) if "hybrid.Controller(" in b)
+    ns: dict = {}
+    exec(compile(block, "README.md", "exec"), ns)
+    ctrl, q, qdot, Fc = ns["ctrl"], ns["q"], ns["qdot"], ns["Fc"]
+    law = hybrid.decoupling_law(ctrl.robot, ctrl.surface, curvature=True)
+    np.testing.assert_allclose(ns["tau"], law.torque(q, qdot, ctrl.last["a"], Fc), rtol=1e-9, atol=1e-9)
+    assert ns["res3"].metrics["contact_losses"] == 0 and np.isfinite(ns["m"]["rms_force_error_N"])

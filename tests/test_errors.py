@@ -16,6 +16,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import hybrid
+from hybrid import reference
 
 ROOT = Path(__file__).resolve().parent.parent
 ARM = hybrid.paper_arm()
@@ -86,7 +87,7 @@ def test_singular_jacobian(law, q2, as_input):
                                                      start_point=(1.8, 0.0))), "out of the arm's reach"),
     (lambda: hybrid.simulate(hybrid.paper_experiment(surface=hybrid.Circle((0.75, 0.0), 0.2),
                                                      start_point=(0.55, 0.0))), "leaves the arm's workspace"),
-    (lambda: hybrid.simulate("paper"), "takes an Experiment"),
+    (lambda: hybrid.simulate("paper"), "takes an experiment"),
 ])
 def test_bad_parameters(make, match):
     with pytest.raises(hybrid.HybridError, match=match):
@@ -184,7 +185,7 @@ def test_corrupt_cache_entry_is_rebuilt(tmp_path):
 def _conditioning_at_samples(res):
     """``2 |det J| / |J|_F^2`` at each control sample of a run, from the NumPy reference."""
     exp = res.experiment
-    return np.array([hybrid.reference.conditioning(q, exp.arm.as_array())
+    return np.array([reference.conditioning(q, exp.arm.as_array())
                      for q in res.q[::exp.steps_per_sample][:exp.n_samples]])
 
 

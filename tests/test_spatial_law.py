@@ -186,7 +186,7 @@ def test_readme_six_d_example_runs():
     from pathlib import Path
 
     readme = (Path(__file__).resolve().parent.parent / "README.md").read_text()
-    block = next(b for b in re.findall(r"```python\n(.*?)```", readme, flags=re.S) if "hybrid.Sphere" in b)
+    block = next(b for b in re.findall(r"```python\n(.*?)```", readme, flags=re.S) if "hybrid.decoupling_law(ur5" in b)
     ns: dict = {}
     exec(compile(block, "README.md", "exec"), ns)
     terms = hybrid.arm_terms(ns["ur5"], ns["q"], ns["qdot"])

@@ -1,0 +1,112 @@
+"""``python -m hybrid sweep CONFIG.toml --out DIR``: a sweep from a file, with progress, incremental
+results (Parquet, CSV on request), resuming, and heatmaps."""
+
+from __future__ import annotations
+
+from dataclasses import fields
+from pathlib import Path
+
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python 3.10
+    import tomli as tomllib
+
+from .errors import HybridError
+
+DEMO = Path(__file__).with_name("data") / "sweep_demo.toml"
+SECTIONS = {"experiment", "base", "parameters", "sweep", "figures"}
+
+
+def add_parser(sub) -> None:
+    p = sub.add_parser("sweep", help="run a parameter sweep from a TOML file: metrics table, figures, resumable")
+    p.add_argument("config", nargs="?", help="the sweep's TOML file (see hybrid/data/sweep_demo.toml)")
+    p.add_argument("--demo", action="store_true", help="run the shipped demo study (model error, friction, speed)")
+    p.add_argument("--out", required=True, help="folder for results.parquet, parts (resume) and figures")
+    p.add_argument("--csv", action="store_true", help="also write results.csv")
+    p.add_argument("--engine", default="local", choices=("local", "dask"))
+    p.add_argument("--scheduler", help="a Dask scheduler's address (default: a local cluster)")
+    p.add_argument("--workers", type=int, help="processes (default: every core)")
+    p.add_argument("--force", action="store_true", help="start afresh in a folder that holds another sweep")
+    p.set_defaults(func=run)
+
+
+def _value(name: str, value):
+    """A TOML value as a setting: a table with one distribution name draws values."""
+    from . import sweeps as sw
+
+    if isinstance(value, dict):
+        if len(value) != 1 or next(iter(value)) not in sw.DISTRIBUTIONS:
+            raise HybridError(f"parameter {name!r}: a table must name one distribution "
+                              f"({', '.join(sw.DISTRIBUTIONS)}), e.g. {{uniform = [0.0, 0.3]}}")
+        kind, args = next(iter(value.items()))
+        return sw.DISTRIBUTIONS[kind](*args)
+    if not isinstance(value, list):
+        raise HybridError(f"parameter {name!r}: give a list of values or a distribution table, got {value!r:.60}")
+    return value
+
+
+def _base(kind: str, settings: dict):
+    """The base experiment from the ``[base]`` table (``paper_experiment``'s keywords; a table for a
+    reference becomes a Step, for ``sensor``/``contact``/``gains`` their dataclass)."""
+    from .experiment import Contact, Gains, Sensor, Step, paper_experiment
+    from .tracing import tracing_experiment
+
+    parts = {"sensor": Sensor, "contact": Contact, "gains": Gains}
+    steps = ("force_reference", "speed_reference", "F_d", "v_d")
+    made = {}
+    for key, value in settings.items():
+        if isinstance(value, dict):
+            typ = Step if key in steps else parts.get(key)
+            if typ is None:
+                raise HybridError(f"[base] {key} = a table: only {', '.join(steps + tuple(parts))} take one")
+            known = {f.name for f in fields(typ)}
+            if not set(value) <= known:
+                raise HybridError(f"[base] {key}: unknown {', '.join(sorted(set(value) - known))}; "
+                                  f"{typ.__name__} has {', '.join(sorted(known))}")
+            value = typ(**value)
+        made[key] = value
+    if kind not in ("paper", "tracing"):
+        raise HybridError(f"experiment = {kind!r}; give 'paper' or 'tracing'")
+    return (paper_experiment if kind == "paper" else tracing_experiment)(**made)
+
+
+def read_config(path: Path) -> dict:
+    """The sweep's settings from its TOML file, checked."""
+    try:
+        config = tomllib.loads(path.read_text())
+    except OSError as exc:
+        raise HybridError(f"cannot read the sweep file {path}: {exc.strerror}") from None
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise HybridError(f"{path} is not valid TOML: {exc}") from None
+    unknown = set(config) - SECTIONS
+    if unknown:
+        raise HybridError(f"{path}: unknown key(s) {', '.join(sorted(unknown))}; a sweep file has "
+                          f"{', '.join(sorted(SECTIONS))}")
+    if not isinstance(config.get("parameters"), dict) or not config["parameters"]:
+        raise HybridError(f"{path} has no [parameters] table: nothing to sweep")
+    return config
+
+
+def run(args) -> int:
+    from .plots import sweep_heatmaps
+    from .sweeps import sweep
+
+    if bool(args.config) == bool(args.demo):
+        raise HybridError("give a sweep file or --demo (one of the two)")
+    path = DEMO if args.demo else Path(args.config)
+    config = read_config(path)
+    base = _base(config.get("experiment", "paper"), config.get("base", {}))
+    parameters = {k: _value(k, v) for k, v in config["parameters"].items()}
+    options = config.get("sweep", {})
+    unknown = set(options) - {"samples", "seed"}
+    if unknown:
+        raise HybridError(f"[sweep]: unknown {', '.join(sorted(unknown))}; it takes samples and seed")
+    out = Path(args.out)
+    table = sweep(base, parameters, samples=options.get("samples"), seed=options.get("seed", 0),
+                  engine=args.engine, client=args.scheduler, out=out, workers=args.workers, csv=args.csv,
+                  force=args.force, progress=True)
+    written = sweep_heatmaps(table, config.get("figures"), out)
+    counts = table["status"].value_counts().to_dict()
+    print(f"{len(table)} runs ({', '.join(f'{n} {s}' for s, n in counts.items())}); wrote results.parquet"
+          f"{', results.csv' if args.csv else ''} and {len(written)} figures to {out}")
+    return 0

@@ -1,0 +1,364 @@
+"""Parameter sweeps: many closed-loop runs, one row of metrics each, on this machine or a Dask cluster.
+
+``sweep(base, {"model_error": [0, 0.1], "contact.friction": Uniform(0, 0.3)}, samples=100)`` runs
+``simulate`` on every point and returns a :class:`pandas.DataFrame`: the run's index, the
+parameters (columns named as given), every metric (the names of ``res.metrics``), ``status``
+(``"ok"``, ``"failed"`` for a run that stopped, ``"invalid"`` for settings an experiment refuses)
+and ``error`` (the first line of the cause). A failing run is a row, not an abort.
+
+With ``out``, finished chunks are written as Parquet parts as they come (atomically) beside a
+``sweep.json`` describing the sweep; running the same sweep into the same folder again resumes
+where it stopped, and the table is the same as an uninterrupted sweep's. Runs are deterministic,
+so the table does not depend on the engine, the number of workers or the chunking.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+import os
+import sys
+import time
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from . import files
+from .errors import HybridError
+
+ENGINES = ("local", "dask")
+
+
+# ------------------------------------------------------------------ distributions
+
+
+@dataclass(frozen=True)
+class Uniform:
+    """Values drawn uniformly in ``[low, high)``."""
+
+    low: float
+    high: float
+
+    def sample(self, rng: np.random.Generator, n: int) -> list:
+        return rng.uniform(self.low, self.high, n).tolist()
+
+
+@dataclass(frozen=True)
+class LogUniform:
+    """Values whose logarithm is uniform in ``[log low, log high)`` (``0 < low < high``)."""
+
+    low: float
+    high: float
+
+    def sample(self, rng: np.random.Generator, n: int) -> list:
+        if not 0 < self.low < self.high:
+            raise HybridError(f"LogUniform({self.low}, {self.high}) needs 0 < low < high")
+        return np.exp(rng.uniform(math.log(self.low), math.log(self.high), n)).tolist()
+
+
+@dataclass(frozen=True)
+class Normal:
+    """Values drawn from a normal distribution."""
+
+    mean: float
+    std: float
+
+    def sample(self, rng: np.random.Generator, n: int) -> list:
+        return rng.normal(self.mean, self.std, n).tolist()
+
+
+DISTRIBUTIONS = {"uniform": Uniform, "loguniform": LogUniform, "normal": Normal}
+
+
+def points(parameters: Mapping, samples: int | None = None, seed: int = 0) -> list[dict]:
+    """The sweep's points: the full grid of the value lists, or ``samples`` random draws (a list is
+    then drawn from uniformly; ``seed`` makes the draws repeatable)."""
+    if not isinstance(parameters, Mapping) or not parameters:
+        raise HybridError("parameters must be a non-empty mapping {setting name: values or distribution}")
+    names = list(parameters)
+    for name, values in parameters.items():
+        if not isinstance(name, str):
+            raise HybridError(f"parameter names are setting names (text), got {name!r}")
+        is_list = isinstance(values, Sequence) and not isinstance(values, str)
+        if not (is_list or hasattr(values, "sample")):
+            raise HybridError(f"parameter {name!r}: give a list of values or a distribution (hybrid.sweeps.Uniform, "
+                              f"LogUniform, Normal), got {values!r:.60}")
+        if is_list and len(values) == 0:
+            raise HybridError(f"parameter {name!r} has no values")
+    if samples is None:
+        lists = [parameters[n] for n in names]
+        if any(not isinstance(v, Sequence) or isinstance(v, str) for v in lists):
+            raise HybridError("a distribution needs samples=N (the number of random draws)")
+        grid = np.array(np.meshgrid(*[np.arange(len(v)) for v in lists], indexing="ij")).reshape(len(names), -1).T
+        return [{n: _plain(lists[k][i]) for k, (n, i) in enumerate(zip(names, row))} for row in grid]
+    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 1:
+        raise HybridError(f"samples = {samples!r}; give a whole number of runs >= 1")
+    rng = np.random.default_rng(seed)
+    columns = {}
+    for n in names:
+        values = parameters[n]
+        if hasattr(values, "sample"):
+            columns[n] = values.sample(rng, int(samples))
+        else:
+            columns[n] = [values[i] for i in rng.integers(0, len(values), int(samples))]
+    return [{n: _plain(columns[n][i]) for n in names} for i in range(int(samples))]
+
+
+def _plain(value):
+    """A value as plain Python (numbers from NumPy become float/int; JSON- and Parquet-friendly)."""
+    if isinstance(value, np.generic):
+        return value.item()
+    return value
+
+
+# --------------------------------------------------------------------- settings
+
+
+def _aliases(base) -> dict[str, str]:
+    from .experiment import Gains
+
+    out = {"F_d": "force_reference", "v_d": "speed_reference"}
+    out.update({g.name: f"gains.{g.name}" for g in dataclasses.fields(Gains)})
+    return out
+
+
+def check_names(base, names) -> None:
+    """Refuse, before any run, a setting name the experiment does not have (naming the known ones)."""
+    for name in names:
+        path = _aliases(base).get(name, name).split(".")
+        obj = base
+        for part in path:
+            if not dataclasses.is_dataclass(obj) or part not in {f.name for f in dataclasses.fields(obj)}:
+                known = sorted({f.name for f in dataclasses.fields(base)} | set(_aliases(base)))
+                raise HybridError(f"unknown setting {name!r} for a {type(base).__name__}; use a field name or a "
+                                  f"dotted path (contact.friction, gains.KPf)\n  known: {', '.join(known)}")
+            obj = getattr(obj, part)
+
+
+def apply(base, settings: Mapping):
+    """``base`` with ``settings`` (field names, gain names, ``F_d``/``v_d``, or dotted paths) applied;
+    the experiment checks the result as it would any other."""
+    aliases = _aliases(base)
+    nested: dict = {}
+    for name, value in settings.items():
+        path = aliases.get(name, name).split(".")
+        node = nested
+        for part in path[:-1]:
+            node = node.setdefault(part, {})
+        node[path[-1]] = value
+
+    def build(obj, changes: dict):
+        kwargs = {k: build(getattr(obj, k), v) if isinstance(v, dict) else v for k, v in changes.items()}
+        try:
+            return dataclasses.replace(obj, **kwargs)
+        except TypeError as exc:  # a wrong type reaching a dataclass's own checks
+            raise HybridError(f"{type(obj).__name__}: {exc}") from None
+
+    return build(base, nested)
+
+
+# -------------------------------------------------------------------------- runs
+
+
+def run_points(base, chunk: list[tuple[int, dict]]) -> list[dict]:
+    """Run each ``(index, settings)`` of ``chunk`` on ``base``: one row each (the unit of work of
+    every engine)."""
+    from .simulation import simulate
+
+    rows = []
+    for index, settings in chunk:
+        row = {"run": index, **settings}
+        try:
+            exp = apply(base, settings)
+        except HybridError as exc:
+            rows.append({**row, "status": "invalid", "error": str(exc).splitlines()[0]})
+            continue
+        try:
+            res = simulate(exp)
+            rows.append({**row, **res.metrics, "status": "ok", "error": ""})
+        except HybridError as exc:
+            rows.append({**row, "status": "failed", "error": str(exc).splitlines()[0]})
+    return rows
+
+
+def _chunks(todo: list[tuple[int, dict]], size: int) -> list[list[tuple[int, dict]]]:
+    return [todo[i:i + size] for i in range(0, len(todo), size)]
+
+
+def _local(base, chunks, workers: int):
+    """Chunks on a pool of processes, as they finish. Forked where the system can (the workers inherit
+    the compiled code already loaded, and a user's script needs no ``__main__`` guard), else spawned
+    (each worker loads the cached code once)."""
+    if workers == 1:
+        for chunk in chunks:
+            yield run_points(base, chunk)
+        return
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+
+    method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
+    with ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context(method)) as pool:
+        futures = [pool.submit(run_points, base, chunk) for chunk in chunks]
+        try:
+            for f in as_completed(futures):
+                yield f.result()
+        except BaseException:
+            for f in futures:
+                f.cancel()
+            raise
+
+
+def _dask(base, chunks, client, workers: int):
+    """Chunks as Dask tasks (retried when a worker dies), as they finish."""
+    try:
+        from dask.distributed import Client, LocalCluster, as_completed
+    except ImportError:
+        raise HybridError("engine='dask' needs dask.distributed: pip install 'dask[distributed]'") from None
+    own = client is None
+    if own:
+        client = Client(LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                     dashboard_address=None))
+    elif isinstance(client, str):
+        own, client = True, Client(client)
+    try:
+        base_future = client.scatter(base, broadcast=True)
+        futures = client.map(run_points, [base_future] * len(chunks), chunks, pure=False, retries=3)
+        for f in as_completed(futures):
+            yield f.result()
+    finally:
+        if own:
+            cluster = client.cluster
+            client.close()
+            if cluster is not None:
+                cluster.close()
+
+
+# ------------------------------------------------------------------------- files
+
+
+def _describe(base, parameters: Mapping, samples, seed) -> dict:
+    def values(v):
+        if hasattr(v, "sample"):
+            return {type(v).__name__: dataclasses.asdict(v) if dataclasses.is_dataclass(v) else repr(v)}
+        return [_plain(x) for x in v]
+
+    to_dict = getattr(base, "to_dict", None)
+    return {"sweep": 1, "base": to_dict() if to_dict else repr(base),
+            "parameters": {k: values(v) for k, v in parameters.items()}, "samples": samples, "seed": seed}
+
+
+def _prepare(out: Path, description: dict, force: bool) -> set[int]:
+    """Create ``out`` or check that it holds this same sweep; the runs already done there."""
+    out.mkdir(parents=True, exist_ok=True)
+    files.writable_folder(out, "sweep folder")
+    spec = out / "sweep.json"
+    text = json.dumps(description, indent=2, sort_keys=True, default=str) + "\n"
+    if spec.exists():
+        if spec.read_text() != text:
+            if not force:
+                raise HybridError(f"{out} holds a different sweep (its sweep.json differs); choose another folder, "
+                                  "or pass force=True (--force) to start this one there afresh")
+            for part in (out / "parts").glob("*.parquet"):
+                part.unlink()
+            files.write_text(spec, text, overwrite=True)
+    else:
+        files.write_text(spec, text)
+    (out / "parts").mkdir(exist_ok=True)
+    return {int(i) for df in _read_parts(out) for i in df["run"]}
+
+
+def _read_parts(out: Path):
+    import pandas as pd
+
+    for part in sorted((out / "parts").glob("part-*.parquet")):
+        try:
+            yield pd.read_parquet(part)
+        except Exception:  # a part that does not read is redone (written atomically, it should not happen)
+            part.unlink()
+
+
+def _write_part(out: Path, rows: list[dict]) -> None:
+    import pandas as pd
+
+    first, last = rows[0]["run"], rows[-1]["run"]
+    frame = pd.DataFrame(rows)
+    files.write_with(out / "parts" / f"part-{first:08d}-{last:08d}.parquet",
+                     lambda tmp: frame.to_parquet(tmp, index=False), overwrite=True)
+
+
+def _table(rows: list[dict], names: list[str]):
+    import pandas as pd
+
+    frame = pd.DataFrame(rows)
+    if frame.empty:
+        return frame
+    frame = frame.sort_values("run").reset_index(drop=True)
+    metrics = [c for c in frame.columns if c not in ("run", *names, "status", "error")]
+    return frame[["run", *names, *metrics, "status", "error"]]
+
+
+# ------------------------------------------------------------------------- sweep
+
+
+def sweep(base, parameters: Mapping, *, samples: int | None = None, seed: int = 0, engine: str = "local",
+          client=None, out=None, workers: int | None = None, chunk_size: int | None = None, csv: bool = False,
+          force: bool = False, progress: bool = False):
+    """Run ``base`` (an experiment) at every point of ``parameters``; one row of metrics per run.
+
+    Parameters
+    ----------
+    base : :class:`hybrid.Experiment` or :class:`hybrid.TracingExperiment`.
+    parameters : ``{setting name: values}``: a list (a full grid over the lists) or a distribution
+        (:class:`Uniform`, :class:`LogUniform`, :class:`Normal`, drawn ``samples`` times). Names are
+        the experiment's fields, the gains (``KPf``), ``F_d``/``v_d``, or dotted paths
+        (``"contact.friction"``, ``"gains.KPf"``, ``"force_reference.after"``).
+    samples, seed : random draws instead of the grid, repeatable by ``seed``.
+    engine : ``"local"`` (processes on this machine; ``workers``, default every core) or ``"dask"``
+        (``client``: a ``dask.distributed.Client`` or a scheduler address; default a ``LocalCluster``).
+    out : a folder for incremental results and resuming (see the module docstring); with ``csv`` also
+        ``results.csv``. ``force`` starts a different sweep afresh in a folder that holds one.
+    """
+    if engine not in ENGINES:
+        raise HybridError(f"engine = {engine!r}; choose one of {', '.join(ENGINES)}")
+    check_names(base, parameters)
+    todo_all = list(enumerate(points(parameters, samples, seed)))
+    names = list(parameters)
+    done_rows: list[dict] = []
+    if out is not None:
+        out = files.output_path(out)
+        done = _prepare(out, _describe(base, parameters, samples, seed), force)
+        done_rows = [r for df in _read_parts(out) for r in df.to_dict("records")]
+        todo = [(i, p) for i, p in todo_all if i not in done]
+    else:
+        todo = todo_all
+    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+    workers = max(1, min(workers or cores, len(todo) or 1))
+    size = chunk_size or max(1, min(64, math.ceil(len(todo) / (4 * workers))))
+    chunks = _chunks(todo, size)
+    results = _local(base, chunks, workers) if engine == "local" else _dask(base, chunks, client, workers)
+    rows, t0, failed = list(done_rows), time.perf_counter(), 0
+    for chunk_rows in results:
+        rows.extend(chunk_rows)
+        failed += sum(r["status"] != "ok" for r in chunk_rows)
+        if out is not None:
+            _write_part(out, chunk_rows)
+        if progress:
+            _progress(len(rows), len(todo_all), failed, time.perf_counter() - t0)
+    if progress:
+        print(file=sys.stderr)
+    table = _table(rows, names)
+    if out is not None:
+        files.write_with(out / "results.parquet", lambda tmp: table.to_parquet(tmp, index=False), overwrite=True)
+        if csv:
+            files.write_with(out / "results.csv", lambda tmp: table.to_csv(tmp, index=False), overwrite=True)
+    return table
+
+
+def _progress(done: int, total: int, failed: int, seconds: float) -> None:
+    width = 30
+    filled = int(width * done / max(total, 1))
+    print(f"\r[{'#' * filled}{'.' * (width - filled)}] {done}/{total} runs, {failed} not ok, {seconds:.1f} s",
+          end="", file=sys.stderr, flush=True)

@@ -1,0 +1,224 @@
+"""The 3-D experiment of NOTES section 10 as data: a URDF arm tracing a path on a surface.
+
+The default is the UR5 (the URDF shipped by example-robot-data, kept in ``hybrid/data``) on a
+sphere of radius 0.15 m, along the latitude circle 60 degrees from its top, with the references,
+loops, sampling, integration and model error of the paper's experiment.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, fields, replace
+from pathlib import Path
+
+import numpy as np
+
+from .errors import HybridError
+from .experiment import Contact, Gains, Sensor, Step, check_timing
+from .law import SINGULAR_TOL, check_singular_tol
+from .robot import Robot
+from .schemes import scheme_of
+from .surfaces import Cylinder, ImplicitSurface, Plane, Sphere
+from .validate import _finite
+
+UR5_URDF = Path(__file__).with_name("data") / "ur5_robot.urdf"
+#: the sphere of the default experiment: in front of the UR5, within reach and away from its
+#: singularities along the whole path (a choice, NOTES section 10)
+SPHERE_CENTER, SPHERE_RADIUS = (0.5, 0.0, 0.2), 0.15
+
+
+def ur5() -> Robot:
+    """The UR5 of example-robot-data (tip ``tool0``, gravity on)."""
+    return Robot.from_urdf(UR5_URDF, tip="tool0")
+
+
+@dataclass(frozen=True)
+class TracingExperiment:
+    """One closed-loop run of a URDF arm on a 3-D surface (NOTES section 10).
+
+    The sensor tip starts on the surface at ``start_point`` [m] (default: on the latitude circle
+    ``latitude`` degrees from a sphere's top, on the side facing the robot), pressing with
+    ``F_d(0)``, the tool's z axis along ``-n``. The task frame's reference direction is ``e``;
+    the force loop runs on ``n``, the speed reference on ``t1`` (the latitude circle's direction
+    on a sphere with ``e = z``), every other axis holds velocity 0. ``controller`` names a
+    scheme (``"task"``, ``"khatib"``, ``"raibert_craig"``, ``"fisher_mujtaba"``).
+    """
+
+    controller: str = "task"
+    integral: bool = True
+    curvature: bool = False
+    frame: str = "actual"
+    model_error: float = 0.1
+    viscous_compensation: float = 0.5
+    robot: Robot = field(default_factory=ur5)
+    surface: Sphere | Plane | Cylinder | ImplicitSurface = field(
+        default_factory=lambda: Sphere(SPHERE_CENTER, SPHERE_RADIUS))
+    latitude: float = 60.0
+    start_point: tuple[float, float, float] | None = None
+    reference: tuple[float, float, float] = (0.0, 0.0, 1.0)
+    sensor: Sensor = field(default_factory=Sensor)
+    contact: Contact = field(default_factory=Contact)
+    gains: Gains = field(default_factory=Gains)
+    force_reference: Step = field(default_factory=lambda: Step(10.0, 20.0, 0.5))
+    speed_reference: Step = field(default_factory=lambda: Step(0.15, 0.3, 1.5))
+    duration: float = 3.0
+    step: float = 1e-4
+    sample_time: float = 1e-2
+    singular_tol: float = SINGULAR_TOL
+
+    def __post_init__(self):
+        for name in ("integral", "curvature"):
+            if not isinstance(getattr(self, name), bool):
+                raise HybridError(f"{name} = {getattr(self, name)!r}; give True or False")
+        scheme_of(self.controller)
+        if self.frame not in ("actual", "desired"):
+            raise HybridError(f"frame = {self.frame!r}; give 'actual' or 'desired'")
+        if not isinstance(self.robot, Robot):
+            raise HybridError(f"robot must be a hybrid.Robot (e.g. hybrid.Robot.from_urdf), got "
+                              f"{type(self.robot).__name__}")
+        if not isinstance(self.surface, (Sphere, Plane, Cylinder, ImplicitSurface)):
+            raise HybridError(f"surface = {self.surface!r:.60}; give a hybrid Sphere, Plane, Cylinder or "
+                              "ImplicitSurface")
+        for name, typ in (("sensor", Sensor), ("contact", Contact), ("gains", Gains)):
+            if not isinstance(getattr(self, name), typ):
+                raise HybridError(f"{name} = {getattr(self, name)!r:.60}; give a hybrid.{typ.__name__}(...)")
+        for name in ("force_reference", "speed_reference"):
+            ref = getattr(self, name)
+            if isinstance(ref, (int, float)) and not isinstance(ref, bool):
+                _finite("tracing_experiment", **{name: ref})
+                object.__setattr__(self, name, Step(float(ref), float(ref), 0.0))
+            elif not isinstance(ref, Step):
+                raise HybridError(f"{name} = {ref!r:.60}; give a hybrid.Step(before, after, at) or a number")
+        _finite("tracing_experiment", latitude=self.latitude, model_error=self.model_error,
+                viscous_compensation=self.viscous_compensation)
+        if self.start_point is None and not isinstance(self.surface, Sphere):
+            raise HybridError(f"a {type(self.surface).__name__} has no latitude circle: give start_point, a "
+                              "point on the surface [m]")
+        if self.frame == "desired" and not isinstance(self.surface, Sphere):
+            raise HybridError("frame='desired' follows the latitude circle of a Sphere; use frame='actual' here")
+        if self.start_point is not None:
+            try:
+                point = tuple(float(v) for v in self.start_point)
+            except (TypeError, ValueError):
+                point = ()
+            if len(point) != 3 or not all(map(math.isfinite, point)):
+                raise HybridError(f"start_point = {self.start_point!r:.60}; give (x, y, z) [m]")
+            object.__setattr__(self, "start_point", point)
+        check_singular_tol("tracing_experiment", self.singular_tol)
+        check_timing(self)
+
+    def to_dict(self) -> dict:
+        """The settings as JSON-ready data (the robot by name and joints; the surface by kind and values)."""
+        from dataclasses import asdict
+
+        d = {f.name: getattr(self, f.name) for f in fields(self) if f.name not in ("robot", "surface")}
+        for name in ("sensor", "contact", "gains", "force_reference", "speed_reference"):
+            d[name] = asdict(d[name])
+        d["robot"] = {"name": self.robot.name, "joints": list(self.robot.joint_names)}
+        d["surface"] = {"kind": self.surface.kind, "parameters": self.surface.as_array().tolist()}
+        return {"kind": "tracing", **d}
+
+    # ------------------------------------------------------------------ derived
+
+    @property
+    def steps_per_sample(self) -> int:
+        return round(self.sample_time / self.step)
+
+    @property
+    def n_samples(self) -> int:
+        return math.ceil(self.duration / self.sample_time - 1e-9)
+
+    def controller_robot(self) -> Robot:
+        """The controller's (wrong) model of the arm."""
+        return self.robot.with_model_error(self.model_error, self.viscous_compensation)
+
+    def effective_gains(self) -> Gains:
+        return self.gains if self.integral else replace(self.gains, KI2v=0.0, KIf=0.0)
+
+    def plant_array(self) -> np.ndarray:
+        s, c = self.sensor, self.contact
+        return np.array([s.mass, s.stiffness, s.damping, c.stiffness, c.damping, c.friction,
+                         c.friction_smoothing])
+
+    def _circle(self) -> tuple[np.ndarray, float, float, float]:
+        """The sphere's latitude circle: centre, radius, height above the sphere's centre, and the
+        longitude of the start (facing the robot's base)."""
+        sph = self.surface
+        c = np.asarray(sph.center, float)
+        polar = math.radians(self.latitude)
+        return c, sph.radius * math.sin(polar), sph.radius * math.cos(polar), math.atan2(-c[1], -c[0])
+
+    def desired_point(self, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """``p_d(t)`` on the latitude circle at the desired speed (counter-clockwise seen from +z,
+        the direction of ``t1 = z x n``), and ``p_d'(t)``."""
+        c, rho, h, psi0 = self._circle()
+        psi = psi0 + self.speed_reference.integral(t) / rho
+        radial = np.array([math.cos(psi), math.sin(psi), 0.0])
+        tangent = np.array([-math.sin(psi), math.cos(psi), 0.0])
+        return c + rho * radial + np.array([0.0, 0.0, h]), self.speed_reference(t) * tangent
+
+    def start(self) -> np.ndarray:
+        """The sensor tip's start point on the surface [m]."""
+        if self.start_point is not None:
+            return np.array(self.start_point)
+        return self.desired_point(0.0)[0]
+
+
+def initial_tracing_state(exp: TracingExperiment, plant) -> np.ndarray:
+    """At rest, the sensor tip on the surface at the start point pressing with ``F_d(0)``: it
+    penetrates ``F/k_e``, the arm tip sits ``F/K_s`` beyond it along the normal, the tool's z axis
+    along ``-n`` (its x axis along ``t1``); joints from inverse kinematics of the true arm."""
+    from .simulation import START_TOL
+
+    p0 = exp.start()
+    n = exp.robot.n
+    probe = np.concatenate([np.zeros(2 * n), p0, np.zeros(3)])
+    gap = float(plant.outputs(probe[None, :])[0][plant.record["outputs"].index("penetration")])
+    if not abs(gap) <= START_TOL:
+        raise HybridError(f"start_point {np.round(p0, 4).tolist()} m is {abs(gap) * 1000:.3g} mm off the surface; "
+                          f"give a point on it (within {START_TOL * 1000:g} mm)")
+    normal = exp.surface.lift().normal_at(p0)
+    F0 = exp.force_reference(0.0)
+    s = p0 - normal * max(F0, 0.0) / exp.contact.stiffness
+    r = s - normal * F0 / exp.sensor.stiffness
+    x_tool = np.cross(exp.reference, normal)
+    if np.linalg.norm(x_tool) < 1e-6:
+        raise HybridError("the reference direction is parallel to the surface normal at the start point: the task "
+                          "frame is undefined there; choose another reference or start_point")
+    x_tool /= np.linalg.norm(x_tool)
+    rotation = np.column_stack([x_tool, np.cross(-normal, x_tool), -normal])
+    try:
+        q = exp.robot.inverse_kinematics(r, rotation)
+    except HybridError as exc:
+        raise HybridError(f"the start pose cannot be reached: {exc}") from None
+    if plant.conditioning(q) < max(exp.singular_tol, 1e-3):
+        raise HybridError(f"the start point {np.round(p0, 4).tolist()} m puts the arm at or near a singularity "
+                          f"(q = {np.round(q, 3).tolist()} rad); move the surface or start_point")
+    return np.concatenate([q, np.zeros(n), s, np.zeros(3)])
+
+
+def tracing_experiment(**overrides) -> TracingExperiment:
+    """The 3-D experiment of NOTES section 10, with any setting overridden by keyword.
+
+    Takes the keywords of :func:`hybrid.paper_experiment` that mean the same here (``controller``,
+    ``integral``, ``curvature``, ``model_error``, ``viscous_compensation``, ``contact``, ``sensor``,
+    the gains one by one or ``gains``, ``F_d``, ``v_d``, ``duration``, ``step``, ``sample_time``, ...)
+    plus ``robot`` and ``surface``.
+    """
+    names = {f.name for f in fields(TracingExperiment)}
+    gain_names = {f.name for f in fields(Gains)}
+    aliases = {"F_d": "force_reference", "v_d": "speed_reference"}
+    gains = {k: overrides.pop(k) for k in list(overrides) if k in gain_names}
+    for alias, name in aliases.items():
+        if alias in overrides:
+            overrides[name] = overrides.pop(alias)
+    unknown = sorted(set(overrides) - names)
+    if unknown:
+        raise HybridError(f"unknown setting(s) {', '.join(unknown)} for tracing_experiment; see the known ones "
+                          f"below\n  known: {', '.join(sorted(names | gain_names | set(aliases)))}")
+    if gains:
+        base = overrides.get("gains", Gains())
+        if not isinstance(base, Gains):
+            raise HybridError(f"gains = {base!r:.60}; give a hybrid.Gains(...) to combine with {', '.join(gains)}")
+        overrides["gains"] = replace(base, **gains)
+    return TracingExperiment(**overrides)

@@ -1,0 +1,188 @@
+"""Sweeps: rows equal one-by-one runs, failures are rows, resuming and the Dask engine change nothing."""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import hybrid
+from hybrid.sweeps import Uniform, apply, check_names, points, sweep
+
+BASE = hybrid.paper_experiment(duration=0.6)
+GRID = {"model_error": [0.0, 0.3], "contact.friction": [0.0, 0.2], "controller": ["task", "khatib"]}
+
+
+def assert_same_metrics(row, metrics):
+    for name, value in metrics.items():
+        if isinstance(value, float) and math.isnan(value):
+            assert math.isnan(row[name]), name
+        else:
+            assert row[name] == pytest.approx(value, rel=1e-6, abs=1e-12), name
+
+
+def test_rows_equal_individual_runs():
+    table = sweep(BASE, {"model_error": Uniform(0.0, 0.4), "gains.KPf": [1.5, 2.0], "F_d": [8.0, 12.0]},
+                  samples=6, seed=3, workers=2)
+    assert list(table["run"]) == list(range(6)) and (table["status"] == "ok").all()
+    for _, row in table.iloc[[0, 3, 5]].iterrows():
+        exp = hybrid.paper_experiment(duration=0.6, model_error=row["model_error"], KPf=row["gains.KPf"],
+                                      F_d=row["F_d"])
+        assert_same_metrics(row, hybrid.simulate(exp).metrics)
+
+
+def test_grid_is_the_product_and_names_are_kept():
+    grid = points(GRID)
+    assert len(grid) == 8 and len({json.dumps(p, sort_keys=True) for p in grid}) == 8
+    table = sweep(BASE, GRID, workers=1)
+    assert list(table.columns[:4]) == ["run", "model_error", "contact.friction", "controller"]
+    assert {"force_overshoot_N", "rms_speed_error_m_per_s", "status", "error"} <= set(table.columns)
+    assert apply(BASE, {"contact.friction": 0.3, "KIf": 5.0}).contact.friction == 0.3
+
+
+def test_a_failing_run_is_a_row_with_its_cause():
+    table = sweep(BASE, {"model_error": [0.0, 5.0, 0.1], "gains.KPv": [40.0, -1.0]}, workers=2)
+    assert len(table) == 6
+    bad_gain = table[table["gains.KPv"] < 0]
+    assert (bad_gain["status"] == "invalid").all() and bad_gain["error"].str.contains("negative").all()
+    diverged = table[(table["model_error"] == 5.0) & (table["gains.KPv"] > 0)]
+    assert (diverged["status"] == "failed").all() and diverged["error"].str.contains("t = ").all()
+    assert ((table["model_error"] < 1) & (table["gains.KPv"] > 0)).sum() == (table["status"] == "ok").sum()
+
+
+def test_resume_after_an_interruption_gives_the_same_table(tmp_path):
+    whole = sweep(BASE, GRID, workers=2)
+    out = tmp_path / "sweep"
+    sweep(BASE, GRID, out=out, workers=2, chunk_size=2)
+    parts = sorted((out / "parts").glob("*.parquet"))
+    for part in parts[1::2]:  # as if stopped with half of the chunks written
+        part.unlink()
+    (out / "results.parquet").unlink()
+    resumed = sweep(BASE, GRID, out=out, workers=2, chunk_size=3, csv=True)
+    pd.testing.assert_frame_equal(resumed, whole)
+    pd.testing.assert_frame_equal(pd.read_parquet(out / "results.parquet"), whole)
+    assert (out / "results.csv").read_text().splitlines()[0].startswith("run,model_error,contact.friction")
+    with pytest.raises(hybrid.HybridError, match="different sweep"):
+        sweep(BASE, {"model_error": [0.0]}, out=out)
+
+
+def test_an_interrupted_cli_sweep_resumes(tmp_path):
+    """Stop the command while it runs (SIGINT, as Ctrl-C), run it again: the table is the uninterrupted one."""
+    config = tmp_path / "s.toml"
+    config.write_text('experiment = "paper"\n[base]\nduration = 0.6\n[parameters]\n'
+                      'model_error = [0.0, 0.1, 0.2, 0.3]\n"contact.friction" = [0.0, 0.1, 0.2, 0.3]\n')
+    out = tmp_path / "out"
+    cmd = [sys.executable, "-m", "hybrid", "sweep", str(config), "--out", str(out), "--workers", "1"]
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 60
+    while time.time() < deadline and not list((out / "parts").glob("*.parquet")):
+        time.sleep(0.05)
+    proc.send_signal(2)
+    proc.communicate(timeout=60)
+    done = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    again = pd.read_parquet(out / "results.parquet")
+    whole = sweep(BASE, {"model_error": [0.0, 0.1, 0.2, 0.3], "contact.friction": [0.0, 0.1, 0.2, 0.3]}, workers=2)
+    pd.testing.assert_frame_equal(again, whole)
+    assert "16 runs" in done.stdout
+
+
+def test_dask_engine_gives_the_same_table_and_survives_a_killed_worker():
+    distributed = pytest.importorskip("dask.distributed")
+    local = sweep(BASE, GRID, workers=2)
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
+    client = distributed.Client(cluster)
+    try:
+        pd.testing.assert_frame_equal(sweep(BASE, GRID, engine="dask", client=client), local)
+        # kill one worker's process while the sweep runs: its chunks are computed again elsewhere
+        killed = []
+
+        pids = client.run(os.getpid)
+
+        def kill_one():
+            time.sleep(1.0)
+            worker, pid = next(iter(pids.items()))
+            os.kill(pid, signal.SIGKILL)
+            killed.append(worker)
+
+        big = {**GRID, "gains.KDf": [80.0, 90.0, 100.0]}
+        thread = threading.Thread(target=kill_one)
+        thread.start()
+        table = sweep(BASE, big, engine="dask", client=client, chunk_size=1)
+        thread.join()
+        assert killed and len(table) == 24 and list(table["run"]) == list(range(24))
+        pd.testing.assert_frame_equal(table, sweep(BASE, big, workers=2))
+    finally:
+        client.close()
+        cluster.close()
+
+
+def test_cli_sweep_writes_table_and_heatmaps(tmp_path):
+    config = tmp_path / "s.toml"
+    config.write_text('experiment = "paper"\n[base]\nduration = 0.6\nF_d = {before = 10.0, after = 15.0, at = 0.3}\n'
+                      '[parameters]\nmodel_error = [0.0, 0.2]\n"contact.friction" = {uniform = [0.0, 0.3]}\n'
+                      'controller = ["task", "khatib"]\n[sweep]\nsamples = 6\nseed = 2\n'
+                      '[figures]\nx = "model_error"\ny = "contact.friction"\nrows = "controller"\n'
+                      'metrics = ["rms_force_error_N"]\n')
+    out = tmp_path / "out"
+    done = subprocess.run([sys.executable, "-m", "hybrid", "sweep", str(config), "--out", str(out), "--csv"],
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    table = pd.read_csv(out / "results.csv")
+    assert len(table) == 6 and (out / "heatmap_rms_force_error_N.png").stat().st_size > 1000
+    assert "6/6 runs" in done.stderr  # the progress bar
+
+
+@pytest.mark.parametrize("text, words", [
+    ('[parameters]\nbogus = [1]\n', "unknown setting 'bogus'"),
+    ('[parameters]\nmodel_error = {uniform = [0, 1]}\n', "needs samples"),
+    ('[parameters]\nmodel_error = 3\n', "list of values"),
+    ('stuff = 1\n[parameters]\nmodel_error = [0]\n', "unknown key"),
+    ('[parameters\n', "not valid TOML"),
+    ('experiment = "moon"\n[parameters]\nmodel_error = [0]\n', "give 'paper' or 'tracing'"),
+])
+def test_bad_sweep_files_are_one_line(tmp_path, text, words):
+    config = tmp_path / "s.toml"
+    config.write_text(text)
+    done = subprocess.run([sys.executable, "-m", "hybrid", "sweep", str(config), "--out", str(tmp_path / "o")],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 2 and words in done.stderr and len(done.stderr.strip().splitlines()) == 1
+
+
+def test_a_3d_sweep_runs():
+    table = sweep(hybrid.tracing_experiment(duration=0.3), {"controller": ["task", "khatib"]}, workers=1)
+    assert (table["status"] == "ok").all() and np.isfinite(table["rms_force_error_N"]).all()
+
+
+def test_the_demo_config_reads():
+    from hybrid import sweep_cli
+
+    config = sweep_cli.read_config(sweep_cli.DEMO)
+    base = sweep_cli._base(config["experiment"], config["base"])
+    check_names(base, config["parameters"])
+    assert len(points({k: sweep_cli._value(k, v) for k, v in config["parameters"].items()})) == 360
+
+
+def test_readme_sweep_example_runs():
+    import re
+
+    readme = (Path(__file__).resolve().parent.parent / "README.md").read_text()
+    block = next(b for b in re.findall(r"```python\n(.*?)```", readme, flags=re.S) if "hybrid.sweep(" in b)
+    ns: dict = {}
+    exec(compile(block, "README.md", "exec"), ns)
+    table = ns["table"]
+    assert len(table) == 40 and (table["status"] == "ok").all()
+    row = table.iloc[7]
+    exp = hybrid.paper_experiment(duration=1.0, model_error=row["model_error"], controller=row["controller"],
+                                  contact=hybrid.Contact(friction=row["contact.friction"]))
+    assert_same_metrics(row, hybrid.simulate(exp).metrics)
