@@ -1,9 +1,11 @@
 """Task-space decoupling hybrid force/velocity control of robot manipulators (De Luca & Manes).
 
-Public API: parameters (:class:`Arm`, :func:`paper_arm`, :class:`Circle`, :class:`Plane`),
-the compiled law (:func:`decoupling_law`) and the arm's terms, the experiment
-(:func:`paper_experiment`, :func:`simulate`), and :class:`HybridError`, the base of every
-error raised on bad input.
+Public API: robots (:class:`Arm`, :func:`paper_arm`, :class:`Robot`, :func:`ur5`) and surfaces
+(:class:`Circle`, :class:`Plane`, :class:`Sphere`, :class:`Cylinder`, :class:`ImplicitSurface`);
+the compiled law (:func:`decoupling_law`) and terms; the controller component
+(:class:`Controller`, the schemes in :data:`SCHEMES`); the experiments (:func:`paper_experiment`,
+:func:`tracing_experiment`, :func:`simulate`, :func:`metrics`); sweeps (:func:`sweep`); and
+:class:`HybridError`, the base of every error raised on bad input.
 """
 
 from .controller import ContactLoss, Controller, Measurement, Reference

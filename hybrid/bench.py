@@ -112,6 +112,12 @@ def _versions() -> dict:
         out["cpu"] = cpu[0].split(":", 1)[1].strip() if cpu else platform.processor()
     except OSError:
         out["cpu"] = platform.processor()
+    out["cores"] = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
+    try:
+        flags = next(ln for ln in Path("/proc/cpuinfo").read_text().splitlines() if ln.startswith("flags")).split()
+        out["simd"] = next((f for f in ("avx512f", "avx2", "avx", "sse4_2") if f in flags), "")
+    except (OSError, StopIteration):
+        pass
     for pkg in ("numpy", "cffi", "sympy", "casadi", "pin"):
         try:
             out[pkg] = version(pkg)
@@ -129,7 +135,7 @@ def run_benchmarks(quick: bool = False) -> dict:
     p, s = arm.as_array(), circle.as_array()
     rep = 3 if quick else 7
     results = []
-    steps = 11 + 3 * len(ROBOTS)
+    steps = 12 + 3 * len(ROBOTS)
     k = 0
 
     def add(name, ns, unit="ns", **extra):
@@ -223,6 +229,9 @@ def run_benchmarks(quick: bool = False) -> dict:
         _progress(k, steps, f"{name}: the 6-D decoupling law in C, from Python, batched, by Pinocchio + NumPy")
         spatial_law_benchmarks(name, path, tip, rep, quick, add)
         controller_benchmarks(name, path, tip, rep, quick, add)
+    k += 1
+    _progress(k, steps, "a sweep of paper runs on every core")
+    sweep_benchmarks(quick, add)
     by = {r["name"]: r for r in results}
     robot_targets = [(f"panda: {TERMS_IN_C}", "<= 1 us", lambda r: r["median"] <= 1000),
                      (f"panda: {GEN_COMPILE}", "<= 30 s", lambda r: r["median"] <= 30),
@@ -231,7 +240,10 @@ def run_benchmarks(quick: bool = False) -> dict:
                      (f"ur5: {LAW_ONE}", "<= 1.5 us, >= 20x Pinocchio + NumPy",
                       lambda r: r["median"] <= 1500 and r.get("speedup", 0) >= 20),
                      (f"ur5: {LAW_BATCHED}", "<= 0.5 us", lambda r: r["median"] <= 500),
-                     (f"ur5: {STEP_ONE}", "<= 2 us", lambda r: r["median"] <= 2000)]
+                     (f"ur5: {STEP_ONE}", "<= 2 us", lambda r: r["median"] <= 2000),
+                     (ONE_RUN, "<= 5 ms", lambda r: r["median"] <= 5),
+                     (SWEEP_1000, "<= 1 s", lambda r: r["median"] <= 1),
+                     (SWEEP_10000, "<= 6 s", lambda r: r["median"] <= 6)]
     for name, target, ok in robot_targets:
         if name in by:
             by[name].update(target=target, met=bool(ok(by[name])))
@@ -244,6 +256,9 @@ TERMS_IN_C = "r, rotation, J, J'q', B, n in C, per call (robot_terms)"
 LAW_IN_C = "6-D F* on a sphere in C, per call (curvature on)"
 LAW_ONE = "6-D F* from Python, one state (law(q, qdot, a, Fc))"
 LAW_BATCHED = "6-D F* from Python, batched, per state (N = 1e5, both cores)"
+ONE_RUN = "paper run through hybrid.simulate (2 s simulated)"
+SWEEP_1000 = "1,000 paper runs by hybrid.sweep (both cores)"
+SWEEP_10000 = "10,000 paper runs by hybrid.sweep (both cores), from the 1,000-run sweep"
 STEP_IN_C = "controller step in C (measurement, six loops, law), per sample"
 STEP_ONE = "controller step from Python, per sample (ctrl(t, q, qdot, Fc))"
 SPHERE = (0.45, 0.1, 0.3, 0.15)
@@ -364,7 +379,8 @@ def format_table(report: dict) -> str:
         target = f"{r['target']}: {'met' if r['met'] else 'MISSED'}" if "target" in r else ""
         lines.append(f"{r['name']:<{w}}  {r['median']:>9.4g} {r['unit']:<2}  {target:<{t}}  {r.get('ratio', '')}")
     m = report["machine"]
-    lines.append(f"\n{m.get('cpu')} | Python {m['python']} | numpy {m.get('numpy')} | {m['cc']}")
+    lines.append(f"\n{m.get('cpu')}, {m.get('cores')} cores, {m.get('simd') or 'no'} SIMD | Python {m['python']} | "
+                 f"numpy {m.get('numpy')} | {m['cc']}")
     return "\n".join(lines)
 
 
@@ -468,3 +484,21 @@ def controller_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool,
     add(f"{name}: {STEP_IN_C}", c_harness_ns(step.unit.folder, step.unit.manifest["unit"], step.entry, values,
                                              50_000 if quick else 500_000, rep), ratio=f"{ops} generated operations")
     add(f"{name}: {STEP_ONE}", _median_ns(lambda: ctrl(0.3, q, qd, Fc), 2000 if quick else 20000, rep))
+
+
+def sweep_benchmarks(quick: bool, add) -> None:
+    """One paper run through ``simulate``; a sweep of paper runs over every core (per run, and the
+    1,000- and 10,000-run totals it implies)."""
+    from .sweeps import sweep
+
+    exp = paper_experiment()
+    simulate(exp)
+    add(ONE_RUN, _median_ns(lambda: simulate(exp), 1, 5 if quick else 15) / 1e6, "ms")
+    n = 100 if quick else 1000
+    grid = {"model_error": list(np.linspace(0.0, 0.5, n // 4)), "controller": ["task", "khatib"],
+            "contact.friction": [0.1, 0.2]}
+    t0 = time.perf_counter()
+    table = sweep(exp, grid)
+    per_run = (time.perf_counter() - t0) / len(table)
+    add(SWEEP_1000, per_run * 1000, "s", ratio=f"{per_run * 1e3:.1f} ms a run, measured on {len(table)} runs")
+    add(SWEEP_10000, per_run * 10000, "s", ratio="estimated: 10 x the 1,000-run figure")

@@ -95,8 +95,30 @@ class Contact:
                               f"friction_smoothing > 0; got {self}")
 
 
+class RunSettings:
+    """What every experiment derives from its settings (a mixin of the experiment dataclasses)."""
+
+    @property
+    def steps_per_sample(self) -> int:
+        return round(self.sample_time / self.step)
+
+    @property
+    def n_samples(self) -> int:
+        return math.ceil(self.duration / self.sample_time - 1e-9)
+
+    def effective_gains(self) -> Gains:
+        """The gains in force: without integral action ``KI2v = KIf = 0`` (NOTES section 4)."""
+        return self.gains if self.integral else replace(self.gains, KI2v=0.0, KIf=0.0)
+
+    def plant_array(self) -> np.ndarray:
+        """The ``plant[7]`` array of the generated C (sensor, then contact)."""
+        s, c = self.sensor, self.contact
+        return np.array([s.mass, s.stiffness, s.damping, c.stiffness, c.damping, c.friction,
+                         c.friction_smoothing])
+
+
 @dataclass(frozen=True)
-class Experiment:
+class Experiment(RunSettings):
     """One closed-loop run: plant, controller, references, integration settings.
 
     ``arm`` is the true arm; the controller's model is ``arm.with_model_error(model_error,
@@ -151,33 +173,12 @@ class Experiment:
 
     def _check_types(self) -> None:
         """Every field of the kind it must be: a bool is a bool, a reference a Step or a number."""
-        for name in ("integral", "curvature"):
-            if not isinstance(getattr(self, name), bool):
-                raise HybridError(f"{name} = {getattr(self, name)!r}; give True or False")
-        for name in ("controller", "frame", "backend"):
-            if not isinstance(getattr(self, name), str):
-                raise HybridError(f"{name} = {getattr(self, name)!r}; give its name as a string")
-        for name, typ in (("sensor", Sensor), ("contact", Contact), ("gains", Gains)):
-            if not isinstance(getattr(self, name), typ):
-                raise HybridError(f"{name} = {getattr(self, name)!r:.60}; give a hybrid.{typ.__name__}(...)")
-        for name in ("force_reference", "speed_reference"):
-            ref = getattr(self, name)
-            if isinstance(ref, (int, float, np.integer, np.floating)) and not isinstance(ref, bool):
-                _finite("Experiment", **{name: ref})
-                object.__setattr__(self, name, Step(float(ref), float(ref), 0.0))  # a constant reference
-            elif not isinstance(ref, Step):
-                raise HybridError(f"{name} = {ref!r:.60}; give a hybrid.Step(before, after, at) or a number")
+        check_common_types(self)
+        if not isinstance(self.backend, str):
+            raise HybridError(f"backend = {self.backend!r}; give its name as a string")
         if isinstance(self.elbow, bool) or not isinstance(self.elbow, (int, np.integer)):
             raise HybridError(f"elbow = {self.elbow!r}; give +1 (q2 > 0) or -1 (q2 < 0)")
-        _finite("Experiment", model_error=self.model_error, viscous_compensation=self.viscous_compensation)
         object.__setattr__(self, "start_point", _point("Experiment", "start_point", self.start_point))
-    @property
-    def steps_per_sample(self) -> int:
-        return round(self.sample_time / self.step)
-
-    @property
-    def n_samples(self) -> int:
-        return math.ceil(self.duration / self.sample_time - 1e-9)
 
     def desired_point(self, t: float) -> tuple[np.ndarray, np.ndarray]:
         """``r_d(t)`` [m] on the surface, reached from ``start_point`` at the desired speed, and
@@ -190,16 +191,6 @@ class Experiment:
     def controller_arm(self) -> Arm:
         """The controller's (wrong) model of the arm."""
         return self.arm.with_model_error(self.model_error, self.viscous_compensation)
-
-    def effective_gains(self) -> Gains:
-        """The gains in force: without integral action ``KI2v = KIf = 0`` (NOTES section 4)."""
-        return self.gains if self.integral else replace(self.gains, KI2v=0.0, KIf=0.0)
-
-    def plant_array(self) -> np.ndarray:
-        """The ``plant[7]`` array of the generated C."""
-        s, c = self.sensor, self.contact
-        return np.array([s.mass, s.stiffness, s.damping, c.stiffness, c.damping, c.friction,
-                         c.friction_smoothing])
 
     def to_dict(self) -> dict:
         d = asdict(self)
@@ -229,6 +220,29 @@ class Experiment:
         d["start_point"] = tuple(d["start_point"])
         return cls(surface=surface, **d)
 
+
+
+def check_common_types(exp) -> None:
+    """The fields every experiment shares, of the kind they must be (references given as numbers
+    become constant :class:`Step` references)."""
+    owner = type(exp).__name__
+    for name in ("integral", "curvature"):
+        if not isinstance(getattr(exp, name), bool):
+            raise HybridError(f"{name} = {getattr(exp, name)!r}; give True or False")
+    for name in ("controller", "frame"):
+        if not isinstance(getattr(exp, name), str):
+            raise HybridError(f"{name} = {getattr(exp, name)!r}; give its name as a string")
+    for name, typ in (("sensor", Sensor), ("contact", Contact), ("gains", Gains)):
+        if not isinstance(getattr(exp, name), typ):
+            raise HybridError(f"{name} = {getattr(exp, name)!r:.60}; give a hybrid.{typ.__name__}(...)")
+    for name in ("force_reference", "speed_reference"):
+        ref = getattr(exp, name)
+        if isinstance(ref, (int, float, np.integer, np.floating)) and not isinstance(ref, bool):
+            _finite(owner, **{name: ref})
+            object.__setattr__(exp, name, Step(float(ref), float(ref), 0.0))  # a constant reference
+        elif not isinstance(ref, Step):
+            raise HybridError(f"{name} = {ref!r:.60}; give a hybrid.Step(before, after, at) or a number")
+    _finite(owner, model_error=exp.model_error, viscous_compensation=exp.viscous_compensation)
 
 
 def check_timing(exp) -> None:
@@ -266,13 +280,10 @@ def check_timing(exp) -> None:
     check_loops(exp)
 
 
-def paper_experiment(**overrides) -> Experiment:
-    """The paper's experiment (NOTES section 5), with any setting overridden by keyword.
-
-    Besides every field of :class:`Experiment`, the gains can be given one by one
-    (``KPv=50``) and ``F_d`` / ``v_d`` replace the force / speed references.
-    """
-    names = {f.name for f in fields(Experiment)}
+def with_overrides(cls, maker: str, overrides: dict):
+    """``cls(**overrides)`` where the gains may also be given one by one (``KPv=50``) and ``F_d`` /
+    ``v_d`` name the force / speed references; an unknown name lists the known ones."""
+    names = {f.name for f in fields(cls)}
     gain_names = {f.name for f in fields(Gains)}
     aliases = {"F_d": "force_reference", "v_d": "speed_reference"}
     gains = {k: overrides.pop(k) for k in list(overrides) if k in gain_names}
@@ -281,11 +292,20 @@ def paper_experiment(**overrides) -> Experiment:
             overrides[name] = overrides.pop(alias)
     unknown = sorted(set(overrides) - names)
     if unknown:
-        raise HybridError(f"unknown setting(s) {', '.join(unknown)} for paper_experiment; see the known ones below\n"
+        raise HybridError(f"unknown setting(s) {', '.join(unknown)} for {maker}; see the known ones below\n"
                           f"  known: {', '.join(sorted(names | gain_names | set(aliases)))}")
     if gains:
         base = overrides.get("gains", Gains())
         if not isinstance(base, Gains):
             raise HybridError(f"gains = {base!r:.60}; give a hybrid.Gains(...) to combine with {', '.join(gains)}")
         overrides["gains"] = replace(base, **gains)
-    return Experiment(**overrides)
+    return cls(**overrides)
+
+
+def paper_experiment(**overrides) -> Experiment:
+    """The paper's experiment (NOTES section 5), with any setting overridden by keyword.
+
+    Besides every field of :class:`Experiment`, the gains can be given one by one
+    (``KPv=50``) and ``F_d`` / ``v_d`` replace the force / speed references.
+    """
+    return with_overrides(Experiment, "paper_experiment", overrides)

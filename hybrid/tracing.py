@@ -8,13 +8,13 @@ loops, sampling, integration and model error of the paper's experiment.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, fields, replace
+from dataclasses import dataclass, field, fields
 from pathlib import Path
 
 import numpy as np
 
 from .errors import HybridError
-from .experiment import Contact, Gains, Sensor, Step, check_timing
+from .experiment import Contact, Gains, RunSettings, Sensor, Step, check_common_types, check_timing, with_overrides
 from .law import SINGULAR_TOL, check_singular_tol
 from .robot import Robot
 from .schemes import scheme_of
@@ -33,7 +33,7 @@ def ur5() -> Robot:
 
 
 @dataclass(frozen=True)
-class TracingExperiment:
+class TracingExperiment(RunSettings):
     """One closed-loop run of a URDF arm on a 3-D surface (NOTES section 10).
 
     The sensor tip starts on the surface at ``start_point`` [m] (default: on the latitude circle
@@ -67,9 +67,7 @@ class TracingExperiment:
     singular_tol: float = SINGULAR_TOL
 
     def __post_init__(self):
-        for name in ("integral", "curvature"):
-            if not isinstance(getattr(self, name), bool):
-                raise HybridError(f"{name} = {getattr(self, name)!r}; give True or False")
+        check_common_types(self)
         scheme_of(self.controller)
         if self.frame not in ("actual", "desired"):
             raise HybridError(f"frame = {self.frame!r}; give 'actual' or 'desired'")
@@ -79,18 +77,7 @@ class TracingExperiment:
         if not isinstance(self.surface, (Sphere, Plane, Cylinder, ImplicitSurface)):
             raise HybridError(f"surface = {self.surface!r:.60}; give a hybrid Sphere, Plane, Cylinder or "
                               "ImplicitSurface")
-        for name, typ in (("sensor", Sensor), ("contact", Contact), ("gains", Gains)):
-            if not isinstance(getattr(self, name), typ):
-                raise HybridError(f"{name} = {getattr(self, name)!r:.60}; give a hybrid.{typ.__name__}(...)")
-        for name in ("force_reference", "speed_reference"):
-            ref = getattr(self, name)
-            if isinstance(ref, (int, float)) and not isinstance(ref, bool):
-                _finite("tracing_experiment", **{name: ref})
-                object.__setattr__(self, name, Step(float(ref), float(ref), 0.0))
-            elif not isinstance(ref, Step):
-                raise HybridError(f"{name} = {ref!r:.60}; give a hybrid.Step(before, after, at) or a number")
-        _finite("tracing_experiment", latitude=self.latitude, model_error=self.model_error,
-                viscous_compensation=self.viscous_compensation)
+        _finite("tracing_experiment", latitude=self.latitude)
         if self.start_point is None and not isinstance(self.surface, Sphere):
             raise HybridError(f"a {type(self.surface).__name__} has no latitude circle: give start_point, a "
                               "point on the surface [m]")
@@ -120,25 +107,9 @@ class TracingExperiment:
 
     # ------------------------------------------------------------------ derived
 
-    @property
-    def steps_per_sample(self) -> int:
-        return round(self.sample_time / self.step)
-
-    @property
-    def n_samples(self) -> int:
-        return math.ceil(self.duration / self.sample_time - 1e-9)
-
     def controller_robot(self) -> Robot:
         """The controller's (wrong) model of the arm."""
         return self.robot.with_model_error(self.model_error, self.viscous_compensation)
-
-    def effective_gains(self) -> Gains:
-        return self.gains if self.integral else replace(self.gains, KI2v=0.0, KIf=0.0)
-
-    def plant_array(self) -> np.ndarray:
-        s, c = self.sensor, self.contact
-        return np.array([s.mass, s.stiffness, s.damping, c.stiffness, c.damping, c.friction,
-                         c.friction_smoothing])
 
     def _circle(self) -> tuple[np.ndarray, float, float, float]:
         """The sphere's latitude circle: centre, radius, height above the sphere's centre, and the
@@ -205,20 +176,4 @@ def tracing_experiment(**overrides) -> TracingExperiment:
     the gains one by one or ``gains``, ``F_d``, ``v_d``, ``duration``, ``step``, ``sample_time``, ...)
     plus ``robot`` and ``surface``.
     """
-    names = {f.name for f in fields(TracingExperiment)}
-    gain_names = {f.name for f in fields(Gains)}
-    aliases = {"F_d": "force_reference", "v_d": "speed_reference"}
-    gains = {k: overrides.pop(k) for k in list(overrides) if k in gain_names}
-    for alias, name in aliases.items():
-        if alias in overrides:
-            overrides[name] = overrides.pop(alias)
-    unknown = sorted(set(overrides) - names)
-    if unknown:
-        raise HybridError(f"unknown setting(s) {', '.join(unknown)} for tracing_experiment; see the known ones "
-                          f"below\n  known: {', '.join(sorted(names | gain_names | set(aliases)))}")
-    if gains:
-        base = overrides.get("gains", Gains())
-        if not isinstance(base, Gains):
-            raise HybridError(f"gains = {base!r:.60}; give a hybrid.Gains(...) to combine with {', '.join(gains)}")
-        overrides["gains"] = replace(base, **gains)
-    return TracingExperiment(**overrides)
+    return with_overrides(TracingExperiment, "tracing_experiment", overrides)
