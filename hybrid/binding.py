@@ -192,7 +192,9 @@ class Function:
     def _labelled(self, ins: dict) -> dict:
         return {self._labels.get(n, n): v for n, v in ins.items()}
 
-    def batch(self, *args, singular_tol: float | None = None) -> dict[str, np.ndarray]:
+    def batch(self, *args, singular_tol: float | None = None, out: dict | None = None) -> dict[str, np.ndarray]:
+        """N states in one native call; ``out`` maps output names to the caller's arrays to write
+        (float64, C-contiguous, writable, ``(N, *shape)``), the others are allocated."""
         if self._batch is None:
             raise HybridError(f"{self.name} has no batched entry point")
         ins = self._inputs(args, batched=True)
@@ -201,7 +203,7 @@ class Function:
             raise HybridError(f"{', '.join(self.per_state)} must have the same number of rows, got "
                               + ", ".join(str(ins[n].shape) for n in self.per_state))
         N = lengths.pop()
-        outs = {n: np.empty((N, size)) for n, size, _ in self.outputs}
+        outs = {n: self._out_buffer(n, N, size, shape, (out or {}).get(n)) for n, size, shape in self.outputs}
         status = np.empty(N, dtype=np.intc)
 
         def run(lo: int, hi: int) -> int:
@@ -209,12 +211,28 @@ class Function:
             return self.batch_into(*rows, *(v[lo:hi] for v in outs.values()), status=status[lo:hi],
                                    singular_tol=singular_tol)
 
+        unknown = set(out or {}) - set(outs)
+        if unknown:
+            raise HybridError(f"out names {', '.join(sorted(unknown))}; {self.name} writes {', '.join(outs)}")
         failed = sum(parallel_chunks(run, N))
         if failed:
             i = int(np.flatnonzero(status)[0])
             raise status_error(int(status[i]), f"{self.name}, state {i} of {N} ({failed} failed)", self._hint,
                                **self._labelled({n: (v[i] if n in self.per_state else v) for n, v in ins.items()}))
-        return {n: outs[n].reshape((N, *shape)) for n, _, shape in self.outputs}
+        given = out or {}
+        return {n: given[n] if n in given else outs[n].reshape((N, *shape)) for n, _, shape in self.outputs}
+
+    def _out_buffer(self, name: str, N: int, size: int, shape: tuple, given) -> np.ndarray:
+        """The ``(N, size)`` array the batch writes output ``name`` into: the caller's, checked, or new."""
+        if given is None:
+            return np.empty((N, size))
+        ok = (isinstance(given, np.ndarray) and given.dtype == np.float64 and given.flags.c_contiguous
+              and given.flags.writeable and given.shape in ((N, *shape), (N, size)))
+        if not ok:
+            got = f"{type(given).__name__} {getattr(given, 'dtype', '')} {getattr(given, 'shape', '')}"
+            raise HybridError(f"out[{name!r}] must be a writable C-contiguous float64 array of shape {(N, *shape)}, "
+                              f"got {got.strip()}")
+        return given.reshape(N, size)
 
     def _inputs(self, args, batched: bool) -> dict[str, np.ndarray]:
         if len(args) != len(self.inputs):

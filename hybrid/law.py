@@ -96,32 +96,45 @@ class DecouplingLaw:
         # the compiled handles do not pickle: a copy is built again from the settings
         return (type(self), (self.arm, self.surface, self.curvature, self.backend, self.singular_tol))
 
-    def evaluate(self, q, qdot, a, Fc) -> tuple[np.ndarray, np.ndarray]:
-        """``(F*, tau)`` for one state (shape ``(2,)``) or N states (shape ``(N, 2)``)."""
-        out = self._fast(self._binding, -1, q, qdot, a, Fc)
-        return self._checked(q, qdot, a, Fc) if out is None else out
+    def evaluate(self, q, qdot, a, Fc, out: tuple | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """``(F*, tau)`` for one state (shape ``(2,)``) or N states (shape ``(N, 2)``); for N states
+        ``out = (F, tau)`` are the caller's arrays to write (either may be None)."""
+        if out is not None:
+            return self._checked(q, qdot, a, Fc, dict(zip(("F", "tau"), out)))
+        got = self._fast(self._binding, -1, q, qdot, a, Fc)
+        return self._checked(q, qdot, a, Fc) if got is None else got
 
-    def _checked(self, q, qdot, a, Fc) -> tuple[np.ndarray, np.ndarray]:
-        """The general path: any array-like input, N states, and the errors that name the cause."""
+    def _checked(self, q, qdot, a, Fc, out: dict | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """The general path: any array-like input, N states, caller-supplied outputs, and the errors
+        that name the cause."""
         size = self._fn.size("q")
         ins = [as_states(n, v, size) for n, v in (("q", q), ("qdot", qdot), ("a", a), ("Fc", Fc))]
         shape = ins[0].shape
         if any(x.shape != shape for x in ins):
             raise HybridError("q, qdot, a and Fc must have the same shape, got "
                               + ", ".join(str(x.shape) for x in ins))
-        call = self._fn if len(shape) == 1 else self._fn.batch
-        out = call(*ins, *self._params, singular_tol=self.singular_tol)
-        return out["F"], out["tau"]
+        out = {k: v for k, v in (out or {}).items() if v is not None}
+        if len(shape) == 1:
+            if out:
+                raise HybridError("out= is for N states (arrays of shape (N, 2)); one state returns new arrays")
+            got = self._fn(*ins, *self._params, singular_tol=self.singular_tol)
+        else:
+            got = self._fn.batch(*ins, *self._params, singular_tol=self.singular_tol, out=out)
+        return got["F"], got["tau"]
 
-    def __call__(self, q, qdot, a, Fc) -> np.ndarray:
-        """Cartesian ``F*`` [N] in the base frame."""
-        out = self._fast(self._binding, 0, q, qdot, a, Fc)
-        return self._checked(q, qdot, a, Fc)[0] if out is None else out
+    def __call__(self, q, qdot, a, Fc, out: np.ndarray | None = None) -> np.ndarray:
+        """Cartesian ``F*`` [N] in the base frame (for N states, into ``out`` when given)."""
+        if out is not None:
+            return self._checked(q, qdot, a, Fc, {"F": out})[0]
+        got = self._fast(self._binding, 0, q, qdot, a, Fc)
+        return self._checked(q, qdot, a, Fc)[0] if got is None else got
 
-    def torque(self, q, qdot, a, Fc) -> np.ndarray:
-        """Joint torques ``tau = J^T F*`` [N m]."""
-        out = self._fast(self._binding, 1, q, qdot, a, Fc)
-        return self._checked(q, qdot, a, Fc)[1] if out is None else out
+    def torque(self, q, qdot, a, Fc, out: np.ndarray | None = None) -> np.ndarray:
+        """Joint torques ``tau = J^T F*`` [N m] (for N states, into ``out`` when given)."""
+        if out is not None:
+            return self._checked(q, qdot, a, Fc, {"tau": out})[1]
+        got = self._fast(self._binding, 1, q, qdot, a, Fc)
+        return self._checked(q, qdot, a, Fc)[1] if got is None else got
 
 
 def decoupling_law(arm: Arm | Robot, surface, curvature: bool = False, *, backend: str = "sympy",

@@ -89,14 +89,62 @@ def _compiler(cc_env: str) -> tuple[str, str]:
             raise NativeBuildError(
                 "no C compiler found (tried cc and gcc; $CC is unset): install one, e.g. `apt-get install gcc` "
                 "on Debian/Ubuntu or `xcode-select --install` on macOS, or set CC to its path")
-    try:
-        ident = subprocess.run([path, "--version"], capture_output=True, text=True, check=True,
-                               timeout=60).stdout.splitlines()[0]
-    except (OSError, subprocess.SubprocessError, IndexError) as exc:
-        raise NativeBuildError(f"the C compiler {path} (chosen by {why}) does not run ({exc}); "
-                               "reinstall it or set CC") from exc
+    ident = _known_identity(path)
+    if ident is None:
+        try:
+            ident = subprocess.run([path, "--version"], capture_output=True, text=True, check=True,
+                                   timeout=60).stdout.splitlines()[0]
+        except (OSError, subprocess.SubprocessError, IndexError) as exc:
+            raise NativeBuildError(f"the C compiler {path} (chosen by {why}) does not run ({exc}); "
+                                   "reinstall it or set CC") from exc
+        _remember_identity(path, ident)
     log.info("hybrid: C compiler %s (%s), chosen by %s", path, ident, why)
     return path, ident
+
+
+def _binary_key(path: str) -> str | None:
+    """The compiler binary's real path, modification time and size: a new or reinstalled compiler
+    has another key."""
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None
+    return f"{os.path.realpath(path)}|{st.st_mtime_ns}|{st.st_size}"
+
+
+def _identities() -> Path:
+    return cache_dir() / "compilers.json"
+
+
+def _known_identity(path: str) -> str | None:
+    """The identity ``--version`` gave for this very binary before (a warm start runs no subprocess)."""
+    key = _binary_key(path)
+    try:
+        known = json.loads(_identities().read_text())
+    except (OSError, ValueError):
+        return None
+    ident = known.get(key) if isinstance(known, dict) else None
+    return ident if isinstance(ident, str) and ident else None
+
+
+def _remember_identity(path: str, ident: str) -> None:
+    """Add the identity to the cache's table, atomically; a cache that cannot be written is no error."""
+    key = _binary_key(path)
+    if key is None:
+        return
+    try:
+        known = json.loads(_identities().read_text())
+        known = known if isinstance(known, dict) else {}
+    except (OSError, ValueError):
+        known = {}
+    known[key] = ident
+    try:
+        _identities().parent.mkdir(parents=True, exist_ok=True)
+        tmp = _identities().with_name(f".compilers.{os.getpid()}.tmp")
+        tmp.write_text(json.dumps(known, indent=1, sort_keys=True))
+        os.replace(tmp, _identities())
+    except OSError:
+        pass
 
 
 def cdef_of(header: str) -> str:

@@ -161,3 +161,20 @@ def test_parameters_are_runtime_inputs():
     assert native.load.cache_info().currsize <= max(before, 1)
     args = ([0.3, 1.2], [0.2, -0.1], [0.1, 0.2], [1.0, 2.0])
     assert not np.allclose(law1(*args), law2(*args))
+
+
+def test_batched_law_writes_into_the_callers_arrays(rng):
+    law = hybrid.decoupling_law(hybrid.paper_arm(), hybrid.Circle((0.5, 0.0), 0.2), curvature=True)
+    s = random_states(rng, 2000)
+    F, tau = np.full((2000, 2), np.nan), np.full((2000, 2), np.nan)
+    got = law.evaluate(s["q"], s["qdot"], s["a"], s["Fc"], out=(F, tau))
+    assert got[0] is F and got[1] is tau
+    want = law.evaluate(s["q"], s["qdot"], s["a"], s["Fc"])
+    np.testing.assert_array_equal(F, want[0])
+    np.testing.assert_array_equal(tau, want[1])
+    assert law.torque(s["q"], s["qdot"], s["a"], s["Fc"], out=tau) is tau
+    for bad in (np.empty((2000, 3)), np.empty((2, 2000)).T, np.empty((2000, 2), dtype=np.float32), [[0.0, 0.0]]):
+        with pytest.raises(hybrid.HybridError, match="out"):
+            law(s["q"], s["qdot"], s["a"], s["Fc"], out=bad)
+    with pytest.raises(hybrid.HybridError, match="N states"):
+        law(s["q"][0], s["qdot"][0], s["a"][0], s["Fc"][0], out=np.empty((1, 2)))

@@ -80,6 +80,32 @@ def test_the_compiler_is_probed_once_per_process():
     assert isinstance(hybrid.NativeBuildError("x"), hybrid.HybridError)
 
 
+def test_a_known_compiler_is_not_probed_again_and_a_changed_one_is(tmp_path, monkeypatch):
+    """A warm start reads the compiler's identity from the cache (no subprocess); a compiler whose
+    binary changed is asked again."""
+    calls = tmp_path / "calls"
+    fake = tmp_path / "fakecc"
+
+    def install(version: str) -> None:
+        fake.write_text(f"#!/bin/sh\necho x >> {calls}\necho 'fakecc {version}'\n")
+        fake.chmod(0o755)
+
+    install("1.0")
+    monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setenv("CC", str(fake))
+    try:
+        for _ in range(2):
+            native._compiler.cache_clear()
+            assert native.compiler() == (str(fake), "fakecc 1.0")
+        assert calls.read_text().count("x") == 1
+        install("2.0.1")  # another binary (size and time differ)
+        native._compiler.cache_clear()
+        assert native.compiler()[1] == "fakecc 2.0.1"
+        assert calls.read_text().count("x") == 2
+    finally:
+        native._compiler.cache_clear()
+
+
 def test_a_cache_folder_under_a_file_is_a_native_build_error(tmp_path):
     afile = tmp_path / "afile"
     afile.write_text("x")
