@@ -203,6 +203,8 @@ class Function:
             raise HybridError(f"{', '.join(self.per_state)} must have the same number of rows, got "
                               + ", ".join(str(ins[n].shape) for n in self.per_state))
         N = lengths.pop()
+        if out is not None and not isinstance(out, dict):
+            raise HybridError(f"out must map output names to arrays, got {type(out).__name__}")
         outs = {n: self._out_buffer(n, N, size, shape, (out or {}).get(n)) for n, size, shape in self.outputs}
         status = np.empty(N, dtype=np.intc)
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, replace
+from math import isfinite as _isfinite
 
 import numpy as np
 
@@ -100,7 +101,8 @@ class Controller:
     force_reference, velocity_reference : the force-axes' ``F_d`` [N, N m] and the velocity-axes'
         ``v_d`` [m/s, rad/s]: one :class:`Reference`-like value (a number, a Step or ``f(t)``) for the
         normal force and the speed along ``t1`` (the other axes' references are 0), or
-        ``{axis name: value}``.
+        ``{axis name: value}``. Default: 10 N on the normal when it is a force axis, every other
+        reference 0.
     sample_time : the period ``T`` [s] at which the integrals advance.
     integral : with ``False`` the integral actions ``KI2v, KIf`` are 0 (NOTES section 4).
     curvature : give ``R'`` to the law (with ``frame="desired"``: the loop frame's ``R_d'``).
@@ -119,7 +121,7 @@ class Controller:
     """
 
     def __init__(self, robot: Robot | Arm, surface, scheme: str | Scheme = "task", *, axes=None, selection=None,
-                 gains: Gains | Mapping | None = None, force_reference=10.0, velocity_reference=0.0,
+                 gains: Gains | Mapping | None = None, force_reference=None, velocity_reference=None,
                  sample_time: float = 0.01, integral: bool = True, curvature: bool = False,
                  frame: str = "actual", path: Callable | None = None, reference=(0.0, 0.0, 1.0),
                  position_error: bool = False, integral_limit: float | None = None,
@@ -224,7 +226,9 @@ class Controller:
             selection = (selection,)
         try:
             chosen = {self._axis("selection", k) for k in selection}
-        except TypeError:
+        except HybridError:
+            raise
+        except (TypeError, ValueError):
             raise HybridError(f"selection = {selection!r:.60}; give the force-controlled axes by name, "
                               "e.g. ('n',)") from None
         return tuple(int(k in chosen) for k in range(len(self.axes)))
@@ -254,6 +258,10 @@ class Controller:
 
     def _axis_references(self, force, velocity) -> list[Reference]:
         refs: list = [0.0] * len(self.axes)
+        if force is None:  # the default: 10 N on the normal, if it is force-controlled
+            force = {"n": 10.0} if 2 in self.axes and self.selection[self.axes.index(2)] else {}
+        if velocity is None:
+            velocity = {}
         for what, given, force_axes in (("force_reference", force, True), ("velocity_reference", velocity, False)):
             if isinstance(given, Mapping):
                 items = {self._axis(what, k): v for k, v in given.items()}
@@ -285,7 +293,10 @@ class Controller:
 
     @state.setter
     def state(self, value) -> None:
-        arr = np.asarray(value, dtype=float)
+        try:
+            arr = np.asarray(value, dtype=float)
+        except (TypeError, ValueError):
+            arr = np.full(1, np.nan)
         if arr.shape != (len(self.axes), 2) or not np.isfinite(arr).all():
             raise HybridError(f"state must be {len(self.axes)} x 2 finite numbers (int e, int int e per axis "
                               f"{', '.join(self.axis_names)}), got shape {arr.shape}")
@@ -300,10 +311,16 @@ class Controller:
 
     def _python_references(self, t: float) -> None:
         """The references given as code, at ``t``: into the step's ``yd_extra`` and ``yd_rate``."""
-        for i, value in self._varying:
-            self._extra[i] = value(t)
-        for i, rate in self._rates:
-            self._rate[i] = rate(t)
+        try:
+            for i, value in self._varying:
+                self._extra[i] = value(t)
+            for i, rate in self._rates:
+                self._rate[i] = rate(t)
+        except HybridError:
+            raise
+        except (TypeError, ValueError) as exc:
+            raise HybridError(f"a reference at t = {t} s did not give a number ({exc}); a reference f(t) "
+                              "returns one number (and its rate(t) one number)") from None
 
     def __call__(self, t: float, q, qdot, Fc) -> np.ndarray:
         """``tau`` [N m or N] for the sample at time ``t`` [s], from the joint state and the measured
@@ -311,7 +328,12 @@ class Controller:
         advances the integrals by one sample."""
         if type(Fc) is not np.ndarray or Fc.shape != (6,):
             Fc = self._padded(Fc)
-        self._t[0] = t
+        try:
+            self._t[0] = t
+        except (TypeError, ValueError):
+            raise HybridError(f"t = {t!r:.40}; give the sample time in seconds (a number)") from None
+        if not _isfinite(self._t[0]):
+            raise HybridError(f"t = {t!r}; give a finite sample time")
         out, z = self._out, self._z
         if self._short:
             done = self._into(self._binding, out, q, qdot, Fc, z, self._t)
@@ -381,7 +403,10 @@ def _wrench(Fc) -> np.ndarray:
 
 
 def _vector3(name: str, v) -> np.ndarray:
-    arr = np.asarray(v, dtype=float).ravel()
+    try:
+        arr = np.asarray(v, dtype=float).ravel()
+    except (TypeError, ValueError):
+        arr = np.full(1, np.nan)
     if arr.size not in (2, 3) or not np.isfinite(arr).all():
         raise HybridError(f"the desired {name} {v!r:.60} must be 2 or 3 finite numbers [m, m/s]")
     return np.concatenate([arr, np.zeros(3 - arr.size)])

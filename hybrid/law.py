@@ -100,6 +100,8 @@ class DecouplingLaw:
         """``(F*, tau)`` for one state (shape ``(2,)``) or N states (shape ``(N, 2)``); for N states
         ``out = (F, tau)`` are the caller's arrays to write (either may be None)."""
         if out is not None:
+            if not isinstance(out, (tuple, list)) or len(out) != 2:
+                raise HybridError("out must be (F, tau): two arrays of shape (N, 2), either may be None")
             return self._checked(q, qdot, a, Fc, dict(zip(("F", "tau"), out)))
         got = self._fast(self._binding, -1, q, qdot, a, Fc)
         return self._checked(q, qdot, a, Fc) if got is None else got

@@ -1,5 +1,5 @@
 """The paper's experiment with MuJoCo as the plant: an independent physics engine under the same
-controller, runner, result object and metrics (optional extra ``hybrid[mujoco]``).
+controller, runner, result object and metrics (optional extra ``hybrid-decoupling[mujoco]``).
 
 The MJCF model, written from the experiment (:func:`model_xml`):
 
@@ -52,7 +52,7 @@ def _mujoco():
     try:
         import mujoco
     except ImportError:
-        raise HybridError("the MuJoCo plant needs MuJoCo: pip install 'hybrid[mujoco]'") from None
+        raise HybridError("the MuJoCo plant needs MuJoCo: pip install 'hybrid-decoupling[mujoco]'") from None
     return mujoco
 
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .errors import HybridError
 from .experiment import Step
 
 
@@ -26,9 +27,10 @@ def _step_of(t: np.ndarray, ref: np.ndarray) -> Step:
 
 
 def _series(name: str, x, n: int) -> np.ndarray:
-    from .errors import HybridError
-
-    arr = np.asarray(x, dtype=float)
+    try:
+        arr = np.asarray(x, dtype=float)
+    except (TypeError, ValueError):
+        raise HybridError(f"metrics: {name} must be numbers, one per time sample") from None
     if arr.ndim != 1 or len(arr) != n:
         raise HybridError(f"metrics: {name} must have one value per time sample ({n}), got shape {arr.shape}")
     return arr
@@ -51,14 +53,18 @@ def metrics(t, force_normal, velocity_tangential, force_reference, speed_referen
     force deviation and speed overshoot after the speed step, steady-state errors (last 0.2 s), RMS
     errors, penetration, contact losses and time out of contact, peak torque per joint.
     """
-    t = np.asarray(t, dtype=float)
+    try:
+        t = np.asarray(t, dtype=float)
+    except (TypeError, ValueError):
+        t = np.zeros(0)
     if t.ndim != 1 or len(t) < 2 or not np.all(np.diff(t) > 0):
-        from .errors import HybridError
-
         raise HybridError("metrics: t must be at least two increasing sample times [s]")
     F, v, Fd, vd = (_series(name, x, len(t)) for name, x in (
         ("force_normal", force_normal), ("velocity_tangential", velocity_tangential),
         ("force_reference", force_reference), ("speed_reference", speed_reference)))
+    for name, step in (("force_step", force_step), ("speed_step", speed_step)):
+        if step is not None and not isinstance(step, Step):
+            raise HybridError(f"metrics: {name} = {step!r:.40}; give a hybrid.Step(before, after, at) or None")
     fs = force_step if force_step is not None else _step_of(t, Fd)
     vs = speed_step if speed_step is not None else _step_of(t, vd)
     end = t[-1]
@@ -76,7 +82,9 @@ def metrics(t, force_normal, velocity_tangential, force_reference, speed_referen
         peak = F[after_f].max() if step >= 0 else F[after_f].min()
         m["force_overshoot_N"] = float((peak - fs.after) * np.sign(step))
         m["force_overshoot_percent"] = float(100 * m["force_overshoot_N"] / abs(step))
-        m["force_settling_time_2pct_s"] = settling_time(t[after_f], F[after_f], fs.after, 0.02 * abs(fs.after))
+        # 2 % of the final value (of the step's size when the force steps to 0)
+        band = 0.02 * (abs(fs.after) or abs(step))
+        m["force_settling_time_2pct_s"] = settling_time(t[after_f], F[after_f], fs.after, band)
         m["speed_drop_after_force_step_m_per_s"] = float(np.max(vd[after_f] - v[after_f]))
     if after_v.any() and vs.after != vs.before:
         m["force_deviation_after_speed_step_N"] = float(np.max(np.abs(F[after_v] - Fd[after_v])))
@@ -92,7 +100,14 @@ def metrics(t, force_normal, velocity_tangential, force_reference, speed_referen
         m["contact_losses"] = int(np.count_nonzero(in_contact[:-1] & ~in_contact[1:]))
         m["time_out_of_contact_s"] = float(np.sum(np.diff(t)[~in_contact[1:]]))
     if tau is not None:
-        torques = np.asarray(tau, dtype=float).reshape(len(t), -1)
+        try:
+            torques = np.asarray(tau, dtype=float)
+        except (TypeError, ValueError):
+            torques = np.zeros(0)
+        if torques.ndim not in (1, 2) or len(torques) != len(t):
+            raise HybridError(f"metrics: tau must have one row of joint torques per time sample ({len(t)}), "
+                              f"got shape {torques.shape}")
+        torques = torques.reshape(len(t), -1)
         for j in range(torques.shape[1]):
             m[f"peak_torque_joint{j + 1}_Nm"] = float(np.nanmax(np.abs(torques[:, j])))
     return m

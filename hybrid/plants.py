@@ -114,7 +114,7 @@ class SpatialPlant(CompiledPlant):
                          ("Fc_x", "Fc_y", "Fc_z"))
         self._robot = exp.robot
 
-    conditioning_name = "6/(|J|_F |J^+|_F)"
+    conditioning_name = "m/(|J|_F |J^+|_F)"
 
     def conditioning(self, q) -> np.ndarray:
         """``6 / (|J|_F |J^+|_F)`` of the tip's frame Jacobian at ``q`` (one state, or one per row)."""
@@ -123,5 +123,5 @@ class SpatialPlant(CompiledPlant):
         rows = np.atleast_2d(np.asarray(q, float))
         J = robot_terms(self._robot, rows, np.zeros_like(rows))["J"]
         s = np.linalg.svd(J, compute_uv=False)
-        cond = J.shape[1] / np.sqrt(np.sum(s**2, axis=-1) * np.sum(1.0 / s**2, axis=-1))
+        cond = min(J.shape[1:]) / np.sqrt(np.sum(s**2, axis=-1) * np.sum(1.0 / s**2, axis=-1))
         return cond if np.ndim(q) == 2 else cond[0]

@@ -107,12 +107,16 @@ def paper_figures(results: dict, out: Path) -> list[Path]:
     return files
 
 
+def _label(value) -> str:
+    return f"{value:g}" if isinstance(value, (int, float)) and not isinstance(value, bool) else str(value)
+
+
 def sweep_heatmaps(table, figures: dict | None, out: Path) -> list[Path]:
     """One figure per metric of ``figures["metrics"]``: the metric over ``x`` by ``y``, a panel per
     value of ``rows`` and ``cols`` (averaged over any other swept setting); NaN cells are blank."""
     import numpy as np
 
-    if not figures:
+    if not figures or not (table["status"] == "ok").any():
         return []
     x, y = figures["x"], figures["y"]
     rows, cols = figures.get("rows"), figures.get("cols")
@@ -124,17 +128,25 @@ def sweep_heatmaps(table, figures: dict | None, out: Path) -> list[Path]:
         fig, axes = plt.subplots(len(row_values), len(col_values), squeeze=False,
                                  figsize=(3.4 * len(col_values) + 1.2, 2.4 * len(row_values) + 0.6))
         grid = ok.pivot_table(index=[c for c in (rows, cols) if c] + [y], columns=x, values=metric, aggfunc="mean")
-        lo, hi = np.nanmin(grid.values), np.nanmax(grid.values)
+        values = grid.values[np.isfinite(grid.values)]
+        if values.size == 0:  # a metric no run reports (e.g. after a step no reference makes)
+            plt.close(fig)
+            continue
+        lo, hi = values.min(), values.max()
         for i, rv in enumerate(row_values):
             for j, cv in enumerate(col_values):
                 ax = axes[i][j]
                 key = tuple(v for v in (rv, cv) if v is not None)
-                panel = grid.loc[key] if key else grid
+                title = ", ".join(f"{n} = {_label(v)}" for n, v in zip([c for c in (rows, cols) if c], key))
+                try:
+                    panel = grid.loc[key] if key else grid
+                except KeyError:  # no run of this panel finished: left empty
+                    ax.set_title(f"{title} (no ok runs)", fontsize=6)
+                    ax.axis("off")
+                    continue
                 image = ax.imshow(panel.values, origin="lower", aspect="auto", vmin=lo, vmax=hi, cmap="viridis")
-                ax.set_xticks(range(panel.shape[1]), [f"{v:g}" for v in panel.columns], fontsize=6)
-                ax.set_yticks(range(panel.shape[0]), [f"{v:g}" for v in panel.index], fontsize=6)
-                title = ", ".join(f"{n} = {v:g}" if isinstance(v, float) else f"{v}" for n, v in
-                                  zip([c for c in (rows, cols) if c], key))
+                ax.set_xticks(range(panel.shape[1]), [_label(v) for v in panel.columns], fontsize=6)
+                ax.set_yticks(range(panel.shape[0]), [_label(v) for v in panel.index], fontsize=6)
                 ax.set_title(title, fontsize=6)
                 if i == len(row_values) - 1:
                     ax.set_xlabel(x, fontsize=7)

@@ -39,6 +39,8 @@ def _value(name: str, value):
             raise HybridError(f"parameter {name!r}: a table must name one distribution "
                               f"({', '.join(sw.DISTRIBUTIONS)}), e.g. {{uniform = [0.0, 0.3]}}")
         kind, args = next(iter(value.items()))
+        if not isinstance(args, list) or len(args) != 2:
+            raise HybridError(f"parameter {name!r}: {kind} takes two numbers, e.g. {{{kind} = [0.0, 0.3]}}")
         return sw.DISTRIBUTIONS[kind](*args)
     if not isinstance(value, list):
         raise HybridError(f"parameter {name!r}: give a list of values or a distribution table, got {value!r:.60}")
@@ -84,7 +86,40 @@ def read_config(path: Path) -> dict:
                           f"{', '.join(sorted(SECTIONS))}")
     if not isinstance(config.get("parameters"), dict) or not config["parameters"]:
         raise HybridError(f"{path} has no [parameters] table: nothing to sweep")
+    for table in ("base", "sweep", "figures"):
+        if not isinstance(config.get(table, {}), dict):
+            raise HybridError(f"{path}: {table} must be a table ([{table}] with its keys)")
     return config
+
+
+def check_figures(figures: dict | None, parameters, metrics) -> None:
+    """The ``[figures]`` table names swept parameters and known metrics (checked before any run)."""
+    if not figures:
+        return
+    known = {"x", "y", "rows", "cols", "metrics"}
+    if set(figures) - known:
+        raise HybridError(f"[figures]: unknown {', '.join(sorted(set(figures) - known))}; it takes "
+                          f"{', '.join(sorted(known))}")
+    for key in ("x", "y", "rows", "cols"):
+        if key in figures and figures[key] not in parameters:
+            raise HybridError(f"[figures] {key} = {figures[key]!r} is not a swept parameter "
+                              f"({', '.join(parameters)})")
+    if "x" not in figures or "y" not in figures:
+        raise HybridError("[figures] needs x and y (two swept parameters)")
+    wanted = figures.get("metrics", [])
+    if not isinstance(wanted, list) or not set(wanted) <= set(metrics):
+        raise HybridError(f"[figures] metrics must be a list of metric names: {', '.join(metrics)}")
+
+
+def _metric_names(base) -> list[str]:
+    """The names every run reports (those of a run of ``base``, by the metrics' own definition)."""
+    import numpy as np
+
+    from .performance import metrics
+
+    t = np.linspace(0.0, 1.0, 3)
+    nq = base.robot.n if hasattr(base, "robot") else 2
+    return list(metrics(t, t, t, t, t, penetration=t, contact_force=t, tau=np.zeros((3, nq))))
 
 
 def run(args) -> int:
@@ -101,6 +136,7 @@ def run(args) -> int:
     unknown = set(options) - {"samples", "seed"}
     if unknown:
         raise HybridError(f"[sweep]: unknown {', '.join(sorted(unknown))}; it takes samples and seed")
+    check_figures(config.get("figures"), parameters, _metric_names(base))
     out = Path(args.out)
     table = sweep(base, parameters, samples=options.get("samples"), seed=options.get("seed", 0),
                   engine=args.engine, client=args.scheduler, out=out, workers=args.workers, csv=args.csv,

@@ -35,12 +35,23 @@ ENGINES = ("local", "dask")
 # ------------------------------------------------------------------ distributions
 
 
+def _numbers(owner, **values) -> None:
+    for name, v in values.items():
+        if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) or not math.isfinite(v):
+            raise HybridError(f"{owner}: {name} = {v!r:.40} must be a finite number")
+
+
 @dataclass(frozen=True)
 class Uniform:
     """Values drawn uniformly in ``[low, high)``."""
 
     low: float
     high: float
+
+    def __post_init__(self):
+        _numbers("Uniform", low=self.low, high=self.high)
+        if not self.low < self.high:
+            raise HybridError(f"Uniform({self.low}, {self.high}) needs low < high")
 
     def sample(self, rng: np.random.Generator, n: int) -> list:
         return rng.uniform(self.low, self.high, n).tolist()
@@ -53,9 +64,12 @@ class LogUniform:
     low: float
     high: float
 
-    def sample(self, rng: np.random.Generator, n: int) -> list:
+    def __post_init__(self):
+        _numbers("LogUniform", low=self.low, high=self.high)
         if not 0 < self.low < self.high:
             raise HybridError(f"LogUniform({self.low}, {self.high}) needs 0 < low < high")
+
+    def sample(self, rng: np.random.Generator, n: int) -> list:
         return np.exp(rng.uniform(math.log(self.low), math.log(self.high), n)).tolist()
 
 
@@ -65,6 +79,11 @@ class Normal:
 
     mean: float
     std: float
+
+    def __post_init__(self):
+        _numbers("Normal", mean=self.mean, std=self.std)
+        if self.std <= 0:
+            raise HybridError(f"Normal({self.mean}, {self.std}) needs std > 0")
 
     def sample(self, rng: np.random.Generator, n: int) -> list:
         return rng.normal(self.mean, self.std, n).tolist()
@@ -88,6 +107,8 @@ def points(parameters: Mapping, samples: int | None = None, seed: int = 0) -> li
                               f"LogUniform, Normal), got {values!r:.60}")
         if is_list and len(values) == 0:
             raise HybridError(f"parameter {name!r} has no values")
+        if is_list:
+            _check_values(name, values)
     if samples is None:
         lists = [parameters[n] for n in names]
         if any(not isinstance(v, Sequence) or isinstance(v, str) for v in lists):
@@ -96,6 +117,8 @@ def points(parameters: Mapping, samples: int | None = None, seed: int = 0) -> li
         return [{n: _plain(lists[k][i]) for k, (n, i) in enumerate(zip(names, row))} for row in grid]
     if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 1:
         raise HybridError(f"samples = {samples!r}; give a whole number of runs >= 1")
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        raise HybridError(f"seed = {seed!r}; give a whole number >= 0")
     rng = np.random.default_rng(seed)
     columns = {}
     for n in names:
@@ -105,6 +128,23 @@ def points(parameters: Mapping, samples: int | None = None, seed: int = 0) -> li
         else:
             columns[n] = [values[i] for i in rng.integers(0, len(values), int(samples))]
     return [{n: _plain(columns[n][i]) for n in names} for i in range(int(samples))]
+
+
+def _check_values(name: str, values) -> None:
+    """A parameter's values: all numbers, all text or all booleans (one column of the table each)."""
+    kinds = set()
+    for v in values:
+        if isinstance(v, (bool, np.bool_)):
+            kinds.add("bool")
+        elif isinstance(v, (int, float, np.integer, np.floating)):
+            kinds.add("number")
+        elif isinstance(v, str):
+            kinds.add("text")
+        else:
+            raise HybridError(f"parameter {name!r}: {v!r:.50} is not a number, text or boolean; sweep a "
+                              "setting's numbers by a dotted name, e.g. 'force_reference.after'")
+    if len(kinds) > 1:
+        raise HybridError(f"parameter {name!r} mixes {' and '.join(sorted(kinds))} values; give one kind")
 
 
 def _plain(value):
@@ -126,7 +166,19 @@ def _aliases(base) -> dict[str, str]:
 
 
 def check_names(base, names) -> None:
-    """Refuse, before any run, a setting name the experiment does not have (naming the known ones)."""
+    """Refuse, before any run, a setting name the experiment does not have (naming the known ones), and
+    two names of which one sets a part of the other (``contact`` and ``contact.friction``)."""
+    from .experiment import Experiment
+    from .tracing import TracingExperiment
+
+    if not isinstance(base, (Experiment, TracingExperiment)):
+        raise HybridError(f"base must be an experiment (hybrid.paper_experiment() or hybrid.tracing_experiment()), "
+                          f"got {type(base).__name__}")
+    paths = {name: _aliases(base).get(name, name) for name in names}
+    for a, pa in paths.items():
+        for b, pb in paths.items():
+            if a != b and (pb == pa or pb.startswith(pa + ".")):
+                raise HybridError(f"parameters {a!r} and {b!r} set the same setting; keep one of them")
     for name in names:
         path = _aliases(base).get(name, name).split(".")
         obj = base
@@ -166,7 +218,7 @@ def apply(base, settings: Mapping):
 def run_points(base, chunk: list[tuple[int, dict]]) -> list[dict]:
     """Run each ``(index, settings)`` of ``chunk`` on ``base``: one row each (the unit of work of
     every engine)."""
-    from .simulation import simulate
+    from .simulation import SimulationError, simulate
 
     rows = []
     for index, settings in chunk:
@@ -176,11 +228,18 @@ def run_points(base, chunk: list[tuple[int, dict]]) -> list[dict]:
         except HybridError as exc:
             rows.append({**row, "status": "invalid", "error": str(exc).splitlines()[0]})
             continue
+        except Exception as exc:  # noqa: BLE001 - a setting a dataclass's own checks did not expect
+            rows.append({**row, "status": "invalid", "error": f"{type(exc).__name__}: {exc}".splitlines()[0]})
+            continue
         try:
             res = simulate(exp)
             rows.append({**row, **res.metrics, "status": "ok", "error": ""})
-        except HybridError as exc:
+        except SimulationError as exc:  # the run started and stopped: a result
             rows.append({**row, "status": "failed", "error": str(exc).splitlines()[0]})
+        except HybridError as exc:  # refused before it started (start point, path, memory)
+            rows.append({**row, "status": "invalid", "error": str(exc).splitlines()[0]})
+        except Exception as exc:  # noqa: BLE001 - a defect of ours must not cost the other runs
+            rows.append({**row, "status": "error", "error": f"{type(exc).__name__}: {exc}".splitlines()[0]})
     return rows
 
 
@@ -246,38 +305,58 @@ def _describe(base, parameters: Mapping, samples, seed) -> dict:
         return [_plain(x) for x in v]
 
     to_dict = getattr(base, "to_dict", None)
-    return {"sweep": 1, "base": to_dict() if to_dict else repr(base),
-            "parameters": {k: values(v) for k, v in parameters.items()}, "samples": samples, "seed": seed}
+    # the parameters in their order: it numbers the runs
+    return {"sweep": 2, "base": to_dict() if to_dict else repr(base),
+            "parameters": [[k, values(v)] for k, v in parameters.items()], "samples": samples, "seed": seed}
 
 
-def _prepare(out: Path, description: dict, force: bool) -> set[int]:
-    """Create ``out`` or check that it holds this same sweep; the runs already done there."""
-    out.mkdir(parents=True, exist_ok=True)
+def _prepare(out: Path, description: dict, force: bool) -> None:
+    """Create ``out`` or check that it holds this same sweep (parts of another are refused, or cleared
+    with ``force``)."""
     files.writable_folder(out, "sweep folder")
     spec = out / "sweep.json"
     text = json.dumps(description, indent=2, sort_keys=True, default=str) + "\n"
-    if spec.exists():
-        if spec.read_text() != text:
-            if not force:
-                raise HybridError(f"{out} holds a different sweep (its sweep.json differs); choose another folder, "
-                                  "or pass force=True (--force) to start this one there afresh")
-            for part in (out / "parts").glob("*.parquet"):
-                part.unlink()
-            files.write_text(spec, text, overwrite=True)
-    else:
-        files.write_text(spec, text)
+    parts = list((out / "parts").glob("*.parquet"))
+    same = spec.exists() and spec.read_text() == text
+    if not same and (spec.exists() or parts):
+        if not force:
+            why = "its sweep.json differs" if spec.exists() else "it has results but no sweep.json"
+            raise HybridError(f"{out} holds a different sweep ({why}); choose another folder, or pass force=True "
+                              "(--force) to start this one there afresh")
+        for part in parts:
+            part.unlink()
+    if not same:
+        files.write_text(spec, text, overwrite=True)
     (out / "parts").mkdir(exist_ok=True)
-    return {int(i) for df in _read_parts(out) for i in df["run"]}
 
 
-def _read_parts(out: Path):
+def _lock(out: Path):
+    """An exclusive lock on ``out`` for the sweep's lifetime: a second sweep into it is refused."""
+    import fcntl
+
+    handle = open(out / ".lock", "w")
+    try:
+        fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        handle.close()
+        raise HybridError(f"another sweep is writing into {out}; wait for it or choose another folder") from None
+    return handle
+
+
+def _read_parts(out: Path) -> list[dict]:
+    """The rows of the parts already written, each run once."""
     import pandas as pd
 
+    rows: dict[int, dict] = {}
     for part in sorted((out / "parts").glob("part-*.parquet")):
         try:
-            yield pd.read_parquet(part)
-        except Exception:  # a part that does not read is redone (written atomically, it should not happen)
+            frame = pd.read_parquet(part)
+        except Exception:  # noqa: BLE001 - a part that does not read is redone (written atomically, it should not)
             part.unlink()
+            continue
+        for row in frame.to_dict("records"):
+            rows.setdefault(int(row["run"]), row)
+    return list(rows.values())
 
 
 def _write_part(out: Path, rows: list[dict]) -> None:
@@ -323,17 +402,31 @@ def sweep(base, parameters: Mapping, *, samples: int | None = None, seed: int = 
     """
     if engine not in ENGINES:
         raise HybridError(f"engine = {engine!r}; choose one of {', '.join(ENGINES)}")
+    for name, value in (("workers", workers), ("chunk_size", chunk_size)):
+        if value is not None and (isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1):
+            raise HybridError(f"{name} = {value!r}; give a whole number >= 1 (or None for the default)")
     check_names(base, parameters)
     todo_all = list(enumerate(points(parameters, samples, seed)))
     names = list(parameters)
     done_rows: list[dict] = []
+    lock = None
     if out is not None:
         out = files.output_path(out)
-        done = _prepare(out, _describe(base, parameters, samples, seed), force)
-        done_rows = [r for df in _read_parts(out) for r in df.to_dict("records")]
+        _prepare(out, _describe(base, parameters, samples, seed), force)
+        lock = _lock(out)
+        done_rows = _read_parts(out)
+        done = {int(r["run"]) for r in done_rows}
         todo = [(i, p) for i, p in todo_all if i not in done]
     else:
         todo = todo_all
+    try:
+        return _run(base, todo, todo_all, names, done_rows, engine, client, out, workers, chunk_size, csv, progress)
+    finally:
+        if lock is not None:
+            lock.close()
+
+
+def _run(base, todo, todo_all, names, done_rows, engine, client, out, workers, chunk_size, csv, progress):
     cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
     workers = max(1, min(workers or cores, len(todo) or 1))
     size = chunk_size or max(1, min(64, math.ceil(len(todo) / (4 * workers))))

@@ -7,6 +7,7 @@ loops, sampling, integration and model error of the paper's experiment.
 
 from __future__ import annotations
 
+import hashlib
 import math
 from dataclasses import dataclass, field, fields
 from pathlib import Path
@@ -78,6 +79,11 @@ class TracingExperiment(RunSettings):
             raise HybridError(f"surface = {self.surface!r:.60}; give a hybrid Sphere, Plane, Cylinder or "
                               "ImplicitSurface")
         _finite("tracing_experiment", latitude=self.latitude)
+        if not 0 < self.latitude < 180:
+            raise HybridError(f"latitude = {self.latitude} degrees from the top; give a value in (0, 180)")
+        from .spatial_law import _reference
+
+        object.__setattr__(self, "reference", tuple(_reference(self.reference)))
         if self.start_point is None and not isinstance(self.surface, Sphere):
             raise HybridError(f"a {type(self.surface).__name__} has no latitude circle: give start_point, a "
                               "point on the surface [m]")
@@ -101,8 +107,13 @@ class TracingExperiment(RunSettings):
         d = {f.name: getattr(self, f.name) for f in fields(self) if f.name not in ("robot", "surface")}
         for name in ("sensor", "contact", "gains", "force_reference", "speed_reference"):
             d[name] = asdict(d[name])
-        d["robot"] = {"name": self.robot.name, "joints": list(self.robot.joint_names)}
-        d["surface"] = {"kind": self.surface.kind, "parameters": self.surface.as_array().tolist()}
+        # the robot and surface by name and a digest of everything that defines them (for sweeps' resume)
+        robot = repr((self.robot.chain, self.robot.links, self.robot.damping, self.robot.gravity)).encode()
+        d["robot"] = {"name": self.robot.name, "joints": list(self.robot.joint_names),
+                      "digest": hashlib.sha256(robot).hexdigest()[:16]}
+        spatial = self.surface.lift()
+        d["surface"] = {"kind": self.surface.kind, "parameters": self.surface.as_array().tolist(),
+                        "phi": spatial.spec().key()}
         return {"kind": "tracing", **d}
 
     # ------------------------------------------------------------------ derived

@@ -317,3 +317,21 @@ def test_readme_controller_example_runs_and_is_the_law():
     law = hybrid.decoupling_law(ctrl.robot, ctrl.surface, curvature=True)
     np.testing.assert_allclose(ns["tau"], law.torque(q, qdot, ctrl.last["a"], Fc), rtol=1e-9, atol=1e-9)
     assert ns["res3"].metrics["contact_losses"] == 0 and np.isfinite(ns["m"]["rms_force_error_N"])
+
+
+def test_default_references_follow_the_selection_and_bad_samples_are_named():
+    arm, circle = hybrid.paper_arm(), hybrid.Circle((0.5, 0.0), 0.2)
+    for selection in ((), ("t1",), ("t1", "n")):
+        hybrid.Controller(arm, circle, selection=selection)  # no reference given: no error
+    ctrl = hybrid.Controller(arm, circle)
+    q, qd, Fc = np.array([2.2, 1.9]), np.array([0.3, -0.4]), np.array([-8.0, 3.0])
+    for t in (np.nan, np.inf, None, "a", [1.0, 2.0]):
+        with pytest.raises(hybrid.HybridError, match="t = "):
+            ctrl(t, q, qd, Fc)
+    bad_ref = hybrid.Controller(arm, circle, velocity_reference=lambda t: "fast")
+    with pytest.raises(hybrid.HybridError, match="reference"):
+        bad_ref(0.0, q, qd, Fc)
+    with pytest.raises(hybrid.HybridError, match="state must be"):
+        ctrl.state = "abc"
+    with pytest.raises(hybrid.HybridError, match="selection"):
+        hybrid.Controller(arm, circle, selection=[np.array([1, 2])])

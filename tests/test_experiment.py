@@ -146,3 +146,14 @@ def test_metrics_of_any_series_read_the_steps_from_the_references():
     assert np.isnan(m["speed_overshoot_after_speed_step_m_per_s"]) and np.isnan(m["contact_losses"])
     with pytest.raises(hybrid.HybridError, match="one value per time sample"):
         hybrid.metrics(t, F[:-1], F, F, F)
+
+
+def test_metrics_refuse_what_is_not_a_series():
+    t = np.linspace(0, 1, 11)
+    for kwargs in (dict(force_step=0.5), dict(tau=np.zeros((5, 2)))):
+        with pytest.raises(hybrid.HybridError, match="metrics"):
+            hybrid.metrics(t, t, t, t, t, **kwargs)
+    with pytest.raises(hybrid.HybridError, match="metrics"):
+        hybrid.metrics(t, ["a"] * 11, t, t, t)
+    down = hybrid.metrics(t, np.where(t < 0.5, 10.0, 0.0), t, np.where(t < 0.5, 10.0, 0.0), t)
+    assert down["force_settling_time_2pct_s"] == 0.0  # a step to 0 N settles (band from the step size)

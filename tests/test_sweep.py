@@ -150,6 +150,11 @@ def test_cli_sweep_writes_table_and_heatmaps(tmp_path):
     ('stuff = 1\n[parameters]\nmodel_error = [0]\n', "unknown key"),
     ('[parameters\n', "not valid TOML"),
     ('experiment = "moon"\n[parameters]\nmodel_error = [0]\n', "give 'paper' or 'tracing'"),
+    ('[parameters]\nmodel_error = {uniform = 0.3}\n', "takes two numbers"),
+    ('base = 3\n[parameters]\nmodel_error = [0]\n', "must be a table"),
+    ('[parameters]\nmodel_error = [0]\n[figures]\nx = "model_error"\ny = "speed"\n', "not a swept parameter"),
+    ('[parameters]\nmodel_error = [0]\n"contact.friction" = [0]\n[figures]\nx = "model_error"\n'
+     'y = "contact.friction"\nmetrics = ["fun"]\n', "metric names"),
 ])
 def test_bad_sweep_files_are_one_line(tmp_path, text, words):
     config = tmp_path / "s.toml"
@@ -186,3 +191,73 @@ def test_readme_sweep_example_runs():
     exp = hybrid.paper_experiment(duration=1.0, model_error=row["model_error"], controller=row["controller"],
                                   contact=hybrid.Contact(friction=row["contact.friction"]))
     assert_same_metrics(row, hybrid.simulate(exp).metrics)
+
+
+def test_resume_refuses_what_is_not_the_same_sweep(tmp_path):
+    out = tmp_path / "s"
+    grid = {"model_error": [0.0, 0.1], "controller": ["task", "khatib"]}
+    sweep(BASE, grid, out=out, workers=1)
+    with pytest.raises(hybrid.HybridError, match="different sweep"):  # the order numbers the runs
+        sweep(BASE, dict(reversed(list(grid.items()))), out=out, workers=1)
+    (out / "sweep.json").unlink()
+    with pytest.raises(hybrid.HybridError, match="no sweep.json"):
+        sweep(BASE, {"model_error": [0.5, 0.6], "controller": ["task", "khatib"]}, out=out, workers=1)
+    fresh = sweep(BASE, {"model_error": [0.5, 0.6], "controller": ["task", "khatib"]}, out=out, workers=1, force=True)
+    assert sorted(fresh["model_error"].unique()) == [0.5, 0.6]
+    heavier = hybrid.tracing_experiment(duration=0.02, robot=hybrid.ur5().with_model_error(0.5, 1.0))
+    assert hybrid.tracing_experiment(duration=0.02).to_dict()["robot"] != heavier.to_dict()["robot"]
+
+
+def test_a_second_sweep_into_the_same_folder_is_refused(tmp_path):
+    from hybrid.sweeps import _lock
+
+    out = tmp_path / "s"
+    out.mkdir()
+    held = _lock(out)
+    try:
+        with pytest.raises(hybrid.HybridError, match="another sweep"):
+            sweep(BASE, {"model_error": [0.0]}, out=out)
+    finally:
+        held.close()
+    assert len(sweep(BASE, {"model_error": [0.0]}, out=out)) == 1
+
+
+@pytest.mark.parametrize("kwargs, words", [
+    (dict(parameters={"contact": [hybrid.Contact()], "contact.friction": [0.1]}), "same setting"),
+    (dict(parameters={"KPf": [1.0], "gains.KPf": [2.0]}), "same setting"),
+    (dict(parameters={"force_reference": [hybrid.Step(1, 2, 0.1)]}), "not a number, text or boolean"),
+    (dict(parameters={"model_error": [0.0, "bad"]}), "mixes"),
+    (dict(parameters={"model_error": [0.0]}, chunk_size=-1), "chunk_size"),
+    (dict(parameters={"model_error": [0.0]}, workers="2"), "workers"),
+    (dict(parameters={"model_error": Uniform(0, 1)}, samples=3, seed=-1), "seed"),
+])
+def test_bad_sweep_arguments_are_named(kwargs, words):
+    parameters = kwargs.pop("parameters")
+    with pytest.raises(hybrid.HybridError, match=words):
+        sweep(BASE, parameters, **kwargs)
+
+
+def test_bad_distributions_and_bases_are_named(tmp_path):
+    from hybrid.sweeps import LogUniform, Normal
+
+    for make in (lambda: Normal(0, -1), lambda: Uniform("a", 1), lambda: Uniform(float("nan"), 1),
+                 lambda: LogUniform(0, 1), lambda: sweep("paper", {"model_error": [0.0]}),
+                 lambda: sweep(BASE, {"model_error": [0.0]}, out=tmp_path / "file" / "below")):
+        if make is not None:
+            (tmp_path / "file").write_text("")
+        with pytest.raises(hybrid.HybridError):
+            make()
+
+
+def test_a_run_that_breaks_unexpectedly_is_a_row(monkeypatch):
+    import hybrid.simulation as simulation
+
+    def broken(exp, plant="generated"):
+        if exp.model_error > 0.2:
+            raise ZeroDivisionError("a defect")
+        return real(exp)
+
+    real = simulation.simulate
+    monkeypatch.setattr(simulation, "simulate", broken)
+    table = sweep(BASE, {"model_error": [0.0, 0.3]}, workers=1)
+    assert list(table["status"]) == ["ok", "error"] and "ZeroDivisionError" in table["error"][1]

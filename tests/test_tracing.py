@@ -117,3 +117,12 @@ def test_the_shipped_ur5_is_example_robot_datas():
 def test_bad_settings_are_named(kwargs, words):
     with pytest.raises(hybrid.HybridError, match=words):
         hybrid.simulate(hybrid.tracing_experiment(**kwargs))
+
+
+@pytest.mark.parametrize("kwargs, words", [
+    (dict(latitude=0.0), "latitude"), (dict(latitude=200.0), "latitude"),
+    (dict(reference="abc"), "reference"), (dict(reference=(0, 1)), "reference"),
+])
+def test_bad_tracing_settings_are_named(kwargs, words):
+    with pytest.raises(hybrid.HybridError, match=words):
+        hybrid.tracing_experiment(**kwargs)
