@@ -194,8 +194,10 @@ class Controller:
     def from_experiment(cls, exp) -> Controller:
         """Exactly the controller ``exp`` runs (its model of the arm, loops, references, options): the
         paper's experiment or a 3-D one (:func:`hybrid.tracing_experiment`)."""
+        from .tracing import TracingExperiment
+
         path = exp.desired_point if exp.frame == "desired" else None
-        if hasattr(exp, "controller_robot"):  # the 3-D experiment: all six axes of a 6-joint arm or more
+        if isinstance(exp, TracingExperiment):  # all six axes of a 6-joint arm or more
             robot = exp.controller_robot()
             return cls(robot, exp.surface, exp.controller, axes="all" if robot.n >= 6 else "position",
                        selection=("n",), gains=exp.gains, force_reference=exp.force_reference,
