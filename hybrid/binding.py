@@ -118,6 +118,7 @@ class Function:
         self.outputs = [(a["name"], a["size"], tuple(a["shape"])) for a in entry["outputs"]]
         self.takes_singular_tol = entry["singular_tol"]
         self._ffi = module.ffi
+        self._lib = module.lib
         self._fn = getattr(module.lib, entry["symbol"])
         batched, integrator = entry["batched"], entry["integrator"]
         self.per_state = tuple(batched["per_state"]) if batched else ()
@@ -135,7 +136,10 @@ class Function:
         (-1: all, as a tuple), or None off the fast path (then call this function for the error)."""
         fast = self.unit.fast()
         tol = float(singular_tol) if self.takes_singular_tol else 0.0
-        return fast.call, fast.bind(self.entry["symbol"], n_state, tuple(np.asarray(p, float) for p in params), tol)
+        # the function's address in this unit's cffi module: the entry point calls it there
+        address = int(self._ffi.cast("uintptr_t", self._ffi.addressof(self._lib, self.entry["symbol"])))
+        return fast.call, fast.bind(self.entry["symbol"], address, n_state,
+                                    tuple(np.asarray(p, float) for p in params), tol)
 
     def size(self, name: str) -> int:
         """Number of elements of the input or output ``name``."""

@@ -2,18 +2,21 @@
  *
  * cffi costs about 1 us per call (a buffer conversion per array); this extension reads the
  * NumPy arrays' data pointers directly and calls the generated C, so a law is a few hundred
- * nanoseconds from Python. It is compiled and cached by hybrid/native.py, which writes before
- * this file, from the unit's manifest:
+ * nanoseconds from Python. It does not contain the generated code: it calls the functions of the
+ * unit's cffi module through their addresses, given at bind time, so a unit is compiled once.
+ * It is compiled and cached by hybrid/native.py, which writes before this file, from the unit's
+ * manifest:
  *
- *   #include "<prefix>.c"                 the generated unit
- *   static int adapt_K(const double *const *in, double tol, double *const *out) { ... }
- *                                         one per function: calls it with its arguments in order
+ *   static int adapt_K(hybrid_fn fn, const double *const *in, double tol, double *const *out) { ... }
+ *                                         one per function: calls fn, cast to the function's
+ *                                         prototype, with its arguments in order
  *   #define HYBRID_FAST_FUNCTIONS ...     {"symbol", adapt_K, n_in, n_out, {in sizes}, {out rows, cols}}, ...
  *   #define HYBRID_FAST_MAX_OUT ...       the largest total output size
  *   #define HYBRID_FAST_MAX_ARGS ...      the most inputs (or outputs) a function may have
  *   #define HYBRID_MODULE ...             the module's name (its cache key)
  *
- * bind(symbol, n_state, params, singular_tol) fixes the trailing inputs (the parameters);
+ * bind(symbol, address, n_state, params, singular_tol) fixes the function's address (from the cffi
+ * module) and its trailing inputs (the parameters);
  * call(binding, which, *states) takes the leading ones and returns new arrays;
  * call_into(binding, outs, *states) writes the outputs into the caller's arrays instead. Anything off the fast path (lists,
  * other dtypes, strided or byte-swapped arrays, N states, a non-OK status) returns None, and
@@ -32,7 +35,8 @@
 #define HYBRID_INIT_(name) PyInit_##name
 #define HYBRID_INIT(name) HYBRID_INIT_(name)
 
-typedef int (*adapter)(const double *const *in, double tol, double *const *out);
+typedef void (*hybrid_fn)(void);
+typedef int (*adapter)(hybrid_fn fn, const double *const *in, double tol, double *const *out);
 
 typedef struct {
     const char *symbol;
@@ -47,6 +51,7 @@ static const fast_function FUNCTIONS[] = {HYBRID_FAST_FUNCTIONS};
 /* a function with its parameters (the inputs after the state ones) copied at bind time */
 typedef struct {
     const fast_function *f;
+    hybrid_fn fn;
     int n_state;
     double tol;
     double *params[HYBRID_FAST_MAX_ARGS];
@@ -62,16 +67,23 @@ static void binding_release(binding *b) {
 
 static void binding_free(PyObject *capsule) { binding_release(PyCapsule_GetPointer(capsule, CAPSULE)); }
 
-/* bind(symbol, n_state, params, singular_tol) -> capsule */
+/* bind(symbol, address, n_state, params, singular_tol) -> capsule */
 static PyObject *bind(PyObject *self, PyObject *args) {
     const char *symbol;
     int n_state, i;
-    PyObject *params;
+    PyObject *params, *address;
     double tol;
     const fast_function *f = NULL;
     size_t k;
+    void *where;
     (void)self;
-    if (!PyArg_ParseTuple(args, "siO!d", &symbol, &n_state, &PyTuple_Type, &params, &tol)) return NULL;
+    if (!PyArg_ParseTuple(args, "sO!iO!d", &symbol, &PyLong_Type, &address, &n_state, &PyTuple_Type, &params, &tol))
+        return NULL;
+    where = PyLong_AsVoidPtr(address);
+    if (where == NULL) {
+        if (!PyErr_Occurred()) PyErr_SetString(PyExc_ValueError, "fastcall.bind: the function's address is 0");
+        return NULL;
+    }
     for (k = 0; k < sizeof FUNCTIONS / sizeof FUNCTIONS[0]; ++k) {
         if (strcmp(FUNCTIONS[k].symbol, symbol) == 0) f = &FUNCTIONS[k];
     }
@@ -81,6 +93,7 @@ static PyObject *bind(PyObject *self, PyObject *args) {
     binding *b = calloc(1, sizeof *b);
     if (b == NULL) return PyErr_NoMemory();
     b->f = f;
+    b->fn = (hybrid_fn)(size_t)where; /* a function's address, as cffi gives it */
     b->n_state = n_state;
     b->tol = tol;
     for (i = n_state; i < f->n_in; ++i) {
@@ -150,7 +163,7 @@ static PyObject *call(PyObject *self, PyObject *const *args, Py_ssize_t nargs) {
         out[k] = buf + offset;
         offset += f->out_shape[k][0] * (f->out_shape[k][1] ? f->out_shape[k][1] : 1);
     }
-    if (f->fn(in, b->tol, out) != 0) Py_RETURN_NONE;
+    if (f->fn(b->fn, in, b->tol, out) != 0) Py_RETURN_NONE;
     if (which >= 0) return new_output(f, (int)which, out[which]);
     PyObject *all = PyTuple_New(f->n_out);
     if (all == NULL) return NULL;
@@ -202,7 +215,7 @@ static PyObject *call_into(PyObject *self, PyObject *const *args, Py_ssize_t nar
         offset += size;
     }
     /* computed into a local buffer first: an output array may also be an input */
-    if (f->fn(in, b->tol, out) != 0) Py_RETURN_NONE;
+    if (f->fn(b->fn, in, b->tol, out) != 0) Py_RETURN_NONE;
     for (k = 0; k < f->n_out; ++k) {
         Py_ssize_t size = f->out_shape[k][0] * (f->out_shape[k][1] ? f->out_shape[k][1] : 1);
         memcpy(dest[k], out[k], (size_t)size * sizeof(double));
@@ -211,7 +224,7 @@ static PyObject *call_into(PyObject *self, PyObject *const *args, Py_ssize_t nar
 }
 
 static PyMethodDef methods[] = {
-    {"bind", bind, METH_VARARGS, "bind(symbol, n_state, params, singular_tol) -> binding"},
+    {"bind", bind, METH_VARARGS, "bind(symbol, address, n_state, params, singular_tol) -> binding"},
     {"call", (PyCFunction)(void (*)(void))call, METH_FASTCALL,
      "call(binding, which, *states) -> output which, all outputs (which=-1), or None off the fast path"},
     {"call_into", (PyCFunction)(void (*)(void))call_into, METH_FASTCALL,

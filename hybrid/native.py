@@ -413,8 +413,10 @@ def fastcall_prelude(manifest: dict) -> str:
             continue
         args = ([f"in[{i}]" for i in range(n_in)] + (["tol"] if f["singular_tol"] else [])
                 + [f"out[{i}]" for i in range(n_out)])
-        adapters.append(f"static int adapt_{k}(const double *const *in, double tol, double *const *out) {{\n"
-                        f"    (void)in; (void)tol; (void)out;\n    return {f['symbol']}({', '.join(args)});\n}}\n")
+        types = (["const double *"] * n_in + (["double"] if f["singular_tol"] else []) + ["double *"] * n_out)
+        adapters.append(f"static int adapt_{k}(hybrid_fn fn, const double *const *in, double tol, double *const *out) "
+                        f"{{\n    typedef int (*prototype)({', '.join(types) or 'void'});\n"
+                        f"    (void)in; (void)tol; (void)out;\n    return ((prototype)fn)({', '.join(args)});\n}}\n")
         sizes = ", ".join(str(a["size"]) for a in f["inputs"]) or "0"
         shapes = ", ".join(f"{{{a['shape'][0]}, {a['shape'][1] if len(a['shape']) == 2 else 0}}}"
                            for a in f["outputs"])
@@ -432,14 +434,13 @@ def load_fastcall(src_dir: Path, prefix: str, manifest: dict):
     """
     import numpy
 
-    c_source, header = _read_unit(src_dir, prefix)
     shim = (Path(__file__).with_name("fastcall.c")).read_text()
+    # the adapters need the typedef of the shim: it comes first, then the prelude, then the rest
+    head, rest = shim.split("typedef int (*adapter)", 1)
     prelude = fastcall_prelude(manifest)
 
     def write_source(name: str, path: Path) -> None:
-        _copy_unit(path.parent, prefix, c_source, header)
-        path.write_text(f'#include "{prefix}.c"\n{prelude}#define HYBRID_MODULE {name}\n{shim}')
+        path.write_text(f"{head}{prelude}#define HYBRID_MODULE {name}\ntypedef int (*adapter){rest}")
 
-    return _cached_module(f"_{prefix}_fastcall",
-                          {"c": c_source, "h": header, "shim": shim, "prelude": prelude,
-                           "numpy": numpy.__version__}, write_source, [numpy.get_include()])
+    return _cached_module(f"_{prefix}_fastcall", {"shim": shim, "prelude": prelude, "numpy": numpy.__version__},
+                          write_source, [numpy.get_include()])
