@@ -52,6 +52,7 @@ from .task_law import (
     EULER_TOL,
     arm_motion,
     decoupling,
+    euler_map_of,
     euler_zyx,
     frame_guard,
     task_rows,
@@ -114,9 +115,8 @@ def _euler_map_of(Rot):
     """``T_A(phi)`` (NOTES section 9) from the rotation itself: the sines and cosines of ``alpha,
     beta`` are ratios of its entries, so no trigonometric call is needed."""
     cb = ca.sqrt(Rot[0, 0] ** 2 + Rot[1, 0] ** 2)
-    sb, inv = -Rot[2, 0], 1 / cb
-    ca_, sa = Rot[0, 0] * inv, Rot[1, 0] * inv
-    return ca.vertcat(ca.horzcat(0, -sa, ca_ * cb), ca.horzcat(0, ca_, sa * cb), ca.horzcat(1, 0, -sb)), cb
+    inv = 1 / cb
+    return euler_map_of(Rot[1, 0] * inv, Rot[0, 0] * inv, -Rot[2, 0], cb), cb
 
 
 def references(t, steps, extra):
@@ -142,28 +142,30 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
     params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
     theta, e, opts = ca.SX.sym("surface", len(spec.parameters)), ca.SX.sym("e", 3), ca.SX.sym("options", len(OPTIONS))
     o = {name: opts[i] for i, name in enumerate(OPTIONS)}
-    o.update(desired_frame=float(desired_frame), position_error=float(position_error))
-    desired, curvature = o["desired_frame"], o["curvature"]
+    o["position_error"] = float(position_error)
+    curvature = o["curvature"]
 
     arm = arm_motion(chain, q, qd)
     p, v = arm.frames.tip_p, arm.v
     tf = task_frame(spec, p, v[:3], theta, e)
     Rm, Rdm = task_rows(tf, axes)
     # the loop frame: at the tip, or at the desired point target = (p_d, p_d', phi_d)
-    tf_f = task_frame(spec, desired * target[:3] + (1 - desired) * p,
-                      desired * target[3:6] + (1 - desired) * v[:3], theta, e)
-    Rf, Rdf = task_rows(tf_f, axes)
+    tf_f = task_frame(spec, target[:3], target[3:6], theta, e) if desired_frame else tf
+    Rf, Rdf = task_rows(tf_f, axes) if desired_frame else (Rm, Rdm)
     y, f = Rf @ v, Rf @ Fc
     yd = references(t, steps, yd_extra)
-    phi = euler_zyx(arm.frames.tip_R)
-    TA, cos_beta = _euler_map_of(arm.frames.tip_R)
-    r_err = Rf @ ca.vertcat(target[:3] - p, TA @ _wrapped(target[6:9] - phi))
+    r_err, cos_beta = ca.SX.zeros(len(axes), 1), None
+    if position_error:
+        phi = euler_zyx(arm.frames.tip_R)
+        TA, cos_beta = _euler_map_of(arm.frames.tip_R)
+        r_err = Rf @ ca.vertcat(target[:3] - p, TA @ _wrapped(target[6:9] - phi))
     a_f, z_next = loops(LoopInputs(y, f, z, yd, yd_rate, r_err, gains, sigma, o))
-    # in the desired frame: R(r) R_d^T (a - R_d' r'), the law's own curvature term off
-    a = desired * (Rm @ (Rf.T @ (a_f - curvature * (Rdf @ v)))) + (1 - desired) * a_f
+    if desired_frame:  # R(r) R_d^T (a - R_d' r'), the law's own curvature term off
+        a, law_curvature = Rm @ (Rf.T @ (a_f - curvature * (Rdf @ v))), 0
+    else:
+        a, law_curvature = a_f, curvature
     contact = o["khatib"] * (Rm.T @ (sigma * yd)) + (1 - o["khatib"]) * Fc
-    _, tau, cond = decoupling(chain, arm, params, qd, Rm, Rdm, a, contact, ca.SX.zeros(n, 1),
-                              curvature * (1 - desired))
+    _, tau, cond = decoupling(chain, arm, params, qd, Rm, Rdm, a, contact, ca.SX.zeros(n, 1), law_curvature)
     tau_rc, cond_rc = _raibert_craig(chain, arm, params, Rm, a, yd, gains, sigma, o["pseudoinverse"])
 
     names = tuple(j.name for j in chain.joints)

@@ -161,7 +161,11 @@ def euler_zyx(Rot):
 
 def euler_map(phi) -> ca.SX:
     """``T_A(phi)`` with ``w = T_A phi'`` (NOTES section 9)."""
-    sa, ca_, sb, cb = ca.sin(phi[0]), ca.cos(phi[0]), ca.sin(phi[1]), ca.cos(phi[1])
+    return euler_map_of(ca.sin(phi[0]), ca.cos(phi[0]), ca.sin(phi[1]), ca.cos(phi[1]))
+
+
+def euler_map_of(sa, ca_, sb, cb) -> ca.SX:
+    """``T_A`` from the sines and cosines of ``alpha`` and ``beta``."""
     return ca.vertcat(ca.horzcat(0, -sa, ca_ * cb), ca.horzcat(0, ca_, sa * cb), ca.horzcat(1, 0, -sb))
 
 

@@ -2,8 +2,8 @@
 
 One control sample is one native call (see :mod:`codegen.controller_step`): the task-frame
 measurement, the loops of NOTES section 4 on every task axis, and the decoupling law. The
-controller keeps the loops' integrals between calls; the references are evaluated in
-Python at the sample time ``t``.
+controller keeps the loops' integrals between calls. References that are numbers or steps
+are evaluated in the compiled step at the sample time ``t``; others, given as code, in Python.
 """
 
 from __future__ import annotations
@@ -14,6 +14,8 @@ from math import isfinite as _isfinite
 
 import numpy as np
 
+from codegen.task_law import AXIS_NAMES
+
 from .errors import HybridError
 from .experiment import Gains, Step
 from .parameters import Arm
@@ -22,7 +24,6 @@ from .schemes import Scheme, scheme_of
 from .spatial_law import _reference, check_axes, spatial_surface
 from .validate import _finite
 
-AXIS_NAMES = ("t1", "t2", "n", "rot_t1", "rot_t2", "rot_n")
 #: "no limit" for the options that are off (the generated step takes finite numbers only)
 _OFF = 1e300
 
@@ -303,13 +304,6 @@ class Controller:
             raise HybridError(f"state must be {len(self.axes)} x 2 finite numbers (int e, int int e per axis "
                               f"{', '.join(self.axis_names)}), got shape {arr.shape}")
         self._z[:] = arr.ravel()
-
-    def references(self, t: float) -> tuple[np.ndarray, np.ndarray]:
-        """Per task axis, ``y_d(t)`` and its rate ``y_d'(t)``."""
-        self._python_references(t)
-        yd = self._extra + [ref.step[1] if ref.step and t >= ref.step[2] else ref.step[0] if ref.step else 0.0
-                            for ref in self._references]
-        return yd, self._rate.copy()
 
     def _python_references(self, t: float) -> None:
         """The references given as code, at ``t``: into the step's ``yd_extra`` and ``yd_rate``."""

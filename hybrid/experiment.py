@@ -110,6 +110,14 @@ class RunSettings:
         """The gains in force: without integral action ``KI2v = KIf = 0`` (NOTES section 4)."""
         return self.gains if self.integral else replace(self.gains, KI2v=0.0, KIf=0.0)
 
+    def pressed_at(self, point, normal) -> tuple[np.ndarray, np.ndarray]:
+        """The sensor tip ``s`` and the arm tip ``r`` at rest, the sensor tip on the surface at
+        ``point`` (unit ``normal``) pressing with ``F_d(0)``: it penetrates ``F/k_e`` (the surface in
+        equilibrium) and the arm tip sits ``F/K_s`` beyond it (the sensor spring in equilibrium)."""
+        F0 = self.force_reference(0.0)
+        s = np.asarray(point, float) - normal * max(F0, 0.0) / self.contact.stiffness
+        return s, s - normal * F0 / self.sensor.stiffness
+
     def plant_array(self) -> np.ndarray:
         """The ``plant[7]`` array of the generated C (sensor, then contact)."""
         s, c = self.sensor, self.contact
@@ -157,8 +165,6 @@ class Experiment(RunSettings):
         if self.backend == "numpy" and self.controller not in NUMPY_SCHEMES:
             raise HybridError(f"the NumPy reference runs {' and '.join(NUMPY_SCHEMES)} only; use backend 'sympy' "
                               f"for {self.controller}")
-        if self.frame not in FRAMES:
-            raise HybridError(f"unknown frame {self.frame!r}; choose one of {FRAMES}")
         if self.backend not in BACKENDS:
             raise HybridError(f"unknown backend {self.backend!r}; choose one of {BACKENDS}")
         if not isinstance(self.arm, Arm):
@@ -168,7 +174,6 @@ class Experiment(RunSettings):
                               "hybrid.Circle or a 2-D hybrid.Plane")
         if self.elbow not in (1, -1):
             raise HybridError(f"elbow = {self.elbow}; give +1 (q2 > 0) or -1 (q2 < 0)")
-        check_singular_tol("Experiment", self.singular_tol)
         check_timing(self)
 
     def _check_types(self) -> None:
@@ -243,6 +248,9 @@ def check_common_types(exp) -> None:
         elif not isinstance(ref, Step):
             raise HybridError(f"{name} = {ref!r:.60}; give a hybrid.Step(before, after, at) or a number")
     _finite(owner, model_error=exp.model_error, viscous_compensation=exp.viscous_compensation)
+    if exp.frame not in FRAMES:
+        raise HybridError(f"unknown frame {exp.frame!r}; choose one of {FRAMES}")
+    check_singular_tol(owner, exp.singular_tol)
 
 
 def check_timing(exp) -> None:
@@ -280,12 +288,22 @@ def check_timing(exp) -> None:
     check_loops(exp)
 
 
+#: short names of the references
+REFERENCE_ALIASES = {"F_d": "force_reference", "v_d": "speed_reference"}
+
+
+def setting_aliases() -> dict[str, str]:
+    """Short names of settings and the paths they stand for: ``F_d`` / ``v_d`` for the references,
+    each gain by its own name (``KPf`` for ``gains.KPf``)."""
+    return {**REFERENCE_ALIASES, **{f.name: f"gains.{f.name}" for f in fields(Gains)}}
+
+
 def with_overrides(cls, maker: str, overrides: dict):
     """``cls(**overrides)`` where the gains may also be given one by one (``KPv=50``) and ``F_d`` /
     ``v_d`` name the force / speed references; an unknown name lists the known ones."""
     names = {f.name for f in fields(cls)}
     gain_names = {f.name for f in fields(Gains)}
-    aliases = {"F_d": "force_reference", "v_d": "speed_reference"}
+    aliases = REFERENCE_ALIASES
     gains = {k: overrides.pop(k) for k in list(overrides) if k in gain_names}
     for alias, name in aliases.items():
         if alias in overrides:

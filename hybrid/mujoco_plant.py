@@ -24,8 +24,9 @@ The MJCF model, written from the experiment (:func:`model_xml`):
   force (MuJoCo's soft friction cone has its own stick-slip transition, a different model).
 
 With these settings the paper's run agrees with :func:`hybrid.simulate` to about 1 mN RMS in the
-normal force and 0.1 mm/s RMS in the speed (tested). The record's ``N`` and ``friction`` columns
-are the penalty formulas of the sensor tip's state, as the generated plant's.
+normal force and 0.1 mm/s RMS in the speed (tested). The output record is the generated plant's,
+computed from the state: its ``N`` and ``friction`` columns are the penalty formulas of the sensor
+tip's state.
 """
 
 from __future__ import annotations
@@ -33,7 +34,7 @@ from __future__ import annotations
 import numpy as np
 
 from .errors import HybridError
-from .plants import PLANT, PLANT_OUTPUTS, Plant
+from .plants import PLANT_OUTPUTS, NativePlant
 
 #: the surface's mass on its compliant mount, per unit of d_e * step [kg / (N s/m * s)]: the mount's
 #: fastest pole, -d_e / mass, then sits at 1.25 / step, inside RK4's stability limit (4 g at 0.1 ms)
@@ -105,8 +106,9 @@ def model_xml(exp) -> str:
 </mujoco>"""
 
 
-class MujocoPlant(Plant):
-    """The paper's plant simulated by MuJoCo; state ``x = (q, q', s, s')`` as the generated plant's."""
+class MujocoPlant(NativePlant):
+    """The paper's plant simulated by MuJoCo; state ``x = (q, q', s, s')`` as the generated plant's,
+    whose output record (computed from the state) it shares."""
 
     def __init__(self, exp):
         from .experiment import Experiment
@@ -114,23 +116,13 @@ class MujocoPlant(Plant):
         if not isinstance(exp, Experiment):
             raise HybridError("the MuJoCo plant runs the paper's experiment (hybrid.paper_experiment())")
         self.mj = _mujoco()
-        self.exp, self.record, self.nq, self.h = exp, PLANT, 2, exp.step
+        super().__init__(exp)
+        self.exp = exp
         self.model = self.mj.MjModel.from_xml_string(model_xml(exp))
         self.data = self.mj.MjData(self.model)
         self._tip = self.model.site("tip").id
         self._jac = np.zeros((3, self.model.nv))
-        self._kinematics = self._planar_kinematics()
         self._last = None  # (state, MuJoCo qpos, qvel) after the last advance
-
-    def _planar_kinematics(self):
-        arm = self.exp.arm
-
-        def tip(q, qd):
-            c1, s1, c12, s12 = np.cos(q[0]), np.sin(q[0]), np.cos(q[0] + q[1]), np.sin(q[0] + q[1])
-            r = np.array([arm.L1 * c1 + arm.L2 * c12, arm.L1 * s1 + arm.L2 * s12])
-            J = np.array([[-arm.L1 * s1 - arm.L2 * s12, -arm.L2 * s12], [arm.L1 * c1 + arm.L2 * c12, arm.L2 * c12]])
-            return r, J @ qd
-        return tip
 
     # the sensor's spring-damper and the friction, added to MuJoCo's passive forces at every evaluation
     def _passive(self, model, data) -> None:
@@ -151,7 +143,7 @@ class MujocoPlant(Plant):
             data.qfrc_passive[2:4] += f
             data.qfrc_passive[4:6] -= f
 
-    def _normal(self, s: np.ndarray, w: np.ndarray) -> np.ndarray:
+    def _normal(self, s: np.ndarray, w) -> np.ndarray:
         """The surface's unit normal at the sensor tip, the surface displaced by its mount's ``w``."""
         surf = self.exp.surface
         if surf.kind == "circle":
@@ -168,8 +160,8 @@ class MujocoPlant(Plant):
             d.qpos[:], d.qvel[:] = self._last[1], self._last[2]
             return
         d.qpos[:4], d.qvel[:4] = x[[0, 1, 4, 5]], x[[2, 3, 6, 7]]
-        penetration, _, normal = self._contact(x)
-        d.qpos[4:6], d.qvel[4:6] = -normal * max(penetration, 0.0), 0.0
+        penetration = self._record_row(x)[PLANT_OUTPUTS.index("penetration")]
+        d.qpos[4:6], d.qvel[4:6] = -self._normal(x[4:6], 0.0) * max(penetration, 0.0), 0.0
 
     def _state(self) -> np.ndarray:
         d = self.data
@@ -195,39 +187,3 @@ class MujocoPlant(Plant):
             mj.set_mjcb_passive(previous)
         self._last = (x.copy(), d.qpos.copy(), d.qvel.copy())
         return nsteps
-
-    def _contact(self, x: np.ndarray) -> tuple[float, float, np.ndarray]:
-        """The sensor tip's penetration into the nominal surface, its rate, and the normal there."""
-        surf, s, sd = self.exp.surface, x[4:6], x[6:8]
-        if surf.kind == "circle":
-            rel = s - np.asarray(surf.center)
-            normal = rel / np.linalg.norm(rel)
-            return surf.radius - np.linalg.norm(rel), -normal @ sd, normal
-        normal = np.asarray(surf.normal, float) / np.linalg.norm(surf.normal)
-        return -(s - np.asarray(surf.point)) @ normal, -normal @ sd, normal
-
-    def outputs(self, states: np.ndarray) -> np.ndarray:
-        """The generated plant's output record (``PLANT_OUTPUTS``) of each state; the normal and
-        friction forces are the penalty's of the sensor tip's penetration (the reference's formulas)."""
-        from .law import task_frame
-
-        exp, c = self.exp, self.exp.contact
-        out = np.full((len(states), len(PLANT_OUTPUTS)), np.nan)
-        for i, x in enumerate(np.atleast_2d(states)):
-            if not np.isfinite(x).all():
-                continue
-            q, qd, s, sd = x[:2], x[2:4], x[4:6], x[6:8]
-            r, rd = self._kinematics(q, qd)
-            Fc = exp.sensor.stiffness * (s - r) + exp.sensor.damping * (sd - rd)
-            R, _ = task_frame(exp.surface, r, rd)
-            penetration, rate, normal = self._contact(x)
-            N = max(0.0, c.stiffness * penetration + c.damping * rate) if penetration > 0 else 0.0
-            slide = np.array([-normal[1], normal[0]]) @ sd
-            friction = -c.friction * N * np.tanh(slide / c.friction_smoothing)
-            out[i] = [*r, *(R @ rd), *Fc, *(R @ Fc), *s, penetration, N, friction, slide]
-        return out
-
-    conditioning_name = "2|det J|/|J|_F^2"
-
-    def conditioning(self, q) -> np.ndarray:
-        return self.exp.arm.conditioning(np.asarray(q, float).T)

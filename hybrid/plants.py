@@ -40,10 +40,16 @@ class Plant:
     def sensor_wrench(self, x: np.ndarray) -> np.ndarray:
         """The sensor's reading at the state ``x`` (what the controller is given at a sample), as the
         wrench ``(f, m)`` on the robot, base axes."""
-        row = self.outputs(x[None, :])[0]
+        columns = self.__dict__.get("_force")
+        if columns is None:
+            columns = self._force = [self.record["outputs"].index(c) for c in self.force_columns]
         Fc = np.zeros(6)
-        Fc[:len(self.force_columns)] = [row[self.record["outputs"].index(c)] for c in self.force_columns]
+        Fc[:len(columns)] = self._record_row(x)[columns]
         return Fc
+
+    def _record_row(self, x: np.ndarray) -> np.ndarray:
+        """The output record of the one state ``x``."""
+        return self.outputs(x[None, :])[0]
 
 
 class CompiledPlant(Plant):
@@ -56,7 +62,6 @@ class CompiledPlant(Plant):
         self.record = plant_record(rhs.entry, outputs.entry)
         self.nq, self.h, self.force_columns = self.record["nq"], step, force_columns
         self._done = rhs.unit.module.ffi.new("int *")
-        self._force = [self.record["outputs"].index(c) for c in force_columns]
         # one state through the one-state entry point (a sample's reading in about a microsecond)
         self._fast, self._binding = outputs.fast_bind(1, *shown)
 
@@ -73,13 +78,10 @@ class CompiledPlant(Plant):
         self._outputs.batch_into(states, *self._shown, out, status=np.empty(len(states), dtype=np.intc))
         return out
 
-    def sensor_wrench(self, x: np.ndarray) -> np.ndarray:
+    def _record_row(self, x: np.ndarray) -> np.ndarray:
         row = self._fast(self._binding, 0, x)
-        if row is None:  # off the fast path (a non-finite state): the record as the batch gives it
-            row = self.outputs(x[None, :])[0]
-        Fc = np.zeros(6)
-        Fc[:len(self._force)] = row[self._force]
-        return Fc
+        # off the fast path (a non-finite state): the record as the batch gives it
+        return self.outputs(x[None, :])[0] if row is None else row
 
 
 class NativePlant(CompiledPlant):
@@ -117,7 +119,8 @@ class SpatialPlant(CompiledPlant):
     conditioning_name = "m/(|J|_F |J^+|_F)"
 
     def conditioning(self, q) -> np.ndarray:
-        """``6 / (|J|_F |J^+|_F)`` of the tip's frame Jacobian at ``q`` (one state, or one per row)."""
+        """``m / (|J|_F |J^+|_F)`` (``m = min(6, n)``) of the tip's frame Jacobian at ``q`` (one state, or
+        one per row)."""
         from .law import robot_terms
 
         rows = np.atleast_2d(np.asarray(q, float))

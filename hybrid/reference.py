@@ -233,9 +233,8 @@ class NumpyPlant:
     conditioning_name = "2|det J|/|J|_F^2"
 
     def conditioning(self, q):
-        q = np.atleast_2d(q)
-        out = np.array([conditioning(qi, self.arm) for qi in q])
-        return out if len(q) > 1 or np.ndim(q) == 2 and q.shape[0] > 1 else out[0]
+        out = np.array([conditioning(qi, self.arm) for qi in np.atleast_2d(q)])
+        return out if np.ndim(q) == 2 else out[0]
 
     def advance(self, x, tau, nsteps, trajectory):
         for k in range(nsteps):

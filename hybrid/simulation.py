@@ -59,20 +59,15 @@ def check_memory(exp, record: dict = PLANT) -> None:
 
 
 def initial_state(exp: Experiment) -> np.ndarray:
-    """At rest, sensor tip on the surface at ``start_point``, pressing with ``F_d(0)``.
-
-    The sensor tip penetrates ``F/k_e`` (surface in equilibrium), the arm tip sits ``F/K_s``
-    beyond it (sensor spring in equilibrium); joints from inverse kinematics, elbow as asked.
-    """
-    surf, F0 = exp.surface, exp.force_reference(0.0)
+    """At rest, pressing at ``start_point`` (:meth:`~hybrid.experiment.RunSettings.pressed_at`); joints
+    from inverse kinematics, elbow as asked."""
+    surf = exp.surface
     s_surf = surf.at(surf.arc_coordinate(exp.start_point))
     gap = float(np.linalg.norm(np.asarray(exp.start_point) - s_surf))
     if gap > START_TOL:
         raise HybridError(f"start_point {list(exp.start_point)} m is {gap * 1000:.1f} mm off the surface; give a "
                           f"point on it (within {START_TOL * 1000:g} mm), e.g. {np.round(s_surf, 4).tolist()}")
-    n = surf.normal_at(s_surf)
-    s = s_surf - n * max(F0, 0.0) / exp.contact.stiffness
-    r = s - n * F0 / exp.sensor.stiffness
+    s, r = exp.pressed_at(s_surf, surf.normal_at(s_surf))
     q = inverse_kinematics(exp, r)
     return np.concatenate([q, [0.0, 0.0], s, [0.0, 0.0]])
 
@@ -108,9 +103,6 @@ def check_path(exp: Experiment) -> None:
         raise HybridError(f"the desired path leaves the arm's workspace at t = {t[i]:.3f} s "
                           f"(point {np.round(points[i], 4).tolist()} m, {d[i]:.3f} m from the base, reach "
                           f"{lo:.3f}-{hi:.3f} m); shorten duration, lower the speed or move the surface")
-
-
-# --------------------------------------------------------------------- results
 
 
 # ---------------------------------------------------------------------- runner

@@ -28,6 +28,7 @@ import numpy as np
 
 from . import files
 from .errors import HybridError
+from .experiment import Experiment, setting_aliases
 
 ENGINES = ("local", "dask")
 
@@ -157,34 +158,25 @@ def _plain(value):
 # --------------------------------------------------------------------- settings
 
 
-def _aliases(base) -> dict[str, str]:
-    from .experiment import Gains
-
-    out = {"F_d": "force_reference", "v_d": "speed_reference"}
-    out.update({g.name: f"gains.{g.name}" for g in dataclasses.fields(Gains)})
-    return out
-
-
 def check_names(base, names) -> None:
     """Refuse, before any run, a setting name the experiment does not have (naming the known ones), and
     two names of which one sets a part of the other (``contact`` and ``contact.friction``)."""
-    from .experiment import Experiment
     from .tracing import TracingExperiment
 
     if not isinstance(base, (Experiment, TracingExperiment)):
         raise HybridError(f"base must be an experiment (hybrid.paper_experiment() or hybrid.tracing_experiment()), "
                           f"got {type(base).__name__}")
-    paths = {name: _aliases(base).get(name, name) for name in names}
+    paths = {name: setting_aliases().get(name, name) for name in names}
     for a, pa in paths.items():
         for b, pb in paths.items():
             if a != b and (pb == pa or pb.startswith(pa + ".")):
                 raise HybridError(f"parameters {a!r} and {b!r} set the same setting; keep one of them")
     for name in names:
-        path = _aliases(base).get(name, name).split(".")
+        path = setting_aliases().get(name, name).split(".")
         obj = base
         for part in path:
             if not dataclasses.is_dataclass(obj) or part not in {f.name for f in dataclasses.fields(obj)}:
-                known = sorted({f.name for f in dataclasses.fields(base)} | set(_aliases(base)))
+                known = sorted({f.name for f in dataclasses.fields(base)} | set(setting_aliases()))
                 raise HybridError(f"unknown setting {name!r} for a {type(base).__name__}; use a field name or a "
                                   f"dotted path (contact.friction, gains.KPf)\n  known: {', '.join(known)}")
             obj = getattr(obj, part)
@@ -193,7 +185,7 @@ def check_names(base, names) -> None:
 def apply(base, settings: Mapping):
     """``base`` with ``settings`` (field names, gain names, ``F_d``/``v_d``, or dotted paths) applied;
     the experiment checks the result as it would any other."""
-    aliases = _aliases(base)
+    aliases = setting_aliases()
     nested: dict = {}
     for name, value in settings.items():
         path = aliases.get(name, name).split(".")
@@ -224,22 +216,15 @@ def run_points(base, chunk: list[tuple[int, dict]]) -> list[dict]:
     for index, settings in chunk:
         row = {"run": index, **settings}
         try:
-            exp = apply(base, settings)
-        except HybridError as exc:
-            rows.append({**row, "status": "invalid", "error": str(exc).splitlines()[0]})
-            continue
-        except Exception as exc:  # noqa: BLE001 - a setting a dataclass's own checks did not expect
-            rows.append({**row, "status": "invalid", "error": f"{type(exc).__name__}: {exc}".splitlines()[0]})
-            continue
-        try:
-            res = simulate(exp)
+            res = simulate(apply(base, settings))
+        except Exception as exc:  # noqa: BLE001 - every run is a row, even one that meets a defect of ours
+            # stopped while running: a result; refused before it started: invalid settings
+            status = ("failed" if isinstance(exc, SimulationError) else
+                      "invalid" if isinstance(exc, HybridError) else "error")
+            cause = str(exc) if isinstance(exc, HybridError) else f"{type(exc).__name__}: {exc}"
+            rows.append({**row, "status": status, "error": cause.splitlines()[0]})
+        else:
             rows.append({**row, **res.metrics, "status": "ok", "error": ""})
-        except SimulationError as exc:  # the run started and stopped: a result
-            rows.append({**row, "status": "failed", "error": str(exc).splitlines()[0]})
-        except HybridError as exc:  # refused before it started (start point, path, memory)
-            rows.append({**row, "status": "invalid", "error": str(exc).splitlines()[0]})
-        except Exception as exc:  # noqa: BLE001 - a defect of ours must not cost the other runs
-            rows.append({**row, "status": "error", "error": f"{type(exc).__name__}: {exc}".splitlines()[0]})
     return rows
 
 

@@ -16,7 +16,7 @@ import numpy as np
 
 from .errors import HybridError
 from .experiment import Contact, Gains, RunSettings, Sensor, Step, check_common_types, check_timing, with_overrides
-from .law import SINGULAR_TOL, check_singular_tol
+from .law import SINGULAR_TOL
 from .robot import Robot
 from .schemes import scheme_of
 from .surfaces import Cylinder, ImplicitSurface, Plane, Sphere
@@ -70,8 +70,6 @@ class TracingExperiment(RunSettings):
     def __post_init__(self):
         check_common_types(self)
         scheme_of(self.controller)
-        if self.frame not in ("actual", "desired"):
-            raise HybridError(f"frame = {self.frame!r}; give 'actual' or 'desired'")
         if not isinstance(self.robot, Robot):
             raise HybridError(f"robot must be a hybrid.Robot (e.g. hybrid.Robot.from_urdf), got "
                               f"{type(self.robot).__name__}")
@@ -97,7 +95,6 @@ class TracingExperiment(RunSettings):
             if len(point) != 3 or not all(map(math.isfinite, point)):
                 raise HybridError(f"start_point = {self.start_point!r:.60}; give (x, y, z) [m]")
             object.__setattr__(self, "start_point", point)
-        check_singular_tol("tracing_experiment", self.singular_tol)
         check_timing(self)
 
     def to_dict(self) -> dict:
@@ -147,9 +144,8 @@ class TracingExperiment(RunSettings):
 
 
 def initial_tracing_state(exp: TracingExperiment, plant) -> np.ndarray:
-    """At rest, the sensor tip on the surface at the start point pressing with ``F_d(0)``: it
-    penetrates ``F/k_e``, the arm tip sits ``F/K_s`` beyond it along the normal, the tool's z axis
-    along ``-n`` (its x axis along ``t1``); joints from inverse kinematics of the true arm."""
+    """At rest, pressing at the start point (:meth:`~hybrid.experiment.RunSettings.pressed_at`), the
+    tool's z axis along ``-n`` (its x axis along ``t1``); joints from inverse kinematics of the true arm."""
     from .simulation import START_TOL
 
     p0 = exp.start()
@@ -160,9 +156,7 @@ def initial_tracing_state(exp: TracingExperiment, plant) -> np.ndarray:
         raise HybridError(f"start_point {np.round(p0, 4).tolist()} m is {abs(gap) * 1000:.3g} mm off the surface; "
                           f"give a point on it (within {START_TOL * 1000:g} mm)")
     normal = exp.surface.lift().normal_at(p0)
-    F0 = exp.force_reference(0.0)
-    s = p0 - normal * max(F0, 0.0) / exp.contact.stiffness
-    r = s - normal * F0 / exp.sensor.stiffness
+    s, r = exp.pressed_at(p0, normal)
     x_tool = np.cross(exp.reference, normal)
     if np.linalg.norm(x_tool) < 1e-6:
         raise HybridError("the reference direction is parallel to the surface normal at the start point: the task "
