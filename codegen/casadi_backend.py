@@ -67,10 +67,12 @@ def to_sx(expr: sp.Expr, symbols: dict, memo: dict):
     return out
 
 
-def kernel_function(kernel: Kernel) -> ca.Function:
+def kernel_function(kernel: Kernel, sympy_cse: bool = False) -> ca.Function:
     """The kernel as a CasADi ``Function`` of its input arrays (also used by the benchmarks).
 
-    A kernel written in CasADi SX is used as it is; one written in SymPy is translated.
+    A kernel written in CasADi SX is used as it is; one written in SymPy is translated, with
+    ``sympy_cse`` after SymPy's own elimination of common subexpressions (fewer operations than
+    CasADi's alone finds in a SymPy tree: one reciprocal of a determinant, not one per use).
     """
     outputs = kernel.core_outputs()
     if all(isinstance(a.expr, ca.SX) for a in (*kernel.inputs, *outputs)):
@@ -82,7 +84,13 @@ def kernel_function(kernel: Kernel) -> ca.Function:
             args.append(v)
             symbols.update({s: v[i] for i, s in enumerate(a.expr)})
         memo: dict = {}
-        outs = [ca.vertcat(*[to_sx(e, symbols, memo) for e in a.expr]) for a in outputs]
+        exprs = [e for a in outputs for e in a.expr]
+        if sympy_cse:
+            replacements, exprs = sp.cse(exprs, symbols=sp.numbered_symbols("_cse"), order="none")
+            for sym, e in replacements:
+                symbols[sym] = to_sx(e, symbols, memo)
+        exprs = iter([to_sx(e, symbols, memo) for e in exprs])
+        outs = [ca.vertcat(*[next(exprs) for _ in range(a.size)]) for a in outputs]
     # our C fills every element of an output: structural zeros must become stored zeros
     outs = [ca.densify(o) for o in outs]
     outs = ca.cse(outs)  # jointly: a subexpression shared by two outputs is computed once

@@ -258,7 +258,8 @@ LAW_ONE = "6-D F* from Python, one state (law(q, qdot, a, Fc))"
 LAW_BATCHED = "6-D F* from Python, batched, per state (N = 1e5, both cores)"
 ONE_RUN = "paper run through hybrid.simulate (2 s simulated)"
 SWEEP_1000 = "1,000 paper runs by hybrid.sweep (both cores)"
-SWEEP_10000 = "10,000 paper runs by hybrid.sweep (both cores), from the 1,000-run sweep"
+SWEEP_10000 = "10,000 paper runs by hybrid.sweep (both cores)"
+LOOP_RUN = "paper run in the compiled closed loop, as SIMD lanes, one core, per run"
 STEP_IN_C = "controller step in C (measurement, six loops, law), per sample"
 STEP_ONE = "controller step from Python, per sample (ctrl(t, q, qdot, Fc))"
 SPHERE = (0.45, 0.1, 0.3, 0.15)
@@ -487,18 +488,23 @@ def controller_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool,
 
 
 def sweep_benchmarks(quick: bool, add) -> None:
-    """One paper run through ``simulate``; a sweep of paper runs over every core (per run, and the
-    1,000- and 10,000-run totals it implies)."""
-    from .sweeps import sweep
+    """One paper run through ``simulate``; the compiled loop per run on one core; sweeps of 1,000
+    and 10,000 paper runs over every core (with ``quick``: 100 runs, the totals scaled)."""
+    from . import closed_loop
+    from .sweeps import apply, sweep
 
     exp = paper_experiment()
     simulate(exp)
     add(ONE_RUN, _median_ns(lambda: simulate(exp), 1, 5 if quick else 15) / 1e6, "ms")
-    n = 100 if quick else 1000
-    grid = {"model_error": list(np.linspace(0.0, 0.5, n // 4)), "controller": ["task", "khatib"],
-            "contact.friction": [0.1, 0.2]}
-    t0 = time.perf_counter()
-    table = sweep(exp, grid)
-    per_run = (time.perf_counter() - t0) / len(table)
-    add(SWEEP_1000, per_run * 1000, "s", ratio=f"{per_run * 1e3:.1f} ms a run, measured on {len(table)} runs")
-    add(SWEEP_10000, per_run * 10000, "s", ratio="estimated: 10 x the 1,000-run figure")
+    prepared = [closed_loop.prepare(apply(exp, {"model_error": m})) for m in np.linspace(0.0, 0.5, 128)]
+    lanes = prepared[0].loop.lanes
+    add(LOOP_RUN, _median_ns(lambda: closed_loop.run(prepared), 1, 3 if quick else 7) / 1e6 / len(prepared), "ms",
+        ratio=f"{lanes} runs a group of lanes")
+    for total, name in ((1000, SWEEP_1000), (10000, SWEEP_10000)):
+        n = 100 if quick else total
+        grid = {"model_error": list(np.linspace(0.0, 0.5, n // 4)), "controller": ["task", "khatib"],
+                "contact.friction": [0.1, 0.2]}
+        t0 = time.perf_counter()
+        table = sweep(exp, grid)
+        per_run = (time.perf_counter() - t0) / len(table)
+        add(name, per_run * total, "s", ratio=f"{per_run * 1e3:.2f} ms a run, measured on {len(table)} runs")

@@ -211,6 +211,25 @@ class Controller:
                    frame=exp.frame, path=path, singular_tol=exp.singular_tol)
 
     @property
+    def runs_in_c(self) -> bool:
+        """True when every reference is a number or a :class:`Step` and no path is given: then a
+        whole run can be compiled C (:mod:`hybrid.closed_loop`)."""
+        return self._short
+
+    def step_inputs(self) -> dict[str, np.ndarray]:
+        """The compiled step's inputs this controller fixes (gains, references' steps, model,
+        options), by the manifest's names."""
+        names = [name for name, _ in self._step.inputs]
+        return dict(zip(names[len(names) - len(self._params):], self._params))
+
+    def step_variant(self) -> dict:
+        """What the compiled step is made of: the model's chain and name, the surface's spec, the task
+        axes, the compiled-in options and the scheme's step function."""
+        return {"chain": self.robot.chain, "name": self.robot.name, "spec": self._spatial.spec(), "axes": self.axes,
+                "desired_frame": self.frame == "desired", "position_error": self.position_error,
+                "step": self.scheme.step}
+
+    @property
     def axis_names(self) -> tuple[str, ...]:
         return tuple(AXIS_NAMES[i] for i in self.axes)
 

@@ -90,10 +90,15 @@ class NativePlant(CompiledPlant):
     def __init__(self, exp: Experiment):
         unit = planar_unit(exp.backend)
         kind = exp.surface.kind
-        arm, plant, surface = exp.arm.as_array(), exp.plant_array(), exp.surface.as_array()
+        held = tuple(self.inputs(exp).values())
         super().__init__(unit.function(f"plant_rhs_{kind}"), unit.function(f"plant_outputs_{kind}"),
-                         (arm, plant, surface), (arm, plant, surface), exp.step, ("Fc_x", "Fc_y"))
+                         held, held, exp.step, ("Fc_x", "Fc_y"))
         self._arm = exp.arm
+
+    @staticmethod
+    def inputs(exp: Experiment) -> dict[str, np.ndarray]:
+        """The plant's parameter arrays (after ``x, tau``) by the manifest's names."""
+        return {"arm": exp.arm.as_array(), "plant": exp.plant_array(), "surface": exp.surface.as_array()}
 
     conditioning_name = "2|det J|/|J|_F^2"
 

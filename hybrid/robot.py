@@ -13,7 +13,7 @@ import dataclasses
 import json
 import math
 from dataclasses import dataclass, field
-from functools import cache
+from functools import cache, lru_cache
 from pathlib import Path
 
 import numpy as np
@@ -96,14 +96,7 @@ class Robot:
         links along x, the tip at ``L2`` beyond joint 2, gravity ``arm.gravity`` along ``-y``."""
         if not isinstance(arm, Arm):
             raise HybridError(f"arm must be a hybrid.Arm, got {type(arm).__name__}")
-        eye = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
-        joints = tuple(rb.Joint(f"joint{i + 1}", "revolute", eye, (L, 0.0, 0.0), (0.0, 0.0, 1.0))
-                       for i, L in enumerate((0.0, arm.L1)))
-        chain = rb.Chain(joints, eye, (arm.L2, 0.0, 0.0))
-        links = tuple(LinkInertia(m, (d, 0.0, 0.0), ((inertia, 0.0, 0.0), (0.0, inertia, 0.0), (0.0, 0.0, inertia)))
-                      for m, d, inertia in ((arm.m1, arm.d1, arm.I1), (arm.m2, arm.d2, arm.I2)))
-        limits = JointLimits(*(np.full(2, v) for v in (-math.inf, math.inf, math.inf, math.inf)))
-        return cls("planar_arm", chain, links, (arm.V1, arm.V2), (0.0, -arm.gravity, 0.0), limits)
+        return _planar(cls, arm)
 
     def __getstate__(self) -> dict:
         """Pickled without its compiled caches (rebuilt, from the cache folder, where it lands)."""
@@ -208,6 +201,20 @@ class Robot:
             unit = compiled_unit(self.chain, self.name)
             object.__setattr__(self, "_unit", unit)  # a cache, not state: the structure is frozen
         return unit
+
+
+
+@lru_cache(maxsize=256)
+def _planar(cls, arm: Arm) -> Robot:
+    """:meth:`Robot.planar`, once per arm (a robot is immutable: the runs of a sweep share it)."""
+    eye = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
+    joints = tuple(rb.Joint(f"joint{i + 1}", "revolute", eye, (L, 0.0, 0.0), (0.0, 0.0, 1.0))
+                   for i, L in enumerate((0.0, arm.L1)))
+    chain = rb.Chain(joints, eye, (arm.L2, 0.0, 0.0))
+    links = tuple(LinkInertia(m, (d, 0.0, 0.0), ((inertia, 0.0, 0.0), (0.0, inertia, 0.0), (0.0, 0.0, inertia)))
+                  for m, d, inertia in ((arm.m1, arm.d1, arm.I1), (arm.m2, arm.d2, arm.I2)))
+    limits = JointLimits(*(np.full(2, v) for v in (-math.inf, math.inf, math.inf, math.inf)))
+    return cls("planar_arm", chain, links, (arm.V1, arm.V2), (0.0, -arm.gravity, 0.0), limits)
 
 
 def _vector(name: str, v, shape) -> np.ndarray:

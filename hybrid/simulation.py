@@ -1,7 +1,10 @@
 """The runner: plant integrated by fixed-step RK4 between samples, controller under zero-order hold.
 
-The loop over control samples is Python; everything inside a sample (the plant's RK4
-steps, one controller step) is compiled C. ``Experiment.backend == "numpy"`` runs the plain
+A run the compiled loop takes (:mod:`hybrid.closed_loop`: references that are numbers or
+steps, the controller's frame at the contact point) runs there whole, as a sweep runs it. The
+others run here: the loop over control samples in Python, everything inside a sample (the
+plant's RK4 steps, one controller step) compiled C; a compiled run that stopped is run here
+again, for the account of where and why. ``Experiment.backend == "numpy"`` runs the plain
 NumPy reference instead (:mod:`hybrid.reference`, for tests and benchmarks). Runs are
 deterministic.
 """
@@ -13,6 +16,7 @@ import os
 
 import numpy as np
 
+from . import closed_loop
 from .controller import Controller
 from .errors import HybridError, NonFiniteError
 from .experiment import Experiment
@@ -135,6 +139,12 @@ def simulate(exp, plant: str = "generated") -> SimulationResult:
         from . import reference  # the reference path only: the compiled runtime does not need it
 
         return run(exp, reference.NumpyPlant(exp), reference.NumpyController(exp), x0)
+    prepared = closed_loop.prepare(exp, x0)
+    if prepared is not None:  # the whole run in compiled C, as a sweep runs it
+        done = closed_loop.run([prepared], record=True)[0]
+        if done.status == 0:
+            return _result(exp, NativePlant(exp), done.states, done.taus, done.metrics)
+    # the Python runner: what the compiled loop does not take, and the account of a run that stopped
     return run(exp, NativePlant(exp), Controller.from_experiment(exp), x0)
 
 
@@ -203,10 +213,13 @@ def _closest_singularity(res: SimulationResult, plant, near: float = 0.1) -> str
             f"t = {res.t[rows[i]]:.4f} s): raise singular_tol to stop there, or keep the path away from full extension")
 
 
-def _result(exp, plant, states: np.ndarray, taus: np.ndarray, metrics: bool) -> SimulationResult:
+def _result(exp, plant, states: np.ndarray, taus: np.ndarray, metrics: bool | dict) -> SimulationResult:
+    """The result of a run; ``metrics``: computed from the series (True), none (False), or as given."""
     t = np.arange(len(states)) * exp.step
     res = SimulationResult(exp, t, states, taus, plant.outputs(states), exp.force_reference.sampled(t),
                            exp.speed_reference.sampled(t), record=plant.record)
-    if metrics:
+    if metrics is True:
         res.metrics = run_metrics(res)
+    elif metrics:
+        res.metrics = dict(metrics)
     return res

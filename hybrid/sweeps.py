@@ -209,23 +209,49 @@ def apply(base, settings: Mapping):
 
 def run_points(base, chunk: list[tuple[int, dict]]) -> list[dict]:
     """Run each ``(index, settings)`` of ``chunk`` on ``base``: one row each (the unit of work of
-    every engine)."""
-    from .simulation import SimulationError, simulate
+    every engine). Runs the compiled loop can take run there together, as SIMD lanes
+    (:mod:`hybrid.closed_loop`); the others, and any run that stopped (for the cause in words),
+    through :func:`hybrid.simulate`."""
+    from . import closed_loop
 
-    rows = []
+    rows: dict[int, dict] = {}
+    compiled = []
     for index, settings in chunk:
-        row = {"run": index, **settings}
         try:
-            res = simulate(apply(base, settings))
-        except Exception as exc:  # noqa: BLE001 - every run is a row, even one that meets a defect of ours
-            # stopped while running: a result; refused before it started: invalid settings
-            status = ("failed" if isinstance(exc, SimulationError) else
-                      "invalid" if isinstance(exc, HybridError) else "error")
-            cause = str(exc) if isinstance(exc, HybridError) else f"{type(exc).__name__}: {exc}"
-            rows.append({**row, "status": status, "error": cause.splitlines()[0]})
+            exp = apply(base, settings)
+            prepared = closed_loop.prepare(exp)
+        except Exception as exc:  # noqa: BLE001 - refused before it started: the row says why
+            rows[index] = _failure_row(index, settings, exc)
+            continue
+        if prepared is None:
+            rows[index] = _simulated_row(index, settings, exp)
         else:
-            rows.append({**row, **res.metrics, "status": "ok", "error": ""})
-    return rows
+            compiled.append((index, settings, exp, prepared))
+    for (index, settings, exp, _), outcome in zip(compiled, closed_loop.run([c[3] for c in compiled])):
+        rows[index] = ({"run": index, **settings, **outcome.metrics, "status": "ok", "error": ""}
+                       if outcome.status == 0 else _simulated_row(index, settings, exp))
+    return [rows[index] for index, _ in chunk]
+
+
+def _simulated_row(index: int, settings: dict, exp) -> dict:
+    from .simulation import simulate
+
+    try:
+        res = simulate(exp)
+    except Exception as exc:  # noqa: BLE001 - every run is a row, even one that meets a defect of ours
+        return _failure_row(index, settings, exc)
+    return {"run": index, **settings, **res.metrics, "status": "ok", "error": ""}
+
+
+def _failure_row(index: int, settings: dict, exc: Exception) -> dict:
+    """A run that did not finish: stopped while running (a result), refused before it started
+    (invalid settings), or a defect of ours (error)."""
+    from .simulation import SimulationError
+
+    status = ("failed" if isinstance(exc, SimulationError) else
+              "invalid" if isinstance(exc, HybridError) else "error")
+    cause = str(exc) if isinstance(exc, HybridError) else f"{type(exc).__name__}: {exc}"
+    return {"run": index, **settings, "status": status, "error": cause.splitlines()[0]}
 
 
 def _chunks(todo: list[tuple[int, dict]], size: int) -> list[list[tuple[int, dict]]]:

@@ -134,7 +134,10 @@ def test_metrics_of_any_series_read_the_steps_from_the_references():
     m = hybrid.metrics(res.t, res.force_normal, res.velocity_tangential, res.force_reference,
                        res.speed_reference, penetration=res.penetration, contact_force=res.contact_force,
                        tau=res.tau)
-    assert json.dumps(m) == json.dumps(res.metrics)
+    # (the run's own metrics were computed in C as it ran: equal to rounding)
+    assert list(m) == list(res.metrics)
+    for name, value in m.items():
+        assert res.metrics[name] == pytest.approx(value, rel=1e-9, abs=1e-12, nan_ok=True), name
     zeta, wn = 0.3, 40.0
     t = np.linspace(0, 2, 20001)
     s = np.clip(t - 0.5, 0, None)

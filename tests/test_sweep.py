@@ -250,14 +250,14 @@ def test_bad_distributions_and_bases_are_named(tmp_path):
 
 
 def test_a_run_that_breaks_unexpectedly_is_a_row(monkeypatch):
-    import hybrid.simulation as simulation
+    import hybrid.closed_loop as closed_loop
 
-    def broken(exp, plant="generated"):
+    def broken(exp, x0=None):
         if exp.model_error > 0.2:
             raise ZeroDivisionError("a defect")
-        return real(exp)
+        return real(exp, x0)
 
-    real = simulation.simulate
-    monkeypatch.setattr(simulation, "simulate", broken)
+    real = closed_loop.prepare
+    monkeypatch.setattr(closed_loop, "prepare", broken)
     table = sweep(BASE, {"model_error": [0.0, 0.3]}, workers=1)
     assert list(table["status"]) == ["ok", "error"] and "ZeroDivisionError" in table["error"][1]

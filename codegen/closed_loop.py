@@ -1,0 +1,370 @@
+"""The whole closed loop in one C function: many runs at once, one per SIMD lane.
+
+``<prefix>_closed_loop`` runs ``nruns`` experiments that share a plant, a controller step and the
+integration settings, ``HL_W`` at a time (see :mod:`codegen.lanes`): per control sample, the
+sensor's reading, one controller step (measurement, loops, law, its guards), then
+``steps_per_sample`` classical RK4 steps of the plant with the torque held (zero-order hold), and
+after every step the metrics of NOTES section 8 updated on the fly (the definitions of
+:func:`hybrid.metrics`). Per-step states and torques are written only when asked.
+
+Everything a run may vary is a run-time number in its row of ``runs`` (the initial state, the
+plant's parameter arrays, the controller's, the reference steps the metrics read); the manifest
+lists the row's blocks by name. A run whose controller step trips a guard or gives a non-finite
+output, or whose state stops being finite, gets that status and the sample where it happened; the
+others go on.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import casadi as ca
+import sympy as sp
+
+from .emit import STATUS, Unit, comment_safe, manifest, stamp
+from .kernel import Arg, Kernel
+from .lanes import PRELUDE, lanes_function, libm_maps
+
+#: the record columns the loop reads besides the force: normal force, tangential speed, penetration and
+#: the surface's normal force (``hybrid.metrics``' force_normal, velocity_tangential, penetration,
+#: contact_force)
+SIGNALS = ("Fc_n", "v_t", "penetration", "N")
+#: the metrics, in the order of ``hybrid.metrics`` (then one peak torque per joint)
+METRICS = ("force_overshoot_N", "force_overshoot_percent", "force_settling_time_2pct_s",
+           "speed_drop_after_force_step_m_per_s", "force_deviation_after_speed_step_N",
+           "speed_overshoot_after_speed_step_m_per_s", "steady_state_force_error_N",
+           "steady_state_speed_error_m_per_s", "rms_force_error_N", "rms_speed_error_m_per_s", "max_penetration_m",
+           "contact_losses", "time_out_of_contact_s")
+#: independent vectors of lanes evaluated together (see :func:`codegen.lanes.lanes_function`)
+INTERLEAVE = 1
+#: controller-step inputs the loop drives itself (the rest are the run's parameters)
+_DRIVEN = ("q", "qd", "Fc", "integrals", "t", "yd_extra", "yd_rate", "target")
+
+
+@dataclass(frozen=True)
+class LoopSpec:
+    """What one closed loop is made of: the plant's state derivative ``rhs(x, tau, ...)`` and output
+    record ``outputs(x, ...)``, the controller ``step`` (:mod:`codegen.controller_step`) and the
+    record columns of the sensor's force on the robot (base axes)."""
+
+    rhs: Kernel
+    outputs: Kernel
+    step: Kernel
+    force_columns: tuple[str, ...]
+
+
+def _rows(expr, index: list[int]):
+    if isinstance(expr, ca.SX):
+        return expr[index]
+    return sp.Matrix([expr[i] for i in index])
+
+
+def signals_kernel(spec: LoopSpec) -> Kernel:
+    """The record columns the loop reads (force, then :data:`SIGNALS`), alone: the rest of the
+    output record is not computed at every step."""
+    y = spec.outputs.outputs[0]
+    wanted = (*spec.force_columns, *SIGNALS)
+    missing = [c for c in wanted if c not in y.names]
+    if missing:
+        raise ValueError(f"the plant records no {', '.join(missing)}; it records {', '.join(y.names)}")
+    index = [y.names.index(c) for c in wanted]
+    return Kernel("loop_signals", spec.outputs.inputs, (Arg("s", _rows(y.expr, index), names=wanted),),
+                  "the record columns the closed loop reads")
+
+
+def blocks(spec: LoopSpec) -> list[tuple[str, int]]:
+    """``(name, size)`` of each block of a run's row: the initial state, the plant's parameter arrays
+    (``plant.<input>``), the controller's (``controller.<input>``), then the force and speed steps
+    ``(before, after, at)`` the metrics read."""
+    x = spec.rhs.inputs[0]
+    out, sizes = [("x0", x.size)], {}
+    for a in (*spec.rhs.inputs[2:], *spec.outputs.inputs[1:]):
+        if sizes.setdefault(a.name, a.size) != a.size:
+            raise ValueError(f"plant input {a.name} has two sizes")
+    out += [(f"plant.{n}", s) for n, s in sizes.items()]
+    names = [a.name for a in spec.step.inputs]
+    if tuple(names[:len(_DRIVEN)]) != _DRIVEN:
+        raise ValueError(f"a controller step's inputs start {_DRIVEN}, got {names[:len(_DRIVEN)]}")
+    out += [(f"controller.{a.name}", a.size) for a in spec.step.inputs[len(_DRIVEN):]]
+    return out + [("force_step", 3), ("speed_step", 3)]
+
+
+def _signature(prefix: str) -> str:
+    return (f"int {prefix}_closed_loop(int nruns, const double *runs, int n_samples, int steps_per_sample, "
+            "double h, double sample_time, double singular_tol, double *metrics, int *status, "
+            "int *failed_sample, double *states, double *taus)")
+
+
+def _driver(prefix: str, spec: LoopSpec) -> str:
+    rhs, step = spec.rhs, spec.step
+    nx, nq = rhs.inputs[0].size, rhs.inputs[1].size
+    offset, at = {}, 0
+    for name, size in blocks(spec):
+        offset[name] = at
+        at += size
+    nb, nf, m = at, len(spec.force_columns), step.inputs[3].size // 2
+    ns, nm = nf + len(SIGNALS), len(METRICS) + nq
+    iF, iv, ipen, iN = (nf + i for i in range(4))
+    plant = {a.name: f"blk + {offset['plant.' + a.name]} * HL_K"
+             for a in (*rhs.inputs[2:], *spec.outputs.inputs[1:])}
+    held = ", ".join(plant[a.name] for a in rhs.inputs[2:])
+    shown = ", ".join(plant[a.name] for a in spec.outputs.inputs[1:])
+    params = ", ".join(f"blk + {offset['controller.' + a.name]} * HL_K" for a in step.inputs[len(_DRIVEN):])
+    outs = step.core_outputs()
+    out_decl = " ".join(f"hl_v o_{a.name}[{a.size} * HL_K];" for a in outs)
+    out_args = ", ".join(f"o_{a.name}" for a in outs)
+    tau, z_next = f"o_{outs[0].name}", f"o_{outs[1].name}"
+    guards = []
+    for g in step.guards:
+        tol = g.tolerance if isinstance(g.tolerance, str) else repr(float(g.tolerance))
+        guards.append(f"            flag(&run[u], hl_fabs(o_{g.name}[u]) < {tol}, {g.status}, k);")
+    finite = " | ".join(f"not_finite(o_{a.name}, {a.size}, u)" for a in outs)
+    fs, vs = offset["force_step"], offset["speed_step"]
+    return f"""
+/* element i of vector u of an interleaved array */
+#define AT(a, i) (a)[(i) * HL_K + u]
+
+static hl_i not_finite(const hl_v *v, int n, int u) {{
+    hl_i bad = hl_splat(0.0) != 0.0;
+    int i;
+    for (i = 0; i < n; ++i) bad |= (AT(v, i) - AT(v, i)) != 0.0;
+    return bad;
+}}
+
+typedef struct {{
+    int status[HL_W], sample[HL_W];
+    hl_i alive;
+}} lanes_run;
+
+/* a lane still running that meets `bad` stops with `status` at sample k */
+static void flag(lanes_run *run, hl_i bad, int status, int k) {{
+    int l;
+    bad &= run->alive;
+    for (l = 0; l < HL_W; ++l) {{
+        if (bad[l]) {{
+            run->status[l] = status;
+            run->sample[l] = k;
+        }}
+    }}
+    run->alive &= ~bad;
+}}
+
+/* the metrics' running sums and extremes (hybrid.metrics' definitions, updated row by row) */
+typedef struct {{
+    hl_v peak, n_f, first_f, last_out_f, last_f, drop, n_v, dev, v_max, sum_fe, sum_ve, n_last, sum_f2, sum_v2,
+        pen, in_prev, losses, t_out, tau[{nq}];
+}} lanes_metrics;
+
+static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, int u, long i,
+                        double h, double end) {{
+    const hl_v fb = AT(blk, {fs}), fa = AT(blk, {fs + 1}), fat = AT(blk, {fs + 2});
+    const hl_v vb = AT(blk, {vs}), va = AT(blk, {vs + 1}), vat = AT(blk, {vs + 2});
+    const double ti = (double)i * h;
+    const hl_v t = hl_splat(ti), idx = hl_splat((double)i);
+    const hl_v F = AT(s, {iF}), v = AT(s, {iv}), pen = AT(s, {ipen});
+    const hl_v Fd = hl_select(t < fat, fb, fa), vd = hl_select(t < vat, vb, va);
+    const hl_v step = fa - fb, sgn = hl_select(step >= 0.0, hl_splat(1.0), hl_splat(-1.0));
+    const hl_v f_end = hl_select(vat > fat, vat, hl_splat(end));
+    const hl_v band = 0.02 * hl_select(fa != 0.0, hl_fabs(fa), hl_fabs(step));
+    const hl_i in_f = (t >= fat) & (t < f_end), in_v = t >= vat, last = t >= end - 0.2;
+    const hl_i contact = AT(s, {iN}) > 0.0;
+    int j;
+    mt->peak = hl_select(in_f & (sgn * F > mt->peak), sgn * F, mt->peak);
+    mt->n_f += hl_select(in_f, hl_splat(1.0), hl_splat(0.0));
+    mt->first_f = hl_select(in_f & (mt->first_f < 0.0), idx, mt->first_f);
+    mt->last_out_f = hl_select(in_f & (hl_fabs(F - fa) > band), idx, mt->last_out_f);
+    mt->last_f = hl_select(in_f, idx, mt->last_f);
+    mt->drop = hl_select(in_f & (vd - v > mt->drop), vd - v, mt->drop);
+    mt->n_v += hl_select(in_v, hl_splat(1.0), hl_splat(0.0));
+    mt->dev = hl_select(in_v & (hl_fabs(F - Fd) > mt->dev), hl_fabs(F - Fd), mt->dev);
+    mt->v_max = hl_select(in_v & (v > mt->v_max), v, mt->v_max);
+    mt->sum_fe += hl_select(last, Fd - F, hl_splat(0.0));
+    mt->sum_ve += hl_select(last, vd - v, hl_splat(0.0));
+    mt->n_last += hl_select(last, hl_splat(1.0), hl_splat(0.0));
+    mt->sum_f2 += (Fd - F) * (Fd - F);
+    mt->sum_v2 += (vd - v) * (vd - v);
+    mt->pen = hl_select(pen > mt->pen, pen, mt->pen);
+    if (i > 0) {{
+        mt->losses += hl_select((mt->in_prev != 0.0) & ~contact, hl_splat(1.0), hl_splat(0.0));
+        mt->t_out += hl_select(contact, hl_splat(0.0), hl_splat(ti - (double)(i - 1) * h));
+    }}
+    mt->in_prev = hl_bool(contact);
+    for (j = 0; j < {nq}; ++j) {{
+        const hl_v a = hl_fabs(AT(tau, j));
+        mt->tau[j] = hl_select(a > mt->tau[j], a, mt->tau[j]);
+    }}
+}}
+
+static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int u, int l, long rows, double h,
+                            double *out) {{
+    const double fb = AT(blk, {fs})[l], fa = AT(blk, {fs + 1})[l], vb = AT(blk, {vs})[l], va = AT(blk, {vs + 1})[l];
+    int j;
+    for (j = 0; j < 6; ++j) out[j] = NAN;
+    if (mt->n_f[l] > 0 && fa != fb) {{
+        const double step = fa - fb, sgn = step >= 0 ? 1.0 : -1.0;
+        const double lo = mt->last_out_f[l], lf = mt->last_f[l], first = mt->first_f[l];
+        out[0] = (sgn * mt->peak[l] - fa) * sgn;
+        out[1] = 100 * out[0] / fabs(step);
+        out[2] = lo < 0 ? 0.0 : lo == lf ? NAN : (lo + 1) * h - first * h;
+        out[3] = mt->drop[l];
+    }}
+    if (mt->n_v[l] > 0 && va != vb) {{
+        out[4] = mt->dev[l];
+        out[5] = mt->v_max[l] - va;
+    }}
+    out[6] = mt->sum_fe[l] / mt->n_last[l];
+    out[7] = mt->sum_ve[l] / mt->n_last[l];
+    out[8] = sqrt(mt->sum_f2[l] / (double)rows);
+    out[9] = sqrt(mt->sum_v2[l] / (double)rows);
+    out[10] = mt->pen[l];
+    out[11] = mt->losses[l];
+    out[12] = mt->t_out[l];
+    for (j = 0; j < {nq}; ++j) out[{len(METRICS)} + j] = mt->tau[j][l];
+}}
+
+static void record(double *states, double *taus, int g, int used, long row, long rows, const hl_v *x,
+                   const hl_v *tau) {{
+    int u, l, j, r;
+    if (!states && !taus) return;
+    for (u = 0; u < HL_K; ++u) {{
+        for (l = 0; l < HL_W; ++l) {{
+            long at;
+            r = u * HL_W + l;
+            if (r >= used) return;
+            at = (long)(g + r) * rows + row;
+            if (states) for (j = 0; j < {nx}; ++j) states[at * {nx} + j] = AT(x, j)[l];
+            if (taus) for (j = 0; j < {nq}; ++j) taus[at * {nq} + j] = AT(tau, j)[l];
+        }}
+    }}
+}}
+
+/* the runs g .. g + used - 1 as one group of HL_K vectors of HL_W lanes (unused lanes repeat run g) */
+static void run_lanes(int g, int used, const double *runs, int n_samples, int steps_per_sample, double h,
+                      double sample_time, double singular_tol, double *metrics, int *status, int *failed_sample,
+                      double *states, double *taus) {{
+    hl_v blk[{nb} * HL_K], x[{nx} * HL_K], xt[{nx} * HL_K], k1[{nx} * HL_K], k2[{nx} * HL_K], k3[{nx} * HL_K],
+        k4[{nx} * HL_K], s[{ns} * HL_K], fc[6 * HL_K], z[{2 * m} * HL_K], tv[HL_K], zero[9 * HL_K];
+    {out_decl}
+    lanes_run run[HL_K];
+    lanes_metrics mt[HL_K];
+    const long rows = (long)n_samples * steps_per_sample + 1;
+    const double end = (double)(rows - 1) * h;
+    long row = 0;
+    int i, j, l, k, u, alive;
+    (void)singular_tol;
+    for (u = 0; u < HL_K; ++u) {{
+        for (l = 0; l < HL_W; ++l) {{
+            const int r = u * HL_W + l < used ? u * HL_W + l : 0;
+            for (j = 0; j < {nb}; ++j) AT(blk, j)[l] = runs[(long)(g + r) * {nb} + j];
+            run[u].status[l] = HYBRID_OK;
+            run[u].sample[l] = -1;
+        }}
+        run[u].alive = hl_splat(0.0) == 0.0;
+        mt[u].peak = mt[u].drop = mt[u].dev = mt[u].v_max = mt[u].pen = hl_splat(-INFINITY);
+        mt[u].first_f = mt[u].last_out_f = mt[u].last_f = hl_splat(-1.0);
+        mt[u].n_f = mt[u].n_v = mt[u].sum_fe = mt[u].sum_ve = mt[u].n_last = mt[u].sum_f2 = mt[u].sum_v2
+            = mt[u].in_prev = mt[u].losses = mt[u].t_out = hl_splat(0.0);
+        for (j = 0; j < {nq}; ++j) mt[u].tau[j] = hl_splat(0.0);
+    }}
+    for (j = 0; j < 9 * HL_K; ++j) zero[j] = hl_splat(0.0);
+    for (j = 0; j < 6 * HL_K; ++j) fc[j] = hl_splat(0.0);
+    for (j = 0; j < {2 * m} * HL_K; ++j) z[j] = hl_splat(0.0);
+    for (j = 0; j < {nx} * HL_K; ++j) x[j] = blk[{offset['x0']} * HL_K + j];
+    loop_signals_lanes(x, {shown}, s);
+    alive = 1;
+    for (k = 0; k < n_samples && alive; ++k) {{
+        for (j = 0; j < {nf} * HL_K; ++j) fc[j] = s[j];
+        for (u = 0; u < HL_K; ++u) tv[u] = hl_splat(k * sample_time);
+        {step.name}_lanes(x, x + {nq} * HL_K, fc, z, tv, zero, zero, zero, {params}, {out_args});
+        for (u = 0; u < HL_K; ++u) {{
+{chr(10).join(guards)}
+            flag(&run[u], {finite}, HYBRID_NONFINITE, k);
+        }}
+        for (j = 0; j < {2 * m} * HL_K; ++j) z[j] = {z_next}[j];
+        if (k == 0) {{
+            for (u = 0; u < HL_K; ++u) metrics_row(&mt[u], blk, s, {tau}, u, 0, h, end);
+            record(states, taus, g, used, 0, rows, x, {tau});
+        }}
+        for (i = 0; i < steps_per_sample; ++i) {{
+            plant_rhs_lanes(x, {tau}, {held}, k1);
+            for (j = 0; j < {nx} * HL_K; ++j) xt[j] = x[j] + 0.5 * h * k1[j];
+            plant_rhs_lanes(xt, {tau}, {held}, k2);
+            for (j = 0; j < {nx} * HL_K; ++j) xt[j] = x[j] + 0.5 * h * k2[j];
+            plant_rhs_lanes(xt, {tau}, {held}, k3);
+            for (j = 0; j < {nx} * HL_K; ++j) xt[j] = x[j] + h * k3[j];
+            plant_rhs_lanes(xt, {tau}, {held}, k4);
+            for (j = 0; j < {nx} * HL_K; ++j) x[j] = x[j] + h / 6.0 * (k1[j] + 2.0 * (k2[j] + k3[j]) + k4[j]);
+            ++row;
+            for (u = 0; u < HL_K; ++u) {{
+                flag(&run[u], not_finite(x, {nx}, u), HYBRID_NONFINITE, k);
+                /* a stopped lane restarts from its initial state: its numbers no longer matter, and
+                   they stay finite */
+                if (hl_any(~run[u].alive)) {{
+                    for (j = 0; j < {nx}; ++j) {{
+                        AT(x, j) = hl_select(run[u].alive, AT(x, j), AT(blk, {offset['x0']} + j));
+                    }}
+                }}
+            }}
+            loop_signals_lanes(x, {shown}, s);
+            for (u = 0; u < HL_K; ++u) metrics_row(&mt[u], blk, s, {tau}, u, row, h, end);
+            record(states, taus, g, used, row, rows, x, {tau});
+        }}
+        alive = 0;
+        for (u = 0; u < HL_K; ++u) alive |= hl_any(run[u].alive);
+    }}
+    for (u = 0; u < HL_K; ++u) {{
+        for (l = 0; l < HL_W && u * HL_W + l < used; ++l) {{
+            const int r = g + u * HL_W + l;
+            status[r] = run[u].status[l];
+            failed_sample[r] = run[u].sample[l];
+            metrics_of_lane(&mt[u], blk, u, l, rows, h, metrics + (long)r * {nm});
+        }}
+    }}
+}}
+
+{_signature(prefix)} {{
+    int g;
+    for (g = 0; g < nruns; g += HL_W * HL_K) {{
+        run_lanes(g, nruns - g < HL_W * HL_K ? nruns - g : HL_W * HL_K, runs, n_samples, steps_per_sample, h,
+                  sample_time, singular_tol, metrics, status, failed_sample, states, taus);
+    }}
+    return HYBRID_OK;
+}}
+
+int {prefix}_lanes(void) {{
+    return HL_W * HL_K;
+}}
+"""
+
+
+def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict) -> Unit:
+    """C source, header and manifest of the closed loop ``spec``, deterministic in its inputs."""
+    nq = spec.rhs.inputs[1].size
+    rhs = Kernel("plant_rhs", spec.rhs.inputs, spec.rhs.outputs, spec.rhs.doc)
+    status = "\n".join(f"#define {k} {v}" for k, v in STATUS.items())
+    K = INTERLEAVE
+    body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py. */\n"
+            f"{PRELUDE}\n{status}\n#define HL_K {K}\n\n{libm_maps()}\n{lanes_function(rhs, interleave=K)}\n"
+            f"{lanes_function(signals_kernel(spec), interleave=K)}\n{lanes_function(spec.step, interleave=K)}\n"
+            f"{_driver(prefix, spec)}")
+    doc = ("run nruns closed loops (rows of runs, blocks as the manifest's closed_loop.blocks), HL_W at a time: "
+           "n_samples control samples of sample_time [s], steps_per_sample RK4 steps of h [s] each; writes "
+           "metrics (nruns x closed_loop.metrics), status and failed_sample (-1, or the sample where a run "
+           "stopped) per run, and states and taus per step when not NULL (nruns x rows x size)")
+    header = f"""#ifndef {prefix.upper()}_H
+#define {prefix.upper()}_H
+/* cdef-begin */
+/* {doc}. */
+{_signature(prefix)};
+/* the runs per group: HL_W lanes (8 with AVX-512, 4 with AVX, else 2) times HL_K interleaved vectors */
+int {prefix}_lanes(void);
+/* cdef-end */
+#endif
+"""
+    loop = {"symbol": f"{prefix}_closed_loop", "lanes_symbol": f"{prefix}_lanes",
+            "blocks": [{"name": n, "size": s} for n, s in blocks(spec)],
+            "state": list(spec.rhs.inputs[0].names or ()), "nq": nq,
+            "metrics": [*METRICS, *(f"peak_torque_joint{j + 1}_Nm" for j in range(nq))],
+            "signals": [*spec.force_columns, *SIGNALS]}
+    text = manifest(prefix, (), f"CasADi {ca.__version__}", {**info, "closed_loop": loop})
+    return Unit(prefix, stamp(body), stamp(header), text)

@@ -1,0 +1,225 @@
+"""The SIMD-lanes backend: a kernel evaluated for ``HL_W`` states at once, one state per lane.
+
+Any kernel (SymPy or CasADi) is first a CasADi ``Function`` (:func:`casadi_backend.kernel_function`);
+its instruction list is printed here with every scalar a GCC/Clang vector of ``HL_W`` doubles
+(``hl_v``), every array element a vector (structure of arrays: element ``i`` of lane ``l`` is
+``a[i][l]``). Arithmetic, comparisons and selects are the compiler's vector operations; ``sin``,
+``cos``, ``exp`` and ``tanh`` are our own vector polynomials (fdlibm's and Cephes' coefficients,
+within an ulp or two of the C library), where a lane whose argument is large or not finite takes
+the C library's value (so a lane never depends on its neighbours); other functions are the C
+library's, lane by lane.
+
+The lane count is chosen where the code is compiled, from the instruction set it targets (8 with
+AVX-512, 4 with AVX, else 2): with ``-march=native`` that is this processor's; without it, a
+portable build of the same source.
+"""
+
+from __future__ import annotations
+
+import math
+
+import casadi as ca
+
+from .kernel import Kernel
+
+PRELUDE = r"""#include <math.h>
+#include <string.h>
+
+#if defined(__AVX512F__)
+#define HL_W 8
+#elif defined(__AVX__)
+#define HL_W 4
+#else
+#define HL_W 2
+#endif
+typedef double hl_v __attribute__((vector_size(HL_W * 8)));
+typedef long long hl_i __attribute__((vector_size(HL_W * 8)));
+
+static inline hl_v hl_splat(double c) {
+    hl_v r = {0};
+    int l;
+    for (l = 0; l < HL_W; ++l) r[l] = c;
+    return r;
+}
+static inline hl_v hl_select(hl_i m, hl_v a, hl_v b) { return (hl_v)((m & (hl_i)a) | (~m & (hl_i)b)); }
+static inline hl_v hl_bool(hl_i m) { return hl_select(m, hl_splat(1.0), hl_splat(0.0)); }
+/* whether any lane of a mask is set: one instruction where the vector extension has it */
+#if defined(__AVX512F__) && HL_W == 8
+#include <immintrin.h>
+static inline int hl_any(hl_i m) { return _mm512_test_epi64_mask((__m512i)m, (__m512i)m) != 0; }
+#elif defined(__AVX__) && HL_W == 4
+#include <immintrin.h>
+static inline int hl_any(hl_i m) { return !_mm256_testz_si256((__m256i)m, (__m256i)m); }
+#else
+static inline int hl_any(hl_i m) {
+    long long acc = 0;
+    int l;
+    for (l = 0; l < HL_W; ++l) acc |= m[l];
+    return acc != 0;
+}
+#endif
+static inline hl_v hl_fabs(hl_v x) { return (hl_v)((hl_i)x & ~(hl_i)hl_splat(-0.0)); }
+static inline hl_v hl_copysign(hl_v x, hl_v y) {
+    hl_i s = (hl_i)hl_splat(-0.0);
+    return (hl_v)(((hl_i)x & ~s) | ((hl_i)y & s));
+}
+/* CasADi's sign: -1, 1, or x itself (0 and NaN) */
+static inline hl_v hl_sign(hl_v x) {
+    return hl_select(x < 0.0, hl_splat(-1.0), hl_select(x > 0.0, hl_splat(1.0), x));
+}
+/* C99 fmax/fmin: a NaN argument loses to a number */
+static inline hl_v hl_fmax(hl_v a, hl_v b) { return hl_select((a > b) | (b != b), a, b); }
+static inline hl_v hl_fmin(hl_v a, hl_v b) { return hl_select((a < b) | (b != b), a, b); }
+static inline hl_v hl_sqrt(hl_v x) {
+    hl_v r = x;
+    int l;
+    for (l = 0; l < HL_W; ++l) r[l] = __builtin_sqrt(x[l]);
+    return r;
+}
+#define HL_MAP1(name, f) static inline hl_v name(hl_v x) { \
+    hl_v r = x; int l; for (l = 0; l < HL_W; ++l) r[l] = f(x[l]); return r; }
+#define HL_MAP2(name, f) static inline hl_v name(hl_v x, hl_v y) { \
+    hl_v r = x; int l; for (l = 0; l < HL_W; ++l) r[l] = f(x[l], y[l]); return r; }
+
+/* sin or cos (cosine = 1): x = n pi/2 + r, |r| <= pi/4, in three parts of pi/2 (exact products
+   for |n| < 2^20), then fdlibm's kernels on r; a lane beyond |x| = 1e5 (or not finite) takes the C
+   library's value, so no lane depends on its neighbours */
+static inline hl_v hl_sincos(hl_v x, int cosine) {
+    const double magic = 6755399441055744.0; /* 1.5 * 2^52: adding it rounds to an integer */
+    const hl_i big = ~(hl_fabs(x) <= 1e5);
+    hl_v t, n, r, z, s, c, p, hz, w, y = hl_select(big, hl_splat(0.0), x);
+    hl_i j;
+    int l;
+    t = y * 6.36619772367581382433e-01 + magic;
+    n = t - magic;
+    j = ((hl_i)t + cosine) & 3; /* the quadrant, from the integer's low bits */
+    r = ((y - n * 1.57079632673412561417e+00) - n * 6.07710050630396597660e-11) - n * 2.02226624879595063154e-21;
+    z = r * r;
+    s = r + r * z * (-1.66666666666666324348e-01 + z * (8.33333333332248946124e-03 + z * (-1.98412698298579493134e-04
+        + z * (2.75573137070700676789e-06 + z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)))));
+    s = hl_select(r == 0.0, r, s); /* sin(-0) = -0 */
+    p = z * (4.16666666666666019037e-02 + z * (-1.38888888888741095749e-03 + z * (2.48015872894767294178e-05
+        + z * (-2.75573143513906633035e-07 + z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
+    hz = 0.5 * z;
+    w = 1.0 - hz;
+    c = w + (((1.0 - w) - hz) + z * p);
+    r = hl_select((j & 1) != 0, c, s);
+    r = (hl_v)((hl_i)r ^ (((j & 2) != 0) & (hl_i)hl_splat(-0.0)));
+    if (hl_any(big)) {
+        for (l = 0; l < HL_W; ++l) if (big[l]) r[l] = cosine ? cos(x[l]) : sin(x[l]);
+    }
+    return r;
+}
+static inline hl_v hl_sin(hl_v x) { return hl_sincos(x, 0); }
+static inline hl_v hl_cos(hl_v x) { return hl_sincos(x, 1); }
+
+/* exp: x = n ln2 + r (ln2 in two parts), fdlibm's rational kernel, times 2^n; a lane beyond
+   |x| = 700 (or not finite) takes the C library's value */
+static inline hl_v hl_exp(hl_v x) {
+    const double magic = 6755399441055744.0;
+    const hl_i big = ~(hl_fabs(x) <= 700.0);
+    hl_v t, n, hi, lo, r, z, c, y = hl_select(big, hl_splat(0.0), x);
+    hl_i k;
+    int l;
+    t = y * 1.44269504088896338700e+00 + magic;
+    n = t - magic;
+    k = ((hl_i)t - (hl_i)hl_splat(magic)) + 1023;
+    hi = y - n * 6.93147180369123816490e-01;
+    lo = n * 1.90821492927058770002e-10;
+    r = hi - lo;
+    z = r * r;
+    c = r - z * (1.66666666666666019037e-01 + z * (-2.77777777770155933842e-03 + z * (6.61375632143793436117e-05
+        + z * (-1.65339022054652515390e-06 + z * 4.13813679705723846039e-08))));
+    r = (1.0 - ((lo - (r * c) / (2.0 - c)) - hi)) * (hl_v)(k << 52);
+    if (hl_any(big)) {
+        for (l = 0; l < HL_W; ++l) if (big[l]) r[l] = exp(x[l]);
+    }
+    return r;
+}
+
+/* tanh: Cephes' rational form below |x| = 0.625, 1 - 2 / (exp(2|x|) + 1) above */
+static inline hl_v hl_tanh(hl_v x) {
+    hl_v ax = hl_fabs(x), z = x * x, small, big, e;
+    small = x + x * z * ((-9.64399179425052238628e-01 * z - 9.92877231001918586564e+01) * z
+        - 1.61468768441708447952e+03) / (((z + 1.12811678491632931402e+02) * z + 2.23548839060100448583e+03) * z
+        + 4.84406305325125486048e+03);
+    ax = hl_select(ax > 20.0, hl_splat(20.0), ax); /* tanh(20) = 1 in double; a NaN stays NaN */
+    e = hl_exp(2.0 * ax);
+    big = hl_copysign(1.0 - 2.0 / (e + 1.0), x);
+    return hl_select(hl_fabs(x) < 0.625, small, big);
+}
+"""
+
+#: functions of the C library applied lane by lane: CasADi operation -> C function
+_LIBM1 = {"OP_LOG": "log", "OP_TAN": "tan", "OP_ASIN": "asin", "OP_ACOS": "acos", "OP_ATAN": "atan",
+          "OP_SINH": "sinh", "OP_COSH": "cosh", "OP_ASINH": "asinh", "OP_ACOSH": "acosh", "OP_ATANH": "atanh",
+          "OP_FLOOR": "floor", "OP_CEIL": "ceil", "OP_ERF": "erf", "OP_EXPM1": "expm1", "OP_LOG1P": "log1p"}
+_LIBM2 = {"OP_ATAN2": "atan2", "OP_FMOD": "fmod", "OP_HYPOT": "hypot", "OP_POW": "pow", "OP_CONSTPOW": "pow"}
+#: the rest: CasADi operation -> C expression of the work variables {a} and {b}
+_OPS = {"OP_ASSIGN": "{a}", "OP_ADD": "{a} + {b}", "OP_SUB": "{a} - {b}", "OP_MUL": "{a} * {b}",
+        "OP_DIV": "{a} / {b}", "OP_NEG": "-{a}", "OP_SQ": "{a} * {a}", "OP_TWICE": "{a} + {a}",
+        "OP_INV": "1.0 / {a}", "OP_SQRT": "hl_sqrt({a})", "OP_SIN": "hl_sin({a})", "OP_COS": "hl_cos({a})",
+        "OP_EXP": "hl_exp({a})", "OP_TANH": "hl_tanh({a})", "OP_FABS": "hl_fabs({a})", "OP_SIGN": "hl_sign({a})",
+        "OP_COPYSIGN": "hl_copysign({a}, {b})", "OP_FMIN": "hl_fmin({a}, {b})", "OP_FMAX": "hl_fmax({a}, {b})",
+        "OP_LT": "hl_bool({a} < {b})", "OP_LE": "hl_bool({a} <= {b})", "OP_EQ": "hl_bool({a} == {b})",
+        "OP_NE": "hl_bool({a} != {b})", "OP_NOT": "hl_bool({a} == 0.0)",
+        "OP_AND": "hl_bool(({a} != 0.0) & ({b} != 0.0))", "OP_OR": "hl_bool(({a} != 0.0) | ({b} != 0.0))",
+        "OP_IF_ELSE_ZERO": "hl_select({a} != 0.0, {b}, hl_splat(0.0))"}
+_OPS.update({op: f"hl_{f}({{a}})" for op, f in _LIBM1.items()})
+_OPS.update({op: f"hl_{f}({{a}}, {{b}})" for op, f in _LIBM2.items()})
+_BY_CODE = {getattr(ca, name): name for name in (*_OPS, "OP_CONST", "OP_INPUT", "OP_OUTPUT")}
+
+
+def _constant(value: float) -> str:
+    if math.isnan(value):
+        return "hl_splat(NAN)"
+    if math.isinf(value):
+        return f"hl_splat({'-' if value < 0 else ''}INFINITY)"
+    return f"hl_splat({value!r})"
+
+
+def libm_maps() -> str:
+    """The lane-by-lane C library functions a lanes kernel may call (defined once per unit)."""
+    ones = "".join(f"HL_MAP1(hl_{f}, {f})\n" for f in sorted(set(_LIBM1.values())))
+    twos = "".join(f"HL_MAP2(hl_{f}, {f})\n" for f in sorted(set(_LIBM2.values())))
+    return ones + twos
+
+
+def lanes_function(kernel: Kernel, name: str | None = None, interleave: int = 1) -> str:
+    """``static void <name>(const hl_v *input..., hl_v *output...)``: the kernel on ``HL_W`` lanes.
+
+    Arguments are the kernel's inputs, then its core outputs (outputs, then each guard's measure),
+    each an array of ``hl_v`` (one vector per element). With ``interleave = K`` the function
+    evaluates ``K`` independent vectors of lanes, statement by statement (element ``i`` of vector
+    ``u`` at ``[i * K + u]``): the processor overlaps their dependency chains, which one vector
+    alone leaves idle. Outputs may not alias inputs.
+    """
+    from .casadi_backend import kernel_function
+
+    f = kernel_function(kernel, sympy_cse=True)
+    outputs = kernel.core_outputs()
+    K = interleave
+    params = [f"const hl_v *{a.name}" for a in kernel.inputs] + [f"hl_v *{a.name}" for a in outputs]
+    lines = [f"static void {name or kernel.name + '_lanes'}({', '.join(params)}) {{"]
+    if f.sz_w():
+        lines.append("    hl_v " + ", ".join(f"w{i}_{u}" for i in range(f.sz_w()) for u in range(K)) + ";")
+    for a in kernel.inputs:
+        lines.append(f"    (void){a.name};")
+    for k in range(f.n_instructions()):
+        code, ins, out = f.instruction_id(k), f.instruction_input(k), f.instruction_output(k)
+        op = _BY_CODE.get(code)
+        if op is None:
+            raise NotImplementedError(f"the lanes backend cannot print CasADi operation {code} of kernel "
+                                      f"{kernel.name}; add it to codegen/lanes.py")
+        for u in range(K):
+            if op == "OP_INPUT":
+                lines.append(f"    w{out[0]}_{u} = {kernel.inputs[ins[0]].name}[{ins[1] * K + u}];")
+            elif op == "OP_OUTPUT":
+                lines.append(f"    {outputs[out[0]].name}[{out[1] * K + u}] = w{ins[0]}_{u};")
+            elif op == "OP_CONST":
+                lines.append(f"    w{out[0]}_{u} = {_constant(float(f.instruction_constant(k)))};")
+            else:
+                args = {"a": f"w{ins[0]}_{u}", "b": f"w{ins[1]}_{u}" if len(ins) > 1 else ""}
+                lines.append(f"    w{out[0]}_{u} = {_OPS[op].format(**args)};")
+    lines.append("}\n")
+    return "\n".join(lines)

@@ -1,0 +1,151 @@
+"""Whole runs of the paper's experiment in compiled C, many at once as SIMD lanes.
+
+:func:`prepare` turns an experiment into one row of numbers for the generated closed loop
+(:mod:`codegen.closed_loop`), or None when part of its controller runs in Python (references
+given as code, a desired path) or it asks for the NumPy reference; :func:`run` runs prepared
+experiments, grouped by the loop they share, one native call per group. ``simulate`` and
+``sweep`` use it; the Python runner (:func:`hybrid.simulation.run`) is the reference it is tested
+against and the path that explains a run that stopped.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cache
+
+import numpy as np
+
+from . import native
+from .controller import Controller
+from .experiment import Experiment
+from .plants import NativePlant
+
+
+@dataclass(frozen=True)
+class Loop:
+    """A compiled closed loop: its entry point, the blocks of a run's row and the metric names."""
+
+    function: object
+    ffi: object
+    lanes: int
+    blocks: tuple[tuple[str, int], ...]
+    metrics: tuple[str, ...]
+    nx: int
+    nq: int
+
+    @property
+    def width(self) -> int:
+        return sum(size for _, size in self.blocks)
+
+    def row(self, values: dict[str, np.ndarray]) -> np.ndarray:
+        """A run's row from its blocks by name."""
+        return np.concatenate([np.asarray(values[name], float).ravel() for name, _ in self.blocks])
+
+
+@cache
+def _loop(kind: str, variant: tuple) -> Loop:
+    from importlib.metadata import version
+
+    from codegen.emit import fingerprint
+    from codegen.robot_unit import c_identifier
+
+    from .robot import _chain_key
+
+    v = dict(variant)
+    prefix = c_identifier(f"hybrid_{v['name']}_{kind}_{v['step']}_loop")
+    key = {"chain": _chain_key(v["chain"]), "surface": v["spec"].key(), "axes": list(v["axes"]), "kind": kind,
+           **{k: v[k] for k in ("desired_frame", "position_error", "step")}, "generator": fingerprint(),
+           "casadi": version("casadi"), "sympy": version("sympy"), "prefix": prefix}
+    folder = native.generated_unit(prefix, key, lambda: _build(prefix, kind, v).files)
+    module, manifest = native.load_generated(folder, prefix)
+    loop = manifest["closed_loop"]
+    return Loop(getattr(module.lib, loop["symbol"]), module.ffi, int(getattr(module.lib, loop["lanes_symbol"])()),
+                tuple((b["name"], b["size"]) for b in loop["blocks"]), tuple(loop["metrics"]), len(loop["state"]),
+                loop["nq"])
+
+
+def _build(prefix: str, kind: str, v: dict):
+    from codegen import model
+    from codegen.closed_loop import LoopSpec, build_closed_loop_unit
+    from codegen.controller_step import controller_kernels
+
+    plant = {k.name: k for k in model.kernels(2)}
+    steps = {k.name: k for k in controller_kernels(v["chain"], v["spec"], v["axes"], v["desired_frame"],
+                                                      v["position_error"])}
+    spec = LoopSpec(plant[f"plant_rhs_{kind}"], plant[f"plant_outputs_{kind}"], steps[v["step"]], ("Fc_x", "Fc_y"))
+    info = {"experiment": "paper", "surface": kind, "step": v["step"], "robot": v["name"]}
+    return build_closed_loop_unit(spec, prefix, f"the paper's closed loop on a {kind}: {v['step']}", info)
+
+
+@dataclass(frozen=True)
+class Prepared:
+    """An experiment ready for the compiled loop: which loop, its integration settings, its row."""
+
+    experiment: Experiment
+    loop: Loop
+    settings: tuple
+    row: np.ndarray
+
+
+def prepare(exp, x0: np.ndarray | None = None) -> Prepared | None:
+    """``exp`` as a row of the compiled loop, after the checks ``simulate`` makes (a refused
+    experiment raises their HybridError); None when it cannot run there."""
+    from .simulation import check_path, initial_state
+
+    if not isinstance(exp, Experiment) or exp.backend == "numpy":
+        return None
+    ctrl = Controller.from_experiment(exp)
+    if not ctrl.runs_in_c:
+        return None
+    x0 = initial_state(exp) if x0 is None else x0
+    check_path(exp)
+    variant = ctrl.step_variant()
+    loop = _loop(exp.surface.kind, tuple(sorted(variant.items())))
+    fs, vs = exp.force_reference, exp.speed_reference
+    values = {"x0": x0, "force_step": (fs.before, fs.after, fs.at), "speed_step": (vs.before, vs.after, vs.at),
+              **{f"plant.{k}": v for k, v in NativePlant.inputs(exp).items()},
+              **{f"controller.{k}": v for k, v in ctrl.step_inputs().items()}}
+    settings = (exp.n_samples, exp.steps_per_sample, exp.step, exp.sample_time, exp.singular_tol)
+    return Prepared(exp, loop, settings, loop.row(values))
+
+
+@dataclass
+class Outcome:
+    """One compiled run: ``status`` (0 ok, else the C status code), the sample where it stopped
+    (-1), its metrics by name, and with ``record`` its states and torques per step."""
+
+    status: int
+    failed_sample: int
+    metrics: dict
+    states: np.ndarray | None = None
+    taus: np.ndarray | None = None
+
+
+def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
+    """Run every prepared experiment; outcomes in the same order."""
+    groups: dict = {}
+    for i, p in enumerate(prepared):
+        groups.setdefault((id(p.loop), p.settings), []).append(i)
+    outcomes: list = [None] * len(prepared)
+    for members in groups.values():
+        first = prepared[members[0]]
+        loop, (n_samples, per_sample, h, sample_time, tol) = first.loop, first.settings
+        n = len(members)
+        runs = np.ascontiguousarray(np.stack([prepared[i].row for i in members]))
+        metrics = np.empty((n, len(loop.metrics)))
+        status, failed = np.empty(n, np.intc), np.empty(n, np.intc)
+        steps = n_samples * per_sample + 1
+        states = np.empty((n, steps, loop.nx)) if record else None
+        taus = np.empty((n, steps, loop.nq)) if record else None
+        ffi = loop.ffi
+        loop.function(n, ffi.from_buffer("double[]", runs), n_samples, per_sample, h, sample_time, tol,
+                      ffi.from_buffer("double[]", metrics), ffi.from_buffer("int[]", status),
+                      ffi.from_buffer("int[]", failed),
+                      ffi.from_buffer("double[]", states) if record else ffi.NULL,
+                      ffi.from_buffer("double[]", taus) if record else ffi.NULL)
+        for j, i in enumerate(members):
+            m = dict(zip(loop.metrics, metrics[j].tolist()))
+            m["contact_losses"] = int(m["contact_losses"])
+            outcomes[i] = Outcome(int(status[j]), int(failed[j]), m, states[j] if record else None,
+                                  taus[j] if record else None)
+    return outcomes

@@ -1,0 +1,169 @@
+"""The compiled closed loop (runs as SIMD lanes) against the Python runner, and its vector math
+against the C library."""
+
+from __future__ import annotations
+
+import math
+
+import cffi
+import numpy as np
+import pytest
+import sympy as sp
+
+import hybrid
+from codegen.kernel import Arg, Kernel
+from codegen.lanes import PRELUDE, lanes_function, libm_maps
+from hybrid import closed_loop, metrics
+from hybrid.controller import Controller
+from hybrid.native import CFLAGS, compiler
+from hybrid.plants import NativePlant
+from hybrid.simulation import initial_state, run
+
+CASES = {
+    "paper": {},
+    "plane": {"surface": hybrid.Plane((0.3, 0.0), (-1.0, 0.0)), "start_point": (0.3, 0.1)},
+    "khatib": {"controller": "khatib", "model_error": 0.2},
+    "raibert_craig": {"controller": "raibert_craig"},
+    "friction": {"contact": hybrid.Contact(friction=0.35)},
+    # (friction 0.35 at 0.05 m/s nearly sticks: RK4 at this step is then so sensitive that rounding
+    # differences between two correct programs grow to 1e-4; a sweep and simulate share one program)
+    "steps_down": {"F_d": hybrid.Step(12.0, 6.0, 0.4), "v_d": hybrid.Step(0.15, 0.05, 0.9)},
+}
+
+
+def _experiment(case: str):
+    return hybrid.paper_experiment(duration=1.2, **CASES[case])
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_compiled_runs_equal_the_python_runner(case):
+    exp = _experiment(case)
+    prepared = closed_loop.prepare(exp)
+    assert prepared is not None
+    got = closed_loop.run([prepared], record=True)[0]
+    ref = run(exp, NativePlant(exp), Controller.from_experiment(exp), initial_state(exp))
+    assert got.status == 0 and got.failed_sample == -1
+    scale = np.abs(ref.state).max(axis=0) + 1e-3
+    assert np.abs((got.states - ref.state) / scale).max() < 1e-7
+    assert np.abs(got.taus - ref.tau).max() < 1e-6 * np.abs(ref.tau).max()
+    for name, value in ref.metrics.items():
+        if isinstance(value, float) and math.isnan(value):
+            assert math.isnan(got.metrics[name]), name
+        else:
+            assert got.metrics[name] == pytest.approx(value, rel=1e-6, abs=1e-10), name
+
+
+def test_metrics_in_c_equal_the_numpy_definitions_on_the_same_record():
+    exp = _experiment("steps_down")
+    got = closed_loop.run([closed_loop.prepare(exp)], record=True)[0]
+    plant = NativePlant(exp)
+    record = plant.outputs(got.states)
+    t = np.arange(len(got.states)) * exp.step
+    col = {name: record[:, i] for i, name in enumerate(plant.record["outputs"])}
+    ref = metrics(t, col["Fc_n"], col["v_t"], exp.force_reference.sampled(t), exp.speed_reference.sampled(t),
+                  force_step=exp.force_reference, speed_step=exp.speed_reference, penetration=col["penetration"],
+                  contact_force=col["N"], tau=got.taus)
+    assert ref.keys() == got.metrics.keys()
+    for name, value in ref.items():
+        assert (math.isnan(value) and math.isnan(got.metrics[name])) or \
+            got.metrics[name] == pytest.approx(value, rel=1e-9, abs=1e-12), name
+
+
+def test_lanes_do_not_depend_on_their_neighbours_and_a_stopped_run_stops_alone():
+    """Nineteen runs (more than one group of lanes, the last one partly filled), one diverging:
+    each run's metrics equal its own run alone; the diverging one reports where it stopped."""
+    exps = [hybrid.paper_experiment(duration=0.6, model_error=m, contact=hybrid.Contact(friction=f))
+            for m in (0.0, 0.15, 0.3) for f in (0.0, 0.1, 0.2, 0.3, 0.35, 0.4)]
+    exps.insert(7, hybrid.paper_experiment(duration=0.6, model_error=5.0))
+    prepared = [closed_loop.prepare(e) for e in exps]
+    together = closed_loop.run(prepared)
+    for i, p in enumerate(prepared):
+        alone = closed_loop.run([p])[0]
+        assert alone.status == together[i].status and alone.failed_sample == together[i].failed_sample
+        if alone.status == 0:
+            for name, value in alone.metrics.items():
+                assert together[i].metrics[name] == pytest.approx(value, rel=1e-12, abs=1e-15, nan_ok=True)
+    stopped = together[7]
+    assert stopped.status != 0 and 0 <= stopped.failed_sample < exps[7].n_samples
+    with pytest.raises(hybrid.SimulationError) as info:
+        hybrid.simulate(exps[7])
+    sample_time = exps[7].sample_time
+    assert abs(info.value.time - stopped.failed_sample * sample_time) <= sample_time + 1e-12
+    assert all(o.status == 0 for i, o in enumerate(together) if i != 7)
+
+
+def test_what_runs_in_python_is_not_compiled():
+    assert closed_loop.prepare(hybrid.paper_experiment(frame="desired")) is None
+    assert closed_loop.prepare(hybrid.paper_experiment(backend="numpy")) is None
+    assert closed_loop.prepare(hybrid.tracing_experiment()) is None
+
+
+# ------------------------------------------------------------------------------- vector math
+
+
+@pytest.fixture(scope="module")
+def vector_math(tmp_path_factory):
+    """sin, cos, tanh, exp and sqrt of a lanes kernel, over n numbers (whole groups of lanes)."""
+    x = sp.Symbol("x0", real=True)
+    kernel = Kernel("f", (Arg("x", sp.Matrix([x])),),
+                    (Arg("y", sp.Matrix([sp.sin(x), sp.cos(x), sp.tanh(x), sp.exp(x / 64), sp.sqrt(sp.Abs(x))])),),
+                    "vector math")
+    source = PRELUDE + libm_maps() + lanes_function(kernel) + """
+int lanes(void) { return HL_W; }
+void f_many(int n, const double *x, double *y) {
+    int i, l, j;
+    for (i = 0; i + HL_W <= n; i += HL_W) {
+        hl_v in[1], out[5];
+        for (l = 0; l < HL_W; ++l) in[0][l] = x[i + l];
+        f_lanes(in, out);
+        for (j = 0; j < 5; ++j) for (l = 0; l < HL_W; ++l) y[(long)j * n + i + l] = out[j][l];
+    }
+}
+"""
+    ffi = cffi.FFI()
+    ffi.cdef("int lanes(void); void f_many(int n, const double *x, double *y);")
+    ffi.set_source("_lanes_math", source, extra_compile_args=list(CFLAGS), libraries=["m"])
+    folder = tmp_path_factory.mktemp("lanes")
+    import os
+
+    os.environ.setdefault("CC", compiler()[0])
+    so = ffi.compile(tmpdir=str(folder))
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("_lanes_math", so)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+
+    def evaluate(values: np.ndarray) -> np.ndarray:
+        w = module.lib.lanes()
+        xs = np.ascontiguousarray(np.resize(values, -(-len(values) // w) * w), float)
+        out = np.empty((5, len(xs)))
+        module.lib.f_many(len(xs), module.ffi.from_buffer("double[]", xs), module.ffi.from_buffer("double[]", out))
+        return xs, out
+
+    return evaluate
+
+
+def test_vector_math_is_within_an_ulp_or_two_of_the_c_library(vector_math):
+    rng = np.random.default_rng(5)
+    x = np.concatenate([rng.uniform(-4, 4, 4000), rng.uniform(-1e5, 1e5, 4000), rng.uniform(-1e-3, 1e-3, 1000),
+                        np.arange(-64, 65) * np.pi / 4, [0.0, -0.0, 0.625, -0.625, 19.9, 20.5, 700.0]])
+    xs, y = vector_math(x)
+    with np.errstate(over="ignore"):
+        ref = [np.sin(xs), np.cos(xs), np.tanh(xs), np.exp(xs / 64)]
+    for got, want, absolute in zip(y, ref, (True, True, False, False)):
+        # sin, cos: within an ulp of 1 (their own ulp near a zero, after the reduction); tanh, exp: 2 ulps
+        limit = np.spacing(1.0) if absolute else 2 * np.spacing(np.abs(want))
+        assert (got == want).sum() > 0.5 * len(xs)
+        assert ((np.abs(got - want) <= limit) | (got == want)).all()
+    assert (y[4] == np.sqrt(np.abs(xs))).all()
+    assert np.signbit(y[0][xs == 0]).tolist() == np.signbit(xs[xs == 0]).tolist()
+
+
+def test_large_and_non_finite_arguments_take_the_c_library(vector_math):
+    x = np.array([1e6, -3e9, 1e300, 12345678.9, np.inf, -np.inf, np.nan, 0.5])
+    xs, y = vector_math(x)
+    with np.errstate(invalid="ignore"):
+        np.testing.assert_array_equal(y[0], np.sin(xs))
+        np.testing.assert_array_equal(y[1], np.cos(xs))
+        np.testing.assert_array_equal(y[2], np.tanh(xs))
