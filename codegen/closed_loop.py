@@ -242,6 +242,8 @@ static void record(double *states, double *taus, int g, int used, long row, long
 static void run_lanes(int g, int used, const double *runs, int n_samples, int steps_per_sample, double h,
                       double sample_time, double singular_tol, double *metrics, int *status, int *failed_sample,
                       double *states, double *taus) {{
+    hl_v pre_rhs[PLANT_RHS_LANES_NPRE * HL_K], pre_sig[LOOP_SIGNALS_LANES_NPRE * HL_K],
+        pre_step[{step.name.upper()}_LANES_NPRE * HL_K];
     hl_v blk[{nb} * HL_K], x[{nx} * HL_K], xt[{nx} * HL_K], k1[{nx} * HL_K], k2[{nx} * HL_K], k3[{nx} * HL_K],
         k4[{nx} * HL_K], s[{ns} * HL_K], fc[6 * HL_K], z[{2 * m} * HL_K], tv[HL_K], zero[9 * HL_K];
     {out_decl}
@@ -270,12 +272,15 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     for (j = 0; j < 6 * HL_K; ++j) fc[j] = hl_splat(0.0);
     for (j = 0; j < {2 * m} * HL_K; ++j) z[j] = hl_splat(0.0);
     for (j = 0; j < {nx} * HL_K; ++j) x[j] = blk[{offset['x0']} * HL_K + j];
-    loop_signals_lanes(x, {shown}, s);
+    plant_rhs_lanes_pre({held}, pre_rhs);
+    loop_signals_lanes_pre({shown}, pre_sig);
+    {step.name}_lanes_pre({params}, pre_step);
+    loop_signals_lanes(x, pre_sig, s);
     alive = 1;
     for (k = 0; k < n_samples && alive; ++k) {{
         for (j = 0; j < {nf} * HL_K; ++j) fc[j] = s[j];
         for (u = 0; u < HL_K; ++u) tv[u] = hl_splat(k * sample_time);
-        {step.name}_lanes(x, x + {nq} * HL_K, fc, z, tv, zero, zero, zero, {params}, {out_args});
+        {step.name}_lanes(x, x + {nq} * HL_K, fc, z, tv, zero, zero, zero, pre_step, {out_args});
         for (u = 0; u < HL_K; ++u) {{
 {chr(10).join(guards)}
             flag(&run[u], {finite}, HYBRID_NONFINITE, k);
@@ -286,13 +291,13 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
             record(states, taus, g, used, 0, rows, x, {tau});
         }}
         for (i = 0; i < steps_per_sample; ++i) {{
-            plant_rhs_lanes(x, {tau}, {held}, k1);
+            plant_rhs_lanes(x, {tau}, pre_rhs, k1);
             for (j = 0; j < {nx} * HL_K; ++j) xt[j] = x[j] + 0.5 * h * k1[j];
-            plant_rhs_lanes(xt, {tau}, {held}, k2);
+            plant_rhs_lanes(xt, {tau}, pre_rhs, k2);
             for (j = 0; j < {nx} * HL_K; ++j) xt[j] = x[j] + 0.5 * h * k2[j];
-            plant_rhs_lanes(xt, {tau}, {held}, k3);
+            plant_rhs_lanes(xt, {tau}, pre_rhs, k3);
             for (j = 0; j < {nx} * HL_K; ++j) xt[j] = x[j] + h * k3[j];
-            plant_rhs_lanes(xt, {tau}, {held}, k4);
+            plant_rhs_lanes(xt, {tau}, pre_rhs, k4);
             for (j = 0; j < {nx} * HL_K; ++j) x[j] = x[j] + h / 6.0 * (k1[j] + 2.0 * (k2[j] + k3[j]) + k4[j]);
             ++row;
             for (u = 0; u < HL_K; ++u) {{
@@ -305,7 +310,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
                     }}
                 }}
             }}
-            loop_signals_lanes(x, {shown}, s);
+            loop_signals_lanes(x, pre_sig, s);
             for (u = 0; u < HL_K; ++u) metrics_row(&mt[u], blk, s, {tau}, u, row, h, end);
             record(states, taus, g, used, row, rows, x, {tau});
         }}
@@ -343,10 +348,14 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict) -
     rhs = Kernel("plant_rhs", spec.rhs.inputs, spec.rhs.outputs, spec.rhs.doc)
     status = "\n".join(f"#define {k} {v}" for k, v in STATUS.items())
     K = INTERLEAVE
+    held = tuple(a.name for a in spec.rhs.inputs[2:])
+    shown = tuple(a.name for a in spec.outputs.inputs[1:])
+    params = tuple(a.name for a in spec.step.inputs[len(_DRIVEN):])
     body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py. */\n"
-            f"{PRELUDE}\n{status}\n#define HL_K {K}\n\n{libm_maps()}\n{lanes_function(rhs, interleave=K)}\n"
-            f"{lanes_function(signals_kernel(spec), interleave=K)}\n{lanes_function(spec.step, interleave=K)}\n"
-            f"{_driver(prefix, spec)}")
+            f"{PRELUDE}\n{status}\n#define HL_K {K}\n\n{libm_maps()}\n"
+            f"{lanes_function(rhs, 'plant_rhs_lanes', K, held)}\n"
+            f"{lanes_function(signals_kernel(spec), 'loop_signals_lanes', K, shown)}\n"
+            f"{lanes_function(spec.step, spec.step.name + '_lanes', K, params)}\n{_driver(prefix, spec)}")
     doc = ("run nruns closed loops (rows of runs, blocks as the manifest's closed_loop.blocks), HL_W at a time: "
            "n_samples control samples of sample_time [s], steps_per_sample RK4 steps of h [s] each; writes "
            "metrics (nruns x closed_loop.metrics), status and failed_sample (-1, or the sample where a run "

@@ -28,7 +28,7 @@ from .model import Kernel
 
 BACKENDS = ("sympy", "casadi")
 #: bumped whenever the emitted interface changes; recorded in every manifest and cache key
-GENERATOR_VERSION = "3"
+GENERATOR_VERSION = "4"
 STAMP = "/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: "
 STATUS = {"HYBRID_OK": 0, "HYBRID_SINGULAR": 1, "HYBRID_NONFINITE": 2, "HYBRID_FRAME_UNDEFINED": 3,
           "HYBRID_EULER_SINGULAR": 4}
@@ -168,7 +168,8 @@ def manifest(prefix: str, kernels: tuple[Kernel, ...], tools: str, info: dict) -
         f = {"name": k.name, "symbol": f"{prefix}_{k.name}", "doc": k.doc,
              "inputs": [a.describe() for a in k.inputs], "outputs": [a.describe() for a in k.outputs],
              "guards": [g.describe() for g in k.guards], "singular_tol": k.takes_singular_tol,
-             "batched": {"symbol": f"{prefix}_{k.name}_batch", "per_state": list(k.batched)} if k.batched else None,
+             "batched": ({"symbol": f"{prefix}_{k.name}_batch", "per_state": list(k.batched), "lanes": k.lanes}
+                         if k.batched else None),
              "integrator": ({"symbol": f"{prefix}_{k.integrator}", "state": k.inputs[0].name}
                             if k.integrator else None)}
         functions.append(f)
@@ -193,6 +194,10 @@ static int all_finite(const double *v, int n) {{
     return 1;
 }}
 """]
+    if any(k.lanes for k in kernels):
+        from .lanes import PRELUDE, libm_maps
+
+        out.append(f"{PRELUDE}\n{libm_maps()}")
     for k in kernels:
         core_args = [a.name for a in (*k.inputs, *k.core_outputs())]
         lines = [f"int {prefix}_{k.name}({', '.join(_params(k))}) {{"]
@@ -204,7 +209,9 @@ static int all_finite(const double *v, int n) {{
         finite = " && ".join(f"all_finite({a.name}, {a.size})" for a in k.core_outputs())
         lines.append(f"    return ({finite}) ? HYBRID_OK : HYBRID_NONFINITE;\n}}\n")
         out.append("\n".join(lines))
-        if k.batched:
+        if k.batched and k.lanes:
+            out.append(_lanes_batch(prefix, k))
+        elif k.batched:
             per, sizes = set(k.batched), k.sizes()
             args = []
             for p in _params(k):
@@ -250,6 +257,67 @@ static int all_finite(const double *v, int n) {{
 }}
 """)
     return "\n".join(out)
+
+
+def _lanes_batch(prefix: str, k: Kernel) -> str:
+    """The ``_batch`` entry point of a ``lanes`` kernel: ``HL_W`` states per call of its lanes
+    function, what the states share computed once; the last group is filled up with the last state,
+    so every state takes the same arithmetic wherever it sits in the batch."""
+    from .lanes import lanes_function
+
+    per = set(k.batched)
+    fixed = [a for a in k.inputs if a.name not in per]
+    states = [a for a in k.inputs if a.name in per]
+    outs = k.core_outputs()
+    name = f"{k.name}_lanes"
+
+    def gather(row: str) -> str:
+        return "\n".join(f"            for (j = 0; j < {a.size}; ++j) {{\n"
+                         f"                for (l = 0; l < HL_W; ++l) l_{a.name}[j][l] = {a.name}[({row}) * {a.size} + j];\n"
+                         "            }" for a in states)
+
+    scatter = "\n".join(f"            for (j = 0; j < {a.size}; ++j) {a.name}[(i + l) * {a.size} + j] = o_{a.name}[j][l];"
+                        for a in k.outputs)
+    guards = "".join(f"        hl_i g{n} = hl_fabs(o_{g.name}[0]) < "
+                     f"{g.tolerance if isinstance(g.tolerance, str) else repr(float(g.tolerance))};\n"
+                     for n, g in enumerate(k.guards))
+    pick = "".join(f"g{n}[l] ? {g.status} : " for n, g in enumerate(k.guards))
+    bad = "\n".join(f"        for (j = 0; j < {a.size}; ++j) bad |= (o_{a.name}[j] - o_{a.name}[j]) != 0.0;"
+                     for a in outs)
+    decl = " ".join(f"hl_v l_{a.name}[{a.size}] = {{{{0}}}};" for a in states) + " " + " ".join(
+        f"hl_v o_{a.name}[{a.size}];" for a in outs)
+    shared = " ".join(f"hl_v f_{a.name}[{a.size}];" for a in fixed)
+    splat = "\n".join(f"    for (j = 0; j < {a.size}; ++j) f_{a.name}[j] = hl_splat({a.name}[j]);" for a in fixed)
+    call_pre = ", ".join(f"f_{a.name}" for a in fixed)
+    call = ", ".join([*(f"l_{a.name}" for a in states), "pre", *(f"o_{a.name}" for a in outs)])
+    return f"""{lanes_function(k, name, fixed=tuple(a.name for a in fixed))}
+int {prefix}_{k.name}_batch(int nstates, {', '.join(_params(k))}, int *status) {{
+    {shared}
+    hl_v pre[{name.upper()}_NPRE];
+    {decl}
+    long i;
+    int j, l, st, failed = 0;
+{splat}
+    {name}_pre({call_pre}, pre);
+    for (i = 0; i < nstates; i += HL_W) {{
+        hl_i bad = hl_splat(0.0) != 0.0;
+        if (i + HL_W <= nstates) {{
+{gather("i + l")}
+        }} else {{
+{gather("i + l < nstates ? i + l : nstates - 1")}
+        }}
+        {name}({call});
+{guards}{bad}
+        for (l = 0; l < HL_W && i + l < nstates; ++l) {{
+{scatter}
+            st = {pick}bad[l] ? HYBRID_NONFINITE : HYBRID_OK;
+            status[i + l] = st;
+            failed += st != HYBRID_OK;
+        }}
+    }}
+    return failed;
+}}
+"""
 
 
 def _core_signature(k: Kernel) -> str:

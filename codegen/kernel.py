@@ -9,7 +9,9 @@ special about a kernel is stated as a property, never read off its name:
   status it returns when the measure falls below its tolerance (the caller's
   ``singular_tol``, or a constant);
 - ``integrator``: it is a state derivative ``x' = f(x, ...)``; an RK4 entry point
-  ``<integrator>`` advances ``x`` by fixed steps with the other inputs held.
+  ``<integrator>`` advances ``x`` by fixed steps with the other inputs held;
+- ``lanes``: its ``_batch`` entry point evaluates the states as SIMD lanes (:mod:`codegen.lanes`),
+  several at once, equal to the one-state entry point's numbers within rounding.
 
 The same description is written beside the C as the unit's manifest (JSON), from which the
 Python side binds: sizes, shapes, units and parameter orders are stated here only.
@@ -82,6 +84,7 @@ class Kernel:
     batched: tuple[str, ...] = ()
     guards: tuple[Guard, ...] = ()
     integrator: str | None = None
+    lanes: bool = False
 
     def sizes(self) -> dict[str, int]:
         return {a.name: a.size for a in (*self.inputs, *self.outputs)}

@@ -185,41 +185,143 @@ def libm_maps() -> str:
     return ones + twos
 
 
-def lanes_function(kernel: Kernel, name: str | None = None, interleave: int = 1) -> str:
-    """``static void <name>(const hl_v *input..., hl_v *output...)``: the kernel on ``HL_W`` lanes.
+def _program(kernel: Kernel, fixed: tuple[str, ...]):
+    """The kernel's CasADi instructions as values (single assignment): ``(ops, outputs, invariant)``.
 
-    Arguments are the kernel's inputs, then its core outputs (outputs, then each guard's measure),
-    each an array of ``hl_v`` (one vector per element). With ``interleave = K`` the function
-    evaluates ``K`` independent vectors of lanes, statement by statement (element ``i`` of vector
-    ``u`` at ``[i * K + u]``): the processor overlaps their dependency chains, which one vector
-    alone leaves idle. Outputs may not alias inputs.
+    ``ops[v] = (operation, argument values, constant or input element)``; ``outputs`` lists
+    ``(output, element, value)``; ``invariant[v]`` says that ``v`` depends on the ``fixed`` inputs
+    and constants only. A divisor used twice or more, or invariant, becomes one reciprocal
+    (``OP_INV``) and products: divisions are the slowest vector operations, and an invariant
+    reciprocal leaves the loop altogether (the result changes within rounding).
     """
     from .casadi_backend import kernel_function
 
     f = kernel_function(kernel, sympy_cse=True)
-    outputs = kernel.core_outputs()
-    K = interleave
-    params = [f"const hl_v *{a.name}" for a in kernel.inputs] + [f"hl_v *{a.name}" for a in outputs]
-    lines = [f"static void {name or kernel.name + '_lanes'}({', '.join(params)}) {{"]
-    if f.sz_w():
-        lines.append("    hl_v " + ", ".join(f"w{i}_{u}" for i in range(f.sz_w()) for u in range(K)) + ";")
-    for a in kernel.inputs:
-        lines.append(f"    (void){a.name};")
+    ops, outputs, slot = [], [], {}
     for k in range(f.n_instructions()):
         code, ins, out = f.instruction_id(k), f.instruction_input(k), f.instruction_output(k)
         op = _BY_CODE.get(code)
         if op is None:
             raise NotImplementedError(f"the lanes backend cannot print CasADi operation {code} of kernel "
                                       f"{kernel.name}; add it to codegen/lanes.py")
-        for u in range(K):
-            if op == "OP_INPUT":
-                lines.append(f"    w{out[0]}_{u} = {kernel.inputs[ins[0]].name}[{ins[1] * K + u}];")
-            elif op == "OP_OUTPUT":
-                lines.append(f"    {outputs[out[0]].name}[{out[1] * K + u}] = w{ins[0]}_{u};")
-            elif op == "OP_CONST":
-                lines.append(f"    w{out[0]}_{u} = {_constant(float(f.instruction_constant(k)))};")
+        if op == "OP_OUTPUT":
+            outputs.append((out[0], out[1], slot[ins[0]]))
+            continue
+        if op == "OP_INPUT":
+            ops.append((op, (), (ins[0], ins[1])))
+        elif op == "OP_CONST":
+            ops.append((op, (), float(f.instruction_constant(k))))
+        else:
+            ops.append((op, tuple(slot[i] for i in ins[:2 if "{b}" in _OPS[op] else 1]), None))
+        slot[out[0]] = len(ops) - 1
+    fixed_inputs = {i for i, a in enumerate(kernel.inputs) if a.name in fixed}
+    invariant = []
+    for op, args, extra in ops:
+        invariant.append(extra[0] in fixed_inputs if op == "OP_INPUT" else all(invariant[a] for a in args))
+    divisors: dict[int, int] = {}
+    for op, args, _ in ops:
+        if op == "OP_DIV":
+            divisors[args[1]] = divisors.get(args[1], 0) + 1
+    shared = {d for d, n in divisors.items() if n > 1 or invariant[d]}
+    reciprocal: dict[int, int] = {}
+    for v in range(len(ops)):
+        op, args, extra = ops[v]
+        if op == "OP_DIV" and args[1] in shared:
+            d = args[1]
+            if d not in reciprocal:  # a new value after the divisor's: single assignment holds
+                ops.append(("OP_INV", (d,), None))
+                invariant.append(invariant[d])
+                reciprocal[d] = len(ops) - 1
+            ops[v] = ("OP_MUL", (args[0], reciprocal[d]), None)
+    order = _schedule(ops)
+    return ops, order, outputs, invariant
+
+
+def _schedule(ops) -> list[int]:
+    """An order of the values in which every value follows its arguments."""
+    done, order = set(), []
+    for v in range(len(ops)):
+        stack = [v]
+        while stack:
+            top = stack[-1]
+            if top in done:
+                stack.pop()
+                continue
+            waiting = [a for a in ops[top][1] if a not in done]
+            if waiting:
+                stack.extend(waiting)
             else:
-                args = {"a": f"w{ins[0]}_{u}", "b": f"w{ins[1]}_{u}" if len(ins) > 1 else ""}
-                lines.append(f"    w{out[0]}_{u} = {_OPS[op].format(**args)};")
-    lines.append("}\n")
-    return "\n".join(lines)
+                done.add(top)
+                order.append(top)
+                stack.pop()
+    return order
+
+
+def lanes_function(kernel: Kernel, name: str | None = None, interleave: int = 1, fixed: tuple[str, ...] = ()) -> str:
+    """``static void <name>(const hl_v *input..., hl_v *output...)``: the kernel on ``HL_W`` lanes.
+
+    Arguments are the kernel's inputs, then its core outputs (outputs, then each guard's measure),
+    each an array of ``hl_v`` (one vector per element). With ``interleave = K`` the function
+    evaluates ``K`` independent vectors of lanes, statement by statement (element ``i`` of vector
+    ``u`` at ``[i * K + u]``). Outputs may not alias inputs.
+
+    With ``fixed`` input names (numbers a run holds, such as its parameters) what depends on them
+    alone is computed once, by ``<name>_pre(fixed inputs..., hl_v *pre)`` into ``<NAME>_NPRE``
+    vectors (times ``K``), and ``<name>(other inputs..., const hl_v *pre, outputs...)`` reads it.
+    """
+    ops, order, outputs, invariant = _program(kernel, fixed)
+    outs = kernel.core_outputs()
+    name = name or kernel.name + "_lanes"
+    K = interleave
+    used_hot = {a for v in order if not invariant[v] for a in ops[v][1]} | {v for _, _, v in outputs}
+    cached = [v for v in order if invariant[v] and v in used_hot] if fixed else []
+    slot = {v: i for i, v in enumerate(cached)}
+
+    def body(values, read_cached: bool) -> list[str]:
+        lines = []
+        for v in values:
+            op, args, extra = ops[v]
+            for u in range(K):
+                if read_cached and v in slot:
+                    rhs = f"pre[{slot[v] * K + u}]"
+                elif op == "OP_INPUT":
+                    rhs = f"{kernel.inputs[extra[0]].name}[{extra[1] * K + u}]"
+                elif op == "OP_CONST":
+                    rhs = _constant(extra)
+                else:
+                    rhs = _OPS[op].format(a=f"v{args[0]}_{u}", b=f"v{args[1]}_{u}" if len(args) > 1 else "")
+                lines.append(f"    const hl_v v{v}_{u} = {rhs};")
+        return lines
+
+    text = []
+    hot_inputs = [a for a in kernel.inputs if a.name not in fixed]
+    if fixed:
+        pre_inputs = [a for a in kernel.inputs if a.name in fixed]
+        lines = [f"#define {name.upper()}_NPRE {max(len(cached), 1)}",
+                 f"static void {name}_pre({', '.join(f'const hl_v *{a.name}' for a in pre_inputs)}, hl_v *pre) {{"]
+        needed = _closure(ops, cached)
+        lines += body([v for v in order if v in needed], False)
+        lines += [f"    pre[{slot[v] * K + u}] = v{v}_{u};" for v in cached for u in range(K)]
+        lines += [f"    (void){a.name};" for a in pre_inputs] + ["}", ""]
+        text += lines
+    params = ([f"const hl_v *{a.name}" for a in hot_inputs] + (["const hl_v *pre"] if fixed else [])
+              + [f"hl_v *{a.name}" for a in outs])
+    lines = [f"static void {name}({', '.join(params)}) {{"]
+    lines += [f"    (void){a.name};" for a in hot_inputs] + (["    (void)pre;"] if fixed else [])
+    lines += body([v for v in order if v in _closure(ops, [v for _, _, v in outputs], stop=set(slot))], True)
+    lines += [f"    {outs[o].name}[{i * K + u}] = v{v}_{u};" for o, i, v in outputs for u in range(K)]
+    text += lines + ["}", ""]
+    return "\n".join(text)
+
+
+def _closure(ops, roots, stop=frozenset()) -> set[int]:
+    """The values ``roots`` need (themselves included), not looking past those in ``stop``."""
+    need, stack = set(), list(roots)
+    while stack:
+        v = stack.pop()
+        if v in need:
+            continue
+        need.add(v)
+        if v not in stop:
+            stack.extend(ops[v][1])
+    return need

@@ -324,7 +324,7 @@ def kernels(n_links: int = 2) -> tuple[Kernel, ...]:
                           tuple(Arg(k, m, units[k], names=names.get(k)) for k, m in law_in),
                           (Arg("F", F, "N"), Arg("tau", tau, "N m")),
                           f"decoupling law F*(r, r', a) [N] and tau = J^T F* [N m] on a {kind}",
-                          batched=("q", "qd", "a", "Fc"),
+                          batched=("q", "qd", "a", "Fc"), lanes=True,
                           guards=(conditioning_guard(sp.Matrix([cond]), PLANAR_CONDITIONING),)))
         Fc = vector("Fc", 2)
         rr = arm.J * arm.qd
@@ -344,7 +344,7 @@ def kernels(n_links: int = 2) -> tuple[Kernel, ...]:
                           integrator=f"plant_advance_{kind}"))
         out.append(Kernel(f"plant_outputs_{kind}", pins[:1] + pins[2:],
                           (Arg("y", outputs, PLANT_OUTPUT_UNITS, names=PLANT_OUTPUTS),),
-                          "plant output record (PLANT_OUTPUTS)", batched=("x",)))
+                          "plant output record (PLANT_OUTPUTS)", batched=("x",), lanes=True))
     return tuple(out)
 
 

@@ -1,6 +1,6 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 092e23bfe95fc93fc81df6c1013e901f54a734b3326a8d2c5ce4425af090d215 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 750e08ad410aa2f265d3221d0e9f87313ac32cd5aee1a58d1ea18857aa00a272 */
 /* hybrid_casadi: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
-   Emitted by the casadi backend of hybrid's codegen (SymPy 1.14.0, CasADi 3.8.2), generator version 3.
+   Emitted by the casadi backend of hybrid's codegen (SymPy 1.14.0, CasADi 3.8.2), generator version 4.
    Compile: cc -std=c99 -O2 -c hybrid_casadi.c (link with -lm). */
 #include <math.h>
 
@@ -1784,6 +1784,153 @@ static int all_finite(const double *v, int n) {
     return 1;
 }
 
+#include <math.h>
+#include <string.h>
+
+#if defined(__AVX512F__)
+#define HL_W 8
+#elif defined(__AVX__)
+#define HL_W 4
+#else
+#define HL_W 2
+#endif
+typedef double hl_v __attribute__((vector_size(HL_W * 8)));
+typedef long long hl_i __attribute__((vector_size(HL_W * 8)));
+
+static inline hl_v hl_splat(double c) {
+    hl_v r = {0};
+    int l;
+    for (l = 0; l < HL_W; ++l) r[l] = c;
+    return r;
+}
+static inline hl_v hl_select(hl_i m, hl_v a, hl_v b) { return (hl_v)((m & (hl_i)a) | (~m & (hl_i)b)); }
+static inline hl_v hl_bool(hl_i m) { return hl_select(m, hl_splat(1.0), hl_splat(0.0)); }
+/* whether any lane of a mask is set: one instruction where the vector extension has it */
+#if defined(__AVX512F__) && HL_W == 8
+#include <immintrin.h>
+static inline int hl_any(hl_i m) { return _mm512_test_epi64_mask((__m512i)m, (__m512i)m) != 0; }
+#elif defined(__AVX__) && HL_W == 4
+#include <immintrin.h>
+static inline int hl_any(hl_i m) { return !_mm256_testz_si256((__m256i)m, (__m256i)m); }
+#else
+static inline int hl_any(hl_i m) {
+    long long acc = 0;
+    int l;
+    for (l = 0; l < HL_W; ++l) acc |= m[l];
+    return acc != 0;
+}
+#endif
+static inline hl_v hl_fabs(hl_v x) { return (hl_v)((hl_i)x & ~(hl_i)hl_splat(-0.0)); }
+static inline hl_v hl_copysign(hl_v x, hl_v y) {
+    hl_i s = (hl_i)hl_splat(-0.0);
+    return (hl_v)(((hl_i)x & ~s) | ((hl_i)y & s));
+}
+/* CasADi's sign: -1, 1, or x itself (0 and NaN) */
+static inline hl_v hl_sign(hl_v x) {
+    return hl_select(x < 0.0, hl_splat(-1.0), hl_select(x > 0.0, hl_splat(1.0), x));
+}
+/* C99 fmax/fmin: a NaN argument loses to a number */
+static inline hl_v hl_fmax(hl_v a, hl_v b) { return hl_select((a > b) | (b != b), a, b); }
+static inline hl_v hl_fmin(hl_v a, hl_v b) { return hl_select((a < b) | (b != b), a, b); }
+static inline hl_v hl_sqrt(hl_v x) {
+    hl_v r = x;
+    int l;
+    for (l = 0; l < HL_W; ++l) r[l] = __builtin_sqrt(x[l]);
+    return r;
+}
+#define HL_MAP1(name, f) static inline hl_v name(hl_v x) { \
+    hl_v r = x; int l; for (l = 0; l < HL_W; ++l) r[l] = f(x[l]); return r; }
+#define HL_MAP2(name, f) static inline hl_v name(hl_v x, hl_v y) { \
+    hl_v r = x; int l; for (l = 0; l < HL_W; ++l) r[l] = f(x[l], y[l]); return r; }
+
+/* sin or cos (cosine = 1): x = n pi/2 + r, |r| <= pi/4, in three parts of pi/2 (exact products
+   for |n| < 2^20), then fdlibm's kernels on r; a lane beyond |x| = 1e5 (or not finite) takes the C
+   library's value, so no lane depends on its neighbours */
+static inline hl_v hl_sincos(hl_v x, int cosine) {
+    const double magic = 6755399441055744.0; /* 1.5 * 2^52: adding it rounds to an integer */
+    const hl_i big = ~(hl_fabs(x) <= 1e5);
+    hl_v t, n, r, z, s, c, p, hz, w, y = hl_select(big, hl_splat(0.0), x);
+    hl_i j;
+    int l;
+    t = y * 6.36619772367581382433e-01 + magic;
+    n = t - magic;
+    j = ((hl_i)t + cosine) & 3; /* the quadrant, from the integer's low bits */
+    r = ((y - n * 1.57079632673412561417e+00) - n * 6.07710050630396597660e-11) - n * 2.02226624879595063154e-21;
+    z = r * r;
+    s = r + r * z * (-1.66666666666666324348e-01 + z * (8.33333333332248946124e-03 + z * (-1.98412698298579493134e-04
+        + z * (2.75573137070700676789e-06 + z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)))));
+    s = hl_select(r == 0.0, r, s); /* sin(-0) = -0 */
+    p = z * (4.16666666666666019037e-02 + z * (-1.38888888888741095749e-03 + z * (2.48015872894767294178e-05
+        + z * (-2.75573143513906633035e-07 + z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
+    hz = 0.5 * z;
+    w = 1.0 - hz;
+    c = w + (((1.0 - w) - hz) + z * p);
+    r = hl_select((j & 1) != 0, c, s);
+    r = (hl_v)((hl_i)r ^ (((j & 2) != 0) & (hl_i)hl_splat(-0.0)));
+    if (hl_any(big)) {
+        for (l = 0; l < HL_W; ++l) if (big[l]) r[l] = cosine ? cos(x[l]) : sin(x[l]);
+    }
+    return r;
+}
+static inline hl_v hl_sin(hl_v x) { return hl_sincos(x, 0); }
+static inline hl_v hl_cos(hl_v x) { return hl_sincos(x, 1); }
+
+/* exp: x = n ln2 + r (ln2 in two parts), fdlibm's rational kernel, times 2^n; a lane beyond
+   |x| = 700 (or not finite) takes the C library's value */
+static inline hl_v hl_exp(hl_v x) {
+    const double magic = 6755399441055744.0;
+    const hl_i big = ~(hl_fabs(x) <= 700.0);
+    hl_v t, n, hi, lo, r, z, c, y = hl_select(big, hl_splat(0.0), x);
+    hl_i k;
+    int l;
+    t = y * 1.44269504088896338700e+00 + magic;
+    n = t - magic;
+    k = ((hl_i)t - (hl_i)hl_splat(magic)) + 1023;
+    hi = y - n * 6.93147180369123816490e-01;
+    lo = n * 1.90821492927058770002e-10;
+    r = hi - lo;
+    z = r * r;
+    c = r - z * (1.66666666666666019037e-01 + z * (-2.77777777770155933842e-03 + z * (6.61375632143793436117e-05
+        + z * (-1.65339022054652515390e-06 + z * 4.13813679705723846039e-08))));
+    r = (1.0 - ((lo - (r * c) / (2.0 - c)) - hi)) * (hl_v)(k << 52);
+    if (hl_any(big)) {
+        for (l = 0; l < HL_W; ++l) if (big[l]) r[l] = exp(x[l]);
+    }
+    return r;
+}
+
+/* tanh: Cephes' rational form below |x| = 0.625, 1 - 2 / (exp(2|x|) + 1) above */
+static inline hl_v hl_tanh(hl_v x) {
+    hl_v ax = hl_fabs(x), z = x * x, small, big, e;
+    small = x + x * z * ((-9.64399179425052238628e-01 * z - 9.92877231001918586564e+01) * z
+        - 1.61468768441708447952e+03) / (((z + 1.12811678491632931402e+02) * z + 2.23548839060100448583e+03) * z
+        + 4.84406305325125486048e+03);
+    ax = hl_select(ax > 20.0, hl_splat(20.0), ax); /* tanh(20) = 1 in double; a NaN stays NaN */
+    e = hl_exp(2.0 * ax);
+    big = hl_copysign(1.0 - 2.0 / (e + 1.0), x);
+    return hl_select(hl_fabs(x) < 0.625, small, big);
+}
+
+HL_MAP1(hl_acos, acos)
+HL_MAP1(hl_acosh, acosh)
+HL_MAP1(hl_asin, asin)
+HL_MAP1(hl_asinh, asinh)
+HL_MAP1(hl_atan, atan)
+HL_MAP1(hl_atanh, atanh)
+HL_MAP1(hl_ceil, ceil)
+HL_MAP1(hl_cosh, cosh)
+HL_MAP1(hl_erf, erf)
+HL_MAP1(hl_expm1, expm1)
+HL_MAP1(hl_floor, floor)
+HL_MAP1(hl_log, log)
+HL_MAP1(hl_log1p, log1p)
+HL_MAP1(hl_sinh, sinh)
+HL_MAP1(hl_tan, tan)
+HL_MAP2(hl_atan2, atan2)
+HL_MAP2(hl_fmod, fmod)
+HL_MAP2(hl_hypot, hypot)
+HL_MAP2(hl_pow, pow)
+
 int hybrid_casadi_arm_kinematics(const double *q, const double *qd, const double *arm, double *r, double *J, double *Jdqd) {
     arm_kinematics_core(q, qd, arm, r, J, Jdqd);
     return (all_finite(r, 2) && all_finite(J, 4) && all_finite(Jdqd, 2)) ? HYBRID_OK : HYBRID_NONFINITE;
@@ -1813,11 +1960,283 @@ int hybrid_casadi_decoupling_law_plane(const double *q, const double *qd, const 
     return (all_finite(F, 2) && all_finite(tau, 2) && all_finite(cond, 1)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
+#define DECOUPLING_LAW_PLANE_LANES_NPRE 21
+static void decoupling_law_plane_lanes_pre(const hl_v *arm, const hl_v *surface, const hl_v *opts, hl_v *pre) {
+    const hl_v v9_0 = arm[1];
+    const hl_v v15_0 = arm[0];
+    const hl_v v30_0 = surface[3];
+    const hl_v v31_0 = surface[2];
+    const hl_v v32_0 = v31_0 * v31_0;
+    const hl_v v33_0 = v30_0 * v30_0;
+    const hl_v v34_0 = v32_0 + v33_0;
+    const hl_v v35_0 = hl_sqrt(v34_0);
+    const hl_v v163_0 = 1.0 / v35_0;
+    const hl_v v36_0 = v30_0 * v163_0;
+    const hl_v v65_0 = arm[6];
+    const hl_v v66_0 = arm[7];
+    const hl_v v67_0 = v65_0 + v66_0;
+    const hl_v v68_0 = arm[2];
+    const hl_v v69_0 = arm[4];
+    const hl_v v70_0 = v69_0 * v69_0;
+    const hl_v v71_0 = v68_0 * v70_0;
+    const hl_v v72_0 = v67_0 + v71_0;
+    const hl_v v73_0 = arm[3];
+    const hl_v v74_0 = arm[5];
+    const hl_v v75_0 = v74_0 * v74_0;
+    const hl_v v76_0 = v15_0 * v15_0;
+    const hl_v v77_0 = v75_0 + v76_0;
+    const hl_v v78_0 = v15_0 * v74_0;
+    const hl_v v95_0 = arm[10];
+    const hl_v v96_0 = v95_0 * v73_0;
+    const hl_v v101_0 = arm[8];
+    const hl_v v115_0 = hl_splat(-2.0);
+    const hl_v v126_0 = v75_0 * v73_0;
+    const hl_v v127_0 = v66_0 + v126_0;
+    const hl_v v137_0 = arm[9];
+    const hl_v v154_0 = v9_0 * v9_0;
+    pre[0] = v9_0;
+    pre[1] = v15_0;
+    pre[2] = v31_0;
+    pre[3] = v163_0;
+    pre[4] = v36_0;
+    pre[5] = v66_0;
+    pre[6] = v68_0;
+    pre[7] = v69_0;
+    pre[8] = v72_0;
+    pre[9] = v73_0;
+    pre[10] = v74_0;
+    pre[11] = v75_0;
+    pre[12] = v77_0;
+    pre[13] = v78_0;
+    pre[14] = v95_0;
+    pre[15] = v96_0;
+    pre[16] = v101_0;
+    pre[17] = v115_0;
+    pre[18] = v127_0;
+    pre[19] = v137_0;
+    pre[20] = v154_0;
+    (void)arm;
+    (void)surface;
+    (void)opts;
+}
+
+static void decoupling_law_plane_lanes(const hl_v *q, const hl_v *qd, const hl_v *a, const hl_v *Fc, const hl_v *pre, hl_v *F, hl_v *tau, hl_v *cond) {
+    (void)q;
+    (void)qd;
+    (void)a;
+    (void)Fc;
+    (void)pre;
+    const hl_v v0_0 = q[0];
+    const hl_v v1_0 = hl_cos(v0_0);
+    const hl_v v2_0 = q[1];
+    const hl_v v3_0 = hl_cos(v2_0);
+    const hl_v v4_0 = v1_0 * v3_0;
+    const hl_v v5_0 = hl_sin(v0_0);
+    const hl_v v6_0 = hl_sin(v2_0);
+    const hl_v v7_0 = v5_0 * v6_0;
+    const hl_v v8_0 = v4_0 - v7_0;
+    const hl_v v9_0 = pre[0];
+    const hl_v v10_0 = v8_0 * v9_0;
+    const hl_v v11_0 = v1_0 * v6_0;
+    const hl_v v12_0 = v5_0 * v3_0;
+    const hl_v v13_0 = v11_0 + v12_0;
+    const hl_v v14_0 = v13_0 * v9_0;
+    const hl_v v15_0 = pre[1];
+    const hl_v v16_0 = v1_0 * v15_0;
+    const hl_v v17_0 = v16_0 + v10_0;
+    const hl_v v18_0 = v14_0 * v17_0;
+    const hl_v v19_0 = v5_0 * v15_0;
+    const hl_v v20_0 = v14_0 + v19_0;
+    const hl_v v21_0 = v20_0 * v10_0;
+    const hl_v v22_0 = v18_0 - v21_0;
+    const hl_v v162_0 = 1.0 / v22_0;
+    const hl_v v23_0 = v10_0 * v162_0;
+    const hl_v v24_0 = qd[0];
+    const hl_v v25_0 = qd[1];
+    const hl_v v26_0 = v10_0 * v25_0;
+    const hl_v v27_0 = v17_0 * v24_0;
+    const hl_v v28_0 = v26_0 + v27_0;
+    const hl_v v29_0 = v24_0 * v28_0;
+    const hl_v v31_0 = pre[2];
+    const hl_v v163_0 = pre[3];
+    const hl_v v36_0 = pre[4];
+    const hl_v v37_0 = a[0];
+    const hl_v v38_0 = v36_0 * v37_0;
+    const hl_v v39_0 = v29_0 - v38_0;
+    const hl_v v40_0 = v10_0 * v24_0;
+    const hl_v v41_0 = v26_0 + v40_0;
+    const hl_v v42_0 = v25_0 * v41_0;
+    const hl_v v43_0 = v39_0 + v42_0;
+    const hl_v v44_0 = a[1];
+    const hl_v v45_0 = v44_0 * v163_0;
+    const hl_v v46_0 = v45_0 * v31_0;
+    const hl_v v47_0 = v43_0 + v46_0;
+    const hl_v v48_0 = v47_0 * v23_0;
+    const hl_v v49_0 = v36_0 * v44_0;
+    const hl_v v50_0 = v14_0 * v25_0;
+    const hl_v v51_0 = v20_0 * v24_0;
+    const hl_v v52_0 = v50_0 + v51_0;
+    const hl_v v53_0 = v24_0 * v52_0;
+    const hl_v v54_0 = v49_0 + v53_0;
+    const hl_v v55_0 = v14_0 * v24_0;
+    const hl_v v56_0 = v50_0 + v55_0;
+    const hl_v v57_0 = v25_0 * v56_0;
+    const hl_v v58_0 = v54_0 + v57_0;
+    const hl_v v59_0 = v37_0 * v163_0;
+    const hl_v v60_0 = v59_0 * v31_0;
+    const hl_v v61_0 = v58_0 + v60_0;
+    const hl_v v62_0 = v14_0 * v162_0;
+    const hl_v v63_0 = v61_0 * v62_0;
+    const hl_v v64_0 = v48_0 + v63_0;
+    const hl_v v66_0 = pre[5];
+    const hl_v v68_0 = pre[6];
+    const hl_v v69_0 = pre[7];
+    const hl_v v72_0 = pre[8];
+    const hl_v v73_0 = pre[9];
+    const hl_v v74_0 = pre[10];
+    const hl_v v75_0 = pre[11];
+    const hl_v v77_0 = pre[12];
+    const hl_v v78_0 = pre[13];
+    const hl_v v79_0 = v78_0 * v3_0;
+    const hl_v v80_0 = v79_0 + v79_0;
+    const hl_v v81_0 = v77_0 + v80_0;
+    const hl_v v82_0 = v73_0 * v81_0;
+    const hl_v v83_0 = v72_0 + v82_0;
+    const hl_v v84_0 = v64_0 * v83_0;
+    const hl_v v85_0 = v17_0 * v162_0;
+    const hl_v v86_0 = v47_0 * v85_0;
+    const hl_v v87_0 = v20_0 * v162_0;
+    const hl_v v88_0 = v61_0 * v87_0;
+    const hl_v v89_0 = v86_0 + v88_0;
+    const hl_v v90_0 = v75_0 + v79_0;
+    const hl_v v91_0 = v73_0 * v90_0;
+    const hl_v v92_0 = v66_0 + v91_0;
+    const hl_v v93_0 = v89_0 * v92_0;
+    const hl_v v94_0 = v84_0 - v93_0;
+    const hl_v v95_0 = pre[14];
+    const hl_v v96_0 = pre[15];
+    const hl_v v97_0 = v8_0 * v74_0;
+    const hl_v v98_0 = v16_0 + v97_0;
+    const hl_v v99_0 = v96_0 * v98_0;
+    const hl_v v100_0 = v94_0 + v99_0;
+    const hl_v v101_0 = pre[16];
+    const hl_v v102_0 = v101_0 * v24_0;
+    const hl_v v103_0 = v100_0 + v102_0;
+    const hl_v v104_0 = Fc[0];
+    const hl_v v105_0 = v20_0 * v104_0;
+    const hl_v v106_0 = v103_0 + v105_0;
+    const hl_v v107_0 = v78_0 * v6_0;
+    const hl_v v108_0 = v107_0 * v73_0;
+    const hl_v v109_0 = v25_0 * v25_0;
+    const hl_v v110_0 = v108_0 * v109_0;
+    const hl_v v111_0 = v106_0 - v110_0;
+    const hl_v v112_0 = Fc[1];
+    const hl_v v113_0 = v17_0 * v112_0;
+    const hl_v v114_0 = v111_0 - v113_0;
+    const hl_v v115_0 = pre[17];
+    const hl_v v116_0 = v115_0 * v108_0;
+    const hl_v v117_0 = v116_0 * v24_0;
+    const hl_v v118_0 = v117_0 * v25_0;
+    const hl_v v119_0 = v114_0 + v118_0;
+    const hl_v v120_0 = v1_0 * v95_0;
+    const hl_v v121_0 = v120_0 * v68_0;
+    const hl_v v122_0 = v121_0 * v69_0;
+    const hl_v v123_0 = v119_0 + v122_0;
+    const hl_v v124_0 = v23_0 * v123_0;
+    const hl_v v125_0 = v14_0 * v104_0;
+    const hl_v v127_0 = pre[18];
+    const hl_v v128_0 = v89_0 * v127_0;
+    const hl_v v129_0 = v125_0 - v128_0;
+    const hl_v v130_0 = v92_0 * v64_0;
+    const hl_v v131_0 = v129_0 + v130_0;
+    const hl_v v132_0 = v97_0 * v96_0;
+    const hl_v v133_0 = v131_0 + v132_0;
+    const hl_v v134_0 = v24_0 * v24_0;
+    const hl_v v135_0 = v108_0 * v134_0;
+    const hl_v v136_0 = v133_0 + v135_0;
+    const hl_v v137_0 = pre[19];
+    const hl_v v138_0 = v137_0 * v25_0;
+    const hl_v v139_0 = v136_0 + v138_0;
+    const hl_v v140_0 = v10_0 * v112_0;
+    const hl_v v141_0 = v139_0 - v140_0;
+    const hl_v v142_0 = v85_0 * v141_0;
+    const hl_v v143_0 = v124_0 - v142_0;
+    const hl_v v144_0 = v62_0 * v123_0;
+    const hl_v v145_0 = v87_0 * v141_0;
+    const hl_v v146_0 = v144_0 - v145_0;
+    const hl_v v147_0 = v18_0 + v18_0;
+    const hl_v v148_0 = -v21_0;
+    const hl_v v149_0 = v148_0 + v148_0;
+    const hl_v v150_0 = v147_0 + v149_0;
+    const hl_v v151_0 = v20_0 * v20_0;
+    const hl_v v152_0 = v17_0 * v17_0;
+    const hl_v v153_0 = v151_0 + v152_0;
+    const hl_v v154_0 = pre[20];
+    const hl_v v155_0 = v13_0 * v13_0;
+    const hl_v v156_0 = v154_0 * v155_0;
+    const hl_v v157_0 = v153_0 + v156_0;
+    const hl_v v158_0 = v8_0 * v8_0;
+    const hl_v v159_0 = v154_0 * v158_0;
+    const hl_v v160_0 = v157_0 + v159_0;
+    const hl_v v161_0 = v150_0 / v160_0;
+    F[0] = v143_0;
+    F[1] = v146_0;
+    tau[0] = v123_0;
+    tau[1] = v141_0;
+    cond[0] = v161_0;
+}
+
 int hybrid_casadi_decoupling_law_plane_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
-    int i, failed = 0;
-    for (i = 0; i < nstates; ++i) {
-        status[i] = hybrid_casadi_decoupling_law_plane(q + (long)i * 2, qd + (long)i * 2, a + (long)i * 2, Fc + (long)i * 2, arm, surface, opts, singular_tol, F + (long)i * 2, tau + (long)i * 2);
-        failed += status[i] != HYBRID_OK;
+    hl_v f_arm[11]; hl_v f_surface[4]; hl_v f_opts[1];
+    hl_v pre[DECOUPLING_LAW_PLANE_LANES_NPRE];
+    hl_v l_q[2] = {{0}}; hl_v l_qd[2] = {{0}}; hl_v l_a[2] = {{0}}; hl_v l_Fc[2] = {{0}}; hl_v o_F[2]; hl_v o_tau[2]; hl_v o_cond[1];
+    long i;
+    int j, l, st, failed = 0;
+    for (j = 0; j < 11; ++j) f_arm[j] = hl_splat(arm[j]);
+    for (j = 0; j < 4; ++j) f_surface[j] = hl_splat(surface[j]);
+    for (j = 0; j < 1; ++j) f_opts[j] = hl_splat(opts[j]);
+    decoupling_law_plane_lanes_pre(f_arm, f_surface, f_opts, pre);
+    for (i = 0; i < nstates; i += HL_W) {
+        hl_i bad = hl_splat(0.0) != 0.0;
+        if (i + HL_W <= nstates) {
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_q[j][l] = q[(i + l) * 2 + j];
+            }
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_qd[j][l] = qd[(i + l) * 2 + j];
+            }
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_a[j][l] = a[(i + l) * 2 + j];
+            }
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_Fc[j][l] = Fc[(i + l) * 2 + j];
+            }
+        } else {
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_q[j][l] = q[(i + l < nstates ? i + l : nstates - 1) * 2 + j];
+            }
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_qd[j][l] = qd[(i + l < nstates ? i + l : nstates - 1) * 2 + j];
+            }
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_a[j][l] = a[(i + l < nstates ? i + l : nstates - 1) * 2 + j];
+            }
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_Fc[j][l] = Fc[(i + l < nstates ? i + l : nstates - 1) * 2 + j];
+            }
+        }
+        decoupling_law_plane_lanes(l_q, l_qd, l_a, l_Fc, pre, o_F, o_tau, o_cond);
+        hl_i g0 = hl_fabs(o_cond[0]) < singular_tol;
+        for (j = 0; j < 2; ++j) bad |= (o_F[j] - o_F[j]) != 0.0;
+        for (j = 0; j < 2; ++j) bad |= (o_tau[j] - o_tau[j]) != 0.0;
+        for (j = 0; j < 1; ++j) bad |= (o_cond[j] - o_cond[j]) != 0.0;
+        for (l = 0; l < HL_W && i + l < nstates; ++l) {
+            for (j = 0; j < 2; ++j) F[(i + l) * 2 + j] = o_F[j][l];
+            for (j = 0; j < 2; ++j) tau[(i + l) * 2 + j] = o_tau[j][l];
+            st = g0[l] ? HYBRID_SINGULAR : bad[l] ? HYBRID_NONFINITE : HYBRID_OK;
+            status[i + l] = st;
+            failed += st != HYBRID_OK;
+        }
     }
     return failed;
 }
@@ -1862,11 +2281,185 @@ int hybrid_casadi_plant_outputs_plane(const double *x, const double *arm, const 
     return (all_finite(y, 14)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
+#define PLANT_OUTPUTS_PLANE_LANES_NPRE 13
+static void plant_outputs_plane_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
+    const hl_v v0_0 = arm[1];
+    const hl_v v11_0 = arm[0];
+    const hl_v v20_0 = surface[2];
+    const hl_v v21_0 = v20_0 * v20_0;
+    const hl_v v22_0 = surface[3];
+    const hl_v v23_0 = v22_0 * v22_0;
+    const hl_v v24_0 = v21_0 + v23_0;
+    const hl_v v25_0 = hl_sqrt(v24_0);
+    const hl_v v96_0 = 1.0 / v25_0;
+    const hl_v v26_0 = v20_0 * v96_0;
+    const hl_v v36_0 = v22_0 * v96_0;
+    const hl_v v42_0 = plant[1];
+    const hl_v v46_0 = plant[2];
+    const hl_v v64_0 = surface[0];
+    const hl_v v67_0 = surface[1];
+    const hl_v v72_0 = hl_splat(0.0);
+    const hl_v v74_0 = plant[3];
+    const hl_v v76_0 = plant[4];
+    const hl_v v85_0 = plant[5];
+    const hl_v v90_0 = plant[6];
+    const hl_v v97_0 = 1.0 / v90_0;
+    pre[0] = v0_0;
+    pre[1] = v11_0;
+    pre[2] = v26_0;
+    pre[3] = v36_0;
+    pre[4] = v42_0;
+    pre[5] = v46_0;
+    pre[6] = v64_0;
+    pre[7] = v67_0;
+    pre[8] = v72_0;
+    pre[9] = v74_0;
+    pre[10] = v76_0;
+    pre[11] = v85_0;
+    pre[12] = v97_0;
+    (void)arm;
+    (void)plant;
+    (void)surface;
+}
+
+static void plant_outputs_plane_lanes(const hl_v *x, const hl_v *pre, hl_v *y) {
+    (void)x;
+    (void)pre;
+    const hl_v v0_0 = pre[0];
+    const hl_v v1_0 = x[0];
+    const hl_v v2_0 = hl_cos(v1_0);
+    const hl_v v3_0 = x[1];
+    const hl_v v4_0 = hl_cos(v3_0);
+    const hl_v v5_0 = v2_0 * v4_0;
+    const hl_v v6_0 = hl_sin(v1_0);
+    const hl_v v7_0 = hl_sin(v3_0);
+    const hl_v v8_0 = v6_0 * v7_0;
+    const hl_v v9_0 = v5_0 - v8_0;
+    const hl_v v10_0 = v0_0 * v9_0;
+    const hl_v v11_0 = pre[1];
+    const hl_v v12_0 = v2_0 * v11_0;
+    const hl_v v13_0 = v10_0 + v12_0;
+    const hl_v v14_0 = v2_0 * v7_0;
+    const hl_v v15_0 = v6_0 * v4_0;
+    const hl_v v16_0 = v14_0 + v15_0;
+    const hl_v v17_0 = v0_0 * v16_0;
+    const hl_v v18_0 = v6_0 * v11_0;
+    const hl_v v19_0 = v17_0 + v18_0;
+    const hl_v v26_0 = pre[2];
+    const hl_v v27_0 = x[3];
+    const hl_v v28_0 = v10_0 * v27_0;
+    const hl_v v29_0 = x[2];
+    const hl_v v30_0 = v13_0 * v29_0;
+    const hl_v v31_0 = v28_0 + v30_0;
+    const hl_v v32_0 = v26_0 * v31_0;
+    const hl_v v33_0 = v17_0 * v27_0;
+    const hl_v v34_0 = v19_0 * v29_0;
+    const hl_v v35_0 = v33_0 + v34_0;
+    const hl_v v36_0 = pre[3];
+    const hl_v v37_0 = v35_0 * v36_0;
+    const hl_v v38_0 = v32_0 + v37_0;
+    const hl_v v39_0 = v36_0 * v31_0;
+    const hl_v v40_0 = v26_0 * v35_0;
+    const hl_v v41_0 = v39_0 - v40_0;
+    const hl_v v42_0 = pre[4];
+    const hl_v v43_0 = x[4];
+    const hl_v v44_0 = v43_0 - v13_0;
+    const hl_v v45_0 = v42_0 * v44_0;
+    const hl_v v46_0 = pre[5];
+    const hl_v v47_0 = x[6];
+    const hl_v v48_0 = v35_0 + v47_0;
+    const hl_v v49_0 = v46_0 * v48_0;
+    const hl_v v50_0 = v45_0 + v49_0;
+    const hl_v v51_0 = x[5];
+    const hl_v v52_0 = v51_0 - v19_0;
+    const hl_v v53_0 = v42_0 * v52_0;
+    const hl_v v54_0 = x[7];
+    const hl_v v55_0 = v54_0 - v31_0;
+    const hl_v v56_0 = v46_0 * v55_0;
+    const hl_v v57_0 = v53_0 + v56_0;
+    const hl_v v58_0 = v26_0 * v57_0;
+    const hl_v v59_0 = v36_0 * v50_0;
+    const hl_v v60_0 = v58_0 - v59_0;
+    const hl_v v61_0 = v26_0 * v50_0;
+    const hl_v v62_0 = v36_0 * v57_0;
+    const hl_v v63_0 = v61_0 + v62_0;
+    const hl_v v64_0 = pre[6];
+    const hl_v v65_0 = v43_0 - v64_0;
+    const hl_v v66_0 = v26_0 * v65_0;
+    const hl_v v67_0 = pre[7];
+    const hl_v v68_0 = v51_0 - v67_0;
+    const hl_v v69_0 = v36_0 * v68_0;
+    const hl_v v70_0 = v66_0 + v69_0;
+    const hl_v v71_0 = -v70_0;
+    const hl_v v72_0 = pre[8];
+    const hl_v v73_0 = hl_bool(v70_0 < v72_0);
+    const hl_v v74_0 = pre[9];
+    const hl_v v75_0 = v70_0 * v74_0;
+    const hl_v v76_0 = pre[10];
+    const hl_v v77_0 = v26_0 * v47_0;
+    const hl_v v78_0 = v36_0 * v54_0;
+    const hl_v v79_0 = v77_0 + v78_0;
+    const hl_v v80_0 = v76_0 * v79_0;
+    const hl_v v81_0 = v75_0 + v80_0;
+    const hl_v v82_0 = -v81_0;
+    const hl_v v83_0 = hl_fmax(v72_0, v82_0);
+    const hl_v v84_0 = hl_select(v73_0 != 0.0, v83_0, hl_splat(0.0));
+    const hl_v v85_0 = pre[11];
+    const hl_v v86_0 = v83_0 * v85_0;
+    const hl_v v87_0 = v26_0 * v54_0;
+    const hl_v v88_0 = v36_0 * v47_0;
+    const hl_v v89_0 = v87_0 - v88_0;
+    const hl_v v97_0 = pre[12];
+    const hl_v v91_0 = v89_0 * v97_0;
+    const hl_v v92_0 = hl_tanh(v91_0);
+    const hl_v v93_0 = v86_0 * v92_0;
+    const hl_v v94_0 = -v93_0;
+    const hl_v v95_0 = hl_select(v73_0 != 0.0, v94_0, hl_splat(0.0));
+    y[0] = v13_0;
+    y[1] = v19_0;
+    y[2] = v38_0;
+    y[3] = v41_0;
+    y[4] = v50_0;
+    y[5] = v57_0;
+    y[6] = v60_0;
+    y[7] = v63_0;
+    y[8] = v43_0;
+    y[9] = v51_0;
+    y[10] = v71_0;
+    y[11] = v84_0;
+    y[12] = v95_0;
+    y[13] = v89_0;
+}
+
 int hybrid_casadi_plant_outputs_plane_batch(int nstates, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
-    int i, failed = 0;
-    for (i = 0; i < nstates; ++i) {
-        status[i] = hybrid_casadi_plant_outputs_plane(x + (long)i * 8, arm, plant, surface, y + (long)i * 14);
-        failed += status[i] != HYBRID_OK;
+    hl_v f_arm[11]; hl_v f_plant[7]; hl_v f_surface[4];
+    hl_v pre[PLANT_OUTPUTS_PLANE_LANES_NPRE];
+    hl_v l_x[8] = {{0}}; hl_v o_y[14];
+    long i;
+    int j, l, st, failed = 0;
+    for (j = 0; j < 11; ++j) f_arm[j] = hl_splat(arm[j]);
+    for (j = 0; j < 7; ++j) f_plant[j] = hl_splat(plant[j]);
+    for (j = 0; j < 4; ++j) f_surface[j] = hl_splat(surface[j]);
+    plant_outputs_plane_lanes_pre(f_arm, f_plant, f_surface, pre);
+    for (i = 0; i < nstates; i += HL_W) {
+        hl_i bad = hl_splat(0.0) != 0.0;
+        if (i + HL_W <= nstates) {
+            for (j = 0; j < 8; ++j) {
+                for (l = 0; l < HL_W; ++l) l_x[j][l] = x[(i + l) * 8 + j];
+            }
+        } else {
+            for (j = 0; j < 8; ++j) {
+                for (l = 0; l < HL_W; ++l) l_x[j][l] = x[(i + l < nstates ? i + l : nstates - 1) * 8 + j];
+            }
+        }
+        plant_outputs_plane_lanes(l_x, pre, o_y);
+        for (j = 0; j < 14; ++j) bad |= (o_y[j] - o_y[j]) != 0.0;
+        for (l = 0; l < HL_W && i + l < nstates; ++l) {
+            for (j = 0; j < 14; ++j) y[(i + l) * 14 + j] = o_y[j][l];
+            st = bad[l] ? HYBRID_NONFINITE : HYBRID_OK;
+            status[i + l] = st;
+            failed += st != HYBRID_OK;
+        }
     }
     return failed;
 }
@@ -1883,11 +2476,303 @@ int hybrid_casadi_decoupling_law_circle(const double *q, const double *qd, const
     return (all_finite(F, 2) && all_finite(tau, 2) && all_finite(cond, 1)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
+#define DECOUPLING_LAW_CIRCLE_LANES_NPRE 21
+static void decoupling_law_circle_lanes_pre(const hl_v *arm, const hl_v *surface, const hl_v *opts, hl_v *pre) {
+    const hl_v v9_0 = arm[1];
+    const hl_v v15_0 = arm[0];
+    const hl_v v30_0 = surface[1];
+    const hl_v v32_0 = surface[0];
+    const hl_v v43_0 = opts[0];
+    const hl_v v85_0 = arm[6];
+    const hl_v v86_0 = arm[7];
+    const hl_v v87_0 = v85_0 + v86_0;
+    const hl_v v88_0 = arm[2];
+    const hl_v v89_0 = arm[4];
+    const hl_v v90_0 = v89_0 * v89_0;
+    const hl_v v91_0 = v88_0 * v90_0;
+    const hl_v v92_0 = v87_0 + v91_0;
+    const hl_v v93_0 = arm[3];
+    const hl_v v94_0 = arm[5];
+    const hl_v v95_0 = v94_0 * v94_0;
+    const hl_v v96_0 = v15_0 * v15_0;
+    const hl_v v97_0 = v95_0 + v96_0;
+    const hl_v v98_0 = v15_0 * v94_0;
+    const hl_v v115_0 = arm[10];
+    const hl_v v116_0 = v115_0 * v93_0;
+    const hl_v v121_0 = arm[8];
+    const hl_v v135_0 = hl_splat(-2.0);
+    const hl_v v146_0 = v95_0 * v93_0;
+    const hl_v v147_0 = v86_0 + v146_0;
+    const hl_v v157_0 = arm[9];
+    const hl_v v174_0 = v9_0 * v9_0;
+    pre[0] = v9_0;
+    pre[1] = v15_0;
+    pre[2] = v30_0;
+    pre[3] = v32_0;
+    pre[4] = v43_0;
+    pre[5] = v86_0;
+    pre[6] = v88_0;
+    pre[7] = v89_0;
+    pre[8] = v92_0;
+    pre[9] = v93_0;
+    pre[10] = v94_0;
+    pre[11] = v95_0;
+    pre[12] = v97_0;
+    pre[13] = v98_0;
+    pre[14] = v115_0;
+    pre[15] = v116_0;
+    pre[16] = v121_0;
+    pre[17] = v135_0;
+    pre[18] = v147_0;
+    pre[19] = v157_0;
+    pre[20] = v174_0;
+    (void)arm;
+    (void)surface;
+    (void)opts;
+}
+
+static void decoupling_law_circle_lanes(const hl_v *q, const hl_v *qd, const hl_v *a, const hl_v *Fc, const hl_v *pre, hl_v *F, hl_v *tau, hl_v *cond) {
+    (void)q;
+    (void)qd;
+    (void)a;
+    (void)Fc;
+    (void)pre;
+    const hl_v v0_0 = q[0];
+    const hl_v v1_0 = hl_cos(v0_0);
+    const hl_v v2_0 = q[1];
+    const hl_v v3_0 = hl_cos(v2_0);
+    const hl_v v4_0 = v1_0 * v3_0;
+    const hl_v v5_0 = hl_sin(v0_0);
+    const hl_v v6_0 = hl_sin(v2_0);
+    const hl_v v7_0 = v5_0 * v6_0;
+    const hl_v v8_0 = v4_0 - v7_0;
+    const hl_v v9_0 = pre[0];
+    const hl_v v10_0 = v8_0 * v9_0;
+    const hl_v v11_0 = v1_0 * v6_0;
+    const hl_v v12_0 = v5_0 * v3_0;
+    const hl_v v13_0 = v11_0 + v12_0;
+    const hl_v v14_0 = v13_0 * v9_0;
+    const hl_v v15_0 = pre[1];
+    const hl_v v16_0 = v1_0 * v15_0;
+    const hl_v v17_0 = v16_0 + v10_0;
+    const hl_v v18_0 = v14_0 * v17_0;
+    const hl_v v19_0 = v5_0 * v15_0;
+    const hl_v v20_0 = v14_0 + v19_0;
+    const hl_v v21_0 = v20_0 * v10_0;
+    const hl_v v22_0 = v18_0 - v21_0;
+    const hl_v v182_0 = 1.0 / v22_0;
+    const hl_v v23_0 = v10_0 * v182_0;
+    const hl_v v24_0 = qd[0];
+    const hl_v v25_0 = qd[1];
+    const hl_v v26_0 = v10_0 * v25_0;
+    const hl_v v27_0 = v17_0 * v24_0;
+    const hl_v v28_0 = v26_0 + v27_0;
+    const hl_v v29_0 = v24_0 * v28_0;
+    const hl_v v30_0 = pre[2];
+    const hl_v v31_0 = v20_0 - v30_0;
+    const hl_v v32_0 = pre[3];
+    const hl_v v33_0 = v17_0 - v32_0;
+    const hl_v v34_0 = v33_0 * v33_0;
+    const hl_v v35_0 = v31_0 * v31_0;
+    const hl_v v36_0 = v34_0 + v35_0;
+    const hl_v v37_0 = hl_sqrt(v36_0);
+    const hl_v v183_0 = 1.0 / v37_0;
+    const hl_v v38_0 = v31_0 * v183_0;
+    const hl_v v39_0 = a[0];
+    const hl_v v40_0 = v14_0 * v25_0;
+    const hl_v v41_0 = v20_0 * v24_0;
+    const hl_v v42_0 = v40_0 + v41_0;
+    const hl_v v43_0 = pre[4];
+    const hl_v v44_0 = v43_0 * v183_0;
+    const hl_v v45_0 = v28_0 * v38_0;
+    const hl_v v46_0 = v33_0 * v183_0;
+    const hl_v v47_0 = v42_0 * v46_0;
+    const hl_v v48_0 = v45_0 - v47_0;
+    const hl_v v49_0 = v38_0 * v48_0;
+    const hl_v v50_0 = v28_0 - v49_0;
+    const hl_v v51_0 = v44_0 * v50_0;
+    const hl_v v52_0 = v42_0 * v51_0;
+    const hl_v v53_0 = v39_0 - v52_0;
+    const hl_v v54_0 = v46_0 * v48_0;
+    const hl_v v55_0 = v42_0 + v54_0;
+    const hl_v v56_0 = v44_0 * v55_0;
+    const hl_v v57_0 = v28_0 * v56_0;
+    const hl_v v58_0 = v53_0 + v57_0;
+    const hl_v v59_0 = v38_0 * v58_0;
+    const hl_v v60_0 = v29_0 - v59_0;
+    const hl_v v61_0 = v10_0 * v24_0;
+    const hl_v v62_0 = v26_0 + v61_0;
+    const hl_v v63_0 = v25_0 * v62_0;
+    const hl_v v64_0 = v60_0 + v63_0;
+    const hl_v v65_0 = a[1];
+    const hl_v v66_0 = v42_0 * v56_0;
+    const hl_v v67_0 = v65_0 - v66_0;
+    const hl_v v68_0 = v28_0 * v51_0;
+    const hl_v v69_0 = v67_0 - v68_0;
+    const hl_v v70_0 = v46_0 * v69_0;
+    const hl_v v71_0 = v64_0 + v70_0;
+    const hl_v v72_0 = v71_0 * v23_0;
+    const hl_v v73_0 = v42_0 * v24_0;
+    const hl_v v74_0 = v14_0 * v24_0;
+    const hl_v v75_0 = v40_0 + v74_0;
+    const hl_v v76_0 = v25_0 * v75_0;
+    const hl_v v77_0 = v73_0 + v76_0;
+    const hl_v v78_0 = v46_0 * v58_0;
+    const hl_v v79_0 = v77_0 + v78_0;
+    const hl_v v80_0 = v38_0 * v69_0;
+    const hl_v v81_0 = v79_0 + v80_0;
+    const hl_v v82_0 = v14_0 * v182_0;
+    const hl_v v83_0 = v81_0 * v82_0;
+    const hl_v v84_0 = v72_0 + v83_0;
+    const hl_v v86_0 = pre[5];
+    const hl_v v88_0 = pre[6];
+    const hl_v v89_0 = pre[7];
+    const hl_v v92_0 = pre[8];
+    const hl_v v93_0 = pre[9];
+    const hl_v v94_0 = pre[10];
+    const hl_v v95_0 = pre[11];
+    const hl_v v97_0 = pre[12];
+    const hl_v v98_0 = pre[13];
+    const hl_v v99_0 = v98_0 * v3_0;
+    const hl_v v100_0 = v99_0 + v99_0;
+    const hl_v v101_0 = v97_0 + v100_0;
+    const hl_v v102_0 = v93_0 * v101_0;
+    const hl_v v103_0 = v92_0 + v102_0;
+    const hl_v v104_0 = v84_0 * v103_0;
+    const hl_v v105_0 = v17_0 * v182_0;
+    const hl_v v106_0 = v71_0 * v105_0;
+    const hl_v v107_0 = v20_0 * v182_0;
+    const hl_v v108_0 = v81_0 * v107_0;
+    const hl_v v109_0 = v106_0 + v108_0;
+    const hl_v v110_0 = v95_0 + v99_0;
+    const hl_v v111_0 = v93_0 * v110_0;
+    const hl_v v112_0 = v86_0 + v111_0;
+    const hl_v v113_0 = v109_0 * v112_0;
+    const hl_v v114_0 = v104_0 - v113_0;
+    const hl_v v115_0 = pre[14];
+    const hl_v v116_0 = pre[15];
+    const hl_v v117_0 = v8_0 * v94_0;
+    const hl_v v118_0 = v16_0 + v117_0;
+    const hl_v v119_0 = v116_0 * v118_0;
+    const hl_v v120_0 = v114_0 + v119_0;
+    const hl_v v121_0 = pre[16];
+    const hl_v v122_0 = v121_0 * v24_0;
+    const hl_v v123_0 = v120_0 + v122_0;
+    const hl_v v124_0 = Fc[0];
+    const hl_v v125_0 = v20_0 * v124_0;
+    const hl_v v126_0 = v123_0 + v125_0;
+    const hl_v v127_0 = v98_0 * v6_0;
+    const hl_v v128_0 = v127_0 * v93_0;
+    const hl_v v129_0 = v25_0 * v25_0;
+    const hl_v v130_0 = v128_0 * v129_0;
+    const hl_v v131_0 = v126_0 - v130_0;
+    const hl_v v132_0 = Fc[1];
+    const hl_v v133_0 = v17_0 * v132_0;
+    const hl_v v134_0 = v131_0 - v133_0;
+    const hl_v v135_0 = pre[17];
+    const hl_v v136_0 = v135_0 * v128_0;
+    const hl_v v137_0 = v136_0 * v24_0;
+    const hl_v v138_0 = v137_0 * v25_0;
+    const hl_v v139_0 = v134_0 + v138_0;
+    const hl_v v140_0 = v1_0 * v115_0;
+    const hl_v v141_0 = v140_0 * v88_0;
+    const hl_v v142_0 = v141_0 * v89_0;
+    const hl_v v143_0 = v139_0 + v142_0;
+    const hl_v v144_0 = v23_0 * v143_0;
+    const hl_v v145_0 = v14_0 * v124_0;
+    const hl_v v147_0 = pre[18];
+    const hl_v v148_0 = v109_0 * v147_0;
+    const hl_v v149_0 = v145_0 - v148_0;
+    const hl_v v150_0 = v112_0 * v84_0;
+    const hl_v v151_0 = v149_0 + v150_0;
+    const hl_v v152_0 = v117_0 * v116_0;
+    const hl_v v153_0 = v151_0 + v152_0;
+    const hl_v v154_0 = v24_0 * v24_0;
+    const hl_v v155_0 = v128_0 * v154_0;
+    const hl_v v156_0 = v153_0 + v155_0;
+    const hl_v v157_0 = pre[19];
+    const hl_v v158_0 = v157_0 * v25_0;
+    const hl_v v159_0 = v156_0 + v158_0;
+    const hl_v v160_0 = v10_0 * v132_0;
+    const hl_v v161_0 = v159_0 - v160_0;
+    const hl_v v162_0 = v105_0 * v161_0;
+    const hl_v v163_0 = v144_0 - v162_0;
+    const hl_v v164_0 = v82_0 * v143_0;
+    const hl_v v165_0 = v107_0 * v161_0;
+    const hl_v v166_0 = v164_0 - v165_0;
+    const hl_v v167_0 = v18_0 + v18_0;
+    const hl_v v168_0 = -v21_0;
+    const hl_v v169_0 = v168_0 + v168_0;
+    const hl_v v170_0 = v167_0 + v169_0;
+    const hl_v v171_0 = v20_0 * v20_0;
+    const hl_v v172_0 = v17_0 * v17_0;
+    const hl_v v173_0 = v171_0 + v172_0;
+    const hl_v v174_0 = pre[20];
+    const hl_v v175_0 = v13_0 * v13_0;
+    const hl_v v176_0 = v174_0 * v175_0;
+    const hl_v v177_0 = v173_0 + v176_0;
+    const hl_v v178_0 = v8_0 * v8_0;
+    const hl_v v179_0 = v174_0 * v178_0;
+    const hl_v v180_0 = v177_0 + v179_0;
+    const hl_v v181_0 = v170_0 / v180_0;
+    F[0] = v163_0;
+    F[1] = v166_0;
+    tau[0] = v143_0;
+    tau[1] = v161_0;
+    cond[0] = v181_0;
+}
+
 int hybrid_casadi_decoupling_law_circle_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
-    int i, failed = 0;
-    for (i = 0; i < nstates; ++i) {
-        status[i] = hybrid_casadi_decoupling_law_circle(q + (long)i * 2, qd + (long)i * 2, a + (long)i * 2, Fc + (long)i * 2, arm, surface, opts, singular_tol, F + (long)i * 2, tau + (long)i * 2);
-        failed += status[i] != HYBRID_OK;
+    hl_v f_arm[11]; hl_v f_surface[3]; hl_v f_opts[1];
+    hl_v pre[DECOUPLING_LAW_CIRCLE_LANES_NPRE];
+    hl_v l_q[2] = {{0}}; hl_v l_qd[2] = {{0}}; hl_v l_a[2] = {{0}}; hl_v l_Fc[2] = {{0}}; hl_v o_F[2]; hl_v o_tau[2]; hl_v o_cond[1];
+    long i;
+    int j, l, st, failed = 0;
+    for (j = 0; j < 11; ++j) f_arm[j] = hl_splat(arm[j]);
+    for (j = 0; j < 3; ++j) f_surface[j] = hl_splat(surface[j]);
+    for (j = 0; j < 1; ++j) f_opts[j] = hl_splat(opts[j]);
+    decoupling_law_circle_lanes_pre(f_arm, f_surface, f_opts, pre);
+    for (i = 0; i < nstates; i += HL_W) {
+        hl_i bad = hl_splat(0.0) != 0.0;
+        if (i + HL_W <= nstates) {
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_q[j][l] = q[(i + l) * 2 + j];
+            }
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_qd[j][l] = qd[(i + l) * 2 + j];
+            }
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_a[j][l] = a[(i + l) * 2 + j];
+            }
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_Fc[j][l] = Fc[(i + l) * 2 + j];
+            }
+        } else {
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_q[j][l] = q[(i + l < nstates ? i + l : nstates - 1) * 2 + j];
+            }
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_qd[j][l] = qd[(i + l < nstates ? i + l : nstates - 1) * 2 + j];
+            }
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_a[j][l] = a[(i + l < nstates ? i + l : nstates - 1) * 2 + j];
+            }
+            for (j = 0; j < 2; ++j) {
+                for (l = 0; l < HL_W; ++l) l_Fc[j][l] = Fc[(i + l < nstates ? i + l : nstates - 1) * 2 + j];
+            }
+        }
+        decoupling_law_circle_lanes(l_q, l_qd, l_a, l_Fc, pre, o_F, o_tau, o_cond);
+        hl_i g0 = hl_fabs(o_cond[0]) < singular_tol;
+        for (j = 0; j < 2; ++j) bad |= (o_F[j] - o_F[j]) != 0.0;
+        for (j = 0; j < 2; ++j) bad |= (o_tau[j] - o_tau[j]) != 0.0;
+        for (j = 0; j < 1; ++j) bad |= (o_cond[j] - o_cond[j]) != 0.0;
+        for (l = 0; l < HL_W && i + l < nstates; ++l) {
+            for (j = 0; j < 2; ++j) F[(i + l) * 2 + j] = o_F[j][l];
+            for (j = 0; j < 2; ++j) tau[(i + l) * 2 + j] = o_tau[j][l];
+            st = g0[l] ? HYBRID_SINGULAR : bad[l] ? HYBRID_NONFINITE : HYBRID_OK;
+            status[i + l] = st;
+            failed += st != HYBRID_OK;
+        }
     }
     return failed;
 }
@@ -1932,11 +2817,189 @@ int hybrid_casadi_plant_outputs_circle(const double *x, const double *arm, const
     return (all_finite(y, 14)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
+#define PLANT_OUTPUTS_CIRCLE_LANES_NPRE 12
+static void plant_outputs_circle_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
+    const hl_v v0_0 = arm[1];
+    const hl_v v11_0 = arm[0];
+    const hl_v v25_0 = surface[0];
+    const hl_v v28_0 = surface[1];
+    const hl_v v44_0 = plant[1];
+    const hl_v v48_0 = plant[2];
+    const hl_v v68_0 = surface[2];
+    const hl_v v76_0 = hl_splat(0.0);
+    const hl_v v78_0 = plant[3];
+    const hl_v v80_0 = plant[4];
+    const hl_v v90_0 = plant[5];
+    const hl_v v95_0 = plant[6];
+    const hl_v v103_0 = 1.0 / v95_0;
+    pre[0] = v0_0;
+    pre[1] = v11_0;
+    pre[2] = v25_0;
+    pre[3] = v28_0;
+    pre[4] = v44_0;
+    pre[5] = v48_0;
+    pre[6] = v68_0;
+    pre[7] = v76_0;
+    pre[8] = v78_0;
+    pre[9] = v80_0;
+    pre[10] = v90_0;
+    pre[11] = v103_0;
+    (void)arm;
+    (void)plant;
+    (void)surface;
+}
+
+static void plant_outputs_circle_lanes(const hl_v *x, const hl_v *pre, hl_v *y) {
+    (void)x;
+    (void)pre;
+    const hl_v v0_0 = pre[0];
+    const hl_v v1_0 = x[0];
+    const hl_v v2_0 = hl_cos(v1_0);
+    const hl_v v3_0 = x[1];
+    const hl_v v4_0 = hl_cos(v3_0);
+    const hl_v v5_0 = v2_0 * v4_0;
+    const hl_v v6_0 = hl_sin(v1_0);
+    const hl_v v7_0 = hl_sin(v3_0);
+    const hl_v v8_0 = v6_0 * v7_0;
+    const hl_v v9_0 = v5_0 - v8_0;
+    const hl_v v10_0 = v0_0 * v9_0;
+    const hl_v v11_0 = pre[1];
+    const hl_v v12_0 = v2_0 * v11_0;
+    const hl_v v13_0 = v10_0 + v12_0;
+    const hl_v v14_0 = v2_0 * v7_0;
+    const hl_v v15_0 = v6_0 * v4_0;
+    const hl_v v16_0 = v14_0 + v15_0;
+    const hl_v v17_0 = v0_0 * v16_0;
+    const hl_v v18_0 = v6_0 * v11_0;
+    const hl_v v19_0 = v17_0 + v18_0;
+    const hl_v v20_0 = x[3];
+    const hl_v v21_0 = v10_0 * v20_0;
+    const hl_v v22_0 = x[2];
+    const hl_v v23_0 = v13_0 * v22_0;
+    const hl_v v24_0 = v21_0 + v23_0;
+    const hl_v v25_0 = pre[2];
+    const hl_v v26_0 = v13_0 - v25_0;
+    const hl_v v27_0 = v26_0 * v26_0;
+    const hl_v v28_0 = pre[3];
+    const hl_v v29_0 = v19_0 - v28_0;
+    const hl_v v30_0 = v29_0 * v29_0;
+    const hl_v v31_0 = v27_0 + v30_0;
+    const hl_v v32_0 = hl_sqrt(v31_0);
+    const hl_v v101_0 = 1.0 / v32_0;
+    const hl_v v33_0 = v24_0 * v101_0;
+    const hl_v v34_0 = v33_0 * v26_0;
+    const hl_v v35_0 = v17_0 * v20_0;
+    const hl_v v36_0 = v19_0 * v22_0;
+    const hl_v v37_0 = v35_0 + v36_0;
+    const hl_v v38_0 = v37_0 * v101_0;
+    const hl_v v39_0 = v38_0 * v29_0;
+    const hl_v v40_0 = v34_0 + v39_0;
+    const hl_v v41_0 = v33_0 * v29_0;
+    const hl_v v42_0 = v38_0 * v26_0;
+    const hl_v v43_0 = v41_0 - v42_0;
+    const hl_v v44_0 = pre[4];
+    const hl_v v45_0 = x[4];
+    const hl_v v46_0 = v45_0 - v13_0;
+    const hl_v v47_0 = v44_0 * v46_0;
+    const hl_v v48_0 = pre[5];
+    const hl_v v49_0 = x[6];
+    const hl_v v50_0 = v37_0 + v49_0;
+    const hl_v v51_0 = v48_0 * v50_0;
+    const hl_v v52_0 = v47_0 + v51_0;
+    const hl_v v53_0 = x[5];
+    const hl_v v54_0 = v53_0 - v19_0;
+    const hl_v v55_0 = v44_0 * v54_0;
+    const hl_v v56_0 = x[7];
+    const hl_v v57_0 = v56_0 - v24_0;
+    const hl_v v58_0 = v48_0 * v57_0;
+    const hl_v v59_0 = v55_0 + v58_0;
+    const hl_v v60_0 = v26_0 * v101_0;
+    const hl_v v61_0 = v59_0 * v60_0;
+    const hl_v v62_0 = v29_0 * v101_0;
+    const hl_v v63_0 = v52_0 * v62_0;
+    const hl_v v64_0 = v61_0 - v63_0;
+    const hl_v v65_0 = v52_0 * v60_0;
+    const hl_v v66_0 = v59_0 * v62_0;
+    const hl_v v67_0 = v65_0 + v66_0;
+    const hl_v v68_0 = pre[6];
+    const hl_v v69_0 = v45_0 - v25_0;
+    const hl_v v70_0 = v69_0 * v69_0;
+    const hl_v v71_0 = v53_0 - v28_0;
+    const hl_v v72_0 = v71_0 * v71_0;
+    const hl_v v73_0 = v70_0 + v72_0;
+    const hl_v v74_0 = hl_sqrt(v73_0);
+    const hl_v v75_0 = v68_0 - v74_0;
+    const hl_v v76_0 = pre[7];
+    const hl_v v77_0 = hl_bool(v76_0 < v75_0);
+    const hl_v v78_0 = pre[8];
+    const hl_v v79_0 = v75_0 * v78_0;
+    const hl_v v80_0 = pre[9];
+    const hl_v v102_0 = 1.0 / v74_0;
+    const hl_v v81_0 = v71_0 * v102_0;
+    const hl_v v82_0 = v81_0 * v56_0;
+    const hl_v v83_0 = v69_0 * v102_0;
+    const hl_v v84_0 = v83_0 * v49_0;
+    const hl_v v85_0 = v82_0 + v84_0;
+    const hl_v v86_0 = v80_0 * v85_0;
+    const hl_v v87_0 = v79_0 - v86_0;
+    const hl_v v88_0 = hl_fmax(v76_0, v87_0);
+    const hl_v v89_0 = hl_select(v77_0 != 0.0, v88_0, hl_splat(0.0));
+    const hl_v v90_0 = pre[10];
+    const hl_v v91_0 = v88_0 * v90_0;
+    const hl_v v92_0 = v83_0 * v56_0;
+    const hl_v v93_0 = v81_0 * v49_0;
+    const hl_v v94_0 = v92_0 - v93_0;
+    const hl_v v103_0 = pre[11];
+    const hl_v v96_0 = v94_0 * v103_0;
+    const hl_v v97_0 = hl_tanh(v96_0);
+    const hl_v v98_0 = v91_0 * v97_0;
+    const hl_v v99_0 = -v98_0;
+    const hl_v v100_0 = hl_select(v77_0 != 0.0, v99_0, hl_splat(0.0));
+    y[0] = v13_0;
+    y[1] = v19_0;
+    y[2] = v40_0;
+    y[3] = v43_0;
+    y[4] = v52_0;
+    y[5] = v59_0;
+    y[6] = v64_0;
+    y[7] = v67_0;
+    y[8] = v45_0;
+    y[9] = v53_0;
+    y[10] = v75_0;
+    y[11] = v89_0;
+    y[12] = v100_0;
+    y[13] = v94_0;
+}
+
 int hybrid_casadi_plant_outputs_circle_batch(int nstates, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
-    int i, failed = 0;
-    for (i = 0; i < nstates; ++i) {
-        status[i] = hybrid_casadi_plant_outputs_circle(x + (long)i * 8, arm, plant, surface, y + (long)i * 14);
-        failed += status[i] != HYBRID_OK;
+    hl_v f_arm[11]; hl_v f_plant[7]; hl_v f_surface[3];
+    hl_v pre[PLANT_OUTPUTS_CIRCLE_LANES_NPRE];
+    hl_v l_x[8] = {{0}}; hl_v o_y[14];
+    long i;
+    int j, l, st, failed = 0;
+    for (j = 0; j < 11; ++j) f_arm[j] = hl_splat(arm[j]);
+    for (j = 0; j < 7; ++j) f_plant[j] = hl_splat(plant[j]);
+    for (j = 0; j < 3; ++j) f_surface[j] = hl_splat(surface[j]);
+    plant_outputs_circle_lanes_pre(f_arm, f_plant, f_surface, pre);
+    for (i = 0; i < nstates; i += HL_W) {
+        hl_i bad = hl_splat(0.0) != 0.0;
+        if (i + HL_W <= nstates) {
+            for (j = 0; j < 8; ++j) {
+                for (l = 0; l < HL_W; ++l) l_x[j][l] = x[(i + l) * 8 + j];
+            }
+        } else {
+            for (j = 0; j < 8; ++j) {
+                for (l = 0; l < HL_W; ++l) l_x[j][l] = x[(i + l < nstates ? i + l : nstates - 1) * 8 + j];
+            }
+        }
+        plant_outputs_circle_lanes(l_x, pre, o_y);
+        for (j = 0; j < 14; ++j) bad |= (o_y[j] - o_y[j]) != 0.0;
+        for (l = 0; l < HL_W && i + l < nstates; ++l) {
+            for (j = 0; j < 14; ++j) y[(i + l) * 14 + j] = o_y[j][l];
+            st = bad[l] ? HYBRID_NONFINITE : HYBRID_OK;
+            status[i + l] = st;
+            failed += st != HYBRID_OK;
+        }
     }
     return failed;
 }
