@@ -11,6 +11,7 @@ from .errors import HybridError
 from .law import SINGULAR_TOL, check_singular_tol
 from .parameters import Arm, Circle, Plane, _finite, _point, paper_arm
 from .schemes import SCHEMES
+from .validate import field_values
 
 #: the schemes the NumPy reference path implements
 NUMPY_SCHEMES = ("task", "khatib")
@@ -59,8 +60,8 @@ class Gains:
     KIf: float = 25.0     # 1/(kg s)
 
     def __post_init__(self):
-        _finite("Gains", **asdict(self))
-        for k, v in asdict(self).items():
+        _finite("Gains", **field_values(self))
+        for k, v in field_values(self).items():
             if v < 0:
                 raise HybridError(f"gain {k} = {v} is negative; loop gains must be >= 0")
 
@@ -74,7 +75,7 @@ class Sensor:
     damping: float = 7.0      # D_s [N s/m]
 
     def __post_init__(self):
-        _finite("Sensor", **asdict(self))
+        _finite("Sensor", **field_values(self))
         if self.mass <= 0 or self.stiffness <= 0 or self.damping < 0:
             raise HybridError(f"Sensor needs mass > 0, stiffness > 0, damping >= 0; got {self}")
 
@@ -89,7 +90,7 @@ class Contact:
     friction_smoothing: float = 1e-3  # v_eps of tanh(v_t / v_eps) [m/s]
 
     def __post_init__(self):
-        _finite("Contact", **asdict(self))
+        _finite("Contact", **field_values(self))
         if self.stiffness <= 0 or self.damping < 0 or self.friction < 0 or self.friction_smoothing <= 0:
             raise HybridError("Contact needs stiffness > 0, damping >= 0, friction >= 0, "
                               f"friction_smoothing > 0; got {self}")

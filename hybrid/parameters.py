@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import math
-from dataclasses import asdict, dataclass, fields, replace
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
 from .errors import HybridError
 from .surfaces import Circle, Plane, Surface  # noqa: F401  (the planar surfaces, as before)
-from .validate import _finite, _point, check_model_error  # noqa: F401
+from .validate import _finite, _point, check_model_error, field_values  # noqa: F401
 
 
 @dataclass(frozen=True)
@@ -35,7 +35,7 @@ class Arm:
     gravity: float = 0.0
 
     def __post_init__(self):
-        _finite("Arm", **asdict(self))
+        _finite("Arm", **field_values(self))
         for name in ("L1", "L2"):
             if getattr(self, name) <= 0:
                 raise HybridError(f"Arm.{name} = {getattr(self, name)} m; link lengths must be positive")
@@ -45,7 +45,9 @@ class Arm:
                                   "masses, inertias and viscosities must be >= 0")
         # det B(q) is smallest at cos q2 = +-1: checking both elbows checks every pose
         for q2 in (0.0, math.pi):
-            eig = np.linalg.eigvalsh(self.inertia_matrix(q2))
+            (a, b), (_, d) = self.inertia_matrix(q2)
+            mid, half = 0.5 * (a + d), math.hypot(0.5 * (a - d), b)  # the 2 x 2 eigenvalues, in closed form
+            eig = (mid - half, mid + half)
             if eig[0] <= 1e-12 * max(eig[1], 1e-300):
                 raise HybridError(
                     f"Arm inertia matrix B(q) is not positive definite at q2 = {q2:g} rad "

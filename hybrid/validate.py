@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -20,6 +21,11 @@ def _finite(owner: str, **values: float) -> None:
             ok = False
         if not ok:
             raise HybridError(f"{owner}.{name} is {str(v)[:30]}; give a finite value (within float range)")
+
+
+def field_values(obj) -> dict:
+    """A flat dataclass's fields by name (``dataclasses.asdict`` copies deeply: slow in a sweep)."""
+    return {f.name: getattr(obj, f.name) for f in dataclasses.fields(obj)}
 
 
 def unit_vector(owner: str, name: str, v) -> tuple[float, ...]:
