@@ -4,10 +4,10 @@ Any kernel (SymPy or CasADi) is first a CasADi ``Function`` (:func:`casadi_backe
 its instruction list is printed here with every scalar a GCC/Clang vector of ``HL_W`` doubles
 (``hl_v``), every array element a vector (structure of arrays: element ``i`` of lane ``l`` is
 ``a[i][l]``). Arithmetic, comparisons and selects are the compiler's vector operations; ``sin``,
-``cos``, ``exp`` and ``tanh`` are our own vector polynomials (fdlibm's and Cephes' coefficients,
-within an ulp or two of the C library), where a lane whose argument is large or not finite takes
-the C library's value (so a lane never depends on its neighbours); other functions are the C
-library's, lane by lane.
+``cos``, ``exp`` and ``tanh`` are our own vector polynomials (fdlibm's kernels for sin and cos,
+Taylor's for exp, Cephes' for small tanh arguments; within an ulp or two of the C library), where a
+lane whose argument is large or not finite takes the C library's value (so a lane never depends on
+its neighbours); other functions are the C library's, lane by lane.
 
 The lane count is chosen where the code is compiled, from the instruction set it targets (8 with
 AVX-512, 4 with AVX, else 2): with ``-march=native`` that is this processor's; without it, a
@@ -81,18 +81,18 @@ static inline hl_v hl_sqrt(hl_v x) {
 #define HL_MAP2(name, f) static inline hl_v name(hl_v x, hl_v y) { \
     hl_v r = x; int l; for (l = 0; l < HL_W; ++l) r[l] = f(x[l], y[l]); return r; }
 
-/* sin or cos (cosine = 1): x = n pi/2 + r, |r| <= pi/4, in three parts of pi/2 (exact products
-   for |n| < 2^20), then fdlibm's kernels on r; a lane beyond |x| = 1e5 (or not finite) takes the C
-   library's value, so no lane depends on its neighbours */
-static inline hl_v hl_sincos(hl_v x, int cosine) {
+/* sin and cos: x = n pi/2 + r, |r| <= pi/4, in three parts of pi/2 (exact products for
+   |n| < 2^20), then fdlibm's kernels on r; a lane beyond |x| = 1e5 (or not finite) takes the C
+   library's values, so no lane depends on its neighbours */
+static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
     const double magic = 6755399441055744.0; /* 1.5 * 2^52: adding it rounds to an integer */
-    const hl_i big = ~(hl_fabs(x) <= 1e5);
+    const hl_i big = ~(hl_fabs(x) <= 1e5), sign = (hl_i)hl_splat(-0.0);
     hl_v t, n, r, z, s, c, p, hz, w, y = hl_select(big, hl_splat(0.0), x);
     hl_i j;
     int l;
     t = y * 6.36619772367581382433e-01 + magic;
     n = t - magic;
-    j = ((hl_i)t + cosine) & 3; /* the quadrant, from the integer's low bits */
+    j = (hl_i)t & 3; /* the quadrant, from the integer's low bits */
     r = ((y - n * 1.57079632673412561417e+00) - n * 6.07710050630396597660e-11) - n * 2.02226624879595063154e-21;
     z = r * r;
     s = r + r * z * (-1.66666666666666324348e-01 + z * (8.33333333332248946124e-03 + z * (-1.98412698298579493134e-04
@@ -103,50 +103,68 @@ static inline hl_v hl_sincos(hl_v x, int cosine) {
     hz = 0.5 * z;
     w = 1.0 - hz;
     c = w + (((1.0 - w) - hz) + z * p);
-    r = hl_select((j & 1) != 0, c, s);
-    r = (hl_v)((hl_i)r ^ (((j & 2) != 0) & (hl_i)hl_splat(-0.0)));
+    /* quadrant j: sin = (s, c, -s, -c)[j], cos = (c, -s, -c, s)[j] */
+    *sine = (hl_v)((hl_i)hl_select((j & 1) != 0, c, s) ^ (((j & 2) != 0) & sign));
+    *cosine = (hl_v)((hl_i)hl_select((j & 1) != 0, s, c) ^ ((((j + 1) & 2) != 0) & sign));
     if (hl_any(big)) {
-        for (l = 0; l < HL_W; ++l) if (big[l]) r[l] = cosine ? cos(x[l]) : sin(x[l]);
+        for (l = 0; l < HL_W; ++l) {
+            if (big[l]) {
+                (*sine)[l] = sin(x[l]);
+                (*cosine)[l] = cos(x[l]);
+            }
+        }
     }
-    return r;
 }
-static inline hl_v hl_sin(hl_v x) { return hl_sincos(x, 0); }
-static inline hl_v hl_cos(hl_v x) { return hl_sincos(x, 1); }
+static inline hl_v hl_sin(hl_v x) {
+    hl_v s, c;
+    hl_sincos(x, &s, &c);
+    return s;
+}
+static inline hl_v hl_cos(hl_v x) {
+    hl_v s, c;
+    hl_sincos(x, &s, &c);
+    return c;
+}
 
-/* exp: x = n ln2 + r (ln2 in two parts), fdlibm's rational kernel, times 2^n; a lane beyond
-   |x| = 700 (or not finite) takes the C library's value */
+/* exp: x = n ln2 + r (ln2 in two parts, |r| <= ln2 / 2), exp(r) by its Taylor polynomial of degree
+   13 (truncation below 5e-18; no division), times 2^n; a lane beyond |x| = 700 (or not finite)
+   takes the C library's value */
+/* 1/k!, k = 0 .. 12 */
+static const double hl_exp_taylor[13] = {1.0, 1.0, 0.5, 1.0 / 6, 1.0 / 24, 1.0 / 120, 1.0 / 720, 1.0 / 5040,
+    1.0 / 40320, 1.0 / 362880, 1.0 / 3628800, 1.0 / 39916800, 1.0 / 479001600};
 static inline hl_v hl_exp(hl_v x) {
     const double magic = 6755399441055744.0;
     const hl_i big = ~(hl_fabs(x) <= 700.0);
-    hl_v t, n, hi, lo, r, z, c, y = hl_select(big, hl_splat(0.0), x);
+    hl_v t, n, r, y = hl_select(big, hl_splat(0.0), x);
     hl_i k;
     int l;
     t = y * 1.44269504088896338700e+00 + magic;
     n = t - magic;
     k = ((hl_i)t - (hl_i)hl_splat(magic)) + 1023;
-    hi = y - n * 6.93147180369123816490e-01;
-    lo = n * 1.90821492927058770002e-10;
-    r = hi - lo;
-    z = r * r;
-    c = r - z * (1.66666666666666019037e-01 + z * (-2.77777777770155933842e-03 + z * (6.61375632143793436117e-05
-        + z * (-1.65339022054652515390e-06 + z * 4.13813679705723846039e-08))));
-    r = (1.0 - ((lo - (r * c) / (2.0 - c)) - hi)) * (hl_v)(k << 52);
+    r = (y - n * 6.93147180369123816490e-01) - n * 1.90821492927058770002e-10;
+    y = hl_splat(1.0 / 6227020800.0); /* 1/13! */
+    for (l = 12; l >= 0; --l) y = hl_exp_taylor[l] + r * y;
+    r = y * (hl_v)(k << 52);
     if (hl_any(big)) {
         for (l = 0; l < HL_W; ++l) if (big[l]) r[l] = exp(x[l]);
     }
     return r;
 }
 
-/* tanh: Cephes' rational form below |x| = 0.625, 1 - 2 / (exp(2|x|) + 1) above */
+/* tanh: 1 - 2 / (exp(2|x|) + 1) with the sign of x, and Cephes' rational form where |x| < 0.625
+   (computed only when a lane needs it) */
 static inline hl_v hl_tanh(hl_v x) {
-    hl_v ax = hl_fabs(x), z = x * x, small, big, e;
-    small = x + x * z * ((-9.64399179425052238628e-01 * z - 9.92877231001918586564e+01) * z
-        - 1.61468768441708447952e+03) / (((z + 1.12811678491632931402e+02) * z + 2.23548839060100448583e+03) * z
-        + 4.84406305325125486048e+03);
+    const hl_i small = hl_fabs(x) < 0.625;
+    hl_v ax = hl_fabs(x), r;
     ax = hl_select(ax > 20.0, hl_splat(20.0), ax); /* tanh(20) = 1 in double; a NaN stays NaN */
-    e = hl_exp(2.0 * ax);
-    big = hl_copysign(1.0 - 2.0 / (e + 1.0), x);
-    return hl_select(hl_fabs(x) < 0.625, small, big);
+    r = hl_copysign(1.0 - 2.0 / (hl_exp(2.0 * ax) + 1.0), x);
+    if (hl_any(small)) {
+        const hl_v z = x * x;
+        r = hl_select(small, x + x * z * ((-9.64399179425052238628e-01 * z - 9.92877231001918586564e+01) * z
+            - 1.61468768441708447952e+03) / (((z + 1.12811678491632931402e+02) * z + 2.23548839060100448583e+03) * z
+            + 4.84406305325125486048e+03), r);
+    }
+    return r;
 }
 """
 
@@ -277,10 +295,29 @@ def lanes_function(kernel: Kernel, name: str | None = None, interleave: int = 1,
     cached = [v for v in order if invariant[v] and v in used_hot] if fixed else []
     slot = {v: i for i, v in enumerate(cached)}
 
+    # sin and cos of one argument: one reduction, both polynomials
+    trig: dict = {}
+    for v, (op, args, _) in enumerate(ops):
+        if op in ("OP_SIN", "OP_COS"):
+            trig.setdefault(args[0], {})[op] = v
+    partner = {d[o]: d[other] for d in trig.values() if len(d) == 2
+               for o, other in (("OP_SIN", "OP_COS"), ("OP_COS", "OP_SIN"))}
+
     def body(values, read_cached: bool) -> list[str]:
-        lines = []
+        lines, fused = [], set()
+        here = set(values)
         for v in values:
             op, args, extra = ops[v]
+            if v in fused:
+                continue
+            p = partner.get(v)
+            if p is not None and p in here and not (read_cached and (v in slot or p in slot)):
+                s_, c_ = (v, p) if op == "OP_SIN" else (p, v)
+                fused.add(p)
+                for u in range(K):
+                    lines.append(f"    hl_v v{s_}_{u}, v{c_}_{u};")
+                    lines.append(f"    hl_sincos(v{args[0]}_{u}, &v{s_}_{u}, &v{c_}_{u});")
+                continue
             for u in range(K):
                 if read_cached and v in slot:
                     rhs = f"pre[{slot[v] * K + u}]"

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 02e2dad1350f699d892d769bcd9c9f271dd209af592f95b313f371a8588bd3d8 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 5ebe80622c80f709f0d721668f8c1b008be8469251d1428dfaf412fa727de52e */
 /* hybrid_sympy: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
    Emitted by the sympy backend of hybrid's codegen (SymPy 1.14.0), generator version 4.
    Compile: cc -std=c99 -O2 -c hybrid_sympy.c (link with -lm). */
@@ -765,18 +765,18 @@ static inline hl_v hl_sqrt(hl_v x) {
 #define HL_MAP2(name, f) static inline hl_v name(hl_v x, hl_v y) { \
     hl_v r = x; int l; for (l = 0; l < HL_W; ++l) r[l] = f(x[l], y[l]); return r; }
 
-/* sin or cos (cosine = 1): x = n pi/2 + r, |r| <= pi/4, in three parts of pi/2 (exact products
-   for |n| < 2^20), then fdlibm's kernels on r; a lane beyond |x| = 1e5 (or not finite) takes the C
-   library's value, so no lane depends on its neighbours */
-static inline hl_v hl_sincos(hl_v x, int cosine) {
+/* sin and cos: x = n pi/2 + r, |r| <= pi/4, in three parts of pi/2 (exact products for
+   |n| < 2^20), then fdlibm's kernels on r; a lane beyond |x| = 1e5 (or not finite) takes the C
+   library's values, so no lane depends on its neighbours */
+static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
     const double magic = 6755399441055744.0; /* 1.5 * 2^52: adding it rounds to an integer */
-    const hl_i big = ~(hl_fabs(x) <= 1e5);
+    const hl_i big = ~(hl_fabs(x) <= 1e5), sign = (hl_i)hl_splat(-0.0);
     hl_v t, n, r, z, s, c, p, hz, w, y = hl_select(big, hl_splat(0.0), x);
     hl_i j;
     int l;
     t = y * 6.36619772367581382433e-01 + magic;
     n = t - magic;
-    j = ((hl_i)t + cosine) & 3; /* the quadrant, from the integer's low bits */
+    j = (hl_i)t & 3; /* the quadrant, from the integer's low bits */
     r = ((y - n * 1.57079632673412561417e+00) - n * 6.07710050630396597660e-11) - n * 2.02226624879595063154e-21;
     z = r * r;
     s = r + r * z * (-1.66666666666666324348e-01 + z * (8.33333333332248946124e-03 + z * (-1.98412698298579493134e-04
@@ -787,50 +787,68 @@ static inline hl_v hl_sincos(hl_v x, int cosine) {
     hz = 0.5 * z;
     w = 1.0 - hz;
     c = w + (((1.0 - w) - hz) + z * p);
-    r = hl_select((j & 1) != 0, c, s);
-    r = (hl_v)((hl_i)r ^ (((j & 2) != 0) & (hl_i)hl_splat(-0.0)));
+    /* quadrant j: sin = (s, c, -s, -c)[j], cos = (c, -s, -c, s)[j] */
+    *sine = (hl_v)((hl_i)hl_select((j & 1) != 0, c, s) ^ (((j & 2) != 0) & sign));
+    *cosine = (hl_v)((hl_i)hl_select((j & 1) != 0, s, c) ^ ((((j + 1) & 2) != 0) & sign));
     if (hl_any(big)) {
-        for (l = 0; l < HL_W; ++l) if (big[l]) r[l] = cosine ? cos(x[l]) : sin(x[l]);
+        for (l = 0; l < HL_W; ++l) {
+            if (big[l]) {
+                (*sine)[l] = sin(x[l]);
+                (*cosine)[l] = cos(x[l]);
+            }
+        }
     }
-    return r;
 }
-static inline hl_v hl_sin(hl_v x) { return hl_sincos(x, 0); }
-static inline hl_v hl_cos(hl_v x) { return hl_sincos(x, 1); }
+static inline hl_v hl_sin(hl_v x) {
+    hl_v s, c;
+    hl_sincos(x, &s, &c);
+    return s;
+}
+static inline hl_v hl_cos(hl_v x) {
+    hl_v s, c;
+    hl_sincos(x, &s, &c);
+    return c;
+}
 
-/* exp: x = n ln2 + r (ln2 in two parts), fdlibm's rational kernel, times 2^n; a lane beyond
-   |x| = 700 (or not finite) takes the C library's value */
+/* exp: x = n ln2 + r (ln2 in two parts, |r| <= ln2 / 2), exp(r) by its Taylor polynomial of degree
+   13 (truncation below 5e-18; no division), times 2^n; a lane beyond |x| = 700 (or not finite)
+   takes the C library's value */
+/* 1/k!, k = 0 .. 12 */
+static const double hl_exp_taylor[13] = {1.0, 1.0, 0.5, 1.0 / 6, 1.0 / 24, 1.0 / 120, 1.0 / 720, 1.0 / 5040,
+    1.0 / 40320, 1.0 / 362880, 1.0 / 3628800, 1.0 / 39916800, 1.0 / 479001600};
 static inline hl_v hl_exp(hl_v x) {
     const double magic = 6755399441055744.0;
     const hl_i big = ~(hl_fabs(x) <= 700.0);
-    hl_v t, n, hi, lo, r, z, c, y = hl_select(big, hl_splat(0.0), x);
+    hl_v t, n, r, y = hl_select(big, hl_splat(0.0), x);
     hl_i k;
     int l;
     t = y * 1.44269504088896338700e+00 + magic;
     n = t - magic;
     k = ((hl_i)t - (hl_i)hl_splat(magic)) + 1023;
-    hi = y - n * 6.93147180369123816490e-01;
-    lo = n * 1.90821492927058770002e-10;
-    r = hi - lo;
-    z = r * r;
-    c = r - z * (1.66666666666666019037e-01 + z * (-2.77777777770155933842e-03 + z * (6.61375632143793436117e-05
-        + z * (-1.65339022054652515390e-06 + z * 4.13813679705723846039e-08))));
-    r = (1.0 - ((lo - (r * c) / (2.0 - c)) - hi)) * (hl_v)(k << 52);
+    r = (y - n * 6.93147180369123816490e-01) - n * 1.90821492927058770002e-10;
+    y = hl_splat(1.0 / 6227020800.0); /* 1/13! */
+    for (l = 12; l >= 0; --l) y = hl_exp_taylor[l] + r * y;
+    r = y * (hl_v)(k << 52);
     if (hl_any(big)) {
         for (l = 0; l < HL_W; ++l) if (big[l]) r[l] = exp(x[l]);
     }
     return r;
 }
 
-/* tanh: Cephes' rational form below |x| = 0.625, 1 - 2 / (exp(2|x|) + 1) above */
+/* tanh: 1 - 2 / (exp(2|x|) + 1) with the sign of x, and Cephes' rational form where |x| < 0.625
+   (computed only when a lane needs it) */
 static inline hl_v hl_tanh(hl_v x) {
-    hl_v ax = hl_fabs(x), z = x * x, small, big, e;
-    small = x + x * z * ((-9.64399179425052238628e-01 * z - 9.92877231001918586564e+01) * z
-        - 1.61468768441708447952e+03) / (((z + 1.12811678491632931402e+02) * z + 2.23548839060100448583e+03) * z
-        + 4.84406305325125486048e+03);
+    const hl_i small = hl_fabs(x) < 0.625;
+    hl_v ax = hl_fabs(x), r;
     ax = hl_select(ax > 20.0, hl_splat(20.0), ax); /* tanh(20) = 1 in double; a NaN stays NaN */
-    e = hl_exp(2.0 * ax);
-    big = hl_copysign(1.0 - 2.0 / (e + 1.0), x);
-    return hl_select(hl_fabs(x) < 0.625, small, big);
+    r = hl_copysign(1.0 - 2.0 / (hl_exp(2.0 * ax) + 1.0), x);
+    if (hl_any(small)) {
+        const hl_v z = x * x;
+        r = hl_select(small, x + x * z * ((-9.64399179425052238628e-01 * z - 9.92877231001918586564e+01) * z
+            - 1.61468768441708447952e+03) / (((z + 1.12811678491632931402e+02) * z + 2.23548839060100448583e+03) * z
+            + 4.84406305325125486048e+03), r);
+    }
+    return r;
 }
 
 HL_MAP1(hl_acos, acos)
@@ -949,12 +967,12 @@ static void decoupling_law_plane_lanes(const hl_v *q, const hl_v *qd, const hl_v
     (void)Fc;
     (void)pre;
     const hl_v v0_0 = q[0];
-    const hl_v v1_0 = hl_cos(v0_0);
+    hl_v v5_0, v1_0;
+    hl_sincos(v0_0, &v5_0, &v1_0);
     const hl_v v2_0 = q[1];
-    const hl_v v3_0 = hl_cos(v2_0);
+    hl_v v6_0, v3_0;
+    hl_sincos(v2_0, &v6_0, &v3_0);
     const hl_v v4_0 = v1_0 * v3_0;
-    const hl_v v5_0 = hl_sin(v0_0);
-    const hl_v v6_0 = hl_sin(v2_0);
     const hl_v v7_0 = v5_0 * v6_0;
     const hl_v v8_0 = v4_0 - v7_0;
     const hl_v v9_0 = pre[0];
@@ -1249,12 +1267,12 @@ static void plant_outputs_plane_lanes(const hl_v *x, const hl_v *pre, hl_v *y) {
     (void)pre;
     const hl_v v0_0 = pre[0];
     const hl_v v1_0 = x[0];
-    const hl_v v2_0 = hl_cos(v1_0);
+    hl_v v6_0, v2_0;
+    hl_sincos(v1_0, &v6_0, &v2_0);
     const hl_v v3_0 = x[1];
-    const hl_v v4_0 = hl_cos(v3_0);
+    hl_v v7_0, v4_0;
+    hl_sincos(v3_0, &v7_0, &v4_0);
     const hl_v v5_0 = v2_0 * v4_0;
-    const hl_v v6_0 = hl_sin(v1_0);
-    const hl_v v7_0 = hl_sin(v3_0);
     const hl_v v8_0 = v6_0 * v7_0;
     const hl_v v9_0 = v5_0 - v8_0;
     const hl_v v10_0 = v0_0 * v9_0;
@@ -1460,12 +1478,12 @@ static void decoupling_law_circle_lanes(const hl_v *q, const hl_v *qd, const hl_
     (void)Fc;
     (void)pre;
     const hl_v v0_0 = q[0];
-    const hl_v v1_0 = hl_cos(v0_0);
+    hl_v v5_0, v1_0;
+    hl_sincos(v0_0, &v5_0, &v1_0);
     const hl_v v2_0 = q[1];
-    const hl_v v3_0 = hl_cos(v2_0);
+    hl_v v6_0, v3_0;
+    hl_sincos(v2_0, &v6_0, &v3_0);
     const hl_v v4_0 = v1_0 * v3_0;
-    const hl_v v5_0 = hl_sin(v0_0);
-    const hl_v v6_0 = hl_sin(v2_0);
     const hl_v v7_0 = v5_0 * v6_0;
     const hl_v v8_0 = v4_0 - v7_0;
     const hl_v v9_0 = pre[0];
@@ -1776,12 +1794,12 @@ static void plant_outputs_circle_lanes(const hl_v *x, const hl_v *pre, hl_v *y) 
     (void)pre;
     const hl_v v0_0 = pre[0];
     const hl_v v1_0 = x[0];
-    const hl_v v2_0 = hl_cos(v1_0);
+    hl_v v6_0, v2_0;
+    hl_sincos(v1_0, &v6_0, &v2_0);
     const hl_v v3_0 = x[1];
-    const hl_v v4_0 = hl_cos(v3_0);
+    hl_v v7_0, v4_0;
+    hl_sincos(v3_0, &v7_0, &v4_0);
     const hl_v v5_0 = v2_0 * v4_0;
-    const hl_v v6_0 = hl_sin(v1_0);
-    const hl_v v7_0 = hl_sin(v3_0);
     const hl_v v8_0 = v6_0 * v7_0;
     const hl_v v9_0 = v5_0 - v8_0;
     const hl_v v10_0 = v0_0 * v9_0;
