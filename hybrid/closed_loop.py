@@ -1,4 +1,4 @@
-"""Whole runs of the paper's experiment in compiled C, many at once as SIMD lanes.
+"""Whole runs of the paper's and the 3-D experiment in compiled C, many at once as SIMD lanes.
 
 :func:`prepare` turns an experiment into one row of numbers for the generated closed loop
 (:mod:`codegen.closed_loop`), or None when part of its controller runs in Python (references
@@ -18,7 +18,7 @@ import numpy as np
 from . import native
 from .controller import Controller
 from .experiment import Experiment
-from .plants import NativePlant
+from .plants import NativePlant, SpatialPlant
 
 
 @dataclass(frozen=True)
@@ -43,7 +43,9 @@ class Loop:
 
 
 @cache
-def _loop(kind: str, variant: tuple) -> Loop:
+def _loop(plant: tuple, variant: tuple) -> Loop:
+    """The compiled loop of a plant (``("planar", surface kind)`` or ``("spatial", chain, name, surface
+    spec)``) and a controller step (:meth:`Controller.step_variant`, as sorted items)."""
     from importlib.metadata import version
 
     from codegen.emit import fingerprint
@@ -52,11 +54,13 @@ def _loop(kind: str, variant: tuple) -> Loop:
     from .robot import _chain_key
 
     v = dict(variant)
+    kind = plant[1] if plant[0] == "planar" else f"{plant[2]}_{plant[3].kind}"
     prefix = c_identifier(f"hybrid_{v['name']}_{kind}_{v['step']}_loop")
-    key = {"chain": _chain_key(v["chain"]), "surface": v["spec"].key(), "axes": list(v["axes"]), "kind": kind,
+    plant_key = list(plant) if plant[0] == "planar" else ["spatial", _chain_key(plant[1]), plant[3].key()]
+    key = {"chain": _chain_key(v["chain"]), "surface": v["spec"].key(), "axes": list(v["axes"]), "plant": plant_key,
            **{k: v[k] for k in ("desired_frame", "position_error", "step")}, "generator": fingerprint(),
            "casadi": version("casadi"), "sympy": version("sympy"), "prefix": prefix}
-    folder = native.generated_unit(prefix, key, lambda: _build(prefix, kind, v).files)
+    folder = native.generated_unit(prefix, key, lambda: _build(prefix, plant, v).files)
     module, manifest = native.load_generated(folder, prefix)
     loop = manifest["closed_loop"]
     return Loop(getattr(module.lib, loop["symbol"]), module.ffi, int(getattr(module.lib, loop["lanes_symbol"])()),
@@ -64,17 +68,28 @@ def _loop(kind: str, variant: tuple) -> Loop:
                 loop["nq"])
 
 
-def _build(prefix: str, kind: str, v: dict):
-    from codegen import model
+def _build(prefix: str, plant: tuple, v: dict):
     from codegen.closed_loop import LoopSpec, build_closed_loop_unit
     from codegen.controller_step import controller_kernels
 
-    plant = {k.name: k for k in model.kernels(2)}
     steps = {k.name: k for k in controller_kernels(v["chain"], v["spec"], v["axes"], v["desired_frame"],
                                                       v["position_error"])}
-    spec = LoopSpec(plant[f"plant_rhs_{kind}"], plant[f"plant_outputs_{kind}"], steps[v["step"]], ("Fc_x", "Fc_y"))
-    info = {"experiment": "paper", "surface": kind, "step": v["step"], "robot": v["name"]}
-    return build_closed_loop_unit(spec, prefix, f"the paper's closed loop on a {kind}: {v['step']}", info)
+    if plant[0] == "planar":
+        from codegen import model
+
+        kernels = {k.name: k for k in model.kernels(2)}
+        rhs, outputs, force = kernels[f"plant_rhs_{plant[1]}"], kernels[f"plant_outputs_{plant[1]}"], ("Fc_x", "Fc_y")
+        what = f"the paper's closed loop on a {plant[1]}"
+    else:
+        from codegen.spatial_plant import plant_kernels
+
+        kernels = {k.name: k for k in plant_kernels(plant[1], plant[3])}
+        rhs, outputs, force = kernels["plant_rhs"], kernels["plant_outputs"], ("Fc_x", "Fc_y", "Fc_z")
+        what = f"the 3-D experiment's closed loop: {plant[2]} on a {plant[3].kind}"
+    info = {"plant": plant[0], "surface": plant[1] if plant[0] == "planar" else plant[3].kind, "step": v["step"],
+            "robot": v["name"]}
+    return build_closed_loop_unit(LoopSpec(rhs, outputs, steps[v["step"]], force), prefix, f"{what}: {v['step']}",
+                                  info)
 
 
 @dataclass(frozen=True)
@@ -88,22 +103,28 @@ class Prepared:
 
 
 def prepare(exp, x0: np.ndarray | None = None) -> Prepared | None:
-    """``exp`` as a row of the compiled loop, after the checks ``simulate`` makes (a refused
-    experiment raises their HybridError); None when it cannot run there."""
+    """``exp`` (the paper's experiment or a 3-D one) as a row of the compiled loop, after the checks
+    ``simulate`` makes (a refused experiment raises their HybridError); None when it cannot run there."""
     from .simulation import check_path, initial_state
+    from .tracing import TracingExperiment, initial_tracing_state
 
-    if not isinstance(exp, Experiment) or exp.backend == "numpy":
+    spatial = isinstance(exp, TracingExperiment)
+    if not (spatial or isinstance(exp, Experiment)) or getattr(exp, "backend", "") == "numpy":
         return None
     ctrl = Controller.from_experiment(exp)
     if not ctrl.runs_in_c:
         return None
-    x0 = initial_state(exp) if x0 is None else x0
-    check_path(exp)
-    variant = ctrl.step_variant()
-    loop = _loop(exp.surface.kind, tuple(sorted(variant.items())))
+    if spatial:
+        x0 = initial_tracing_state(exp, SpatialPlant(exp)) if x0 is None else x0
+        plant, given = ("spatial", exp.robot.chain, exp.robot.name, exp.surface.lift().spec()), SpatialPlant.inputs(exp)
+    else:
+        x0 = initial_state(exp) if x0 is None else x0
+        check_path(exp)
+        plant, given = ("planar", exp.surface.kind), NativePlant.inputs(exp)
+    loop = _loop(plant, tuple(sorted(ctrl.step_variant().items())))
     fs, vs = exp.force_reference, exp.speed_reference
     values = {"x0": x0, "force_step": (fs.before, fs.after, fs.at), "speed_step": (vs.before, vs.after, vs.at),
-              **{f"plant.{k}": v for k, v in NativePlant.inputs(exp).items()},
+              **{f"plant.{k}": v for k, v in given.items()},
               **{f"controller.{k}": v for k, v in ctrl.step_inputs().items()}}
     settings = (exp.n_samples, exp.steps_per_sample, exp.step, exp.sample_time, exp.singular_tol)
     return Prepared(exp, loop, settings, loop.row(values))

@@ -113,13 +113,19 @@ class SpatialPlant(CompiledPlant):
     def __init__(self, exp):
         from .robot import compiled_plant_unit
 
-        spatial = exp.surface.lift()
-        unit = compiled_plant_unit(exp.robot.chain, exp.robot.name, spatial.spec())
-        robot, plant, surface = exp.robot.as_array(), exp.plant_array(), spatial.as_array()
-        super().__init__(unit.function("plant_rhs"), unit.function("plant_outputs"), (robot, plant, surface),
-                         (robot, plant, surface, np.asarray(exp.reference, float)), exp.step,
+        unit = compiled_plant_unit(exp.robot.chain, exp.robot.name, exp.surface.lift().spec())
+        given = self.inputs(exp)
+        super().__init__(unit.function("plant_rhs"), unit.function("plant_outputs"),
+                         tuple(given[k] for k in ("robot", "plant", "surface")), tuple(given.values()), exp.step,
                          ("Fc_x", "Fc_y", "Fc_z"))
         self._robot = exp.robot
+
+    @staticmethod
+    def inputs(exp) -> dict[str, np.ndarray]:
+        """The plant's parameter arrays (after ``x, tau``; the output record's also ``e``) by the
+        manifest's names."""
+        return {"robot": exp.robot.as_array(), "plant": exp.plant_array(), "surface": exp.surface.lift().as_array(),
+                "e": np.asarray(exp.reference, float)}
 
     conditioning_name = "m/(|J|_F |J^+|_F)"
 

@@ -124,7 +124,7 @@ def simulate(exp, plant: str = "generated") -> SimulationResult:
         if plant == "mujoco":
             raise HybridError("the MuJoCo plant runs the paper's experiment; the 3-D one runs on the generated plant")
         spatial = SpatialPlant(exp)
-        return run(exp, spatial, Controller.from_experiment(exp), initial_tracing_state(exp, spatial))
+        return _compiled_or_run(exp, spatial, initial_tracing_state(exp, spatial))
     if not isinstance(exp, Experiment):
         raise HybridError(f"simulate() takes an experiment (see hybrid.paper_experiment() and "
                           f"hybrid.tracing_experiment()), got {type(exp).__name__}")
@@ -139,13 +139,18 @@ def simulate(exp, plant: str = "generated") -> SimulationResult:
         from . import reference  # the reference path only: the compiled runtime does not need it
 
         return run(exp, reference.NumpyPlant(exp), reference.NumpyController(exp), x0)
+    return _compiled_or_run(exp, NativePlant(exp), x0)
+
+
+def _compiled_or_run(exp, plant, x0: np.ndarray) -> SimulationResult:
+    """The whole run in compiled C when the loop takes it (as a sweep runs it), else, and for the
+    account of a run that stopped there, the Python runner."""
     prepared = closed_loop.prepare(exp, x0)
-    if prepared is not None:  # the whole run in compiled C, as a sweep runs it
+    if prepared is not None:
         done = closed_loop.run([prepared], record=True)[0]
         if done.status == 0:
-            return _result(exp, NativePlant(exp), done.states, done.taus, done.metrics)
-    # the Python runner: what the compiled loop does not take, and the account of a run that stopped
-    return run(exp, NativePlant(exp), Controller.from_experiment(exp), x0)
+            return _result(exp, plant, done.states, done.taus, done.metrics)
+    return run(exp, plant, Controller.from_experiment(exp), x0)
 
 
 def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:

@@ -53,6 +53,22 @@ def test_compiled_runs_equal_the_python_runner(case):
             assert got.metrics[name] == pytest.approx(value, rel=1e-6, abs=1e-10), name
 
 
+@pytest.mark.parametrize("overrides", [{}, {"controller": "khatib", "contact": hybrid.Contact(friction=0.3)}])
+def test_the_3d_experiment_in_c_equals_the_python_runner(overrides):
+    """The UR5 on the sphere (NOTES section 10): the 6-joint plant and six-axis controller as lanes."""
+    from hybrid.plants import SpatialPlant
+    from hybrid.tracing import initial_tracing_state
+
+    exp = hybrid.tracing_experiment(duration=0.8, **overrides)
+    got = closed_loop.run([closed_loop.prepare(exp)], record=True)[0]
+    plant = SpatialPlant(exp)
+    ref = run(exp, plant, Controller.from_experiment(exp), initial_tracing_state(exp, plant))
+    assert got.status == 0
+    assert np.abs((got.states - ref.state) / (np.abs(ref.state).max(axis=0) + 1e-3)).max() < 1e-7
+    for name, value in ref.metrics.items():
+        assert got.metrics[name] == pytest.approx(value, rel=1e-6, abs=1e-10, nan_ok=True), name
+
+
 def test_metrics_in_c_equal_the_numpy_definitions_on_the_same_record():
     exp = _experiment("steps_down")
     got = closed_loop.run([closed_loop.prepare(exp)], record=True)[0]
@@ -95,7 +111,7 @@ def test_lanes_do_not_depend_on_their_neighbours_and_a_stopped_run_stops_alone()
 def test_what_runs_in_python_is_not_compiled():
     assert closed_loop.prepare(hybrid.paper_experiment(frame="desired")) is None
     assert closed_loop.prepare(hybrid.paper_experiment(backend="numpy")) is None
-    assert closed_loop.prepare(hybrid.tracing_experiment()) is None
+    assert closed_loop.prepare(hybrid.tracing_experiment(frame="desired")) is None
 
 
 # ------------------------------------------------------------------------------- vector math
