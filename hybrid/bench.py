@@ -260,6 +260,7 @@ ONE_RUN = "paper run through hybrid.simulate (2 s simulated)"
 SWEEP_1000 = "1,000 paper runs by hybrid.sweep (both cores)"
 SWEEP_10000 = "10,000 paper runs by hybrid.sweep (both cores)"
 LOOP_RUN = "paper run in the compiled closed loop, as SIMD lanes, one core, per run"
+TRACE_RUN = "3-D run (UR5 on the sphere, 3 s simulated) in the compiled loop, as SIMD lanes, one core, per run"
 STEP_IN_C = "controller step in C (measurement, six loops, law), per sample"
 STEP_ONE = "controller step from Python, per sample (ctrl(t, q, qdot, Fc))"
 SPHERE = (0.45, 0.1, 0.3, 0.15)
@@ -500,6 +501,12 @@ def sweep_benchmarks(quick: bool, add) -> None:
     lanes = prepared[0].loop.lanes
     add(LOOP_RUN, _median_ns(lambda: closed_loop.run(prepared), 1, 3 if quick else 7) / 1e6 / len(prepared), "ms",
         ratio=f"{lanes} runs a group of lanes")
+    from .tracing import tracing_experiment
+
+    trace = [closed_loop.prepare(tracing_experiment(model_error=m)) for m in np.linspace(0.0, 0.3, 16)]
+    one = _median_ns(lambda: simulate(trace[0].experiment), 1, 3) / 1e6
+    add(TRACE_RUN, _median_ns(lambda: closed_loop.run(trace), 1, 3) / 1e6 / len(trace), "ms",
+        ratio=f"one alone through simulate: {one:.0f} ms")
     for total, name in ((1000, SWEEP_1000), (10000, SWEEP_10000)):
         n = 100 if quick else total
         grid = {"model_error": list(np.linspace(0.0, 0.5, n // 4)), "controller": ["task", "khatib"],
