@@ -107,9 +107,11 @@ def _driver(prefix: str, spec: LoopSpec) -> str:
     iF, iv, ipen, iN = (nf + i for i in range(4))
     plant = {a.name: f"blk + {offset['plant.' + a.name]} * HL_K"
              for a in (*rhs.inputs[2:], *spec.outputs.inputs[1:])}
-    held = ", ".join(plant[a.name] for a in rhs.inputs[2:])
-    shown = ", ".join(plant[a.name] for a in spec.outputs.inputs[1:])
-    params = ", ".join(f"blk + {offset['controller.' + a.name]} * HL_K" for a in step.inputs[len(_DRIVEN):])
+    # the run's arrays each kernel holds fixed, then where its values computed once go
+    held = ", ".join([*(plant[a.name] for a in rhs.inputs[2:]), "pre_rhs"])
+    shown = ", ".join([*(plant[a.name] for a in spec.outputs.inputs[1:]), "pre_sig"])
+    params = ", ".join([*(f"blk + {offset['controller.' + a.name]} * HL_K" for a in step.inputs[len(_DRIVEN):]),
+                        "pre_step"])
     outs = step.core_outputs()
     out_decl = " ".join(f"hl_v o_{a.name}[{a.size} * HL_K];" for a in outs)
     out_args = ", ".join(f"o_{a.name}" for a in outs)
@@ -272,9 +274,9 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     for (j = 0; j < 6 * HL_K; ++j) fc[j] = hl_splat(0.0);
     for (j = 0; j < {2 * m} * HL_K; ++j) z[j] = hl_splat(0.0);
     for (j = 0; j < {nx} * HL_K; ++j) x[j] = blk[{offset['x0']} * HL_K + j];
-    plant_rhs_lanes_pre({held}, pre_rhs);
-    loop_signals_lanes_pre({shown}, pre_sig);
-    {step.name}_lanes_pre({params}, pre_step);
+    plant_rhs_lanes_pre({held});
+    loop_signals_lanes_pre({shown});
+    {step.name}_lanes_pre({params});
     loop_signals_lanes(x, pre_sig, s);
     alive = 1;
     for (k = 0; k < n_samples && alive; ++k) {{
@@ -342,8 +344,11 @@ int {prefix}_lanes(void) {{
 """
 
 
-def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict) -> Unit:
-    """C source, header and manifest of the closed loop ``spec``, deterministic in its inputs."""
+def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
+                           lanes: int | None = None) -> Unit:
+    """C source, header and manifest of the closed loop ``spec``, deterministic in its inputs; ``lanes``
+    fixes the lane count (1: one run at a time, as fast as one run goes) instead of the instruction
+    set's."""
     nq = spec.rhs.inputs[1].size
     rhs = Kernel("plant_rhs", spec.rhs.inputs, spec.rhs.outputs, spec.rhs.doc)
     status = "\n".join(f"#define {k} {v}" for k, v in STATUS.items())
@@ -352,7 +357,9 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict) -
     shown = tuple(a.name for a in spec.outputs.inputs[1:])
     params = tuple(a.name for a in spec.step.inputs[len(_DRIVEN):])
     body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py. */\n"
-            f"{PRELUDE}\n{status}\n#define HL_K {K}\n\n{libm_maps()}\n"
+            "#if !defined(__GNUC__)\n#error \"the compiled closed loop needs GCC or Clang (vector extensions)\"\n"
+            f"#endif\n{f'#define HL_W {lanes}' if lanes else ''}\n{PRELUDE}\n{status}\n#define HL_K {K}\n\n"
+            f"{libm_maps()}\n"
             f"{lanes_function(rhs, 'plant_rhs_lanes', K, held)}\n"
             f"{lanes_function(signals_kernel(spec), 'loop_signals_lanes', K, shown)}\n"
             f"{lanes_function(spec.step, spec.step.name + '_lanes', K, params)}\n{_driver(prefix, spec)}")
@@ -372,7 +379,7 @@ int {prefix}_lanes(void);
 """
     loop = {"symbol": f"{prefix}_closed_loop", "lanes_symbol": f"{prefix}_lanes",
             "blocks": [{"name": n, "size": s} for n, s in blocks(spec)],
-            "state": list(spec.rhs.inputs[0].names or ()), "nq": nq,
+            "state": list(spec.rhs.inputs[0].names or ()), "nx": spec.rhs.inputs[0].size, "nq": nq,
             "metrics": [*METRICS, *(f"peak_torque_joint{j + 1}_Nm" for j in range(nq))],
             "signals": [*spec.force_columns, *SIGNALS]}
     text = manifest(prefix, (), f"CasADi {ca.__version__}", {**info, "closed_loop": loop})

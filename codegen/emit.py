@@ -194,10 +194,11 @@ static int all_finite(const double *v, int n) {{
     return 1;
 }}
 """]
-    if any(k.lanes for k in kernels):
+    if any(k.lanes for k in kernels):  # GCC and Clang (vector extensions); any other compiler: plain C
         from .lanes import PRELUDE, libm_maps
 
-        out.append(f"{PRELUDE}\n{libm_maps()}")
+        out.append(f"#if defined(__GNUC__)\n#define HYBRID_LANES 1\n{PRELUDE}\n{libm_maps()}#else\n"
+                   "#define HYBRID_LANES 0\n#endif\n")
     for k in kernels:
         core_args = [a.name for a in (*k.inputs, *k.core_outputs())]
         lines = [f"int {prefix}_{k.name}({', '.join(_params(k))}) {{"]
@@ -209,24 +210,10 @@ static int all_finite(const double *v, int n) {{
         finite = " && ".join(f"all_finite({a.name}, {a.size})" for a in k.core_outputs())
         lines.append(f"    return ({finite}) ? HYBRID_OK : HYBRID_NONFINITE;\n}}\n")
         out.append("\n".join(lines))
-        if k.batched and k.lanes:
-            out.append(_lanes_batch(prefix, k))
+        if k.batched and k.lanes:  # lanes where the compiler has vector extensions, else one by one
+            out.append(f"#if HYBRID_LANES\n{_lanes_batch(prefix, k)}#else\n{_scalar_batch(prefix, k)}#endif\n")
         elif k.batched:
-            per, sizes = set(k.batched), k.sizes()
-            args = []
-            for p in _params(k):
-                name = p.split("*")[-1] if "*" in p else p.split()[-1]
-                shifted = name in per or (name in sizes and p.startswith("double *"))
-                args.append(f"{name} + (long)i * {sizes[name]}" if shifted else name)
-            out.append(f"""int {prefix}_{k.name}_batch(int nstates, {', '.join(_params(k))}, int *status) {{
-    int i, failed = 0;
-    for (i = 0; i < nstates; ++i) {{
-        status[i] = {prefix}_{k.name}({', '.join(args)});
-        failed += status[i] != HYBRID_OK;
-    }}
-    return failed;
-}}
-""")
+            out.append(_scalar_batch(prefix, k))
         if k.integrator:
             x, nx = k.inputs[0].name, k.inputs[0].size
             held = ", ".join(a.name for a in k.inputs[1:])
@@ -259,6 +246,25 @@ static int all_finite(const double *v, int n) {{
     return "\n".join(out)
 
 
+def _scalar_batch(prefix: str, k: Kernel) -> str:
+    """The ``_batch`` entry point as a loop over the one-state entry point."""
+    per, sizes = set(k.batched), k.sizes()
+    args = []
+    for p in _params(k):
+        name = p.split("*")[-1] if "*" in p else p.split()[-1]
+        shifted = name in per or (name in sizes and p.startswith("double *"))
+        args.append(f"{name} + (long)i * {sizes[name]}" if shifted else name)
+    return f"""int {prefix}_{k.name}_batch(int nstates, {', '.join(_params(k))}, int *status) {{
+    int i, failed = 0;
+    for (i = 0; i < nstates; ++i) {{
+        status[i] = {prefix}_{k.name}({', '.join(args)});
+        failed += status[i] != HYBRID_OK;
+    }}
+    return failed;
+}}
+"""
+
+
 def _lanes_batch(prefix: str, k: Kernel) -> str:
     """The ``_batch`` entry point of a ``lanes`` kernel: ``HL_W`` states per call of its lanes
     function, what the states share computed once; the last group is filled up with the last state,
@@ -288,7 +294,7 @@ def _lanes_batch(prefix: str, k: Kernel) -> str:
         f"hl_v o_{a.name}[{a.size}];" for a in outs)
     shared = " ".join(f"hl_v f_{a.name}[{a.size}];" for a in fixed)
     splat = "\n".join(f"    for (j = 0; j < {a.size}; ++j) f_{a.name}[j] = hl_splat({a.name}[j]);" for a in fixed)
-    call_pre = ", ".join(f"f_{a.name}" for a in fixed)
+    call_pre = ", ".join([*(f"f_{a.name}" for a in fixed), "pre"])
     call = ", ".join([*(f"l_{a.name}" for a in states), "pre", *(f"o_{a.name}" for a in outs)])
     return f"""{lanes_function(k, name, fixed=tuple(a.name for a in fixed))}
 int {prefix}_{k.name}_batch(int nstates, {', '.join(_params(k))}, int *status) {{
@@ -298,7 +304,7 @@ int {prefix}_{k.name}_batch(int nstates, {', '.join(_params(k))}, int *status) {
     long i;
     int j, l, st, failed = 0;
 {splat}
-    {name}_pre({call_pre}, pre);
+    {name}_pre({call_pre});
     for (i = 0; i < nstates; i += HL_W) {{
         hl_i bad = hl_splat(0.0) != 0.0;
         if (i + HL_W <= nstates) {{

@@ -25,12 +25,14 @@ from .kernel import Kernel
 PRELUDE = r"""#include <math.h>
 #include <string.h>
 
+#ifndef HL_W /* a build may fix it (1: one run at a time) */
 #if defined(__AVX512F__)
 #define HL_W 8
 #elif defined(__AVX__)
 #define HL_W 4
 #else
 #define HL_W 2
+#endif
 #endif
 typedef double hl_v __attribute__((vector_size(HL_W * 8)));
 typedef long long hl_i __attribute__((vector_size(HL_W * 8)));
@@ -164,7 +166,7 @@ static inline hl_v hl_tanh(hl_v x) {
             - 1.61468768441708447952e+03) / (((z + 1.12811678491632931402e+02) * z + 2.23548839060100448583e+03) * z
             + 4.84406305325125486048e+03), r);
     }
-    return r;
+    return hl_select(x == 0.0, x, r); /* tanh(-0) = -0 */
 }
 """
 
@@ -203,7 +205,7 @@ def libm_maps() -> str:
     return ones + twos
 
 
-def _program(kernel: Kernel, fixed: tuple[str, ...]):
+def _program(kernel: Kernel, fixed: tuple[str, ...] | None):
     """The kernel's CasADi instructions as values (single assignment): ``(ops, outputs, invariant)``.
 
     ``ops[v] = (operation, argument values, constant or input element)``; ``outputs`` lists
@@ -232,7 +234,7 @@ def _program(kernel: Kernel, fixed: tuple[str, ...]):
         else:
             ops.append((op, tuple(slot[i] for i in ins[:2 if "{b}" in _OPS[op] else 1]), None))
         slot[out[0]] = len(ops) - 1
-    fixed_inputs = {i for i, a in enumerate(kernel.inputs) if a.name in fixed}
+    fixed_inputs = {i for i, a in enumerate(kernel.inputs) if a.name in (fixed or ())}
     invariant = []
     for op, args, extra in ops:
         invariant.append(extra[0] in fixed_inputs if op == "OP_INPUT" else all(invariant[a] for a in args))
@@ -275,7 +277,8 @@ def _schedule(ops) -> list[int]:
     return order
 
 
-def lanes_function(kernel: Kernel, name: str | None = None, interleave: int = 1, fixed: tuple[str, ...] = ()) -> str:
+def lanes_function(kernel: Kernel, name: str | None = None, interleave: int = 1,
+                   fixed: tuple[str, ...] | None = None) -> str:
     """``static void <name>(const hl_v *input..., hl_v *output...)``: the kernel on ``HL_W`` lanes.
 
     Arguments are the kernel's inputs, then its core outputs (outputs, then each guard's measure),
@@ -283,16 +286,19 @@ def lanes_function(kernel: Kernel, name: str | None = None, interleave: int = 1,
     evaluates ``K`` independent vectors of lanes, statement by statement (element ``i`` of vector
     ``u`` at ``[i * K + u]``). Outputs may not alias inputs.
 
-    With ``fixed`` input names (numbers a run holds, such as its parameters) what depends on them
-    alone is computed once, by ``<name>_pre(fixed inputs..., hl_v *pre)`` into ``<NAME>_NPRE``
-    vectors (times ``K``), and ``<name>(other inputs..., const hl_v *pre, outputs...)`` reads it.
+    With ``fixed`` input names (numbers a run holds, such as its parameters; possibly none) what
+    depends on them alone is computed once, by ``<name>_pre(fixed inputs..., hl_v *pre)`` into
+    ``<NAME>_NPRE`` vectors (times ``K``), and ``<name>(other inputs..., const hl_v *pre, outputs...)``
+    reads it.
     """
     ops, order, outputs, invariant = _program(kernel, fixed)
     outs = kernel.core_outputs()
     name = name or kernel.name + "_lanes"
     K = interleave
     used_hot = {a for v in order if not invariant[v] for a in ops[v][1]} | {v for _, _, v in outputs}
-    cached = [v for v in order if invariant[v] and v in used_hot] if fixed else []
+    split = fixed is not None
+    fixed = fixed or ()
+    cached = [v for v in order if invariant[v] and v in used_hot] if split else []
     slot = {v: i for i, v in enumerate(cached)}
 
     # sin and cos of one argument: one reduction, both polynomials
@@ -332,19 +338,19 @@ def lanes_function(kernel: Kernel, name: str | None = None, interleave: int = 1,
 
     text = []
     hot_inputs = [a for a in kernel.inputs if a.name not in fixed]
-    if fixed:
+    if split:
         pre_inputs = [a for a in kernel.inputs if a.name in fixed]
-        lines = [f"#define {name.upper()}_NPRE {max(len(cached), 1)}",
-                 f"static void {name}_pre({', '.join(f'const hl_v *{a.name}' for a in pre_inputs)}, hl_v *pre) {{"]
+        pre_params = ", ".join([*(f"const hl_v *{a.name}" for a in pre_inputs), "hl_v *pre"])
+        lines = [f"#define {name.upper()}_NPRE {max(len(cached), 1)}", f"static void {name}_pre({pre_params}) {{"]
         needed = _closure(ops, cached)
         lines += body([v for v in order if v in needed], False)
         lines += [f"    pre[{slot[v] * K + u}] = v{v}_{u};" for v in cached for u in range(K)]
-        lines += [f"    (void){a.name};" for a in pre_inputs] + ["}", ""]
+        lines += [f"    (void){a.name};" for a in pre_inputs] + ["    (void)pre;", "}", ""]
         text += lines
-    params = ([f"const hl_v *{a.name}" for a in hot_inputs] + (["const hl_v *pre"] if fixed else [])
+    params = ([f"const hl_v *{a.name}" for a in hot_inputs] + (["const hl_v *pre"] if split else [])
               + [f"hl_v *{a.name}" for a in outs])
     lines = [f"static void {name}({', '.join(params)}) {{"]
-    lines += [f"    (void){a.name};" for a in hot_inputs] + (["    (void)pre;"] if fixed else [])
+    lines += [f"    (void){a.name};" for a in hot_inputs] + (["    (void)pre;"] if split else [])
     lines += body([v for v in order if v in _closure(ops, [v for _, _, v in outputs], stop=set(slot))], True)
     lines += [f"    {outs[o].name}[{i * K + u}] = v{v}_{u};" for o, i, v in outputs for u in range(K)]
     text += lines + ["}", ""]

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: cd9bafc49f56af85d68eec659492b51403123020e6ad6503fc47c368052d0f05 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: e32d67731fc35c3cb3fd11e610c04cf9622178e6a6dab5e61a5ac5a7646104e4 */
 /* hybrid_casadi: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
    Emitted by the casadi backend of hybrid's codegen (SymPy 1.14.0, CasADi 3.8.2), generator version 4.
    Compile: cc -std=c99 -O2 -c hybrid_casadi.c (link with -lm). */
@@ -1784,15 +1784,19 @@ static int all_finite(const double *v, int n) {
     return 1;
 }
 
+#if defined(__GNUC__)
+#define HYBRID_LANES 1
 #include <math.h>
 #include <string.h>
 
+#ifndef HL_W /* a build may fix it (1: one run at a time) */
 #if defined(__AVX512F__)
 #define HL_W 8
 #elif defined(__AVX__)
 #define HL_W 4
 #else
 #define HL_W 2
+#endif
 #endif
 typedef double hl_v __attribute__((vector_size(HL_W * 8)));
 typedef long long hl_i __attribute__((vector_size(HL_W * 8)));
@@ -1926,7 +1930,7 @@ static inline hl_v hl_tanh(hl_v x) {
             - 1.61468768441708447952e+03) / (((z + 1.12811678491632931402e+02) * z + 2.23548839060100448583e+03) * z
             + 4.84406305325125486048e+03), r);
     }
-    return r;
+    return hl_select(x == 0.0, x, r); /* tanh(-0) = -0 */
 }
 
 HL_MAP1(hl_acos, acos)
@@ -1948,6 +1952,9 @@ HL_MAP2(hl_atan2, atan2)
 HL_MAP2(hl_fmod, fmod)
 HL_MAP2(hl_hypot, hypot)
 HL_MAP2(hl_pow, pow)
+#else
+#define HYBRID_LANES 0
+#endif
 
 int hybrid_casadi_arm_kinematics(const double *q, const double *qd, const double *arm, double *r, double *J, double *Jdqd) {
     arm_kinematics_core(q, qd, arm, r, J, Jdqd);
@@ -1978,6 +1985,7 @@ int hybrid_casadi_decoupling_law_plane(const double *q, const double *qd, const 
     return (all_finite(F, 2) && all_finite(tau, 2) && all_finite(cond, 1)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
+#if HYBRID_LANES
 #define DECOUPLING_LAW_PLANE_LANES_NPRE 21
 static void decoupling_law_plane_lanes_pre(const hl_v *arm, const hl_v *surface, const hl_v *opts, hl_v *pre) {
     const hl_v v9_0 = arm[1];
@@ -2036,6 +2044,7 @@ static void decoupling_law_plane_lanes_pre(const hl_v *arm, const hl_v *surface,
     (void)arm;
     (void)surface;
     (void)opts;
+    (void)pre;
 }
 
 static void decoupling_law_plane_lanes(const hl_v *q, const hl_v *qd, const hl_v *a, const hl_v *Fc, const hl_v *pre, hl_v *F, hl_v *tau, hl_v *cond) {
@@ -2258,6 +2267,16 @@ int hybrid_casadi_decoupling_law_plane_batch(int nstates, const double *q, const
     }
     return failed;
 }
+#else
+int hybrid_casadi_decoupling_law_plane_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
+    int i, failed = 0;
+    for (i = 0; i < nstates; ++i) {
+        status[i] = hybrid_casadi_decoupling_law_plane(q + (long)i * 2, qd + (long)i * 2, a + (long)i * 2, Fc + (long)i * 2, arm, surface, opts, singular_tol, F + (long)i * 2, tau + (long)i * 2);
+        failed += status[i] != HYBRID_OK;
+    }
+    return failed;
+}
+#endif
 
 int hybrid_casadi_task_measurement_plane(const double *q, const double *qd, const double *Fc, const double *arm, const double *surface, double *r, double *rd, double *v, double *f) {
     task_measurement_plane_core(q, qd, Fc, arm, surface, r, rd, v, f);
@@ -2299,6 +2318,7 @@ int hybrid_casadi_plant_outputs_plane(const double *x, const double *arm, const 
     return (all_finite(y, 14)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
+#if HYBRID_LANES
 #define PLANT_OUTPUTS_PLANE_LANES_NPRE 13
 static void plant_outputs_plane_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
     const hl_v v0_0 = arm[1];
@@ -2338,6 +2358,7 @@ static void plant_outputs_plane_lanes_pre(const hl_v *arm, const hl_v *plant, co
     (void)arm;
     (void)plant;
     (void)surface;
+    (void)pre;
 }
 
 static void plant_outputs_plane_lanes(const hl_v *x, const hl_v *pre, hl_v *y) {
@@ -2481,6 +2502,16 @@ int hybrid_casadi_plant_outputs_plane_batch(int nstates, const double *x, const 
     }
     return failed;
 }
+#else
+int hybrid_casadi_plant_outputs_plane_batch(int nstates, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
+    int i, failed = 0;
+    for (i = 0; i < nstates; ++i) {
+        status[i] = hybrid_casadi_plant_outputs_plane(x + (long)i * 8, arm, plant, surface, y + (long)i * 14);
+        failed += status[i] != HYBRID_OK;
+    }
+    return failed;
+}
+#endif
 
 int hybrid_casadi_task_frame_circle(const double *r, const double *rd, const double *surface, double *R, double *Rd) {
     task_frame_circle_core(r, rd, surface, R, Rd);
@@ -2494,6 +2525,7 @@ int hybrid_casadi_decoupling_law_circle(const double *q, const double *qd, const
     return (all_finite(F, 2) && all_finite(tau, 2) && all_finite(cond, 1)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
+#if HYBRID_LANES
 #define DECOUPLING_LAW_CIRCLE_LANES_NPRE 21
 static void decoupling_law_circle_lanes_pre(const hl_v *arm, const hl_v *surface, const hl_v *opts, hl_v *pre) {
     const hl_v v9_0 = arm[1];
@@ -2547,6 +2579,7 @@ static void decoupling_law_circle_lanes_pre(const hl_v *arm, const hl_v *surface
     (void)arm;
     (void)surface;
     (void)opts;
+    (void)pre;
 }
 
 static void decoupling_law_circle_lanes(const hl_v *q, const hl_v *qd, const hl_v *a, const hl_v *Fc, const hl_v *pre, hl_v *F, hl_v *tau, hl_v *cond) {
@@ -2794,6 +2827,16 @@ int hybrid_casadi_decoupling_law_circle_batch(int nstates, const double *q, cons
     }
     return failed;
 }
+#else
+int hybrid_casadi_decoupling_law_circle_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
+    int i, failed = 0;
+    for (i = 0; i < nstates; ++i) {
+        status[i] = hybrid_casadi_decoupling_law_circle(q + (long)i * 2, qd + (long)i * 2, a + (long)i * 2, Fc + (long)i * 2, arm, surface, opts, singular_tol, F + (long)i * 2, tau + (long)i * 2);
+        failed += status[i] != HYBRID_OK;
+    }
+    return failed;
+}
+#endif
 
 int hybrid_casadi_task_measurement_circle(const double *q, const double *qd, const double *Fc, const double *arm, const double *surface, double *r, double *rd, double *v, double *f) {
     task_measurement_circle_core(q, qd, Fc, arm, surface, r, rd, v, f);
@@ -2835,6 +2878,7 @@ int hybrid_casadi_plant_outputs_circle(const double *x, const double *arm, const
     return (all_finite(y, 14)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
+#if HYBRID_LANES
 #define PLANT_OUTPUTS_CIRCLE_LANES_NPRE 12
 static void plant_outputs_circle_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
     const hl_v v0_0 = arm[1];
@@ -2865,6 +2909,7 @@ static void plant_outputs_circle_lanes_pre(const hl_v *arm, const hl_v *plant, c
     (void)arm;
     (void)plant;
     (void)surface;
+    (void)pre;
 }
 
 static void plant_outputs_circle_lanes(const hl_v *x, const hl_v *pre, hl_v *y) {
@@ -3021,3 +3066,13 @@ int hybrid_casadi_plant_outputs_circle_batch(int nstates, const double *x, const
     }
     return failed;
 }
+#else
+int hybrid_casadi_plant_outputs_circle_batch(int nstates, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
+    int i, failed = 0;
+    for (i = 0; i < nstates; ++i) {
+        status[i] = hybrid_casadi_plant_outputs_circle(x + (long)i * 8, arm, plant, surface, y + (long)i * 14);
+        failed += status[i] != HYBRID_OK;
+    }
+    return failed;
+}
+#endif

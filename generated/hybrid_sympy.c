@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 5ebe80622c80f709f0d721668f8c1b008be8469251d1428dfaf412fa727de52e */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: e73a4d64539bd0e776b35456c904bd63fd3ac87c9633e489a8aa6986af60f121 */
 /* hybrid_sympy: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
    Emitted by the sympy backend of hybrid's codegen (SymPy 1.14.0), generator version 4.
    Compile: cc -std=c99 -O2 -c hybrid_sympy.c (link with -lm). */
@@ -706,15 +706,19 @@ static int all_finite(const double *v, int n) {
     return 1;
 }
 
+#if defined(__GNUC__)
+#define HYBRID_LANES 1
 #include <math.h>
 #include <string.h>
 
+#ifndef HL_W /* a build may fix it (1: one run at a time) */
 #if defined(__AVX512F__)
 #define HL_W 8
 #elif defined(__AVX__)
 #define HL_W 4
 #else
 #define HL_W 2
+#endif
 #endif
 typedef double hl_v __attribute__((vector_size(HL_W * 8)));
 typedef long long hl_i __attribute__((vector_size(HL_W * 8)));
@@ -848,7 +852,7 @@ static inline hl_v hl_tanh(hl_v x) {
             - 1.61468768441708447952e+03) / (((z + 1.12811678491632931402e+02) * z + 2.23548839060100448583e+03) * z
             + 4.84406305325125486048e+03), r);
     }
-    return r;
+    return hl_select(x == 0.0, x, r); /* tanh(-0) = -0 */
 }
 
 HL_MAP1(hl_acos, acos)
@@ -870,6 +874,9 @@ HL_MAP2(hl_atan2, atan2)
 HL_MAP2(hl_fmod, fmod)
 HL_MAP2(hl_hypot, hypot)
 HL_MAP2(hl_pow, pow)
+#else
+#define HYBRID_LANES 0
+#endif
 
 int hybrid_sympy_arm_kinematics(const double *q, const double *qd, const double *arm, double *r, double *J, double *Jdqd) {
     arm_kinematics_core(q, qd, arm, r, J, Jdqd);
@@ -900,6 +907,7 @@ int hybrid_sympy_decoupling_law_plane(const double *q, const double *qd, const d
     return (all_finite(F, 2) && all_finite(tau, 2) && all_finite(cond, 1)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
+#if HYBRID_LANES
 #define DECOUPLING_LAW_PLANE_LANES_NPRE 21
 static void decoupling_law_plane_lanes_pre(const hl_v *arm, const hl_v *surface, const hl_v *opts, hl_v *pre) {
     const hl_v v9_0 = arm[1];
@@ -958,6 +966,7 @@ static void decoupling_law_plane_lanes_pre(const hl_v *arm, const hl_v *surface,
     (void)arm;
     (void)surface;
     (void)opts;
+    (void)pre;
 }
 
 static void decoupling_law_plane_lanes(const hl_v *q, const hl_v *qd, const hl_v *a, const hl_v *Fc, const hl_v *pre, hl_v *F, hl_v *tau, hl_v *cond) {
@@ -1180,6 +1189,16 @@ int hybrid_sympy_decoupling_law_plane_batch(int nstates, const double *q, const 
     }
     return failed;
 }
+#else
+int hybrid_sympy_decoupling_law_plane_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
+    int i, failed = 0;
+    for (i = 0; i < nstates; ++i) {
+        status[i] = hybrid_sympy_decoupling_law_plane(q + (long)i * 2, qd + (long)i * 2, a + (long)i * 2, Fc + (long)i * 2, arm, surface, opts, singular_tol, F + (long)i * 2, tau + (long)i * 2);
+        failed += status[i] != HYBRID_OK;
+    }
+    return failed;
+}
+#endif
 
 int hybrid_sympy_task_measurement_plane(const double *q, const double *qd, const double *Fc, const double *arm, const double *surface, double *r, double *rd, double *v, double *f) {
     task_measurement_plane_core(q, qd, Fc, arm, surface, r, rd, v, f);
@@ -1221,6 +1240,7 @@ int hybrid_sympy_plant_outputs_plane(const double *x, const double *arm, const d
     return (all_finite(y, 14)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
+#if HYBRID_LANES
 #define PLANT_OUTPUTS_PLANE_LANES_NPRE 13
 static void plant_outputs_plane_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
     const hl_v v0_0 = arm[1];
@@ -1260,6 +1280,7 @@ static void plant_outputs_plane_lanes_pre(const hl_v *arm, const hl_v *plant, co
     (void)arm;
     (void)plant;
     (void)surface;
+    (void)pre;
 }
 
 static void plant_outputs_plane_lanes(const hl_v *x, const hl_v *pre, hl_v *y) {
@@ -1403,6 +1424,16 @@ int hybrid_sympy_plant_outputs_plane_batch(int nstates, const double *x, const d
     }
     return failed;
 }
+#else
+int hybrid_sympy_plant_outputs_plane_batch(int nstates, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
+    int i, failed = 0;
+    for (i = 0; i < nstates; ++i) {
+        status[i] = hybrid_sympy_plant_outputs_plane(x + (long)i * 8, arm, plant, surface, y + (long)i * 14);
+        failed += status[i] != HYBRID_OK;
+    }
+    return failed;
+}
+#endif
 
 int hybrid_sympy_task_frame_circle(const double *r, const double *rd, const double *surface, double *R, double *Rd) {
     task_frame_circle_core(r, rd, surface, R, Rd);
@@ -1416,6 +1447,7 @@ int hybrid_sympy_decoupling_law_circle(const double *q, const double *qd, const 
     return (all_finite(F, 2) && all_finite(tau, 2) && all_finite(cond, 1)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
+#if HYBRID_LANES
 #define DECOUPLING_LAW_CIRCLE_LANES_NPRE 21
 static void decoupling_law_circle_lanes_pre(const hl_v *arm, const hl_v *surface, const hl_v *opts, hl_v *pre) {
     const hl_v v9_0 = arm[1];
@@ -1469,6 +1501,7 @@ static void decoupling_law_circle_lanes_pre(const hl_v *arm, const hl_v *surface
     (void)arm;
     (void)surface;
     (void)opts;
+    (void)pre;
 }
 
 static void decoupling_law_circle_lanes(const hl_v *q, const hl_v *qd, const hl_v *a, const hl_v *Fc, const hl_v *pre, hl_v *F, hl_v *tau, hl_v *cond) {
@@ -1716,6 +1749,16 @@ int hybrid_sympy_decoupling_law_circle_batch(int nstates, const double *q, const
     }
     return failed;
 }
+#else
+int hybrid_sympy_decoupling_law_circle_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
+    int i, failed = 0;
+    for (i = 0; i < nstates; ++i) {
+        status[i] = hybrid_sympy_decoupling_law_circle(q + (long)i * 2, qd + (long)i * 2, a + (long)i * 2, Fc + (long)i * 2, arm, surface, opts, singular_tol, F + (long)i * 2, tau + (long)i * 2);
+        failed += status[i] != HYBRID_OK;
+    }
+    return failed;
+}
+#endif
 
 int hybrid_sympy_task_measurement_circle(const double *q, const double *qd, const double *Fc, const double *arm, const double *surface, double *r, double *rd, double *v, double *f) {
     task_measurement_circle_core(q, qd, Fc, arm, surface, r, rd, v, f);
@@ -1757,6 +1800,7 @@ int hybrid_sympy_plant_outputs_circle(const double *x, const double *arm, const 
     return (all_finite(y, 14)) ? HYBRID_OK : HYBRID_NONFINITE;
 }
 
+#if HYBRID_LANES
 #define PLANT_OUTPUTS_CIRCLE_LANES_NPRE 12
 static void plant_outputs_circle_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
     const hl_v v0_0 = arm[1];
@@ -1787,6 +1831,7 @@ static void plant_outputs_circle_lanes_pre(const hl_v *arm, const hl_v *plant, c
     (void)arm;
     (void)plant;
     (void)surface;
+    (void)pre;
 }
 
 static void plant_outputs_circle_lanes(const hl_v *x, const hl_v *pre, hl_v *y) {
@@ -1943,3 +1988,13 @@ int hybrid_sympy_plant_outputs_circle_batch(int nstates, const double *x, const 
     }
     return failed;
 }
+#else
+int hybrid_sympy_plant_outputs_circle_batch(int nstates, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
+    int i, failed = 0;
+    for (i = 0; i < nstates; ++i) {
+        status[i] = hybrid_sympy_plant_outputs_circle(x + (long)i * 8, arm, plant, surface, y + (long)i * 14);
+        failed += status[i] != HYBRID_OK;
+    }
+    return failed;
+}
+#endif

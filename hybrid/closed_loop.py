@@ -10,6 +10,8 @@ against and the path that explains a run that stopped.
 
 from __future__ import annotations
 
+import logging
+import math
 from dataclasses import dataclass
 from functools import cache
 
@@ -17,8 +19,11 @@ import numpy as np
 
 from . import native
 from .controller import Controller
+from .errors import NativeBuildError
 from .experiment import Experiment
 from .plants import NativePlant, SpatialPlant
+
+log = logging.getLogger("hybrid")
 
 
 @dataclass(frozen=True)
@@ -27,6 +32,7 @@ class Loop:
 
     function: object
     ffi: object
+    key: tuple  # (plant, variant): what it was built from
     lanes: int
     blocks: tuple[tuple[str, int], ...]
     metrics: tuple[str, ...]
@@ -38,14 +44,20 @@ class Loop:
         return sum(size for _, size in self.blocks)
 
     def row(self, values: dict[str, np.ndarray]) -> np.ndarray:
-        """A run's row from its blocks by name."""
-        return np.concatenate([np.asarray(values[name], float).ravel() for name, _ in self.blocks])
+        """A run's row from its blocks by name (each of the manifest's size)."""
+        parts = [np.asarray(values[name], float).ravel() for name, _ in self.blocks]
+        wrong = [f"{name} has {len(p)} numbers, not {size}" for (name, size), p in zip(self.blocks, parts)
+                 if len(p) != size]
+        if wrong:
+            raise ValueError(f"a compiled loop's row: {'; '.join(wrong)}")
+        return np.concatenate(parts)
 
 
 @cache
-def _loop(plant: tuple, variant: tuple) -> Loop:
+def _loop(plant: tuple, variant: tuple, lanes: int | None = None) -> Loop:
     """The compiled loop of a plant (``("planar", surface kind)`` or ``("spatial", chain, name, surface
-    spec)``) and a controller step (:meth:`Controller.step_variant`, as sorted items)."""
+    spec)``) and a controller step (:meth:`Controller.step_variant`, as sorted items); ``lanes=1``: the
+    build for one run at a time."""
     from importlib.metadata import version
 
     from codegen.emit import fingerprint
@@ -55,20 +67,32 @@ def _loop(plant: tuple, variant: tuple) -> Loop:
 
     v = dict(variant)
     kind = plant[1] if plant[0] == "planar" else f"{plant[2]}_{plant[3].kind}"
-    prefix = c_identifier(f"hybrid_{v['name']}_{kind}_{v['step']}_loop")
+    prefix = c_identifier(f"hybrid_{v['name']}_{kind}_{v['step']}_loop{'_one' if lanes == 1 else ''}")
     plant_key = list(plant) if plant[0] == "planar" else ["spatial", _chain_key(plant[1]), plant[3].key()]
     key = {"chain": _chain_key(v["chain"]), "surface": v["spec"].key(), "axes": list(v["axes"]), "plant": plant_key,
            **{k: v[k] for k in ("desired_frame", "position_error", "step")}, "generator": fingerprint(),
-           "casadi": version("casadi"), "sympy": version("sympy"), "prefix": prefix}
-    folder = native.generated_unit(prefix, key, lambda: _build(prefix, plant, v).files)
+           "casadi": version("casadi"), "sympy": version("sympy"), "prefix": prefix, "lanes": lanes}
+    folder = native.generated_unit(prefix, key, lambda: _build(prefix, plant, v, lanes).files)
     module, manifest = native.load_generated(folder, prefix)
     loop = manifest["closed_loop"]
-    return Loop(getattr(module.lib, loop["symbol"]), module.ffi, int(getattr(module.lib, loop["lanes_symbol"])()),
-                tuple((b["name"], b["size"]) for b in loop["blocks"]), tuple(loop["metrics"]), len(loop["state"]),
-                loop["nq"])
+    return Loop(getattr(module.lib, loop["symbol"]), module.ffi, (plant, variant),
+                int(getattr(module.lib, loop["lanes_symbol"])()),
+                tuple((b["name"], b["size"]) for b in loop["blocks"]), tuple(loop["metrics"]), loop["nx"], loop["nq"])
 
 
-def _build(prefix: str, plant: tuple, v: dict):
+@cache
+def _available_loop(plant: tuple, variant: tuple, lanes: int | None = None) -> Loop | None:
+    """:func:`_loop`, or None (said once) when it cannot be built here: its C needs GCC's or Clang's
+    vector extensions, and without them every run takes the Python runner."""
+    try:
+        return _loop(plant, variant, lanes)
+    except NativeBuildError as exc:
+        log.warning("hybrid: the compiled closed loop cannot be built (%s); runs take the Python runner",
+                    str(exc).splitlines()[0])
+        return None
+
+
+def _build(prefix: str, plant: tuple, v: dict, lanes: int | None):
     from codegen.closed_loop import LoopSpec, build_closed_loop_unit
     from codegen.controller_step import controller_kernels
 
@@ -89,7 +113,7 @@ def _build(prefix: str, plant: tuple, v: dict):
     info = {"plant": plant[0], "surface": plant[1] if plant[0] == "planar" else plant[3].kind, "step": v["step"],
             "robot": v["name"]}
     return build_closed_loop_unit(LoopSpec(rhs, outputs, steps[v["step"]], force), prefix, f"{what}: {v['step']}",
-                                  info)
+                                  info, lanes)
 
 
 @dataclass(frozen=True)
@@ -104,7 +128,8 @@ class Prepared:
 
 def prepare(exp, x0: np.ndarray | None = None) -> Prepared | None:
     """``exp`` (the paper's experiment or a 3-D one) as a row of the compiled loop, after the checks
-    ``simulate`` makes (a refused experiment raises their HybridError); None when it cannot run there."""
+    ``simulate`` makes of the settings (a refused experiment raises their HybridError; the record's
+    memory is ``simulate``'s to check: a sweep keeps none); None when it cannot run there."""
     from .simulation import check_path, initial_state
     from .tracing import TracingExperiment, initial_tracing_state
 
@@ -121,7 +146,9 @@ def prepare(exp, x0: np.ndarray | None = None) -> Prepared | None:
         x0 = initial_state(exp) if x0 is None else x0
         check_path(exp)
         plant, given = ("planar", exp.surface.kind), NativePlant.inputs(exp)
-    loop = _loop(plant, tuple(sorted(ctrl.step_variant().items())))
+    loop = _available_loop(plant, tuple(sorted(ctrl.step_variant().items())))
+    if loop is None:
+        return None
     fs, vs = exp.force_reference, exp.speed_reference
     values = {"x0": x0, "force_step": (fs.before, fs.after, fs.at), "speed_step": (vs.before, vs.after, vs.at),
               **{f"plant.{k}": v for k, v in given.items()},
@@ -133,7 +160,8 @@ def prepare(exp, x0: np.ndarray | None = None) -> Prepared | None:
 @dataclass
 class Outcome:
     """One compiled run: ``status`` (0 ok, else the C status code), the sample where it stopped
-    (-1), its metrics by name, and with ``record`` its states and torques per step."""
+    (-1), its metrics by name (NaN for a run that stopped), and with ``record`` its states and
+    torques per step (NaN after a stop)."""
 
     status: int
     failed_sample: int
@@ -152,12 +180,15 @@ def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
         first = prepared[members[0]]
         loop, (n_samples, per_sample, h, sample_time, tol) = first.loop, first.settings
         n = len(members)
+        if n == 1:  # one run alone: the one-lane build (same row, same arithmetic), built on first use
+            loop = _available_loop(*loop.key, lanes=1) or loop
         runs = np.ascontiguousarray(np.stack([prepared[i].row for i in members]))
         metrics = np.empty((n, len(loop.metrics)))
         status, failed = np.empty(n, np.intc), np.empty(n, np.intc)
         steps = n_samples * per_sample + 1
-        states = np.empty((n, steps, loop.nx)) if record else None
-        taus = np.empty((n, steps, loop.nq)) if record else None
+        # a run that stopped leaves the rest of its rows NaN
+        states = np.full((n, steps, loop.nx), np.nan) if record else None
+        taus = np.full((n, steps, loop.nq), np.nan) if record else None
         ffi = loop.ffi
         loop.function(n, ffi.from_buffer("double[]", runs), n_samples, per_sample, h, sample_time, tol,
                       ffi.from_buffer("double[]", metrics), ffi.from_buffer("int[]", status),
@@ -165,8 +196,9 @@ def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
                       ffi.from_buffer("double[]", states) if record else ffi.NULL,
                       ffi.from_buffer("double[]", taus) if record else ffi.NULL)
         for j, i in enumerate(members):
-            m = dict(zip(loop.metrics, metrics[j].tolist()))
-            m["contact_losses"] = int(m["contact_losses"])
+            m = dict(zip(loop.metrics, metrics[j].tolist() if status[j] == 0 else [math.nan] * len(loop.metrics)))
+            if status[j] == 0:
+                m["contact_losses"] = int(m["contact_losses"])
             outcomes[i] = Outcome(int(status[j]), int(failed[j]), m, states[j] if record else None,
                                   taus[j] if record else None)
     return outcomes

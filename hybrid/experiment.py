@@ -132,8 +132,10 @@ class Experiment(RunSettings):
 
     ``arm`` is the true arm; the controller's model is ``arm.with_model_error(model_error,
     viscous_compensation)``. ``frame``: task frame at the actual contact point ``R(r)`` or
-    at the desired one ``R(r_d)`` (the paper's Figure 3). ``backend``: which compiled unit
-    runs the plant and the law, or ``"numpy"`` for the plain NumPy reference path.
+    at the desired one ``R(r_d)`` (the paper's Figure 3). ``backend``: which committed unit
+    runs the plant and the law in the Python runner (a run in the compiled loop,
+    :mod:`hybrid.closed_loop`, does not depend on it), or ``"numpy"`` for the plain NumPy
+    reference path.
     ``singular_tol``: the run stops when ``2 |det J| / |J|_F^2`` (about ``|sin q2|``) at a
     control sample falls below it.
     """

@@ -213,7 +213,10 @@ def _planar(cls, arm: Arm) -> Robot:
     chain = rb.Chain(joints, eye, (arm.L2, 0.0, 0.0))
     links = tuple(LinkInertia(m, (d, 0.0, 0.0), ((inertia, 0.0, 0.0), (0.0, inertia, 0.0), (0.0, 0.0, inertia)))
                   for m, d, inertia in ((arm.m1, arm.d1, arm.I1), (arm.m2, arm.d2, arm.I2)))
-    limits = JointLimits(*(np.full(2, v) for v in (-math.inf, math.inf, math.inf, math.inf)))
+    bounds = [np.full(2, v) for v in (-math.inf, math.inf, math.inf, math.inf)]
+    for b in bounds:
+        b.setflags(write=False)  # the robot is shared by every caller with an equal arm
+    limits = JointLimits(*bounds)
     return cls("planar_arm", chain, links, (arm.V1, arm.V2), (0.0, -arm.gravity, 0.0), limits)
 
 

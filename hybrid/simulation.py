@@ -112,10 +112,12 @@ def check_path(exp: Experiment) -> None:
 # ---------------------------------------------------------------------- runner
 
 
-def simulate(exp, plant: str = "generated") -> SimulationResult:
+def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> SimulationResult:
     """Run ``exp`` (the paper's :class:`Experiment` or a :class:`~hybrid.tracing.TracingExperiment`):
     controller sampled every ``sample_time``, plant RK4 every ``step``. ``plant="mujoco"`` runs the
-    paper's experiment with MuJoCo as the plant (:mod:`hybrid.mujoco_plant`)."""
+    paper's experiment with MuJoCo as the plant (:mod:`hybrid.mujoco_plant`). With ``compiled=False``
+    the Python runner runs it even where the compiled loop could (the reference that loop is tested
+    against; equal within rounding)."""
     if plant not in ("generated", "mujoco"):
         raise HybridError(f"plant = {plant!r}; give 'generated' (the compiled plant) or 'mujoco'")
     from .tracing import TracingExperiment, initial_tracing_state
@@ -124,7 +126,7 @@ def simulate(exp, plant: str = "generated") -> SimulationResult:
         if plant == "mujoco":
             raise HybridError("the MuJoCo plant runs the paper's experiment; the 3-D one runs on the generated plant")
         spatial = SpatialPlant(exp)
-        return _compiled_or_run(exp, spatial, initial_tracing_state(exp, spatial))
+        return _compiled_or_run(exp, spatial, initial_tracing_state(exp, spatial), compiled)
     if not isinstance(exp, Experiment):
         raise HybridError(f"simulate() takes an experiment (see hybrid.paper_experiment() and "
                           f"hybrid.tracing_experiment()), got {type(exp).__name__}")
@@ -139,13 +141,14 @@ def simulate(exp, plant: str = "generated") -> SimulationResult:
         from . import reference  # the reference path only: the compiled runtime does not need it
 
         return run(exp, reference.NumpyPlant(exp), reference.NumpyController(exp), x0)
-    return _compiled_or_run(exp, NativePlant(exp), x0)
+    return _compiled_or_run(exp, NativePlant(exp), x0, compiled)
 
 
-def _compiled_or_run(exp, plant, x0: np.ndarray) -> SimulationResult:
+def _compiled_or_run(exp, plant, x0: np.ndarray, compiled: bool = True) -> SimulationResult:
     """The whole run in compiled C when the loop takes it (as a sweep runs it), else, and for the
     account of a run that stopped there, the Python runner."""
-    prepared = closed_loop.prepare(exp, x0)
+    check_memory(exp, plant.record)
+    prepared = closed_loop.prepare(exp, x0) if compiled else None
     if prepared is not None:
         done = closed_loop.run([prepared], record=True)[0]
         if done.status == 0:

@@ -228,16 +228,17 @@ def run_points(base, chunk: list[tuple[int, dict]]) -> list[dict]:
         else:
             compiled.append((index, settings, exp, prepared))
     for (index, settings, exp, _), outcome in zip(compiled, closed_loop.run([c[3] for c in compiled])):
+        # a run that stopped: the Python runner says where and why
         rows[index] = ({"run": index, **settings, **outcome.metrics, "status": "ok", "error": ""}
-                       if outcome.status == 0 else _simulated_row(index, settings, exp))
+                       if outcome.status == 0 else _simulated_row(index, settings, exp, compiled=False))
     return [rows[index] for index, _ in chunk]
 
 
-def _simulated_row(index: int, settings: dict, exp) -> dict:
+def _simulated_row(index: int, settings: dict, exp, compiled: bool = True) -> dict:
     from .simulation import simulate
 
     try:
-        res = simulate(exp)
+        res = simulate(exp, compiled=compiled)
     except Exception as exc:  # noqa: BLE001 - every run is a row, even one that meets a defect of ours
         return _failure_row(index, settings, exc)
     return {"run": index, **settings, **res.metrics, "status": "ok", "error": ""}

@@ -101,11 +101,34 @@ def test_lanes_do_not_depend_on_their_neighbours_and_a_stopped_run_stops_alone()
                 assert together[i].metrics[name] == pytest.approx(value, rel=1e-12, abs=1e-15, nan_ok=True)
     stopped = together[7]
     assert stopped.status != 0 and 0 <= stopped.failed_sample < exps[7].n_samples
+    assert all(math.isnan(v) for v in stopped.metrics.values())
+    recorded = closed_loop.run([prepared[7]], record=True)[0]  # alone: the one-lane build
+    last = (recorded.failed_sample + 1) * exps[7].steps_per_sample + 1
+    assert np.isnan(recorded.states[last:]).all() and np.isfinite(recorded.states[:2]).all()
     with pytest.raises(hybrid.SimulationError) as info:
         hybrid.simulate(exps[7])
     sample_time = exps[7].sample_time
     assert abs(info.value.time - stopped.failed_sample * sample_time) <= sample_time + 1e-12
     assert all(o.status == 0 for i, o in enumerate(together) if i != 7)
+
+
+def test_simulate_runs_the_compiled_loop_and_the_python_runner_agrees():
+    exp = hybrid.paper_experiment(duration=0.8, model_error=0.25)
+    compiled, python = hybrid.simulate(exp), hybrid.simulate(exp, compiled=False)
+    np.testing.assert_allclose(compiled.state, python.state, rtol=1e-7, atol=1e-9)
+    for name, value in python.metrics.items():
+        assert compiled.metrics[name] == pytest.approx(value, rel=1e-6, abs=1e-10, nan_ok=True), name
+    # a sweep's row is the compiled loop's own number, to the last bit
+    row = hybrid.sweep(exp, {"model_error": [0.25]}, workers=1).iloc[0]
+    assert all(row[k] == v or (math.isnan(v) and math.isnan(row[k])) for k, v in compiled.metrics.items())
+
+
+def test_a_3d_record_too_big_for_memory_is_refused_before_the_run(monkeypatch):
+    import hybrid.simulation as simulation
+
+    monkeypatch.setattr(simulation, "MEMORY_FRACTION", 1e-12)
+    with pytest.raises(hybrid.HybridError, match="record needs"):
+        hybrid.simulate(hybrid.tracing_experiment(duration=0.1))
 
 
 def test_what_runs_in_python_is_not_compiled():
@@ -124,14 +147,17 @@ def vector_math(tmp_path_factory):
     kernel = Kernel("f", (Arg("x", sp.Matrix([x])),),
                     (Arg("y", sp.Matrix([sp.sin(x), sp.cos(x), sp.tanh(x), sp.exp(x / 64), sp.sqrt(sp.Abs(x))])),),
                     "vector math")
-    source = PRELUDE + libm_maps() + lanes_function(kernel) + """
+    # (split with no fixed input: a _pre function that computes what depends on nothing)
+    source = PRELUDE + libm_maps() + lanes_function(kernel, fixed=()) + """
 int lanes(void) { return HL_W; }
 void f_many(int n, const double *x, double *y) {
     int i, l, j;
+    hl_v pre[F_LANES_NPRE];
+    f_lanes_pre(pre);
     for (i = 0; i + HL_W <= n; i += HL_W) {
         hl_v in[1], out[5];
         for (l = 0; l < HL_W; ++l) in[0][l] = x[i + l];
-        f_lanes(in, out);
+        f_lanes(in, pre, out);
         for (j = 0; j < 5; ++j) for (l = 0; l < HL_W; ++l) y[(long)j * n + i + l] = out[j][l];
     }
 }
