@@ -238,7 +238,7 @@ def _check_link(joint: str, link: LinkInertia) -> None:
         raise HybridError(f"mass of the link moved by '{joint}' is {link.mass} kg; give a mass >= 0")
     I = _vector(f"inertia of the link moved by '{joint}'", link.inertia, (3, 3))  # noqa: E741
     _vector(f"centre of mass of the link moved by '{joint}'", link.com, (3,))
-    if not np.allclose(I, I.T, rtol=0, atol=1e-12 * max(1.0, np.abs(I).max())):
+    if np.abs(I - I.T).max() > 1e-12 * max(1.0, np.abs(I).max()):
         raise HybridError(f"inertia of the link moved by '{joint}' is not symmetric; give a symmetric 3x3 tensor")
     problem = inertia_problem(I)
     if problem:

@@ -69,10 +69,13 @@ def inertia_problem(I: np.ndarray) -> str | None:  # noqa: E741
     positive semi-definite, or breaking the triangle inequality), or None when it can."""
     eig = np.linalg.eigvalsh(0.5 * (I + I.T))
     tol = 1e-9 * max(float(np.trace(I)), 1e-300)
-    moments = ", ".join(f"{e:.4g}" for e in eig)
     if eig[0] < -tol:
-        return f"is not positive semi-definite (eigenvalues {moments} kg m^2)"
+        return f"is not positive semi-definite (eigenvalues {_moments(eig)} kg m^2)"
     if eig[0] + eig[1] < eig[2] - tol:
-        return (f"has principal moments {moments} kg m^2, which break the triangle inequality (the two "
+        return (f"has principal moments {_moments(eig)} kg m^2, which break the triangle inequality (the two "
                 "smaller must add up to at least the largest): no rigid body has them")
     return None
+
+
+def _moments(eig) -> str:
+    return ", ".join(f"{e:.4g}" for e in eig)
