@@ -39,10 +39,6 @@ class Loop:
     nx: int
     nq: int
 
-    @property
-    def width(self) -> int:
-        return sum(size for _, size in self.blocks)
-
     def row(self, values: dict[str, np.ndarray]) -> np.ndarray:
         """A run's row from its blocks by name (each of the manifest's size)."""
         parts = [np.asarray(values[name], float).ravel() for name, _ in self.blocks]
