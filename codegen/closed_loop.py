@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import casadi as ca
 import sympy as sp
 
-from .emit import STATUS, Unit, comment_safe, manifest, stamp
+from .emit import Unit, comment_safe, manifest, rk4_step, stamp, status_defines
 from .kernel import Arg, Kernel
 from .lanes import PRELUDE, lanes_function, libm_maps
 
@@ -35,8 +35,6 @@ METRICS = ("force_overshoot_N", "force_overshoot_percent", "force_settling_time_
            "speed_overshoot_after_speed_step_m_per_s", "steady_state_force_error_N",
            "steady_state_speed_error_m_per_s", "rms_force_error_N", "rms_speed_error_m_per_s", "max_penetration_m",
            "contact_losses", "time_out_of_contact_s")
-#: independent vectors of lanes evaluated together (see :func:`codegen.lanes.lanes_function`)
-INTERLEAVE = 1
 #: controller-step inputs the loop drives itself (the rest are the run's parameters)
 _DRIVEN = ("q", "qd", "Fc", "integrals", "t", "yd_extra", "yd_rate", "target")
 
@@ -105,34 +103,22 @@ def _driver(prefix: str, spec: LoopSpec) -> str:
     nb, nf, m = at, len(spec.force_columns), step.inputs[3].size // 2
     ns, nm = nf + len(SIGNALS), len(METRICS) + nq
     iF, iv, ipen, iN = (nf + i for i in range(4))
-    plant = {a.name: f"blk + {offset['plant.' + a.name]} * HL_K"
-             for a in (*rhs.inputs[2:], *spec.outputs.inputs[1:])}
+    plant = {a.name: f"blk + {offset['plant.' + a.name]}" for a in (*rhs.inputs[2:], *spec.outputs.inputs[1:])}
     # the run's arrays each kernel holds fixed, then where its values computed once go
     held = ", ".join([*(plant[a.name] for a in rhs.inputs[2:]), "pre_rhs"])
     shown = ", ".join([*(plant[a.name] for a in spec.outputs.inputs[1:]), "pre_sig"])
-    params = ", ".join([*(f"blk + {offset['controller.' + a.name]} * HL_K" for a in step.inputs[len(_DRIVEN):]),
+    params = ", ".join([*(f"blk + {offset['controller.' + a.name]}" for a in step.inputs[len(_DRIVEN):]),
                         "pre_step"])
     outs = step.core_outputs()
-    out_decl = " ".join(f"hl_v o_{a.name}[{a.size} * HL_K];" for a in outs)
+    out_decl = " ".join(f"hl_v o_{a.name}[{a.size}];" for a in outs)
     out_args = ", ".join(f"o_{a.name}" for a in outs)
     tau, z_next = f"o_{outs[0].name}", f"o_{outs[1].name}"
-    guards = []
-    for g in step.guards:
-        tol = g.tolerance if isinstance(g.tolerance, str) else repr(float(g.tolerance))
-        guards.append(f"            flag(&run[u], hl_fabs(o_{g.name}[u]) < {tol}, {g.status}, k);")
-    finite = " | ".join(f"not_finite(o_{a.name}, {a.size}, u)" for a in outs)
-    fs, vs = offset["force_step"], offset["speed_step"]
+    guards = "".join(f"        flag(&run, hl_fabs(o_{g.name}[0]) < {g.c_tolerance}, {g.status}, k);\n"
+                     for g in step.guards)
+    finite = " | ".join(f"hl_not_finite(o_{a.name}, {a.size})" for a in outs)
+    rk4 = rk4_step(f"plant_rhs_lanes({{state}}, {tau}, pre_rhs, {{k}});".format, "x", nx, "x", " " * 12, "j")
+    fs, vs, x0 = offset["force_step"], offset["speed_step"], offset["x0"]
     return f"""
-/* element i of vector u of an interleaved array */
-#define AT(a, i) (a)[(i) * HL_K + u]
-
-static hl_i not_finite(const hl_v *v, int n, int u) {{
-    hl_i bad = hl_splat(0.0) != 0.0;
-    int i;
-    for (i = 0; i < n; ++i) bad |= (AT(v, i) - AT(v, i)) != 0.0;
-    return bad;
-}}
-
 typedef struct {{
     int status[HL_W], sample[HL_W];
     hl_i alive;
@@ -157,19 +143,19 @@ typedef struct {{
         pen, in_prev, losses, t_out, tau[{nq}];
 }} lanes_metrics;
 
-static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, int u, long i,
-                        double h, double end) {{
-    const hl_v fb = AT(blk, {fs}), fa = AT(blk, {fs + 1}), fat = AT(blk, {fs + 2});
-    const hl_v vb = AT(blk, {vs}), va = AT(blk, {vs + 1}), vat = AT(blk, {vs + 2});
+static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, long i, double h,
+                        double end) {{
+    const hl_v fb = blk[{fs}], fa = blk[{fs + 1}], fat = blk[{fs + 2}];
+    const hl_v vb = blk[{vs}], va = blk[{vs + 1}], vat = blk[{vs + 2}];
     const double ti = (double)i * h;
     const hl_v t = hl_splat(ti), idx = hl_splat((double)i);
-    const hl_v F = AT(s, {iF}), v = AT(s, {iv}), pen = AT(s, {ipen});
+    const hl_v F = s[{iF}], v = s[{iv}], pen = s[{ipen}];
     const hl_v Fd = hl_select(t < fat, fb, fa), vd = hl_select(t < vat, vb, va);
     const hl_v step = fa - fb, sgn = hl_select(step >= 0.0, hl_splat(1.0), hl_splat(-1.0));
     const hl_v f_end = hl_select(vat > fat, vat, hl_splat(end));
     const hl_v band = 0.02 * hl_select(fa != 0.0, hl_fabs(fa), hl_fabs(step));
     const hl_i in_f = (t >= fat) & (t < f_end), in_v = t >= vat, last = t >= end - 0.2;
-    const hl_i contact = AT(s, {iN}) > 0.0;
+    const hl_i contact = s[{iN}] > 0.0;
     int j;
     mt->peak = hl_select(in_f & (sgn * F > mt->peak), sgn * F, mt->peak);
     mt->n_f += hl_select(in_f, hl_splat(1.0), hl_splat(0.0));
@@ -192,14 +178,13 @@ static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const
     }}
     mt->in_prev = hl_bool(contact);
     for (j = 0; j < {nq}; ++j) {{
-        const hl_v a = hl_fabs(AT(tau, j));
+        const hl_v a = hl_fabs(tau[j]);
         mt->tau[j] = hl_select(a > mt->tau[j], a, mt->tau[j]);
     }}
 }}
 
-static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int u, int l, long rows, double h,
-                            double *out) {{
-    const double fb = AT(blk, {fs})[l], fa = AT(blk, {fs + 1})[l], vb = AT(blk, {vs})[l], va = AT(blk, {vs + 1})[l];
+static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int l, long rows, double h, double *out) {{
+    const double fb = blk[{fs}][l], fa = blk[{fs + 1}][l], vb = blk[{vs}][l], va = blk[{vs + 1}][l];
     int j;
     for (j = 0; j < 6; ++j) out[j] = NAN;
     if (mt->n_f[l] > 0 && fa != fb) {{
@@ -226,120 +211,91 @@ static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int u, int
 
 static void record(double *states, double *taus, int g, int used, long row, long rows, const hl_v *x,
                    const hl_v *tau) {{
-    int u, l, j, r;
+    int l, j;
     if (!states && !taus) return;
-    for (u = 0; u < HL_K; ++u) {{
-        for (l = 0; l < HL_W; ++l) {{
-            long at;
-            r = u * HL_W + l;
-            if (r >= used) return;
-            at = (long)(g + r) * rows + row;
-            if (states) for (j = 0; j < {nx}; ++j) states[at * {nx} + j] = AT(x, j)[l];
-            if (taus) for (j = 0; j < {nq}; ++j) taus[at * {nq} + j] = AT(tau, j)[l];
-        }}
+    for (l = 0; l < used; ++l) {{
+        const long at = (long)(g + l) * rows + row;
+        if (states) for (j = 0; j < {nx}; ++j) states[at * {nx} + j] = x[j][l];
+        if (taus) for (j = 0; j < {nq}; ++j) taus[at * {nq} + j] = tau[j][l];
     }}
 }}
 
-/* the runs g .. g + used - 1 as one group of HL_K vectors of HL_W lanes (unused lanes repeat run g) */
+/* the runs g .. g + used - 1 as one group of HL_W lanes (unused lanes repeat run g) */
 static void run_lanes(int g, int used, const double *runs, int n_samples, int steps_per_sample, double h,
                       double sample_time, double singular_tol, double *metrics, int *status, int *failed_sample,
                       double *states, double *taus) {{
-    hl_v pre_rhs[PLANT_RHS_LANES_NPRE * HL_K], pre_sig[LOOP_SIGNALS_LANES_NPRE * HL_K],
-        pre_step[{step.name.upper()}_LANES_NPRE * HL_K];
-    hl_v blk[{nb} * HL_K], x[{nx} * HL_K], xt[{nx} * HL_K], k1[{nx} * HL_K], k2[{nx} * HL_K], k3[{nx} * HL_K],
-        k4[{nx} * HL_K], s[{ns} * HL_K], fc[6 * HL_K], z[{2 * m} * HL_K], tv[HL_K], zero[9 * HL_K];
+    hl_v pre_rhs[PLANT_RHS_LANES_NPRE], pre_sig[LOOP_SIGNALS_LANES_NPRE], pre_step[{step.name.upper()}_LANES_NPRE];
+    hl_v blk[{nb}], x[{nx}], xt[{nx}], k1[{nx}], k2[{nx}], k3[{nx}], k4[{nx}], s[{ns}], fc[6], z[{2 * m}], tv[1],
+        zero[9];
     {out_decl}
-    lanes_run run[HL_K];
-    lanes_metrics mt[HL_K];
+    lanes_run run;
+    lanes_metrics mt;
     const long rows = (long)n_samples * steps_per_sample + 1;
     const double end = (double)(rows - 1) * h;
     long row = 0;
-    int i, j, l, k, u, alive;
+    int i, j, l, k;
     (void)singular_tol;
-    for (u = 0; u < HL_K; ++u) {{
-        for (l = 0; l < HL_W; ++l) {{
-            const int r = u * HL_W + l < used ? u * HL_W + l : 0;
-            for (j = 0; j < {nb}; ++j) AT(blk, j)[l] = runs[(long)(g + r) * {nb} + j];
-            run[u].status[l] = HYBRID_OK;
-            run[u].sample[l] = -1;
-        }}
-        run[u].alive = hl_splat(0.0) == 0.0;
-        mt[u].peak = mt[u].drop = mt[u].dev = mt[u].v_max = mt[u].pen = hl_splat(-INFINITY);
-        mt[u].first_f = mt[u].last_out_f = mt[u].last_f = hl_splat(-1.0);
-        mt[u].n_f = mt[u].n_v = mt[u].sum_fe = mt[u].sum_ve = mt[u].n_last = mt[u].sum_f2 = mt[u].sum_v2
-            = mt[u].in_prev = mt[u].losses = mt[u].t_out = hl_splat(0.0);
-        for (j = 0; j < {nq}; ++j) mt[u].tau[j] = hl_splat(0.0);
+    for (l = 0; l < HL_W; ++l) {{
+        for (j = 0; j < {nb}; ++j) blk[j][l] = runs[(long)(g + (l < used ? l : 0)) * {nb} + j];
+        run.status[l] = HYBRID_OK;
+        run.sample[l] = -1;
     }}
-    for (j = 0; j < 9 * HL_K; ++j) zero[j] = hl_splat(0.0);
-    for (j = 0; j < 6 * HL_K; ++j) fc[j] = hl_splat(0.0);
-    for (j = 0; j < {2 * m} * HL_K; ++j) z[j] = hl_splat(0.0);
-    for (j = 0; j < {nx} * HL_K; ++j) x[j] = blk[{offset['x0']} * HL_K + j];
+    run.alive = hl_splat(0.0) == 0.0;
+    mt.peak = mt.drop = mt.dev = mt.v_max = mt.pen = hl_splat(-INFINITY);
+    mt.first_f = mt.last_out_f = mt.last_f = hl_splat(-1.0);
+    mt.n_f = mt.n_v = mt.sum_fe = mt.sum_ve = mt.n_last = mt.sum_f2 = mt.sum_v2 = mt.in_prev = mt.losses = mt.t_out
+        = hl_splat(0.0);
+    for (j = 0; j < {nq}; ++j) mt.tau[j] = hl_splat(0.0);
+    for (j = 0; j < 9; ++j) zero[j] = hl_splat(0.0);
+    for (j = 0; j < 6; ++j) fc[j] = hl_splat(0.0);
+    for (j = 0; j < {2 * m}; ++j) z[j] = hl_splat(0.0);
+    for (j = 0; j < {nx}; ++j) x[j] = blk[{x0} + j];
     plant_rhs_lanes_pre({held});
     loop_signals_lanes_pre({shown});
     {step.name}_lanes_pre({params});
     loop_signals_lanes(x, pre_sig, s);
-    alive = 1;
-    for (k = 0; k < n_samples && alive; ++k) {{
-        for (j = 0; j < {nf} * HL_K; ++j) fc[j] = s[j];
-        for (u = 0; u < HL_K; ++u) tv[u] = hl_splat(k * sample_time);
-        {step.name}_lanes(x, x + {nq} * HL_K, fc, z, tv, zero, zero, zero, pre_step, {out_args});
-        for (u = 0; u < HL_K; ++u) {{
-{chr(10).join(guards)}
-            flag(&run[u], {finite}, HYBRID_NONFINITE, k);
-        }}
-        for (j = 0; j < {2 * m} * HL_K; ++j) z[j] = {z_next}[j];
+    for (k = 0; k < n_samples && hl_any(run.alive); ++k) {{
+        for (j = 0; j < {nf}; ++j) fc[j] = s[j];
+        tv[0] = hl_splat(k * sample_time);
+        {step.name}_lanes(x, x + {nq}, fc, z, tv, zero, zero, zero, pre_step, {out_args});
+{guards}        flag(&run, {finite}, HYBRID_NONFINITE, k);
+        for (j = 0; j < {2 * m}; ++j) z[j] = {z_next}[j];
         if (k == 0) {{
-            for (u = 0; u < HL_K; ++u) metrics_row(&mt[u], blk, s, {tau}, u, 0, h, end);
+            metrics_row(&mt, blk, s, {tau}, 0, h, end);
             record(states, taus, g, used, 0, rows, x, {tau});
         }}
         for (i = 0; i < steps_per_sample; ++i) {{
-            plant_rhs_lanes(x, {tau}, pre_rhs, k1);
-            for (j = 0; j < {nx} * HL_K; ++j) xt[j] = x[j] + 0.5 * h * k1[j];
-            plant_rhs_lanes(xt, {tau}, pre_rhs, k2);
-            for (j = 0; j < {nx} * HL_K; ++j) xt[j] = x[j] + 0.5 * h * k2[j];
-            plant_rhs_lanes(xt, {tau}, pre_rhs, k3);
-            for (j = 0; j < {nx} * HL_K; ++j) xt[j] = x[j] + h * k3[j];
-            plant_rhs_lanes(xt, {tau}, pre_rhs, k4);
-            for (j = 0; j < {nx} * HL_K; ++j) x[j] = x[j] + h / 6.0 * (k1[j] + 2.0 * (k2[j] + k3[j]) + k4[j]);
+{rk4}
             ++row;
-            for (u = 0; u < HL_K; ++u) {{
-                flag(&run[u], not_finite(x, {nx}, u), HYBRID_NONFINITE, k);
-                /* a stopped lane restarts from its initial state: its numbers no longer matter, and
-                   they stay finite */
-                if (hl_any(~run[u].alive)) {{
-                    for (j = 0; j < {nx}; ++j) {{
-                        AT(x, j) = hl_select(run[u].alive, AT(x, j), AT(blk, {offset['x0']} + j));
-                    }}
-                }}
+            flag(&run, hl_not_finite(x, {nx}), HYBRID_NONFINITE, k);
+            /* a stopped lane restarts from its initial state: its numbers no longer matter, and they stay
+               finite */
+            if (hl_any(~run.alive)) {{
+                for (j = 0; j < {nx}; ++j) x[j] = hl_select(run.alive, x[j], blk[{x0} + j]);
             }}
             loop_signals_lanes(x, pre_sig, s);
-            for (u = 0; u < HL_K; ++u) metrics_row(&mt[u], blk, s, {tau}, u, row, h, end);
+            metrics_row(&mt, blk, s, {tau}, row, h, end);
             record(states, taus, g, used, row, rows, x, {tau});
         }}
-        alive = 0;
-        for (u = 0; u < HL_K; ++u) alive |= hl_any(run[u].alive);
     }}
-    for (u = 0; u < HL_K; ++u) {{
-        for (l = 0; l < HL_W && u * HL_W + l < used; ++l) {{
-            const int r = g + u * HL_W + l;
-            status[r] = run[u].status[l];
-            failed_sample[r] = run[u].sample[l];
-            metrics_of_lane(&mt[u], blk, u, l, rows, h, metrics + (long)r * {nm});
-        }}
+    for (l = 0; l < used; ++l) {{
+        status[g + l] = run.status[l];
+        failed_sample[g + l] = run.sample[l];
+        metrics_of_lane(&mt, blk, l, rows, h, metrics + (long)(g + l) * {nm});
     }}
 }}
 
 {_signature(prefix)} {{
     int g;
-    for (g = 0; g < nruns; g += HL_W * HL_K) {{
-        run_lanes(g, nruns - g < HL_W * HL_K ? nruns - g : HL_W * HL_K, runs, n_samples, steps_per_sample, h,
-                  sample_time, singular_tol, metrics, status, failed_sample, states, taus);
+    for (g = 0; g < nruns; g += HL_W) {{
+        run_lanes(g, nruns - g < HL_W ? nruns - g : HL_W, runs, n_samples, steps_per_sample, h, sample_time,
+                  singular_tol, metrics, status, failed_sample, states, taus);
     }}
     return HYBRID_OK;
 }}
 
 int {prefix}_lanes(void) {{
-    return HL_W * HL_K;
+    return HL_W;
 }}
 """
 
@@ -351,18 +307,15 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
     set's."""
     nq = spec.rhs.inputs[1].size
     rhs = Kernel("plant_rhs", spec.rhs.inputs, spec.rhs.outputs, spec.rhs.doc)
-    status = "\n".join(f"#define {k} {v}" for k, v in STATUS.items())
-    K = INTERLEAVE
     held = tuple(a.name for a in spec.rhs.inputs[2:])
     shown = tuple(a.name for a in spec.outputs.inputs[1:])
     params = tuple(a.name for a in spec.step.inputs[len(_DRIVEN):])
     body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py. */\n"
             "#if !defined(__GNUC__)\n#error \"the compiled closed loop needs GCC or Clang (vector extensions)\"\n"
-            f"#endif\n{f'#define HL_W {lanes}' if lanes else ''}\n{PRELUDE}\n{status}\n#define HL_K {K}\n\n"
-            f"{libm_maps()}\n"
-            f"{lanes_function(rhs, 'plant_rhs_lanes', K, held)}\n"
-            f"{lanes_function(signals_kernel(spec), 'loop_signals_lanes', K, shown)}\n"
-            f"{lanes_function(spec.step, spec.step.name + '_lanes', K, params)}\n{_driver(prefix, spec)}")
+            f"#endif\n{f'#define HL_W {lanes}' if lanes else ''}\n{PRELUDE}\n{status_defines()}\n\n{libm_maps()}\n"
+            f"{lanes_function(rhs, 'plant_rhs_lanes', held)}\n"
+            f"{lanes_function(signals_kernel(spec), 'loop_signals_lanes', shown)}\n"
+            f"{lanes_function(spec.step, spec.step.name + '_lanes', params)}\n{_driver(prefix, spec)}")
     doc = ("run nruns closed loops (rows of runs, blocks as the manifest's closed_loop.blocks), HL_W at a time: "
            "n_samples control samples of sample_time [s], steps_per_sample RK4 steps of h [s] each; writes "
            "metrics (nruns x closed_loop.metrics), status and failed_sample (-1, or the sample where a run "
@@ -372,7 +325,7 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
 /* cdef-begin */
 /* {doc}. */
 {_signature(prefix)};
-/* the runs per group: HL_W lanes (8 with AVX-512, 4 with AVX, else 2) times HL_K interleaved vectors */
+/* the runs per group: HL_W lanes (8 with AVX-512, 4 with AVX, else 2) */
 int {prefix}_lanes(void);
 /* cdef-end */
 #endif

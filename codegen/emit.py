@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+from collections.abc import Callable
 from dataclasses import dataclass
 from importlib.metadata import version
 from pathlib import Path
@@ -139,10 +140,27 @@ def _layout_doc(kernels: tuple[Kernel, ...]) -> str:
     return "\n".join(rows)
 
 
+def status_defines() -> str:
+    """The status codes as C macros."""
+    return "\n".join(f"#define {k} {v}" for k, v in STATUS.items())
+
+
+def rk4_step(rhs: Callable[..., str], x: str, n: int, out: str, indent: str, i: str = "i") -> str:
+    """C statements of one classical RK4 step of ``x`` (``n`` elements, index ``i``): ``rhs(state=, k=)``
+    is the call writing the derivative at ``state`` into ``k``; the stages go to ``k1 .. k4`` and ``xt``, the new
+    state to ``out``. Every integrator we emit takes this one formula (so they agree to the bit)."""
+    loop = f"for ({i} = 0; {i} < {n}; ++{i})"
+    lines = [rhs(state=x, k="k1"), f"{loop} xt[{i}] = {x}[{i}] + 0.5 * h * k1[{i}];",
+             rhs(state="xt", k="k2"), f"{loop} xt[{i}] = {x}[{i}] + 0.5 * h * k2[{i}];",
+             rhs(state="xt", k="k3"), f"{loop} xt[{i}] = {x}[{i}] + h * k3[{i}];",
+             rhs(state="xt", k="k4"), f"{loop} {out}[{i}] = {x}[{i}] + h / 6.0 * (k1[{i}] + 2.0 * (k2[{i}] + k3[{i}]) + k4[{i}]);"]
+    return "\n".join(indent + line for line in lines)
+
+
 def header(prefix: str, kernels: tuple[Kernel, ...], defines: dict | None = None) -> str:
     guard = prefix.upper() + "_H"
     consts = "".join(f"#define {prefix.upper()}_{k} {v}\n" for k, v in (defines or {}).items())
-    status = "\n".join(f"#define {k} {v}" for k, v in STATUS.items())
+    status = status_defines()
     protos = "\n\n".join(f"/* {comment_safe(doc)}. */\n{p}" for doc, p in prototypes(prefix, kernels))
     return f"""#ifndef {guard}
 #define {guard}
@@ -205,8 +223,7 @@ static int all_finite(const double *v, int n) {{
         lines += [f"    double {g.name}[1];" for g in k.guards]
         lines.append(f"    {k.name}_core({', '.join(core_args)});")
         for g in k.guards:  # a NaN measure is not "below": it is reported as non-finite, below
-            tol = g.tolerance if isinstance(g.tolerance, str) else repr(float(g.tolerance))
-            lines.append(f"    if (fabs({g.name}[0]) < {tol}) return {g.status};")
+            lines.append(f"    if (fabs({g.name}[0]) < {g.c_tolerance}) return {g.status};")
         finite = " && ".join(f"all_finite({a.name}, {a.size})" for a in k.core_outputs())
         lines.append(f"    return ({finite}) ? HYBRID_OK : HYBRID_NONFINITE;\n}}\n")
         out.append("\n".join(lines))
@@ -222,14 +239,7 @@ static int all_finite(const double *v, int n) {{
     double k1[{nx}], k2[{nx}], k3[{nx}], k4[{nx}], xt[{nx}];
     int i, step;
     for (step = 0; step < nsteps; ++step) {{
-        {rhs}({x}, {held}, k1);
-        for (i = 0; i < {nx}; ++i) xt[i] = {x}[i] + 0.5 * h * k1[i];
-        {rhs}(xt, {held}, k2);
-        for (i = 0; i < {nx}; ++i) xt[i] = {x}[i] + 0.5 * h * k2[i];
-        {rhs}(xt, {held}, k3);
-        for (i = 0; i < {nx}; ++i) xt[i] = {x}[i] + h * k3[i];
-        {rhs}(xt, {held}, k4);
-        for (i = 0; i < {nx}; ++i) xt[i] = {x}[i] + h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
+{rk4_step(f"{rhs}({{state}}, {held}, {{k}});".format, x, nx, "xt", " " * 8)}
         if (!all_finite(xt, {nx})) {{
             if (steps_done) *steps_done = step;
             return HYBRID_NONFINITE;
@@ -284,12 +294,10 @@ def _lanes_batch(prefix: str, k: Kernel) -> str:
 
     scatter = "\n".join(f"            for (j = 0; j < {a.size}; ++j) {a.name}[(i + l) * {a.size} + j] = o_{a.name}[j][l];"
                         for a in k.outputs)
-    guards = "".join(f"        hl_i g{n} = hl_fabs(o_{g.name}[0]) < "
-                     f"{g.tolerance if isinstance(g.tolerance, str) else repr(float(g.tolerance))};\n"
+    guards = "".join(f"        hl_i g{n} = hl_fabs(o_{g.name}[0]) < {g.c_tolerance};\n"
                      for n, g in enumerate(k.guards))
     pick = "".join(f"g{n}[l] ? {g.status} : " for n, g in enumerate(k.guards))
-    bad = "\n".join(f"        for (j = 0; j < {a.size}; ++j) bad |= (o_{a.name}[j] - o_{a.name}[j]) != 0.0;"
-                     for a in outs)
+    bad = " | ".join(f"hl_not_finite(o_{a.name}, {a.size})" for a in outs)
     decl = " ".join(f"hl_v l_{a.name}[{a.size}] = {{{{0}}}};" for a in states) + " " + " ".join(
         f"hl_v o_{a.name}[{a.size}];" for a in outs)
     shared = " ".join(f"hl_v f_{a.name}[{a.size}];" for a in fixed)
@@ -306,14 +314,14 @@ int {prefix}_{k.name}_batch(int nstates, {', '.join(_params(k))}, int *status) {
 {splat}
     {name}_pre({call_pre});
     for (i = 0; i < nstates; i += HL_W) {{
-        hl_i bad = hl_splat(0.0) != 0.0;
+        hl_i bad;
         if (i + HL_W <= nstates) {{
 {gather("i + l")}
         }} else {{
 {gather("i + l < nstates ? i + l : nstates - 1")}
         }}
         {name}({call});
-{guards}{bad}
+{guards}        bad = {bad};
         for (l = 0; l < HL_W && i + l < nstates; ++l) {{
 {scatter}
             st = {pick}bad[l] ? HYBRID_NONFINITE : HYBRID_OK;

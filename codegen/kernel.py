@@ -63,6 +63,11 @@ class Guard:
     def describe(self) -> dict:
         return {"name": self.name, "status": self.status, "tolerance": self.tolerance, "doc": self.doc}
 
+    @property
+    def c_tolerance(self) -> str:
+        """The tolerance in C: the ``singular_tol`` argument, or the number."""
+        return self.tolerance if isinstance(self.tolerance, str) else repr(float(self.tolerance))
+
 
 def conditioning_guard(expr, doc: str) -> Guard:
     """The conditioning of ``J`` compared with the caller's ``singular_tol``."""

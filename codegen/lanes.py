@@ -60,6 +60,13 @@ static inline int hl_any(hl_i m) {
     return acc != 0;
 }
 #endif
+/* the lanes where any of v[0 .. n-1] is NaN or infinite */
+static inline hl_i hl_not_finite(const hl_v *v, int n) {
+    hl_i bad = hl_splat(0.0) != 0.0;
+    int i;
+    for (i = 0; i < n; ++i) bad |= (v[i] - v[i]) != 0.0;
+    return bad;
+}
 static inline hl_v hl_fabs(hl_v x) { return (hl_v)((hl_i)x & ~(hl_i)hl_splat(-0.0)); }
 static inline hl_v hl_copysign(hl_v x, hl_v y) {
     hl_i s = (hl_i)hl_splat(-0.0);
@@ -277,24 +284,19 @@ def _schedule(ops) -> list[int]:
     return order
 
 
-def lanes_function(kernel: Kernel, name: str | None = None, interleave: int = 1,
-                   fixed: tuple[str, ...] | None = None) -> str:
+def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ...] | None = None) -> str:
     """``static void <name>(const hl_v *input..., hl_v *output...)``: the kernel on ``HL_W`` lanes.
 
     Arguments are the kernel's inputs, then its core outputs (outputs, then each guard's measure),
-    each an array of ``hl_v`` (one vector per element). With ``interleave = K`` the function
-    evaluates ``K`` independent vectors of lanes, statement by statement (element ``i`` of vector
-    ``u`` at ``[i * K + u]``). Outputs may not alias inputs.
+    each an array of ``hl_v`` (one vector per element). Outputs may not alias inputs.
 
     With ``fixed`` input names (numbers a run holds, such as its parameters; possibly none) what
     depends on them alone is computed once, by ``<name>_pre(fixed inputs..., hl_v *pre)`` into
-    ``<NAME>_NPRE`` vectors (times ``K``), and ``<name>(other inputs..., const hl_v *pre, outputs...)``
-    reads it.
+    ``<NAME>_NPRE`` vectors, and ``<name>(other inputs..., const hl_v *pre, outputs...)`` reads it.
     """
     ops, order, outputs, invariant = _program(kernel, fixed)
     outs = kernel.core_outputs()
     name = name or kernel.name + "_lanes"
-    K = interleave
     used_hot = {a for v in order if not invariant[v] for a in ops[v][1]} | {v for _, _, v in outputs}
     split = fixed is not None
     fixed = fixed or ()
@@ -320,20 +322,18 @@ def lanes_function(kernel: Kernel, name: str | None = None, interleave: int = 1,
             if p is not None and p in here and not (read_cached and (v in slot or p in slot)):
                 s_, c_ = (v, p) if op == "OP_SIN" else (p, v)
                 fused.add(p)
-                for u in range(K):
-                    lines.append(f"    hl_v v{s_}_{u}, v{c_}_{u};")
-                    lines.append(f"    hl_sincos(v{args[0]}_{u}, &v{s_}_{u}, &v{c_}_{u});")
+                lines.append(f"    hl_v v{s_}, v{c_};")
+                lines.append(f"    hl_sincos(v{args[0]}, &v{s_}, &v{c_});")
                 continue
-            for u in range(K):
-                if read_cached and v in slot:
-                    rhs = f"pre[{slot[v] * K + u}]"
-                elif op == "OP_INPUT":
-                    rhs = f"{kernel.inputs[extra[0]].name}[{extra[1] * K + u}]"
-                elif op == "OP_CONST":
-                    rhs = _constant(extra)
-                else:
-                    rhs = _OPS[op].format(a=f"v{args[0]}_{u}", b=f"v{args[1]}_{u}" if len(args) > 1 else "")
-                lines.append(f"    const hl_v v{v}_{u} = {rhs};")
+            if read_cached and v in slot:
+                rhs = f"pre[{slot[v]}]"
+            elif op == "OP_INPUT":
+                rhs = f"{kernel.inputs[extra[0]].name}[{extra[1]}]"
+            elif op == "OP_CONST":
+                rhs = _constant(extra)
+            else:
+                rhs = _OPS[op].format(a=f"v{args[0]}", b=f"v{args[1]}" if len(args) > 1 else "")
+            lines.append(f"    const hl_v v{v} = {rhs};")
         return lines
 
     text = []
@@ -341,19 +341,18 @@ def lanes_function(kernel: Kernel, name: str | None = None, interleave: int = 1,
     if split:
         pre_inputs = [a for a in kernel.inputs if a.name in fixed]
         pre_params = ", ".join([*(f"const hl_v *{a.name}" for a in pre_inputs), "hl_v *pre"])
-        lines = [f"#define {name.upper()}_NPRE {max(len(cached), 1)}", f"static void {name}_pre({pre_params}) {{"]
         needed = _closure(ops, cached)
-        lines += body([v for v in order if v in needed], False)
-        lines += [f"    pre[{slot[v] * K + u}] = v{v}_{u};" for v in cached for u in range(K)]
-        lines += [f"    (void){a.name};" for a in pre_inputs] + ["    (void)pre;", "}", ""]
-        text += lines
+        text += [f"#define {name.upper()}_NPRE {max(len(cached), 1)}", f"static void {name}_pre({pre_params}) {{",
+                 *body([v for v in order if v in needed], False),
+                 *(f"    pre[{slot[v]}] = v{v};" for v in cached),
+                 *(f"    (void){a.name};" for a in pre_inputs), "    (void)pre;", "}", ""]
     params = ([f"const hl_v *{a.name}" for a in hot_inputs] + (["const hl_v *pre"] if split else [])
               + [f"hl_v *{a.name}" for a in outs])
-    lines = [f"static void {name}({', '.join(params)}) {{"]
-    lines += [f"    (void){a.name};" for a in hot_inputs] + (["    (void)pre;"] if split else [])
-    lines += body([v for v in order if v in _closure(ops, [v for _, _, v in outputs], stop=set(slot))], True)
-    lines += [f"    {outs[o].name}[{i * K + u}] = v{v}_{u};" for o, i, v in outputs for u in range(K)]
-    text += lines + ["}", ""]
+    needed = _closure(ops, [v for _, _, v in outputs], stop=set(slot))
+    text += [f"static void {name}({', '.join(params)}) {{",
+             *(f"    (void){a.name};" for a in hot_inputs), *(["    (void)pre;"] if split else []),
+             *body([v for v in order if v in needed], True),
+             *(f"    {outs[o].name}[{i}] = v{v};" for o, i, v in outputs), "}", ""]
     return "\n".join(text)
 
 

@@ -17,7 +17,6 @@ from functools import cache
 
 import numpy as np
 
-from . import native
 from .controller import Controller
 from .errors import NativeBuildError
 from .experiment import Experiment
@@ -56,21 +55,19 @@ def _loop(plant: tuple, variant: tuple, lanes: int | None = None) -> Loop:
     build for one run at a time."""
     from importlib.metadata import version
 
-    from codegen.emit import fingerprint
     from codegen.robot_unit import c_identifier
 
-    from .robot import _chain_key
+    from .robot import _chain_key, _compiled
 
     v = dict(variant)
     kind = plant[1] if plant[0] == "planar" else f"{plant[2]}_{plant[3].kind}"
     prefix = c_identifier(f"hybrid_{v['name']}_{kind}_{v['step']}_loop{'_one' if lanes == 1 else ''}")
     plant_key = list(plant) if plant[0] == "planar" else ["spatial", _chain_key(plant[1]), plant[3].key()]
     key = {"chain": _chain_key(v["chain"]), "surface": v["spec"].key(), "axes": list(v["axes"]), "plant": plant_key,
-           **{k: v[k] for k in ("desired_frame", "position_error", "step")}, "generator": fingerprint(),
-           "casadi": version("casadi"), "sympy": version("sympy"), "prefix": prefix, "lanes": lanes}
-    folder = native.generated_unit(prefix, key, lambda: _build(prefix, plant, v, lanes).files)
-    module, manifest = native.load_generated(folder, prefix)
-    loop = manifest["closed_loop"]
+           **{k: v[k] for k in ("desired_frame", "position_error", "step")}, "sympy": version("sympy"),
+           "lanes": lanes}
+    unit = _compiled(prefix, key, lambda: _build(prefix, plant, v, lanes))
+    module, loop = unit.module, unit.manifest["closed_loop"]
     return Loop(getattr(module.lib, loop["symbol"]), module.ffi, (plant, variant),
                 int(getattr(module.lib, loop["lanes_symbol"])()),
                 tuple((b["name"], b["size"]) for b in loop["blocks"]), tuple(loop["metrics"]), loop["nx"], loop["nq"])
@@ -125,7 +122,8 @@ class Prepared:
 def prepare(exp, x0: np.ndarray | None = None) -> Prepared | None:
     """``exp`` (the paper's experiment or a 3-D one) as a row of the compiled loop, after the checks
     ``simulate`` makes of the settings (a refused experiment raises their HybridError; the record's
-    memory is ``simulate``'s to check: a sweep keeps none); None when it cannot run there."""
+    memory is ``simulate``'s to check: a sweep keeps none); None when it cannot run there. A given
+    start state ``x0`` is the caller's, checked (``simulate`` passes its own)."""
     from .simulation import check_path, initial_state
     from .tracing import TracingExperiment, initial_tracing_state
 
@@ -139,8 +137,9 @@ def prepare(exp, x0: np.ndarray | None = None) -> Prepared | None:
         x0 = initial_tracing_state(exp, SpatialPlant(exp)) if x0 is None else x0
         plant, given = ("spatial", exp.robot.chain, exp.robot.name, exp.surface.lift().spec()), SpatialPlant.inputs(exp)
     else:
-        x0 = initial_state(exp) if x0 is None else x0
-        check_path(exp)
+        if x0 is None:
+            x0 = initial_state(exp)
+            check_path(exp)
         plant, given = ("planar", exp.surface.kind), NativePlant.inputs(exp)
     loop = _available_loop(plant, tuple(sorted(ctrl.step_variant().items())))
     if loop is None:

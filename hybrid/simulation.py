@@ -126,6 +126,7 @@ def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> Simulat
         if plant == "mujoco":
             raise HybridError("the MuJoCo plant runs the paper's experiment; the 3-D one runs on the generated plant")
         spatial = SpatialPlant(exp)
+        check_memory(exp, spatial.record)
         return _compiled_or_run(exp, spatial, initial_tracing_state(exp, spatial), compiled)
     if not isinstance(exp, Experiment):
         raise HybridError(f"simulate() takes an experiment (see hybrid.paper_experiment() and "
@@ -146,8 +147,7 @@ def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> Simulat
 
 def _compiled_or_run(exp, plant, x0: np.ndarray, compiled: bool = True) -> SimulationResult:
     """The whole run in compiled C when the loop takes it (as a sweep runs it), else, and for the
-    account of a run that stopped there, the Python runner."""
-    check_memory(exp, plant.record)
+    account of a run that stopped there, the Python runner (the record's memory checked already)."""
     prepared = closed_loop.prepare(exp, x0) if compiled else None
     if prepared is not None:
         done = closed_loop.run([prepared], record=True)[0]

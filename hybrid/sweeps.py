@@ -223,22 +223,24 @@ def run_points(base, chunk: list[tuple[int, dict]]) -> list[dict]:
         except Exception as exc:  # noqa: BLE001 - refused before it started: the row says why
             rows[index] = _failure_row(index, settings, exc)
             continue
-        if prepared is None:
+        if prepared is None:  # not for the compiled loop: the Python runner
             rows[index] = _simulated_row(index, settings, exp)
         else:
             compiled.append((index, settings, exp, prepared))
     for (index, settings, exp, _), outcome in zip(compiled, closed_loop.run([c[3] for c in compiled])):
         # a run that stopped: the Python runner says where and why
         rows[index] = ({"run": index, **settings, **outcome.metrics, "status": "ok", "error": ""}
-                       if outcome.status == 0 else _simulated_row(index, settings, exp, compiled=False))
+                       if outcome.status == 0 else _simulated_row(index, settings, exp))
     return [rows[index] for index, _ in chunk]
 
 
-def _simulated_row(index: int, settings: dict, exp, compiled: bool = True) -> dict:
+def _simulated_row(index: int, settings: dict, exp) -> dict:
+    """A run through the Python runner (``prepare`` has said it is not for the compiled loop, or the
+    loop has seen it stop): its metrics, or why it did not finish."""
     from .simulation import simulate
 
     try:
-        res = simulate(exp, compiled=compiled)
+        res = simulate(exp, compiled=False)
     except Exception as exc:  # noqa: BLE001 - every run is a row, even one that meets a defect of ours
         return _failure_row(index, settings, exc)
     return {"run": index, **settings, **res.metrics, "status": "ok", "error": ""}
