@@ -29,7 +29,7 @@ from .model import Kernel
 
 BACKENDS = ("sympy", "casadi")
 #: bumped whenever the emitted interface changes; recorded in every manifest and cache key
-GENERATOR_VERSION = "4"
+GENERATOR_VERSION = "5"
 STAMP = "/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: "
 STATUS = {"HYBRID_OK": 0, "HYBRID_SINGULAR": 1, "HYBRID_NONFINITE": 2, "HYBRID_FRAME_UNDEFINED": 3,
           "HYBRID_EULER_SINGULAR": 4}

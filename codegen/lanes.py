@@ -90,15 +90,19 @@ static inline hl_v hl_sqrt(hl_v x) {
 #define HL_MAP2(name, f) static inline hl_v name(hl_v x, hl_v y) { \
     hl_v r = x; int l; for (l = 0; l < HL_W; ++l) r[l] = f(x[l], y[l]); return r; }
 
+/* Each of sin, cos, exp and tanh comes twice: hl_<f>_poly is the vector polynomial alone, which marks
+   in *odd the lanes it does not cover (a large or non-finite argument) and gives them meaningless
+   numbers; hl_<f> gives those lanes the C library's value, so no lane depends on its neighbours. A
+   kernel runs on the polynomials and, when a lane is odd, once again on the exact functions: its hot
+   path makes no call, and keeps its values in registers. */
+
 /* sin and cos: x = n pi/2 + r, |r| <= pi/4, in three parts of pi/2 (exact products for
-   |n| < 2^20), then fdlibm's kernels on r; a lane beyond |x| = 1e5 (or not finite) takes the C
-   library's values, so no lane depends on its neighbours */
-static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
+   |n| < 2^20), then fdlibm's kernels on r; odd: beyond |x| = 1e5, or not finite */
+static inline void hl_sincos_poly(hl_v x, hl_v *sine, hl_v *cosine, hl_i *odd) {
     const double magic = 6755399441055744.0; /* 1.5 * 2^52: adding it rounds to an integer */
     const hl_i big = ~(hl_fabs(x) <= 1e5), sign = (hl_i)hl_splat(-0.0);
     hl_v t, n, r, z, s, c, p, hz, w, y = hl_select(big, hl_splat(0.0), x);
     hl_i j;
-    int l;
     t = y * 6.36619772367581382433e-01 + magic;
     n = t - magic;
     j = (hl_i)t & 3; /* the quadrant, from the integer's low bits */
@@ -115,6 +119,12 @@ static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
     /* quadrant j: sin = (s, c, -s, -c)[j], cos = (c, -s, -c, s)[j] */
     *sine = (hl_v)((hl_i)hl_select((j & 1) != 0, c, s) ^ (((j & 2) != 0) & sign));
     *cosine = (hl_v)((hl_i)hl_select((j & 1) != 0, s, c) ^ ((((j + 1) & 2) != 0) & sign));
+    *odd |= big;
+}
+static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
+    hl_i big = hl_splat(0.0) != 0.0;
+    int l;
+    hl_sincos_poly(x, sine, cosine, &big);
     if (hl_any(big)) {
         for (l = 0; l < HL_W; ++l) {
             if (big[l]) {
@@ -123,6 +133,16 @@ static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
             }
         }
     }
+}
+static inline hl_v hl_sin_poly(hl_v x, hl_i *odd) {
+    hl_v s, c;
+    hl_sincos_poly(x, &s, &c, odd);
+    return s;
+}
+static inline hl_v hl_cos_poly(hl_v x, hl_i *odd) {
+    hl_v s, c;
+    hl_sincos_poly(x, &s, &c, odd);
+    return c;
 }
 static inline hl_v hl_sin(hl_v x) {
     hl_v s, c;
@@ -136,12 +156,11 @@ static inline hl_v hl_cos(hl_v x) {
 }
 
 /* exp: x = n ln2 + r (ln2 in two parts, |r| <= ln2 / 2), exp(r) by its Taylor polynomial of degree
-   13 (truncation below 5e-18; no division), times 2^n; a lane beyond |x| = 700 (or not finite)
-   takes the C library's value */
+   13 (truncation below 5e-18; no division), times 2^n; odd: beyond |x| = 700, or not finite */
 /* 1/k!, k = 0 .. 12 */
 static const double hl_exp_taylor[13] = {1.0, 1.0, 0.5, 1.0 / 6, 1.0 / 24, 1.0 / 120, 1.0 / 720, 1.0 / 5040,
     1.0 / 40320, 1.0 / 362880, 1.0 / 3628800, 1.0 / 39916800, 1.0 / 479001600};
-static inline hl_v hl_exp(hl_v x) {
+static inline hl_v hl_exp_poly(hl_v x, hl_i *odd) {
     const double magic = 6755399441055744.0;
     const hl_i big = ~(hl_fabs(x) <= 700.0);
     hl_v t, n, r, y = hl_select(big, hl_splat(0.0), x);
@@ -153,7 +172,13 @@ static inline hl_v hl_exp(hl_v x) {
     r = (y - n * 6.93147180369123816490e-01) - n * 1.90821492927058770002e-10;
     y = hl_splat(1.0 / 6227020800.0); /* 1/13! */
     for (l = 12; l >= 0; --l) y = hl_exp_taylor[l] + r * y;
-    r = y * (hl_v)(k << 52);
+    *odd |= big;
+    return y * (hl_v)(k << 52);
+}
+static inline hl_v hl_exp(hl_v x) {
+    hl_i big = hl_splat(0.0) != 0.0;
+    hl_v r = hl_exp_poly(x, &big);
+    int l;
     if (hl_any(big)) {
         for (l = 0; l < HL_W; ++l) if (big[l]) r[l] = exp(x[l]);
     }
@@ -161,12 +186,17 @@ static inline hl_v hl_exp(hl_v x) {
 }
 
 /* tanh: 1 - 2 / (exp(2|x|) + 1) with the sign of x, and Cephes' rational form where |x| < 0.625
-   (computed only when a lane needs it) */
-static inline hl_v hl_tanh(hl_v x) {
+   (computed only when a lane needs it); from |x| = 20 on that is +-1 exactly, so where every lane is
+   there exp is not evaluated (a friction law sliding); odd: not a number */
+static inline hl_v hl_tanh_poly(hl_v x, hl_i *odd) {
     const hl_i small = hl_fabs(x) < 0.625;
     hl_v ax = hl_fabs(x), r;
-    ax = hl_select(ax > 20.0, hl_splat(20.0), ax); /* tanh(20) = 1 in double; a NaN stays NaN */
-    r = hl_copysign(1.0 - 2.0 / (hl_exp(2.0 * ax) + 1.0), x);
+    ax = hl_select(ax > 20.0, hl_splat(20.0), ax); /* a NaN stays NaN */
+    if (hl_any(~(ax >= 20.0))) {
+        r = hl_copysign(1.0 - 2.0 / (hl_exp_poly(2.0 * ax, odd) + 1.0), x);
+    } else {
+        r = hl_copysign(hl_splat(1.0), x); /* 2 / (exp(40) + 1) < 2^-54: 1 - it rounds to 1 */
+    }
     if (hl_any(small)) {
         const hl_v z = x * x;
         r = hl_select(small, x + x * z * ((-9.64399179425052238628e-01 * z - 9.92877231001918586564e+01) * z
@@ -174,6 +204,15 @@ static inline hl_v hl_tanh(hl_v x) {
             + 4.84406305325125486048e+03), r);
     }
     return hl_select(x == 0.0, x, r); /* tanh(-0) = -0 */
+}
+static inline hl_v hl_tanh(hl_v x) {
+    hl_i nan = hl_splat(0.0) != 0.0;
+    hl_v r = hl_tanh_poly(x, &nan);
+    int l;
+    if (hl_any(nan)) {
+        for (l = 0; l < HL_W; ++l) if (nan[l]) r[l] = tanh(x[l]);
+    }
+    return r;
 }
 """
 
@@ -195,6 +234,9 @@ _OPS = {"OP_ASSIGN": "{a}", "OP_ADD": "{a} + {b}", "OP_SUB": "{a} - {b}", "OP_MU
 _OPS.update({op: f"hl_{f}({{a}})" for op, f in _LIBM1.items()})
 _OPS.update({op: f"hl_{f}({{a}}, {{b}})" for op, f in _LIBM2.items()})
 _BY_CODE = {getattr(ca, name): name for name in (*_OPS, "OP_CONST", "OP_INPUT", "OP_OUTPUT")}
+#: the operations with a polynomial that leaves some lanes to the C library (see PRELUDE)
+_POLY = {"OP_SIN": "hl_sin_poly({a}, &odd)", "OP_COS": "hl_cos_poly({a}, &odd)", "OP_EXP": "hl_exp_poly({a}, &odd)",
+         "OP_TANH": "hl_tanh_poly({a}, &odd)"}
 
 
 def _constant(value: float) -> str:
@@ -311,7 +353,7 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
     partner = {d[o]: d[other] for d in trig.values() if len(d) == 2
                for o, other in (("OP_SIN", "OP_COS"), ("OP_COS", "OP_SIN"))}
 
-    def body(values, read_cached: bool) -> list[str]:
+    def body(values, read_cached: bool, poly: bool = False) -> list[str]:
         lines, fused = [], set()
         here = set(values)
         for v in values:
@@ -323,7 +365,8 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
                 s_, c_ = (v, p) if op == "OP_SIN" else (p, v)
                 fused.add(p)
                 lines.append(f"    hl_v v{s_}, v{c_};")
-                lines.append(f"    hl_sincos(v{args[0]}, &v{s_}, &v{c_});")
+                call = "hl_sincos_poly" if poly else "hl_sincos"
+                lines.append(f"    {call}(v{args[0]}, &v{s_}, &v{c_}{', &odd' if poly else ''});")
                 continue
             if read_cached and v in slot:
                 rhs = f"pre[{slot[v]}]"
@@ -332,7 +375,8 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
             elif op == "OP_CONST":
                 rhs = _constant(extra)
             else:
-                rhs = _OPS[op].format(a=f"v{args[0]}", b=f"v{args[1]}" if len(args) > 1 else "")
+                rhs = (_POLY if poly and op in _POLY else _OPS)[op].format(
+                    a=f"v{args[0]}", b=f"v{args[1]}" if len(args) > 1 else "")
             lines.append(f"    const hl_v v{v} = {rhs};")
         return lines
 
@@ -349,10 +393,19 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
     params = ([f"const hl_v *{a.name}" for a in hot_inputs] + (["const hl_v *pre"] if split else [])
               + [f"hl_v *{a.name}" for a in outs])
     needed = _closure(ops, [v for _, _, v in outputs], stop=set(slot))
-    text += [f"static void {name}({', '.join(params)}) {{",
-             *(f"    (void){a.name};" for a in hot_inputs), *(["    (void)pre;"] if split else []),
-             *body([v for v in order if v in needed], True),
-             *(f"    {outs[o].name}[{i}] = v{v};" for o, i, v in outputs), "}", ""]
+    hot = [v for v in order if v in needed]
+    unused = [*(f"    (void){a.name};" for a in hot_inputs), *(["    (void)pre;"] if split else [])]
+    store = [f"    {outs[o].name}[{i}] = v{v};" for o, i, v in outputs]
+    if not any(ops[v][0] in _POLY and v not in slot for v in hot):
+        return "\n".join([*text, f"static void {name}({', '.join(params)}) {{", *unused, *body(hot, True), *store,
+                           "}", ""])
+    # the polynomials on every lane; where one is odd, everything again with the exact functions
+    args = ", ".join([*(a.name for a in hot_inputs), *(["pre"] if split else []), *(a.name for a in outs)])
+    text += [f"static __attribute__((noinline, cold)) void {name}_exact({', '.join(params)}) {{", *unused,
+             *body(hot, True), *store, "}", "",
+             f"static void {name}({', '.join(params)}) {{", "    hl_i odd = hl_splat(0.0) != 0.0;", *unused,
+             *body(hot, True, poly=True), "    if (hl_any(odd)) {", f"        {name}_exact({args});",
+             "        return;", "    }", *store, "}", ""]
     return "\n".join(text)
 
 

@@ -209,3 +209,14 @@ def test_large_and_non_finite_arguments_take_the_c_library(vector_math):
         np.testing.assert_array_equal(y[0], np.sin(xs))
         np.testing.assert_array_equal(y[1], np.cos(xs))
         np.testing.assert_array_equal(y[2], np.tanh(xs))
+
+
+def test_tanh_skips_exp_only_where_it_is_exactly_one(vector_math):
+    # groups of lanes all at |x| >= 20 take the shortcut (+-1 without exp); the values just below it
+    # take the formula: both must be the C library's +-1 there, and within 2 ulps elsewhere
+    slid = np.array([20.0, -20.0, 25.0, -1e4, 1e300, np.inf, -np.inf, 20.000001] * 2)
+    near = np.array([19.0, -19.5, 18.0, 19.999999, -17.0, 10.0, -15.0, 5.0] * 2)
+    for x in (slid, near):
+        xs, y = vector_math(x)
+        np.testing.assert_allclose(y[2], np.tanh(xs), rtol=2 * np.spacing(1.0), atol=0)
+    assert (vector_math(slid)[1][2] == np.sign(slid)).all()
