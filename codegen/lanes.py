@@ -326,7 +326,8 @@ def _schedule(ops) -> list[int]:
     return order
 
 
-def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ...] | None = None) -> str:
+def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ...] | None = None,
+                   storage: str = "static") -> str:
     """``static void <name>(const hl_v *input..., hl_v *output...)``: the kernel on ``HL_W`` lanes.
 
     Arguments are the kernel's inputs, then its core outputs (outputs, then each guard's measure),
@@ -335,6 +336,7 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
     With ``fixed`` input names (numbers a run holds, such as its parameters; possibly none) what
     depends on them alone is computed once, by ``<name>_pre(fixed inputs..., hl_v *pre)`` into
     ``<NAME>_NPRE`` vectors, and ``<name>(other inputs..., const hl_v *pre, outputs...)`` reads it.
+    ``storage`` declares ``<name>`` (a caller may have it inlined).
     """
     ops, order, outputs, invariant = _program(kernel, fixed)
     outs = kernel.core_outputs()
@@ -397,13 +399,13 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
     unused = [*(f"    (void){a.name};" for a in hot_inputs), *(["    (void)pre;"] if split else [])]
     store = [f"    {outs[o].name}[{i}] = v{v};" for o, i, v in outputs]
     if not any(ops[v][0] in _POLY and v not in slot for v in hot):
-        return "\n".join([*text, f"static void {name}({', '.join(params)}) {{", *unused, *body(hot, True), *store,
+        return "\n".join([*text, f"{storage} void {name}({', '.join(params)}) {{", *unused, *body(hot, True), *store,
                            "}", ""])
     # the polynomials on every lane; where one is odd, everything again with the exact functions
     args = ", ".join([*(a.name for a in hot_inputs), *(["pre"] if split else []), *(a.name for a in outs)])
     text += [f"static __attribute__((noinline, cold)) void {name}_exact({', '.join(params)}) {{", *unused,
              *body(hot, True), *store, "}", "",
-             f"static void {name}({', '.join(params)}) {{", "    hl_i odd = hl_splat(0.0) != 0.0;", *unused,
+             f"{storage} void {name}({', '.join(params)}) {{", "    hl_i odd = hl_splat(0.0) != 0.0;", *unused,
              *body(hot, True, poly=True), "    if (hl_any(odd)) {", f"        {name}_exact({args});",
              "        return;", "    }", *store, "}", ""]
     return "\n".join(text)

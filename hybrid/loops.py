@@ -9,6 +9,7 @@ circle; otherwise the error names the loop and says why.
 from __future__ import annotations
 
 from dataclasses import asdict, replace
+from functools import lru_cache
 
 import numpy as np
 
@@ -36,6 +37,11 @@ def force_loop_matrix(KP: float, KD: float, KI: float, k: float, T: float) -> np
 def loop_radii(g, T: float, k: float) -> dict[str, tuple[float, str]]:
     """Spectral radius of each loop with gains ``g``, sample time ``T`` [s], contact stiffness ``k``
     [N/m], and the rule a stable loop satisfies."""
+    return dict(_loop_radii(g, float(T), float(k)))
+
+
+@lru_cache(maxsize=4096)  # every run of a sweep checks its loops; most share gains and timing
+def _loop_radii(g, T: float, k: float) -> tuple:
     # an integrator whose gain is 0 feeds nothing back: its eigenvalue 1 is left out
     used_v = 1 + (g.KIv != 0 or g.KI2v != 0) + (g.KI2v != 0)
     used_f = 2 + (g.KIf != 0)
@@ -45,7 +51,7 @@ def loop_radii(g, T: float, k: float) -> dict[str, tuple[float, str]]:
         "force (normal) loop": (force_loop_matrix(g.KPf, g.KDf, g.KIf, k, T)[:used_f, :used_f],
                                 "needs KDf*KPf > KIf, and KDf*T and sqrt(KPf*k)*T well below 2"),
     }
-    return {name: (float(max(abs(np.linalg.eigvals(M)))), rule) for name, (M, rule) in loops.items()}
+    return tuple((name, (float(max(abs(np.linalg.eigvals(M)))), rule)) for name, (M, rule) in loops.items())
 
 
 def contact_stiffness(exp) -> float:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, fields, replace
+from functools import lru_cache
 
 import numpy as np
 
@@ -70,8 +71,7 @@ class Arm:
         """The controller's model of this arm: inertial parameters ``(1 + inertial)`` times
         the true ones, joint viscosity ``viscous_compensation`` times the true one."""
         k = check_model_error(inertial, viscous_compensation)
-        return replace(self, m1=self.m1 * k, m2=self.m2 * k, I1=self.I1 * k, I2=self.I2 * k,
-                       V1=self.V1 * viscous_compensation, V2=self.V2 * viscous_compensation)
+        return _modelled(self, k, float(viscous_compensation))
 
     def conditioning(self, q):
         """Distance of ``J(q)`` from singularity, ``2 |det J| / |J|_F^2`` in [0, 1] (about
@@ -82,6 +82,12 @@ class Arm:
     def reach(self) -> tuple[float, float]:
         """Smallest and largest distance of the tip from the base [m]."""
         return abs(self.L1 - self.L2), self.L1 + self.L2
+
+
+@lru_cache(maxsize=1024)  # every run of a sweep builds its controller's model; most share it
+def _modelled(arm: Arm, k: float, viscous: float) -> Arm:
+    return replace(arm, m1=arm.m1 * k, m2=arm.m2 * k, I1=arm.I1 * k, I2=arm.I2 * k, V1=arm.V1 * viscous,
+                   V2=arm.V2 * viscous)
 
 
 def paper_arm() -> Arm:

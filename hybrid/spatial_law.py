@@ -9,7 +9,7 @@ See :mod:`codegen.task_law` for the equations.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import partial
+from functools import lru_cache, partial
 
 import numpy as np
 
@@ -53,6 +53,11 @@ def spatial_surface(surface):
     if not isinstance(surface, (Circle, Plane, Sphere, Cylinder, ImplicitSurface)):
         raise HybridError(f"surface must be a hybrid Plane, Circle, Sphere, Cylinder or ImplicitSurface, "
                           f"got {type(surface).__name__}")
+    return _lifted(surface) if isinstance(surface, (Circle, Plane)) else surface.lift()
+
+
+@lru_cache(maxsize=256)  # a planar surface's lift is checked like any surface: once per surface will do
+def _lifted(surface):
     return surface.lift()
 
 
@@ -61,9 +66,14 @@ def _reference(e) -> np.ndarray:
         arr = np.asarray(e, dtype=float)
         if arr.shape != (3,):
             raise ValueError
-        return np.array(unit_vector("decoupling_law", "reference", arr))
+        return np.array(_unit_reference(tuple(arr.tolist())))
     except (TypeError, ValueError, OverflowError, HybridError):
         raise HybridError(f"reference = {e!r:.60}; give a nonzero direction (e_x, e_y, e_z) in base axes") from None
+
+
+@lru_cache(maxsize=256)
+def _unit_reference(e: tuple) -> tuple:
+    return unit_vector("decoupling_law", "reference", e)
 
 
 @dataclass(frozen=True)
