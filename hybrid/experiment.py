@@ -115,15 +115,20 @@ class RunSettings:
         """The sensor tip ``s`` and the arm tip ``r`` at rest, the sensor tip on the surface at
         ``point`` (unit ``normal``) pressing with ``F_d(0)``: it penetrates ``F/k_e`` (the surface in
         equilibrium) and the arm tip sits ``F/K_s`` beyond it (the sensor spring in equilibrium)."""
-        F0 = self.force_reference(0.0)
-        s = np.asarray(point, float) - normal * max(F0, 0.0) / self.contact.stiffness
-        return s, s - normal * F0 / self.sensor.stiffness
+        return pressed(point, normal, self.force_reference(0.0), self.contact.stiffness, self.sensor.stiffness)
 
     def plant_array(self) -> np.ndarray:
         """The ``plant[7]`` array of the generated C (sensor, then contact)."""
         s, c = self.sensor, self.contact
         return np.array([s.mass, s.stiffness, s.damping, c.stiffness, c.damping, c.friction,
                          c.friction_smoothing])
+
+
+def pressed(point, normal, F0: float, k_e: float, K_s: float) -> tuple[np.ndarray, np.ndarray]:
+    """:meth:`RunSettings.pressed_at` from the numbers it reads: the force ``F0`` [N], the surface's
+    stiffness ``k_e`` and the sensor's ``K_s`` [N/m]."""
+    s = np.asarray(point, float) - normal * max(F0, 0.0) / k_e
+    return s, s - normal * F0 / K_s
 
 
 @dataclass(frozen=True)

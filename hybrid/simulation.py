@@ -13,13 +13,14 @@ from __future__ import annotations
 
 import math
 import os
+from functools import lru_cache
 
 import numpy as np
 
 from . import closed_loop
 from .controller import Controller
 from .errors import HybridError, NonFiniteError
-from .experiment import Experiment
+from .experiment import Experiment, pressed
 from .loops import model_error_note
 from .performance import run_metrics
 from .plants import PLANT, NativePlant, SpatialPlant
@@ -65,30 +66,41 @@ def check_memory(exp, record: dict = PLANT) -> None:
 def initial_state(exp: Experiment) -> np.ndarray:
     """At rest, pressing at ``start_point`` (:meth:`~hybrid.experiment.RunSettings.pressed_at`); joints
     from inverse kinematics, elbow as asked."""
-    surf = exp.surface
-    s_surf = surf.at(surf.arc_coordinate(exp.start_point))
-    gap = float(np.linalg.norm(np.asarray(exp.start_point) - s_surf))
+    return _initial_state(exp.arm, exp.surface, exp.start_point, exp.elbow, exp.singular_tol,
+                          exp.force_reference(0.0), exp.contact.stiffness, exp.sensor.stiffness).copy()
+
+
+# the runs of a sweep mostly start alike: what they share is worked out once (from its arguments only)
+@lru_cache(maxsize=1024)
+def _initial_state(arm, surf, start_point, elbow, singular_tol, F0, k_e, K_s) -> np.ndarray:
+    s_surf = surf.at(surf.arc_coordinate(start_point))
+    gap = float(np.linalg.norm(np.asarray(start_point) - s_surf))
     if gap > START_TOL:
-        raise HybridError(f"start_point {list(exp.start_point)} m is {gap * 1000:.1f} mm off the surface; give a "
+        raise HybridError(f"start_point {list(start_point)} m is {gap * 1000:.1f} mm off the surface; give a "
                           f"point on it (within {START_TOL * 1000:g} mm), e.g. {np.round(s_surf, 4).tolist()}")
-    s, r = exp.pressed_at(s_surf, surf.normal_at(s_surf))
-    q = inverse_kinematics(exp, r)
+    s, r = pressed(s_surf, surf.normal_at(s_surf), F0, k_e, K_s)
+    q = _inverse_kinematics(arm, elbow, singular_tol, r)
     return np.concatenate([q, [0.0, 0.0], s, [0.0, 0.0]])
 
 
 def inverse_kinematics(exp: Experiment, r: np.ndarray) -> np.ndarray:
-    L1, L2 = exp.arm.L1, exp.arm.L2
+    """The joints [rad] that put the arm tip at ``r`` [m], elbow as ``exp`` asks."""
+    return _inverse_kinematics(exp.arm, exp.elbow, exp.singular_tol, r)
+
+
+def _inverse_kinematics(arm, elbow: int, singular_tol: float, r: np.ndarray) -> np.ndarray:
+    L1, L2 = arm.L1, arm.L2
     dist2 = float(r @ r)
     c2 = (dist2 - L1**2 - L2**2) / (2 * L1 * L2)
-    lo, hi = exp.arm.reach()
+    lo, hi = arm.reach()
     if not -1.0 <= c2 <= 1.0:
         raise HybridError(f"the start point {np.round(r, 4).tolist()} m is out of the arm's reach "
                           f"({lo:.3f} m to {hi:.3f} m from the base); move the surface or start_point")
-    q2 = exp.elbow * math.acos(c2)
+    q2 = elbow * math.acos(c2)
     q1 = math.atan2(r[1], r[0]) - math.atan2(L2 * math.sin(q2), L1 + L2 * math.cos(q2))
     q = np.array([q1, q2])
-    cond = exp.arm.conditioning(q)
-    if cond < max(exp.singular_tol, 1e-3):
+    cond = arm.conditioning(q)
+    if cond < max(singular_tol, 1e-3):
         raise HybridError(f"the start point {np.round(r, 4).tolist()} m puts the arm at or near a singularity "
                           f"(q2 = {q2:.4f} rad, 2|det J|/|J|_F^2 = {cond:.2e}); move it inside the workspace")
     return q
@@ -96,10 +108,15 @@ def inverse_kinematics(exp: Experiment, r: np.ndarray) -> np.ndarray:
 
 def check_path(exp: Experiment) -> None:
     """Refuse a run whose desired path leaves the arm's workspace."""
-    lo, hi = exp.arm.reach()
-    t = np.minimum(np.arange(exp.n_samples + 1) * exp.sample_time, exp.duration)
-    surf = exp.surface
-    points = surf.points_at(surf.arc_coordinate(exp.start_point) + exp.speed_reference.integral(t))
+    _check_path(exp.arm.reach(), exp.surface, exp.start_point, exp.speed_reference, exp.n_samples,
+                exp.sample_time, exp.duration)
+
+
+@lru_cache(maxsize=1024)
+def _check_path(reach, surf, start_point, speed_reference, n_samples, sample_time, duration) -> None:
+    lo, hi = reach
+    t = np.minimum(np.arange(n_samples + 1) * sample_time, duration)
+    points = surf.points_at(surf.arc_coordinate(start_point) + speed_reference.integral(t))
     d = np.hypot(points[:, 0], points[:, 1])
     outside = np.flatnonzero(~((lo + 1e-3 < d) & (d < hi - 1e-3)))
     if len(outside):

@@ -35,7 +35,7 @@ def unit_vector(owner: str, name: str, v) -> tuple[float, ...]:
     if not np.isfinite(arr).all() or not scale > 0:
         raise HybridError(f"{owner}.{name} = {tuple(v)} has zero length or is not finite; give a direction")
     arr = arr / scale
-    return tuple(float(x) for x in arr / np.linalg.norm(arr))
+    return tuple(float(x) + 0.0 for x in arr / np.linalg.norm(arr))
 
 
 def _point(owner: str, name: str, p, dims: tuple[int, ...] = (2,)) -> tuple[float, ...]:
@@ -51,7 +51,8 @@ def _point(owner: str, name: str, p, dims: tuple[int, ...] = (2,)) -> tuple[floa
         raise HybridError(f"{owner}.{name} must be {what} in m, got shape {arr.shape}")
     if not np.isfinite(arr).all():
         raise HybridError(f"{owner}.{name} = {p!r} is not finite; give finite coordinates")
-    return tuple(float(v) for v in arr)
+    # + 0.0 makes -0.0 a 0.0: one place, one run (the runner's caches key on equal values)
+    return tuple(float(v) + 0.0 for v in arr)
 
 
 def check_model_error(inertial, viscous_compensation) -> float:
