@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import matplotlib
@@ -145,8 +146,9 @@ def sweep_heatmaps(table, figures: dict | None, out: Path) -> list[Path]:
                     ax.axis("off")
                     continue
                 image = ax.imshow(panel.values, origin="lower", aspect="auto", vmin=lo, vmax=hi, cmap="viridis")
-                ax.set_xticks(range(panel.shape[1]), [_label(v) for v in panel.columns], fontsize=6)
-                ax.set_yticks(range(panel.shape[0]), [_label(v) for v in panel.index], fontsize=6)
+                for axis, values in ((ax.xaxis, panel.columns), (ax.yaxis, panel.index)):
+                    shown = range(0, len(values), max(1, math.ceil(len(values) / 6)))  # six labels at most
+                    axis.set_ticks(list(shown), [_label(values[k]) for k in shown], fontsize=6)
                 ax.set_title(title, fontsize=6)
                 if i == len(row_values) - 1:
                     ax.set_xlabel(x, fontsize=7)

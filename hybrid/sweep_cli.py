@@ -3,6 +3,7 @@ results (Parquet, CSV on request), resuming, and heatmaps."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import fields
 from pathlib import Path
 
@@ -31,9 +32,12 @@ def add_parser(sub) -> None:
 
 
 def _value(name: str, value):
-    """A TOML value as a setting: a table with one distribution name draws values."""
+    """A TOML value as a setting: a list, ``{linspace = [first, last, count]}`` (evenly spaced values,
+    both ends included), or a table with one distribution name (drawn values)."""
     from . import sweeps as sw
 
+    if isinstance(value, dict) and list(value) == ["linspace"]:
+        return _linspace(name, value["linspace"])
     if isinstance(value, dict):
         if len(value) != 1 or next(iter(value)) not in sw.DISTRIBUTIONS:
             raise HybridError(f"parameter {name!r}: a table must name one distribution "
@@ -45,6 +49,17 @@ def _value(name: str, value):
     if not isinstance(value, list):
         raise HybridError(f"parameter {name!r}: give a list of values or a distribution table, got {value!r:.60}")
     return value
+
+
+def _linspace(name: str, args) -> list[float]:
+    ok = (isinstance(args, list) and len(args) == 3 and all(isinstance(a, (int, float)) and not isinstance(a, bool)
+                                                             for a in args) and isinstance(args[2], int))
+    if not ok or not 1 <= args[2] <= 1_000_000 or not all(math.isfinite(a) for a in args[:2]):
+        raise HybridError(f"parameter {name!r}: linspace takes the first and last values and a whole count of "
+                          f"1 to 1,000,000, e.g. {{linspace = [0.0, 0.5, 11]}}; got {args!r:.60}")
+    first, last, count = args
+    # rounded to 12 digits: 0.3, not 0.30000000000000004, in the table and on the figures' axes
+    return [float(f"{first + (last - first) * i / max(count - 1, 1):.12g}") for i in range(count)]
 
 
 def _base(kind: str, settings: dict):

@@ -175,7 +175,20 @@ def test_the_demo_config_reads():
     config = sweep_cli.read_config(sweep_cli.DEMO)
     base = sweep_cli._base(config["experiment"], config["base"])
     check_names(base, config["parameters"])
-    assert len(points({k: sweep_cli._value(k, v) for k, v in config["parameters"].items()})) == 360
+    values = {k: sweep_cli._value(k, v) for k, v in config["parameters"].items()}
+    assert len(points(values)) == 10140  # the README's reading is of this many runs
+    assert values["model_error"][:3] == [0.0, 0.02, 0.04] and values["model_error"][-1] == 0.5
+
+
+def test_linspace_values_and_refusals():
+    from hybrid import sweep_cli
+
+    got = sweep_cli._value("x", {"linspace": [0.1, 0.7, 7]})
+    np.testing.assert_allclose(got, np.linspace(0.1, 0.7, 7), rtol=1e-12)
+    assert got[2] == 0.3 and sweep_cli._value("x", {"linspace": [2, 5, 1]}) == [2.0]
+    for bad in ([0.0, 1.0], [0.0, 1.0, 2.5], [0.0, float("nan"), 3], [0.0, 1.0, 0], "0:1", [0.0, 1.0, True]):
+        with pytest.raises(hybrid.HybridError, match="linspace takes"):
+            sweep_cli._value("x", {"linspace": bad})
 
 
 def test_readme_sweep_example_runs():
