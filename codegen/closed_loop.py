@@ -226,14 +226,15 @@ static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int l, lon
     for (j = 0; j < {nq}; ++j) out[{len(METRICS)} + j] = mt->tau[j][l];
 }}
 
+/* the row's state and torque of each lane still running; NaN for a lane that stopped */
 static void record(double *states, double *taus, int g, int used, long row, long rows, const hl_v *x,
-                   const hl_v *tau) {{
+                   const hl_v *tau, hl_i alive) {{
     int l, j;
     if (!states && !taus) return;
     for (l = 0; l < used; ++l) {{
         const long at = (long)(g + l) * rows + row;
-        if (states) for (j = 0; j < {nx}; ++j) states[at * {nx} + j] = x[j][l];
-        if (taus) for (j = 0; j < {nq}; ++j) taus[at * {nq} + j] = tau[j][l];
+        if (states) for (j = 0; j < {nx}; ++j) states[at * {nx} + j] = alive[l] ? x[j][l] : NAN;
+        if (taus) for (j = 0; j < {nq}; ++j) taus[at * {nq} + j] = alive[l] ? tau[j][l] : NAN;
     }}
 }}
 
@@ -280,7 +281,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         {step.name}_lanes(x, x + {nq}, fc, z, tv, zero, zero, zero, pre_step, {out_args});
 {guards}        flag(&run, {finite}, HYBRID_NONFINITE, k);
         for (j = 0; j < {2 * m}; ++j) z[j] = {z_next}[j];
-        if (k == 0) record(states, taus, g, used, 0, rows, x, {tau});
+        if (k == 0) record(states, taus, g, used, 0, rows, x, {tau}, run.alive);
         for (i = 0; i < steps_per_sample; ++i) {{
 {rk4}
             /* the row the step started from (the peak torques read each sample's torque all the same) */
@@ -292,13 +293,14 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
             if (hl_any(~run.alive)) {{
                 for (j = 0; j < {nx}; ++j) x[j] = hl_select(run.alive, x[j], blk[{x0} + j]);
             }}
-            record(states, taus, g, used, row, rows, x, {tau});
+            record(states, taus, g, used, row, rows, x, {tau}, run.alive);
         }}
     }}
     if (k > 0) {{ /* the last row */
         loop_signals_lanes(x, pre_sig, s);
         metrics_row(&mt, blk, s, {tau}, row, h, end);
     }}
+    while (++row < rows) record(states, taus, g, used, row, rows, x, {tau}, run.alive); /* every lane stopped */
     for (l = 0; l < used; ++l) {{
         status[g + l] = run.status[l];
         failed_sample[g + l] = run.sample[l];

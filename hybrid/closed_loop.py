@@ -181,9 +181,9 @@ def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
         metrics = np.empty((n, len(loop.metrics)))
         status, failed = np.empty(n, np.intc), np.empty(n, np.intc)
         steps = n_samples * per_sample + 1
-        # a run that stopped leaves the rest of its rows NaN
-        states = np.full((n, steps, loop.nx), np.nan) if record else None
-        taus = np.full((n, steps, loop.nq), np.nan) if record else None
+        # every row is written: NaN from where a run stopped
+        states = np.empty((n, steps, loop.nx)) if record else None
+        taus = np.empty((n, steps, loop.nq)) if record else None
         ffi = loop.ffi
         loop.function(n, ffi.from_buffer("double[]", runs), n_samples, per_sample, h, sample_time, tol,
                       ffi.from_buffer("double[]", metrics), ffi.from_buffer("int[]", status),

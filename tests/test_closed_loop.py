@@ -92,19 +92,23 @@ def test_lanes_do_not_depend_on_their_neighbours_and_a_stopped_run_stops_alone()
             for m in (0.0, 0.15, 0.3) for f in (0.0, 0.1, 0.2, 0.3, 0.35, 0.4)]
     exps.insert(7, hybrid.paper_experiment(duration=0.6, model_error=5.0))
     prepared = [closed_loop.prepare(e) for e in exps]
-    together = closed_loop.run(prepared)
+    together = closed_loop.run(prepared, record=True)
     for i, p in enumerate(prepared):
-        alone = closed_loop.run([p])[0]
+        alone = closed_loop.run([p], record=True)[0]  # the one-lane build
         assert alone.status == together[i].status and alone.failed_sample == together[i].failed_sample
+        np.testing.assert_allclose(together[i].states, alone.states, rtol=1e-12, atol=1e-15)  # NaN where NaN
         if alone.status == 0:
+            assert np.isfinite(alone.states).all() and np.isfinite(alone.taus).all()
             for name, value in alone.metrics.items():
                 assert together[i].metrics[name] == pytest.approx(value, rel=1e-12, abs=1e-15, nan_ok=True)
     stopped = together[7]
     assert stopped.status != 0 and 0 <= stopped.failed_sample < exps[7].n_samples
     assert all(math.isnan(v) for v in stopped.metrics.values())
-    recorded = closed_loop.run([prepared[7]], record=True)[0]  # alone: the one-lane build
-    last = (recorded.failed_sample + 1) * exps[7].steps_per_sample + 1
-    assert np.isnan(recorded.states[last:]).all() and np.isfinite(recorded.states[:2]).all()
+    # its record stops being finite within the sample where it stopped, and stays NaN (no restarted state)
+    k, m = stopped.failed_sample, exps[7].steps_per_sample
+    first = np.flatnonzero(np.isnan(stopped.states).any(axis=1))[0]
+    assert k * m <= first <= (k + 1) * m and np.isfinite(stopped.states[:first]).all()
+    assert np.isnan(stopped.states[first:]).all() and np.isnan(stopped.taus[first:]).all()
     with pytest.raises(hybrid.SimulationError) as info:
         hybrid.simulate(exps[7])
     sample_time = exps[7].sample_time
