@@ -130,8 +130,8 @@ def _driver(prefix: str, spec: LoopSpec) -> str:
     finite = " | ".join(f"hl_not_finite(o_{a.name}, {a.size})" for a in outs)
     def stage(state: str, k: str) -> str:  # the first stage also gives the row's signals
         if k == "k1":
-            return f"plant_rhs_signals_lanes({state}, {tau}, pre_both, {k}, s);"
-        return f"plant_rhs_lanes({state}, {tau}, pre_rhs, {k});"
+            return f"plant_rhs_signals_lanes({state}, {tau}, pre_both, {k}, s, base);"
+        return f"plant_rhs_lanes({state}, {tau}, pre_rhs, {k}, base);"
 
     rk4 = rk4_step(stage, "x", nx, "x", " " * 12, "j")
     fs, vs, x0 = offset["force_step"], offset["speed_step"], offset["x0"]
@@ -245,7 +245,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     hl_v pre_rhs[PLANT_RHS_LANES_NPRE], pre_sig[LOOP_SIGNALS_LANES_NPRE], pre_both[PLANT_RHS_SIGNALS_LANES_NPRE],
         pre_step[{step.name.upper()}_LANES_NPRE];
     hl_v blk[{nb}], x[{nx}], xt[{nx}], k1[{nx}], k2[{nx}], k3[{nx}], k4[{nx}], s[{ns}], fc[6], z[{2 * m}], tv[1],
-        zero[9];
+        zero[9], base[{3 * nq}];
     {out_decl}
     lanes_run run;
     lanes_metrics mt;
@@ -283,6 +283,11 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         for (j = 0; j < {2 * m}; ++j) z[j] = {z_next}[j];
         if (k == 0) record(states, taus, g, used, 0, rows, x, {tau}, run.alive);
         for (i = 0; i < steps_per_sample; ++i) {{
+            /* the joints' sin and cos at the step's start: its stages rotate from there */
+            for (j = 0; j < {nq}; ++j) {{
+                base[3 * j] = x[j];
+                hl_sincos(x[j], base + 3 * j + 1, base + 3 * j + 2);
+            }}
 {rk4}
             /* the row the step started from (the peak torques read each sample's torque all the same) */
             metrics_row(&mt, blk, s, {tau}, row, h, end);
@@ -345,9 +350,9 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
     body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py. */\n"
             "#if !defined(__GNUC__)\n#error \"the compiled closed loop needs GCC or Clang (vector extensions)\"\n"
             f"#endif\n{f'#define HL_W {lanes}' if lanes else ''}\n{PRELUDE}\n{status_defines()}\n\n{libm_maps()}\n"
-            f"{_STAGE}\n{lanes_function(rhs, 'plant_rhs_lanes', held, 'HL_STAGE')}\n"
+            f"{_STAGE}\n{lanes_function(rhs, 'plant_rhs_lanes', held, 'HL_STAGE', near=nq)}\n"
             f"{lanes_function(signals_kernel(spec), 'loop_signals_lanes', shown)}\n"
-            f"{lanes_function(stepping_kernel(spec), 'plant_rhs_signals_lanes', held + shown, 'HL_STAGE')}\n"
+            f"{lanes_function(stepping_kernel(spec), 'plant_rhs_signals_lanes', held + shown, 'HL_STAGE', near=nq)}\n"
             f"{lanes_function(spec.step, spec.step.name + '_lanes', params)}\n{_driver(prefix, spec)}")
     doc = ("run nruns closed loops (rows of runs, blocks as the manifest's closed_loop.blocks), HL_W at a time: "
            "n_samples control samples of sample_time [s], steps_per_sample RK4 steps of h [s] each; writes "

@@ -155,6 +155,39 @@ static inline hl_v hl_cos(hl_v x) {
     return c;
 }
 
+/* sin and cos of x near x0, from base = (x0, sin x0, cos x0): x0's rotated by d = x - x0 with Taylor
+   polynomials of sin d (to d^5) and cos d - 1 (to d^4), whose truncation is below 1e-19 for |d| <= 2^-9; a
+   lane farther from x0 (or not finite) takes the polynomials (_near_poly, odd as they say) or hl_sincos
+   (_near). The stages of an RK4 step are this near its start, whose sin and cos are computed once. */
+static inline hl_i hl_rotate(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine) {
+    const hl_v d = x - base[0], d2 = d * d;
+    const hl_v sd = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120)), cm = d2 * (-0.5 + d2 * (1.0 / 24));
+    /* one product per sum: the compiler's fused multiply-adds are then the same for any lane count */
+    *sine = (base[1] + base[1] * cm) + base[2] * sd;
+    *cosine = (base[2] + base[2] * cm) - base[1] * sd;
+    return ~(hl_fabs(d) <= 0x1p-9);
+}
+static inline void hl_sincos_near_poly(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine, hl_i *odd) {
+    const hl_i far = hl_rotate(x, base, sine, cosine);
+    if (hl_any(far)) {
+        hl_v s, c;
+        hl_i o = hl_splat(0.0) != 0.0;
+        hl_sincos_poly(x, &s, &c, &o);
+        *odd |= o & far;
+        *sine = hl_select(far, s, *sine);
+        *cosine = hl_select(far, c, *cosine);
+    }
+}
+static inline void hl_sincos_near(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine) {
+    const hl_i far = hl_rotate(x, base, sine, cosine);
+    if (hl_any(far)) {
+        hl_v s, c;
+        hl_sincos(x, &s, &c);
+        *sine = hl_select(far, s, *sine);
+        *cosine = hl_select(far, c, *cosine);
+    }
+}
+
 /* exp: x = n ln2 + r (ln2 in two parts, |r| <= ln2 / 2), exp(r) by its Taylor polynomial of degree
    13 (truncation below 5e-18; no division), times 2^n; odd: beyond |x| = 700, or not finite */
 /* 1/k!, k = 0 .. 12 */
@@ -327,7 +360,7 @@ def _schedule(ops) -> list[int]:
 
 
 def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ...] | None = None,
-                   storage: str = "static") -> str:
+                   storage: str = "static", near: int = 0) -> str:
     """``static void <name>(const hl_v *input..., hl_v *output...)``: the kernel on ``HL_W`` lanes.
 
     Arguments are the kernel's inputs, then its core outputs (outputs, then each guard's measure),
@@ -336,7 +369,9 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
     With ``fixed`` input names (numbers a run holds, such as its parameters; possibly none) what
     depends on them alone is computed once, by ``<name>_pre(fixed inputs..., hl_v *pre)`` into
     ``<NAME>_NPRE`` vectors, and ``<name>(other inputs..., const hl_v *pre, outputs...)`` reads it.
-    ``storage`` declares ``<name>`` (a caller may have it inlined).
+    ``storage`` declares ``<name>`` (a caller may have it inlined). With ``near = n`` the functions take a
+    last argument ``const hl_v *base``, ``(x0, sin x0, cos x0)`` for each of the first ``n`` elements of the
+    first input, and take sin and cos of those elements by rotating from there (``hl_sincos_near``).
     """
     ops, order, outputs, invariant = _program(kernel, fixed)
     outs = kernel.core_outputs()
@@ -355,6 +390,11 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
     partner = {d[o]: d[other] for d in trig.values() if len(d) == 2
                for o, other in (("OP_SIN", "OP_COS"), ("OP_COS", "OP_SIN"))}
 
+    def near_slot(v) -> int | None:  # the base slot of a sin or cos of one of the first `near` state elements
+        op, args, _ = ops[v]
+        arg = ops[args[0]] if op in ("OP_SIN", "OP_COS") else None
+        return arg[2][1] if arg and arg[0] == "OP_INPUT" and arg[2][0] == 0 and arg[2][1] < near else None
+
     def body(values, read_cached: bool, poly: bool = False) -> list[str]:
         lines, fused = [], set()
         here = set(values)
@@ -363,6 +403,15 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
             if v in fused:
                 continue
             p = partner.get(v)
+            k = near_slot(v)
+            if k is not None and not (read_cached and v in slot):
+                pair = (v, p) if p is not None and p in here and not (read_cached and p in slot) else (v, None)
+                fused.update(x for x in pair if x is not None)
+                s_, c_ = (f"v{x}" if x is not None else f"t{v}" for x in (pair if op == "OP_SIN" else pair[::-1]))
+                lines.append(f"    hl_v {s_}, {c_};")
+                lines.append(f"    hl_sincos_near{'_poly' if poly else ''}(v{args[0]}, base + {3 * k}, &{s_}, &{c_}"
+                             f"{', &odd' if poly else ''});")
+                continue
             if p is not None and p in here and not (read_cached and (v in slot or p in slot)):
                 s_, c_ = (v, p) if op == "OP_SIN" else (p, v)
                 fused.add(p)
@@ -393,16 +442,18 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
                  *(f"    pre[{slot[v]}] = v{v};" for v in cached),
                  *(f"    (void){a.name};" for a in pre_inputs), "    (void)pre;", "}", ""]
     params = ([f"const hl_v *{a.name}" for a in hot_inputs] + (["const hl_v *pre"] if split else [])
-              + [f"hl_v *{a.name}" for a in outs])
+              + [f"hl_v *{a.name}" for a in outs] + (["const hl_v *base"] if near else []))
     needed = _closure(ops, [v for _, _, v in outputs], stop=set(slot))
     hot = [v for v in order if v in needed]
-    unused = [*(f"    (void){a.name};" for a in hot_inputs), *(["    (void)pre;"] if split else [])]
+    unused = [*(f"    (void){a.name};" for a in hot_inputs), *(["    (void)pre;"] if split else []),
+              *(["    (void)base;"] if near else [])]
     store = [f"    {outs[o].name}[{i}] = v{v};" for o, i, v in outputs]
     if not any(ops[v][0] in _POLY and v not in slot for v in hot):
         return "\n".join([*text, f"{storage} void {name}({', '.join(params)}) {{", *unused, *body(hot, True), *store,
                            "}", ""])
     # the polynomials on every lane; where one is odd, everything again with the exact functions
-    args = ", ".join([*(a.name for a in hot_inputs), *(["pre"] if split else []), *(a.name for a in outs)])
+    args = ", ".join([*(a.name for a in hot_inputs), *(["pre"] if split else []), *(a.name for a in outs),
+                      *(["base"] if near else [])])
     text += [f"static __attribute__((noinline, cold)) void {name}_exact({', '.join(params)}) {{", *unused,
              *body(hot, True), *store, "}", "",
              f"{storage} void {name}({', '.join(params)}) {{", "    hl_i odd = hl_splat(0.0) != 0.0;", *unused,

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 3a67075f62cfa74a65cd5e17450b79445e627122dad8d043a20def132c5dcd03 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: db35a717454b13913cb05fb865654fe06d586d2234fd41cf44741d5d3494d088 */
 /* hybrid_casadi: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
    Emitted by the casadi backend of hybrid's codegen (SymPy 1.14.0, CasADi 3.8.2), generator version 5.
    Compile: cc -std=c99 -O2 -c hybrid_casadi.c (link with -lm). */
@@ -1917,6 +1917,39 @@ static inline hl_v hl_cos(hl_v x) {
     hl_v s, c;
     hl_sincos(x, &s, &c);
     return c;
+}
+
+/* sin and cos of x near x0, from base = (x0, sin x0, cos x0): x0's rotated by d = x - x0 with Taylor
+   polynomials of sin d (to d^5) and cos d - 1 (to d^4), whose truncation is below 1e-19 for |d| <= 2^-9; a
+   lane farther from x0 (or not finite) takes the polynomials (_near_poly, odd as they say) or hl_sincos
+   (_near). The stages of an RK4 step are this near its start, whose sin and cos are computed once. */
+static inline hl_i hl_rotate(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine) {
+    const hl_v d = x - base[0], d2 = d * d;
+    const hl_v sd = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120)), cm = d2 * (-0.5 + d2 * (1.0 / 24));
+    /* one product per sum: the compiler's fused multiply-adds are then the same for any lane count */
+    *sine = (base[1] + base[1] * cm) + base[2] * sd;
+    *cosine = (base[2] + base[2] * cm) - base[1] * sd;
+    return ~(hl_fabs(d) <= 0x1p-9);
+}
+static inline void hl_sincos_near_poly(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine, hl_i *odd) {
+    const hl_i far = hl_rotate(x, base, sine, cosine);
+    if (hl_any(far)) {
+        hl_v s, c;
+        hl_i o = hl_splat(0.0) != 0.0;
+        hl_sincos_poly(x, &s, &c, &o);
+        *odd |= o & far;
+        *sine = hl_select(far, s, *sine);
+        *cosine = hl_select(far, c, *cosine);
+    }
+}
+static inline void hl_sincos_near(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine) {
+    const hl_i far = hl_rotate(x, base, sine, cosine);
+    if (hl_any(far)) {
+        hl_v s, c;
+        hl_sincos(x, &s, &c);
+        *sine = hl_select(far, s, *sine);
+        *cosine = hl_select(far, c, *cosine);
+    }
 }
 
 /* exp: x = n ln2 + r (ln2 in two parts, |r| <= ln2 / 2), exp(r) by its Taylor polynomial of degree

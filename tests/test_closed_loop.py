@@ -144,6 +144,22 @@ def test_what_runs_in_python_is_not_compiled():
 # ------------------------------------------------------------------------------- vector math
 
 
+def _build(source: str, cdef: str, name: str, folder):
+    """Compile and load a lanes test unit with the project's flags."""
+    import importlib.util
+    import os
+
+    ffi = cffi.FFI()
+    ffi.cdef(cdef)
+    ffi.set_source(name, source, extra_compile_args=list(CFLAGS), libraries=["m"])
+    os.environ.setdefault("CC", compiler()[0])
+    so = ffi.compile(tmpdir=str(folder))
+    spec = importlib.util.spec_from_file_location(name, so)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
 @pytest.fixture(scope="module")
 def vector_math(tmp_path_factory):
     """sin, cos, tanh, exp and sqrt of a lanes kernel, over n numbers (whole groups of lanes)."""
@@ -166,19 +182,8 @@ void f_many(int n, const double *x, double *y) {
     }
 }
 """
-    ffi = cffi.FFI()
-    ffi.cdef("int lanes(void); void f_many(int n, const double *x, double *y);")
-    ffi.set_source("_lanes_math", source, extra_compile_args=list(CFLAGS), libraries=["m"])
-    folder = tmp_path_factory.mktemp("lanes")
-    import os
-
-    os.environ.setdefault("CC", compiler()[0])
-    so = ffi.compile(tmpdir=str(folder))
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location("_lanes_math", so)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
+    module = _build(source, "int lanes(void); void f_many(int n, const double *x, double *y);", "_lanes_math",
+                    tmp_path_factory.mktemp("lanes"))
 
     def evaluate(values: np.ndarray) -> np.ndarray:
         w = module.lib.lanes()
@@ -188,6 +193,43 @@ void f_many(int n, const double *x, double *y) {
         return xs, out
 
     return evaluate
+
+
+def test_sin_and_cos_near_a_point_are_within_two_ulps(tmp_path):
+    """The RK4 stages take sin and cos by rotating from the step's start (``near``): near it, within 2
+    ulps of the C library; farther, or large, or not finite, what ``hl_sincos`` gives."""
+    x = sp.Symbol("x0", real=True)
+    kernel = Kernel("g", (Arg("x", sp.Matrix([x])),), (Arg("y", sp.Matrix([sp.sin(x), sp.cos(x)])),), "near")
+    source = PRELUDE + libm_maps() + lanes_function(kernel, near=1) + """
+int lanes(void) { return HL_W; }
+void g_many(int n, const double *x, const double *x0, double *y) {
+    int i, l, j;
+    for (i = 0; i + HL_W <= n; i += HL_W) {
+        hl_v in[1], out[2], base[3];
+        for (l = 0; l < HL_W; ++l) in[0][l] = x[i + l], base[0][l] = x0[i + l];
+        hl_sincos(base[0], base + 1, base + 2);
+        g_lanes(in, out, base);
+        for (j = 0; j < 2; ++j) for (l = 0; l < HL_W; ++l) y[(long)j * n + i + l] = out[j][l];
+    }
+}
+"""
+    module = _build(source, "int lanes(void); void g_many(int n, const double *x, const double *x0, double *y);",
+                    "_lanes_near", tmp_path)
+    rng = np.random.default_rng(9)
+    n = 8 * 1500
+    x0 = np.concatenate([rng.uniform(-4, 4, n // 2), rng.uniform(-1e5, 1e5, n // 4), rng.uniform(-1e7, 1e7, n // 4)])
+    d = rng.uniform(-2.0**-9, 2.0**-9, n) * rng.choice([1.0, 1e-6, 0.0, 3.0], n)  # near, very near, at, far
+    x = x0 + d
+    x[:8] = [np.nan, np.inf, -np.inf, 1e300, x0[4] + 2.0**-9, x0[5] - 2.0**-9, 0.0, -0.0]
+    y = np.empty((2, n))
+    module.lib.g_many(n, *(module.ffi.from_buffer("double[]", a) for a in (np.ascontiguousarray(x),
+                                                                           np.ascontiguousarray(x0), y)))
+    with np.errstate(invalid="ignore"):
+        for got, want in zip(y, (np.sin(x), np.cos(x))):
+            finite = np.isfinite(x)
+            assert np.isnan(got[~finite]).all()
+            assert (np.abs(got - want)[finite] <= 2 * np.spacing(1.0)).all()
+            assert (got == want).mean() > 0.5
 
 
 def test_vector_math_is_within_an_ulp_or_two_of_the_c_library(vector_math):
