@@ -15,10 +15,12 @@ so the table does not depend on the engine, the number of workers or the chunkin
 from __future__ import annotations
 
 import dataclasses
+import importlib
 import json
 import math
 import os
 import sys
+import threading
 import time
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -462,7 +464,11 @@ def _run(base, todo, todo_all, names, done_rows, engine, client, out, workers, c
     chunks = _chunks(todo, size)
     results = _local(base, chunks, workers) if engine == "local" else _dask(base, chunks, client, workers)
     rows, t0, failed = list(done_rows), time.perf_counter(), 0
-    for chunk_rows in results:
+    for k, chunk_rows in enumerate(results):
+        if k == 0 and "pandas" not in sys.modules:
+            # the table's library loads (a third of a second) while the other chunks run; not before:
+            # the local workers are forked by then, and a fork must not copy a thread in an import
+            threading.Thread(target=importlib.import_module, args=("pandas",), daemon=True).start()
         rows.extend(chunk_rows)
         failed += sum(r["status"] != "ok" for r in chunk_rows)
         if out is not None:
