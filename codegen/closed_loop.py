@@ -328,13 +328,17 @@ int {prefix}_lanes(void) {{
 """
 
 
-#: an RK4 stage inlined into the loop where lanes are many (measured: 10 % faster with 8 lanes, 8 % slower
-#: with one, where the loop is bound by latency, not throughput)
-_STAGE = """#if HL_W > 1
+#: a small RK4 stage is inlined into the loop where lanes are many (measured on the paper's plant: 10 %
+#: faster with 8 lanes, 8 % slower with one, where the loop is bound by latency, not throughput); a large
+#: one is not (the UR5's: the same speed, twice the compile time)
+_STAGE = """#if HL_W > 1 && {small}
 #define HL_STAGE static inline __attribute__((always_inline))
 #else
 #define HL_STAGE static
 #endif"""
+#: the most lines of C the two stage functions may have to be inlined (the paper's plant: about 900; the
+#: UR5's: about 11,000)
+_INLINE_LINES = 3000
 
 
 def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
@@ -347,12 +351,13 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
     held = tuple(a.name for a in spec.rhs.inputs[2:])
     shown = tuple(a.name for a in spec.outputs.inputs[1:])
     params = tuple(a.name for a in spec.step.inputs[len(_DRIVEN):])
+    stages = "".join(lanes_function(k, name, fixed, "HL_STAGE", near=nq) + "\n" for k, name, fixed in (
+        (rhs, "plant_rhs_lanes", held), (stepping_kernel(spec), "plant_rhs_signals_lanes", held + shown)))
     body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py. */\n"
             "#if !defined(__GNUC__)\n#error \"the compiled closed loop needs GCC or Clang (vector extensions)\"\n"
             f"#endif\n{f'#define HL_W {lanes}' if lanes else ''}\n{PRELUDE}\n{status_defines()}\n\n{libm_maps()}\n"
-            f"{_STAGE}\n{lanes_function(rhs, 'plant_rhs_lanes', held, 'HL_STAGE', near=nq)}\n"
+            f"{_STAGE.format(small=int(stages.count(chr(10)) <= _INLINE_LINES))}\n{stages}"
             f"{lanes_function(signals_kernel(spec), 'loop_signals_lanes', shown)}\n"
-            f"{lanes_function(stepping_kernel(spec), 'plant_rhs_signals_lanes', held + shown, 'HL_STAGE', near=nq)}\n"
             f"{lanes_function(spec.step, spec.step.name + '_lanes', params)}\n{_driver(prefix, spec)}")
     doc = ("run nruns closed loops (rows of runs, blocks as the manifest's closed_loop.blocks), HL_W at a time: "
            "n_samples control samples of sample_time [s], steps_per_sample RK4 steps of h [s] each; writes "
