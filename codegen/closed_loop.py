@@ -3,9 +3,11 @@
 ``<prefix>_closed_loop`` runs ``nruns`` experiments that share a plant, a controller step and the
 integration settings, ``HL_W`` at a time (see :mod:`codegen.lanes`): per control sample, the
 sensor's reading, one controller step (measurement, loops, law, its guards), then
-``steps_per_sample`` classical RK4 steps of the plant with the torque held (zero-order hold), and
-after every step the metrics of NOTES section 8 updated on the fly (the definitions of
-:func:`hybrid.metrics`). Per-step states and torques are written only when asked.
+``steps_per_sample`` classical RK4 steps of the plant with the torque held (zero-order hold). The
+metrics of NOTES section 8 are updated on the fly, row by row (the definitions of
+:func:`hybrid.metrics`): a row's with its step's first stage, which gives the signals they read, the
+last row's after the last step. The joints' sin and cos are computed once a step, at its start; the
+stages rotate from there. Per-step states and torques are written only when asked.
 
 Everything a run may vary is a run-time number in its row of ``runs`` (the initial state, the
 plant's parameter arrays, the controller's, the reference steps the metrics read); the manifest
@@ -104,7 +106,7 @@ def _signature(prefix: str) -> str:
             "int *failed_sample, double *states, double *taus)")
 
 
-def _driver(prefix: str, spec: LoopSpec) -> str:
+def _driver(prefix: str, spec: LoopSpec, stepping: Kernel) -> str:
     rhs, step = spec.rhs, spec.step
     nx, nq = rhs.inputs[0].size, rhs.inputs[1].size
     offset, at = {}, 0
@@ -118,7 +120,7 @@ def _driver(prefix: str, spec: LoopSpec) -> str:
     # the run's arrays each kernel holds fixed, then where its values computed once go
     held = ", ".join([*(plant[a.name] for a in rhs.inputs[2:]), "pre_rhs"])
     shown = ", ".join([*(plant[a.name] for a in spec.outputs.inputs[1:]), "pre_sig"])
-    both = ", ".join([*(plant[a.name] for a in stepping_kernel(spec).inputs[2:]), "pre_both"])
+    both = ", ".join([*(plant[a.name] for a in stepping.inputs[2:]), "pre_both"])
     params = ", ".join([*(f"blk + {offset['controller.' + a.name]}" for a in step.inputs[len(_DRIVEN):]),
                         "pre_step"])
     outs = step.core_outputs()
@@ -226,15 +228,16 @@ static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int l, lon
     for (j = 0; j < {nq}; ++j) out[{len(METRICS)} + j] = mt->tau[j][l];
 }}
 
-/* the row's state and torque of each lane still running; NaN for a lane that stopped */
+/* the row's state of each lane in `state` and torque of each lane in `torque`; NaN for the others (a lane
+   that stopped) */
 static void record(double *states, double *taus, int g, int used, long row, long rows, const hl_v *x,
-                   const hl_v *tau, hl_i alive) {{
+                   const hl_v *tau, hl_i state, hl_i torque) {{
     int l, j;
     if (!states && !taus) return;
     for (l = 0; l < used; ++l) {{
         const long at = (long)(g + l) * rows + row;
-        if (states) for (j = 0; j < {nx}; ++j) states[at * {nx} + j] = alive[l] ? x[j][l] : NAN;
-        if (taus) for (j = 0; j < {nq}; ++j) taus[at * {nq} + j] = alive[l] ? tau[j][l] : NAN;
+        if (states) for (j = 0; j < {nx}; ++j) states[at * {nx} + j] = state[l] ? x[j][l] : NAN;
+        if (taus) for (j = 0; j < {nq}; ++j) taus[at * {nq} + j] = torque[l] ? tau[j][l] : NAN;
     }}
 }}
 
@@ -281,7 +284,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         {step.name}_lanes(x, x + {nq}, fc, z, tv, zero, zero, zero, pre_step, {out_args});
 {guards}        flag(&run, {finite}, HYBRID_NONFINITE, k);
         for (j = 0; j < {2 * m}; ++j) z[j] = {z_next}[j];
-        if (k == 0) record(states, taus, g, used, 0, rows, x, {tau}, run.alive);
+        if (k == 0) record(states, taus, g, used, 0, rows, x, {tau}, hl_splat(0.0) == 0.0, run.alive);
         for (i = 0; i < steps_per_sample; ++i) {{
             /* the joints' sin and cos at the step's start: its stages rotate from there */
             for (j = 0; j < {nq}; ++j) {{
@@ -298,14 +301,14 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
             if (hl_any(~run.alive)) {{
                 for (j = 0; j < {nx}; ++j) x[j] = hl_select(run.alive, x[j], blk[{x0} + j]);
             }}
-            record(states, taus, g, used, row, rows, x, {tau}, run.alive);
+            record(states, taus, g, used, row, rows, x, {tau}, run.alive, run.alive);
         }}
     }}
     if (k > 0) {{ /* the last row */
         loop_signals_lanes(x, pre_sig, s);
         metrics_row(&mt, blk, s, {tau}, row, h, end);
     }}
-    while (++row < rows) record(states, taus, g, used, row, rows, x, {tau}, run.alive); /* every lane stopped */
+    while (++row < rows) record(states, taus, g, used, row, rows, x, {tau}, run.alive, run.alive); /* all stopped */
     for (l = 0; l < used; ++l) {{
         status[g + l] = run.status[l];
         failed_sample[g + l] = run.sample[l];
@@ -351,14 +354,15 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
     held = tuple(a.name for a in spec.rhs.inputs[2:])
     shown = tuple(a.name for a in spec.outputs.inputs[1:])
     params = tuple(a.name for a in spec.step.inputs[len(_DRIVEN):])
+    stepping = stepping_kernel(spec)
     stages = "".join(lanes_function(k, name, fixed, "HL_STAGE", near=nq) + "\n" for k, name, fixed in (
-        (rhs, "plant_rhs_lanes", held), (stepping_kernel(spec), "plant_rhs_signals_lanes", held + shown)))
+        (rhs, "plant_rhs_lanes", held), (stepping, "plant_rhs_signals_lanes", held + shown)))
     body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py. */\n"
             "#if !defined(__GNUC__)\n#error \"the compiled closed loop needs GCC or Clang (vector extensions)\"\n"
             f"#endif\n{f'#define HL_W {lanes}' if lanes else ''}\n{PRELUDE}\n{status_defines()}\n\n{libm_maps()}\n"
             f"{_STAGE.format(small=int(stages.count(chr(10)) <= _INLINE_LINES))}\n{stages}"
             f"{lanes_function(signals_kernel(spec), 'loop_signals_lanes', shown)}\n"
-            f"{lanes_function(spec.step, spec.step.name + '_lanes', params)}\n{_driver(prefix, spec)}")
+            f"{lanes_function(spec.step, spec.step.name + '_lanes', params)}\n{_driver(prefix, spec, stepping)}")
     doc = ("run nruns closed loops (rows of runs, blocks as the manifest's closed_loop.blocks), HL_W at a time: "
            "n_samples control samples of sample_time [s], steps_per_sample RK4 steps of h [s] each; writes "
            "metrics (nruns x closed_loop.metrics), status and failed_sample (-1, or the sample where a run "

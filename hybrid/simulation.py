@@ -83,11 +83,6 @@ def _initial_state(arm, surf, start_point, elbow, singular_tol, F0, k_e, K_s) ->
     return np.concatenate([q, [0.0, 0.0], s, [0.0, 0.0]])
 
 
-def inverse_kinematics(exp: Experiment, r: np.ndarray) -> np.ndarray:
-    """The joints [rad] that put the arm tip at ``r`` [m], elbow as ``exp`` asks."""
-    return _inverse_kinematics(exp.arm, exp.elbow, exp.singular_tol, r)
-
-
 def _inverse_kinematics(arm, elbow: int, singular_tol: float, r: np.ndarray) -> np.ndarray:
     L1, L2 = arm.L1, arm.L2
     dist2 = float(r @ r)

@@ -41,7 +41,8 @@ def _value(name: str, value):
     if isinstance(value, dict):
         if len(value) != 1 or next(iter(value)) not in sw.DISTRIBUTIONS:
             raise HybridError(f"parameter {name!r}: a table must name one distribution "
-                              f"({', '.join(sw.DISTRIBUTIONS)}), e.g. {{uniform = [0.0, 0.3]}}")
+                              f"({', '.join(sw.DISTRIBUTIONS)}), e.g. {{uniform = [0.0, 0.3]}}, or evenly "
+                              "spaced values, {linspace = [first, last, count]}")
         kind, args = next(iter(value.items()))
         if not isinstance(args, list) or len(args) != 2:
             raise HybridError(f"parameter {name!r}: {kind} takes two numbers, e.g. {{{kind} = [0.0, 0.3]}}")
@@ -52,14 +53,24 @@ def _value(name: str, value):
 
 
 def _linspace(name: str, args) -> list[float]:
-    ok = (isinstance(args, list) and len(args) == 3 and all(isinstance(a, (int, float)) and not isinstance(a, bool)
-                                                             for a in args) and isinstance(args[2], int))
-    if not ok or not 1 <= args[2] <= 1_000_000 or not all(math.isfinite(a) for a in args[:2]):
-        raise HybridError(f"parameter {name!r}: linspace takes the first and last values and a whole count of "
-                          f"1 to 1,000,000, e.g. {{linspace = [0.0, 0.5, 11]}}; got {args!r:.60}")
-    first, last, count = args
-    # rounded to 12 digits: 0.3, not 0.30000000000000004, in the table and on the figures' axes
-    return [float(f"{first + (last - first) * i / max(count - 1, 1):.12g}") for i in range(count)]
+    usage = (f"parameter {name!r}: linspace takes the first and last values and a whole count of 1 to "
+             f"1,000,000, e.g. {{linspace = [0.0, 0.5, 11]}}; got {args!r:.60}")
+    numbers = (isinstance(args, list) and len(args) == 3 and not any(isinstance(a, bool) for a in args)
+               and all(isinstance(a, (int, float)) for a in args))
+    try:
+        first, last, count = (float(args[0]), float(args[1]), args[2]) if numbers else (0.0, 0.0, 0)
+    except (TypeError, ValueError, OverflowError):
+        raise HybridError(usage) from None
+    if not (isinstance(count, int) and 1 <= count <= 1_000_000 and math.isfinite(first) and math.isfinite(last)):
+        raise HybridError(usage)
+    if count > 1 and first == last:
+        raise HybridError(f"parameter {name!r}: linspace from {first:g} to itself gives {count} equal values; give "
+                          "two different ends, or a count of 1")
+    # rounded to 12 digits of the span: 0.3, not 0.30000000000000004, and 0, not 1e-17, in the table and
+    # on the figures' axes
+    span = abs(last - first) or abs(first) or 1.0
+    digits = max(0, 12 - math.floor(math.log10(span)))
+    return [round(first + (last - first) * i / max(count - 1, 1), digits) + 0.0 for i in range(count)]
 
 
 def _base(kind: str, settings: dict):

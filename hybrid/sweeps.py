@@ -276,6 +276,8 @@ def _local(base, chunks, workers: int):
 
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
     if method == "fork":
+        if _PRELOAD[0] is not None:  # an interrupted sweep's: a fork must not copy a thread in an import
+            _PRELOAD[0].join()
         _load_loops(base, chunks)
     with ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context(method)) as pool:
         futures = [pool.submit(run_points, base, chunk) for chunk in chunks]
@@ -468,7 +470,8 @@ def _run(base, todo, todo_all, names, done_rows, engine, client, out, workers, c
         if k == 0 and "pandas" not in sys.modules:
             # the table's library loads (a third of a second) while the other chunks run; not before:
             # the local workers are forked by then, and a fork must not copy a thread in an import
-            threading.Thread(target=importlib.import_module, args=("pandas",), daemon=True).start()
+            _PRELOAD[0] = threading.Thread(target=_preload_pandas, daemon=True)
+            _PRELOAD[0].start()
         rows.extend(chunk_rows)
         failed += sum(r["status"] != "ok" for r in chunk_rows)
         if out is not None:
@@ -483,6 +486,17 @@ def _run(base, todo, todo_all, names, done_rows, engine, client, out, workers, c
         if csv:
             files.write_with(out / "results.csv", lambda tmp: table.to_csv(tmp, index=False), overwrite=True)
     return table
+
+
+#: the thread loading pandas during a sweep, if any (a later sweep waits for it before it forks)
+_PRELOAD: list = [None]
+
+
+def _preload_pandas() -> None:
+    try:
+        importlib.import_module("pandas")
+    except ImportError:  # said where the table needs it, in the sweep's own thread
+        pass
 
 
 def _progress(done: int, total: int, failed: int, seconds: float) -> None:

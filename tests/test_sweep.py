@@ -186,9 +186,17 @@ def test_linspace_values_and_refusals():
     got = sweep_cli._value("x", {"linspace": [0.1, 0.7, 7]})
     np.testing.assert_allclose(got, np.linspace(0.1, 0.7, 7), rtol=1e-12)
     assert got[2] == 0.3 and sweep_cli._value("x", {"linspace": [2, 5, 1]}) == [2.0]
-    for bad in ([0.0, 1.0], [0.0, 1.0, 2.5], [0.0, float("nan"), 3], [0.0, 1.0, 0], "0:1", [0.0, 1.0, True]):
+    assert sweep_cli._value("x", {"linspace": [-0.1, 0.2, 4]})[1] == 0.0  # not 1.4e-17
+    close = sweep_cli._value("x", {"linspace": [1.0, 1.0 + 1e-12, 5]})  # the rounding follows the span
+    assert len(set(close)) == 5 and close[-1] == 1.0 + 1e-12
+    for bad in ([0.0, 1.0], [0.0, 1.0, 2.5], [0.0, float("nan"), 3], [0.0, 1.0, 0], "0:1", [0.0, 1.0, True],
+                [0, 10**400, 3], ["0", "1", 3]):
         with pytest.raises(hybrid.HybridError, match="linspace takes"):
             sweep_cli._value("x", {"linspace": bad})
+    with pytest.raises(hybrid.HybridError, match="to itself"):
+        sweep_cli._value("x", {"linspace": [1.0, 1.0, 3]})
+    with pytest.raises(hybrid.HybridError, match="linspace = "):  # a table with more: the message names it
+        sweep_cli._value("x", {"linspace": [0.0, 1.0, 3], "uniform": [0.0, 1.0]})
 
 
 def test_readme_sweep_example_runs():
