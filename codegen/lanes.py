@@ -90,7 +90,7 @@ static inline hl_v hl_sqrt(hl_v x) {
 #define HL_MAP2(name, f) static inline hl_v name(hl_v x, hl_v y) { \
     hl_v r = x; int l; for (l = 0; l < HL_W; ++l) r[l] = f(x[l], y[l]); return r; }
 
-/* Each of sin, cos, exp and tanh comes twice: hl_<f>_poly is the vector polynomial alone, which marks
+/* Each of sincos, exp and tanh comes twice: hl_<f>_poly is the vector polynomial alone, which marks
    in *odd the lanes it does not cover (a large or non-finite argument) and gives them meaningless
    numbers; hl_<f> gives those lanes the C library's value, so no lane depends on its neighbours. A
    kernel runs on the polynomials and, when a lane is odd, once again on the exact functions: its hot
@@ -134,27 +134,6 @@ static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
         }
     }
 }
-static inline hl_v hl_sin_poly(hl_v x, hl_i *odd) {
-    hl_v s, c;
-    hl_sincos_poly(x, &s, &c, odd);
-    return s;
-}
-static inline hl_v hl_cos_poly(hl_v x, hl_i *odd) {
-    hl_v s, c;
-    hl_sincos_poly(x, &s, &c, odd);
-    return c;
-}
-static inline hl_v hl_sin(hl_v x) {
-    hl_v s, c;
-    hl_sincos(x, &s, &c);
-    return s;
-}
-static inline hl_v hl_cos(hl_v x) {
-    hl_v s, c;
-    hl_sincos(x, &s, &c);
-    return c;
-}
-
 /* sin and cos of x near x0, from base = (x0, sin x0, cos x0): x0's rotated by d = x - x0 with Taylor
    polynomials of sin d (to d^5) and cos d - 1 (to d^4), whose truncation is below 1e-19 for |d| <= 2^-9; a
    lane farther from x0 (or not finite) takes the polynomials (_near_poly, odd as they say) or hl_sincos
@@ -209,15 +188,12 @@ static inline hl_v hl_exp_poly(hl_v x, hl_i *odd) {
     *odd |= big;
     return y * (hl_v)(k << 52);
 }
-static inline hl_v hl_exp(hl_v x) {
-    hl_i big = hl_splat(0.0) != 0.0;
-    hl_v r = hl_exp_poly(x, &big);
-    int l;
-    if (hl_any(big)) {
-        for (l = 0; l < HL_W; ++l) if (big[l]) r[l] = exp(x[l]);
-    }
-    return r;
-}
+/* the exact form of a one-argument polynomial hl_<f>_poly: its odd lanes take the C library's f */
+#define HL_EXACT1(name, f) static inline hl_v name(hl_v x) { \
+    hl_i odd = hl_splat(0.0) != 0.0; hl_v r = name##_poly(x, &odd); int l; \
+    if (hl_any(odd)) for (l = 0; l < HL_W; ++l) if (odd[l]) r[l] = f(x[l]); \
+    return r; }
+HL_EXACT1(hl_exp, exp)
 
 /* tanh: 1 - 2 / (exp(2|x|) + 1) with the sign of x, and Cephes' rational form where |x| < 0.625
    (computed only when a lane needs it); from |x| = 20 on that is +-1 exactly, so where every lane is
@@ -239,15 +215,7 @@ static inline hl_v hl_tanh_poly(hl_v x, hl_i *odd) {
     }
     return hl_select(x == 0.0, x, r); /* tanh(-0) = -0 */
 }
-static inline hl_v hl_tanh(hl_v x) {
-    hl_i nan = hl_splat(0.0) != 0.0;
-    hl_v r = hl_tanh_poly(x, &nan);
-    int l;
-    if (hl_any(nan)) {
-        for (l = 0; l < HL_W; ++l) if (nan[l]) r[l] = tanh(x[l]);
-    }
-    return r;
-}
+HL_EXACT1(hl_tanh, tanh)
 """
 
 #: functions of the C library applied lane by lane: CasADi operation -> C function
@@ -258,8 +226,8 @@ _LIBM2 = {"OP_ATAN2": "atan2", "OP_FMOD": "fmod", "OP_HYPOT": "hypot", "OP_POW":
 #: the rest: CasADi operation -> C expression of the work variables {a} and {b}
 _OPS = {"OP_ASSIGN": "{a}", "OP_ADD": "{a} + {b}", "OP_SUB": "{a} - {b}", "OP_MUL": "{a} * {b}",
         "OP_DIV": "{a} / {b}", "OP_NEG": "-{a}", "OP_SQ": "{a} * {a}", "OP_TWICE": "{a} + {a}",
-        "OP_INV": "1.0 / {a}", "OP_SQRT": "hl_sqrt({a})", "OP_SIN": "hl_sin({a})", "OP_COS": "hl_cos({a})",
-        "OP_EXP": "hl_exp({a})", "OP_TANH": "hl_tanh({a})", "OP_FABS": "hl_fabs({a})", "OP_SIGN": "hl_sign({a})",
+        "OP_INV": "1.0 / {a}", "OP_SQRT": "hl_sqrt({a})", "OP_EXP": "hl_exp({a})", "OP_TANH": "hl_tanh({a})",
+        "OP_FABS": "hl_fabs({a})", "OP_SIGN": "hl_sign({a})",
         "OP_COPYSIGN": "hl_copysign({a}, {b})", "OP_FMIN": "hl_fmin({a}, {b})", "OP_FMAX": "hl_fmax({a}, {b})",
         "OP_LT": "hl_bool({a} < {b})", "OP_LE": "hl_bool({a} <= {b})", "OP_EQ": "hl_bool({a} == {b})",
         "OP_NE": "hl_bool({a} != {b})", "OP_NOT": "hl_bool({a} == 0.0)",
@@ -267,10 +235,11 @@ _OPS = {"OP_ASSIGN": "{a}", "OP_ADD": "{a} + {b}", "OP_SUB": "{a} - {b}", "OP_MU
         "OP_IF_ELSE_ZERO": "hl_select({a} != 0.0, {b}, hl_splat(0.0))"}
 _OPS.update({op: f"hl_{f}({{a}})" for op, f in _LIBM1.items()})
 _OPS.update({op: f"hl_{f}({{a}}, {{b}})" for op, f in _LIBM2.items()})
-_BY_CODE = {getattr(ca, name): name for name in (*_OPS, "OP_CONST", "OP_INPUT", "OP_OUTPUT")}
-#: the operations with a polynomial that leaves some lanes to the C library (see PRELUDE)
-_POLY = {"OP_SIN": "hl_sin_poly({a}, &odd)", "OP_COS": "hl_cos_poly({a}, &odd)", "OP_EXP": "hl_exp_poly({a}, &odd)",
-         "OP_TANH": "hl_tanh_poly({a}, &odd)"}
+#: sin and cos: one sincos call (hl_sincos, or hl_sincos_near from an RK4 step's start) gives both
+_TRIG = ("OP_SIN", "OP_COS")
+_BY_CODE = {getattr(ca, name): name for name in (*_OPS, *_TRIG, "OP_CONST", "OP_INPUT", "OP_OUTPUT")}
+#: the operations with a polynomial that leaves some lanes to the C library (see PRELUDE), sin and cos too
+_POLY = {"OP_EXP": "hl_exp_poly({a}, odd)", "OP_TANH": "hl_tanh_poly({a}, odd)"}
 
 
 def _constant(value: float) -> str:
@@ -315,7 +284,7 @@ def _program(kernel: Kernel, fixed: tuple[str, ...] | None):
         elif op == "OP_CONST":
             ops.append((op, (), float(f.instruction_constant(k))))
         else:
-            ops.append((op, tuple(slot[i] for i in ins[:2 if "{b}" in _OPS[op] else 1]), None))
+            ops.append((op, tuple(slot[i] for i in ins[:2 if "{b}" in _OPS.get(op, "") else 1]), None))
         slot[out[0]] = len(ops) - 1
     fixed_inputs = {i for i, a in enumerate(kernel.inputs) if a.name in (fixed or ())}
     invariant = []
@@ -392,33 +361,32 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
                for o, other in (("OP_SIN", "OP_COS"), ("OP_COS", "OP_SIN"))}
 
     def near_slot(v) -> int | None:  # the base slot of a sin or cos of one of the first `near` state elements
-        op, args, _ = ops[v]
-        arg = ops[args[0]] if op in ("OP_SIN", "OP_COS") else None
-        return arg[2][1] if arg and arg[0] == "OP_INPUT" and arg[2][0] == 0 and arg[2][1] < near else None
+        arg = ops[ops[v][1][0]]
+        return arg[2][1] if arg[0] == "OP_INPUT" and arg[2][0] == 0 and arg[2][1] < near else None
 
-    def body(values, read_cached: bool, poly: bool = False) -> list[str]:
+    def body(values, read_cached: bool, either: bool = False) -> list[str]:
+        """C statements of ``values``: the exact functions, or with ``either`` the exact ones or the
+        polynomials as the core's ``exact`` says."""
+        def pick(exact: str, poly: str) -> str:
+            return f"(exact ? {exact} : {poly})" if either else exact
+
         lines, fused = [], set()
         here = set(values)
         for v in values:
             op, args, extra = ops[v]
             if v in fused:
                 continue
-            p = partner.get(v)
-            k = near_slot(v)
-            if k is not None and not (read_cached and v in slot):
+            if op in _TRIG and not (read_cached and v in slot):
+                p = partner.get(v)
                 pair = (v, p) if p is not None and p in here and not (read_cached and p in slot) else (v, None)
                 fused.update(x for x in pair if x is not None)
                 s_, c_ = (f"v{x}" if x is not None else f"t{v}" for x in (pair if op == "OP_SIN" else pair[::-1]))
+                k = near_slot(v)
+                f, at = ("hl_sincos_near", f", base + {3 * k}") if k is not None else ("hl_sincos", "")
+                where = f"v{args[0]}{at}, &{s_}, &{c_}"
                 lines.append(f"    hl_v {s_}, {c_};")
-                lines.append(f"    hl_sincos_near{'_poly' if poly else ''}(v{args[0]}, base + {3 * k}, &{s_}, &{c_}"
-                             f"{', &odd' if poly else ''});")
-                continue
-            if p is not None and p in here and not (read_cached and (v in slot or p in slot)):
-                s_, c_ = (v, p) if op == "OP_SIN" else (p, v)
-                fused.add(p)
-                lines.append(f"    hl_v v{s_}, v{c_};")
-                call = "hl_sincos_poly" if poly else "hl_sincos"
-                lines.append(f"    {call}(v{args[0]}, &v{s_}, &v{c_}{', &odd' if poly else ''});")
+                lines.append(f"    if (exact) {f}({where}); else {f}_poly({where}, odd);" if either
+                             else f"    {f}({where});")
                 continue
             if read_cached and v in slot:
                 rhs = f"pre[{slot[v]}]"
@@ -427,8 +395,10 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
             elif op == "OP_CONST":
                 rhs = _constant(extra)
             else:
-                rhs = (_POLY if poly and op in _POLY else _OPS)[op].format(
-                    a=f"v{args[0]}", b=f"v{args[1]}" if len(args) > 1 else "")
+                a_, b_ = f"v{args[0]}", f"v{args[1]}" if len(args) > 1 else ""
+                rhs = _OPS[op].format(a=a_, b=b_)
+                if op in _POLY:
+                    rhs = pick(rhs, _POLY[op].format(a=a_))
             lines.append(f"    const hl_v v{v} = {rhs};")
         return lines
 
@@ -449,17 +419,19 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
     unused = [*(f"    (void){a.name};" for a in hot_inputs), *(["    (void)pre;"] if split else []),
               *(["    (void)base;"] if near else [])]
     store = [f"    {outs[o].name}[{i}] = v{v};" for o, i, v in outputs]
-    if not any(ops[v][0] in _POLY and v not in slot for v in hot):
+    if not any(ops[v][0] in (*_POLY, *_TRIG) and v not in slot for v in hot):
         return "\n".join([*text, f"{storage} void {name}({', '.join(params)}) {{", *unused, *body(hot, True), *store,
                            "}", ""])
-    # the polynomials on every lane; where one is odd, everything again with the exact functions
+    # one core, twice: on the polynomials, and where a lane is odd everything again on the exact functions
+    # (the outputs, written first, do not alias the inputs)
     args = ", ".join([*(a.name for a in hot_inputs), *(["pre"] if split else []), *(a.name for a in outs),
                       *(["base"] if near else [])])
-    text += [f"static __attribute__((noinline, cold)) void {name}_exact({', '.join(params)}) {{", *unused,
-             *body(hot, True), *store, "}", "",
-             f"{storage} void {name}({', '.join(params)}) {{", "    hl_i odd = hl_splat(0.0) != 0.0;", *unused,
-             *body(hot, True, poly=True), "    if (hl_any(odd)) {", f"        {name}_exact({args});",
-             "        return;", "    }", *store, "}", ""]
+    text += [f"static inline __attribute__((always_inline)) void {name}_core({', '.join(params)}, const int exact, "
+             "hl_i *odd) {", *unused, "    (void)odd;", *body(hot, True, either=True), *store, "}", "",
+             f"static __attribute__((noinline, cold)) void {name}_exact({', '.join(params)}) {{",
+             f"    {name}_core({args}, 1, NULL);", "}", "",
+             f"{storage} void {name}({', '.join(params)}) {{", "    hl_i odd = hl_splat(0.0) != 0.0;",
+             f"    {name}_core({args}, 0, &odd);", f"    if (hl_any(odd)) {name}_exact({args});", "}", ""]
     return "\n".join(text)
 
 

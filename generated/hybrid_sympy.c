@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 87f56d05f175427ae47b9815a07a5f32b36721562edc6f11039602c13a9b36cd */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: cbe5a83e2c54ac12f03a243cdda2ee19af4be42d41fa6522d9105cc4a4b3c4cb */
 /* hybrid_sympy: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
    Emitted by the sympy backend of hybrid's codegen (SymPy 1.14.0), generator version 5.
    Compile: cc -std=c99 -O2 -c hybrid_sympy.c (link with -lm). */
@@ -776,7 +776,7 @@ static inline hl_v hl_sqrt(hl_v x) {
 #define HL_MAP2(name, f) static inline hl_v name(hl_v x, hl_v y) { \
     hl_v r = x; int l; for (l = 0; l < HL_W; ++l) r[l] = f(x[l], y[l]); return r; }
 
-/* Each of sin, cos, exp and tanh comes twice: hl_<f>_poly is the vector polynomial alone, which marks
+/* Each of sincos, exp and tanh comes twice: hl_<f>_poly is the vector polynomial alone, which marks
    in *odd the lanes it does not cover (a large or non-finite argument) and gives them meaningless
    numbers; hl_<f> gives those lanes the C library's value, so no lane depends on its neighbours. A
    kernel runs on the polynomials and, when a lane is odd, once again on the exact functions: its hot
@@ -820,27 +820,6 @@ static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
         }
     }
 }
-static inline hl_v hl_sin_poly(hl_v x, hl_i *odd) {
-    hl_v s, c;
-    hl_sincos_poly(x, &s, &c, odd);
-    return s;
-}
-static inline hl_v hl_cos_poly(hl_v x, hl_i *odd) {
-    hl_v s, c;
-    hl_sincos_poly(x, &s, &c, odd);
-    return c;
-}
-static inline hl_v hl_sin(hl_v x) {
-    hl_v s, c;
-    hl_sincos(x, &s, &c);
-    return s;
-}
-static inline hl_v hl_cos(hl_v x) {
-    hl_v s, c;
-    hl_sincos(x, &s, &c);
-    return c;
-}
-
 /* sin and cos of x near x0, from base = (x0, sin x0, cos x0): x0's rotated by d = x - x0 with Taylor
    polynomials of sin d (to d^5) and cos d - 1 (to d^4), whose truncation is below 1e-19 for |d| <= 2^-9; a
    lane farther from x0 (or not finite) takes the polynomials (_near_poly, odd as they say) or hl_sincos
@@ -895,15 +874,12 @@ static inline hl_v hl_exp_poly(hl_v x, hl_i *odd) {
     *odd |= big;
     return y * (hl_v)(k << 52);
 }
-static inline hl_v hl_exp(hl_v x) {
-    hl_i big = hl_splat(0.0) != 0.0;
-    hl_v r = hl_exp_poly(x, &big);
-    int l;
-    if (hl_any(big)) {
-        for (l = 0; l < HL_W; ++l) if (big[l]) r[l] = exp(x[l]);
-    }
-    return r;
-}
+/* the exact form of a one-argument polynomial hl_<f>_poly: its odd lanes take the C library's f */
+#define HL_EXACT1(name, f) static inline hl_v name(hl_v x) { \
+    hl_i odd = hl_splat(0.0) != 0.0; hl_v r = name##_poly(x, &odd); int l; \
+    if (hl_any(odd)) for (l = 0; l < HL_W; ++l) if (odd[l]) r[l] = f(x[l]); \
+    return r; }
+HL_EXACT1(hl_exp, exp)
 
 /* tanh: 1 - 2 / (exp(2|x|) + 1) with the sign of x, and Cephes' rational form where |x| < 0.625
    (computed only when a lane needs it); from |x| = 20 on that is +-1 exactly, so where every lane is
@@ -925,15 +901,7 @@ static inline hl_v hl_tanh_poly(hl_v x, hl_i *odd) {
     }
     return hl_select(x == 0.0, x, r); /* tanh(-0) = -0 */
 }
-static inline hl_v hl_tanh(hl_v x) {
-    hl_i nan = hl_splat(0.0) != 0.0;
-    hl_v r = hl_tanh_poly(x, &nan);
-    int l;
-    if (hl_any(nan)) {
-        for (l = 0; l < HL_W; ++l) if (nan[l]) r[l] = tanh(x[l]);
-    }
-    return r;
-}
+HL_EXACT1(hl_tanh, tanh)
 
 HL_MAP1(hl_acos, acos)
 HL_MAP1(hl_acosh, acosh)
@@ -1049,18 +1017,19 @@ static void decoupling_law_plane_lanes_pre(const hl_v *arm, const hl_v *surface,
     (void)pre;
 }
 
-static __attribute__((noinline, cold)) void decoupling_law_plane_lanes_exact(const hl_v *q, const hl_v *qd, const hl_v *a, const hl_v *Fc, const hl_v *pre, hl_v *F, hl_v *tau, hl_v *cond) {
+static inline __attribute__((always_inline)) void decoupling_law_plane_lanes_core(const hl_v *q, const hl_v *qd, const hl_v *a, const hl_v *Fc, const hl_v *pre, hl_v *F, hl_v *tau, hl_v *cond, const int exact, hl_i *odd) {
     (void)q;
     (void)qd;
     (void)a;
     (void)Fc;
     (void)pre;
+    (void)odd;
     const hl_v v0 = q[0];
     hl_v v5, v1;
-    hl_sincos(v0, &v5, &v1);
+    if (exact) hl_sincos(v0, &v5, &v1); else hl_sincos_poly(v0, &v5, &v1, odd);
     const hl_v v2 = q[1];
     hl_v v6, v3;
-    hl_sincos(v2, &v6, &v3);
+    if (exact) hl_sincos(v2, &v6, &v3); else hl_sincos_poly(v2, &v6, &v3, odd);
     const hl_v v4 = v1 * v3;
     const hl_v v7 = v5 * v6;
     const hl_v v8 = v4 - v7;
@@ -1215,175 +1184,14 @@ static __attribute__((noinline, cold)) void decoupling_law_plane_lanes_exact(con
     cond[0] = v161;
 }
 
+static __attribute__((noinline, cold)) void decoupling_law_plane_lanes_exact(const hl_v *q, const hl_v *qd, const hl_v *a, const hl_v *Fc, const hl_v *pre, hl_v *F, hl_v *tau, hl_v *cond) {
+    decoupling_law_plane_lanes_core(q, qd, a, Fc, pre, F, tau, cond, 1, NULL);
+}
+
 static void decoupling_law_plane_lanes(const hl_v *q, const hl_v *qd, const hl_v *a, const hl_v *Fc, const hl_v *pre, hl_v *F, hl_v *tau, hl_v *cond) {
     hl_i odd = hl_splat(0.0) != 0.0;
-    (void)q;
-    (void)qd;
-    (void)a;
-    (void)Fc;
-    (void)pre;
-    const hl_v v0 = q[0];
-    hl_v v5, v1;
-    hl_sincos_poly(v0, &v5, &v1, &odd);
-    const hl_v v2 = q[1];
-    hl_v v6, v3;
-    hl_sincos_poly(v2, &v6, &v3, &odd);
-    const hl_v v4 = v1 * v3;
-    const hl_v v7 = v5 * v6;
-    const hl_v v8 = v4 - v7;
-    const hl_v v9 = pre[0];
-    const hl_v v10 = v8 * v9;
-    const hl_v v11 = v1 * v6;
-    const hl_v v12 = v5 * v3;
-    const hl_v v13 = v11 + v12;
-    const hl_v v14 = v13 * v9;
-    const hl_v v15 = pre[1];
-    const hl_v v16 = v1 * v15;
-    const hl_v v17 = v16 + v10;
-    const hl_v v18 = v14 * v17;
-    const hl_v v19 = v5 * v15;
-    const hl_v v20 = v14 + v19;
-    const hl_v v21 = v20 * v10;
-    const hl_v v22 = v18 - v21;
-    const hl_v v162 = 1.0 / v22;
-    const hl_v v23 = v10 * v162;
-    const hl_v v24 = qd[0];
-    const hl_v v25 = qd[1];
-    const hl_v v26 = v10 * v25;
-    const hl_v v27 = v17 * v24;
-    const hl_v v28 = v26 + v27;
-    const hl_v v29 = v24 * v28;
-    const hl_v v31 = pre[2];
-    const hl_v v163 = pre[3];
-    const hl_v v36 = pre[4];
-    const hl_v v37 = a[0];
-    const hl_v v38 = v36 * v37;
-    const hl_v v39 = v29 - v38;
-    const hl_v v40 = v10 * v24;
-    const hl_v v41 = v26 + v40;
-    const hl_v v42 = v25 * v41;
-    const hl_v v43 = v39 + v42;
-    const hl_v v44 = a[1];
-    const hl_v v45 = v44 * v163;
-    const hl_v v46 = v45 * v31;
-    const hl_v v47 = v43 + v46;
-    const hl_v v48 = v47 * v23;
-    const hl_v v49 = v36 * v44;
-    const hl_v v50 = v14 * v25;
-    const hl_v v51 = v20 * v24;
-    const hl_v v52 = v50 + v51;
-    const hl_v v53 = v24 * v52;
-    const hl_v v54 = v49 + v53;
-    const hl_v v55 = v14 * v24;
-    const hl_v v56 = v50 + v55;
-    const hl_v v57 = v25 * v56;
-    const hl_v v58 = v54 + v57;
-    const hl_v v59 = v37 * v163;
-    const hl_v v60 = v59 * v31;
-    const hl_v v61 = v58 + v60;
-    const hl_v v62 = v14 * v162;
-    const hl_v v63 = v61 * v62;
-    const hl_v v64 = v48 + v63;
-    const hl_v v66 = pre[5];
-    const hl_v v68 = pre[6];
-    const hl_v v69 = pre[7];
-    const hl_v v72 = pre[8];
-    const hl_v v73 = pre[9];
-    const hl_v v74 = pre[10];
-    const hl_v v75 = pre[11];
-    const hl_v v77 = pre[12];
-    const hl_v v78 = pre[13];
-    const hl_v v79 = v78 * v3;
-    const hl_v v80 = v79 + v79;
-    const hl_v v81 = v77 + v80;
-    const hl_v v82 = v73 * v81;
-    const hl_v v83 = v72 + v82;
-    const hl_v v84 = v64 * v83;
-    const hl_v v85 = v17 * v162;
-    const hl_v v86 = v47 * v85;
-    const hl_v v87 = v20 * v162;
-    const hl_v v88 = v61 * v87;
-    const hl_v v89 = v86 + v88;
-    const hl_v v90 = v75 + v79;
-    const hl_v v91 = v73 * v90;
-    const hl_v v92 = v66 + v91;
-    const hl_v v93 = v89 * v92;
-    const hl_v v94 = v84 - v93;
-    const hl_v v95 = pre[14];
-    const hl_v v96 = pre[15];
-    const hl_v v97 = v8 * v74;
-    const hl_v v98 = v16 + v97;
-    const hl_v v99 = v96 * v98;
-    const hl_v v100 = v94 + v99;
-    const hl_v v101 = pre[16];
-    const hl_v v102 = v101 * v24;
-    const hl_v v103 = v100 + v102;
-    const hl_v v104 = Fc[0];
-    const hl_v v105 = v20 * v104;
-    const hl_v v106 = v103 + v105;
-    const hl_v v107 = v78 * v6;
-    const hl_v v108 = v107 * v73;
-    const hl_v v109 = v25 * v25;
-    const hl_v v110 = v108 * v109;
-    const hl_v v111 = v106 - v110;
-    const hl_v v112 = Fc[1];
-    const hl_v v113 = v17 * v112;
-    const hl_v v114 = v111 - v113;
-    const hl_v v115 = pre[17];
-    const hl_v v116 = v115 * v108;
-    const hl_v v117 = v116 * v24;
-    const hl_v v118 = v117 * v25;
-    const hl_v v119 = v114 + v118;
-    const hl_v v120 = v1 * v95;
-    const hl_v v121 = v120 * v68;
-    const hl_v v122 = v121 * v69;
-    const hl_v v123 = v119 + v122;
-    const hl_v v124 = v23 * v123;
-    const hl_v v125 = v14 * v104;
-    const hl_v v127 = pre[18];
-    const hl_v v128 = v89 * v127;
-    const hl_v v129 = v125 - v128;
-    const hl_v v130 = v92 * v64;
-    const hl_v v131 = v129 + v130;
-    const hl_v v132 = v97 * v96;
-    const hl_v v133 = v131 + v132;
-    const hl_v v134 = v24 * v24;
-    const hl_v v135 = v108 * v134;
-    const hl_v v136 = v133 + v135;
-    const hl_v v137 = pre[19];
-    const hl_v v138 = v137 * v25;
-    const hl_v v139 = v136 + v138;
-    const hl_v v140 = v10 * v112;
-    const hl_v v141 = v139 - v140;
-    const hl_v v142 = v85 * v141;
-    const hl_v v143 = v124 - v142;
-    const hl_v v144 = v62 * v123;
-    const hl_v v145 = v87 * v141;
-    const hl_v v146 = v144 - v145;
-    const hl_v v147 = v18 + v18;
-    const hl_v v148 = -v21;
-    const hl_v v149 = v148 + v148;
-    const hl_v v150 = v147 + v149;
-    const hl_v v151 = v20 * v20;
-    const hl_v v152 = v17 * v17;
-    const hl_v v153 = v151 + v152;
-    const hl_v v154 = pre[20];
-    const hl_v v155 = v13 * v13;
-    const hl_v v156 = v154 * v155;
-    const hl_v v157 = v153 + v156;
-    const hl_v v158 = v8 * v8;
-    const hl_v v159 = v154 * v158;
-    const hl_v v160 = v157 + v159;
-    const hl_v v161 = v150 / v160;
-    if (hl_any(odd)) {
-        decoupling_law_plane_lanes_exact(q, qd, a, Fc, pre, F, tau, cond);
-        return;
-    }
-    F[0] = v143;
-    F[1] = v146;
-    tau[0] = v123;
-    tau[1] = v141;
-    cond[0] = v161;
+    decoupling_law_plane_lanes_core(q, qd, a, Fc, pre, F, tau, cond, 0, &odd);
+    if (hl_any(odd)) decoupling_law_plane_lanes_exact(q, qd, a, Fc, pre, F, tau, cond);
 }
 
 int hybrid_sympy_decoupling_law_plane_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
@@ -1532,16 +1340,17 @@ static void plant_outputs_plane_lanes_pre(const hl_v *arm, const hl_v *plant, co
     (void)pre;
 }
 
-static __attribute__((noinline, cold)) void plant_outputs_plane_lanes_exact(const hl_v *x, const hl_v *pre, hl_v *y) {
+static inline __attribute__((always_inline)) void plant_outputs_plane_lanes_core(const hl_v *x, const hl_v *pre, hl_v *y, const int exact, hl_i *odd) {
     (void)x;
     (void)pre;
+    (void)odd;
     const hl_v v0 = pre[0];
     const hl_v v1 = x[0];
     hl_v v6, v2;
-    hl_sincos(v1, &v6, &v2);
+    if (exact) hl_sincos(v1, &v6, &v2); else hl_sincos_poly(v1, &v6, &v2, odd);
     const hl_v v3 = x[1];
     hl_v v7, v4;
-    hl_sincos(v3, &v7, &v4);
+    if (exact) hl_sincos(v3, &v7, &v4); else hl_sincos_poly(v3, &v7, &v4, odd);
     const hl_v v5 = v2 * v4;
     const hl_v v8 = v6 * v7;
     const hl_v v9 = v5 - v8;
@@ -1621,7 +1430,7 @@ static __attribute__((noinline, cold)) void plant_outputs_plane_lanes_exact(cons
     const hl_v v89 = v87 - v88;
     const hl_v v97 = pre[12];
     const hl_v v91 = v89 * v97;
-    const hl_v v92 = hl_tanh(v91);
+    const hl_v v92 = (exact ? hl_tanh(v91) : hl_tanh_poly(v91, odd));
     const hl_v v93 = v86 * v92;
     const hl_v v94 = -v93;
     const hl_v v95 = hl_select(v73 != 0.0, v94, hl_splat(0.0));
@@ -1641,118 +1450,14 @@ static __attribute__((noinline, cold)) void plant_outputs_plane_lanes_exact(cons
     y[13] = v89;
 }
 
+static __attribute__((noinline, cold)) void plant_outputs_plane_lanes_exact(const hl_v *x, const hl_v *pre, hl_v *y) {
+    plant_outputs_plane_lanes_core(x, pre, y, 1, NULL);
+}
+
 static void plant_outputs_plane_lanes(const hl_v *x, const hl_v *pre, hl_v *y) {
     hl_i odd = hl_splat(0.0) != 0.0;
-    (void)x;
-    (void)pre;
-    const hl_v v0 = pre[0];
-    const hl_v v1 = x[0];
-    hl_v v6, v2;
-    hl_sincos_poly(v1, &v6, &v2, &odd);
-    const hl_v v3 = x[1];
-    hl_v v7, v4;
-    hl_sincos_poly(v3, &v7, &v4, &odd);
-    const hl_v v5 = v2 * v4;
-    const hl_v v8 = v6 * v7;
-    const hl_v v9 = v5 - v8;
-    const hl_v v10 = v0 * v9;
-    const hl_v v11 = pre[1];
-    const hl_v v12 = v2 * v11;
-    const hl_v v13 = v10 + v12;
-    const hl_v v14 = v2 * v7;
-    const hl_v v15 = v6 * v4;
-    const hl_v v16 = v14 + v15;
-    const hl_v v17 = v0 * v16;
-    const hl_v v18 = v6 * v11;
-    const hl_v v19 = v17 + v18;
-    const hl_v v26 = pre[2];
-    const hl_v v27 = x[3];
-    const hl_v v28 = v10 * v27;
-    const hl_v v29 = x[2];
-    const hl_v v30 = v13 * v29;
-    const hl_v v31 = v28 + v30;
-    const hl_v v32 = v26 * v31;
-    const hl_v v33 = v17 * v27;
-    const hl_v v34 = v19 * v29;
-    const hl_v v35 = v33 + v34;
-    const hl_v v36 = pre[3];
-    const hl_v v37 = v35 * v36;
-    const hl_v v38 = v32 + v37;
-    const hl_v v39 = v36 * v31;
-    const hl_v v40 = v26 * v35;
-    const hl_v v41 = v39 - v40;
-    const hl_v v42 = pre[4];
-    const hl_v v43 = x[4];
-    const hl_v v44 = v43 - v13;
-    const hl_v v45 = v42 * v44;
-    const hl_v v46 = pre[5];
-    const hl_v v47 = x[6];
-    const hl_v v48 = v35 + v47;
-    const hl_v v49 = v46 * v48;
-    const hl_v v50 = v45 + v49;
-    const hl_v v51 = x[5];
-    const hl_v v52 = v51 - v19;
-    const hl_v v53 = v42 * v52;
-    const hl_v v54 = x[7];
-    const hl_v v55 = v54 - v31;
-    const hl_v v56 = v46 * v55;
-    const hl_v v57 = v53 + v56;
-    const hl_v v58 = v26 * v57;
-    const hl_v v59 = v36 * v50;
-    const hl_v v60 = v58 - v59;
-    const hl_v v61 = v26 * v50;
-    const hl_v v62 = v36 * v57;
-    const hl_v v63 = v61 + v62;
-    const hl_v v64 = pre[6];
-    const hl_v v65 = v43 - v64;
-    const hl_v v66 = v26 * v65;
-    const hl_v v67 = pre[7];
-    const hl_v v68 = v51 - v67;
-    const hl_v v69 = v36 * v68;
-    const hl_v v70 = v66 + v69;
-    const hl_v v71 = -v70;
-    const hl_v v72 = pre[8];
-    const hl_v v73 = hl_bool(v70 < v72);
-    const hl_v v74 = pre[9];
-    const hl_v v75 = v70 * v74;
-    const hl_v v76 = pre[10];
-    const hl_v v77 = v26 * v47;
-    const hl_v v78 = v36 * v54;
-    const hl_v v79 = v77 + v78;
-    const hl_v v80 = v76 * v79;
-    const hl_v v81 = v75 + v80;
-    const hl_v v82 = -v81;
-    const hl_v v83 = hl_fmax(v72, v82);
-    const hl_v v84 = hl_select(v73 != 0.0, v83, hl_splat(0.0));
-    const hl_v v85 = pre[11];
-    const hl_v v86 = v83 * v85;
-    const hl_v v87 = v26 * v54;
-    const hl_v v88 = v36 * v47;
-    const hl_v v89 = v87 - v88;
-    const hl_v v97 = pre[12];
-    const hl_v v91 = v89 * v97;
-    const hl_v v92 = hl_tanh_poly(v91, &odd);
-    const hl_v v93 = v86 * v92;
-    const hl_v v94 = -v93;
-    const hl_v v95 = hl_select(v73 != 0.0, v94, hl_splat(0.0));
-    if (hl_any(odd)) {
-        plant_outputs_plane_lanes_exact(x, pre, y);
-        return;
-    }
-    y[0] = v13;
-    y[1] = v19;
-    y[2] = v38;
-    y[3] = v41;
-    y[4] = v50;
-    y[5] = v57;
-    y[6] = v60;
-    y[7] = v63;
-    y[8] = v43;
-    y[9] = v51;
-    y[10] = v71;
-    y[11] = v84;
-    y[12] = v95;
-    y[13] = v89;
+    plant_outputs_plane_lanes_core(x, pre, y, 0, &odd);
+    if (hl_any(odd)) plant_outputs_plane_lanes_exact(x, pre, y);
 }
 
 int hybrid_sympy_plant_outputs_plane_batch(int nstates, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
@@ -1867,18 +1572,19 @@ static void decoupling_law_circle_lanes_pre(const hl_v *arm, const hl_v *surface
     (void)pre;
 }
 
-static __attribute__((noinline, cold)) void decoupling_law_circle_lanes_exact(const hl_v *q, const hl_v *qd, const hl_v *a, const hl_v *Fc, const hl_v *pre, hl_v *F, hl_v *tau, hl_v *cond) {
+static inline __attribute__((always_inline)) void decoupling_law_circle_lanes_core(const hl_v *q, const hl_v *qd, const hl_v *a, const hl_v *Fc, const hl_v *pre, hl_v *F, hl_v *tau, hl_v *cond, const int exact, hl_i *odd) {
     (void)q;
     (void)qd;
     (void)a;
     (void)Fc;
     (void)pre;
+    (void)odd;
     const hl_v v0 = q[0];
     hl_v v5, v1;
-    hl_sincos(v0, &v5, &v1);
+    if (exact) hl_sincos(v0, &v5, &v1); else hl_sincos_poly(v0, &v5, &v1, odd);
     const hl_v v2 = q[1];
     hl_v v6, v3;
-    hl_sincos(v2, &v6, &v3);
+    if (exact) hl_sincos(v2, &v6, &v3); else hl_sincos_poly(v2, &v6, &v3, odd);
     const hl_v v4 = v1 * v3;
     const hl_v v7 = v5 * v6;
     const hl_v v8 = v4 - v7;
@@ -2058,200 +1764,14 @@ static __attribute__((noinline, cold)) void decoupling_law_circle_lanes_exact(co
     cond[0] = v181;
 }
 
+static __attribute__((noinline, cold)) void decoupling_law_circle_lanes_exact(const hl_v *q, const hl_v *qd, const hl_v *a, const hl_v *Fc, const hl_v *pre, hl_v *F, hl_v *tau, hl_v *cond) {
+    decoupling_law_circle_lanes_core(q, qd, a, Fc, pre, F, tau, cond, 1, NULL);
+}
+
 static void decoupling_law_circle_lanes(const hl_v *q, const hl_v *qd, const hl_v *a, const hl_v *Fc, const hl_v *pre, hl_v *F, hl_v *tau, hl_v *cond) {
     hl_i odd = hl_splat(0.0) != 0.0;
-    (void)q;
-    (void)qd;
-    (void)a;
-    (void)Fc;
-    (void)pre;
-    const hl_v v0 = q[0];
-    hl_v v5, v1;
-    hl_sincos_poly(v0, &v5, &v1, &odd);
-    const hl_v v2 = q[1];
-    hl_v v6, v3;
-    hl_sincos_poly(v2, &v6, &v3, &odd);
-    const hl_v v4 = v1 * v3;
-    const hl_v v7 = v5 * v6;
-    const hl_v v8 = v4 - v7;
-    const hl_v v9 = pre[0];
-    const hl_v v10 = v8 * v9;
-    const hl_v v11 = v1 * v6;
-    const hl_v v12 = v5 * v3;
-    const hl_v v13 = v11 + v12;
-    const hl_v v14 = v13 * v9;
-    const hl_v v15 = pre[1];
-    const hl_v v16 = v1 * v15;
-    const hl_v v17 = v16 + v10;
-    const hl_v v18 = v14 * v17;
-    const hl_v v19 = v5 * v15;
-    const hl_v v20 = v14 + v19;
-    const hl_v v21 = v20 * v10;
-    const hl_v v22 = v18 - v21;
-    const hl_v v182 = 1.0 / v22;
-    const hl_v v23 = v10 * v182;
-    const hl_v v24 = qd[0];
-    const hl_v v25 = qd[1];
-    const hl_v v26 = v10 * v25;
-    const hl_v v27 = v17 * v24;
-    const hl_v v28 = v26 + v27;
-    const hl_v v29 = v24 * v28;
-    const hl_v v30 = pre[2];
-    const hl_v v31 = v20 - v30;
-    const hl_v v32 = pre[3];
-    const hl_v v33 = v17 - v32;
-    const hl_v v34 = v33 * v33;
-    const hl_v v35 = v31 * v31;
-    const hl_v v36 = v34 + v35;
-    const hl_v v37 = hl_sqrt(v36);
-    const hl_v v183 = 1.0 / v37;
-    const hl_v v38 = v31 * v183;
-    const hl_v v39 = a[0];
-    const hl_v v40 = v14 * v25;
-    const hl_v v41 = v20 * v24;
-    const hl_v v42 = v40 + v41;
-    const hl_v v43 = pre[4];
-    const hl_v v44 = v43 * v183;
-    const hl_v v45 = v28 * v38;
-    const hl_v v46 = v33 * v183;
-    const hl_v v47 = v42 * v46;
-    const hl_v v48 = v45 - v47;
-    const hl_v v49 = v38 * v48;
-    const hl_v v50 = v28 - v49;
-    const hl_v v51 = v44 * v50;
-    const hl_v v52 = v42 * v51;
-    const hl_v v53 = v39 - v52;
-    const hl_v v54 = v46 * v48;
-    const hl_v v55 = v42 + v54;
-    const hl_v v56 = v44 * v55;
-    const hl_v v57 = v28 * v56;
-    const hl_v v58 = v53 + v57;
-    const hl_v v59 = v38 * v58;
-    const hl_v v60 = v29 - v59;
-    const hl_v v61 = v10 * v24;
-    const hl_v v62 = v26 + v61;
-    const hl_v v63 = v25 * v62;
-    const hl_v v64 = v60 + v63;
-    const hl_v v65 = a[1];
-    const hl_v v66 = v42 * v56;
-    const hl_v v67 = v65 - v66;
-    const hl_v v68 = v28 * v51;
-    const hl_v v69 = v67 - v68;
-    const hl_v v70 = v46 * v69;
-    const hl_v v71 = v64 + v70;
-    const hl_v v72 = v71 * v23;
-    const hl_v v73 = v42 * v24;
-    const hl_v v74 = v14 * v24;
-    const hl_v v75 = v40 + v74;
-    const hl_v v76 = v25 * v75;
-    const hl_v v77 = v73 + v76;
-    const hl_v v78 = v46 * v58;
-    const hl_v v79 = v77 + v78;
-    const hl_v v80 = v38 * v69;
-    const hl_v v81 = v79 + v80;
-    const hl_v v82 = v14 * v182;
-    const hl_v v83 = v81 * v82;
-    const hl_v v84 = v72 + v83;
-    const hl_v v86 = pre[5];
-    const hl_v v88 = pre[6];
-    const hl_v v89 = pre[7];
-    const hl_v v92 = pre[8];
-    const hl_v v93 = pre[9];
-    const hl_v v94 = pre[10];
-    const hl_v v95 = pre[11];
-    const hl_v v97 = pre[12];
-    const hl_v v98 = pre[13];
-    const hl_v v99 = v98 * v3;
-    const hl_v v100 = v99 + v99;
-    const hl_v v101 = v97 + v100;
-    const hl_v v102 = v93 * v101;
-    const hl_v v103 = v92 + v102;
-    const hl_v v104 = v84 * v103;
-    const hl_v v105 = v17 * v182;
-    const hl_v v106 = v71 * v105;
-    const hl_v v107 = v20 * v182;
-    const hl_v v108 = v81 * v107;
-    const hl_v v109 = v106 + v108;
-    const hl_v v110 = v95 + v99;
-    const hl_v v111 = v93 * v110;
-    const hl_v v112 = v86 + v111;
-    const hl_v v113 = v109 * v112;
-    const hl_v v114 = v104 - v113;
-    const hl_v v115 = pre[14];
-    const hl_v v116 = pre[15];
-    const hl_v v117 = v8 * v94;
-    const hl_v v118 = v16 + v117;
-    const hl_v v119 = v116 * v118;
-    const hl_v v120 = v114 + v119;
-    const hl_v v121 = pre[16];
-    const hl_v v122 = v121 * v24;
-    const hl_v v123 = v120 + v122;
-    const hl_v v124 = Fc[0];
-    const hl_v v125 = v20 * v124;
-    const hl_v v126 = v123 + v125;
-    const hl_v v127 = v98 * v6;
-    const hl_v v128 = v127 * v93;
-    const hl_v v129 = v25 * v25;
-    const hl_v v130 = v128 * v129;
-    const hl_v v131 = v126 - v130;
-    const hl_v v132 = Fc[1];
-    const hl_v v133 = v17 * v132;
-    const hl_v v134 = v131 - v133;
-    const hl_v v135 = pre[17];
-    const hl_v v136 = v135 * v128;
-    const hl_v v137 = v136 * v24;
-    const hl_v v138 = v137 * v25;
-    const hl_v v139 = v134 + v138;
-    const hl_v v140 = v1 * v115;
-    const hl_v v141 = v140 * v88;
-    const hl_v v142 = v141 * v89;
-    const hl_v v143 = v139 + v142;
-    const hl_v v144 = v23 * v143;
-    const hl_v v145 = v14 * v124;
-    const hl_v v147 = pre[18];
-    const hl_v v148 = v109 * v147;
-    const hl_v v149 = v145 - v148;
-    const hl_v v150 = v112 * v84;
-    const hl_v v151 = v149 + v150;
-    const hl_v v152 = v117 * v116;
-    const hl_v v153 = v151 + v152;
-    const hl_v v154 = v24 * v24;
-    const hl_v v155 = v128 * v154;
-    const hl_v v156 = v153 + v155;
-    const hl_v v157 = pre[19];
-    const hl_v v158 = v157 * v25;
-    const hl_v v159 = v156 + v158;
-    const hl_v v160 = v10 * v132;
-    const hl_v v161 = v159 - v160;
-    const hl_v v162 = v105 * v161;
-    const hl_v v163 = v144 - v162;
-    const hl_v v164 = v82 * v143;
-    const hl_v v165 = v107 * v161;
-    const hl_v v166 = v164 - v165;
-    const hl_v v167 = v18 + v18;
-    const hl_v v168 = -v21;
-    const hl_v v169 = v168 + v168;
-    const hl_v v170 = v167 + v169;
-    const hl_v v171 = v20 * v20;
-    const hl_v v172 = v17 * v17;
-    const hl_v v173 = v171 + v172;
-    const hl_v v174 = pre[20];
-    const hl_v v175 = v13 * v13;
-    const hl_v v176 = v174 * v175;
-    const hl_v v177 = v173 + v176;
-    const hl_v v178 = v8 * v8;
-    const hl_v v179 = v174 * v178;
-    const hl_v v180 = v177 + v179;
-    const hl_v v181 = v170 / v180;
-    if (hl_any(odd)) {
-        decoupling_law_circle_lanes_exact(q, qd, a, Fc, pre, F, tau, cond);
-        return;
-    }
-    F[0] = v163;
-    F[1] = v166;
-    tau[0] = v143;
-    tau[1] = v161;
-    cond[0] = v181;
+    decoupling_law_circle_lanes_core(q, qd, a, Fc, pre, F, tau, cond, 0, &odd);
+    if (hl_any(odd)) decoupling_law_circle_lanes_exact(q, qd, a, Fc, pre, F, tau, cond);
 }
 
 int hybrid_sympy_decoupling_law_circle_batch(int nstates, const double *q, const double *qd, const double *a, const double *Fc, const double *arm, const double *surface, const double *opts, double singular_tol, double *F, double *tau, int *status) {
@@ -2391,16 +1911,17 @@ static void plant_outputs_circle_lanes_pre(const hl_v *arm, const hl_v *plant, c
     (void)pre;
 }
 
-static __attribute__((noinline, cold)) void plant_outputs_circle_lanes_exact(const hl_v *x, const hl_v *pre, hl_v *y) {
+static inline __attribute__((always_inline)) void plant_outputs_circle_lanes_core(const hl_v *x, const hl_v *pre, hl_v *y, const int exact, hl_i *odd) {
     (void)x;
     (void)pre;
+    (void)odd;
     const hl_v v0 = pre[0];
     const hl_v v1 = x[0];
     hl_v v6, v2;
-    hl_sincos(v1, &v6, &v2);
+    if (exact) hl_sincos(v1, &v6, &v2); else hl_sincos_poly(v1, &v6, &v2, odd);
     const hl_v v3 = x[1];
     hl_v v7, v4;
-    hl_sincos(v3, &v7, &v4);
+    if (exact) hl_sincos(v3, &v7, &v4); else hl_sincos_poly(v3, &v7, &v4, odd);
     const hl_v v5 = v2 * v4;
     const hl_v v8 = v6 * v7;
     const hl_v v9 = v5 - v8;
@@ -2493,7 +2014,7 @@ static __attribute__((noinline, cold)) void plant_outputs_circle_lanes_exact(con
     const hl_v v94 = v92 - v93;
     const hl_v v103 = pre[11];
     const hl_v v96 = v94 * v103;
-    const hl_v v97 = hl_tanh(v96);
+    const hl_v v97 = (exact ? hl_tanh(v96) : hl_tanh_poly(v96, odd));
     const hl_v v98 = v91 * v97;
     const hl_v v99 = -v98;
     const hl_v v100 = hl_select(v77 != 0.0, v99, hl_splat(0.0));
@@ -2513,131 +2034,14 @@ static __attribute__((noinline, cold)) void plant_outputs_circle_lanes_exact(con
     y[13] = v94;
 }
 
+static __attribute__((noinline, cold)) void plant_outputs_circle_lanes_exact(const hl_v *x, const hl_v *pre, hl_v *y) {
+    plant_outputs_circle_lanes_core(x, pre, y, 1, NULL);
+}
+
 static void plant_outputs_circle_lanes(const hl_v *x, const hl_v *pre, hl_v *y) {
     hl_i odd = hl_splat(0.0) != 0.0;
-    (void)x;
-    (void)pre;
-    const hl_v v0 = pre[0];
-    const hl_v v1 = x[0];
-    hl_v v6, v2;
-    hl_sincos_poly(v1, &v6, &v2, &odd);
-    const hl_v v3 = x[1];
-    hl_v v7, v4;
-    hl_sincos_poly(v3, &v7, &v4, &odd);
-    const hl_v v5 = v2 * v4;
-    const hl_v v8 = v6 * v7;
-    const hl_v v9 = v5 - v8;
-    const hl_v v10 = v0 * v9;
-    const hl_v v11 = pre[1];
-    const hl_v v12 = v2 * v11;
-    const hl_v v13 = v10 + v12;
-    const hl_v v14 = v2 * v7;
-    const hl_v v15 = v6 * v4;
-    const hl_v v16 = v14 + v15;
-    const hl_v v17 = v0 * v16;
-    const hl_v v18 = v6 * v11;
-    const hl_v v19 = v17 + v18;
-    const hl_v v20 = x[3];
-    const hl_v v21 = v10 * v20;
-    const hl_v v22 = x[2];
-    const hl_v v23 = v13 * v22;
-    const hl_v v24 = v21 + v23;
-    const hl_v v25 = pre[2];
-    const hl_v v26 = v13 - v25;
-    const hl_v v27 = v26 * v26;
-    const hl_v v28 = pre[3];
-    const hl_v v29 = v19 - v28;
-    const hl_v v30 = v29 * v29;
-    const hl_v v31 = v27 + v30;
-    const hl_v v32 = hl_sqrt(v31);
-    const hl_v v101 = 1.0 / v32;
-    const hl_v v33 = v24 * v101;
-    const hl_v v34 = v33 * v26;
-    const hl_v v35 = v17 * v20;
-    const hl_v v36 = v19 * v22;
-    const hl_v v37 = v35 + v36;
-    const hl_v v38 = v37 * v101;
-    const hl_v v39 = v38 * v29;
-    const hl_v v40 = v34 + v39;
-    const hl_v v41 = v33 * v29;
-    const hl_v v42 = v38 * v26;
-    const hl_v v43 = v41 - v42;
-    const hl_v v44 = pre[4];
-    const hl_v v45 = x[4];
-    const hl_v v46 = v45 - v13;
-    const hl_v v47 = v44 * v46;
-    const hl_v v48 = pre[5];
-    const hl_v v49 = x[6];
-    const hl_v v50 = v37 + v49;
-    const hl_v v51 = v48 * v50;
-    const hl_v v52 = v47 + v51;
-    const hl_v v53 = x[5];
-    const hl_v v54 = v53 - v19;
-    const hl_v v55 = v44 * v54;
-    const hl_v v56 = x[7];
-    const hl_v v57 = v56 - v24;
-    const hl_v v58 = v48 * v57;
-    const hl_v v59 = v55 + v58;
-    const hl_v v60 = v26 * v101;
-    const hl_v v61 = v59 * v60;
-    const hl_v v62 = v29 * v101;
-    const hl_v v63 = v52 * v62;
-    const hl_v v64 = v61 - v63;
-    const hl_v v65 = v52 * v60;
-    const hl_v v66 = v59 * v62;
-    const hl_v v67 = v65 + v66;
-    const hl_v v68 = pre[6];
-    const hl_v v69 = v45 - v25;
-    const hl_v v70 = v69 * v69;
-    const hl_v v71 = v53 - v28;
-    const hl_v v72 = v71 * v71;
-    const hl_v v73 = v70 + v72;
-    const hl_v v74 = hl_sqrt(v73);
-    const hl_v v75 = v68 - v74;
-    const hl_v v76 = pre[7];
-    const hl_v v77 = hl_bool(v76 < v75);
-    const hl_v v78 = pre[8];
-    const hl_v v79 = v75 * v78;
-    const hl_v v80 = pre[9];
-    const hl_v v102 = 1.0 / v74;
-    const hl_v v81 = v71 * v102;
-    const hl_v v82 = v81 * v56;
-    const hl_v v83 = v69 * v102;
-    const hl_v v84 = v83 * v49;
-    const hl_v v85 = v82 + v84;
-    const hl_v v86 = v80 * v85;
-    const hl_v v87 = v79 - v86;
-    const hl_v v88 = hl_fmax(v76, v87);
-    const hl_v v89 = hl_select(v77 != 0.0, v88, hl_splat(0.0));
-    const hl_v v90 = pre[10];
-    const hl_v v91 = v88 * v90;
-    const hl_v v92 = v83 * v56;
-    const hl_v v93 = v81 * v49;
-    const hl_v v94 = v92 - v93;
-    const hl_v v103 = pre[11];
-    const hl_v v96 = v94 * v103;
-    const hl_v v97 = hl_tanh_poly(v96, &odd);
-    const hl_v v98 = v91 * v97;
-    const hl_v v99 = -v98;
-    const hl_v v100 = hl_select(v77 != 0.0, v99, hl_splat(0.0));
-    if (hl_any(odd)) {
-        plant_outputs_circle_lanes_exact(x, pre, y);
-        return;
-    }
-    y[0] = v13;
-    y[1] = v19;
-    y[2] = v40;
-    y[3] = v43;
-    y[4] = v52;
-    y[5] = v59;
-    y[6] = v64;
-    y[7] = v67;
-    y[8] = v45;
-    y[9] = v53;
-    y[10] = v75;
-    y[11] = v89;
-    y[12] = v100;
-    y[13] = v94;
+    plant_outputs_circle_lanes_core(x, pre, y, 0, &odd);
+    if (hl_any(odd)) plant_outputs_circle_lanes_exact(x, pre, y);
 }
 
 int hybrid_sympy_plant_outputs_circle_batch(int nstates, const double *x, const double *arm, const double *plant, const double *surface, double *y, int *status) {
