@@ -7,7 +7,9 @@ import os
 import tempfile
 from pathlib import Path
 
-from .emit import BACKENDS, build_unit, generated_dir, is_hand_edited
+from hybrid.native.stamp import is_hand_edited
+
+from .emit import BACKENDS, build_unit, generated_dir
 
 UPDATE_HINT = "run `python -m hybrid regenerate` and commit generated/"
 

@@ -7,15 +7,13 @@ model error or a parameter sweep never recompiles. Every solve is a factorisatio
 
 from __future__ import annotations
 
-import hashlib
-import re
-
 import casadi as ca
 
 from . import rigid_body as rb
 from .emit import Unit, assemble
 from .factor import cholesky_solve
 from .kernel import Arg, Kernel
+from .surfaces import phi_of
 
 
 def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
@@ -64,20 +62,6 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
     return (*kernels, urdf)
 
 
-#: the longest prefix of emitted symbols and file names (a longer name is cut and given a hash)
-MAX_PREFIX = 48
-
-
-def c_identifier(name: str) -> str:
-    """``name`` made a C identifier (the prefix of every emitted symbol and file), at most
-    :data:`MAX_PREFIX` characters."""
-    ident = re.sub(r"\W", "_", name, flags=re.ASCII)
-    ident = ident if re.match(r"[A-Za-z_]", ident) else f"robot_{ident}"
-    if len(ident) > MAX_PREFIX:
-        ident = f"{ident[:MAX_PREFIX - 13]}_{hashlib.sha256(name.encode()).hexdigest()[:12]}"
-    return ident
-
-
 def build_robot_unit(chain: rb.Chain, prefix: str, info: dict, defaults=None) -> Unit:
     """C source, header and manifest of ``chain``'s kernels, deterministic in its inputs.
 
@@ -115,7 +99,7 @@ def build_plant_unit(chain: rb.Chain, spec, prefix: str, info: dict) -> Unit:
                     f"plant of the 3-D experiment: the {chain.n}-joint arm '{info.get('robot', prefix)}', a 3-D "
                     f"elastic sensor and penalty contact with friction on a {spec.kind}",
                     info={"robot": info, "surface": {"kind": spec.kind, "parameters": list(spec.parameters),
-                                                      "phi": str(spec.phi)}},
+                                                      "phi": str(phi_of(spec))}},
                     tool=f"CasADi {ca.__version__}", defines={"NQ": chain.n, "NX": 2 * chain.n + 6})
 
 
@@ -128,5 +112,5 @@ def _task_unit(kernels, what: str, chain: rb.Chain, spec, axes, prefix: str, inf
                     f"{what} of the {chain.n}-joint arm '{info.get('robot', prefix)}' on a {spec.kind}, "
                     f"task axes {', '.join(AXIS_NAMES[i] for i in axes)}",
                     info={"robot": info, "surface": {"kind": spec.kind, "parameters": list(spec.parameters),
-                                                      "phi": str(spec.phi)}, "axes": list(axes), **extra},
+                                                      "phi": str(phi_of(spec))}, "axes": list(axes), **extra},
                     tool=f"CasADi {ca.__version__}", defines={"NQ": chain.n, "M": len(axes)})

@@ -5,19 +5,20 @@ normal ``n = grad phi / |grad phi|`` from the surface to the robot; task-frame r
 ``t1 = e x n / |e x n|``, ``t2 = n x t1``, ``n`` for a reference direction ``e``. ``R_L'`` is
 the directional derivative of ``R_L`` along ``p'``: it carries the surface's curvature.
 
-A surface is a :class:`SurfaceSpec`: a kind, its parameter names (run-time inputs of the
-generated C) and ``phi`` as a SymPy expression of ``x, y, z`` and those parameters. The
-built-in plane, sphere and cylinder are specs like any surface a user writes down.
+A surface is described by a :class:`hybrid.geometry.surfaces.SurfaceSpec`: a kind, its
+parameter names (run-time inputs of the generated C) and ``phi`` as a SymPy expression of
+``x, y, z`` and those parameters (written out here for the built-in plane, sphere and cylinder).
 """
 
 from __future__ import annotations
 
-import hashlib
 from dataclasses import dataclass
 from functools import cache
 
 import casadi as ca
 import sympy as sp
+
+from hybrid.geometry.surfaces import SURFACE_PARAMETERS, SurfaceSpec
 
 from .casadi_backend import to_sx
 from .factor import reciprocal
@@ -28,29 +29,14 @@ X, Y, Z = sp.symbols("x y z", real=True)
 FRAME_TOL = 1e-6
 
 
-@dataclass(frozen=True)
-class SurfaceSpec:
-    """``phi(x, y, z; parameters)``; ``kind`` names it in the generated code."""
-
-    kind: str
-    parameters: tuple[str, ...]
-    phi: sp.Expr
-
-    def key(self) -> str:
-        """A stable text identifying the surface's expression (for cache keys and unit names)."""
-        return f"{self.kind}:{','.join(self.parameters)}:{sp.srepr(self.phi)}"
-
-    def digest(self) -> str:
-        return hashlib.sha256(self.key().encode()).hexdigest()[:12]
-
-
 def _params(names: str) -> tuple:
     return sp.symbols(names, real=True)
 
 
 @cache
 def builtin(kind: str) -> SurfaceSpec:
-    """The plane, sphere and cylinder of NOTES section 9."""
+    """The plane, sphere and cylinder, ``phi`` written out (their parameters named as
+    :data:`hybrid.geometry.surfaces.SURFACE_PARAMETERS` names them)."""
     p = sp.Matrix([X, Y, Z])
     if kind == "plane":
         px, py, pz, nx, ny, nz = _params("p_x p_y p_z n_x n_y n_z")
@@ -69,25 +55,27 @@ def builtin(kind: str) -> SurfaceSpec:
         phi, names = sp.sqrt(radial.dot(radial)) - rho, (px, py, pz, ux, uy, uz, rho)
     else:
         raise ValueError(f"unknown surface kind {kind!r}")
-    return SurfaceSpec(kind, tuple(str(s) for s in names), phi)
+    spec = SurfaceSpec(kind, tuple(str(s) for s in names), phi)
+    assert spec.parameters == SURFACE_PARAMETERS[kind], "the runtime names the parameters otherwise"
+    return spec
 
 
-def implicit(phi: sp.Expr, parameters: tuple[str, ...]) -> SurfaceSpec:
-    """A surface written by the user: ``phi`` in ``x, y, z`` and the named parameters."""
-    spec = SurfaceSpec("implicit", tuple(parameters), phi)
-    return SurfaceSpec(f"implicit_{spec.digest()}", spec.parameters, phi)
+def phi_of(spec: SurfaceSpec) -> sp.Expr:
+    """``phi`` of ``spec`` as a SymPy expression (a built-in surface's is written out here)."""
+    return builtin(spec.kind).phi if spec.phi is None else spec.phi
 
 
 def phi_sx(spec: SurfaceSpec, p, theta) -> ca.SX:
     """``phi`` as CasADi SX of the point ``p`` (3) and the parameter column ``theta``."""
     symbols = {X: p[0], Y: p[1], Z: p[2]}
     symbols.update({sp.Symbol(n, real=True): theta[i] for i, n in enumerate(spec.parameters)})
+    phi = phi_of(spec)
     # the user's symbols may lack real=True: map them by name too
     by_name = {str(k): v for k, v in symbols.items()}
-    for s in spec.phi.free_symbols:
+    for s in phi.free_symbols:
         if s not in symbols:
             symbols[s] = by_name[str(s)]
-    return to_sx(spec.phi, symbols, {})
+    return to_sx(phi, symbols, {})
 
 
 @dataclass

@@ -24,12 +24,13 @@ from dataclasses import dataclass
 
 import casadi as ca
 
+from hybrid.geometry.task_axes import AXIS_NAMES
+
 from . import factor
 from . import rigid_body as rb
 from .kernel import Arg, Guard, Kernel, conditioning_guard
 from .surfaces import FRAME_TOL, SurfaceSpec, task_frame
 
-AXIS_NAMES = ("t1", "t2", "n", "rot_t1", "rot_t2", "rot_n")
 CONDITIONING = "m/(|J_y|_F |J_y^+|_F)"
 #: below this ``|cos beta|`` the ZYX Euler angles (and ``T_A``) are singular
 EULER_TOL = 1e-6

@@ -1,27 +1,64 @@
 """Task-space decoupling hybrid force/velocity control of robot manipulators (De Luca & Manes).
 
-Public API: robots (:class:`Arm`, :func:`paper_arm`, :class:`Robot`, :func:`ur5`) and surfaces
-(:class:`Circle`, :class:`Plane`, :class:`Sphere`, :class:`Cylinder`, :class:`ImplicitSurface`);
-the compiled law (:func:`decoupling_law`) and terms; the controller component
-(:class:`Controller`, the schemes in :data:`SCHEMES`); the experiments (:func:`paper_experiment`,
-:func:`tracing_experiment`, :func:`simulate`, :func:`metrics`); sweeps (:func:`sweep`); and
-:class:`HybridError`, the base of every error raised on bad input.
+The public API, by subpackage:
+
+- robot models (:mod:`hybrid.models`): :class:`Robot` (any serial arm, e.g. from a URDF;
+  :func:`ur5`), the paper's planar :class:`Arm` (:func:`paper_arm`), and their terms
+  (:func:`arm_terms`, :func:`operational_space`);
+- geometry (:mod:`hybrid.geometry`): the surfaces :class:`Plane`, :class:`Circle`,
+  :class:`Sphere`, :class:`Cylinder` and :class:`ImplicitSurface`;
+- control (:mod:`hybrid.control`): the compiled law (:func:`decoupling_law`,
+  :func:`task_frame`), the :class:`Controller` component and its schemes (:data:`SCHEMES`);
+- experiments and simulation: :func:`paper_experiment`, :func:`tracing_experiment`,
+  :func:`simulate`, :class:`SimulationResult`, :func:`metrics`; sweeps (:func:`sweep`);
+- :class:`HybridError`, the base of every error raised on bad input.
+
+Importing the package loads neither SymPy nor CasADi and reads no file: the code generator
+runs only when a unit must be built, and :class:`ImplicitSurface` (a SymPy expression) and
+:func:`sweep` (pandas) load what they need on first use.
 """
 
-from .controller import ContactLoss, Controller, Measurement, Reference
-from .errors import HybridError, NativeBuildError, NonFiniteError, SingularConfigurationError, TaskFrameError, URDFError
-from .experiment import Contact, Experiment, Gains, Sensor, Step, paper_experiment
-from .law import DecouplingLaw, OperationalSpace, arm_terms, decoupling_law, operational_space, task_frame
-from .parameters import Arm, Circle, Plane, paper_arm
-from .performance import metrics
-from .results import SimulationResult
-from .robot import Robot
-from .schemes import SCHEMES, Khatib, Scheme, TaskDecoupling
-from .simulation import SimulationError, simulate
-from .spatial_law import SpatialDecouplingLaw
-from .surfaces import Cylinder, ImplicitSurface, Sphere
-from .sweeps import sweep
-from .tracing import TracingExperiment, tracing_experiment, ur5
+from __future__ import annotations
+
+from hybrid.control.controller import ContactLoss, Controller, Measurement, Reference
+from hybrid.control.law import DecouplingLaw, decoupling_law, task_frame
+from hybrid.control.schemes import SCHEMES, Khatib, Scheme, TaskDecoupling
+from hybrid.control.spatial_law import SpatialDecouplingLaw
+from hybrid.errors import (
+    HybridError,
+    NativeBuildError,
+    NonFiniteError,
+    SingularConfigurationError,
+    TaskFrameError,
+    URDFError,
+)
+from hybrid.experiments.paper import Contact, Experiment, Gains, Sensor, Step, paper_experiment
+from hybrid.experiments.tracing import TracingExperiment, tracing_experiment, ur5
+from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere
+from hybrid.models.planar_arm import Arm, paper_arm
+from hybrid.models.robot import Robot
+from hybrid.models.terms import OperationalSpace, arm_terms, operational_space
+from hybrid.simulation.metrics import metrics
+from hybrid.simulation.results import SimulationResult
+from hybrid.simulation.runner import SimulationError, simulate
+
+#: public names loaded on first use (what they need is heavy: SymPy, pandas)
+_LAZY = {"ImplicitSurface": "hybrid.geometry.implicit", "sweep": "hybrid.sweeps"}
+
+
+def __getattr__(name: str):
+    if name in _LAZY:
+        import importlib
+
+        value = getattr(importlib.import_module(_LAZY[name]), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module 'hybrid' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(__all__)
+
 
 __all__ = [
     "Arm", "Circle", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw", "Experiment", "Gains",

@@ -19,11 +19,23 @@ from pathlib import Path
 
 import numpy as np
 
-from . import native, reference
-from .experiment import paper_experiment
-from .law import decoupling_law, planar_unit
-from .parameters import Circle, paper_arm
-from .simulation import simulate
+from hybrid import files, reference
+from hybrid.control.controller import Controller
+from hybrid.control.law import decoupling_law
+from hybrid.control.references import Step
+from hybrid.errors import HybridError
+from hybrid.experiments.paper import paper_experiment
+from hybrid.experiments.tracing import tracing_experiment
+from hybrid.geometry.surfaces import Circle, Sphere
+from hybrid.models.planar_arm import paper_arm
+from hybrid.models.robot import Robot
+from hybrid.models.terms import arm_terms
+from hybrid.native import build as native
+from hybrid.native import units
+from hybrid.native.units import planar_unit
+from hybrid.simulation import closed_loop
+from hybrid.simulation.runner import simulate
+from hybrid.sweeps import apply, sweep
 
 ONE_STATE = "F* from Python, one state (law(q, qdot, a, Fc))"
 BATCHED = "F* from Python, batched, per state (N = 1e5, SIMD lanes, both cores)"
@@ -164,7 +176,7 @@ def run_benchmarks(quick: bool = False) -> dict:
         lambda: reference.decoupling_law("circle", q, qd, a, Fc, p, s, True), 2000, rep))
     k += 1
     _progress(k, steps, "F* by SymPy lambdify")
-    from codegen import model
+    model = units.generator("model")
 
     kern = {kk.name: kk for kk in model.kernels(2)}["decoupling_law_circle"]
     import sympy as sp
@@ -175,7 +187,7 @@ def run_benchmarks(quick: bool = False) -> dict:
     add("F* by SymPy lambdify (NumPy, CSE)", _median_ns(lambda: fn(*col), 2000, rep))
     k += 1
     _progress(k, steps, "F* by a CasADi Function call")
-    from codegen.casadi_backend import kernel_function
+    kernel_function = units.generator("casadi_backend").kernel_function
 
     cf = kernel_function(kern)
     add("F* by a CasADi Function call", _median_ns(lambda: cf(q, qd, a, Fc, p, s, 1.0), 2000, rep))
@@ -192,9 +204,8 @@ def run_benchmarks(quick: bool = False) -> dict:
         lambda: simulate(exp), 1, 3 if quick else 9) / 1e6, "ms")
     k += 1
     _progress(k, steps, "paper experiment, NumPy plant and controller")
-    exp_np = paper_experiment(duration=dur, backend="numpy")
     add(f"paper experiment end to end ({dur:g} s simulated), NumPy", _median_ns(
-        lambda: simulate(exp_np), 1, 1 if quick else 3) / 1e6, "ms")
+        lambda: reference.simulate(exp), 1, 1 if quick else 3) / 1e6, "ms")
     k += 1
     _progress(k, steps, "regenerate from scratch")
     t0 = time.perf_counter()
@@ -300,8 +311,6 @@ def _pinocchio_terms(pin, path: Path, robot, tip: str):
 
 def robot_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool, add) -> None:
     """Terms of a URDF arm: in C, from Python (one state, batched), by Pinocchio; generation time, code size."""
-    from .law import arm_terms
-    from .robot import Robot
 
     path = _shipped_urdf(urdf)
     if path is None:
@@ -395,7 +404,6 @@ def add_parser(sub) -> None:
 
 
 def _run(args) -> int:
-    from .errors import HybridError
 
     if args.json is not None and not args.json.strip():
         raise HybridError("--json needs a file name")
@@ -406,7 +414,6 @@ def _run(args) -> int:
     report = run_benchmarks(args.quick)
     print(format_table(report))
     if args.json:
-        from . import files
 
         files.write_text(Path(args.json), json.dumps(report, indent=2) + "\n", overwrite=True)
     return 0
@@ -415,11 +422,8 @@ def _run(args) -> int:
 def spatial_law_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool, add) -> None:
     """The general law of NOTES section 9 for a URDF arm on a sphere: in C, from Python, batched,
     against Pinocchio + NumPy; the generated operation count."""
-    from codegen.casadi_backend import kernel_function
-    from codegen.task_law import law_kernels
-
-    from .robot import Robot, compiled_law_unit
-    from .surfaces import Sphere
+    kernel_function = units.generator("casadi_backend").kernel_function
+    law_kernels = units.generator("task_law").law_kernels
 
     path = _shipped_urdf(urdf)
     if path is None:
@@ -427,7 +431,7 @@ def spatial_law_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool
     robot = Robot.from_urdf(path, tip=tip)
     sphere = Sphere(SPHERE[:3], SPHERE[3])
     law = decoupling_law(robot, sphere, curvature=True)
-    unit = compiled_law_unit(robot.chain, robot.name, sphere.spec(), law.axes)
+    unit = units.law_unit(robot.chain, robot.name, sphere.spec(), law.axes)
     rng = np.random.default_rng(2)
     q = np.array([0.3, -1.0, 1.2, -0.4, 1.1, 0.2, 0.5][:robot.n])
     qd, a, Fc = rng.normal(0, 0.5, robot.n), rng.normal(size=6), rng.normal(0, 5, 6)
@@ -463,13 +467,8 @@ def spatial_law_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool
 def controller_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool, add) -> None:
     """One sample of :class:`hybrid.Controller` (task scheme, six axes, step references) on a sphere:
     in C, and from Python."""
-    from codegen.casadi_backend import kernel_function
-    from codegen.controller_step import controller_kernels
-
-    from .controller import Controller
-    from .experiment import Step
-    from .robot import Robot
-    from .surfaces import Sphere
+    kernel_function = units.generator("casadi_backend").kernel_function
+    controller_kernels = units.generator("controller_step").controller_kernels
 
     path = _shipped_urdf(urdf)
     if path is None:
@@ -491,8 +490,6 @@ def controller_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool,
 def sweep_benchmarks(quick: bool, add) -> None:
     """One paper run through ``simulate``; the compiled loop per run on one core; sweeps of 1,000
     and 10,000 paper runs over every core (with ``quick``: 100 runs, the totals scaled)."""
-    from . import closed_loop
-    from .sweeps import apply, sweep
 
     exp = paper_experiment()
     simulate(exp)
@@ -501,7 +498,6 @@ def sweep_benchmarks(quick: bool, add) -> None:
     lanes = prepared[0].loop.lanes
     add(LOOP_RUN, _median_ns(lambda: closed_loop.run(prepared), 1, 3 if quick else 7) / 1e6 / len(prepared), "ms",
         ratio=f"{lanes} runs a group of lanes")
-    from .tracing import tracing_experiment
 
     trace = [closed_loop.prepare(tracing_experiment(model_error=m)) for m in np.linspace(0.0, 0.3, 16)]
     one = _median_ns(lambda: simulate(trace[0].experiment), 1, 3) / 1e6

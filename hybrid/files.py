@@ -14,7 +14,7 @@ import tempfile
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
-from .errors import HybridError
+from hybrid.errors import HybridError
 
 
 def _read_umask() -> int:

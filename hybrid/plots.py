@@ -7,7 +7,7 @@ from pathlib import Path
 
 import matplotlib
 
-from . import files
+from hybrid import files
 
 matplotlib.use("Agg")  # files only: no display needed
 import matplotlib.pyplot as plt  # noqa: E402

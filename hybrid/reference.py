@@ -12,6 +12,11 @@ from functools import cache
 
 import numpy as np
 
+from hybrid.errors import HybridError, NonFiniteError, SingularConfigurationError
+from hybrid.plants.compiled import planar_record
+from hybrid.simulation.results import SimulationResult
+from hybrid.simulation.runner import check_memory, run
+
 SURFACE_KINDS = ("plane", "circle")
 
 
@@ -218,11 +223,9 @@ class NumpyPlant:
     plant interface: see :class:`hybrid.plants.Plant`)."""
 
     def __init__(self, exp):
-        from .plants import PLANT
-
         self.kind, self.h = exp.surface.kind, exp.step
         self.arm, self.plant, self.surface = exp.arm.as_array(), exp.plant_array(), exp.surface.as_array()
-        self.record, self.nq = PLANT, 2
+        self.record, self.nq = planar_record(), 2
 
     def sensor_wrench(self, x):
         """The sensor's force at the state ``x``, as a wrench (f, m)."""
@@ -272,8 +275,6 @@ class NumpyController:
         return np.array([a_t, a_n])
 
     def __call__(self, t, q, qdot, Fc):
-        from .errors import NonFiniteError, SingularConfigurationError
-
         exp, Fc = self.exp, np.asarray(Fc, float)[:2]  # the planar force of a (f, m) wrench
         r, J, _ = kinematics(q, qdot, self.arm)
         rdot = J @ qdot
@@ -298,3 +299,19 @@ class NumpyController:
         if not np.isfinite(tau).all():
             raise NonFiniteError(f"decoupling_law: result is NaN or infinite at q={q}, qdot={qdot}")
         return tau
+
+
+#: the schemes the NumPy closed loop implements
+SCHEMES = ("task", "khatib")
+
+
+def simulate(exp) -> SimulationResult:
+    """The paper's experiment ``exp`` run by the NumPy plant and controller (the same runner, the
+    same zero-order hold): what the generated code is tested against."""
+    if exp.controller not in SCHEMES:
+        raise HybridError(f"the NumPy reference runs {' and '.join(SCHEMES)} only, not {exp.controller!r}")
+    plant = NumpyPlant(exp)
+    check_memory(exp, plant.record)
+    x0 = exp.initial_state()
+    exp.check_path()
+    return run(exp, plant, NumpyController(exp), x0)

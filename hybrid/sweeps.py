@@ -28,9 +28,11 @@ from pathlib import Path
 
 import numpy as np
 
-from . import files
-from .errors import HybridError
-from .experiment import Experiment, setting_aliases
+from hybrid import files
+from hybrid.errors import HybridError
+from hybrid.experiments.settings import RunSettings, setting_aliases
+from hybrid.simulation import closed_loop
+from hybrid.simulation.runner import SimulationError, simulate
 
 ENGINES = ("local", "dask")
 
@@ -163,9 +165,7 @@ def _plain(value):
 def check_names(base, names) -> None:
     """Refuse, before any run, a setting name the experiment does not have (naming the known ones), and
     two names of which one sets a part of the other (``contact`` and ``contact.friction``)."""
-    from .tracing import TracingExperiment
-
-    if not isinstance(base, (Experiment, TracingExperiment)):
+    if not isinstance(base, RunSettings):
         raise HybridError(f"base must be an experiment (hybrid.paper_experiment() or hybrid.tracing_experiment()), "
                           f"got {type(base).__name__}")
     paths = {name: setting_aliases().get(name, name) for name in names}
@@ -214,7 +214,6 @@ def run_points(base, chunk: list[tuple[int, dict]]) -> list[dict]:
     every engine). Runs the compiled loop can take run there together, as SIMD lanes
     (:mod:`hybrid.closed_loop`); the others, and any run that stopped (for the cause in words),
     through :func:`hybrid.simulate`."""
-    from . import closed_loop
 
     rows: dict[int, dict] = {}
     compiled = []
@@ -239,7 +238,6 @@ def run_points(base, chunk: list[tuple[int, dict]]) -> list[dict]:
 def _simulated_row(index: int, settings: dict, exp) -> dict:
     """A run through the Python runner (``prepare`` has said it is not for the compiled loop, or the
     loop has seen it stop): its metrics, or why it did not finish."""
-    from .simulation import simulate
 
     try:
         res = simulate(exp, compiled=False)
@@ -251,7 +249,6 @@ def _simulated_row(index: int, settings: dict, exp) -> dict:
 def _failure_row(index: int, settings: dict, exc: Exception) -> dict:
     """A run that did not finish: stopped while running (a result), refused before it started
     (invalid settings), or a defect of ours (error)."""
-    from .simulation import SimulationError
 
     status = ("failed" if isinstance(exc, SimulationError) else
               "invalid" if isinstance(exc, HybridError) else "error")
@@ -293,7 +290,6 @@ def _local(base, chunks, workers: int):
 def _load_loops(base, chunks) -> None:
     """Load, before forking, the compiled loops of the base and of the first run: the workers inherit
     them instead of each loading them again (a fraction of a second each)."""
-    from . import closed_loop
 
     for settings in ({}, chunks[0][0][1] if chunks and chunks[0] else {}):
         try:

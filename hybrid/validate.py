@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import dataclasses
+import hashlib
 import math
+import re
 
 import numpy as np
 
-from .errors import HybridError
+from hybrid.errors import HybridError
 
 
 def _finite(owner: str, **values: float) -> None:
@@ -80,3 +82,28 @@ def inertia_problem(I: np.ndarray) -> str | None:  # noqa: E741
 
 def _moments(eig) -> str:
     return ", ".join(f"{e:.4g}" for e in eig)
+
+
+#: the longest prefix of emitted symbols and file names (a longer name is cut and given a hash)
+MAX_PREFIX = 48
+
+
+def c_identifier(name: str) -> str:
+    """``name`` made a C identifier (the prefix of every emitted symbol and file), at most
+    :data:`MAX_PREFIX` characters."""
+    ident = re.sub(r"\W", "_", name, flags=re.ASCII)
+    ident = ident if re.match(r"[A-Za-z_]", ident) else f"robot_{ident}"
+    if len(ident) > MAX_PREFIX:
+        ident = f"{ident[:MAX_PREFIX - 13]}_{hashlib.sha256(name.encode()).hexdigest()[:12]}"
+    return ident
+
+
+#: default lower bound on ``2 |det J| / |J|_F^2`` (``~ |sin q2|``) before a pose counts as singular
+SINGULAR_TOL = 1e-3
+
+
+def check_singular_tol(owner: str, value) -> None:
+    """``value`` as a singular-pose tolerance: a real number in [0, 1)."""
+    _finite(owner, singular_tol=value)
+    if not 0 <= value < 1:
+        raise HybridError(f"singular_tol = {value}; give a value in [0, 1) (default {SINGULAR_TOL})")

@@ -9,15 +9,16 @@ import cffi
 import numpy as np
 import pytest
 import sympy as sp
+from hybrid.codegen.kernel import Arg, Kernel
+from hybrid.codegen.lanes import PRELUDE, lanes_function, libm_maps
 
 import hybrid
-from codegen.kernel import Arg, Kernel
-from codegen.lanes import PRELUDE, lanes_function, libm_maps
-from hybrid import closed_loop, metrics
-from hybrid.controller import Controller
-from hybrid.native import CFLAGS, compiler
-from hybrid.plants import NativePlant
-from hybrid.simulation import initial_state, run
+from hybrid import metrics
+from hybrid.control.controller import Controller
+from hybrid.native.build import CFLAGS, compiler
+from hybrid.plants.compiled import NativePlant
+from hybrid.simulation import closed_loop
+from hybrid.simulation.runner import run
 
 CASES = {
     "paper": {},
@@ -41,7 +42,7 @@ def test_compiled_runs_equal_the_python_runner(case):
     prepared = closed_loop.prepare(exp)
     assert prepared is not None
     got = closed_loop.run([prepared], record=True)[0]
-    ref = run(exp, NativePlant(exp), Controller.from_experiment(exp), initial_state(exp))
+    ref = run(exp, NativePlant(exp), Controller.from_experiment(exp), exp.initial_state())
     assert got.status == 0 and got.failed_sample == -1
     scale = np.abs(ref.state).max(axis=0) + 1e-3
     assert np.abs((got.states - ref.state) / scale).max() < 1e-7
@@ -56,13 +57,12 @@ def test_compiled_runs_equal_the_python_runner(case):
 @pytest.mark.parametrize("overrides", [{}, {"controller": "khatib", "contact": hybrid.Contact(friction=0.3)}])
 def test_the_3d_experiment_in_c_equals_the_python_runner(overrides):
     """The UR5 on the sphere (NOTES section 10): the 6-joint plant and six-axis controller as lanes."""
-    from hybrid.plants import SpatialPlant
-    from hybrid.tracing import initial_tracing_state
+    from hybrid.plants.compiled import SpatialPlant
 
     exp = hybrid.tracing_experiment(duration=0.8, **overrides)
     got = closed_loop.run([closed_loop.prepare(exp)], record=True)[0]
     plant = SpatialPlant(exp)
-    ref = run(exp, plant, Controller.from_experiment(exp), initial_tracing_state(exp, plant))
+    ref = run(exp, plant, Controller.from_experiment(exp), exp.initial_state())
     assert got.status == 0
     assert np.abs((got.states - ref.state) / (np.abs(ref.state).max(axis=0) + 1e-3)).max() < 1e-7
     for name, value in ref.metrics.items():
@@ -128,7 +128,7 @@ def test_simulate_runs_the_compiled_loop_and_the_python_runner_agrees():
 
 
 def test_a_3d_record_too_big_for_memory_is_refused_before_the_run(monkeypatch):
-    import hybrid.simulation as simulation
+    import hybrid.simulation.runner as simulation
 
     monkeypatch.setattr(simulation, "MEMORY_FRACTION", 1e-12)
     with pytest.raises(hybrid.HybridError, match="record needs"):
@@ -137,7 +137,6 @@ def test_a_3d_record_too_big_for_memory_is_refused_before_the_run(monkeypatch):
 
 def test_what_runs_in_python_is_not_compiled():
     assert closed_loop.prepare(hybrid.paper_experiment(frame="desired")) is None
-    assert closed_loop.prepare(hybrid.paper_experiment(backend="numpy")) is None
     assert closed_loop.prepare(hybrid.tracing_experiment(frame="desired")) is None
 
 

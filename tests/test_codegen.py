@@ -9,8 +9,9 @@ import sys
 from pathlib import Path
 
 import pytest
+from hybrid.codegen import emit, regenerate
 
-from codegen import emit, regenerate
+from hybrid.native import stamp
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -47,7 +48,7 @@ def test_check_reports_stale_files_with_a_diff(tmp_path):
     target = tmp_path / "gen"
     regenerate.write(target)
     path = target / "hybrid_sympy.h"
-    path.write_text(emit.stamp(path.read_text().split("\n", 1)[1].replace("B_o", "Bo_old")))
+    path.write_text(stamp.stamp(path.read_text().split("\n", 1)[1].replace("B_o", "Bo_old")))
     problems = regenerate.check(target)
     assert len(problems) == 1 and "hybrid_sympy.h: stale" in problems[0]
     assert "python -m hybrid regenerate" in problems[0] and "-" in problems[0]
@@ -62,7 +63,7 @@ def test_regenerate_refuses_to_overwrite_hand_edits(tmp_path):
     path = target / "hybrid_casadi.c"
     edited = path.read_text() + "\n/* my tuning */\n"
     path.write_text(edited)
-    assert emit.is_hand_edited(edited)
+    assert stamp.is_hand_edited(edited)
     with pytest.raises(FileExistsError, match="edited by hand.*--force"):
         regenerate.write(target)
     assert path.read_text() == edited  # nothing lost
@@ -70,4 +71,4 @@ def test_regenerate_refuses_to_overwrite_hand_edits(tmp_path):
                           cwd=ROOT, capture_output=True, text=True)
     assert proc.returncode == 2 and "--force" in proc.stderr and path.read_text() == edited
     assert regenerate.write(target, force=True) == ["hybrid_casadi.c"]
-    assert not emit.is_hand_edited(path.read_text())
+    assert not stamp.is_hand_edited(path.read_text())

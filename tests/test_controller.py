@@ -8,14 +8,14 @@ import itertools
 import numpy as np
 import pytest
 from conftest import pinocchio_terms, well_conditioned_states
+from hybrid.codegen.model import PLANT_OUTPUTS
 
 import hybrid
 from hybrid import reference as ref
-from hybrid.results import OUT
-from hybrid.simulation import initial_state
 
 SPHERE = hybrid.Sphere((0.4, 0.1, 0.3), 0.15)
 Z3 = np.zeros((3, 3))
+OUT = {name: i for i, name in enumerate(PLANT_OUTPUTS)}
 
 
 def blockdiag(R):
@@ -24,7 +24,7 @@ def blockdiag(R):
 
 def closed_loop(exp, plant, ctrl):
     """The sampled loop written out: ZOH torque, sensor reading at the sample instant."""
-    x = initial_state(exp)
+    x = exp.initial_state()
     m, out = exp.steps_per_sample, []
     traj = np.empty((m, len(x)))
     for k in range(exp.n_samples):

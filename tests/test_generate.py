@@ -99,6 +99,6 @@ def test_generate_refuses_to_overwrite_and_reports_bad_usage(tmp_path):
 
 @pytest.mark.parametrize("name, ident", [("ur5", "ur5"), ("my-arm 2", "my_arm_2"), ("7dof", "robot_7dof")])
 def test_prefix_is_a_c_identifier(name, ident):
-    from codegen.robot_unit import c_identifier
+    from hybrid.validate import c_identifier
 
     assert c_identifier(name) == ident

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 import hybrid
-from hybrid import native
+from hybrid.native import build as native
 
 ROOT = Path(__file__).resolve().parent.parent
 LAW = ("import hybrid; law = hybrid.decoupling_law(hybrid.paper_arm(), hybrid.Circle((0.5, 0), 0.2)); "
@@ -115,7 +115,7 @@ def test_a_cache_folder_under_a_file_is_a_native_build_error(tmp_path):
 
 
 def test_robot_names_become_ascii_c_identifiers(tmp_path):
-    from codegen.robot_unit import c_identifier
+    from hybrid.validate import c_identifier
 
     assert c_identifier("robôt arm") == "rob_t_arm"
     text = (Path(__file__).parent / "data" / "slider_arm.urdf").read_text().replace('name="slider_arm"', 'name="robôt"')

@@ -170,7 +170,7 @@ def test_a_3d_sweep_runs():
 
 
 def test_the_demo_config_reads():
-    from hybrid import sweep_cli
+    from hybrid.cli import sweep as sweep_cli
 
     config = sweep_cli.read_config(sweep_cli.DEMO)
     base = sweep_cli._base(config["experiment"], config["base"])
@@ -181,7 +181,7 @@ def test_the_demo_config_reads():
 
 
 def test_linspace_values_and_refusals():
-    from hybrid import sweep_cli
+    from hybrid.cli import sweep as sweep_cli
 
     got = sweep_cli._value("x", {"linspace": [0.1, 0.7, 7]})
     np.testing.assert_allclose(got, np.linspace(0.1, 0.7, 7), rtol=1e-12)
@@ -271,7 +271,7 @@ def test_bad_distributions_and_bases_are_named(tmp_path):
 
 
 def test_a_run_that_breaks_unexpectedly_is_a_row(monkeypatch):
-    import hybrid.closed_loop as closed_loop
+    import hybrid.simulation.closed_loop as closed_loop
 
     def broken(exp, x0=None):
         if exp.model_error > 0.2:

@@ -8,9 +8,9 @@ from conftest import UR5, example_robot
 
 import hybrid
 from hybrid import reference as ref
-from hybrid.plants import SpatialPlant
-from hybrid.simulation import run
-from hybrid.tracing import UR5_URDF, initial_tracing_state
+from hybrid.experiments.tracing import UR5_URDF
+from hybrid.plants.compiled import SpatialPlant
+from hybrid.simulation.runner import run
 
 EXACT = dict(model_error=0.0, viscous_compensation=1.0, contact=hybrid.Contact(friction=0.0))
 
@@ -88,7 +88,7 @@ def test_closed_loop_task_acceleration_equals_the_command():
         return tau
 
     plant = SpatialPlant(exp)
-    run(exp, plant, controller, initial_tracing_state(exp, plant))
+    run(exp, plant, controller, exp.initial_state())
     assert samples[0] == exp.n_samples
     assert worst[0] < 1e-7
 

@@ -169,7 +169,7 @@ def test_names_cannot_break_the_generated_c(tmp_path):
     path = write(tmp_path, text)
     robot = hybrid.Robot.from_urdf(path, tip="tool")
     assert np.allclose(robot.chain.joints[2].axis, (0.0, 0.6, 0.8))
-    from hybrid.robot import generate
+    from hybrid.native.standalone import generate
 
     out = generate(path, "tool", tmp_path / "gen", name="x" * 300)
     assert all(len(p.name) < 80 for p in out)

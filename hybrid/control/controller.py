@@ -1,0 +1,412 @@
+"""The hybrid controller as a component: ``tau = ctrl(t, q, qdot, Fc)`` in any loop.
+
+One control sample is one native call (see :mod:`codegen.controller_step`): the task-frame
+measurement, the loops of NOTES section 4 on every task axis, and the decoupling law. The
+controller keeps the loops' integrals between calls. References that are numbers or steps
+are evaluated in the compiled step at the sample time ``t``; others, given as code, in Python.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, replace
+from math import isfinite as _isfinite
+
+import numpy as np
+
+from hybrid.control.loops import Gains
+from hybrid.control.references import Step
+from hybrid.control.schemes import Scheme, scheme_of
+from hybrid.errors import HybridError
+from hybrid.geometry.task_axes import AXIS_NAMES, check_axes, reference_direction, spatial_surface
+from hybrid.models.planar_arm import Arm
+from hybrid.models.robot import Robot
+from hybrid.native import units
+from hybrid.validate import _finite, check_singular_tol
+
+#: "no limit" for the options that are off (the generated step takes finite numbers only)
+_OFF = 1e300
+
+
+@dataclass(frozen=True)
+class ContactLoss:
+    """What a force axis does when its measured force falls below ``threshold`` [N or N m]: it
+    holds its integral and approaches the surface at ``approach_speed`` [m/s or rad/s] (through
+    the impedance's damping ``KDf``) until the force comes back."""
+
+    threshold: float = 0.5
+    approach_speed: float = 0.02
+
+    def __post_init__(self):
+        _finite("ContactLoss", threshold=self.threshold, approach_speed=self.approach_speed)
+        if self.approach_speed < 0:
+            raise HybridError(f"ContactLoss approach_speed = {self.approach_speed}; give a speed >= 0")
+
+
+@dataclass(frozen=True)
+class Reference:
+    """A reference signal ``y_d(t)`` and its rate ``y_d'(t)`` (the velocity loops' feedforward).
+
+    A number is constant and a :class:`~hybrid.Step` jumps once: both are evaluated in the
+    compiled step (``step`` = (before, after, at)), with rate 0 between jumps (as the paper's).
+    Any other callable ``f(t)`` is evaluated in Python at each sample; its ``rate(t)`` method, when
+    it has one, gives the feedforward (else 0).
+    """
+
+    step: tuple[float, float, float] | None
+    value: Callable[[float], float] | None
+    rate: Callable[[float], float] | None
+
+    @classmethod
+    def of(cls, name: str, ref) -> Reference:
+        if isinstance(ref, Reference):
+            return ref
+        if isinstance(ref, (int, float, np.integer, np.floating)) and not isinstance(ref, bool):
+            _finite("Controller", **{name: ref})
+            return cls((float(ref), float(ref), 0.0), None, None)
+        if isinstance(ref, Step):
+            return cls((ref.before, ref.after, ref.at), None, None)
+        if callable(ref):
+            rate = getattr(ref, "rate", None)
+            return cls(None, ref, rate if callable(rate) else None)
+        raise HybridError(f"{name} = {ref!r:.60}; give a number, a hybrid.Step or a callable f(t)")
+
+
+@dataclass(frozen=True)
+class Measurement:
+    """What the controller measures, at the arm tip: position ``p`` [m] and twist ``v = (p', w)``
+    [m/s, rad/s] in base axes; on all six task axes ``t1, t2, n`` (then rotations about them) the
+    task velocity ``R v`` and the task wrench ``R F_c`` [N, N m]."""
+
+    p: np.ndarray
+    v: np.ndarray
+    task_velocity: np.ndarray
+    task_wrench: np.ndarray
+
+
+class Controller:
+    """A sampled hybrid force/velocity controller of ``robot`` in contact with ``surface``.
+
+    Parameters
+    ----------
+    robot : Robot or Arm
+        The controller's own model (possibly wrong). A planar :class:`~hybrid.Arm` is the chain of
+        :meth:`Robot.planar` with the planar task axes ``(t1, n)``.
+    surface : Plane, Circle, Sphere, Cylinder or ImplicitSurface
+    scheme : str or Scheme
+        ``"task"`` (De Luca & Manes), ``"khatib"`` or a :class:`~hybrid.schemes.Scheme`.
+    axes : task axes (see :func:`hybrid.decoupling_law`); default all six, ``"planar"`` for an Arm.
+    selection : the force-controlled axes, by name (``"n"``) or index; default the normal ``n``.
+    gains : :class:`Gains` for every axis (velocity axes use ``KPv, KIv, KI2v``; force axes
+        ``KPf, KDf, KIf``), or ``{axis name: Gains}`` for some axes.
+    force_reference, velocity_reference : the force-axes' ``F_d`` [N, N m] and the velocity-axes'
+        ``v_d`` [m/s, rad/s]: one :class:`Reference`-like value (a number, a Step or ``f(t)``) for the
+        normal force and the speed along ``t1`` (the other axes' references are 0), or
+        ``{axis name: value}``. Default: 10 N on the normal when it is a force axis, every other
+        reference 0.
+    sample_time : the period ``T`` [s] at which the integrals advance.
+    integral : with ``False`` the integral actions ``KI2v, KIf`` are 0 (NOTES section 4).
+    curvature : give ``R'`` to the law (with ``frame="desired"``: the loop frame's ``R_d'``).
+    frame : ``"actual"`` (loops in ``R(r)``) or ``"desired"`` (in ``R(r_d)``, the paper's Figure 3),
+        which needs ``path``.
+    path : ``path(t) -> (p_d, p_d')`` [m, m/s], or ``(p_d, p_d', phi_d)`` with the desired ZYX Euler
+        angles [rad]: the desired point (for ``frame="desired"`` and ``position_error``).
+    position_error : velocity axes use the position error ``R T(r) (r_d - r)`` and its integral in
+        place of the velocity error's integrals (the paper's last equations; ``KIv, KI2v`` act as
+        ``KP_p, KI_p``); needs ``path``.
+    integral_limit : anti-windup: the largest integral action per axis [m/s^2 or rad/s^2]; a sample
+        that would exceed it keeps the axis's integrals (conditional integration). Off by default.
+    contact_loss : a :class:`ContactLoss` rule for force axes; off by default.
+    reference : the task frame's reference direction ``e`` (base axes).
+    singular_tol : conditioning below which a sample raises :class:`SingularConfigurationError`.
+    """
+
+    def __init__(self, robot: Robot | Arm, surface, scheme: str | Scheme = "task", *, axes=None, selection=None,
+                 gains: Gains | Mapping | None = None, force_reference=None, velocity_reference=None,
+                 sample_time: float = 0.01, integral: bool = True, curvature: bool = False,
+                 frame: str = "actual", path: Callable | None = None, reference=(0.0, 0.0, 1.0),
+                 position_error: bool = False, integral_limit: float | None = None,
+                 contact_loss: ContactLoss | None = None, singular_tol: float = 1e-3):
+        if isinstance(robot, Arm):
+            robot, axes = Robot.planar(robot), "planar" if axes is None else axes
+        if not isinstance(robot, Robot):
+            raise HybridError(f"robot must be a hybrid.Robot or hybrid.Arm, got {type(robot).__name__}")
+        for name, value in (("integral", integral), ("curvature", curvature), ("position_error", position_error)):
+            if not isinstance(value, bool):
+                raise HybridError(f"{name} = {value!r}; give True or False")
+        if frame not in ("actual", "desired"):
+            raise HybridError(f"frame = {frame!r}; give 'actual' or 'desired'")
+        if (frame == "desired" or position_error) and not callable(path):
+            raise HybridError(f"{'position_error' if position_error else 'frame=desired'} needs path=f(t) returning "
+                              "the desired point and its velocity (p_d [m], p_d' [m/s])")
+        if contact_loss is not None and not isinstance(contact_loss, ContactLoss):
+            raise HybridError(f"contact_loss = {contact_loss!r:.60}; give a hybrid.ContactLoss(threshold, "
+                              "approach_speed) or None")
+        if integral_limit is not None:
+            _finite("Controller", integral_limit=integral_limit)
+            if integral_limit < 0:
+                raise HybridError(f"integral_limit = {integral_limit}; give a magnitude >= 0 or None")
+        _finite("Controller", sample_time=sample_time)
+        if sample_time <= 0:
+            raise HybridError(f"sample_time = {sample_time} s; give a positive sample period")
+        check_singular_tol("Controller", singular_tol)
+        self.robot, self.scheme = robot, scheme_of(scheme)
+        self.axes = check_axes(robot, axes)
+        self.surface, self._spatial = surface, spatial_surface(surface)
+        self.sample_time, self.integral, self.curvature, self.frame = float(sample_time), integral, curvature, frame
+        self.reference, self.singular_tol, self.path = tuple(reference_direction(reference)), float(singular_tol), path
+        self.selection = self._selection(selection)
+        self.gains = self._gains(gains)
+        if self.scheme.needs_force_gain and any(s and g.KPf <= 0 for g, s in zip(self.gains, self.selection)):
+            raise HybridError(f"the {self.scheme.name} scheme commands m_d a = a / KPf on force axes: give KPf > 0")
+        self.position_error, self.integral_limit, self.contact_loss = position_error, integral_limit, contact_loss
+        self._references = self._axis_references(force_reference, velocity_reference)
+        unit = units.controller_unit(robot.chain, robot.name, self._spatial.spec(), self.axes,
+                                        frame == "desired", position_error)
+        self._step, self._measure = unit.function(self.scheme.step), unit.function("task_measurement")
+        m = len(self.axes)
+        loss = contact_loss or ContactLoss(-_OFF, 0.0)
+        options = np.array([float(curvature), self.sample_time, float(self.scheme.feeds_desired_force),
+                            _OFF if integral_limit is None else float(integral_limit), loss.threshold,
+                            loss.approach_speed, float(self.scheme.pseudoinverse)])
+        steps = np.array([ref.step or (0.0, 0.0, 0.0) for ref in self._references], float).ravel()
+        self._params = (steps, self._gain_array(), np.array(self.selection, float), robot.as_array(),
+                        self._spatial.as_array(), np.array(self.reference), options)
+        self._t, self._extra, self._rate, self._target = np.zeros(1), np.zeros(m), np.zeros(m), np.zeros(9)
+        self._fc = np.zeros(6)
+        self._fc_head = {2: self._fc[:2], 3: self._fc[:3]}
+        self._varying = [(i, ref.value) for i, ref in enumerate(self._references) if ref.value is not None]
+        self._rates = [(i, ref.rate) for i, ref in enumerate(self._references) if ref.rate is not None]
+        # with references all steps and no path, the per-sample inputs end at t: the rest is bound
+        self._short = not (self._varying or self._rates or path)
+        held = (self._extra, self._rate, self._target) if self._short else ()
+        _, self._binding = self._step.fast_bind(5 if self._short else 8, *held, *self._params,
+                                                singular_tol=self.singular_tol)
+        self._into = self._step.unit.fast().call_into
+        # outputs written in place: tau, the integrals' next buffer, a, y, f
+        self._out = [np.empty(size) for _, size, _ in self._step.outputs]
+        self._z, self._sampled = np.zeros(2 * m), False
+
+    # ----------------------------------------------------------------- settings
+
+    @classmethod
+    def from_experiment(cls, exp) -> Controller:
+        """Exactly the controller ``exp`` runs (its model of the arm, loops, references, options): the
+        paper's experiment or a 3-D one (:func:`hybrid.tracing_experiment`): the experiment builds it."""
+        return exp.build_controller()
+
+    @property
+    def runs_in_c(self) -> bool:
+        """True when every reference is a number or a :class:`Step` and no path is given: then a
+        whole run can be compiled C (:mod:`hybrid.closed_loop`)."""
+        return self._short
+
+    def step_inputs(self) -> dict[str, np.ndarray]:
+        """The compiled step's inputs this controller fixes (gains, references' steps, model,
+        options), by the manifest's names."""
+        names = [name for name, _ in self._step.inputs]
+        return dict(zip(names[len(names) - len(self._params):], self._params))
+
+    def step_variant(self) -> dict:
+        """What the compiled step is made of: the model's chain and name, the surface's spec, the task
+        axes, the compiled-in options and the scheme's step function."""
+        return {"chain": self.robot.chain, "name": self.robot.name, "spec": self._spatial.spec(), "axes": self.axes,
+                "desired_frame": self.frame == "desired", "position_error": self.position_error,
+                "step": self.scheme.step}
+
+    @property
+    def axis_names(self) -> tuple[str, ...]:
+        return tuple(AXIS_NAMES[i] for i in self.axes)
+
+    def _axis(self, what: str, key) -> int:
+        """The position in ``axes`` of the axis named or numbered ``key``."""
+        index = AXIS_NAMES.index(key) if key in AXIS_NAMES else key
+        if isinstance(index, (int, np.integer)) and not isinstance(index, bool) and index in self.axes:
+            return self.axes.index(int(index))
+        raise HybridError(f"{what}: {key!r} is not one of the task axes {', '.join(self.axis_names)}; name one of "
+                          "them (or give its index 0-5)")
+
+    def _selection(self, selection) -> tuple[int, ...]:
+        if selection is None:
+            selection = ("n",) if 2 in self.axes else ()
+        if isinstance(selection, (str, int)):
+            selection = (selection,)
+        try:
+            chosen = {self._axis("selection", k) for k in selection}
+        except HybridError:
+            raise
+        except (TypeError, ValueError):
+            raise HybridError(f"selection = {selection!r:.60}; give the force-controlled axes by name, "
+                              "e.g. ('n',)") from None
+        return tuple(int(k in chosen) for k in range(len(self.axes)))
+
+    def _gains(self, gains) -> tuple[Gains, ...]:
+        per_axis = [Gains()] * len(self.axes)
+        if gains is None:
+            pass
+        elif isinstance(gains, Gains):
+            per_axis = [gains] * len(self.axes)
+        elif isinstance(gains, Mapping):
+            for key, g in gains.items():
+                if not isinstance(g, Gains):
+                    raise HybridError(f"gains[{key!r}] = {g!r:.60}; give a hybrid.Gains(...)")
+                per_axis[self._axis("gains", key)] = g
+        else:
+            raise HybridError(f"gains = {gains!r:.60}; give a hybrid.Gains(...) or {{axis name: Gains}}")
+        if not self.integral:
+            per_axis = [replace(g, KI2v=0.0, KIf=0.0) for g in per_axis]
+        return tuple(per_axis)
+
+    def _gain_array(self) -> np.ndarray:
+        """``(KP, KI, KI2, KD)`` per axis, as the generated step reads them."""
+        rows = [(g.KPf, g.KIf, 0.0, g.KDf) if s else (g.KPv, g.KIv, g.KI2v, 0.0)
+                for g, s in zip(self.gains, self.selection)]
+        return np.array(rows, float).ravel()
+
+    def _axis_references(self, force, velocity) -> list[Reference]:
+        refs: list = [0.0] * len(self.axes)
+        if force is None:  # the default: 10 N on the normal, if it is force-controlled
+            force = {"n": 10.0} if 2 in self.axes and self.selection[self.axes.index(2)] else {}
+        if velocity is None:
+            velocity = {}
+        for what, given, force_axes in (("force_reference", force, True), ("velocity_reference", velocity, False)):
+            if isinstance(given, Mapping):
+                items = {self._axis(what, k): v for k, v in given.items()}
+            else:
+                main = 2 if force_axes else 0  # the normal force, the speed along t1
+                items = {self.axes.index(main): given} if main in self.axes else {}
+            for k, v in items.items():
+                if bool(self.selection[k]) != force_axes:
+                    kind = "force" if force_axes else "velocity"
+                    raise HybridError(f"{what} names axis {self.axis_names[k]}, which is not a {kind}-controlled "
+                                      f"axis (selection: {self._selected()}); move it to the other reference")
+                refs[k] = Reference.of(f"{what}[{self.axis_names[k]}]", v)
+        return [Reference.of("reference", r) for r in refs]
+
+    def _selected(self) -> str:
+        return ", ".join(n for n, s in zip(self.axis_names, self.selection) if s) or "none"
+
+    # ------------------------------------------------------------------ running
+
+    def reset(self) -> None:
+        """Zero the loops' integrals (a new run)."""
+        self._z[:] = 0.0
+        self._sampled = False
+
+    @property
+    def state(self) -> np.ndarray:
+        """The loops' integrals, one row per task axis: ``(int e, int int e)`` (a copy)."""
+        return self._z.reshape(-1, 2).copy()
+
+    @state.setter
+    def state(self, value) -> None:
+        try:
+            arr = np.asarray(value, dtype=float)
+        except (TypeError, ValueError):
+            arr = np.full(1, np.nan)
+        if arr.shape != (len(self.axes), 2) or not np.isfinite(arr).all():
+            raise HybridError(f"state must be {len(self.axes)} x 2 finite numbers (int e, int int e per axis "
+                              f"{', '.join(self.axis_names)}), got shape {arr.shape}")
+        self._z[:] = arr.ravel()
+
+    def _python_references(self, t: float) -> None:
+        """The references given as code, at ``t``: into the step's ``yd_extra`` and ``yd_rate``."""
+        try:
+            for i, value in self._varying:
+                self._extra[i] = value(t)
+            for i, rate in self._rates:
+                self._rate[i] = rate(t)
+        except HybridError:
+            raise
+        except (TypeError, ValueError) as exc:
+            raise HybridError(f"a reference at t = {t} s did not give a number ({exc}); a reference f(t) "
+                              "returns one number (and its rate(t) one number)") from None
+
+    def __call__(self, t: float, q, qdot, Fc) -> np.ndarray:
+        """``tau`` [N m or N] for the sample at time ``t`` [s], from the joint state and the measured
+        wrench on the robot ``Fc`` (base axes: force [N] of 2 or 3 entries, or force and moment, 6);
+        advances the integrals by one sample."""
+        if type(Fc) is not np.ndarray or Fc.shape != (6,):
+            Fc = self._padded(Fc)
+        try:
+            self._t[0] = t
+        except (TypeError, ValueError):
+            raise HybridError(f"t = {t!r:.40}; give the sample time in seconds (a number)") from None
+        if not _isfinite(self._t[0]):
+            raise HybridError(f"t = {t!r}; give a finite sample time")
+        out, z = self._out, self._z
+        if self._short:
+            done = self._into(self._binding, out, q, qdot, Fc, z, self._t)
+        else:
+            self._python_references(t)
+            if self.path is not None:
+                self._target[:] = self._desired(t)
+            done = self._into(self._binding, out, q, qdot, Fc, z, self._t, self._extra, self._rate, self._target)
+        if done is None:
+            self._checked(q, qdot, Fc)
+        # the integrals' two buffers trade places: no copy
+        self._z, out[1] = out[1], z
+        self._sampled = True
+        return out[0].copy()
+
+    @property
+    def last(self) -> dict[str, np.ndarray] | None:
+        """The latest sample's ``tau``, integrals after it, loop accelerations ``a``, task velocity ``y``
+        and task wrench ``f`` (loop frame), by name; None before the first sample."""
+        if not self._sampled:
+            return None
+        return {"tau": self._out[0].copy(), "integrals": self._z.copy(),
+                **{name: o.copy() for (name, _, _), o in zip(self._step.outputs[2:], self._out[2:])}}
+
+    def _padded(self, Fc) -> np.ndarray:
+        """``Fc`` as the step's 6-vector (into a buffer for the common 2 or 3 forces)."""
+        if type(Fc) is np.ndarray and Fc.dtype == np.float64 and Fc.shape in ((2,), (3,)):
+            self._fc[2] = 0.0
+            self._fc_head[Fc.shape[0]][...] = Fc  # the moment entries stay 0
+            return self._fc
+        return _wrench(Fc)
+
+    def _desired(self, t: float) -> np.ndarray:
+        got = self.path(t)
+        if not isinstance(got, tuple) or len(got) not in (2, 3):
+            raise HybridError(f"path({t}) returned {got!r:.60}; return (p_d, p_d') or (p_d, p_d', phi_d)")
+        phi = _vector3("path angles", got[2]) if len(got) == 3 else np.zeros(3)
+        return np.concatenate([_vector3("path point", got[0]), _vector3("path velocity", got[1]), phi])
+
+    def _checked(self, q, qdot, Fc) -> None:
+        """The general path: any array-like input, and the error that names the cause."""
+        t = self._t[0]
+        if not all(np.isfinite(v).all() for v in (self._t, self._extra, self._rate, self._target)):
+            raise HybridError(f"the references at t = {t} s are not finite: values {self._extra}, rates "
+                              f"{self._rate}, desired point {self._target}")
+        got = self._step(q, qdot, Fc, self._z, self._t, self._extra, self._rate, self._target, *self._params,
+                         singular_tol=self.singular_tol)
+        for (name, _, _), o in zip(self._step.outputs, self._out):
+            o[:] = got[name].ravel()
+
+    def measure(self, q, qdot, Fc) -> Measurement:
+        """What the controller measures at ``q, qdot, Fc`` (see :class:`Measurement`)."""
+        out = self._measure(q, qdot, _wrench(Fc), self._params[4], self._params[5])
+        return Measurement(out["p"], out["v"], out["task_velocity"], out["task_wrench"])
+
+
+def _wrench(Fc) -> np.ndarray:
+    """A measured force (2 or 3 entries) or wrench (6) as the 6-vector ``(f, m)``."""
+    try:
+        arr = np.asarray(Fc, dtype=float).ravel()
+    except (TypeError, ValueError):
+        arr = None
+    if arr is None or np.ndim(Fc) != 1 or arr.size not in (2, 3, 6):
+        raise HybridError(f"Fc = {Fc!r:.60}; give the measured force on the robot (2 or 3 numbers, base axes) "
+                          "or the wrench (force, moment: 6 numbers)")
+    return np.concatenate([arr, np.zeros(6 - arr.size)])
+
+
+def _vector3(name: str, v) -> np.ndarray:
+    try:
+        arr = np.asarray(v, dtype=float).ravel()
+    except (TypeError, ValueError):
+        arr = np.full(1, np.nan)
+    if arr.size not in (2, 3) or not np.isfinite(arr).all():
+        raise HybridError(f"the desired {name} {v!r:.60} must be 2 or 3 finite numbers [m, m/s]")
+    return np.concatenate([arr, np.zeros(3 - arr.size)])

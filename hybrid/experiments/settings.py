@@ -1,0 +1,153 @@
+"""What every experiment shares: its checks, the settings it derives, and overrides by keyword."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import fields, replace
+
+import numpy as np
+
+from hybrid.control.loops import Gains, check_loops
+from hybrid.control.references import Step
+from hybrid.errors import HybridError
+from hybrid.plants.contact import Contact, Sensor
+from hybrid.validate import _finite, check_singular_tol
+
+#: where the loops' task frame is taken: at the actual contact point or at the desired one
+FRAMES = ("actual", "desired")
+#: how far from the surface a start point may lie [m]
+START_TOL = 1e-3
+
+
+class RunSettings:
+    """What every experiment derives from its settings (a mixin of the experiment dataclasses)."""
+
+    @property
+    def steps_per_sample(self) -> int:
+        return round(self.sample_time / self.step)
+
+    @property
+    def n_samples(self) -> int:
+        return math.ceil(self.duration / self.sample_time - 1e-9)
+
+    def effective_gains(self) -> Gains:
+        """The gains in force: without integral action ``KI2v = KIf = 0`` (NOTES section 4)."""
+        return self.gains if self.integral else replace(self.gains, KI2v=0.0, KIf=0.0)
+
+    def pressed_at(self, point, normal) -> tuple[np.ndarray, np.ndarray]:
+        """The sensor tip ``s`` and the arm tip ``r`` at rest, the sensor tip on the surface at
+        ``point`` (unit ``normal``) pressing with ``F_d(0)``: it penetrates ``F/k_e`` (the surface in
+        equilibrium) and the arm tip sits ``F/K_s`` beyond it (the sensor spring in equilibrium)."""
+        return pressed(point, normal, self.force_reference(0.0), self.contact.stiffness, self.sensor.stiffness)
+
+    def controller_settings(self) -> dict:
+        """The :class:`~hybrid.Controller` keywords every experiment sets alike: the force loop on the
+        normal, the speed reference on ``t1``, gains, sampling, options."""
+        return {"selection": ("n",), "gains": self.gains, "force_reference": self.force_reference,
+                "velocity_reference": self.speed_reference, "sample_time": self.sample_time,
+                "integral": self.integral, "curvature": self.curvature, "frame": self.frame,
+                "path": self.desired_point if self.frame == "desired" else None, "singular_tol": self.singular_tol}
+
+    def plant_array(self) -> np.ndarray:
+        """The ``plant[7]`` array of the generated C (sensor, then contact)."""
+        s, c = self.sensor, self.contact
+        return np.array([s.mass, s.stiffness, s.damping, c.stiffness, c.damping, c.friction,
+                         c.friction_smoothing])
+
+
+def pressed(point, normal, F0: float, k_e: float, K_s: float) -> tuple[np.ndarray, np.ndarray]:
+    """:meth:`RunSettings.pressed_at` from the numbers it reads: the force ``F0`` [N], the surface's
+    stiffness ``k_e`` and the sensor's ``K_s`` [N/m]."""
+    s = np.asarray(point, float) - normal * max(F0, 0.0) / k_e
+    return s, s - normal * F0 / K_s
+
+
+def check_common_types(exp) -> None:
+    """The fields every experiment shares, of the kind they must be (references given as numbers
+    become constant :class:`Step` references)."""
+    owner = type(exp).__name__
+    for name in ("integral", "curvature"):
+        if not isinstance(getattr(exp, name), bool):
+            raise HybridError(f"{name} = {getattr(exp, name)!r}; give True or False")
+    for name in ("controller", "frame"):
+        if not isinstance(getattr(exp, name), str):
+            raise HybridError(f"{name} = {getattr(exp, name)!r}; give its name as a string")
+    for name, typ in (("sensor", Sensor), ("contact", Contact), ("gains", Gains)):
+        if not isinstance(getattr(exp, name), typ):
+            raise HybridError(f"{name} = {getattr(exp, name)!r:.60}; give a hybrid.{typ.__name__}(...)")
+    for name in ("force_reference", "speed_reference"):
+        ref = getattr(exp, name)
+        if isinstance(ref, (int, float, np.integer, np.floating)) and not isinstance(ref, bool):
+            _finite(owner, **{name: ref})
+            object.__setattr__(exp, name, Step(float(ref), float(ref), 0.0))  # a constant reference
+        elif not isinstance(ref, Step):
+            raise HybridError(f"{name} = {ref!r:.60}; give a hybrid.Step(before, after, at) or a number")
+    _finite(owner, model_error=exp.model_error, viscous_compensation=exp.viscous_compensation)
+    if exp.frame not in FRAMES:
+        raise HybridError(f"unknown frame {exp.frame!r}; choose one of {FRAMES}")
+    check_singular_tol(owner, exp.singular_tol)
+
+
+def check_timing(exp) -> None:
+    """The run's timing and physics settings, checked alike for every experiment: duration, RK4 step
+    and sample time (whole multiples, fast enough for the contact), model error, stable loops."""
+    owner = type(exp).__name__
+    _finite(owner, duration=exp.duration, step=exp.step, sample_time=exp.sample_time)
+    if exp.duration <= 0:
+        raise HybridError(f"duration = {exp.duration} s; give a positive duration")
+    if exp.step <= 0 or exp.sample_time <= 0:
+        raise HybridError(f"step = {exp.step} s and sample_time = {exp.sample_time} s must be positive")
+    ratio = exp.sample_time / exp.step
+    if not math.isfinite(ratio) or ratio > 1e9:
+        raise HybridError(f"step = {exp.step} s is too small for sample_time = {exp.sample_time} s "
+                          "(over 1e9 steps a sample); give a step of at least sample_time / 1e9")
+    if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
+        raise HybridError(f"sample_time = {exp.sample_time} s is not a whole multiple of step = "
+                          f"{exp.step} s; choose step = sample_time / k for a whole k")
+    # fastest plant mode: sensor mass on the contact (and sensor) spring-dampers
+    rate = max(math.sqrt((exp.contact.stiffness + exp.sensor.stiffness) / exp.sensor.mass),
+               (exp.contact.damping + exp.sensor.damping) / exp.sensor.mass)
+    if exp.step * rate > 1.0:
+        raise HybridError(
+            f"step = {exp.step} s is too large for the contact: its fastest mode is {rate:.3g} rad/s "
+            f"and RK4 needs step * rate <= 1 for accuracy; use step <= {1.0 / rate:.2e} s")
+    if exp.model_error <= -1 or exp.viscous_compensation < 0:
+        raise HybridError(f"model_error = {exp.model_error} must be > -1 and viscous_compensation = "
+                          f"{exp.viscous_compensation} >= 0")
+    if abs(exp.duration / exp.sample_time - round(exp.duration / exp.sample_time)) > 1e-9 * exp.n_samples:
+        k = max(1, round(exp.duration / exp.sample_time))
+        raise HybridError(f"duration = {exp.duration} s is not a whole number of samples of "
+                          f"{exp.sample_time} s; give duration = {k * exp.sample_time:g} s")
+    check_loops(exp)
+
+
+#: short names of the references
+REFERENCE_ALIASES = {"F_d": "force_reference", "v_d": "speed_reference"}
+
+
+def setting_aliases() -> dict[str, str]:
+    """Short names of settings and the paths they stand for: ``F_d`` / ``v_d`` for the references,
+    each gain by its own name (``KPf`` for ``gains.KPf``)."""
+    return {**REFERENCE_ALIASES, **{f.name: f"gains.{f.name}" for f in fields(Gains)}}
+
+
+def with_overrides(cls, maker: str, overrides: dict):
+    """``cls(**overrides)`` where the gains may also be given one by one (``KPv=50``) and ``F_d`` /
+    ``v_d`` name the force / speed references; an unknown name lists the known ones."""
+    names = {f.name for f in fields(cls)}
+    gain_names = {f.name for f in fields(Gains)}
+    aliases = REFERENCE_ALIASES
+    gains = {k: overrides.pop(k) for k in list(overrides) if k in gain_names}
+    for alias, name in aliases.items():
+        if alias in overrides:
+            overrides[name] = overrides.pop(alias)
+    unknown = sorted(set(overrides) - names)
+    if unknown:
+        raise HybridError(f"unknown setting(s) {', '.join(unknown)} for {maker}; see the known ones below\n"
+                          f"  known: {', '.join(sorted(names | gain_names | set(aliases)))}")
+    if gains:
+        base = overrides.get("gains", Gains())
+        if not isinstance(base, Gains):
+            raise HybridError(f"gains = {base!r:.60}; give a hybrid.Gains(...) to combine with {', '.join(gains)}")
+        overrides["gains"] = replace(base, **gains)
+    return cls(**overrides)

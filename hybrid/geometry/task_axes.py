@@ -1,0 +1,75 @@
+"""The task axes and the task frame's reference direction, named as the generated code names them.
+
+The task frame's rows are ``t1, t2, n`` (linear axes 0-2), then the rotations about them (3-5):
+``t1 = e x n / |e x n|`` for the reference direction ``e``, ``t2 = n x t1``, ``n`` the surface's
+normal towards the robot. A task uses some of the six axes, in a given order.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+
+from hybrid.errors import HybridError
+from hybrid.geometry.surfaces import Circle, Plane, Surface
+from hybrid.validate import unit_vector
+
+#: the six task axes, in the task frame's row order
+AXIS_NAMES = ("t1", "t2", "n", "rot_t1", "rot_t2", "rot_n")
+#: named task-axis selections: all six, position only, the planar arm's (t1, n)
+AXES = {"all": (0, 1, 2, 3, 4, 5), "position": (0, 1, 2), "planar": (0, 2)}
+
+
+def check_axes(robot, axes) -> tuple[int, ...]:
+    """``axes`` as a tuple of distinct task-axis indices the robot can serve, in the given order
+    (``a[k]`` is the acceleration along ``axes[k]``)."""
+    if axes is None:
+        if robot.n < 6:
+            raise HybridError(f"a {robot.n}-joint arm cannot control all six task axes; pass axes="
+                              "'planar' (t1, n) for an arm moving in the base xy-plane, 'position' "
+                              "(t1, t2, n), or a tuple of axis indices 0-5")
+        axes = "all"
+    if isinstance(axes, str):
+        if axes not in AXES:
+            raise HybridError(f"axes = {axes!r}; name one of {', '.join(AXES)} or give indices 0-5")
+        axes = AXES[axes]
+    items = tuple(axes) if isinstance(axes, (tuple, list)) else None
+    if items is None or not all(isinstance(i, (int, np.integer)) and not isinstance(i, bool) for i in items):
+        raise HybridError(f"axes = {axes!r:.60}; give a tuple of distinct task-axis indices 0-5 "
+                          "(t1, t2, n, then rotations), or 'all', 'position', 'planar'")
+    out = tuple(int(i) for i in items)  # in the user's order: a[k] acts on axis axes[k]
+    if not out or len(set(out)) != len(out) or not all(0 <= i <= 5 for i in out):
+        raise HybridError(f"axes = {axes!r:.60}; give distinct task-axis indices 0-5")
+    if len(out) > robot.n:
+        raise HybridError(f"{len(out)} task axes need at least {len(out)} joints; the arm has {robot.n}")
+    return out
+
+
+def spatial_surface(surface):
+    """The 3-D surface of ``surface`` (a planar one lifted), checked."""
+    if not isinstance(surface, Surface):
+        raise HybridError(f"surface must be a hybrid Plane, Circle, Sphere, Cylinder or ImplicitSurface, "
+                          f"got {type(surface).__name__}")
+    return _lifted(surface) if isinstance(surface, (Circle, Plane)) else surface.lift()
+
+
+@lru_cache(maxsize=256)  # a planar surface's lift is checked like any surface: once per surface will do
+def _lifted(surface):
+    return surface.lift()
+
+
+def reference_direction(e) -> np.ndarray:
+    """The task frame's reference direction ``e`` (3, base axes) as a unit vector, checked."""
+    try:
+        arr = np.asarray(e, dtype=float)
+        if arr.shape != (3,):
+            raise ValueError
+        return np.array(_unit_reference(tuple(arr.tolist())))
+    except (TypeError, ValueError, OverflowError, HybridError):
+        raise HybridError(f"reference = {e!r:.60}; give a nonzero direction (e_x, e_y, e_z) in base axes") from None
+
+
+@lru_cache(maxsize=256)
+def _unit_reference(e: tuple) -> tuple:
+    return unit_vector("decoupling_law", "reference", e)

@@ -1,0 +1,79 @@
+"""The kinematic structure of a serial arm as plain data: joints, the tip frame, parameter names.
+
+A :class:`Chain` is what the code generator compiles into a robot's C (joint origins, axes,
+types); the inertial parameters, viscosities and gravity stay run-time numbers, named here in
+the order of the generated code's ``robot`` array.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+#: the per-link inertial parameters in the ``robot`` array, in order: mass [kg], centre of mass
+#: in the joint frame [m], inertia about the centre of mass in the joint frame's axes [kg m^2]
+INERTIAL = ("m", "cx", "cy", "cz", "Ixx", "Ixy", "Ixz", "Iyy", "Iyz", "Izz")
+INERTIAL_UNITS = ("kg", "m", "m", "m") + ("kg m^2",) * 6
+
+
+@dataclass(frozen=True)
+class Joint:
+    """One moving joint of the chain (fixed joints are merged into the next origin).
+
+    ``rotation`` (3x3, row-major tuples) and ``translation`` [m] place this joint's frame in
+    its parent's frame at ``q = 0``; ``axis`` is a unit vector in this joint's frame.
+    """
+
+    name: str
+    kind: str  # "revolute" (also URDF "continuous") or "prismatic"
+    rotation: tuple[tuple[float, float, float], ...]
+    translation: tuple[float, float, float]
+    axis: tuple[float, float, float]
+
+
+@dataclass(frozen=True)
+class Chain:
+    """The kinematic structure of a serial arm: moving joints from the root, then the tip frame.
+
+    ``tip_rotation`` and ``tip_translation`` place the tip frame in the last joint's frame.
+    """
+
+    joints: tuple[Joint, ...]
+    tip_rotation: tuple[tuple[float, float, float], ...]
+    tip_translation: tuple[float, float, float]
+
+    @property
+    def n(self) -> int:
+        return len(self.joints)
+
+
+def parameter_names(chain: Chain) -> tuple[str, ...]:
+    """Names of the ``robot`` array: per link the :data:`INERTIAL` set, then the joint
+    viscosities, then gravity ``g_x, g_y, g_z`` [m/s^2] in base axes."""
+    return (tuple(f"{p}[{j.name}]" for j in chain.joints for p in INERTIAL)
+            + tuple(f"damping[{j.name}]" for j in chain.joints) + ("g_x", "g_y", "g_z"))
+
+
+#: SI units of a joint's position, rate, acceleration and effort, by joint kind
+JOINT_UNITS = {"revolute": {"q": "rad", "qd": "rad/s", "qdd": "rad/s^2", "tau": "N m"},
+               "prismatic": {"q": "m", "qd": "m/s", "qdd": "m/s^2", "tau": "N"}}
+
+
+def joint_units(chain: Chain, what: str) -> tuple[str, ...]:
+    """The unit of ``what`` (``q``, ``qd``, ``qdd``, ``tau``) for each joint."""
+    return tuple(JOINT_UNITS[j.kind][what] for j in chain.joints)
+
+
+def parameter_units(chain: Chain) -> tuple[str, ...]:
+    viscosity = {"revolute": "N m s/rad", "prismatic": "N s/m"}
+    return (INERTIAL_UNITS * chain.n + tuple(viscosity[j.kind] for j in chain.joints)
+            + ("m/s^2",) * 3)
+
+
+def rotation_rpy(roll: float, pitch: float, yaw: float) -> tuple[tuple[float, float, float], ...]:
+    """URDF's fixed-axis roll-pitch-yaw: ``Rz(yaw) Ry(pitch) Rx(roll)``, as row tuples."""
+    cr, sr, cp, sp, cy, sy = (math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch),
+                              math.cos(yaw), math.sin(yaw))
+    return ((cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr),
+            (sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr),
+            (-sp, cp * sr, cp * cr))

@@ -1,0 +1,242 @@
+"""Any serial arm as a validated dataclass: structure, inertial parameters, and its compiled terms.
+
+A :class:`Robot` holds the kinematic chain (compiled into the generated C) and the run-time
+parameters (inertial parameters, joint viscosities, gravity: the ``robot`` array). It is data:
+its C is generated and compiled on first use and kept in a cache keyed by the kinematic
+structure (:mod:`hybrid.native.units`), so changing only inertial parameters or gravity never
+regenerates.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+import numpy as np
+
+from hybrid.errors import HybridError
+from hybrid.models import chain as rb
+from hybrid.models.planar_arm import Arm
+from hybrid.models.urdf import JointLimits, LinkInertia, read_chain
+from hybrid.native import units
+from hybrid.native.binding import Unit, is_batch
+from hybrid.validate import _finite, check_model_error, inertia_problem
+
+
+def _gravity(g) -> tuple[float, float, float]:
+    try:
+        arr = np.asarray(g, dtype=float)
+    except (TypeError, ValueError):
+        arr = np.array([])
+    if arr.shape != (3,) or not np.isfinite(arr).all():
+        raise HybridError(f"gravity = {g!r}; give three finite numbers (g_x, g_y, g_z) in m/s^2, base axes")
+    return tuple(map(float, arr))
+
+
+@dataclass(frozen=True)
+class Robot:
+    """A serial arm: ``chain`` (structure), per-link inertial parameters, joint viscosities
+    [N m s/rad or N s/m], gravity [m/s^2] in base axes, joint limits.
+
+    Build it with :meth:`from_urdf` or :meth:`planar`. Terms come from :func:`hybrid.arm_terms`.
+    """
+
+    name: str
+    chain: rb.Chain
+    links: tuple[LinkInertia, ...]
+    damping: tuple[float, ...]
+    gravity: tuple[float, float, float] = (0.0, 0.0, -9.81)
+    limits: JointLimits | None = field(default=None, compare=False)  # arrays: information, not identity
+
+    def __post_init__(self):
+        object.__setattr__(self, "gravity", _gravity(self.gravity))
+        if len(self.links) != self.chain.n or len(self.damping) != self.chain.n:
+            raise HybridError(f"Robot needs one link and one damping per joint ({self.chain.n}), got "
+                              f"{len(self.links)} and {len(self.damping)}")
+        for name, link in zip(self.joint_names, self.links):
+            _check_link(name, link)
+        last = self.links[-1] if self.links else None
+        if last is not None and last.mass == 0 and not np.any(last.inertia):
+            raise HybridError(f"the link moved by the last joint '{self.joint_names[-1]}' has no mass and no "
+                              "inertia, so B(q) is singular; give it mass or inertia")
+        for name, d in zip(self.joint_names, self.damping):
+            _finite(f"Robot damping[{name}]", damping=d)
+            if d < 0:
+                raise HybridError(f"damping of joint '{name}' is {d}; give a viscosity >= 0")
+        # frozen: the parameter array is built once and read-only, like the fields it comes from
+        params = np.concatenate([*(link.as_array() for link in self.links), self.damping, self.gravity])
+        params.setflags(write=False)
+        object.__setattr__(self, "_params", params)
+
+    # ------------------------------------------------------------- construction
+
+    @classmethod
+    def from_urdf(cls, path, tip: str = "tool0", gravity=(0.0, 0.0, -9.81), locked: dict | None = None) -> Robot:
+        """The serial chain of the URDF at ``path`` from its root link to the link ``tip``.
+
+        Fixed joints are merged; joints off the chain, and those named in ``locked``
+        (``{joint name: position}``), are held at 0 or at the given position and the links
+        they carry are lumped into the link they hang from.
+        """
+        if not isinstance(tip, str):
+            raise HybridError(f"tip must be a link name (a string), got {tip!r}")
+        if locked is not None and not isinstance(locked, dict):
+            raise HybridError(f"locked must be a {{joint name: position}} dict, got {type(locked).__name__}")
+        parsed = read_chain(path, tip, locked)
+        return cls(parsed.name, parsed.chain, parsed.links, parsed.damping, gravity, parsed.limits)
+
+    @classmethod
+    def planar(cls, arm: Arm) -> Robot:
+        """The paper's planar arm (NOTES section 3) as a serial chain: revolute joints about base z,
+        links along x, the tip at ``L2`` beyond joint 2, gravity ``arm.gravity`` along ``-y``."""
+        if not isinstance(arm, Arm):
+            raise HybridError(f"arm must be a hybrid.Arm, got {type(arm).__name__}")
+        return _planar(cls, arm)
+
+    # -------------------------------------------------------------- properties
+
+    @property
+    def n(self) -> int:
+        """Number of joints."""
+        return self.chain.n
+
+    @property
+    def joint_names(self) -> tuple[str, ...]:
+        return tuple(j.name for j in self.chain.joints)
+
+    def parameter_names(self) -> tuple[str, ...]:
+        """Names of the ``robot`` array of the generated C."""
+        return rb.parameter_names(self.chain)
+
+    def as_array(self) -> np.ndarray:
+        """The ``robot`` array: per link ``m, c (3), I (6)``, then the viscosities, then gravity
+        (read-only)."""
+        return self._params
+
+    # ------------------------------------------------------------ model changes
+
+    def with_model_error(self, inertial: float = 0.1, viscous_compensation: float = 0.5) -> Robot:
+        """The controller's model of this arm: masses and inertias ``(1 + inertial)`` times the
+        true ones (centres of mass unchanged), viscosities ``viscous_compensation`` times."""
+        k = check_model_error(inertial, viscous_compensation)
+        links = tuple(LinkInertia(lk.mass * k, lk.com, tuple(tuple(v * k for v in r) for r in lk.inertia))
+                      for lk in self.links)
+        return dataclasses.replace(self, links=links, damping=tuple(d * viscous_compensation for d in self.damping))
+
+    def with_link(self, joint: str, *, mass: float | None = None, com=None, inertia=None,
+                  damping: float | None = None) -> Robot:
+        """This robot with the body moved by ``joint`` given new parameters (the others kept):
+        ``mass`` [kg], ``com`` (3) [m] and ``inertia`` (3x3 about the centre of mass) [kg m^2],
+        both in the joint's frame, ``damping`` its viscosity."""
+        if joint not in self.joint_names:
+            raise HybridError(f"no joint named {joint!r}; the joints are {', '.join(self.joint_names)}")
+        i = self.joint_names.index(joint)
+        old = self.links[i]
+        com = old.com if com is None else tuple(_vector(f"com of {joint}", com, (3,)))
+        inertia = old.inertia if inertia is None else tuple(map(tuple, _vector(f"inertia of {joint}", inertia, (3, 3))))
+        new = LinkInertia(old.mass if mass is None else mass, com, inertia)
+        links = self.links[:i] + (new,) + self.links[i + 1:]
+        damp = self.damping if damping is None else self.damping[:i] + (damping,) + self.damping[i + 1:]
+        return dataclasses.replace(self, links=links, damping=damp)
+
+    # ---------------------------------------------------------------- compiled
+
+    def inverse_kinematics(self, position, rotation=None, q0=None, tol: float = 1e-10) -> np.ndarray:
+        """Joint positions putting the tip frame at ``position`` [m] (and ``rotation``, a 3x3 matrix in
+        base axes, when given), by damped least squares from ``q0`` (default: mid-range of the limits).
+        Raises :class:`HybridError` when the pose is not reached (out of reach, or a poor ``q0``)."""
+        p_goal = _vector("position", position, (3,))
+        R_goal = None if rotation is None else _vector("rotation", rotation, (3, 3))
+        q = np.array(self._start_guess() if q0 is None else _vector("q0", q0, (self.n,)))
+        zeros = np.zeros(self.n)
+        for _ in range(200):
+            terms = robot_terms(self, q, zeros)
+            err = p_goal - terms["r"]
+            J = terms["J"] if R_goal is not None else terms["J"][:3]
+            if R_goal is not None:
+                R = terms["rotation"]
+                # orientation error: 1/2 sum of column cross products (small-angle rotation vector)
+                err = np.concatenate([err, 0.5 * sum(np.cross(R[:, i], R_goal[:, i]) for i in range(3))])
+            if np.abs(err).max() < tol:
+                return q
+            lam = 1e-4 + np.dot(err, err)
+            q = q + J.T @ np.linalg.solve(J @ J.T + lam * np.eye(len(err)), err)
+        raise HybridError(f"inverse kinematics did not reach the pose (position {np.round(p_goal, 4).tolist()} m, "
+                          f"error {np.abs(err).max():.2g}): it may be out of reach; move it or give q0 near a solution")
+
+    def _start_guess(self) -> np.ndarray:
+        lo, hi = np.maximum(self.limits.lower, -np.pi), np.minimum(self.limits.upper, np.pi)
+        return 0.5 * (lo + hi)
+
+    @property
+    def unit(self) -> Unit:
+        """The compiled kernels of this robot's structure (generated and compiled on first use, cached
+        by the structure: robots that differ only in their parameters share it)."""
+        return units.robot_unit(self.chain, self.name)
+
+
+@lru_cache(maxsize=256)
+def _planar(cls, arm: Arm) -> Robot:
+    """:meth:`Robot.planar`, once per arm (a robot is immutable: the runs of a sweep share it)."""
+    eye = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
+    joints = tuple(rb.Joint(f"joint{i + 1}", "revolute", eye, (L, 0.0, 0.0), (0.0, 0.0, 1.0))
+                   for i, L in enumerate((0.0, arm.L1)))
+    chain = rb.Chain(joints, eye, (arm.L2, 0.0, 0.0))
+    links = tuple(LinkInertia(m, (d, 0.0, 0.0), ((inertia, 0.0, 0.0), (0.0, inertia, 0.0), (0.0, 0.0, inertia)))
+                  for m, d, inertia in ((arm.m1, arm.d1, arm.I1), (arm.m2, arm.d2, arm.I2)))
+    bounds = [np.full(2, v) for v in (-math.inf, math.inf, math.inf, math.inf)]
+    for b in bounds:
+        b.setflags(write=False)  # the robot is shared by every caller with an equal arm
+    limits = JointLimits(*bounds)
+    return cls("planar_arm", chain, links, (arm.V1, arm.V2), (0.0, -arm.gravity, 0.0), limits)
+
+
+def _vector(name: str, v, shape) -> np.ndarray:
+    try:
+        arr = np.asarray(v, dtype=float)
+    except (TypeError, ValueError):
+        arr = np.array([])
+    if arr.shape != shape or not np.isfinite(arr).all():
+        raise HybridError(f"{name} must be finite numbers of shape {shape}, got {v!r:.80}")
+    return arr
+
+
+def _check_link(joint: str, link: LinkInertia) -> None:
+    if not isinstance(link, LinkInertia):
+        raise HybridError(f"link of joint '{joint}' must be a LinkInertia, got {type(link).__name__}")
+    _finite(f"link of joint '{joint}'", mass=link.mass)
+    if link.mass < 0:
+        raise HybridError(f"mass of the link moved by '{joint}' is {link.mass} kg; give a mass >= 0")
+    I = _vector(f"inertia of the link moved by '{joint}'", link.inertia, (3, 3))  # noqa: E741
+    _vector(f"centre of mass of the link moved by '{joint}'", link.com, (3,))
+    if np.abs(I - I.T).max() > 1e-12 * max(1.0, np.abs(I).max()):
+        raise HybridError(f"inertia of the link moved by '{joint}' is not symmetric; give a symmetric 3x3 tensor")
+    problem = inertia_problem(I)
+    if problem:
+        raise HybridError(f"inertia of the link moved by '{joint}' {problem}; give a rigid body's inertia")
+
+
+_ROBOT_KEYS = {"p": "r", "rotation": "rotation", "J": "J", "Jdqd": "Jdot_qdot", "B": "B", "n": "n"}
+
+
+@lru_cache(maxsize=256)
+def _fast_terms(robot: Robot):
+    """``(call, binding, output names)`` of ``robot_terms`` bound to ``robot``'s parameters (the
+    one-state entry point); robots are immutable, so a binding serves every call."""
+    fn = robot.unit.function("robot_terms")
+    return (*fn.fast_bind(2, robot.as_array()), tuple(n for n, _, _ in fn.outputs))
+
+
+def robot_terms(robot: Robot, q, qdot) -> dict[str, np.ndarray]:
+    """``r``, ``rotation``, ``J``, ``Jdot_qdot``, ``B``, ``n`` of ``robot`` (see :func:`hybrid.arm_terms`):
+    one state, or N states in one native call."""
+    fast, handle, names = _fast_terms(robot)
+    out = fast(handle, -1, q, qdot)
+    if out is not None:
+        return {_ROBOT_KEYS[n]: v for n, v in zip(names, out)}
+    terms = robot.unit.function("robot_terms")
+    call = terms.batch if is_batch(q) else terms
+    out = call(q, qdot, robot.as_array())
+    return {_ROBOT_KEYS[k]: v for k, v in out.items()}

@@ -1,0 +1,90 @@
+"""The arm's kinematic and dynamic terms and Khatib's operational space, from the generated C.
+
+For the paper's planar :class:`~hybrid.Arm` the committed closed-form unit computes them; for a
+:class:`~hybrid.Robot` its generated rigid-body unit (:mod:`hybrid.native.units`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from hybrid.errors import HybridError
+from hybrid.models.planar_arm import Arm, check_arm
+from hybrid.models.robot import Robot, robot_terms
+from hybrid.native.binding import one_state
+from hybrid.native.units import planar_unit
+from hybrid.validate import SINGULAR_TOL, check_singular_tol
+
+
+def arm_terms(arm: Arm | Robot, q, qdot, *, backend: str = "sympy") -> dict[str, np.ndarray]:
+    """Kinematic and dynamic terms of ``arm`` at one state, from the generated C.
+
+    For the planar :class:`Arm`: ``r`` [m], ``J`` (2x2), ``Jdot_qdot`` [m/s^2], ``B`` (2x2)
+    [kg m^2], ``n`` [N m]. For a :class:`Robot` with ``n`` joints (``q``, ``qdot`` of shape
+    ``(n,)``, or ``(N, n)`` for N states in one native call, every output then gaining a
+    leading N axis): ``r`` (3) [m] and ``rotation`` (3x3) of the tip frame in base axes, the
+    frame Jacobian ``J`` (6 x n, linear rows first, base axes), ``Jdot_qdot`` (6, the classical
+    acceleration at ``q'' = 0``), ``B`` (n x n), ``n`` (n): Coriolis/centrifugal, gravity, viscosity.
+    """
+    if isinstance(arm, Robot):
+        return robot_terms(arm, q, qdot)
+    check_arm(arm)
+    unit = planar_unit(backend)
+    q, qdot, p = one_state("q", q), one_state("qdot", qdot), arm.as_array()
+    kin = unit.function("arm_kinematics")(q, qdot, p)
+    dyn = unit.function("arm_dynamics")(q, qdot, p)
+    return {"r": kin["r"], "J": kin["J"], "Jdot_qdot": kin["Jdqd"], "B": dyn["B"], "n": dyn["n"]}
+
+
+def operational_space(arm: Arm | Robot, q, qdot, *, backend: str = "sympy", singular_tol: float = SINGULAR_TOL,
+                      coordinates: str = "twist"):
+    """Khatib's operational-space model.
+
+    Planar :class:`Arm`: ``(B_o, n_o)``, ``B_o(r)`` [kg] (2x2) and ``n_o(r, r')`` [N].
+    :class:`Robot` (6 or more joints): an :class:`OperationalSpace`. With
+    ``coordinates="twist"`` (default), ``B_o = Lambda = (J B^-1 J^T)^-1`` and ``n_o = Jbar^T n -
+    Lambda J' q'`` for the twist ``v = (p', w)``, base axes: ``Lambda v' + n_o = F + F_c``. With
+    ``coordinates="euler_zyx"``, the paper's ``r = (p, phi)`` with ZYX Euler angles:
+    ``B_o(r) = T^T Lambda T``, ``n_o(r, r') = T^T (Lambda T' r' + n_o,twist)``, ``T = diag(I, T_A)``
+    and ``T'``, so that ``B_o r'' + n_o = T^T (F + F_c)``.
+    """
+    if isinstance(arm, Robot):
+        return robot_operational_space(arm, q, qdot, singular_tol, coordinates)
+    check_arm(arm)
+    check_singular_tol("operational_space", singular_tol)
+    out = planar_unit(backend).function("operational_space")(
+        one_state("q", q), one_state("qdot", qdot), arm.as_array(), singular_tol=singular_tol)
+    return out["Bo"], out["no"]
+
+
+@dataclass(frozen=True)
+class OperationalSpace:
+    """A robot's operational-space model at one state (see :func:`operational_space`).
+
+    ``B_o`` (6x6) and ``n_o`` (6); in Euler coordinates also ``r = (p, alpha, beta, gamma)``,
+    ``rdot``, ``T`` and ``Tdot`` (6x6, ``v = T r'``).
+    """
+
+    coordinates: str
+    B_o: np.ndarray
+    n_o: np.ndarray
+    r: np.ndarray | None = None
+    rdot: np.ndarray | None = None
+    T: np.ndarray | None = None
+    Tdot: np.ndarray | None = None
+
+
+def robot_operational_space(robot: Robot, q, qdot, singular_tol: float, coordinates: str) -> OperationalSpace:
+    check_singular_tol("operational_space", singular_tol)
+    if coordinates not in ("twist", "euler_zyx"):
+        raise HybridError(f"coordinates = {coordinates!r}; give 'twist' or 'euler_zyx'")
+    if robot.n < 6:
+        raise HybridError(f"the 6-D operational space needs at least 6 joints; this arm has {robot.n}")
+    unit = robot.unit
+    if coordinates == "twist":
+        out = unit.function("operational_space")(q, qdot, robot.as_array(), singular_tol=singular_tol)
+        return OperationalSpace("twist", out["Lambda"], out["no"])
+    out = unit.function("operational_space_euler")(q, qdot, robot.as_array(), singular_tol=singular_tol)
+    return OperationalSpace("euler_zyx", out["Bo"], out["no"], out["r"], out["rd"], out["T"], out["Td"])

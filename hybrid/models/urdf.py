@@ -1,0 +1,360 @@
+"""Read a serial chain from a URDF file: structure, inertial parameters, limits, damping.
+
+The chain runs from the URDF's root link to the ``tip`` link. Fixed joints are merged;
+joints off the chain (and any joint named in ``locked``) are locked at 0 or at the given
+value, and the links they carry are merged into the link they hang from. Every problem is
+a :class:`~hybrid.errors.URDFError` naming the element, its line, and what to do.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import xml.parsers.expat
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from hybrid.errors import URDFError
+from hybrid.models.chain import Chain, Joint, rotation_rpy
+from hybrid.validate import inertia_problem
+
+MOVING = ("revolute", "continuous", "prismatic")
+#: the largest URDF file read (a description, not a mesh)
+MAX_URDF_BYTES = 64 * 2**20
+KNOWN = (*MOVING, "fixed", "floating", "planar")
+
+
+@dataclass
+class Node:
+    """An XML element with the line it starts on."""
+
+    tag: str
+    attrib: dict
+    line: int
+    children: list = field(default_factory=list)
+
+    def find(self, tag: str) -> Node | None:
+        return next((c for c in self.children if c.tag == tag), None)
+
+    def findall(self, tag: str) -> list[Node]:
+        return [c for c in self.children if c.tag == tag]
+
+
+def parse_xml(text: str, source: str) -> Node:
+    """A tree of :class:`Node` (expat, so every element knows its line)."""
+    parser = xml.parsers.expat.ParserCreate()
+    stack: list[Node] = [Node("#document", {}, 0)]
+
+    def start(tag, attrib):
+        node = Node(tag, dict(attrib), parser.CurrentLineNumber)
+        stack[-1].children.append(node)
+        stack.append(node)
+
+    parser.StartElementHandler = start
+    parser.EndElementHandler = lambda tag: stack.pop()
+    try:
+        parser.Parse(text, True)
+    except xml.parsers.expat.ExpatError as exc:
+        raise URDFError(f"{source}: not well-formed XML at line {exc.lineno}, column {exc.offset} "
+                        f"({xml.parsers.expat.ErrorString(exc.code)}); fix the file") from None
+    root = stack[0].children[0] if stack[0].children else None
+    if root is None or root.tag != "robot":
+        raise URDFError(f"{source}: the root element is <{root.tag if root else ''}>, not <robot>; "
+                        "give a URDF file")
+    return root
+
+
+@dataclass(frozen=True)
+class LinkInertia:
+    """Inertial parameters of one moving body in its joint's frame: mass [kg], centre of mass
+    [m], inertia about the centre of mass [kg m^2] (3x3, symmetric)."""
+
+    mass: float
+    com: tuple[float, float, float]
+    inertia: tuple[tuple[float, float, float], ...]
+
+    def as_array(self) -> np.ndarray:
+        I = np.asarray(self.inertia)  # noqa: E741
+        return np.array([self.mass, *self.com, I[0, 0], I[0, 1], I[0, 2], I[1, 1], I[1, 2], I[2, 2]])
+
+
+@dataclass(frozen=True)
+class JointLimits:
+    """Per moving joint: position bounds [rad or m] (infinite for continuous joints), velocity
+    [rad/s or m/s] and effort [N m or N] limits (infinite where the URDF gives none)."""
+
+    lower: np.ndarray
+    upper: np.ndarray
+    velocity: np.ndarray
+    effort: np.ndarray
+
+
+@dataclass(frozen=True)
+class ParsedChain:
+    name: str
+    chain: Chain
+    links: tuple[LinkInertia, ...]
+    damping: tuple[float, ...]
+    limits: JointLimits
+
+
+def _floats(node: Node, attr: str, n: int, default, where: str) -> np.ndarray:
+    raw = node.attrib.get(attr) if node is not None else None
+    if raw is None:
+        return np.array(default, dtype=float)
+    try:
+        vals = np.array([float(v) for v in raw.split()], dtype=float)
+    except ValueError:
+        vals = np.array([])
+    if vals.shape != (n,) or not np.isfinite(vals).all():
+        raise URDFError(f"{where}, <{node.tag}> at line {node.line}: {attr}=\"{raw}\" must be {n} finite numbers")
+    return vals
+
+
+def _scalar(node: Node | None, attr: str, default: float | None, where: str) -> float | None:
+    if node is None or attr not in node.attrib:
+        return default
+    raw = node.attrib[attr]
+    try:
+        v = float(raw)
+    except ValueError:
+        v = math.nan
+    if not math.isfinite(v):
+        raise URDFError(f"{where}, <{node.tag}> at line {node.line}: {attr}=\"{raw}\" must be a finite number")
+    return v
+
+
+def _transform(node: Node | None, where: str) -> np.ndarray:
+    """The 4x4 homogeneous transform of an ``<origin xyz rpy>`` element (identity if absent)."""
+    T = np.eye(4)
+    if node is not None:
+        T[:3, :3] = rotation_rpy(*_floats(node, "rpy", 3, (0, 0, 0), where))
+        T[:3, 3] = _floats(node, "xyz", 3, (0, 0, 0), where)
+    return T
+
+
+def _axis_rotation(axis: np.ndarray, angle: float) -> np.ndarray:
+    K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    return np.eye(3) + math.sin(angle) * K + (1 - math.cos(angle)) * K @ K
+
+
+@dataclass
+class _Body:
+    """Accumulates rigidly attached links in one frame: mass, first moment, inertia about the frame origin."""
+
+    m: float = 0.0
+    h: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    I_O: np.ndarray = field(default_factory=lambda: np.zeros((3, 3)))
+
+    def add(self, mass: float, com: np.ndarray, I_com: np.ndarray) -> None:
+        self.m += mass
+        self.h += mass * com
+        self.I_O += I_com + mass * (com @ com * np.eye(3) - np.outer(com, com))
+
+    def inertia(self) -> LinkInertia:
+        c = self.h / self.m if self.m > 0 else np.zeros(3)
+        I_c = self.I_O - self.m * (c @ c * np.eye(3) - np.outer(c, c))
+        I_c = 0.5 * (I_c + I_c.T)
+        return LinkInertia(float(self.m), tuple(map(float, c)), tuple(tuple(map(float, r)) for r in I_c))
+
+
+def _link_inertial(link: Node, source: str) -> tuple[float, np.ndarray, np.ndarray]:
+    """Mass, centre of mass and inertia about it, in the link's frame; checked physically valid."""
+    where = f"{source}: link '{link.attrib.get('name')}'"
+    inertial = link.find("inertial")
+    if inertial is None:
+        return 0.0, np.zeros(3), np.zeros((3, 3))
+    mass_node = inertial.find("mass")
+    m = _scalar(mass_node, "value", 0.0, where)
+    if m < 0:
+        raise URDFError(f"{where} (line {mass_node.line}): mass {m} kg is negative; give a mass >= 0")
+    T = _transform(inertial.find("origin"), where)
+    node = inertial.find("inertia")
+    keys = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
+    ixx, ixy, ixz, iyy, iyz, izz = (_scalar(node, k, 0.0, where) for k in keys)
+    I = np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])  # noqa: E741
+    line = node.line if node is not None else inertial.line
+    problem = inertia_problem(I)
+    if problem:
+        raise URDFError(f"{where} (line {line}): the inertia tensor {problem}; correct ixx..izz")
+    R = T[:3, :3]
+    return m, T[:3, 3], R @ I @ R.T
+
+
+def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
+    """The serial chain from the URDF at ``path`` to the link ``tip`` (see the module doc)."""
+    if not isinstance(path, (str, os.PathLike)):
+        raise URDFError(f"the URDF path must be a file name, got {type(path).__name__}")
+    try:
+        path = Path(path)
+        if not path.is_file():
+            raise URDFError(f"cannot read the URDF file {path} ({'a folder' if path.is_dir() else 'no such file'}"
+                            " or not a regular file); check the path")
+        if path.stat().st_size > MAX_URDF_BYTES:
+            raise URDFError(f"{path} is {path.stat().st_size / 2**20:.0f} MiB; a URDF of more than "
+                            f"{MAX_URDF_BYTES // 2**20} MiB is not read (meshes belong in their own files)")
+        text = path.read_text()
+    except (OSError, UnicodeDecodeError, ValueError) as exc:
+        if isinstance(exc, URDFError):
+            raise
+        raise URDFError(f"cannot read the URDF file {str(path)[:200]} ({exc.__class__.__name__}: "
+                        f"{getattr(exc, 'strerror', None) or exc}); check the path") from None
+    source = path.name
+    root = parse_xml(text, source)
+    links = {}
+    for link in root.findall("link"):
+        name = link.attrib.get("name")
+        if not name:
+            raise URDFError(f"{source} (line {link.line}): a <link> has no name")
+        if name in links:
+            raise URDFError(f"{source} (line {link.line}): link '{name}' is defined twice")
+        links[name] = link
+    joints, parent_of, children, ends = {}, {}, {}, {}
+    for j in root.findall("joint"):
+        name, kind = j.attrib.get("name"), j.attrib.get("type")
+        where = f"{source}: joint '{name}' (line {j.line})"
+        if not name:
+            raise URDFError(f"{source} (line {j.line}): a <joint> has no name")
+        if name in joints:
+            raise URDFError(f"{where}: defined twice")
+        if kind not in KNOWN:
+            raise URDFError(f"{where}: unknown type '{kind}'; URDF joints are {', '.join(KNOWN)}")
+        p, c = j.find("parent"), j.find("child")
+        pn, cn = (p.attrib.get("link") if p is not None else None), (c.attrib.get("link") if c is not None else None)
+        for role, ln in (("parent", pn), ("child", cn)):
+            if ln not in links:
+                raise URDFError(f"{where}: its {role} link '{ln}' is not defined in the file")
+        if cn in parent_of:
+            raise URDFError(f"{where}: link '{cn}' is already the child of joint '{parent_of[cn]}'; "
+                            "a closed kinematic chain is not a serial arm")
+        joints[name] = j
+        ends[name] = (pn, cn)
+        parent_of[cn] = name
+        children.setdefault(pn, []).append(name)
+    roots = [ln for ln in links if ln not in parent_of]
+    if len(roots) != 1:
+        raise URDFError(f"{source}: expected one root link, found {len(roots)} ({', '.join(roots[:5])}); "
+                        "the links must form one tree (a closed chain or a loose link breaks it)")
+    if tip not in links:
+        near = ", ".join(sorted(links)[:12])
+        raise URDFError(f"{source}: no link named '{tip}' for the tip; links are: {near}"
+                        + (" ..." if len(links) > 12 else ""))
+    locked = dict(locked or {})
+    for name, value in locked.items():
+        if name not in joints:
+            raise URDFError(f"locked names joint '{name}', which {source} does not define")
+        if not isinstance(value, (int, float, np.integer, np.floating)) or isinstance(value, bool) \
+                or not math.isfinite(value):
+            raise URDFError(f"locked['{name}'] = {value!r}; give a finite joint position (rad or m)")
+
+    # the chain: tip up to the root
+    path_joints = []
+    link = tip
+    while link in parent_of:
+        if parent_of[link] in path_joints:  # a loop of links that never reaches the root
+            raise URDFError(f"{source}: the links above the tip '{tip}' form a closed loop (through joint "
+                            f"'{parent_of[link]}'); a serial arm's chain must reach the root")
+        path_joints.append(parent_of[link])
+        link = ends[parent_of[link]][0]
+    path_joints.reverse()
+
+    def joint_transform(name: str, value: float) -> np.ndarray:
+        """Transform parent link -> child link of a joint held at ``value``."""
+        j = joints[name]
+        where = f"{source}: joint '{name}'"
+        T = _transform(j.find("origin"), where)
+        kind = j.attrib["type"]
+        if kind in MOVING and value:
+            axis = _unit_axis(j, where)
+            M = np.eye(4)
+            if kind == "prismatic":
+                M[:3, 3] = axis * value
+            else:
+                M[:3, :3] = _axis_rotation(axis, value)
+            T = T @ M
+        return T
+
+    def moving(name: str) -> bool:
+        return joints[name].attrib["type"] in MOVING and name not in locked
+
+    def merge_subtree(body: _Body, link_name: str, T: np.ndarray, skip: str | None) -> None:
+        """Add ``link_name`` (placed by ``T`` in the body frame) and every link rigidly hung from it."""
+        m, c, I_c = _link_inertial(links[link_name], source)
+        R = T[:3, :3]
+        body.add(m, R @ c + T[:3, 3], R @ I_c @ R.T)
+        for jn in children.get(link_name, []):
+            if jn == skip:  # the chain goes on through it
+                continue
+            # off the chain (any type, mimic or not): held at its locked value, 0 by default
+            merge_subtree(body, ends[jn][1], T @ joint_transform(jn, locked.get(jn, 0.0)), None)
+
+    # walk the chain, merging fixed and locked joints into the next origin
+    chain_joints, bodies, damping, lims = [], [], [], []
+    T_acc = np.eye(4)
+    body = _Body()  # the base body: its mass does not move, but keep the structure uniform
+    for idx, jn in enumerate(path_joints):
+        j = joints[jn]
+        kind = j.attrib["type"]
+        where = f"{source}: joint '{jn}'"
+        at = f"{where} (line {j.line})"
+        next_on_path = path_joints[idx + 1] if idx + 1 < len(path_joints) else None
+        if kind in ("floating", "planar") and jn not in locked:
+            raise URDFError(f"{at}: a {kind} joint lies on the chain from '{link}' to '{tip}'; "
+                            "only revolute, continuous and prismatic joints can be controlled "
+                            "(lock it with locked={'" + jn + "': 0.0}, or pick another tip)")
+        if j.find("mimic") is not None and moving(jn):
+            raise URDFError(f"{at}: a mimic joint lies on the chain; mimic joints are not supported "
+                            "on the controlled chain (lock it with locked={...}, or pick another tip)")
+        if not moving(jn):
+            T_acc = T_acc @ joint_transform(jn, locked.get(jn, 0.0))
+            merge_subtree(body, ends[jn][1], T_acc, next_on_path)
+            continue
+        if chain_joints:
+            bodies.append(body)
+        body = _Body()
+        origin = T_acc @ _transform(j.find("origin"), where)
+        axis = _unit_axis(j, where)
+        chain_joints.append(Joint(jn, "prismatic" if kind == "prismatic" else "revolute",
+                                  tuple(tuple(map(float, r)) for r in origin[:3, :3]),
+                                  tuple(map(float, origin[:3, 3])), tuple(map(float, axis))))
+        dyn = j.find("dynamics")
+        d = _scalar(dyn, "damping", 0.0, where)
+        if d < 0:
+            raise URDFError(f"{at}: damping {d} is negative; give a viscosity >= 0")
+        damping.append(d)
+        lim = j.find("limit")
+        lo = _scalar(lim, "lower", -math.inf, where) if kind != "continuous" else -math.inf
+        hi = _scalar(lim, "upper", math.inf, where) if kind != "continuous" else math.inf
+        if kind == "revolute" and lim is not None and "lower" not in lim.attrib and "upper" not in lim.attrib:
+            lo, hi = -math.inf, math.inf
+        lims.append((lo, hi, _scalar(lim, "velocity", math.inf, where), _scalar(lim, "effort", math.inf, where)))
+        T_acc = np.eye(4)
+        merge_subtree(body, ends[jn][1], T_acc, next_on_path)
+    if not chain_joints:
+        raise URDFError(f"{source}: no moving joint between the root '{link}' and the tip '{tip}'; "
+                        "pick a tip further along the arm")
+    bodies.append(body)
+    if sum(b.m for b in bodies) <= 0:
+        raise URDFError(f"{source}: every link from '{link}' to '{tip}' has zero mass; the arm needs "
+                        "<inertial> masses to have dynamics")
+    last = bodies[-1]
+    if last.m == 0 and not np.any(last.I_O):
+        raise URDFError(f"{source}: the links moved by the last joint '{chain_joints[-1].name}' have no mass "
+                        "and no inertia, so B(q) is singular; give them <inertial> data or pick an earlier tip")
+    chain = Chain(tuple(chain_joints), tuple(tuple(map(float, r)) for r in T_acc[:3, :3]),
+                  tuple(map(float, T_acc[:3, 3])))
+    lo, hi, vel, eff = (np.array(c, dtype=float) for c in zip(*lims))
+    return ParsedChain(root.attrib.get("name", path.stem), chain, tuple(b.inertia() for b in bodies),
+                       tuple(damping), JointLimits(lo, hi, vel, eff))
+
+
+def _unit_axis(j: Node, where: str) -> np.ndarray:
+    axis = _floats(j.find("axis"), "xyz", 3, (1.0, 0.0, 0.0), where)
+    axis = axis / max(float(np.max(np.abs(axis))), 1e-300)  # scaled first: huge components do not overflow
+    norm = float(np.linalg.norm(axis))
+    if norm < 1e-12:
+        raise URDFError(f"{where} (line {j.line}): the joint axis is zero; "
+                        "give a direction, e.g. <axis xyz=\"0 0 1\"/>")
+    return axis / norm

@@ -1,0 +1,150 @@
+"""Whole runs of the paper's and the 3-D experiment in compiled C, many at once as SIMD lanes.
+
+:func:`prepare` turns an experiment into one row of numbers for the generated closed loop
+(:mod:`codegen.closed_loop`), or None when part of its controller runs in Python (references
+given as code, a desired path) or it asks for the NumPy reference; :func:`run` runs prepared
+experiments, grouped by the loop they share, one native call per group. ``simulate`` and
+``sweep`` use it; the Python runner (:func:`hybrid.simulation.run`) is the reference it is tested
+against and the path that explains a run that stopped.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass
+from functools import cache
+
+import numpy as np
+
+from hybrid.errors import NativeBuildError
+from hybrid.native import units
+
+log = logging.getLogger("hybrid")
+
+
+@dataclass(frozen=True)
+class Loop:
+    """A compiled closed loop: its entry point, the blocks of a run's row and the metric names."""
+
+    function: object
+    ffi: object
+    key: tuple  # (plant, variant): what it was built from
+    lanes: int
+    blocks: tuple[tuple[str, int], ...]
+    metrics: tuple[str, ...]
+    nx: int
+    nq: int
+
+    def row(self, values: dict[str, np.ndarray]) -> np.ndarray:
+        """A run's row from its blocks by name (each of the manifest's size)."""
+        parts = [np.asarray(values[name], float).ravel() for name, _ in self.blocks]
+        wrong = [f"{name} has {len(p)} numbers, not {size}" for (name, size), p in zip(self.blocks, parts)
+                 if len(p) != size]
+        if wrong:
+            raise ValueError(f"a compiled loop's row: {'; '.join(wrong)}")
+        return np.concatenate(parts)
+
+
+@cache
+def _loop(plant: tuple, variant: tuple, lanes: int | None = None) -> Loop:
+    """The compiled loop of a plant (``("planar", surface kind)`` or ``("spatial", chain, name, surface
+    spec)``) and a controller step (:meth:`Controller.step_variant`, as sorted items); ``lanes=1``: the
+    build for one run at a time."""
+    unit = units.loop_unit(plant, dict(variant), lanes)
+    module, loop = unit.module, unit.manifest["closed_loop"]
+    return Loop(getattr(module.lib, loop["symbol"]), module.ffi, (plant, variant),
+                int(getattr(module.lib, loop["lanes_symbol"])()),
+                tuple((b["name"], b["size"]) for b in loop["blocks"]), tuple(loop["metrics"]), loop["nx"], loop["nq"])
+
+
+@cache
+def _available_loop(plant: tuple, variant: tuple, lanes: int | None = None) -> Loop | None:
+    """:func:`_loop`, or None (said once) when it cannot be built here: its C needs GCC's or Clang's
+    vector extensions, and without them every run takes the Python runner."""
+    try:
+        return _loop(plant, variant, lanes)
+    except NativeBuildError as exc:
+        log.warning("hybrid: the compiled closed loop cannot be built (%s); runs take the Python runner",
+                    str(exc).splitlines()[0])
+        return None
+
+
+@dataclass(frozen=True)
+class Prepared:
+    """An experiment ready for the compiled loop: which loop, its integration settings, its row."""
+
+    experiment: object
+    loop: Loop
+    settings: tuple
+    row: np.ndarray
+
+
+def prepare(exp, x0: np.ndarray | None = None) -> Prepared | None:
+    """``exp`` (the paper's experiment or a 3-D one) as a row of the compiled loop, after the checks
+    ``simulate`` makes of the settings (a refused experiment raises their HybridError; the record's
+    memory is ``simulate``'s to check: a sweep keeps none); None when it cannot run there. A given
+    start state ``x0`` is the caller's, checked (``simulate`` passes its own)."""
+    ctrl = exp.build_controller()
+    if not ctrl.runs_in_c:
+        return None
+    if x0 is None:
+        x0 = exp.initial_state()
+        exp.check_path()
+    plant, given = exp.plant_class.loop_key(exp), exp.plant_class.inputs(exp)
+    loop = _available_loop(plant, tuple(sorted(ctrl.step_variant().items())))
+    if loop is None:
+        return None
+    fs, vs = exp.force_reference, exp.speed_reference
+    values = {"x0": x0, "force_step": (fs.before, fs.after, fs.at), "speed_step": (vs.before, vs.after, vs.at),
+              **{f"plant.{k}": v for k, v in given.items()},
+              **{f"controller.{k}": v for k, v in ctrl.step_inputs().items()}}
+    settings = (exp.n_samples, exp.steps_per_sample, exp.step, exp.sample_time, exp.singular_tol)
+    return Prepared(exp, loop, settings, loop.row(values))
+
+
+@dataclass
+class Outcome:
+    """One compiled run: ``status`` (0 ok, else the C status code), the sample where it stopped
+    (-1), its metrics by name (NaN for a run that stopped), and with ``record`` its states and
+    torques per step (NaN after a stop)."""
+
+    status: int
+    failed_sample: int
+    metrics: dict
+    states: np.ndarray | None = None
+    taus: np.ndarray | None = None
+
+
+def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
+    """Run every prepared experiment; outcomes in the same order."""
+    groups: dict = {}
+    for i, p in enumerate(prepared):
+        groups.setdefault((id(p.loop), p.settings), []).append(i)
+    outcomes: list = [None] * len(prepared)
+    for members in groups.values():
+        first = prepared[members[0]]
+        loop, (n_samples, per_sample, h, sample_time, tol) = first.loop, first.settings
+        n = len(members)
+        if n == 1:  # one run alone: the one-lane build (same row, same arithmetic), built on first use
+            loop = _available_loop(*loop.key, lanes=1) or loop
+        runs = np.ascontiguousarray(np.stack([prepared[i].row for i in members]))
+        metrics = np.empty((n, len(loop.metrics)))
+        status, failed = np.empty(n, np.intc), np.empty(n, np.intc)
+        steps = n_samples * per_sample + 1
+        # every row is written: NaN from where a run stopped
+        states = np.empty((n, steps, loop.nx)) if record else None
+        taus = np.empty((n, steps, loop.nq)) if record else None
+        ffi = loop.ffi
+        loop.function(n, ffi.from_buffer("double[]", runs), n_samples, per_sample, h, sample_time, tol,
+                      ffi.from_buffer("double[]", metrics), ffi.from_buffer("int[]", status),
+                      ffi.from_buffer("int[]", failed),
+                      ffi.from_buffer("double[]", states) if record else ffi.NULL,
+                      ffi.from_buffer("double[]", taus) if record else ffi.NULL)
+        for j, i in enumerate(members):
+            m = dict(zip(loop.metrics, metrics[j].tolist() if status[j] == 0 else [math.nan] * len(loop.metrics)))
+            if status[j] == 0:
+                m["contact_losses"] = int(m["contact_losses"])
+            outcomes[i] = Outcome(int(status[j]), int(failed[j]), m, states[j] if record else None,
+                                  taus[j] if record else None)
+    return outcomes

@@ -1,0 +1,121 @@
+"""Metrics of a run (NOTES section 8), named with their units, from any time series."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from hybrid.errors import HybridError
+from hybrid.experiments.paper import Step
+
+
+def settling_time(t: np.ndarray, y: np.ndarray, target: float, band: float) -> float:
+    """Time from ``t[0]`` after which ``|y - target| <= band`` for good (NaN if never)."""
+    outside = np.flatnonzero(np.abs(y - target) > band)
+    if len(outside) == 0:
+        return 0.0
+    if outside[-1] == len(y) - 1:
+        return float("nan")
+    return float(t[outside[-1] + 1] - t[0])
+
+
+def _step_of(t: np.ndarray, ref: np.ndarray) -> Step:
+    """The first jump of a sampled reference, as a :class:`Step` (no jump: a constant)."""
+    jumps = np.flatnonzero(np.diff(ref) != 0)
+    if len(jumps) == 0:
+        return Step(float(ref[0]), float(ref[0]), float(t[0]))
+    return Step(float(ref[0]), float(ref[jumps[0] + 1]), float(t[jumps[0] + 1]))
+
+
+def _series(name: str, x, n: int) -> np.ndarray:
+    try:
+        arr = np.asarray(x, dtype=float)
+    except (TypeError, ValueError):
+        raise HybridError(f"metrics: {name} must be numbers, one per time sample") from None
+    if arr.ndim != 1 or len(arr) != n:
+        raise HybridError(f"metrics: {name} must have one value per time sample ({n}), got shape {arr.shape}")
+    return arr
+
+
+def metrics(t, force_normal, velocity_tangential, force_reference, speed_reference, *, force_step=None,
+            speed_step=None, penetration=None, contact_force=None, tau=None) -> dict:
+    """NOTES section 8 metrics of one run from its time series (one value per sample of ``t`` [s]).
+
+    Parameters
+    ----------
+    force_normal, velocity_tangential : the measured normal force [N] and tangential speed [m/s].
+    force_reference, speed_reference : their references at the same instants.
+    force_step, speed_step : the references' :class:`Step` (default: read from the series' first jump).
+    penetration : the sensor tip's penetration [m]; contact_force : the surface's normal force [N]
+        (contact losses are its drops to 0); tau : joint torques, one row per sample [N m or N].
+
+    Returns every metric, always: one after a step that falls outside the run, or whose series was
+    not given, is NaN. Force overshoot and 2 % settling after the force step, speed drop after it,
+    force deviation and speed overshoot after the speed step, steady-state errors (last 0.2 s), RMS
+    errors, penetration, contact losses and time out of contact, peak torque per joint.
+    """
+    try:
+        t = np.asarray(t, dtype=float)
+    except (TypeError, ValueError):
+        t = np.zeros(0)
+    if t.ndim != 1 or len(t) < 2 or not np.all(np.diff(t) > 0):
+        raise HybridError("metrics: t must be at least two increasing sample times [s]")
+    F, v, Fd, vd = (_series(name, x, len(t)) for name, x in (
+        ("force_normal", force_normal), ("velocity_tangential", velocity_tangential),
+        ("force_reference", force_reference), ("speed_reference", speed_reference)))
+    for name, step in (("force_step", force_step), ("speed_step", speed_step)):
+        if step is not None and not isinstance(step, Step):
+            raise HybridError(f"metrics: {name} = {step!r:.40}; give a hybrid.Step(before, after, at) or None")
+    fs = force_step if force_step is not None else _step_of(t, Fd)
+    vs = speed_step if speed_step is not None else _step_of(t, vd)
+    end = t[-1]
+    # the window after the force step ends at the speed step (the next disturbance), if later
+    f_end = vs.at if vs.at > fs.at else end
+    after_f = (t >= fs.at) & (t < f_end)
+    after_v = t >= vs.at
+    last = t >= end - 0.2
+    nan = float("nan")
+    m = dict.fromkeys(("force_overshoot_N", "force_overshoot_percent", "force_settling_time_2pct_s",
+                       "speed_drop_after_force_step_m_per_s", "force_deviation_after_speed_step_N",
+                       "speed_overshoot_after_speed_step_m_per_s"), nan)
+    if after_f.any() and fs.after != fs.before:
+        step = fs.after - fs.before
+        peak = F[after_f].max() if step >= 0 else F[after_f].min()
+        m["force_overshoot_N"] = float((peak - fs.after) * np.sign(step))
+        m["force_overshoot_percent"] = float(100 * m["force_overshoot_N"] / abs(step))
+        # 2 % of the final value (of the step's size when the force steps to 0)
+        band = 0.02 * (abs(fs.after) or abs(step))
+        m["force_settling_time_2pct_s"] = settling_time(t[after_f], F[after_f], fs.after, band)
+        m["speed_drop_after_force_step_m_per_s"] = float(np.max(vd[after_f] - v[after_f]))
+    if after_v.any() and vs.after != vs.before:
+        m["force_deviation_after_speed_step_N"] = float(np.max(np.abs(F[after_v] - Fd[after_v])))
+        m["speed_overshoot_after_speed_step_m_per_s"] = float(np.max(v[after_v]) - vs.after)
+    m["steady_state_force_error_N"] = float(np.mean(Fd[last] - F[last]))
+    m["steady_state_speed_error_m_per_s"] = float(np.mean(vd[last] - v[last]))
+    m["rms_force_error_N"] = float(np.sqrt(np.mean((Fd - F) ** 2)))
+    m["rms_speed_error_m_per_s"] = float(np.sqrt(np.mean((vd - v) ** 2)))
+    m["max_penetration_m"] = nan if penetration is None else float(_series("penetration", penetration, len(t)).max())
+    m["contact_losses"] = m["time_out_of_contact_s"] = nan
+    if contact_force is not None:
+        in_contact = _series("contact_force", contact_force, len(t)) > 0
+        m["contact_losses"] = int(np.count_nonzero(in_contact[:-1] & ~in_contact[1:]))
+        m["time_out_of_contact_s"] = float(np.sum(np.diff(t)[~in_contact[1:]]))
+    if tau is not None:
+        try:
+            torques = np.asarray(tau, dtype=float)
+        except (TypeError, ValueError):
+            torques = np.zeros(0)
+        if torques.ndim not in (1, 2) or len(torques) != len(t):
+            raise HybridError(f"metrics: tau must have one row of joint torques per time sample ({len(t)}), "
+                              f"got shape {torques.shape}")
+        torques = torques.reshape(len(t), -1)
+        for j in range(torques.shape[1]):
+            m[f"peak_torque_joint{j + 1}_Nm"] = float(np.nanmax(np.abs(torques[:, j])))
+    return m
+
+
+def run_metrics(res) -> dict:
+    """The metrics of a :class:`~hybrid.SimulationResult`, with its experiment's reference steps."""
+    exp = res.experiment
+    return metrics(res.t, res.force_normal, res.velocity_tangential, res.force_reference, res.speed_reference,
+                   force_step=exp.force_reference, speed_step=exp.speed_reference, penetration=res.penetration,
+                   contact_force=res.contact_force, tau=res.tau)

@@ -1,0 +1,144 @@
+"""The result of a run: time series, units, metrics; saved and loaded atomically."""
+
+from __future__ import annotations
+
+import json
+import zipfile
+import zlib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from hybrid import files
+from hybrid.errors import HybridError
+from hybrid.experiments.paper import Experiment
+from hybrid.plants.compiled import planar_record
+
+
+@dataclass
+class SimulationResult:
+    """Time series of one run (one row per integration step, ``t`` from 0) and its metrics.
+
+    Units: ``t`` [s], ``q`` [rad], ``qdot`` [rad/s], ``tau`` [N m] (held per sample), forces [N],
+    speeds [m/s], lengths [m]. Task quantities are in the frame ``R(r)`` at the arm tip.
+    """
+
+    experiment: Experiment
+    t: np.ndarray
+    state: np.ndarray
+    tau: np.ndarray
+    outputs: np.ndarray
+    force_reference: np.ndarray
+    speed_reference: np.ndarray
+    metrics: dict = field(default_factory=dict)
+    #: the plant's record: names and units of the state and output columns, number of joints
+    record: dict = field(default_factory=planar_record)
+
+    @property
+    def UNITS(self) -> dict:  # noqa: N802 (a table, as before)
+        rec = self.record
+        return {"t": "s", "state": ", ".join(rec["state_units"]), "tau": "N m",
+                "force_reference": "N", "speed_reference": "m/s", "outputs": ", ".join(rec["output_units"])}
+
+    @property
+    def q(self):
+        return self.state[:, 0:self.record["nq"]]
+
+    @property
+    def qdot(self):
+        return self.state[:, self.record["nq"]:2 * self.record["nq"]]
+
+    def output(self, name: str) -> np.ndarray:
+        """A column of the plant output record by name (``result.record["outputs"]``)."""
+        try:
+            return self.outputs[:, self.record["outputs"].index(name)]
+        except ValueError:
+            names = ", ".join(self.record["outputs"])
+            raise HybridError(f"the plant records no {name!r}; it records {names}") from None
+
+    @property
+    def force_normal(self):
+        """Normal force measured by the sensor, ``(R(r) F_c)_n`` [N]."""
+        return self.output("Fc_n")
+
+    @property
+    def force_tangential(self):
+        return self.output("Fc_t")
+
+    @property
+    def velocity_tangential(self):
+        """Tangential speed of the arm tip, ``(R(r) r')_t`` [m/s]."""
+        return self.output("v_t")
+
+    @property
+    def velocity_normal(self):
+        return self.output("v_n")
+
+    @property
+    def penetration(self):
+        return self.output("penetration")
+
+    @property
+    def contact_force(self):
+        return self.output("N")
+
+    def save(self, path: str | Path, overwrite: bool = False) -> Path:
+        """Write an ``.npz`` with every array, the units and the experiment's settings; returns the
+        path written (``.npz`` is added when missing). Atomic; refuses an existing file unless
+        ``overwrite``."""
+        path = files.output_path(path)
+        if path.suffix != ".npz":
+            path = path.with_name(path.name + ".npz")
+
+        def write(tmp: Path) -> None:
+            with open(tmp, "wb") as f:  # a file object: NumPy adds no suffix to it
+                np.savez_compressed(
+                    f, t=self.t, state=self.state, tau=self.tau, outputs=self.outputs,
+                    force_reference=self.force_reference, speed_reference=self.speed_reference,
+                    output_names=np.array(self.record["outputs"]), units=json.dumps(self.UNITS),
+                    experiment=json.dumps(self.experiment.to_dict()), metrics=json.dumps(self.metrics))
+
+        return files.write_with(path, write, overwrite)
+
+    @classmethod
+    def load(cls, path: str | Path) -> SimulationResult:
+        """A result written by :meth:`save`; a missing, truncated or foreign file is a HybridError."""
+        try:
+            with np.load(path, allow_pickle=False) as z:
+                arrays = {k: z[k] for k in ("t", "state", "tau", "outputs", "force_reference", "speed_reference")}
+                settings = json.loads(str(z["experiment"]))
+                if isinstance(settings, dict) and settings.get("kind") == "tracing":
+                    raise HybridError(f"{path} holds a 3-D run: its arrays load with numpy.load (names in "
+                                      "'output_names'); SimulationResult.load rebuilds paper runs only")
+                experiment = Experiment.from_dict(settings)
+                metrics = json.loads(str(z["metrics"]))
+            n = len(arrays["t"])
+            record = planar_record()
+            shapes = {"t": (n,), "state": (n, len(record["state"])), "tau": (n, record["nq"]),
+                      "outputs": (n, len(record["outputs"])), "force_reference": (n,), "speed_reference": (n,)}
+            wrong = [k for k, shape in shapes.items() if arrays[k].shape != shape]
+            if wrong or n == 0 or not np.isfinite(arrays["t"]).all() or not isinstance(metrics, dict):
+                raise ValueError(f"arrays {', '.join(wrong) or 't'} do not have the shapes of a run")
+            return cls(experiment, arrays["t"], arrays["state"], arrays["tau"], arrays["outputs"],
+                       arrays["force_reference"], arrays["speed_reference"], metrics)
+        except (OSError, KeyError, ValueError, EOFError, zipfile.BadZipFile, zlib.error, TypeError,
+                AttributeError) as exc:
+            why = getattr(exc, "strerror", None) or f"{type(exc).__name__}: {exc}"
+            raise HybridError(f"{path} is not a readable saved hybrid result ({why:.120}); "
+                              "save it again with SimulationResult.save") from None
+
+    def save_csv(self, path: str | Path, overwrite: bool = False) -> Path:
+        """Write the time series as CSV, units in the header (atomic; refuses an existing file
+        unless ``overwrite``)."""
+        path = files.output_path(path)
+        joint_units = self.record["state_units"][:self.record["nq"]]
+        cols = {"t_s": self.t, **{f"q{j + 1}_{u}": self.q[:, j] for j, u in enumerate(joint_units)},
+                **{f"tau{j + 1}_{'Nm' if u == 'rad' else 'N'}": self.tau[:, j] for j, u in enumerate(joint_units)},
+                "force_reference_N": self.force_reference, "speed_reference_m_per_s": self.speed_reference}
+        units = dict(zip(self.record["outputs"], self.record["output_units"]))
+        cols.update({f"{n}_{units[n].replace('/', '_per_').replace(' ', '')}": self.output(n)
+                     for n in self.record["outputs"]})
+        return files.write_with(path, lambda tmp: np.savetxt(
+            tmp, np.column_stack(list(cols.values())), delimiter=",", header=",".join(cols), comments="",
+            fmt="%.10g"), overwrite)

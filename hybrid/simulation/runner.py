@@ -1,0 +1,170 @@
+"""The runner: plant integrated by fixed-step RK4 between samples, controller under zero-order hold.
+
+A run the compiled loop takes (:mod:`hybrid.closed_loop`: references that are numbers or
+steps, the controller's frame at the contact point) runs there whole, as a sweep runs it. The
+others run here: the loop over control samples in Python, everything inside a sample (the
+plant's RK4 steps, one controller step) compiled C; a compiled run that stopped is run here
+again, for the account of where and why. ``Experiment.backend == "numpy"`` runs the plain
+NumPy reference instead (:mod:`hybrid.reference`, for tests and benchmarks). Runs are
+deterministic.
+"""
+
+from __future__ import annotations
+
+import os
+
+import numpy as np
+
+from hybrid.control.loops import model_error_note
+from hybrid.errors import HybridError, NonFiniteError
+from hybrid.experiments.settings import RunSettings
+from hybrid.plants.compiled import planar_record
+from hybrid.simulation import closed_loop
+from hybrid.simulation.metrics import run_metrics
+from hybrid.simulation.results import SimulationResult
+
+
+class SimulationError(HybridError):
+    """The simulation cannot go on (singular pose, non-finite state); says when and where.
+
+    ``time`` [s] is when it stopped; ``partial`` holds the run up to then (a
+    :class:`SimulationResult` without metrics), to see how it got there.
+    """
+
+    def __init__(self, message: str, time: float | None = None, partial: SimulationResult | None = None):
+        super().__init__(message)
+        self.time, self.partial = time, partial
+
+
+# -------------------------------------------------------------- initial state
+
+
+#: the most memory a run's record may take, as a fraction of the machine's
+MEMORY_FRACTION = 0.5
+
+
+def check_memory(exp, record: dict | None = None) -> None:
+    """Refuse, before any work, a run whose record would not fit in memory (with the numbers)."""
+    record = record or planar_record()
+    steps = exp.steps_per_sample * exp.n_samples + 1
+    per_step = 8 * (len(record["state"]) + record["nq"] + len(record["outputs"]) + 3)  # doubles kept per RK4 step
+    need = steps * per_step
+    try:
+        total = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    except (ValueError, OSError, AttributeError):
+        return
+    if need > MEMORY_FRACTION * total:
+        raise HybridError(f"duration = {exp.duration} s at step = {exp.step} s is {steps:,} RK4 steps, whose record "
+                          f"needs {need / 2**30:.1f} GiB; this machine has {total / 2**30:.1f} GiB: shorten "
+                          "duration or lengthen step")
+
+
+# ---------------------------------------------------------------------- runner
+
+
+def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> SimulationResult:
+    """Run ``exp`` (the paper's :class:`Experiment` or a :class:`~hybrid.tracing.TracingExperiment`):
+    controller sampled every ``sample_time``, plant RK4 every ``step``. ``plant="mujoco"`` runs the
+    paper's experiment with MuJoCo as the plant (:mod:`hybrid.mujoco_plant`). With ``compiled=False``
+    the Python runner runs it even where the compiled loop could (the reference that loop is tested
+    against; equal within rounding)."""
+    if plant not in ("generated", "mujoco"):
+        raise HybridError(f"plant = {plant!r}; give 'generated' (the compiled plant) or 'mujoco'")
+    if not isinstance(exp, RunSettings):
+        raise HybridError(f"simulate() takes an experiment (see hybrid.paper_experiment() and "
+                          f"hybrid.tracing_experiment()), got {type(exp).__name__}")
+    model = exp.plant() if plant == "generated" else exp.mujoco_plant()
+    check_memory(exp, model.record)  # before the path check, whose arrays grow with the run too
+    x0 = exp.initial_state()
+    exp.check_path()
+    if plant == "mujoco":
+        return run(exp, model, exp.build_controller(), x0)
+    return _compiled_or_run(exp, model, x0, compiled)
+
+
+def _compiled_or_run(exp, plant, x0: np.ndarray, compiled: bool = True) -> SimulationResult:
+    """The whole run in compiled C when the loop takes it (as a sweep runs it), else, and for the
+    account of a run that stopped there, the Python runner (the record's memory checked already)."""
+    prepared = closed_loop.prepare(exp, x0) if compiled else None
+    if prepared is not None:
+        done = closed_loop.run([prepared], record=True)[0]
+        if done.status == 0:
+            return _result(exp, plant, done.states, done.taus, done.metrics)
+    return run(exp, plant, exp.build_controller(), x0)
+
+
+def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
+    """Run ``exp`` from the state ``x0`` with ``plant`` (see :mod:`hybrid.plants`) and
+    ``tau = controller(t, q, qdot, Fc)`` under zero-order hold."""
+    check_memory(exp, plant.record)
+    x = np.array(x0, dtype=float)
+    m, n_samples = exp.steps_per_sample, exp.n_samples
+    total = m * n_samples
+    nq = plant.nq
+    states = np.empty((total + 1, len(x)))
+    taus = np.full((total + 1, nq), np.nan)  # NaN marks "no torque computed" in a partial run
+    states[0] = x
+    for k in range(n_samples):
+        t = k * exp.sample_time
+        q, qdot = x[0:nq].copy(), x[nq:2 * nq].copy()
+        # the sensor's reading: its spring and damper between arm tip and sensor tip
+        Fc = plant.sensor_wrench(x)
+        try:
+            tau = np.ascontiguousarray(controller(t, q, qdot, Fc), dtype=float)
+            if not np.isfinite(tau).all():
+                raise NonFiniteError(f"the controller's torque is {tau.tolist()} N m")
+        except HybridError as exc:
+            raise SimulationError(
+                f"at t = {t:.4f} s (q = {np.round(q, 5).tolist()} rad, qdot = {np.round(qdot, 4).tolist()} "
+                f"rad/s): {exc}", t, _result(exp, plant, states[:1 + k * m], taus[:1 + k * m], False)) from exc
+        if k == 0:
+            taus[0] = tau  # the first sample's torque acts from t = 0
+        rows = slice(1 + k * m, 1 + (k + 1) * m)
+        done = plant.advance(x, tau, m, states[rows])
+        taus[rows] = tau
+        if done < m:
+            last = 1 + k * m + done
+            raise _divergence(_result(exp, plant, states[:last], taus[:last], False), plant, t, q, qdot, tau, x)
+    return _result(exp, plant, states, taus, True)
+
+
+def _divergence(partial: SimulationResult, plant, t: float, q, qdot, tau, x) -> SimulationError:
+    """The error for a plant state gone non-finite in the sample from ``t`` (state ``q, qdot`` then,
+    torque ``tau``, last finite state ``x``): when, where, and the likely cause."""
+    exp = partial.experiment
+    t_fail = partial.t[-1] + exp.step
+    cond = plant.conditioning(q)
+    causes = [c.lstrip("; ") for c in (model_error_note(exp), _closest_singularity(partial, plant)) if c]
+    causes = causes or ["reduce step or check gains and parameters"]
+    return SimulationError(
+        f"the plant state became NaN or infinite at t = {t_fail:.5f} s: {causes[0]}\n"
+        + "".join(f"  also: {c}\n" for c in causes[1:]) +
+        f"  in the control sample from t = {t:.4f} s: q = {np.round(q, 5).tolist()} rad, qdot = "
+        f"{np.round(qdot, 4).tolist()} rad/s, {plant.conditioning_name} = {cond:.3g}, "
+        f"tau = {np.round(tau, 3).tolist()} N m\n"
+        f"  last finite state: q = {np.array2string(x[:len(q)], precision=4)} rad, qdot = "
+        f"{np.array2string(x[len(q):2 * len(q)], precision=4)} rad/s",
+        t_fail, partial)
+
+
+def _closest_singularity(res: SimulationResult, plant, near: float = 0.1) -> str:
+    """Where a failed run passed closest to a singularity, when that was close (a clause of the message)."""
+    rows = range(0, len(res.t), 5)
+    cond = plant.conditioning(res.q[rows.start::rows.step])
+    i = int(np.argmin(cond))
+    if cond[i] >= near:
+        return ""
+    return (f"; the arm passed near a singularity ({plant.conditioning_name} = {cond[i]:.2g} at "
+            f"t = {res.t[rows[i]]:.4f} s): raise singular_tol to stop there, or keep the path away from full extension")
+
+
+def _result(exp, plant, states: np.ndarray, taus: np.ndarray, metrics: bool | dict) -> SimulationResult:
+    """The result of a run; ``metrics``: computed from the series (True), none (False), or as given."""
+    t = np.arange(len(states)) * exp.step
+    res = SimulationResult(exp, t, states, taus, plant.outputs(states), exp.force_reference.sampled(t),
+                           exp.speed_reference.sampled(t), record=plant.record)
+    if metrics is True:
+        res.metrics = run_metrics(res)
+    elif metrics:
+        res.metrics = dict(metrics)
+    return res
