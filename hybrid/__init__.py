@@ -22,6 +22,8 @@ from __future__ import annotations
 
 from hybrid.control.controller import ContactLoss, Controller, Measurement, Reference
 from hybrid.control.law import DecouplingLaw, decoupling_law, task_frame
+from hybrid.control.loops import Gains
+from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES, Khatib, Scheme, TaskDecoupling
 from hybrid.control.spatial_law import SpatialDecouplingLaw
 from hybrid.errors import (
@@ -32,12 +34,15 @@ from hybrid.errors import (
     TaskFrameError,
     URDFError,
 )
-from hybrid.experiments.paper import Contact, Experiment, Gains, Sensor, Step, paper_experiment
-from hybrid.experiments.tracing import TracingExperiment, tracing_experiment, ur5
+from hybrid.experiments.experiment import Experiment
+from hybrid.experiments.paper import paper_experiment
+from hybrid.experiments.tracing import tracing_experiment, ur5
+from hybrid.geometry.paths import CirclePath, LinePath
 from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere
 from hybrid.models.planar_arm import Arm, paper_arm
 from hybrid.models.robot import Robot
 from hybrid.models.terms import OperationalSpace, arm_terms, operational_space
+from hybrid.plants.contact import Contact, Sensor
 from hybrid.simulation.metrics import metrics
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.runner import SimulationError, simulate
@@ -61,10 +66,10 @@ def __dir__() -> list[str]:
 
 
 __all__ = [
-    "Arm", "Circle", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw", "Experiment", "Gains",
-    "HybridError", "ImplicitSurface", "Khatib", "Measurement", "NativeBuildError", "NonFiniteError",
-    "OperationalSpace", "Plane", "Reference", "Robot", "SCHEMES", "Scheme", "Sensor", "SimulationError",
-    "SimulationResult", "SingularConfigurationError", "SpatialDecouplingLaw", "Sphere", "Step", "TaskDecoupling",
-    "TaskFrameError", "TracingExperiment", "URDFError", "arm_terms", "decoupling_law", "metrics", "operational_space",
+    "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw", "Experiment",
+    "Gains", "HybridError", "ImplicitSurface", "Khatib", "LinePath", "Measurement", "NativeBuildError",
+    "NonFiniteError", "OperationalSpace", "Plane", "Reference", "Robot", "SCHEMES", "Scheme", "Sensor",
+    "SimulationError", "SimulationResult", "SingularConfigurationError", "SpatialDecouplingLaw", "Sphere", "Step",
+    "TaskDecoupling", "TaskFrameError", "URDFError", "arm_terms", "decoupling_law", "metrics", "operational_space",
     "paper_arm", "paper_experiment", "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",
 ]

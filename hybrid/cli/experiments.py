@@ -9,7 +9,8 @@ from pathlib import Path
 
 from hybrid import files
 from hybrid.errors import HybridError
-from hybrid.experiments.paper import BACKENDS, paper_experiment
+from hybrid.experiments.experiment import BACKENDS
+from hybrid.experiments.paper import paper_experiment
 from hybrid.experiments.tracing import tracing_experiment
 from hybrid.simulation.runner import simulate
 

@@ -128,7 +128,7 @@ class Controller:
                  position_error: bool = False, integral_limit: float | None = None,
                  contact_loss: ContactLoss | None = None, singular_tol: float = 1e-3):
         if isinstance(robot, Arm):
-            robot, axes = Robot.planar(robot), "planar" if axes is None else axes
+            robot = Robot.planar(robot)
         if not isinstance(robot, Robot):
             raise HybridError(f"robot must be a hybrid.Robot or hybrid.Arm, got {type(robot).__name__}")
         for name, value in (("integral", integral), ("curvature", curvature), ("position_error", position_error)):

@@ -131,9 +131,9 @@ def setting_aliases() -> dict[str, str]:
     return {**REFERENCE_ALIASES, **{f.name: f"gains.{f.name}" for f in fields(Gains)}}
 
 
-def with_overrides(cls, maker: str, overrides: dict):
-    """``cls(**overrides)`` where the gains may also be given one by one (``KPv=50``) and ``F_d`` /
-    ``v_d`` name the force / speed references; an unknown name lists the known ones."""
+def with_overrides(cls, maker: str, overrides: dict, defaults: dict | None = None):
+    """``cls(**defaults, **overrides)`` where the gains may also be given one by one (``KPv=50``) and
+    ``F_d`` / ``v_d`` name the force / speed references; an unknown name lists the known ones."""
     names = {f.name for f in fields(cls)}
     gain_names = {f.name for f in fields(Gains)}
     aliases = REFERENCE_ALIASES
@@ -150,4 +150,4 @@ def with_overrides(cls, maker: str, overrides: dict):
         if not isinstance(base, Gains):
             raise HybridError(f"gains = {base!r:.60}; give a hybrid.Gains(...) to combine with {', '.join(gains)}")
         overrides["gains"] = replace(base, **gains)
-    return cls(**overrides)
+    return cls(**{**(defaults or {}), **overrides})

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from hybrid.errors import HybridError
+from hybrid.geometry.paths import CirclePath, LinePath
 from hybrid.validate import _finite, _point, unit_vector
 
 #: the parameters of the built-in surfaces, in the order of the generated C's ``surface`` array
@@ -43,11 +44,20 @@ class SurfaceSpec:
 
 class Surface:
     """The base of every surface: ``kind``, ``dim`` (2 for the planar arm's, 3 in space),
-    ``as_array()`` (the generated code's run-time parameters), ``normal_at(p)`` and ``lift()`` (the
-    3-D surface; a planar one is the cross-section of its lift at ``z = 0``)."""
+    ``as_array()`` (the generated code's run-time parameters), ``normal_at(p)``, ``lift()`` (the
+    3-D surface; a planar one is the cross-section of its lift at ``z = 0``), ``project(p)`` (the
+    nearest surface point, where it has a closed form, else None) and ``path()`` (where a run
+    goes on it unless told)."""
 
     kind: str
     dim: int
+
+    def project(self, p) -> np.ndarray | None:
+        return None
+
+    def path(self):
+        raise HybridError(f"a {type(self).__name__} has no path of its own: give the experiment a path "
+                          "(hybrid.CirclePath or hybrid.LinePath) or a start_point")
 
 
 def _unit_normal(g: np.ndarray, where: str) -> np.ndarray:
@@ -98,20 +108,13 @@ class Circle(Surface):
             raise HybridError(f"the point {p} is the circle's centre, where its normal is undefined")
         return d / norm
 
-    def arc_coordinate(self, p) -> float:
-        d = np.asarray(_point("Circle.arc_coordinate", "p", p)) - self.center
-        return self.radius * math.atan2(d[1], d[0])
+    def path(self) -> CirclePath:
+        """The circle itself, counter-clockwise (the paper's path; arc length ``radius * angle``)."""
+        return CirclePath(self.center, self.radius)
 
-    def at(self, s: float) -> np.ndarray:
-        """The surface point at arc coordinate ``s`` [m]."""
-        _finite("Circle.at", s=s)
-        ang = s / self.radius
-        return np.array(self.center) + self.radius * np.array([math.cos(ang), math.sin(ang)])
-
-    def points_at(self, s: np.ndarray) -> np.ndarray:
-        """The surface points at the arc coordinates ``s`` [m] (one row each)."""
-        ang = np.asarray(s, float) / self.radius
-        return np.array(self.center) + self.radius * np.column_stack([np.cos(ang), np.sin(ang)])
+    def project(self, p) -> np.ndarray:
+        """The surface point nearest ``p`` (radially)."""
+        return self.path().point_at(self.path().arc_of(p))
 
 
 @dataclass(frozen=True)
@@ -158,25 +161,18 @@ class Plane(Surface):
         if self.dim != 3:
             raise HybridError("this Plane is planar (2 coordinates); give 3-D point and normal, or use .lift()")
 
-    def _planar(self) -> None:
+    def path(self) -> LinePath:
+        """A planar line's own path: along the tangent ``t = (-n_y, n_x)``, arc length 0 at ``point``."""
         if self.dim != 2:
-            raise HybridError("arc coordinates are defined for a planar Plane (2 coordinates)")
+            raise HybridError("a plane in space has no path of its own: give the experiment a path (a "
+                              "hybrid.LinePath or hybrid.CirclePath on the plane) or a start_point")
+        return LinePath(self.point, (-self.normal[1], self.normal[0]))
 
-    def _tangent(self) -> np.ndarray:
-        self._planar()
-        return np.array([-self.normal[1], self.normal[0]])
-
-    def arc_coordinate(self, p) -> float:
-        return float((np.asarray(_point("Plane.arc_coordinate", "p", p)) - self.point) @ self._tangent())
-
-    def at(self, s: float) -> np.ndarray:
-        """The surface point at arc coordinate ``s`` [m]."""
-        _finite("Plane.at", s=s)
-        return np.array(self.point) + s * self._tangent()
-
-    def points_at(self, s: np.ndarray) -> np.ndarray:
-        """The surface points at the arc coordinates ``s`` [m] (one row each)."""
-        return np.array(self.point) + np.outer(np.asarray(s, float), self._tangent())
+    def project(self, p) -> np.ndarray:
+        """The surface point nearest ``p`` (along the normal)."""
+        p = np.asarray(p, float)
+        n = np.asarray(self.normal)
+        return p - n * float((p - self.point) @ n)
 
 
 # -------------------------------------------------------------------------- spatial
@@ -212,6 +208,24 @@ class Sphere(_Spatial):
         d = np.asarray(p, float) - self.center
         return _unit_normal(d, f"the point {p} is the sphere's centre")
 
+    def project(self, p) -> np.ndarray:
+        """The surface point nearest ``p`` (radially)."""
+        return np.asarray(self.center) + self.radius * self.normal_at(p)
+
+    def latitude_circle(self, latitude: float = 60.0) -> CirclePath:
+        """The circle ``latitude`` degrees from the top (+z), counter-clockwise seen from +z (along
+        ``t1 = z x n``), starting on the side that faces the base's z axis."""
+        _finite("Sphere.latitude_circle", latitude=latitude)
+        if not 0 < latitude < 180:
+            raise HybridError(f"latitude = {latitude} degrees from the top; give a value in (0, 180)")
+        c, polar = np.asarray(self.center, float), math.radians(latitude)
+        rho, h = self.radius * math.sin(polar), self.radius * math.cos(polar)
+        return CirclePath((c[0], c[1], c[2] + h), rho, rho * math.atan2(-c[1], -c[0]))
+
+    def path(self) -> CirclePath:
+        """The default path on a sphere: its latitude circle 60 degrees from the top."""
+        return self.latitude_circle()
+
 
 @dataclass(frozen=True)
 class Cylinder(_Spatial):
@@ -238,6 +252,26 @@ class Cylinder(_Spatial):
         d = np.asarray(p, float) - self.point
         radial = d - np.dot(d, self.axis) * np.asarray(self.axis)
         return _unit_normal(radial, f"the point {p} is on the cylinder's axis")
+
+    def project(self, p) -> np.ndarray:
+        """The surface point nearest ``p`` (radially from the axis)."""
+        d = np.asarray(p, float) - self.point
+        u = np.asarray(self.axis)
+        return np.asarray(self.point) + np.dot(d, u) * u + self.radius * self.normal_at(p)
+
+    def circle_at(self, point) -> CirclePath:
+        """The circle around a vertical cylinder (axis along base z) through ``point``,
+        counter-clockwise seen from +z, starting at ``point``."""
+        if abs(abs(self.axis[2]) - 1.0) > 1e-12:
+            raise HybridError(f"Cylinder.circle_at needs a cylinder about base z, its axis is {self.axis}; "
+                              "give the experiment a path of your own")
+        p = np.asarray(_point("Cylinder.circle_at", "point", point, (3,)))
+        path = CirclePath((self.point[0], self.point[1], float(p[2])), self.radius)
+        return CirclePath(path.center, self.radius, path.arc_of(p))
+
+    def path(self) -> CirclePath:
+        raise HybridError("a cylinder has no path of its own: give the experiment a path, e.g. "
+                          "cylinder.circle_at(point)")
 
 
 PlanarSurface = Circle | Plane

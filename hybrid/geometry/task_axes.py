@@ -25,11 +25,12 @@ def check_axes(robot, axes) -> tuple[int, ...]:
     """``axes`` as a tuple of distinct task-axis indices the robot can serve, in the given order
     (``a[k]`` is the acceleration along ``axes[k]``)."""
     if axes is None:
+        axes = robot.default_axes
+    if isinstance(axes, str) and axes == "all":
         if robot.n < 6:
             raise HybridError(f"a {robot.n}-joint arm cannot control all six task axes; pass axes="
                               "'planar' (t1, n) for an arm moving in the base xy-plane, 'position' "
                               "(t1, t2, n), or a tuple of axis indices 0-5")
-        axes = "all"
     if isinstance(axes, str):
         if axes not in AXES:
             raise HybridError(f"axes = {axes!r}; name one of {', '.join(AXES)} or give indices 0-5")

@@ -41,6 +41,8 @@ class Robot:
     [N m s/rad or N s/m], gravity [m/s^2] in base axes, joint limits.
 
     Build it with :meth:`from_urdf` or :meth:`planar`. Terms come from :func:`hybrid.arm_terms`.
+    ``closed_form`` holds the parameters of the paper's planar arm when the robot is that arm
+    (:meth:`planar`): its terms, plant and inverse kinematics then also exist in closed form.
     """
 
     name: str
@@ -49,6 +51,7 @@ class Robot:
     damping: tuple[float, ...]
     gravity: tuple[float, float, float] = (0.0, 0.0, -9.81)
     limits: JointLimits | None = field(default=None, compare=False)  # arrays: information, not identity
+    closed_form: Arm | None = None
 
     def __post_init__(self):
         object.__setattr__(self, "gravity", _gravity(self.gravity))
@@ -120,6 +123,8 @@ class Robot:
     def with_model_error(self, inertial: float = 0.1, viscous_compensation: float = 0.5) -> Robot:
         """The controller's model of this arm: masses and inertias ``(1 + inertial)`` times the
         true ones (centres of mass unchanged), viscosities ``viscous_compensation`` times."""
+        if self.closed_form is not None:  # the closed form's own model error: the same numbers, its parameters kept
+            return Robot.planar(self.closed_form.with_model_error(inertial, viscous_compensation))
         k = check_model_error(inertial, viscous_compensation)
         links = tuple(LinkInertia(lk.mass * k, lk.com, tuple(tuple(v * k for v in r) for r in lk.inertia))
                       for lk in self.links)
@@ -143,10 +148,41 @@ class Robot:
 
     # ---------------------------------------------------------------- compiled
 
-    def inverse_kinematics(self, position, rotation=None, q0=None, tol: float = 1e-10) -> np.ndarray:
+    @property
+    def default_axes(self) -> str:
+        """The task axes a controller of this robot uses unless told: the planar arm's ``(t1, n)``,
+        else all six."""
+        return "planar" if self.closed_form is not None else "all"
+
+    @property
+    def conditioning_name(self) -> str:
+        """The measure :meth:`conditioning` computes."""
+        return "2|det J|/|J|_F^2" if self.closed_form is not None else "m/(|J|_F |J^+|_F)"
+
+    def conditioning(self, q) -> np.ndarray:
+        """The Jacobian's distance from singularity at ``q`` (one state, or one per row), in (0, 1]:
+        ``m / (|J|_F |J^+|_F)`` (``m = min(6, n)``) of the tip's frame Jacobian, about
+        ``sigma_min / sigma_max``; the planar arm's ``2 |det J| / |J|_F^2`` (about ``|sin q2|``)."""
+        if self.closed_form is not None:
+            return self.closed_form.conditioning(np.asarray(q, float).T)
+        rows = np.atleast_2d(np.asarray(q, float))
+        J = robot_terms(self, rows, np.zeros_like(rows))["J"]
+        s = np.linalg.svd(J, compute_uv=False)
+        cond = min(J.shape[1:]) / np.sqrt(np.sum(s**2, axis=-1) * np.sum(1.0 / s**2, axis=-1))
+        return cond if np.ndim(q) == 2 else cond[0]
+
+    def reach(self) -> tuple[float, float] | None:
+        """Smallest and largest distance of the tip from the base [m], when known in closed form."""
+        return None if self.closed_form is None else self.closed_form.reach()
+
+    def inverse_kinematics(self, position, rotation=None, q0=None, tol: float = 1e-10, elbow: int = 1) -> np.ndarray:
         """Joint positions putting the tip frame at ``position`` [m] (and ``rotation``, a 3x3 matrix in
         base axes, when given), by damped least squares from ``q0`` (default: mid-range of the limits).
-        Raises :class:`HybridError` when the pose is not reached (out of reach, or a poor ``q0``)."""
+        The planar arm solves in closed form (``elbow`` +1 for ``q2 > 0``, -1 for ``q2 < 0``; its
+        orientation follows from the position). Raises :class:`HybridError` when the pose is not
+        reached (out of reach, or a poor ``q0``)."""
+        if self.closed_form is not None:
+            return self.closed_form.inverse_kinematics(np.asarray(position, float)[:2], elbow)
         p_goal = _vector("position", position, (3,))
         R_goal = None if rotation is None else _vector("rotation", rotation, (3, 3))
         q = np.array(self._start_guess() if q0 is None else _vector("q0", q0, (self.n,)))
@@ -190,7 +226,7 @@ def _planar(cls, arm: Arm) -> Robot:
     for b in bounds:
         b.setflags(write=False)  # the robot is shared by every caller with an equal arm
     limits = JointLimits(*bounds)
-    return cls("planar_arm", chain, links, (arm.V1, arm.V2), (0.0, -arm.gravity, 0.0), limits)
+    return cls("planar_arm", chain, links, (arm.V1, arm.V2), (0.0, -arm.gravity, 0.0), limits, arm)
 
 
 def _vector(name: str, v, shape) -> np.ndarray:

@@ -10,7 +10,6 @@ from functools import cache
 
 import numpy as np
 
-from hybrid.models.robot import robot_terms
 from hybrid.native import units
 from hybrid.native.build import manifest
 
@@ -137,10 +136,5 @@ class SpatialPlant(CompiledPlant):
     conditioning_name = "m/(|J|_F |J^+|_F)"
 
     def conditioning(self, q) -> np.ndarray:
-        """``m / (|J|_F |J^+|_F)`` (``m = min(6, n)``) of the tip's frame Jacobian at ``q`` (one state, or
-        one per row)."""
-        rows = np.atleast_2d(np.asarray(q, float))
-        J = robot_terms(self._robot, rows, np.zeros_like(rows))["J"]
-        s = np.linalg.svd(J, compute_uv=False)
-        cond = min(J.shape[1:]) / np.sqrt(np.sum(s**2, axis=-1) * np.sum(1.0 / s**2, axis=-1))
-        return cond if np.ndim(q) == 2 else cond[0]
+        """The arm's conditioning at ``q`` (one state, or one per row): see :meth:`Robot.conditioning`."""
+        return self._robot.conditioning(q)

@@ -12,7 +12,7 @@ import numpy as np
 
 from hybrid import files
 from hybrid.errors import HybridError
-from hybrid.experiments.paper import Experiment
+from hybrid.experiments.experiment import Experiment
 from hybrid.plants.compiled import planar_record
 
 
@@ -97,6 +97,7 @@ class SimulationResult:
                     f, t=self.t, state=self.state, tau=self.tau, outputs=self.outputs,
                     force_reference=self.force_reference, speed_reference=self.speed_reference,
                     output_names=np.array(self.record["outputs"]), units=json.dumps(self.UNITS),
+                    record=json.dumps(self.record),
                     experiment=json.dumps(self.experiment.to_dict()), metrics=json.dumps(self.metrics))
 
         return files.write_with(path, write, overwrite)
@@ -108,20 +109,17 @@ class SimulationResult:
             with np.load(path, allow_pickle=False) as z:
                 arrays = {k: z[k] for k in ("t", "state", "tau", "outputs", "force_reference", "speed_reference")}
                 settings = json.loads(str(z["experiment"]))
-                if isinstance(settings, dict) and settings.get("kind") == "tracing":
-                    raise HybridError(f"{path} holds a 3-D run: its arrays load with numpy.load (names in "
-                                      "'output_names'); SimulationResult.load rebuilds paper runs only")
                 experiment = Experiment.from_dict(settings)
                 metrics = json.loads(str(z["metrics"]))
+                record = _record(json.loads(str(z["record"])))
             n = len(arrays["t"])
-            record = planar_record()
             shapes = {"t": (n,), "state": (n, len(record["state"])), "tau": (n, record["nq"]),
                       "outputs": (n, len(record["outputs"])), "force_reference": (n,), "speed_reference": (n,)}
             wrong = [k for k, shape in shapes.items() if arrays[k].shape != shape]
             if wrong or n == 0 or not np.isfinite(arrays["t"]).all() or not isinstance(metrics, dict):
                 raise ValueError(f"arrays {', '.join(wrong) or 't'} do not have the shapes of a run")
             return cls(experiment, arrays["t"], arrays["state"], arrays["tau"], arrays["outputs"],
-                       arrays["force_reference"], arrays["speed_reference"], metrics)
+                       arrays["force_reference"], arrays["speed_reference"], metrics, record)
         except (OSError, KeyError, ValueError, EOFError, zipfile.BadZipFile, zlib.error, TypeError,
                 AttributeError) as exc:
             why = getattr(exc, "strerror", None) or f"{type(exc).__name__}: {exc}"
@@ -142,3 +140,10 @@ class SimulationResult:
         return files.write_with(path, lambda tmp: np.savetxt(
             tmp, np.column_stack(list(cols.values())), delimiter=",", header=",".join(cols), comments="",
             fmt="%.10g"), overwrite)
+
+
+def _record(data) -> dict:
+    """A plant's record as :meth:`SimulationResult.save` wrote it (names and units as tuples)."""
+    if not isinstance(data, dict):
+        raise ValueError("the record is not a table")
+    return {k: v if k == "nq" else tuple(v) for k, v in data.items()}

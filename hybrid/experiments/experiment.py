@@ -1,0 +1,348 @@
+"""One closed-loop run as data: robot, surface, path, scheme, loops, sensor, contact, timing, model error.
+
+An :class:`Experiment` is every setting of a run, validated when it is made. It builds what the
+run needs from its own settings: the plant (:meth:`Experiment.plant`), the controller
+(:meth:`Experiment.build_controller`) and the start state (:meth:`Experiment.initial_state`).
+What differs between robots is a property of the robot: the paper's planar arm (a
+:class:`~hybrid.Robot` with a ``closed_form``) runs on the committed closed-form plant, with
+the planar task axes and closed-form inverse kinematics; any other arm on its generated
+rigid-body plant, on all six task axes (or those it can serve). :func:`hybrid.paper_experiment`,
+:func:`hybrid.tracing_experiment` and :func:`hybrid.panda_experiment` are factories of it.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from dataclasses import asdict, dataclass, field, fields
+from functools import lru_cache
+
+import numpy as np
+
+from hybrid.control.controller import Controller
+from hybrid.control.loops import Gains
+from hybrid.control.references import Step
+from hybrid.control.schemes import SCHEMES
+from hybrid.errors import HybridError
+from hybrid.experiments.settings import START_TOL, RunSettings, check_common_types, check_timing, pressed
+from hybrid.geometry.paths import CirclePath, LinePath, Path
+from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere, Surface
+from hybrid.geometry.task_axes import reference_direction
+from hybrid.models.chain import Chain, Joint
+from hybrid.models.planar_arm import Arm
+from hybrid.models.robot import Robot
+from hybrid.models.urdf import JointLimits, LinkInertia
+from hybrid.plants.compiled import NativePlant, SpatialPlant
+from hybrid.plants.contact import Contact, Sensor
+from hybrid.plants.mujoco import MujocoPlant
+from hybrid.validate import SINGULAR_TOL, _point
+
+#: the committed units that can run the closed-form plant and law (the same equations, two printers)
+BACKENDS = ("sympy", "casadi")
+
+
+@dataclass(frozen=True, kw_only=True)
+class Experiment(RunSettings):
+    """One closed-loop run: the true robot and surface, the controller's settings, the references,
+    the sensor and contact, the integration and sampling.
+
+    Parameters
+    ----------
+    robot : Robot
+        The true arm. The controller's model is ``robot.with_model_error(model_error,
+        viscous_compensation)``.
+    surface : Surface
+        What the sensor tip touches (2-D for the planar arm, 3-D otherwise).
+    path : CirclePath or LinePath, optional
+        Where the desired point runs (for ``frame="desired"`` and the workspace check); default the
+        surface's own path (:meth:`Surface.path`), when it has one.
+    start_point : the sensor tip's start on the surface [m] (projected onto it when within
+        1 mm); default the path's start.
+    elbow : +1 (``q2 > 0``) or -1: the planar arm's start configuration.
+    reference : the task frame's reference direction ``e`` (base axes).
+    axes : the controller's task axes (see :func:`hybrid.decoupling_law`); default the robot's.
+    controller : a scheme's name (``"task"``, ``"khatib"``, ``"raibert_craig"``, ``"fisher_mujtaba"``).
+    frame : ``"actual"`` (the loops in ``R(r)``) or ``"desired"`` (in ``R(r_d)``).
+    backend : which committed unit runs the closed-form plant (``"sympy"`` or ``"casadi"``).
+    singular_tol : the run stops when the Jacobian's conditioning at a sample falls below it.
+    """
+
+    robot: Robot
+    surface: Surface
+    path: Path | None = None
+    start_point: tuple[float, ...] | None = None
+    elbow: int = 1
+    reference: tuple[float, float, float] = (0.0, 0.0, 1.0)
+    axes: str | tuple[int, ...] | None = None
+    controller: str = "task"
+    integral: bool = True
+    curvature: bool = False
+    frame: str = "actual"
+    model_error: float = 0.1
+    viscous_compensation: float = 0.5
+    sensor: Sensor = field(default_factory=Sensor)
+    contact: Contact = field(default_factory=Contact)
+    gains: Gains = field(default_factory=Gains)
+    force_reference: Step = field(default_factory=lambda: Step(10.0, 20.0, 0.4))
+    speed_reference: Step = field(default_factory=lambda: Step(0.3, 0.6, 1.0))
+    duration: float = 2.0
+    step: float = 1e-4
+    sample_time: float = 1e-2
+    backend: str = "sympy"
+    singular_tol: float = SINGULAR_TOL
+
+    def __post_init__(self):
+        check_common_types(self)
+        if self.controller not in SCHEMES:
+            raise HybridError(f"unknown controller {self.controller!r}; choose one of {', '.join(SCHEMES)}")
+        if isinstance(self.robot, Arm):  # the paper's parameters stand for its arm
+            object.__setattr__(self, "robot", Robot.planar(self.robot))
+        if not isinstance(self.robot, Robot):
+            raise HybridError(f"robot must be a hybrid.Robot (e.g. hybrid.Robot.from_urdf, hybrid.ur5()), got "
+                              f"{type(self.robot).__name__}")
+        if not isinstance(self.surface, Surface):
+            raise HybridError(f"unknown surface {self.surface!r:.60}; give a hybrid Circle, Plane, Sphere, Cylinder "
+                              "or ImplicitSurface")
+        planar = self.robot.closed_form is not None
+        if planar != (self.surface.dim == 2):
+            raise HybridError(
+                f"the {'planar arm needs a planar surface (a hybrid.Circle or a 2-D hybrid.Plane)' if planar else ''}"
+                f"{'' if planar else 'planar surfaces (2 coordinates) are for the paper planar arm; give a 3-D one'}"
+                f", got {self.surface!r:.60}")
+        if self.path is not None and not isinstance(self.path, Path):
+            raise HybridError(f"path = {self.path!r:.60}; give a hybrid.CirclePath or hybrid.LinePath, or None")
+        if not isinstance(self.backend, str) or self.backend not in BACKENDS:
+            raise HybridError(f"unknown backend {self.backend!r:.40}; choose one of {BACKENDS}")
+        if isinstance(self.elbow, bool) or not isinstance(self.elbow, (int, np.integer)) or self.elbow not in (1, -1):
+            raise HybridError(f"elbow = {self.elbow!r}; give +1 (q2 > 0) or -1 (q2 < 0)")
+        object.__setattr__(self, "reference", tuple(reference_direction(self.reference)))
+        if self.start_point is not None:
+            object.__setattr__(self, "start_point", _point("Experiment", "start_point", self.start_point,
+                                                           (self.surface.dim,)))
+        elif self._path() is None:
+            raise HybridError(f"a {type(self.surface).__name__} has no path of its own: give start_point, a point "
+                              "on the surface [m], or a path")
+        if self.frame == "desired" and self._path() is None:
+            raise HybridError("frame='desired' follows the experiment's path: give a path (hybrid.CirclePath or "
+                              "hybrid.LinePath), or use frame='actual'")
+        check_timing(self)
+
+    # ------------------------------------------------------------------ derived
+
+    @property
+    def arm(self) -> Arm | None:
+        """The planar arm's parameters (its closed form), or None for any other robot."""
+        return self.robot.closed_form
+
+    @property
+    def plant_class(self) -> type:
+        """The generated plant of these runs: the closed form of the planar arm, else the rigid-body one."""
+        return NativePlant if self.robot.closed_form is not None else SpatialPlant
+
+    def plant(self):
+        """The generated plant of this run (the true arm, sensor, contact on the surface)."""
+        return self.plant_class(self)
+
+    def mujoco_plant(self):
+        """MuJoCo as this run's plant (:mod:`hybrid.plants.mujoco`; needs the ``mujoco`` extra)."""
+        if self.robot.closed_form is None:
+            raise HybridError("the MuJoCo plant runs the paper's experiment; the 3-D one runs on the generated plant")
+        return MujocoPlant(self)
+
+    def controller_robot(self) -> Robot:
+        """The controller's (wrong) model of the arm."""
+        return self.robot.with_model_error(self.model_error, self.viscous_compensation)
+
+    def build_controller(self) -> Controller:
+        """Exactly the controller this run uses: its model of the arm, loops, references, options."""
+        return Controller(self.controller_robot(), self.surface, self.controller, axes=self.axes,
+                          reference=self.reference, **self.controller_settings())
+
+    def _path(self) -> Path | None:
+        if self.path is not None:
+            return self.path
+        try:
+            return self.surface.path()
+        except HybridError:
+            return None
+
+    def start(self) -> np.ndarray:
+        """The sensor tip's start point on the surface [m]: ``start_point`` (projected onto the surface),
+        else the path's start."""
+        if self.start_point is None:
+            return self._path().point_at(self._path().start)
+        projected = self.surface.project(self.start_point)
+        return np.array(self.start_point) if projected is None else projected
+
+    def desired_point(self, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """``r_d(t)`` [m] on the path, reached from the start at the desired speed, and ``r_d'(t)`` [m/s]."""
+        path = self._path()
+        s = path.arc_of(self.start()) + self.speed_reference.integral(t)
+        return path.point_at(s), self.speed_reference(t) * path.tangent_at(s)
+
+    def initial_state(self) -> np.ndarray:
+        """The run's start state ``x0 = (q, q', s, s')``: at rest, the sensor tip pressing at the start
+        point with ``F_d(0)`` (:meth:`~hybrid.experiments.settings.RunSettings.pressed_at`), the tool's
+        z axis along ``-n`` when the task has rotational axes, the joints from inverse kinematics of
+        the true arm. What a foreign loop starts from."""
+        return _initial_state(self).copy()
+
+    def check_path(self) -> None:
+        """Refuse a run whose desired path leaves the arm's workspace (where the reach is known)."""
+        reach, path = self.robot.reach(), self._path()
+        if reach is not None and path is not None:
+            _check_path(reach, path, path.arc_of(self.start()), self.speed_reference, self.n_samples,
+                        self.sample_time, self.duration)
+
+    # ------------------------------------------------------------------- files
+
+    def to_dict(self) -> dict:
+        """The settings as JSON-ready data, from which :meth:`from_dict` builds the experiment again."""
+        d = {f.name: getattr(self, f.name) for f in fields(self)}
+        for name in ("sensor", "contact", "gains", "force_reference", "speed_reference"):
+            d[name] = asdict(d[name])
+        d["robot"] = robot_to_dict(self.robot)
+        d["surface"] = surface_to_dict(self.surface)
+        d["path"] = None if self.path is None else {"kind": type(self.path).__name__, **asdict(self.path)}
+        d["start_point"] = None if self.start_point is None else list(self.start_point)
+        d["reference"] = list(self.reference)
+        d["axes"] = list(self.axes) if isinstance(self.axes, tuple) else self.axes
+        return {"kind": "experiment", **d}
+
+    @classmethod
+    def from_dict(cls, d: dict) -> Experiment:
+        """The experiment :meth:`to_dict` wrote; anything else is a HybridError."""
+        try:
+            return cls._from_dict(d)
+        except (KeyError, TypeError, AttributeError, ValueError, IndexError) as exc:
+            if isinstance(exc, HybridError):
+                raise
+            raise HybridError(f"not an experiment's settings ({type(exc).__name__}: {exc})") from None
+
+    @classmethod
+    def _from_dict(cls, d: dict) -> Experiment:
+        d = dict(d)
+        if d.pop("kind", None) != "experiment":
+            raise ValueError("no 'kind': 'experiment' entry")
+        parts = {"sensor": Sensor, "contact": Contact, "gains": Gains, "force_reference": Step,
+                 "speed_reference": Step}
+        for k, typ in parts.items():
+            d[k] = typ(**d[k])
+        d["robot"], d["surface"] = robot_from_dict(d["robot"]), surface_from_dict(d["surface"])
+        if d["path"] is not None:
+            path = dict(d["path"])
+            d["path"] = {"CirclePath": CirclePath, "LinePath": LinePath}[path.pop("kind")](**path)
+        if isinstance(d["axes"], list):
+            d["axes"] = tuple(d["axes"])
+        return cls(**d)
+
+
+def _initial_state(exp: Experiment) -> np.ndarray:
+    p0 = exp.start()
+    if exp.start_point is not None:
+        projected = exp.surface.project(exp.start_point) is not None
+        # without a closed-form projection the plant's own record says how far the point is
+        gap = (float(np.linalg.norm(np.asarray(exp.start_point) - p0)) if projected
+               else abs(float(exp.plant().outputs(_probe(exp, p0))[0][exp.plant().record["outputs"].index(
+                   "penetration")])))
+        if not gap <= START_TOL:
+            raise HybridError(f"start_point {np.round(exp.start_point, 4).tolist()} m is {gap * 1000:.1f} mm off "
+                              f"the surface; give a point on it (within {START_TOL * 1000:g} mm), e.g. "
+                              f"{np.round(p0, 4).tolist()}")
+    return _pressed_start(exp.robot, exp.surface, tuple(p0.tolist()), exp.elbow, exp.reference, exp.singular_tol,
+                          exp.force_reference(0.0), exp.contact.stiffness, exp.sensor.stiffness)
+
+
+def _probe(exp: Experiment, p: np.ndarray) -> np.ndarray:
+    """A plant state at rest with the sensor tip at ``p`` (one row)."""
+    return np.concatenate([np.zeros(2 * exp.robot.n), p, np.zeros(len(p))])[None, :]
+
+
+# the runs of a sweep mostly start alike: what they share is worked out once (from the values it reads)
+@lru_cache(maxsize=1024)
+def _pressed_start(robot, surface, p0, elbow, reference, singular_tol, F0, k_e, K_s) -> np.ndarray:
+    normal = surface.normal_at(p0)
+    s, r = pressed(p0, normal, F0, k_e, K_s)
+    # the tool's orientation is set where the task controls it (the planar arm's follows from r)
+    rotation = None if robot.closed_form is not None else _tool_rotation(np.asarray(reference), normal)
+    try:
+        q = robot.inverse_kinematics(np.append(r, 0.0) if len(r) == 2 else r, rotation, elbow=elbow)
+    except HybridError as exc:
+        raise HybridError(f"the start pose cannot be reached: {exc}") from None
+    cond = float(robot.conditioning(q))
+    if cond < max(singular_tol, 1e-3):
+        raise HybridError(f"the start point {np.round(p0, 4).tolist()} m puts the arm at or near a singularity "
+                          f"(q = {np.round(q, 4).tolist()} rad, {robot.conditioning_name} = {cond:.2e}); move "
+                          "the surface or start_point")
+    return np.concatenate([q, np.zeros(robot.n), s, np.zeros(len(s))])
+
+
+def _tool_rotation(e: np.ndarray, normal: np.ndarray) -> np.ndarray:
+    """The tool's start orientation: its z axis along ``-n``, its x axis along ``t1 = e x n``."""
+    x_tool = np.cross(e, normal)
+    if np.linalg.norm(x_tool) < 1e-6:
+        raise HybridError("the reference direction is parallel to the surface normal at the start point: the task "
+                          "frame is undefined there; choose another reference or start_point")
+    x_tool /= np.linalg.norm(x_tool)
+    return np.column_stack([x_tool, np.cross(-normal, x_tool), -normal])
+
+
+@lru_cache(maxsize=1024)
+def _check_path(reach, path, s0, speed_reference, n_samples, sample_time, duration) -> None:
+    lo, hi = reach
+    t = np.minimum(np.arange(n_samples + 1) * sample_time, duration)
+    points = path.points_at(s0 + speed_reference.integral(t))
+    d = np.hypot(points[:, 0], points[:, 1])
+    outside = np.flatnonzero(~((lo + 1e-3 < d) & (d < hi - 1e-3)))
+    if len(outside):
+        i = outside[0]
+        raise HybridError(f"the desired path leaves the arm's workspace at t = {t[i]:.3f} s "
+                          f"(point {np.round(points[i], 4).tolist()} m, {d[i]:.3f} m from the base, reach "
+                          f"{lo:.3f}-{hi:.3f} m); shorten duration, lower the speed or move the surface")
+
+
+# ------------------------------------------------------------- robots and surfaces as data
+
+
+def robot_to_dict(robot: Robot) -> dict:
+    """Everything that defines ``robot`` as JSON-ready data (and a digest of it, for sweeps' resume)."""
+    if robot.closed_form is not None:
+        d = {"closed_form": asdict(robot.closed_form)}
+    else:
+        limits = None if robot.limits is None else {k: np.asarray(v).tolist() for k, v in vars(robot.limits).items()}
+        d = {"name": robot.name, "chain": asdict(robot.chain), "links": [asdict(lk) for lk in robot.links],
+             "damping": list(robot.damping), "gravity": list(robot.gravity), "limits": limits}
+    d["digest"] = hashlib.sha256(json.dumps(d, sort_keys=True).encode()).hexdigest()[:16]
+    return d
+
+
+def robot_from_dict(d: dict) -> Robot:
+    if "closed_form" in d:
+        return Robot.planar(Arm(**d["closed_form"]))
+    c = d["chain"]
+
+    def rows(m):
+        return tuple(tuple(float(v) for v in row) for row in m)
+
+    joints = tuple(Joint(j["name"], j["kind"], rows(j["rotation"]), tuple(j["translation"]), tuple(j["axis"]))
+                   for j in c["joints"])
+    chain = Chain(joints, rows(c["tip_rotation"]), tuple(c["tip_translation"]))
+    links = tuple(LinkInertia(lk["mass"], tuple(lk["com"]), rows(lk["inertia"])) for lk in d["links"])
+    limits = None if d["limits"] is None else JointLimits(**{k: np.array(v, float) for k, v in d["limits"].items()})
+    return Robot(d["name"], chain, links, tuple(d["damping"]), tuple(d["gravity"]), limits)
+
+
+def surface_to_dict(surface: Surface) -> dict:
+    if surface.kind.startswith("implicit"):
+        return {"kind": "implicit", "phi": str(surface.phi), "parameters": dict(surface.parameters)}
+    return {"kind": surface.kind, **{k: list(v) if isinstance(v, tuple) else v for k, v in asdict(surface).items()}}
+
+
+def surface_from_dict(d: dict) -> Surface:
+    d = dict(d)
+    kind = d.pop("kind")
+    if kind == "implicit":
+        from hybrid.geometry.implicit import ImplicitSurface  # SymPy: loaded only for a user's surface
+
+        return ImplicitSurface(d["phi"], d["parameters"])
+    return {"circle": Circle, "plane": Plane, "sphere": Sphere, "cylinder": Cylinder}[kind](**d)
