@@ -103,6 +103,16 @@ def build_plant_unit(chain: rb.Chain, spec, prefix: str, info: dict) -> Unit:
                     tool=f"CasADi {ca.__version__}", defines={"NQ": chain.n, "NX": 2 * chain.n + 6})
 
 
+def build_frame_unit(spec, prefix: str) -> Unit:
+    """The task frame on the surface ``spec`` alone (no robot): ``R_L``, ``R_L'`` and the normal."""
+    from .task_law import frame_kernel
+
+    return assemble(prefix, "casadi", (frame_kernel(spec),), f"task frame on a {spec.kind}",
+                    info={"surface": {"kind": spec.kind, "parameters": list(spec.parameters),
+                                      "phi": str(phi_of(spec))}},
+                    tool=f"CasADi {ca.__version__}")
+
+
 def _task_unit(kernels, what: str, chain: rb.Chain, spec, axes, prefix: str, info: dict,
                variant: dict | None = None) -> Unit:
     from .task_law import AXIS_NAMES

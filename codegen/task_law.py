@@ -138,15 +138,23 @@ def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tu
         f"{', '.join(AXIS_NAMES[i] for i in axes)} on a {spec.kind}",
         batched=("q", "qd", "a", "Fc", "tau0"),
         guards=(frame_guard(tf.sine), conditioning_guard(cond, CONDITIONING)))
+    return frame_kernel(spec), law
+
+
+def frame_kernel(spec: SurfaceSpec) -> Kernel:
+    """``task_frame``: ``R_L`` (rows t1, t2, n) at a point ``p`` of ``spec``, its rate ``R_L'(p, p')``
+    and the unit normal, for N points in one call."""
     p, pd = ca.SX.sym("p", 3), ca.SX.sym("pd", 3)
+    theta, e = ca.SX.sym("surface", len(spec.parameters)), ca.SX.sym("e", 3)
     tf_p = task_frame(spec, p, pd, theta, e)
-    frame = Kernel(
-        "task_frame", (Arg("p", p, "m"), Arg("pd", pd, "m/s"), a_s, a_e),
+    return Kernel(
+        "task_frame", (Arg("p", p, "m"), Arg("pd", pd, "m/s"),
+                       Arg("surface", theta, "m (lengths), 1 (directions)", names=spec.parameters),
+                       Arg("e", e, "1", names=("e_x", "e_y", "e_z"))),
         (Arg("R", rb.row_major(tf_p.R), "1", (3, 3)), Arg("Rd", rb.row_major(tf_p.Rd), "1/s", (3, 3)),
          Arg("normal", tf_p.normal, "1")),
         f"task frame R_L (rows t1, t2, n) at p on a {spec.kind}, its derivative R_L'(p, p'), and the "
         "unit normal n", batched=("p", "pd"), guards=(frame_guard(tf_p.sine),))
-    return frame, law
 
 
 # ------------------------------------------------------------- operational space

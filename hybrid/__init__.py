@@ -21,7 +21,7 @@ runs only when a unit must be built, and :class:`ImplicitSurface` (a SymPy expre
 from __future__ import annotations
 
 from hybrid.control.controller import ContactLoss, Controller, Measurement, Reference
-from hybrid.control.law import DecouplingLaw, decoupling_law, task_frame
+from hybrid.control.law import DecouplingLaw, decoupling_law
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES, Khatib, Scheme, TaskDecoupling
@@ -37,6 +37,7 @@ from hybrid.errors import (
 from hybrid.experiments.experiment import Experiment
 from hybrid.experiments.paper import paper_experiment
 from hybrid.experiments.tracing import tracing_experiment, ur5
+from hybrid.geometry.frames import task_frame
 from hybrid.geometry.paths import CirclePath, LinePath
 from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere
 from hybrid.models.planar_arm import Arm, paper_arm

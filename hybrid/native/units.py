@@ -86,6 +86,14 @@ def law_unit(chain, name: str, spec, axes: tuple[int, ...]) -> Unit:
 
 
 @cache
+def frame_unit(spec) -> Unit:
+    """The task frame on the surface ``spec`` (any robot's), compiled."""
+    prefix = c_identifier(f"hybrid_{spec.kind}_frame")
+    return compiled(prefix, {"surface": spec.key()},
+                    lambda: generator("robot_unit").build_frame_unit(spec, prefix))
+
+
+@cache
 def controller_unit(chain, name: str, spec, axes: tuple[int, ...], desired_frame: bool = False,
                     position_error: bool = False) -> Unit:
     """One control sample (measurement, loops, law) of ``chain`` on the surface ``spec``, compiled;

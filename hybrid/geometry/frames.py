@@ -1,0 +1,54 @@
+"""The task frame ``R(r)`` and its rate ``R'(r, r')`` at points of any surface, from the generated C.
+
+The rows of ``R_L`` are ``t1 = e x n / |e x n|``, ``t2 = n x t1`` and the normal ``n`` (towards the
+robot) for the reference direction ``e``; ``R_L'`` is its derivative along the point's velocity,
+which carries the surface's curvature. A planar surface's frame is the paper's 2 x 2 one, rows
+tangent ``t = (-n_y, n_x)`` and normal (the rows ``t1, n`` and columns ``x, y`` of its lift's with
+``e = z``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from hybrid.errors import HybridError, NonFiniteError
+from hybrid.geometry.surfaces import Surface
+from hybrid.geometry.task_axes import reference_direction
+from hybrid.native import units
+from hybrid.native.binding import as_array, is_batch
+
+
+def task_frame(surface: Surface, r, rdot, *, reference=(0.0, 0.0, 1.0),
+               backend: str = "sympy") -> tuple[np.ndarray, np.ndarray]:
+    """``R(r)`` and ``R'(r, r')`` on ``surface`` at the point ``r`` [m] moving at ``r'`` [m/s].
+
+    One point (``r``, ``rdot`` of shape ``(d,)``, ``d`` the surface's dimension) gives arrays of shape
+    ``(d, d)``; N points (shape ``(N, d)``) give ``(N, d, d)`` in one native call. A planar surface's
+    one point runs the committed closed-form unit of ``backend``; its N points, and every 3-D
+    surface, the frame generated for the surface (``reference`` is the 3-D frame's ``e``).
+    """
+    if not isinstance(surface, Surface):
+        raise HybridError(f"surface must be a hybrid surface (Circle, Plane, Sphere, Cylinder, ImplicitSurface), "
+                          f"got {surface!r:.60}")
+    d = surface.dim
+    r, rdot = as_array("r", r, d, batched=None), as_array("rdot", rdot, d, batched=None)
+    if r.shape != rdot.shape:
+        raise HybridError(f"r and rdot must have the same shape, got {r.shape} and {rdot.shape}")
+    if not (np.isfinite(r).all() and np.isfinite(rdot).all()):  # a plane's frame would not show it
+        raise NonFiniteError(f"task_frame: non-finite input r = {r}, rdot = {rdot}")
+    if d == 2:
+        if not np.array_equal(reference_direction(reference), (0.0, 0.0, 1.0)):
+            raise HybridError("a planar surface's frame has e = z (tangent t = (-n_y, n_x)); leave reference out")
+        if not is_batch(r):
+            out = units.planar_unit(backend).function(f"task_frame_{surface.kind}")(r, rdot, surface.as_array())
+            return out["R"], out["Rd"]
+        r, rdot = (np.column_stack([x, np.zeros(len(x))]) for x in (r, rdot))
+    lifted = surface.lift()
+    frame = units.frame_unit(lifted.spec()).function("task_frame")
+    e = reference_direction(reference)
+    call = frame.batch if is_batch(r) else frame
+    out = call(r, rdot, lifted.as_array(), e)
+    R, Rd = out["R"], out["Rd"]
+    if d == 2:  # rows t1, n and columns x, y of the lift's frame
+        R, Rd = R[:, ::2, :2], Rd[:, ::2, :2]
+    return R, Rd

@@ -1,0 +1,102 @@
+"""One pipeline for every arm: one experiment type, its start state, its files, the task frame anywhere."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import hybrid
+from hybrid import reference as ref
+
+
+def _sphere_cylinder_plane_implicit():
+    return [hybrid.Sphere((0.5, 0.0, 0.2), 0.15), hybrid.Cylinder((0.4, 0.1, 0.0), (0.2, 0.3, 1.0), 0.12),
+            hybrid.Plane((0.4, 0.0, 0.1), (0.1, -0.2, 1.0)),
+            hybrid.ImplicitSurface("(x/a)**2 + (y/b)**2 + ((z - 0.3)/c)**2 - 1", {"a": 0.3, "b": 0.2, "c": 0.15})]
+
+
+@pytest.mark.parametrize("surface", _sphere_cylinder_plane_implicit(), ids=lambda s: s.kind[:8])
+def test_task_frame_at_points_of_any_surface_matches_the_hand_derivation(rng, surface):
+    # points near the surface (the frame is defined off it too), velocities at random
+    p = rng.uniform([0.2, -0.3, 0.0], [0.8, 0.3, 0.5], (20, 3))
+    pd = rng.normal(0.0, 0.3, (20, 3))
+    e = np.array([0.1, 0.2, 1.0])
+    R, Rd = hybrid.task_frame(surface, p, pd, reference=e)
+    assert R.shape == Rd.shape == (20, 3, 3)
+    for i in range(20):
+        R_ref, Rd_ref = ref.spatial_frame(surface, p[i], pd[i], e)
+        np.testing.assert_allclose(R[i], R_ref, atol=1e-12)
+        np.testing.assert_allclose(Rd[i], Rd_ref, atol=1e-10)
+        one = hybrid.task_frame(surface, p[i], pd[i], reference=e)  # one point: the same numbers
+        np.testing.assert_allclose(one[0], R[i], atol=1e-15)
+
+
+@pytest.mark.parametrize("surface", [hybrid.Circle((0.5, 0.0), 0.2), hybrid.Plane((0.3, 0.0), (-1.0, 0.4))],
+                         ids=["circle", "plane"])
+def test_planar_task_frame_for_n_points_equals_the_closed_form_one_by_one(rng, surface):
+    r, rd = rng.uniform(0.0, 0.6, (30, 2)), rng.normal(0.0, 0.5, (30, 2))
+    R, Rd = hybrid.task_frame(surface, r, rd)
+    for i in range(30):
+        R1, Rd1 = hybrid.task_frame(surface, r[i], rd[i])  # the committed SymPy closed form
+        np.testing.assert_allclose(R[i], R1, atol=1e-14)
+        np.testing.assert_allclose(Rd[i], Rd1, atol=1e-12)
+
+
+def test_task_frame_refuses_what_it_cannot_mean():
+    with pytest.raises(hybrid.HybridError, match="shape"):
+        hybrid.task_frame(hybrid.Sphere((0, 0, 0), 1.0), [1.0, 0.0], [0.0, 0.0])
+    with pytest.raises(hybrid.HybridError, match="hybrid surface"):
+        hybrid.task_frame("sphere", [1.0, 0.0, 0.0], [0.0, 0.0, 0.0])
+    with pytest.raises(hybrid.TaskFrameError):  # e parallel to n
+        hybrid.task_frame(hybrid.Sphere((0, 0, 0), 1.0), [0.0, 0.0, 1.0], [0.0, 0.0, 0.0])
+
+
+@pytest.mark.parametrize("make", [hybrid.paper_experiment, hybrid.tracing_experiment], ids=["paper", "3-D"])
+def test_the_start_state_is_at_rest_pressing_with_the_force_reference(make):
+    """What a foreign loop starts from: joints and rates at rest, the sensor spring carrying F_d(0)
+    along the normal, the sensor tip F_d(0)/k_e into the surface."""
+    exp = make()
+    x0 = exp.initial_state()
+    n, d = exp.robot.n, exp.surface.dim
+    q, qd, s, sd = x0[:n], x0[n:2 * n], x0[2 * n:2 * n + d], x0[2 * n + d:]
+    assert not qd.any() and not sd.any()
+    tip = hybrid.arm_terms(exp.robot, q, qd)["r"][:d]
+    F0 = exp.force_reference(0.0)
+    normal = exp.surface.lift().normal_at(np.append(s, 0.0) if d == 2 else s)[:d]
+    # the sensor spring's force on the robot, K_s (s - r): F_d(0) along the normal (to the inverse
+    # kinematics' tolerance of 1e-10 m times K_s)
+    np.testing.assert_allclose(exp.sensor.stiffness * (s - tip), F0 * normal, atol=exp.sensor.stiffness * 1e-9)
+    penetration = exp.plant().outputs(x0[None, :])[0][exp.plant().record["outputs"].index("penetration")]
+    assert penetration == pytest.approx(F0 / exp.contact.stiffness, rel=1e-6)
+
+
+def test_every_experiment_saves_and_loads(tmp_path):
+    exp = hybrid.tracing_experiment(duration=0.05, controller="khatib", KPv=35.0, F_d=hybrid.Step(8.0, 12.0, 0.02))
+    res = hybrid.simulate(exp)
+    back = hybrid.SimulationResult.load(res.save(tmp_path / "trace"))
+    assert back.experiment == exp  # the robot rebuilt from its data, the surface and the path as they were
+    for name in ("t", "state", "tau", "outputs", "force_reference", "speed_reference"):
+        np.testing.assert_array_equal(getattr(back, name), getattr(res, name))
+    assert back.record == res.record
+    np.testing.assert_array_equal(list(back.metrics.values()), list(res.metrics.values()))  # NaN where no step
+    assert list(back.metrics) == list(res.metrics)
+    again = hybrid.simulate(back.experiment)  # the loaded settings run the same run
+    np.testing.assert_array_equal(again.state, res.state)
+
+
+def test_settings_round_trip_through_their_data():
+    implicit = hybrid.ImplicitSurface("z - 0.1 - h*sin(k*x)", {"h": 0.01, "k": 20.0})
+    for exp in (hybrid.paper_experiment(elbow=-1, start_point=(0.3, 0.0), frame="desired"),
+                hybrid.paper_experiment(surface=hybrid.Plane((0.3, 0.0), (-1.0, 0.0)), start_point=(0.3, 0.1)),
+                hybrid.tracing_experiment(latitude=45.0, axes="position"),
+                hybrid.tracing_experiment(surface=implicit, start_point=(0.45, 0.0, 0.1 + 0.01 * np.sin(9.0)))):
+        assert hybrid.Experiment.from_dict(exp.to_dict()) == exp
+
+
+def test_one_experiment_type_refuses_mixed_dimensions():
+    with pytest.raises(hybrid.HybridError, match="planar arm needs a planar surface"):
+        hybrid.paper_experiment(surface=hybrid.Sphere((0.5, 0, 0), 0.2))
+    with pytest.raises(hybrid.HybridError, match="planar surfaces"):
+        hybrid.tracing_experiment(surface=hybrid.Circle((0.5, 0.0), 0.2), start_point=(0.3, 0.0))
+    with pytest.raises(hybrid.HybridError, match="no latitude circle"):
+        hybrid.tracing_experiment(surface=hybrid.Plane((0.4, 0, 0.1), (0, 0, 1)), latitude=30.0)
