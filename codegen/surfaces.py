@@ -18,7 +18,7 @@ from functools import cache
 import casadi as ca
 import sympy as sp
 
-from hybrid.geometry.surfaces import SURFACE_PARAMETERS, SurfaceSpec
+from hybrid.geometry.surfaces import SurfaceSpec
 
 from .casadi_backend import to_sx
 from .factor import reciprocal
@@ -29,40 +29,16 @@ X, Y, Z = sp.symbols("x y z", real=True)
 FRAME_TOL = 1e-6
 
 
-def _params(names: str) -> tuple:
-    return sp.symbols(names, real=True)
+def phi_of(spec: SurfaceSpec) -> sp.Expr:
+    """``phi`` of ``spec`` as a SymPy expression (a built-in surface's from its class's formula)."""
+    if spec.phi is not None:
+        return spec.phi
+    return _built_in(spec.formula, spec.parameters)
 
 
 @cache
-def builtin(kind: str) -> SurfaceSpec:
-    """The plane, sphere and cylinder, ``phi`` written out (their parameters named as
-    :data:`hybrid.geometry.surfaces.SURFACE_PARAMETERS` names them)."""
-    p = sp.Matrix([X, Y, Z])
-    if kind == "plane":
-        px, py, pz, nx, ny, nz = _params("p_x p_y p_z n_x n_y n_z")
-        n = sp.Matrix([nx, ny, nz])
-        phi = n.dot(p - sp.Matrix([px, py, pz])) / sp.sqrt(n.dot(n))
-        names = (px, py, pz, nx, ny, nz)
-    elif kind == "sphere":
-        cx, cy, cz, rho = _params("c_x c_y c_z rho")
-        d = p - sp.Matrix([cx, cy, cz])
-        phi, names = sp.sqrt(d.dot(d)) - rho, (cx, cy, cz, rho)
-    elif kind == "cylinder":
-        px, py, pz, ux, uy, uz, rho = _params("p_x p_y p_z u_x u_y u_z rho")
-        u = sp.Matrix([ux, uy, uz])
-        d = p - sp.Matrix([px, py, pz])
-        radial = d - u * (u.dot(d) / u.dot(u))
-        phi, names = sp.sqrt(radial.dot(radial)) - rho, (px, py, pz, ux, uy, uz, rho)
-    else:
-        raise ValueError(f"unknown surface kind {kind!r}")
-    spec = SurfaceSpec(kind, tuple(str(s) for s in names), phi)
-    assert spec.parameters == SURFACE_PARAMETERS[kind], "the runtime names the parameters otherwise"
-    return spec
-
-
-def phi_of(spec: SurfaceSpec) -> sp.Expr:
-    """``phi`` of ``spec`` as a SymPy expression (a built-in surface's is written out here)."""
-    return builtin(spec.kind).phi if spec.phi is None else spec.phi
+def _built_in(formula, parameters: tuple[str, ...]) -> sp.Expr:
+    return formula((X, Y, Z), sp.symbols(parameters, real=True), sp.sqrt)
 
 
 def phi_sx(spec: SurfaceSpec, p, theta) -> ca.SX:

@@ -172,11 +172,15 @@ def _gradient_and_hessian(surface, p):
 
 @cache
 def _implicit_derivatives(surface):
-    """``grad phi`` and its Hessian of an implicit surface, differentiated and compiled to NumPy by SymPy."""
+    """``grad phi`` and its Hessian of an implicit surface (or of any other surface's formula),
+    differentiated and compiled to NumPy by SymPy."""
     import sympy as sp
 
     xyz = sp.symbols("x y z", real=True)
-    phi = surface.phi.xreplace({sp.Symbol(k, real=True): v for k, v in surface.parameters.items()})
+    if hasattr(surface, "phi"):
+        phi = surface.phi.xreplace({sp.Symbol(k, real=True): v for k, v in surface.parameters.items()})
+    else:
+        phi = surface.formula(xyz, [sp.Float(v) for v in surface.as_array()], sp.sqrt)
     grad = [sp.diff(phi, s) for s in xyz]
     hess = [[sp.diff(g, s) for s in xyz] for g in grad]
     return sp.lambdify(xyz, grad, "numpy"), sp.lambdify(xyz, hess, "numpy")

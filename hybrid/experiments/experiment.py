@@ -26,7 +26,7 @@ from hybrid.control.schemes import SCHEMES
 from hybrid.errors import HybridError
 from hybrid.experiments.settings import START_TOL, RunSettings, check_common_types, check_timing, pressed
 from hybrid.geometry.paths import CirclePath, LinePath, Path
-from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere, Surface
+from hybrid.geometry.surfaces import SURFACE_KINDS, Surface
 from hybrid.geometry.task_axes import reference_direction
 from hybrid.models.chain import Chain, Joint
 from hybrid.models.planar_arm import Arm
@@ -345,4 +345,4 @@ def surface_from_dict(d: dict) -> Surface:
         from hybrid.geometry.implicit import ImplicitSurface  # SymPy: loaded only for a user's surface
 
         return ImplicitSurface(d["phi"], d["parameters"])
-    return {"circle": Circle, "plane": Plane, "sphere": Sphere, "cylinder": Cylinder}[kind](**d)
+    return SURFACE_KINDS[kind](**d)

@@ -20,26 +20,28 @@ from hybrid.errors import HybridError
 from hybrid.geometry.paths import CirclePath, LinePath
 from hybrid.validate import _finite, _point, unit_vector
 
-#: the parameters of the built-in surfaces, in the order of the generated C's ``surface`` array
-SURFACE_PARAMETERS = {"plane": ("p_x", "p_y", "p_z", "n_x", "n_y", "n_z"), "sphere": ("c_x", "c_y", "c_z", "rho"),
-                      "cylinder": ("p_x", "p_y", "p_z", "u_x", "u_y", "u_z", "rho")}
-
 
 @dataclass(frozen=True)
 class SurfaceSpec:
     """What the code generator needs of a surface: ``kind`` (it names the generated code), the
-    names of its run-time parameters, and ``phi`` (a SymPy expression of ``x, y, z`` and those
-    parameters), None for a built-in kind, whose ``phi`` the generator writes out itself."""
+    names of its run-time parameters, and ``phi``: a SymPy expression of ``x, y, z`` and those
+    parameters (a user's surface), or a built-in surface's ``formula(p, theta, sqrt)`` of the point
+    ``p`` (3) and the parameters ``theta`` (in ``as_array`` order), written once with the class."""
 
     kind: str
     parameters: tuple[str, ...]
     phi: object = None
     #: ``phi`` as canonical text (SymPy's ``srepr``), which identifies it
     phi_text: str = "built-in"
+    formula: object = None
 
     def key(self) -> str:
         """A stable text identifying the surface's expression (for cache keys)."""
         return f"{self.kind}:{','.join(self.parameters)}:{self.phi_text}"
+
+
+#: every surface class, by its kind (for files that name a surface by kind)
+SURFACE_KINDS: dict[str, type] = {}
 
 
 class Surface:
@@ -51,6 +53,23 @@ class Surface:
 
     kind: str
     dim: int
+    #: a built-in surface's run-time parameters, named in ``as_array`` order
+    parameters_named: tuple[str, ...] = ()
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        if isinstance(cls.__dict__.get("kind"), str):
+            SURFACE_KINDS[cls.kind] = cls
+
+    @staticmethod
+    def formula(p, theta, sqrt):
+        """``phi(p)`` from the point ``p`` (3 coordinates) and the parameters ``theta``, with ``sqrt``
+        the square root of the numbers used (SymPy's for the generator)."""
+        raise NotImplementedError
+
+    def spec(self) -> SurfaceSpec:
+        """What the code generator needs of this surface (see :class:`SurfaceSpec`)."""
+        return SurfaceSpec(self.kind, self.parameters_named, formula=self.formula)
 
     def project(self, p) -> np.ndarray | None:
         return None
@@ -146,9 +165,16 @@ class Plane(Surface):
     def as_array(self) -> np.ndarray:
         return np.array([*self.point, *self.normal])
 
+    parameters_named = ("p_x", "p_y", "p_z", "n_x", "n_y", "n_z")
+
+    @staticmethod
+    def formula(p, theta, sqrt):
+        n = theta[3:6]
+        return sum(n[i] * (p[i] - theta[i]) for i in range(3)) / sqrt(sum(v * v for v in n))
+
     def spec(self) -> SurfaceSpec:
         self._spatial()
-        return SurfaceSpec("plane", SURFACE_PARAMETERS["plane"])
+        return super().spec()
 
     def lift(self) -> Plane:
         return self if self.dim == 3 else Plane((*self.point, 0.0), (*self.normal, 0.0))
@@ -198,8 +224,11 @@ class Sphere(_Spatial):
         object.__setattr__(self, "center", _point("Sphere", "center", self.center, (3,)))
         _positive("Sphere", "radius", self.radius)
 
-    def spec(self) -> SurfaceSpec:
-        return SurfaceSpec("sphere", SURFACE_PARAMETERS["sphere"])
+    parameters_named = ("c_x", "c_y", "c_z", "rho")
+
+    @staticmethod
+    def formula(p, theta, sqrt):
+        return sqrt(sum((p[i] - theta[i]) ** 2 for i in range(3))) - theta[3]
 
     def as_array(self) -> np.ndarray:
         return np.array([*self.center, self.radius])
@@ -242,8 +271,14 @@ class Cylinder(_Spatial):
         object.__setattr__(self, "axis", unit_vector("Cylinder", "axis", _point("Cylinder", "axis", self.axis, (3,))))
         _positive("Cylinder", "radius", self.radius)
 
-    def spec(self) -> SurfaceSpec:
-        return SurfaceSpec("cylinder", SURFACE_PARAMETERS["cylinder"])
+    parameters_named = ("p_x", "p_y", "p_z", "u_x", "u_y", "u_z", "rho")
+
+    @staticmethod
+    def formula(p, theta, sqrt):
+        u = theta[3:6]
+        d = [p[i] - theta[i] for i in range(3)]
+        along = sum(u[i] * d[i] for i in range(3)) / sum(v * v for v in u)
+        return sqrt(sum((d[i] - u[i] * along) ** 2 for i in range(3))) - theta[6]
 
     def as_array(self) -> np.ndarray:
         return np.array([*self.point, *self.axis, self.radius])
