@@ -25,10 +25,14 @@ from dataclasses import dataclass
 from importlib.metadata import version
 from pathlib import Path
 
+from hybrid.native import checkout
 from hybrid.native.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from . import model
+from .casadi_backend import kernel_sources
+from .lanes import PRELUDE, lanes_function, libm_maps
 from .model import Kernel
+from .sympy_backend import kernel_body
 
 BACKENDS = ("sympy", "casadi")
 #: bumped whenever the emitted interface changes; recorded in every manifest and cache key
@@ -190,8 +194,6 @@ static int all_finite(const double *v, int n) {{
 }}
 """]
     if any(k.lanes for k in kernels):  # GCC and Clang (vector extensions); any other compiler: plain C
-        from .lanes import PRELUDE, libm_maps
-
         out.append(f"#if defined(__GNUC__)\n#define HYBRID_LANES 1\n{PRELUDE}\n{libm_maps()}#else\n"
                    "#define HYBRID_LANES 0\n#endif\n")
     for k in kernels:
@@ -256,8 +258,6 @@ def _lanes_batch(prefix: str, k: Kernel) -> str:
     """The ``_batch`` entry point of a ``lanes`` kernel: ``HL_W`` states per call of its lanes
     function, what the states share computed once; the last group is filled up with the last state,
     so every state takes the same arithmetic wherever it sits in the batch."""
-    from .lanes import lanes_function
-
     per = set(k.batched)
     fixed = [a for a in k.inputs if a.name not in per]
     states = [a for a in k.inputs if a.name in per]
@@ -317,14 +317,10 @@ def _core_signature(k: Kernel) -> str:
 
 
 def _sympy_cores(kernels: tuple[Kernel, ...]) -> str:
-    from .sympy_backend import kernel_body
-
     return "\n".join(f"{_core_signature(k)} {{\n{kernel_body(k)}\n}}\n" for k in kernels)
 
 
 def _casadi_cores(prefix: str, kernels: tuple[Kernel, ...]) -> str:
-    from .casadi_backend import kernel_sources
-
     code, table = kernel_sources(list(kernels), prefix)
     cores = [code]
     for k in kernels:
@@ -390,5 +386,6 @@ def fingerprint() -> str:
 
 
 def generated_dir() -> Path:
-    """The repository's ``generated/`` folder."""
-    return Path(__file__).resolve().parent.parent / "generated"
+    """The checkout's ``generated/`` folder; a HybridError when ``hybrid`` runs installed
+    (:func:`hybrid.native.checkout.generated_dir`)."""
+    return checkout.generated_dir()

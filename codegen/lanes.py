@@ -20,6 +20,7 @@ import math
 
 import casadi as ca
 
+from .casadi_backend import kernel_function
 from .kernel import Kernel
 
 PRELUDE = r"""#include <math.h>
@@ -266,8 +267,6 @@ def _program(kernel: Kernel, fixed: tuple[str, ...] | None):
     (``OP_INV``) and products: divisions are the slowest vector operations, and an invariant
     reciprocal leaves the loop altogether (the result changes within rounding).
     """
-    from .casadi_backend import kernel_function
-
     f = kernel_function(kernel, sympy_cse=True)
     ops, outputs, slot = [], [], {}
     for k in range(f.n_instructions()):

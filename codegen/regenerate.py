@@ -4,14 +4,18 @@ from __future__ import annotations
 
 import difflib
 import os
-import tempfile
 from pathlib import Path
 
+from hybrid.files import temporary
 from hybrid.native.stamp import is_hand_edited
 
 from .emit import BACKENDS, build_unit, generated_dir
 
 UPDATE_HINT = "run `python -m hybrid regenerate` and commit generated/"
+
+
+def _hint(target: Path | None) -> str:
+    return UPDATE_HINT if target is None else f"run `python -m hybrid regenerate --target {target}`"
 
 
 def expected_files(backends=BACKENDS) -> dict[str, str]:
@@ -30,23 +34,29 @@ def _diff(name: str, old: str, new: str, limit: int = 40) -> str:
 
 
 def check(target: Path | None = None) -> list[str]:
-    """Problems with the committed files (empty when they are up to date)."""
+    """Problems with the committed files, or with those in ``target`` (empty when they are up to date).
+
+    Reads nothing but the files it compares: a checkout whose ``generated/`` is empty (or gone)
+    reports each file as missing.
+    """
+    hint = _hint(target)
     target = target or generated_dir()
     problems = []
     for name, text in expected_files().items():
         path = target / name
         if not path.is_file():
-            problems.append(f"{name}: missing; {UPDATE_HINT}")
+            problems.append(f"{name}: missing; {hint}")
         elif (old := path.read_text()) != text:
             why = "hand-edited" if is_hand_edited(old) else "stale"
-            problems.append(f"{name}: {why}; {UPDATE_HINT}\n{_diff(name, old, text)}")
+            problems.append(f"{name}: {why}; {hint}\n{_diff(name, old, text)}")
     return problems
 
 
 def write(target: Path | None = None, force: bool = False) -> list[str]:
     """Regenerate every file; refuse (unless ``force``) to overwrite a hand-edited one.
 
-    Returns the names of the files that changed. Files are replaced atomically.
+    Returns the names of the files that changed. Files are replaced atomically, with the
+    permissions a plain ``open`` gives (the checkout's other users can read them).
     """
     target = target or generated_dir()
     target.mkdir(parents=True, exist_ok=True)
@@ -62,9 +72,12 @@ def write(target: Path | None = None, force: bool = False) -> list[str]:
         path = target / name
         if path.is_file() and path.read_text() == text:
             continue
-        fd, tmp = tempfile.mkstemp(dir=target, prefix=name + ".tmp")
-        with os.fdopen(fd, "w") as f:
-            f.write(text)
-        os.replace(tmp, path)
+        fd, tmp = temporary(path)
+        try:
+            with os.fdopen(fd, "w") as f:
+                f.write(text)
+            os.replace(tmp, path)
+        finally:
+            Path(tmp).unlink(missing_ok=True)
         changed.append(name)
     return changed

@@ -10,10 +10,13 @@ from __future__ import annotations
 import casadi as ca
 
 from . import rigid_body as rb
+from .controller_step import controller_kernels
 from .emit import Unit, assemble
 from .factor import cholesky_solve
 from .kernel import Arg, Kernel
+from .spatial_plant import plant_kernels
 from .surfaces import phi_of
+from .task_law import AXIS_NAMES, law_kernels, operational_space_kernels
 
 
 def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
@@ -51,8 +54,6 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
         batched=("q", "qd", "tau"))
     kernels = (terms, inverse, forward)
     if chain.n >= 6:  # a full-rank 6 x n Jacobian is possible: the operational space exists
-        from .task_law import operational_space_kernels
-
         kernels += operational_space_kernels(chain)
     if defaults is None:
         return kernels
@@ -76,8 +77,6 @@ def build_robot_unit(chain: rb.Chain, prefix: str, info: dict, defaults=None) ->
 
 def build_law_unit(chain: rb.Chain, spec, axes: tuple[int, ...], prefix: str, info: dict) -> Unit:
     """The task frame and decoupling law of ``chain`` on the surface ``spec`` for the task ``axes``."""
-    from .task_law import law_kernels
-
     return _task_unit(law_kernels(chain, spec, axes), "decoupling law", chain, spec, axes, prefix, info)
 
 
@@ -85,16 +84,12 @@ def build_controller_unit(chain: rb.Chain, spec, axes: tuple[int, ...], prefix: 
                           variant: dict) -> Unit:
     """One control sample (measurement, loops, law) of ``chain`` on ``spec`` for the task ``axes``;
     ``variant`` holds the compiled-in options (``desired_frame``, ``position_error``)."""
-    from .controller_step import controller_kernels
-
     return _task_unit(controller_kernels(chain, spec, axes, **variant), "controller step", chain, spec, axes,
                       prefix, info, variant)
 
 
 def build_plant_unit(chain: rb.Chain, spec, prefix: str, info: dict) -> Unit:
     """The 3-D experiment's plant (arm, sensor, contact on ``spec``) with its RK4 entry point."""
-    from .spatial_plant import plant_kernels
-
     return assemble(prefix, "casadi", plant_kernels(chain, spec),
                     f"plant of the 3-D experiment: the {chain.n}-joint arm '{info.get('robot', prefix)}', a 3-D "
                     f"elastic sensor and penalty contact with friction on a {spec.kind}",
@@ -115,8 +110,6 @@ def build_frame_unit(spec, prefix: str) -> Unit:
 
 def _task_unit(kernels, what: str, chain: rb.Chain, spec, axes, prefix: str, info: dict,
                variant: dict | None = None) -> Unit:
-    from .task_law import AXIS_NAMES
-
     extra = {"variant": variant} if variant else {}
     return assemble(prefix, "casadi", kernels,
                     f"{what} of the {chain.n}-joint arm '{info.get('robot', prefix)}' on a {spec.kind}, "

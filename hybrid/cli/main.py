@@ -15,6 +15,7 @@ from hybrid import bench
 from hybrid.cli import experiments as experiment_cli
 from hybrid.cli import sweep as sweep_cli
 from hybrid.errors import HybridError
+from hybrid.native import checkout
 from hybrid.native.standalone import generate
 from hybrid.native.units import generator
 
@@ -25,20 +26,22 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _regenerate(args) -> int:
-    regenerate = generator("regenerate")
-
     target = Path(args.target) if args.target else None
+    if target is None:
+        checkout.generated_dir()  # an installed package refuses here, before the generator loads SymPy
     if args.check and target is not None and not target.is_dir():
         raise HybridError(f"--target {target} is not a folder of generated files")
+    if target is not None and target.exists() and not target.is_dir():
+        raise HybridError(f"--target {target} is a file; give a folder")
+    regenerate = generator("regenerate")
+    where = "generated/" if target is None else str(target)
     if args.check:
         problems = regenerate.check(target)
         if problems:
-            print("generated/ is out of date:\n" + "\n".join(problems), file=sys.stderr)
+            print(f"{where} is out of date:\n" + "\n".join(problems), file=sys.stderr)
             return 1
-        print("generated/ is up to date")
+        print(f"{where} is up to date")
         return 0
-    if target is not None and target.exists() and not target.is_dir():
-        raise HybridError(f"--target {target} is a file; give a folder")
     try:
         changed = regenerate.write(target, force=args.force)
     except FileExistsError as exc:
@@ -46,7 +49,7 @@ def _regenerate(args) -> int:
     except OSError as exc:
         raise HybridError(f"cannot write into {target or 'generated/'} ({exc.strerror or exc}); "
                           "give a writable --target") from None
-    print(f"regenerated: {', '.join(changed)}" if changed else "generated/ was already up to date")
+    print(f"regenerated: {', '.join(changed)}" if changed else f"{where} was already up to date")
     return 0
 
 
@@ -70,10 +73,17 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--debug", action="store_true", help="show tracebacks")
     sub = p.add_subparsers(dest="command", required=True, parser_class=_Parser)
 
-    r = sub.add_parser("regenerate", help="rewrite generated/ from the symbolic models")
-    r.add_argument("--check", action="store_true", help="only compare; exit 1 when generated/ is stale")
+    r = sub.add_parser(
+        "regenerate", help="rewrite generated/ from the symbolic models (in a checkout)",
+        description="Rewrite generated/ of a checkout of the project's repository from codegen/. An installed "
+                    "package has no generated/ of its own to rewrite, so there it refuses unless --target names "
+                    "a folder.")
+    r.add_argument("--check", action="store_true",
+                   help="only compare; exit 1 when a file is missing, stale or edited by hand")
     r.add_argument("--force", action="store_true", help="overwrite generated files edited by hand")
-    r.add_argument("--target", help="write into this folder instead of generated/")
+    r.add_argument("--target", metavar="DIR",
+                   help="write into (with --check: compare) DIR instead of the checkout's generated/; "
+                        "works from an installed package too")
     r.set_defaults(func=_regenerate)
 
     g = sub.add_parser("generate", help="write standalone C99 (.c, .h, manifest .json) for a URDF arm")

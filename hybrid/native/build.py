@@ -31,6 +31,7 @@ import cffi
 
 from hybrid import files
 from hybrid.errors import NativeBuildError
+from hybrid.native import checkout
 from hybrid.native.stamp import is_hand_edited
 
 log = logging.getLogger("hybrid")
@@ -54,9 +55,12 @@ def processor() -> str:
 
 
 def source_dir() -> Path:
-    """Where the generated C lives: ``generated/`` of a checkout, else the installed copy."""
+    """Where the generated C lives: ``generated/`` of the checkout this package runs from, else the
+    installed copy (a folder named ``generated`` that merely sits beside an installed package is
+    not the project's)."""
     package = Path(__file__).resolve().parent.parent
-    for candidate in (package.parent / "generated", package / "_generated"):
+    top = checkout.root()
+    for candidate in ([top / "generated"] if top else []) + [package / "_generated"]:
         if (candidate / "hybrid_sympy.c").is_file():
             return candidate
     raise NativeBuildError(

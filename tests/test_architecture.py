@@ -1,0 +1,341 @@
+"""The package's shape: a light import, no import cycles, and ``regenerate`` only where it belongs.
+
+- ``import hybrid`` loads neither the generator (SymPy, CasADi) nor the optional heavy libraries,
+  and opens no file of the project's other than the sources of the modules it imports;
+- module-level imports among ``hybrid.*`` (``hybrid.codegen`` included) form no cycle, and an
+  import inside a function is one of a short list, each with its reason;
+- ``regenerate`` rebuilds a checkout's emptied ``generated/`` byte for byte, and an installed
+  package refuses it (unless given a folder) without writing anything.
+"""
+
+from __future__ import annotations
+
+import ast
+import json
+import os
+import shutil
+import stat
+import subprocess
+import sys
+from collections import Counter
+from importlib.metadata import PackageNotFoundError, version
+from pathlib import Path
+
+import pytest
+
+from hybrid.native.build import cache_dir
+
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python 3.10
+    import tomli as tomllib
+
+ROOT = Path(__file__).resolve().parent.parent
+GENERATED = ROOT / "generated"
+#: the generator and the libraries only some commands need: none may load with ``import hybrid``
+HEAVY = ("sympy", "casadi", "hybrid.codegen", "pandas", "matplotlib", "mujoco")
+REFUSAL = "error: regenerate needs a checkout of the project's repository"
+
+#: Imports of the project's own modules made inside a function, and why each is not at module level.
+LAZY_IMPORTS = {
+    ("hybrid.cli.experiments", "hybrid.plots"): "matplotlib loads only for the commands that draw",
+    ("hybrid.cli.sweep", "hybrid.plots"): "matplotlib loads only when a sweep draws its heatmaps",
+}
+
+
+def _run(args: list[str], cwd: Path, **env: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, *args], cwd=cwd, env={**os.environ, **env}, capture_output=True,
+                          text=True, timeout=300)
+
+
+def _committed() -> dict[str, bytes]:
+    return {p.name: p.read_bytes() for p in sorted(GENERATED.iterdir()) if p.suffix in (".c", ".h", ".json")}
+
+
+# ------------------------------------------------------------------ import hybrid
+
+_IMPORT_PROBE = r"""
+import json, os, sys
+
+opened = []
+
+def audit(event, args):
+    if event == "open" and isinstance(args[0], (str, bytes)):  # an int is a descriptor already open
+        opened.append(os.path.realpath(os.fsdecode(args[0])))
+
+sys.addaudithook(audit)
+import hybrid
+
+code = [getattr(m, "__file__", None) for m in list(sys.modules.values())]
+print(json.dumps({"modules": sorted(sys.modules), "opened": opened, "package": hybrid.__file__,
+                  "code": [f for f in code if f]}))
+"""
+
+
+def test_import_hybrid_loads_no_generator_and_reads_no_data(tmp_path):
+    # No bytecode: with an empty cache prefix and -B, the import system reads each module's source
+    # once and writes nothing, so any other open of a project file (its data, generated/, pyproject.toml,
+    # the build cache, a module's source read as text as the generator's fingerprint does) is a read.
+    probe = _run(["-B", "-c", _IMPORT_PROBE], ROOT, PYTHONPYCACHEPREFIX=str(tmp_path / "no-bytecode"))
+    assert probe.returncode == 0, probe.stderr
+    seen = json.loads(probe.stdout)
+    assert Path(seen["package"]).resolve().parent == ROOT / "hybrid"  # this checkout's runtime was probed
+
+    loaded = [h for h in HEAVY if any(m == h or m.startswith(h + ".") for m in seen["modules"])]
+    assert not loaded, f"import hybrid loads {loaded}"
+
+    ours = [ROOT / "hybrid", ROOT / "codegen", GENERATED, ROOT / "pyproject.toml", ROOT / "README.md",
+            cache_dir().resolve()]
+    opened = Counter(Path(p) for p in seen["opened"] if any(Path(p) == o or o in Path(p).parents for o in ours))
+    assert opened[ROOT / "hybrid" / "__init__.py"] == 1, "the probe saw no import of hybrid"  # else: vacuous
+    sources = {Path(f).resolve() for f in seen["code"] if f.endswith(".py")}
+    reads = sorted(f"{p} ({n}x)" for p, n in opened.items() if p not in sources or n > 1)
+    assert not reads, f"import hybrid opens {reads}"
+
+
+# ------------------------------------------------------------------ the import graph
+
+
+def _packages() -> dict[str, Path]:
+    """Each package of the project and its folder, as pyproject.toml maps them (``hybrid.codegen`` is
+    ``codegen/``)."""
+    config = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]
+    mapped = {name: ROOT / folder for name, folder in config.get("package-dir", {}).items()}
+    return {name: mapped.get(name, ROOT / name.replace(".", "/")) for name in config["packages"]}
+
+
+def _modules() -> dict[str, Path]:
+    """Every module of the project by its import name."""
+    out = {}
+    for package, folder in _packages().items():
+        for path in sorted(folder.glob("*.py")):
+            out[package if path.stem == "__init__" else f"{package}.{path.stem}"] = path
+    return out
+
+
+def _targets(node: ast.Import | ast.ImportFrom, module: str, is_package: bool, modules) -> tuple[set, set]:
+    """``(project modules, unresolved project names)`` that the statement imports."""
+    if isinstance(node, ast.Import):
+        names = [a.name for a in node.names]
+    else:
+        base = node.module or ""
+        if node.level:  # relative to the module's package (an __init__ is its own package)
+            package = module if is_package else module.rpartition(".")[0]
+            for _ in range(node.level - 1):
+                package = package.rpartition(".")[0]
+            base = f"{package}.{base}" if node.module else package
+        # `from pkg import submodule` imports the submodule; `from pkg import name`, the package
+        names = [f"{base}.{a.name}" if f"{base}.{a.name}" in modules else base for a in node.names]
+    found = {n for n in names if n in modules and n != module}
+    ours = {n for n in names if n.split(".")[0] in ("hybrid", "codegen")}
+    return found, ours - set(modules)
+
+
+def _import_graph() -> tuple[dict[str, set], dict[tuple[str, str], int], list[str]]:
+    """``(module-level imports, function-level imports with their line, unresolved names)``.
+
+    Module level is whatever runs when the module is imported: top-level statements and those nested in
+    ``if`` (``TYPE_CHECKING`` too), ``try``, ``with`` and class bodies, but not in functions.
+    """
+    modules = _modules()
+    graph, lazy, unresolved = {}, {}, []
+    for module, path in modules.items():
+        graph[module] = set()
+
+        def visit(node, in_function, module=module, path=path):
+            for child in ast.iter_child_nodes(node):
+                if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                    visit(child, True)
+                elif isinstance(child, (ast.Import, ast.ImportFrom)):
+                    found, missing = _targets(child, module, path.name == "__init__.py", modules)
+                    unresolved.extend(f"{path.relative_to(ROOT)}:{child.lineno}: {n}" for n in sorted(missing))
+                    if in_function:
+                        for t in found:
+                            lazy.setdefault((module, t), child.lineno)
+                    else:
+                        graph[module] |= found
+                else:
+                    visit(child, in_function)
+
+        visit(ast.parse(path.read_text(), str(path)), False)
+    return graph, lazy, unresolved
+
+
+def _cycle(graph: dict[str, set]) -> list[str] | None:
+    """One cycle of ``graph`` as a path that ends where it starts, or None."""
+    state: dict[str, int] = {}  # 1: on the current path, 2: done
+    path: list[str] = []
+
+    def visit(node):
+        state[node] = 1
+        path.append(node)
+        for nxt in sorted(graph.get(node, ())):
+            if state.get(nxt) == 1:
+                return path[path.index(nxt):] + [nxt]
+            if nxt not in state and (found := visit(nxt)):
+                return found
+        state[node] = 2
+        path.pop()
+        return None
+
+    for node in sorted(graph):
+        if node not in state and (found := visit(node)):
+            return found
+    return None
+
+
+def test_cycle_finder_finds_a_cycle():
+    assert _cycle({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == ["a", "b", "c", "a"]
+    assert _cycle({"a": {"b", "c"}, "b": {"c"}, "c": set()}) is None
+
+
+def test_module_level_imports_form_no_cycle():
+    folders = {p.parent for top in ("hybrid", "codegen") for p in (ROOT / top).rglob("__init__.py")}
+    unlisted = sorted(str(f.relative_to(ROOT)) for f in folders - set(_packages().values()))
+    assert not unlisted, f"packages missing from pyproject's [tool.setuptools] packages: {unlisted}"
+    graph, _, unresolved = _import_graph()
+    assert not unresolved, f"imports of project modules that do not exist: {unresolved}"
+    # the graph is the project's: both packages, relative imports resolved
+    assert {"hybrid", "hybrid.cli.main", "hybrid.codegen.emit", "hybrid.codegen.regenerate"} <= set(graph)
+    assert {"hybrid.codegen.emit", "hybrid.native.stamp"} <= graph["hybrid.codegen.regenerate"]
+    cycle = _cycle(graph)
+    assert cycle is None, "module-level import cycle: " + " -> ".join(cycle)
+
+
+def test_imports_inside_functions_are_the_listed_ones():
+    _, lazy, _ = _import_graph()
+    unlisted = sorted(f"{m} imports {t} in a function (line {line})" for (m, t), line in lazy.items()
+                      if (m, t) not in LAZY_IMPORTS)
+    assert not unlisted, ("move these imports to module level, or add them to LAZY_IMPORTS with the reason: "
+                          + "; ".join(unlisted))
+    stale = sorted(f"{m} -> {t}" for m, t in set(LAZY_IMPORTS) - set(lazy))
+    assert not stale, f"LAZY_IMPORTS lists imports that are gone: {stale}"
+
+
+# ------------------------------------------------------------------ regenerate in a checkout
+
+#: Runs ``python -m hybrid`` with the copy's own generator. ``hybrid.codegen`` is ``codegen/`` only by
+#: pyproject's package-dir mapping, which the editable install applies with a finder at the end of
+#: ``sys.meta_path`` that points at this checkout: the copy's ``hybrid`` comes first on the path, yet its
+#: ``hybrid.codegen`` would still be ours. This finder, ahead of all, applies the same mapping to the copy
+#: (its submodules then follow the package's ``__path__``, into the copy too).
+_IN_COPY = """
+import runpy, sys
+from importlib.machinery import PathFinder
+
+root = sys.argv.pop(1)
+
+class CopyLayout:
+    @staticmethod
+    def find_spec(name, path=None, target=None):
+        return PathFinder.find_spec(name, [root]) if name == "hybrid.codegen" else None
+
+sys.meta_path.insert(0, CopyLayout)
+runpy.run_module("hybrid", run_name="__main__", alter_sys=True)
+"""
+
+
+def _copy_checkout(dest: Path, *extra: str) -> Path:
+    dest.mkdir()
+    for name in ("codegen", "generated", "hybrid", *extra):
+        shutil.copytree(ROOT / name, dest / name, ignore=shutil.ignore_patterns("__pycache__"))
+    for name in ("pyproject.toml", "README.md"):
+        shutil.copy2(ROOT / name, dest / name)
+    return dest
+
+
+def test_regenerate_rebuilds_an_emptied_checkout_byte_for_byte(tmp_path):
+    committed = _committed()
+    assert {"hybrid_sympy.c", "hybrid_sympy.h", "hybrid_casadi.json"} <= set(committed)
+    copy = _copy_checkout(tmp_path / "checkout")
+    for path in (copy / "generated").iterdir():
+        path.unlink()
+
+    def regenerate(*args):
+        return _run(["-c", _IN_COPY, str(copy), "regenerate", *args], copy, PYTHONPATH=str(copy))
+
+    check = regenerate("--check")
+    assert check.returncode == 1, check.stderr
+    assert "Traceback" not in check.stderr
+    for name in committed:
+        assert f"{name}: missing; run `python -m hybrid regenerate`" in check.stderr
+
+    done = regenerate()
+    assert done.returncode == 0, done.stderr
+    written = {p.name: p.read_bytes() for p in sorted((copy / "generated").iterdir())}
+    assert written.keys() == committed.keys()
+    assert [n for n in committed if written[n] != committed[n]] == []
+    mask = os.umask(0)
+    os.umask(mask)
+    modes = {p.name: stat.S_IMODE(p.stat().st_mode) for p in (copy / "generated").iterdir()}
+    assert set(modes.values()) == {0o666 & ~mask}, modes  # readable as any file this user writes
+
+    shutil.rmtree(copy / "generated")  # the folder itself may go too
+    assert regenerate().returncode == 0
+    assert regenerate("--check").returncode == 0
+    assert {p.name: p.read_bytes() for p in (copy / "generated").iterdir()} == committed
+
+
+# ------------------------------------------------------------------ an installed package
+
+
+def _can_build_wheels() -> bool:
+    """setuptools builds wheels itself from 70.1; before, it needs the ``wheel`` package."""
+    try:
+        major, minor = (int(x) for x in version("setuptools").split(".")[:2])
+    except (PackageNotFoundError, ValueError):
+        return False
+    try:
+        return (major, minor) >= (70, 1) or bool(version("wheel"))
+    except PackageNotFoundError:
+        return False
+
+
+def _listing(folder: Path) -> dict[str, tuple[int, int]]:
+    return {str(p.relative_to(folder)): (p.stat().st_size, p.stat().st_mtime_ns) for p in folder.rglob("*")}
+
+
+def test_installed_package_refuses_regenerate_and_writes_nothing(tmp_path):
+    if not _can_build_wheels():
+        pytest.skip("building a wheel without network needs setuptools>=70.1: pip install -e '.[test]'")
+    source = _copy_checkout(tmp_path / "source")  # the build writes build/ and *.egg-info into its source
+    pip = ["-m", "pip", "--disable-pip-version-check", "-q"]
+    built = _run([*pip, "wheel", "--no-deps", "--no-build-isolation", "--no-index", "-w", str(tmp_path / "dist"),
+                  str(source)], tmp_path)
+    assert built.returncode == 0, built.stderr
+    (wheel,) = (tmp_path / "dist").glob("*.whl")
+    site = tmp_path / "site"
+    installed = _run([*pip, "install", "--no-deps", "--no-index", "--no-compile", "--target", str(site),
+                      str(wheel)], tmp_path)
+    assert installed.returncode == 0, installed.stderr
+    assert (site / "hybrid" / "codegen" / "regenerate.py").is_file()
+    assert (site / "hybrid" / "_generated" / "hybrid_sympy.c").is_file()
+
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    env = {"PYTHONPATH": str(site), "PYTHONDONTWRITEBYTECODE": "1"}  # the installed copy, and no .pyc
+    before = _listing(site)
+    for args in (["regenerate"], ["regenerate", "--check"], ["regenerate", "--force"]):
+        run = _run(["-m", "hybrid", *args], elsewhere, **env)
+        assert run.returncode == 2, (args, run.stdout, run.stderr)
+        assert run.stdout == ""
+        (line,) = run.stderr.splitlines()
+        assert line.startswith(REFUSAL), line
+        assert str(site / "hybrid") in line  # the installed copy ran, and says where it is
+    assert _listing(site) == before
+    assert list(elsewhere.iterdir()) == []
+
+    # a folder given explicitly is the user's to write into, from an installed package too
+    out = tmp_path / "out"
+    run = _run(["-m", "hybrid", "regenerate", "--target", str(out)], elsewhere, **env)
+    assert run.returncode == 0, run.stderr
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == _committed()
+    run = _run(["-m", "hybrid", "regenerate", "--check", "--target", str(out)], elsewhere, **env)
+    assert run.returncode == 0, run.stderr
+    assert _listing(site) == before
+
+    # the runtime compiles the installed C, even beside a folder that merely looks like a checkout's
+    (site / "generated").mkdir()
+    shutil.copy2(site / "hybrid" / "_generated" / "hybrid_sympy.c", site / "generated")
+    probe = _run(["-c", "from hybrid.native import build; print(build.source_dir())"], elsewhere, **env)
+    assert probe.stdout.strip() == str(site / "hybrid" / "_generated"), probe.stderr
