@@ -16,7 +16,7 @@ from .factor import cholesky_solve
 from .kernel import Arg, Kernel
 from .spatial_plant import plant_kernels
 from .surfaces import phi_of
-from .task_law import AXIS_NAMES, law_kernels, operational_space_kernels
+from .task_law import AXIS_NAMES, frame_kernel, law_kernels, operational_space_kernels
 
 
 def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
@@ -100,8 +100,6 @@ def build_plant_unit(chain: rb.Chain, spec, prefix: str, info: dict) -> Unit:
 
 def build_frame_unit(spec, prefix: str) -> Unit:
     """The task frame on the surface ``spec`` alone (no robot): ``R_L``, ``R_L'`` and the normal."""
-    from .task_law import frame_kernel
-
     return assemble(prefix, "casadi", (frame_kernel(spec),), f"task frame on a {spec.kind}",
                     info={"surface": {"kind": spec.kind, "parameters": list(spec.parameters),
                                       "phi": str(phi_of(spec))}},

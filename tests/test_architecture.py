@@ -40,6 +40,8 @@ REFUSAL = "error: regenerate needs a checkout of the project's repository"
 LAZY_IMPORTS = {
     ("hybrid.cli.experiments", "hybrid.plots"): "matplotlib loads only for the commands that draw",
     ("hybrid.cli.sweep", "hybrid.plots"): "matplotlib loads only when a sweep draws its heatmaps",
+    ("hybrid.experiments.experiment", "hybrid.geometry.implicit"):
+        "SymPy loads only when a file names a surface a user wrote down",
 }
 
 
@@ -339,3 +341,15 @@ def test_installed_package_refuses_regenerate_and_writes_nothing(tmp_path):
     shutil.copy2(site / "hybrid" / "_generated" / "hybrid_sympy.c", site / "generated")
     probe = _run(["-c", "from hybrid.native import build; print(build.source_dir())"], elsewhere, **env)
     assert probe.stdout.strip() == str(site / "hybrid" / "_generated"), probe.stderr
+
+
+def test_a_warm_run_needs_neither_sympy_nor_casadi(tmp_path):
+    """Once a run's units are in the cache, running it loads no part of the generator."""
+    code = ("import sys, hybrid; hybrid.simulate(hybrid.paper_experiment(duration=0.02)); "
+            "hybrid.simulate(hybrid.tracing_experiment(duration=0.02)); "
+            "print(sorted(m for m in ('sympy', 'casadi', 'hybrid.codegen') if m in sys.modules))")
+    first = _run(["-c", code], tmp_path)  # builds what the cache lacks (it may load the generator)
+    assert first.returncode == 0, first.stderr
+    again = _run(["-c", code], tmp_path)
+    assert again.returncode == 0, again.stderr
+    assert again.stdout.strip() == "[]", f"a warm run loaded {again.stdout.strip()}"
