@@ -25,7 +25,6 @@ from hybrid.control.law import DecouplingLaw, decoupling_law
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES, Khatib, Scheme, TaskDecoupling
-from hybrid.control.spatial_law import SpatialDecouplingLaw
 from hybrid.errors import (
     HybridError,
     NativeBuildError,
@@ -70,7 +69,7 @@ __all__ = [
     "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw", "Experiment",
     "Gains", "HybridError", "ImplicitSurface", "Khatib", "LinePath", "Measurement", "NativeBuildError",
     "NonFiniteError", "OperationalSpace", "Plane", "Reference", "Robot", "SCHEMES", "Scheme", "Sensor",
-    "SimulationError", "SimulationResult", "SingularConfigurationError", "SpatialDecouplingLaw", "Sphere", "Step",
+    "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "Step",
     "TaskDecoupling", "TaskFrameError", "URDFError", "arm_terms", "decoupling_law", "metrics", "operational_space",
     "paper_arm", "paper_experiment", "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",
 ]

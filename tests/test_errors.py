@@ -33,7 +33,7 @@ def law():
 @pytest.mark.parametrize("args, match", [
     (([1.0, 2.0, 3.0], *GOOD[1:]), "q must have shape"),
     ((GOOD[0], "fast", *GOOD[2:]), "qdot must be numbers"),
-    ((*GOOD[:2], [[0.1, 1.0]] * 3, GOOD[3]), "same shape"),
+    ((*GOOD[:2], [[0.1, 1.0]] * 3, GOOD[3]), r"a must have shape \(2,\), got \(3, 2\)"),
     ((*GOOD[:3], [1j, 2.0]), "Fc must be real"),
     ((np.zeros((0, 2)), *GOOD[1:]), "N >= 1"),
 ])

@@ -8,6 +8,7 @@ from conftest import pinocchio_terms, well_conditioned_states
 
 import hybrid
 from hybrid import reference as ref
+from hybrid.native import units
 
 pin = pytest.importorskip("pinocchio")
 
@@ -96,12 +97,16 @@ def test_task_frame_derivative_by_finite_differences(rng, robots, surface):
 
 
 def test_planar_arm_through_the_general_pipeline_equals_the_planar_law(rng):
+    """The two derivations of one law: the closed form (SymPy, from the kinetic energy) and the
+    recursive rigid-body algorithms (CasADi, from the chain)."""
     arm = hybrid.paper_arm()
     robot = hybrid.Robot.planar(arm)
     for surf in (hybrid.Circle((0.5, 0.0), 0.2), hybrid.Plane((0.4, 0.0), (-1.0, 0.3))):
         for curvature in (False, True):
-            planar = hybrid.decoupling_law(arm, surf, curvature=curvature)
-            general = hybrid.decoupling_law(robot, surf, curvature=curvature, axes="planar")
+            planar = hybrid.decoupling_law(robot, surf, curvature=curvature)
+            assert planar.backend == "sympy" and planar.wrench_size == 2  # the closed form where it applies
+            general = hybrid.decoupling_law(robot, surf, curvature=curvature, backend="rigid_body")
+            assert general.wrench_size == 6
             q = np.column_stack([rng.uniform(-np.pi, np.pi, 500), rng.uniform(0.3, np.pi - 0.3, 500)])
             qd, a, Fc2 = rng.normal(0, 1, (500, 2)), rng.normal(0, 2, (500, 2)), rng.normal(0, 10, (500, 2))
             Fc = np.column_stack([Fc2, np.zeros((500, 4))])
@@ -173,7 +178,7 @@ def test_every_output_element_is_written(rng, robots):
               "surface": SURFACES["torus"].as_array(), "e": np.array([0.0, 0.0, 1.0]), "opts": np.ones(1),
               "p": np.array([0.5, 0.1, 0.35]), "pd": rng.normal(size=3)}
     functions = [robot.unit.function(f["name"]) for f in robot.unit.manifest["functions"]]
-    functions += [law._law, law._frame]
+    functions += [law._fn, units.frame_unit(SURFACES["torus"].spec()).function("task_frame")]
     for fn in functions:
         ins = [np.ascontiguousarray(values[name], dtype=float) for name, _ in fn.inputs]
         outs = [np.full(size, np.nan) for _, size, _ in fn.outputs]

@@ -1,5 +1,23 @@
-"""The decoupling law ``F*(r, r', a)`` of the paper's planar arm, evaluated by the compiled C; and
-:func:`decoupling_law`, which builds the law of any arm."""
+"""The decoupling law ``F*(r, r', a)`` of any arm on any surface, evaluated by generated C.
+
+``F* = Lambda (R^T (a - R' v) - J' q') + Jbar^T n - F_c`` (``Lambda = (J B^-1 J^T)^-1``,
+``Jbar^T = Lambda J B^-1``) makes the task axes' accelerations ``y' = R v' + R' v`` equal the
+commanded ``a``; the joint torques are ``tau = J^T F* + (I - J^T Jbar^T) tau0``, a redundant
+arm's ``tau0`` acting in the task's null space only. One :class:`DecouplingLaw` serves every
+arm, from one of two derivations of the same equations:
+
+- ``backend="rigid_body"``: the recursive rigid-body algorithms (CasADi), generated for the
+  robot's kinematic structure, the surface and the task axes: ``F*`` is the wrench
+  ``(f, m)`` [N, N m] in base axes, ``F_c`` the measured wrench at the tip;
+- ``backend="sympy"`` or ``"casadi"``: the paper's planar arm in closed form (its committed
+  units, printed by SymPy or by CasADi from one SymPy derivation), for a robot with a
+  ``closed_form`` on a planar surface with the planar task axes ``(t1, n)``: ``F*`` and ``F_c`` are
+  the force in the arm's plane [N].
+
+By default the closed form runs where it applies, the rigid-body derivation everywhere else.
+Parameters (inertias, the surface's) are run-time inputs: another arm of the same structure, or
+another surface of the same kind, needs no recompilation.
+"""
 
 from __future__ import annotations
 
@@ -8,126 +26,179 @@ from functools import partial
 
 import numpy as np
 
-from hybrid.control.spatial_law import spatial_law
-from hybrid.errors import HybridError
-from hybrid.geometry.surfaces import Circle, Plane
-from hybrid.models.planar_arm import Arm, check_arm
+from hybrid.errors import HybridError, NonFiniteError
+from hybrid.geometry.frames import task_frame
+from hybrid.geometry.surfaces import Surface
+from hybrid.geometry.task_axes import AXES, check_axes, reference_direction, spatial_surface
+from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot
-from hybrid.native import binding
-from hybrid.native.binding import as_states
-from hybrid.native.units import PLANAR_SINGULAR, planar_unit
+from hybrid.native import units
+from hybrid.native.binding import is_batch
 from hybrid.validate import SINGULAR_TOL, check_singular_tol
 
-
-def status_error(status: int, where: str, **inputs) -> HybridError:
-    """The exception for a planar unit's status code, naming the inputs that caused it."""
-    return binding.status_error(status, where, PLANAR_SINGULAR, **inputs)
-
-
-def check_surface(surface) -> str:
-    """The kind of a planar surface (the paper's arm moves in a plane)."""
-    if not isinstance(surface, (Circle, Plane)) or surface.dim != 2:
-        raise HybridError(f"the planar arm needs a hybrid.Circle or hybrid.Plane in 2-D, got {surface!r:.100}; "
-                          "for a 3-D surface use a hybrid.Robot")
-    return surface.kind
+#: the derivations a law can run: the rigid-body algorithms, or the planar arm's committed closed form
+BACKENDS = ("rigid_body", "sympy", "casadi")
 
 
 @dataclass(frozen=True)
 class DecouplingLaw:
-    """Compiled task-space decoupling law for one arm model and one surface.
+    """The compiled decoupling law of ``robot`` on ``surface`` for the task ``axes``.
 
-    ``law(q, qdot, a, Fc)`` gives ``F*`` [N] (base frame), ``law.torque(...)`` gives
-    ``tau = J^T F*`` [N m]. ``q`` [rad], ``qdot`` [rad/s], ``a`` the task-frame acceleration
-    (tangent, normal) [m/s^2], ``Fc`` the measured contact force on the robot (base frame)
-    [N]; each of shape ``(2,)``, or ``(N, 2)`` for N states in one native call.
+    ``law(q, qdot, a, Fc)`` gives ``F*``, ``law.torque(q, qdot, a, Fc, tau0=None)`` the joint
+    torques [N m or N], ``law.evaluate(...)`` both. ``q`` [rad or m] and ``qdot`` have one entry per
+    joint, ``a`` one task acceleration per axis [m/s^2 or rad/s^2, task frame], ``Fc`` the measured
+    contact wrench on the robot (``wrench_size`` entries, base axes); or N rows of each for N states
+    in one native call (``out=`` then takes the caller's arrays).
     """
 
-    arm: Arm
-    surface: Circle | Plane
+    robot: Robot
+    surface: Surface
     curvature: bool = False
-    backend: str = "sympy"
+    reference: tuple[float, float, float] = (0.0, 0.0, 1.0)
+    axes: tuple[int, ...] | str | None = None
+    backend: str | None = None
     singular_tol: float = SINGULAR_TOL
 
     def __post_init__(self):
-        check_arm(self.arm)
-        kind = check_surface(self.surface)
-        check_singular_tol("decoupling_law", self.singular_tol)
-        # frozen: the compiled buffers below must keep matching the fields
         init = partial(object.__setattr__, self)
-        fn = planar_unit(self.backend).function(f"decoupling_law_{kind}")
+        if isinstance(self.robot, Arm):  # the paper's parameters stand for its arm, in closed form
+            if not (isinstance(self.surface, Surface) and self.surface.dim == 2):
+                raise HybridError(f"the planar arm needs a hybrid.Circle or hybrid.Plane in 2-D, got "
+                                  f"{self.surface!r:.100}; for a 3-D surface use a hybrid.Robot")
+            init("robot", Robot.planar(self.robot))
+        if not isinstance(self.robot, Robot):
+            raise HybridError(f"robot must be a hybrid.Robot (or the paper's hybrid.Arm), got "
+                              f"{type(self.robot).__name__}")
+        if not isinstance(self.curvature, bool):
+            raise HybridError(f"curvature must be True or False, got {self.curvature!r}")
+        check_singular_tol("decoupling_law", self.singular_tol)
+        init("reference", tuple(reference_direction(self.reference)))
+        init("axes", check_axes(self.robot, self.axes))
+        closed = self._closed_form_applies()
+        backend = self.backend if self.backend is not None else ("sympy" if closed else "rigid_body")
+        if backend not in BACKENDS:
+            raise HybridError(f"backend must be one of {', '.join(BACKENDS)}, got {backend!r:.40}")
+        if backend != "rigid_body" and not closed:
+            raise HybridError(f"backend {backend!r} is the paper's planar arm in closed form: it needs "
+                              "hybrid.Robot.planar(arm) (or a hybrid.Arm) on a hybrid.Circle or a 2-D hybrid.Plane, "
+                              "planar task axes and reference (0, 0, 1); use backend='rigid_body'")
+        init("backend", backend)
+        check = self.robot.closed_form if backend != "rigid_body" else None
+        if backend == "rigid_body":
+            spatial = spatial_surface(self.surface)
+            fn = units.law_unit(self.robot.chain, self.robot.name, spatial.spec(), self.axes).function(
+                "decoupling_law")
+            params = (self.robot.as_array(), spatial.as_array(), np.array(self.reference))
+            tail = (np.zeros(self.robot.n),)  # tau0
+        else:
+            fn = units.planar_unit(backend).function(f"decoupling_law_{self.surface.kind}")
+            params, tail = (check.as_array(), self.surface.as_array()), ()
         init("_fn", fn)
-        init("_params", (self.arm.as_array(), self.surface.as_array(), np.array([1.0 if self.curvature else 0.0])))
-        # one state from NumPy arrays skips cffi's per-array conversion (see hybrid/fastcall.c)
-        fast, handle = fn.fast_bind(4, *self._params, singular_tol=self.singular_tol)
+        init("_params", (*params, np.array([1.0 if self.curvature else 0.0])))
+        init("_tail", tail)
+        # one state from NumPy arrays skips cffi's per-array conversion (see hybrid/native/fastcall.c)
+        fast, handle = fn.fast_bind(4 + len(tail), *self._params, singular_tol=self.singular_tol)
         init("_fast", fast)
         init("_binding", handle)
 
+    def _closed_form_applies(self) -> bool:
+        return (self.robot.closed_form is not None and isinstance(self.surface, Surface) and self.surface.dim == 2
+                and self.axes == AXES["planar"] and self.reference == (0.0, 0.0, 1.0))
+
     def __reduce__(self):
         # the compiled handles do not pickle: a copy is built again from the settings
-        return (type(self), (self.arm, self.surface, self.curvature, self.backend, self.singular_tol))
+        return (type(self), (self.robot, self.surface, self.curvature, self.reference, self.axes, self.backend,
+                             self.singular_tol))
 
-    def evaluate(self, q, qdot, a, Fc, out: tuple | None = None) -> tuple[np.ndarray, np.ndarray]:
-        """``(F*, tau)`` for one state (shape ``(2,)``) or N states (shape ``(N, 2)``); for N states
-        ``out = (F, tau)`` are the caller's arrays to write (either may be None)."""
+    @property
+    def arm(self) -> Arm | None:
+        """The planar arm's parameters (its closed form), or None."""
+        return self.robot.closed_form
+
+    @property
+    def m(self) -> int:
+        """Number of task axes."""
+        return len(self.axes)
+
+    @property
+    def wrench_size(self) -> int:
+        """Entries of ``F_c`` and ``F*``: 6 (force and moment, base axes), or 2 for the closed form (the
+        force in the arm's plane)."""
+        return 6 if self.backend == "rigid_body" else 2
+
+    def evaluate(self, q, qdot, a, Fc, tau0=None, out: tuple | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """``(F*, tau)`` for one state or N states; for N states ``out = (F, tau)`` are the caller's
+        arrays to write (either may be None)."""
         if out is not None:
             if not isinstance(out, (tuple, list)) or len(out) != 2:
-                raise HybridError("out must be (F, tau): two arrays of shape (N, 2), either may be None")
-            return self._checked(q, qdot, a, Fc, dict(zip(("F", "tau"), out)))
-        got = self._fast(self._binding, -1, q, qdot, a, Fc)
-        return self._checked(q, qdot, a, Fc) if got is None else got
-
-    def _checked(self, q, qdot, a, Fc, out: dict | None = None) -> tuple[np.ndarray, np.ndarray]:
-        """The general path: any array-like input, N states, caller-supplied outputs, and the errors
-        that name the cause."""
-        size = self._fn.size("q")
-        ins = [as_states(n, v, size) for n, v in (("q", q), ("qdot", qdot), ("a", a), ("Fc", Fc))]
-        shape = ins[0].shape
-        if any(x.shape != shape for x in ins):
-            raise HybridError("q, qdot, a and Fc must have the same shape, got "
-                              + ", ".join(str(x.shape) for x in ins))
-        out = {k: v for k, v in (out or {}).items() if v is not None}
-        if len(shape) == 1:
-            if out:
-                raise HybridError("out= is for N states (arrays of shape (N, 2)); one state returns new arrays")
-            got = self._fn(*ins, *self._params, singular_tol=self.singular_tol)
-        else:
-            got = self._fn.batch(*ins, *self._params, singular_tol=self.singular_tol, out=out)
-        return got["F"], got["tau"]
+                raise HybridError("out must be (F, tau): two arrays of shape (N, size), either may be None")
+            return self._checked(q, qdot, a, Fc, tau0, dict(zip(("F", "tau"), out)))
+        got = self._fast(self._binding, -1, q, qdot, a, Fc, *self._held(tau0))
+        return self._checked(q, qdot, a, Fc, tau0) if got is None else got
 
     def __call__(self, q, qdot, a, Fc, out: np.ndarray | None = None) -> np.ndarray:
-        """Cartesian ``F*`` [N] in the base frame (for N states, into ``out`` when given)."""
+        """``F*`` in base axes (for N states, into ``out`` when given)."""
         if out is not None:
-            return self._checked(q, qdot, a, Fc, {"F": out})[0]
-        got = self._fast(self._binding, 0, q, qdot, a, Fc)
-        return self._checked(q, qdot, a, Fc)[0] if got is None else got
+            return self._checked(q, qdot, a, Fc, None, {"F": out})[0]
+        got = self._fast(self._binding, 0, q, qdot, a, Fc, *self._tail)
+        return self._checked(q, qdot, a, Fc, None)[0] if got is None else got
 
-    def torque(self, q, qdot, a, Fc, out: np.ndarray | None = None) -> np.ndarray:
-        """Joint torques ``tau = J^T F*`` [N m] (for N states, into ``out`` when given)."""
+    def torque(self, q, qdot, a, Fc, tau0=None, out: np.ndarray | None = None) -> np.ndarray:
+        """``tau = J^T F* + (I - J^T Jbar^T) tau0`` (for N states, into ``out`` when given)."""
         if out is not None:
-            return self._checked(q, qdot, a, Fc, {"tau": out})[1]
-        got = self._fast(self._binding, 1, q, qdot, a, Fc)
-        return self._checked(q, qdot, a, Fc)[1] if got is None else got
+            return self._checked(q, qdot, a, Fc, tau0, {"tau": out})[1]
+        got = self._fast(self._binding, 1, q, qdot, a, Fc, *self._held(tau0))
+        return self._checked(q, qdot, a, Fc, tau0)[1] if got is None else got
+
+    def task_frame(self, p, pdot) -> tuple[np.ndarray, np.ndarray]:
+        """``R`` and ``R'`` at the point ``p`` [m] moving at ``pdot`` (see :func:`hybrid.task_frame`)."""
+        return task_frame(self.surface, p, pdot, reference=self.reference)
+
+    def _held(self, tau0) -> tuple:
+        """The inputs after ``Fc``: the null-space torque where the law takes one."""
+        if tau0 is None:
+            return self._tail
+        if not self._tail:
+            raise HybridError("tau0: the planar closed form has no null space (2 joints, 2 task axes); leave it out")
+        _finite_tau0(tau0)
+        return (tau0,)
+
+    def _checked(self, q, qdot, a, Fc, tau0, out: dict | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """The general path: any array-like input, N states, caller-supplied outputs, and the errors
+        that name the cause."""
+        held = self._held(tau0)
+        batched = is_batch(q)
+        if held and batched and tau0 is None:
+            held = (np.zeros((len(np.asarray(q)), self.robot.n)),)
+        out = {k: v for k, v in (out or {}).items() if v is not None}
+        if not batched:
+            if out:
+                raise HybridError("out= is for N states (arrays of shape (N, size)); one state returns new arrays")
+            got = self._fn(q, qdot, a, Fc, *held, *self._params, singular_tol=self.singular_tol)
+        else:  # the manifest's sizes and the rows of every state input are checked there
+            got = self._fn.batch(q, qdot, a, Fc, *held, *self._params, singular_tol=self.singular_tol, out=out)
+        return got["F"], got["tau"]
 
 
-def decoupling_law(arm: Arm | Robot, surface, curvature: bool = False, *, backend: str = "sympy",
-                   singular_tol: float = SINGULAR_TOL, reference=(0.0, 0.0, 1.0), axes=None):
-    """The decoupling law for ``arm`` on ``surface``, compiled.
+def _finite_tau0(tau0) -> None:
+    """A square task ignores ``tau0`` (no null space): a non-finite one must still be refused."""
+    try:
+        finite = bool(np.isfinite(np.asarray(tau0, dtype=float)).all())
+    except (TypeError, ValueError):
+        return  # the shape and type checks name it
+    if not finite:
+        raise NonFiniteError(f"tau0 = {np.array2string(np.asarray(tau0, float), precision=4):.100} is not finite")
 
-    For the paper's planar :class:`Arm` on a :class:`Circle` or 2-D :class:`Plane`: NOTES
-    section 2, a :class:`DecouplingLaw`. For a :class:`Robot` on any surface (a planar one is
-    lifted to 3-D): NOTES section 9, a :class:`~hybrid.spatial_law.SpatialDecouplingLaw` with
-    task frame reference direction ``reference`` (base axes) and task ``axes`` (``"all"``, the
-    default for 6 or more joints, ``"position"``, ``"planar"``, or indices 0-5 of ``t1, t2, n``
-    and the rotations about them). ``curvature=True`` includes ``R' v`` (the paper runs
-    without it). Parameters are run-time inputs: another arm or surface of the same kind
-    needs no recompilation.
+
+def decoupling_law(robot: Robot | Arm, surface: Surface, curvature: bool = False, *, backend: str | None = None,
+                   singular_tol: float = SINGULAR_TOL, reference=(0.0, 0.0, 1.0), axes=None) -> DecouplingLaw:
+    """The decoupling law of ``robot`` on ``surface``, compiled (see :class:`DecouplingLaw`).
+
+    ``axes``: the task axes, ``"all"`` (the default for a 6-joint arm or more), ``"position"``,
+    ``"planar"`` (the paper's ``(t1, n)``, the default of its arm) or indices 0-5 of ``t1, t2, n``
+    and the rotations about them; ``reference``: the task frame's ``e`` (base axes);
+    ``curvature=True`` includes ``R' v`` (the paper runs without it); ``backend``: the derivation
+    (``"rigid_body"``, or the planar closed form's ``"sympy"`` / ``"casadi"``; default the closed form
+    where it applies).
     """
-    if not isinstance(curvature, bool):
-        raise HybridError(f"curvature must be True or False, got {curvature!r}")
-    if isinstance(arm, Robot):
-        if backend != "sympy":
-            raise HybridError("backend selects the planar units; a Robot's law is always generated by CasADi")
-        return spatial_law(arm, surface, curvature, reference=reference, axes=axes, singular_tol=singular_tol)
-    return DecouplingLaw(arm, surface, curvature, backend, singular_tol)
-
-
+    return DecouplingLaw(robot, surface, curvature, reference, axes, backend, singular_tol)
