@@ -119,8 +119,11 @@ class Experiment(RunSettings):
         return self.plant_class(self)
 
     def mujoco_plant(self):
-        """MuJoCo as this run's plant (:mod:`hybrid.plants.mujoco`; needs the ``mujoco`` extra)."""
-        return MujocoPlant(self)
+        """MuJoCo as this run's plant (:mod:`hybrid.plants.mujoco`; needs the ``mujoco`` extra): the arm
+        as :meth:`hybrid.Robot.planar`, the sensor tip without gravity, as in the planar plant."""
+        from hybrid.models.robot import Robot
+
+        return MujocoPlant(self, Robot.planar(self.arm), sensor_gravity=False)
 
     def build_controller(self) -> Controller:
         """Exactly the controller this run uses: its model of the arm, its loops, references, options."""

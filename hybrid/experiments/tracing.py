@@ -156,7 +156,10 @@ class TracingExperiment(RunSettings):
         return self.plant_class(self)
 
     def mujoco_plant(self):
-        raise HybridError("the MuJoCo plant runs the paper's experiment; the 3-D one runs on the generated plant")
+        """MuJoCo as this run's plant (:mod:`hybrid.plants.mujoco`; needs the ``mujoco`` extra)."""
+        from hybrid.plants.mujoco import MujocoPlant
+
+        return MujocoPlant(self, self.robot)
 
     def initial_state(self) -> np.ndarray:
         """The run's start state ``x0 = (q, q', s, s')``: at rest, the sensor tip pressing at the start
