@@ -16,8 +16,12 @@ from hybrid.plants import mujoco as mujoco_plant
 
 mujoco = pytest.importorskip("mujoco")
 
-#: the agreement asked of the two plants: RMS over the run of the normal force and tangential speed
-FORCE_TOL, SPEED_TOL = 1e-3, 1e-4  # N, m/s
+#: the agreement asked of the two plants, RMS over the run: normal force [N], tangential speed [m/s]
+FORCE_TOL, SPEED_TOL = 1e-3, 1e-4
+#: what the same physics reaches (the same RMS): rounding, about 1e-13 N in the 3-D runs, amplified in
+#: the paper's by the sticking friction to about 1e-10 N (as much as a one-ulp change of the start
+#: state moves them); a friction or contact formula off by 0.1 % exceeds the 3-D bounds
+ROUNDING = {"planar": (1e-7, 1e-8), "spatial": (1e-9, 1e-10)}
 FINGERS = ("panda_finger_joint1", "panda_finger_joint2")
 
 
@@ -34,11 +38,17 @@ def panda_experiment(**overrides):
     return hybrid.tracing_experiment(**{**settings, **overrides})
 
 
-def assert_agrees(exp):
+def assert_close(force, speed, kind):
+    """Both differences within the bounds asked and within rounding of the same physics."""
+    assert force < min(FORCE_TOL, ROUNDING[kind][0])
+    assert speed < min(SPEED_TOL, ROUNDING[kind][1])
+
+
+def assert_agrees(exp, kind="spatial"):
     ours, theirs = hybrid.simulate(exp), hybrid.simulate(exp, plant="mujoco")
     assert len(theirs.t) == len(ours.t)
-    assert rms(ours.force_normal - theirs.force_normal) < FORCE_TOL
-    assert rms(ours.velocity_tangential - theirs.velocity_tangential) < SPEED_TOL
+    assert_close(rms(ours.force_normal - theirs.force_normal),
+                 rms(ours.velocity_tangential - theirs.velocity_tangential), kind)
     # the same result object: the metrics of both runs are the same quantities, and equal
     assert set(theirs.metrics) == set(ours.metrics)
     assert theirs.metrics["rms_force_error_N"] == pytest.approx(ours.metrics["rms_force_error_N"], rel=1e-6)
@@ -53,7 +63,7 @@ PAPER = {"task": dict(), "khatib": dict(controller="khatib", duration=1.0),
 
 @pytest.mark.parametrize("settings", PAPER.values(), ids=PAPER.keys())
 def test_paper_experiment_agrees(settings):
-    assert_agrees(hybrid.paper_experiment(**settings))
+    assert_agrees(hybrid.paper_experiment(**settings), "planar")
 
 
 def test_ur5_experiment_agrees():
@@ -102,8 +112,7 @@ def test_every_surface_gives_the_same_contact(kind):
     N, v = columns.index("N"), columns.index("sensor_v_slide")
     assert runs[0][:, N].min() > 1.0
     assert runs[0][:, v].max() > 0.01
-    assert rms(runs[0][:, N] - runs[1][:, N]) < FORCE_TOL
-    assert rms(runs[0][:, v] - runs[1][:, v]) < SPEED_TOL
+    assert_close(rms(runs[0][:, N] - runs[1][:, N]), rms(runs[0][:, v] - runs[1][:, v]), "spatial")
 
 
 ODD_URDF = """<robot name="odd">

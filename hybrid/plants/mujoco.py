@@ -327,7 +327,8 @@ class MujocoPlant(Plant):
 
     def advance(self, x: np.ndarray, tau: np.ndarray, nsteps: int, trajectory: np.ndarray) -> int:
         """Advance ``x`` in place by ``nsteps`` MuJoCo RK4 steps with ``tau`` held; steps done (it stops
-        before a non-finite state)."""
+        before a non-finite state). MuJoCo's passive-force callback is one for the whole process: one
+        MuJoCo plant advances at a time (a sweep's processes each have their own)."""
         mj, d = self.mj, self.data
         self._set(x)
         d.qfrc_applied[:] = 0.0
