@@ -144,10 +144,10 @@ class Experiment(RunSettings):
         return self.plant_class(self)
 
     def mujoco_plant(self):
-        """MuJoCo as this run's plant (:mod:`hybrid.plants.mujoco`; needs the ``mujoco`` extra)."""
-        if self.robot.closed_form is None:
-            raise HybridError("the MuJoCo plant runs the paper's experiment; the 3-D one runs on the generated plant")
-        return MujocoPlant(self)
+        """MuJoCo as this run's plant (:mod:`hybrid.plants.mujoco`; needs the ``mujoco`` extra): the arm
+        read by MuJoCo, the sensor, contact and friction of the generated plant (the planar plant's
+        sensor tip has no gravity, as the closed form's)."""
+        return MujocoPlant(self, self.robot, sensor_gravity=self.robot.closed_form is None)
 
     def controller_robot(self) -> Robot:
         """The controller's (wrong) model of the arm."""

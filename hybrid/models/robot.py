@@ -13,6 +13,7 @@ import dataclasses
 import math
 from dataclasses import dataclass, field
 from functools import lru_cache
+from pathlib import Path
 
 import numpy as np
 
@@ -52,6 +53,9 @@ class Robot:
     gravity: tuple[float, float, float] = (0.0, 0.0, -9.81)
     limits: JointLimits | None = field(default=None, compare=False)  # arrays: information, not identity
     closed_form: Arm | None = None
+    #: where :meth:`from_urdf` read it, ``(path, tip, ((locked joint, position), ...))``, for a plant
+    #: that reads the file itself (MuJoCo); None for a robot built otherwise
+    source: tuple | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self):
         object.__setattr__(self, "gravity", _gravity(self.gravity))
@@ -88,7 +92,8 @@ class Robot:
         if locked is not None and not isinstance(locked, dict):
             raise HybridError(f"locked must be a {{joint name: position}} dict, got {type(locked).__name__}")
         parsed = read_chain(path, tip, locked)
-        return cls(parsed.name, parsed.chain, parsed.links, parsed.damping, gravity, parsed.limits)
+        source = (str(Path(path).resolve()), tip, tuple(sorted((locked or {}).items())))
+        return cls(parsed.name, parsed.chain, parsed.links, parsed.damping, gravity, parsed.limits, source=source)
 
     @classmethod
     def planar(cls, arm: Arm) -> Robot:

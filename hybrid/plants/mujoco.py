@@ -1,52 +1,49 @@
-"""The paper's experiment with MuJoCo as the plant: an independent physics engine under the same
-controller, runner, result object and metrics (optional extra ``hybrid-decoupling[mujoco]``).
+"""MuJoCo as the plant of any experiment: an independent rigid-body engine under the same controller,
+runner, result object and metrics (optional extra ``hybrid-decoupling[mujoco]``).
 
-The MJCF model, written from the experiment (:func:`model_xml`):
+The model (:func:`arm_spec`, :class:`MujocoPlant`):
 
-- the arm: two hinge joints about z with the paper's inertias and joint viscosity (MuJoCo's
-  ``damping``), no gravity (a SCARA); MuJoCo computes its dynamics and integrates by RK4 at the
-  experiment's ``step``;
-- the sensor tip: a body of mass ``m_s`` on two world slide joints (x, y) carrying a small sphere.
-  Its isotropic spring-damper to the arm tip, ``F_c = K_s (s - r) + D_s (s' - r')``, is a passive
-  force added in MuJoCo's passive-force callback at every RK4 stage: MuJoCo has no element for it
-  (a tendon damps only along its length; slide joints on the moving link would damp the velocity
-  seen in the rotating link frame);
-- the surface: a geom (a cylinder for a circle, a box for a plane) on its own body, mounted on two
-  slide joints with MuJoCo ``stiffness = k_e`` and ``damping = d_e`` and a small mass: the surface's
-  compliance. The contact between sensor tip and surface is MuJoCo's, frictionless (``condim = 1``)
-  and nearly rigid (``solimp = 0.9999``, ``solref = (-rate^2, -2 rate)`` with ``rate = 2.5 / step``,
-  its stiffest stable setting), active within ``MARGIN``: the sensor tip then
-  penetrates ``delta = N / k_e`` through the mount, the penalty of NOTES section 5. (MuJoCo's own
-  soft contact cannot be that penalty: with impedance ``d`` it accelerates as
-  ``a = (1 - d) a_0 - d (b delta' + k delta)``, a compliance that scales the other forces too.)
-- friction: Coulomb with NOTES section 5's ``tanh(v / v_eps)`` smoothing, on the sensor tip's
-  sliding velocity relative to the surface, with the normal force the mount carries, as a passive
-  force (MuJoCo's soft friction cone has its own stick-slip transition, a different model).
+- the arm: MuJoCo's own import of the robot's URDF, the file :meth:`hybrid.Robot.from_urdf` read
+  (``robot.source``), edited with ``mujoco.MjSpec``: geoms and meshes removed (nothing collides, and
+  mesh files need not be found), the joints the robot does not keep removed after placing their
+  bodies at the locked positions, limits and friction loss off, joint viscosity the robot's
+  ``damping``, gravity the robot's ``gravity``. The inertial parameters are MuJoCo's reading of the
+  file, and the plant refuses a model whose mass matrix or tip differs from the robot's. A robot
+  built otherwise (:meth:`hybrid.Robot.planar`, or changed after it was read) is given to MuJoCo as
+  a URDF written from its own chain and parameters (:func:`robot_urdf`);
+- the sensor tip: a body of mass ``m_s`` on three world slide joints (the paper's planar sensor
+  stays at ``z = 0``, and gravity does not act on it, as in the planar plant);
+- the sensor's spring-damper ``F_c = K_s (s - r) + D_s (s' - r')``, the penalty contact
+  ``N = max(0, k_e delta + d_e delta')`` on the sensor tip's penetration ``delta = -phi / |grad phi|``
+  and the Coulomb friction ``-gamma N tanh(|v_s| / v_eps) v_s / |v_s|`` against its sliding velocity
+  are the generated plant's formulas, evaluated here (the surface's ``phi`` in NumPy) in MuJoCo's
+  passive-force callback, so at every RK4 stage; MuJoCo's own contact and constraints are disabled.
 
-With these settings the paper's run agrees with :func:`hybrid.simulate` to about 1 mN RMS in the
-normal force and 0.1 mm/s RMS in the speed (tested). The output record is the generated plant's,
-computed from the state: its ``N`` and ``friction`` columns are the penalty formulas of the sensor
-tip's state.
+MuJoCo thus integrates the generated plant's equations with its own rigid-body dynamics, by RK4 at
+the experiment's ``step``, and the two agree to rounding: about 1e-13 N RMS in the normal force of
+the 3-D runs, about 1e-10 N in the paper's, whose sticking friction (``gamma N / v_eps`` against
+``m_s``) amplifies rounding as much as a one-ulp change of the start state does. The output record
+is the generated plant's, computed from the state.
 """
 
 from __future__ import annotations
 
+import math
+from xml.sax.saxutils import quoteattr
+
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.plants.compiled import NativePlant
+from hybrid.models.robot import Robot, robot_terms
+from hybrid.models.urdf import read_chain
+from hybrid.plants.compiled import Plant
 
-#: the surface's mass on its compliant mount, per unit of d_e * step [kg / (N s/m * s)]: the mount's
-#: fastest pole, -d_e / mass, then sits at 1.25 / step, inside RK4's stability limit (4 g at 0.1 ms)
-SURFACE_MASS_PER_DAMPING_STEP = 0.8
-#: the contact's own (nearly rigid) reference dynamics, critically damped, per 1 / step: the
-#: stiffest stable setting (2.5e4 rad/s at 0.1 ms)
-CONTACT_RATE_PER_STEP = 2.5
-#: the contact is active within this distance [m] and rests at it (the geom is moved back by as much),
-#: so a sensor tip placed on the surface is in contact from the first step
-MARGIN = 1e-6
-#: the sensor tip's sphere radius [m] (the surface geom is moved back by as much)
-SENSOR_RADIUS = 1e-3
+#: the mass [kg] (and inertia [kg m^2]) given to a moving body without, which MuJoCo refuses: it changes
+#: the mass matrix by TINY times a squared distance, at the level of rounding. Also the sensor body's
+#: rotational inertia, which nothing sees (it has no rotation)
+TINY = 1e-12
+#: how far MuJoCo's mass matrix (relative to its largest entry, or 1) and tip [m] may be from the robot's
+MODEL_TOL = 1e-9
 
 
 def _mujoco():
@@ -57,129 +54,305 @@ def _mujoco():
     return mujoco
 
 
-def model_xml(exp) -> str:
-    """The MJCF text of ``exp``'s arm, sensor and surface (module docstring)."""
-    arm, s, c = exp.arm, exp.sensor, exp.contact
-    if arm.gravity != 0:
-        raise HybridError("the MuJoCo plant models the paper's SCARA (no gravity); give an Arm with gravity=0")
-    tiny = 1e-9  # MuJoCo needs positive masses and inertias; the paper's link 1 has only I1
-    rate = CONTACT_RATE_PER_STEP / exp.step
-    # heavy enough that the mount's modes, -d_e / m and sqrt(k_e / m), stay within RK4's reach
-    mount_mass = max(SURFACE_MASS_PER_DAMPING_STEP * c.damping * exp.step, 0.5 * c.stiffness * exp.step**2)
-    surf = exp.surface
-    if surf.kind == "circle":
-        # the geom shrinks by the sensor sphere's radius: contact starts where the sensor tip's centre touches
-        shape, pos, size, euler = "cylinder", (*surf.center, 0.0), f"{surf.radius - SENSOR_RADIUS - MARGIN} 0.05", 0.0
-    else:
-        n = np.asarray(surf.normal, float) / np.linalg.norm(surf.normal)
-        centre = np.asarray(surf.point, float) - (0.5 + SENSOR_RADIUS + MARGIN) * n  # a 1 m thick box
-        shape, pos, size, euler = "box", (*centre, 0.0), "0.5 5 0.05", np.degrees(np.arctan2(n[1], n[0]))
-    # the surface's compliance: the geom's body on two slide joints, spring k_e and damper d_e
-    mount = (f'<body name="surface" pos="{pos[0]} {pos[1]} 0">'
-             f'<joint name="w_x" type="slide" axis="1 0 0" stiffness="{c.stiffness}" damping="{c.damping}"/>'
-             f'<joint name="w_y" type="slide" axis="0 1 0" stiffness="{c.stiffness}" damping="{c.damping}"/>'
-             f'<inertial pos="0 0 0" mass="{max(mount_mass, tiny)}" diaginertia="{tiny} {tiny} {tiny}"/>'
-             f'<geom name="surface" type="{shape}" size="{size}" euler="0 0 {euler}"/></body>')
-    return f"""<mujoco model="paper_experiment">
-  <option timestep="{exp.step}" integrator="RK4" gravity="0 0 0" cone="elliptic"/>
-  <default><geom contype="1" conaffinity="1" condim="1"
-      solref="{-rate**2} {-2 * rate}" solimp="0.9999 0.9999 0.001 0.5 2" margin="{MARGIN}"/></default>
-  <worldbody>
-    <body name="link1">
-      <joint name="q1" type="hinge" axis="0 0 1" damping="{arm.V1}"/>
-      <inertial pos="{arm.d1} 0 0" mass="{max(arm.m1, tiny)}" diaginertia="{arm.I1 / 2} {arm.I1 / 2} {arm.I1}"/>
-      <body name="link2" pos="{arm.L1} 0 0">
-        <joint name="q2" type="hinge" axis="0 0 1" damping="{arm.V2}"/>
-        <inertial pos="{arm.d2} 0 0" mass="{max(arm.m2, tiny)}" diaginertia="{arm.I2 / 2} {arm.I2 / 2} {arm.I2}"/>
-        <site name="tip" pos="{arm.L2} 0 0"/>
-      </body>
-    </body>
-    <body name="sensor">
-      <joint name="s_x" type="slide" axis="1 0 0"/>
-      <joint name="s_y" type="slide" axis="0 1 0"/>
-      <inertial pos="0 0 0" mass="{s.mass}" diaginertia="{tiny} {tiny} {tiny}"/>
-      <geom name="sensor_tip" type="sphere" size="{SENSOR_RADIUS}" contype="2" conaffinity="1"/>
-    </body>
-    {mount}
-  </worldbody>
-  <contact><exclude body1="link1" body2="link2"/></contact>
-</mujoco>"""
+# ------------------------------------------------------------------------ surfaces
 
 
-class MujocoPlant(NativePlant):
-    """The paper's plant simulated by MuJoCo; state ``x = (q, q', s, s')`` as the generated plant's,
-    whose output record (computed from the state) it shares."""
+def surface_function(surface):
+    """``p -> (phi(p), grad phi(p))`` of a 3-D surface in NumPy, from the formulas the generated
+    code is derived from (``phi > 0`` on the robot's side)."""
+    kind, theta = surface.kind, surface.as_array()
+    if kind == "plane":
+        point, normal = theta[:3], theta[3:]
+        unit = normal / math.sqrt(normal @ normal)
+        return lambda p: (float(unit @ (p - point)), unit)
+    if kind == "sphere":
+        center, rho = theta[:3], theta[3]
 
-    def __init__(self, exp):
-        self.mj = _mujoco()
-        super().__init__(exp)
-        self.exp = exp
-        self.model = self.mj.MjModel.from_xml_string(model_xml(exp))
-        self.data = self.mj.MjData(self.model)
-        self._tip = self.model.site("tip").id
+        def sphere(p):
+            d = p - center
+            dist = math.sqrt(d @ d)
+            return dist - rho, d / dist
+        return sphere
+    if kind == "cylinder":
+        point, axis, rho = theta[:3], theta[3:6], theta[6]
+        uu = axis @ axis
+
+        def cylinder(p):
+            d = p - point
+            radial = d - axis * ((axis @ d) / uu)
+            dist = math.sqrt(radial @ radial)
+            return dist - rho, radial / dist
+        return cylinder
+    return _implicit_function(surface)
+
+
+def _implicit_function(surface):
+    """``phi`` and its gradient of an :class:`~hybrid.ImplicitSurface`, its parameters bound."""
+    import sympy as sp
+
+    x, y, z = sp.symbols("x y z", real=True)
+    values = {sp.Symbol(k, real=True): float(v) for k, v in surface.parameters.items()}
+    phi = surface.phi.xreplace(values)
+    f = sp.lambdify((x, y, z), [phi, *(sp.diff(phi, v) for v in (x, y, z))], modules="math")
+
+    def implicit(p):
+        value, *grad = f(*p)
+        return float(value), np.array(grad, float)
+    return implicit
+
+
+# -------------------------------------------------------------------------- robots
+
+
+def _rpy(R: np.ndarray) -> tuple[float, float, float]:
+    """URDF roll, pitch, yaw of the rotation ``R = Rz(yaw) Ry(pitch) Rx(roll)``."""
+    pitch = math.atan2(-R[2, 0], math.hypot(R[0, 0], R[1, 0]))
+    if math.hypot(R[0, 0], R[1, 0]) < 1e-12:  # gimbal lock: roll taken as 0
+        return 0.0, pitch, math.atan2(-R[0, 1], R[1, 1])
+    return math.atan2(R[2, 1], R[2, 2]), pitch, math.atan2(R[1, 0], R[0, 0])
+
+
+def robot_urdf(robot: Robot) -> str:
+    """A URDF of ``robot`` written from its chain and parameters (joints under their names, link
+    ``i`` the body joint ``i`` moves; a massless link gets :data:`TINY`, which MuJoCo needs)."""
+    def v(values):
+        return " ".join(repr(float(c)) for c in values)
+
+    parts, parent = [f"<robot name={quoteattr(robot.name)}>", '<link name="base"/>'], "base"
+    for i, (joint, link) in enumerate(zip(robot.chain.joints, robot.links)):
+        kind = "continuous" if joint.kind == "revolute" else "prismatic"
+        limit = '<limit lower="-1e6" upper="1e6" effort="0" velocity="0"/>' if kind == "prismatic" else ""
+        I = np.asarray(link.inertia, float) + TINY * np.eye(3) * (not np.any(link.inertia))  # noqa: E741
+        inertia = " ".join(f'{k}="{float(I[a, b])!r}"' for k, (a, b) in zip(
+            ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"), ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))))
+        parts += [f'<joint name={quoteattr(joint.name)} type="{kind}"><parent link="{parent}"/><child link="link{i}"/>'
+                  f'<origin xyz="{v(joint.translation)}" rpy="{v(_rpy(np.asarray(joint.rotation)))}"/>'
+                  f'<axis xyz="{v(joint.axis)}"/>{limit}</joint>',
+                  f'<link name="link{i}"><inertial><origin xyz="{v(link.com)}"/>'
+                  f'<mass value="{max(float(link.mass), TINY)!r}"/><inertia {inertia}/></inertial></link>']
+        parent = f"link{i}"
+    return "\n".join([*parts, "</robot>"])
+
+
+def _file_of(robot: Robot) -> tuple[str, dict] | None:
+    """The robot's URDF file and locked joints, when it is still what that file describes."""
+    if robot.source is None:
+        return None
+    path, tip, locked = robot.source
+    try:
+        parsed = read_chain(path, tip, dict(locked))
+    except HybridError:  # the file moved or changed: the robot's own parameters then
+        return None
+    if parsed.chain != robot.chain or parsed.links != robot.links:
+        return None
+    return path, dict(locked)
+
+
+def _lock(mj, spec, keep: tuple[str, ...], locked: dict) -> None:
+    """Remove every joint ``keep`` does not name, its body placed at the joint's locked position (0
+    unless ``locked`` says otherwise; a joint of another kind held at its origin, as the robot's
+    reading of the URDF holds it)."""
+    for joint in list(spec.joints):
+        if joint.name in keep:
+            continue
+        value, body = float(locked.get(joint.name, 0.0)), joint.parent
+        if value and joint.type in (mj.mjtJoint.mjJNT_SLIDE, mj.mjtJoint.mjJNT_HINGE):
+            R = np.zeros(9)
+            mj.mju_quat2Mat(R, np.asarray(body.quat, float))
+            axis, anchor = np.asarray(joint.axis, float), np.asarray(joint.pos, float)
+            if joint.type == mj.mjtJoint.mjJNT_SLIDE:
+                body.pos = body.pos + R.reshape(3, 3) @ (axis / np.linalg.norm(axis) * value)
+            else:  # a turn about the joint's axis through its anchor, in the body's frame
+                turn, quat, Rt = np.zeros(4), np.zeros(4), np.zeros(9)
+                mj.mju_axisAngle2Quat(turn, axis / np.linalg.norm(axis), value)
+                mj.mju_mulQuat(quat, np.asarray(body.quat, float), turn)
+                mj.mju_quat2Mat(Rt, turn)
+                body.pos = body.pos + R.reshape(3, 3) @ (anchor - Rt.reshape(3, 3) @ anchor)
+                body.quat = quat
+        spec.delete(joint)
+
+
+def arm_spec(robot: Robot):
+    """MuJoCo's model of ``robot`` as a ``mujoco.MjSpec``, and the URDF file it read (None: one written
+    by :func:`robot_urdf`): MuJoCo's inertial parameters, the robot's joints, viscosities and gravity,
+    no geoms, meshes, limits or friction loss (module docstring)."""
+    mj = _mujoco()
+    found = _file_of(robot)
+    try:
+        spec = mj.MjSpec.from_file(found[0]) if found else mj.MjSpec.from_string(robot_urdf(robot))
+    except ValueError as exc:
+        where = f"the URDF {found[0]}" if found else f"the URDF written for '{robot.name}'"
+        raise HybridError(f"MuJoCo cannot read {where}: {str(exc).splitlines()[0]}") from None
+    # nothing collides: the geoms go, and the meshes they referenced (their files need not be found)
+    for element in (*spec.geoms, *spec.meshes, *spec.equalities, *spec.actuators, *spec.tendons, *spec.sensors):
+        spec.delete(element)
+    _lock(mj, spec, robot.joint_names, found[1] if found else {})
+    missing = [name for name in robot.joint_names if name not in {j.name for j in spec.joints}]
+    if missing:
+        raise HybridError(f"MuJoCo's reading of the robot has no joint {missing[0]!r}; give the robot as "
+                          "Robot.from_urdf read it")
+    for joint, damping in zip((spec.joint(name) for name in robot.joint_names), robot.damping):
+        joint.damping = [damping, 0.0, 0.0]
+        joint.frictionloss, joint.armature, joint.stiffness = 0.0, 0.0, [0.0, 0.0, 0.0]
+        joint.limited = mj.mjtLimited.mjLIMITED_FALSE
+    for body in spec.bodies[1:]:
+        if not body.joints:
+            continue
+        if not body.explicitinertial:  # a link without <inertial>: massless, as the robot reads it
+            body.explicitinertial, body.ipos, body.iquat = True, [0.0] * 3, [1.0, 0.0, 0.0, 0.0]
+            body.mass, body.fullinertia = 0.0, [0.0] * 6
+        # MuJoCo refuses a moving body without mass or inertia
+        body.mass = max(body.mass, TINY)
+        full = np.isfinite(body.fullinertia[0])
+        if np.abs(body.fullinertia[:3] if full else body.inertia).max() < TINY:
+            body.fullinertia = [TINY, TINY, TINY, 0.0, 0.0, 0.0]
+    # the inertial parameters are the file's, none made up from geoms
+    spec.compiler.inertiafromgeom = mj.mjtInertiaFromGeom.mjINERTIAFROMGEOM_FALSE
+    spec.compiler.balanceinertia = False
+    spec.option.gravity = list(robot.gravity)
+    return spec, found[0] if found else None
+
+
+# --------------------------------------------------------------------------- plant
+
+
+def _ignore(message) -> None:
+    """A MuJoCo warning handler that drops the warning."""
+
+
+class MujocoPlant(Plant):
+    """MuJoCo as the plant of ``exp``, whose arm is ``robot``; state ``x = (q, q', s, s')`` and output
+    record those of ``exp``'s generated plant (``s`` 2-D for the paper's planar plant, whose sensor
+    tip feels no gravity: ``sensor_gravity=False``)."""
+
+    def __init__(self, exp, robot: Robot, sensor_gravity: bool = True):
+        self.mj = mj = _mujoco()
+        self.exp, self.robot = exp, robot
+        self.generated = exp.plant()  # the record, the sensor's reading and the conditioning
+        self.record, self.nq = self.generated.record, robot.n
+        self.conditioning, self.conditioning_name = self.generated.conditioning, self.generated.conditioning_name
+        self.force_columns = self.generated.force_columns
+        self.dim = (len(self.record["state"]) - 2 * robot.n) // 2  # the sensor tip's coordinates (2 or 3)
+        self._phi = surface_function(exp.surface.lift())
+
+        spec, self.source = arm_spec(robot)
+        last = spec.joint(robot.joint_names[-1]).parent
+        last.add_site(name="tip", pos=list(robot.chain.tip_translation))
+        sensor = spec.worldbody.add_body(name="sensor_tip", mass=exp.sensor.mass, ipos=[0, 0, 0],
+                                         inertia=[TINY, TINY, TINY], gravcomp=0.0 if sensor_gravity else 1.0)
+        sensor.explicitinertial = True
+        for axis in np.eye(3):
+            sensor.add_joint(type=mj.mjtJoint.mjJNT_SLIDE, axis=list(axis))
+        opt = spec.option
+        opt.timestep, opt.integrator = exp.step, mj.mjtIntegrator.mjINT_RK4
+        D = mj.mjtDisableBit
+        # our contact replaces MuJoCo's; no limits or friction loss (the generated plant has none); a bad
+        # state is reported, not reset
+        opt.disableflags |= (D.mjDSBL_CONSTRAINT | D.mjDSBL_CONTACT | D.mjDSBL_LIMIT | D.mjDSBL_EQUALITY
+                             | D.mjDSBL_FRICTIONLOSS | D.mjDSBL_AUTORESET)
+        try:
+            self.model = spec.compile()
+        except ValueError as exc:
+            raise HybridError(f"MuJoCo cannot build the model of '{robot.name}': {str(exc).splitlines()[0]}") from None
+        self.data = mj.MjData(self.model)
+        n = robot.n
+        dofs = [int(self.model.joint(name).dofadr[0]) for name in robot.joint_names]
+        if dofs != list(range(n)) or self.model.nv != n + 3:
+            raise HybridError(f"MuJoCo orders the joints of '{robot.name}' otherwise ({dofs}); give a serial arm")
+        self._site = self.model.site("tip").id
         self._jac = np.zeros((3, self.model.nv))
-        self._last = None  # (state, MuJoCo qpos, qvel) after the last advance
+        self._check_model()
 
-    # the sensor's spring-damper and the friction, added to MuJoCo's passive forces at every evaluation
+    # ------------------------------------------------------------------ checks
+
+    def mass_matrix(self, q) -> np.ndarray:
+        """MuJoCo's joint-space inertia ``B(q)`` of the arm."""
+        mj, d = self.mj, self.data
+        d.qpos[:] = 0.0
+        d.qpos[:self.nq] = q
+        mj.mj_forward(self.model, d)
+        M = np.zeros((self.model.nv, self.model.nv))
+        mj.mj_fullM(self.model, d, M)
+        return M[:self.nq, :self.nq]
+
+    def _check_model(self) -> None:
+        """Refuse a MuJoCo model whose mass matrix or tip differs from the robot's at a few poses."""
+        limits = self.robot.limits
+        lo = -np.pi if limits is None else np.maximum(limits.lower, -np.pi)
+        hi = np.pi if limits is None else np.minimum(limits.upper, np.pi)
+        for q in np.random.default_rng(0).uniform(lo, hi, (3, self.nq)):
+            B_mj = self.mass_matrix(q)
+            terms = robot_terms(self.robot, q, np.zeros(self.nq))
+            dB = np.abs(B_mj - terms["B"]).max() / max(1.0, np.abs(terms["B"]).max())
+            dr = np.abs(self.data.site_xpos[self._site] - terms["r"]).max()
+            if dB > MODEL_TOL or dr > MODEL_TOL:
+                raise HybridError(
+                    f"MuJoCo's model of '{self.robot.name}' differs from the robot's at q = {np.round(q, 3).tolist()} "
+                    f"(mass matrix by {dB:.2g} of its size, tip by {dr:.2g} m); MuJoCo read "
+                    f"{self.source or 'a URDF written from the robot'}: check its inertial and joint data")
+
+    # ------------------------------------------------------------------ physics
+
     def _passive(self, model, data) -> None:
-        sensor, c = self.exp.sensor, self.exp.contact
-        self.mj.mj_jacSite(model, data, self._jac, None, self._tip)
-        r, rd = data.site_xpos[self._tip][:2], (self._jac @ data.qvel)[:2]
-        s, sd = data.qpos[2:4], data.qvel[2:4]
-        F = sensor.stiffness * (s - r) + sensor.damping * (sd - rd)
-        data.qfrc_passive[:2] += self._jac[:2, :2].T @ F
-        data.qfrc_passive[2:4] -= F
-        if c.friction:
-            w, wd = data.qpos[4:6], data.qvel[4:6]
-            normal = self._normal(s, w)
-            # the normal force is what the surface's mount carries: N n = -(k_e w + d_e w')
-            N = max(0.0, -normal @ (c.stiffness * w + c.damping * wd))
-            tangent = np.array([-normal[1], normal[0]])
-            f = -c.friction * N * np.tanh(tangent @ (sd - wd) / c.friction_smoothing) * tangent
-            data.qfrc_passive[2:4] += f
-            data.qfrc_passive[4:6] -= f
-
-    def _normal(self, s: np.ndarray, w) -> np.ndarray:
-        """The surface's unit normal at the sensor tip, the surface displaced by its mount's ``w``."""
-        surf = self.exp.surface
-        if surf.kind == "circle":
-            rel = s - np.asarray(surf.center) - w
-            return rel / np.linalg.norm(rel)
-        return np.asarray(surf.normal, float) / np.linalg.norm(surf.normal)
+        """The sensor's spring-damper, the penalty contact and the friction, as passive forces."""
+        n, sensor, c = self.nq, self.exp.sensor, self.exp.contact
+        self.mj.mj_jacSite(model, data, self._jac, None, self._site)
+        J = self._jac[:, :n]
+        qvel = data.qvel
+        s, sd = data.qpos[n:], qvel[n:]
+        Fc = sensor.stiffness * (s - data.site_xpos[self._site]) + sensor.damping * (sd - J @ qvel[:n])
+        force = -Fc
+        phi, grad = self._phi(s)
+        norm = math.sqrt(grad @ grad)
+        normal = grad / norm if norm else grad
+        delta, speed = -phi / norm if norm else math.nan, normal @ sd
+        if delta > 0:
+            N = max(0.0, c.stiffness * delta - c.damping * speed)
+            slide = sd - speed * normal
+            # as the generated plant: |v_s| kept off 0 by far less than v_eps
+            w = math.sqrt(slide @ slide + (1e-9 * c.friction_smoothing) ** 2)
+            force += N * normal - (c.friction * N * math.tanh(w / c.friction_smoothing) / w) * slide
+        data.qfrc_passive[:n] += J.T @ Fc
+        data.qfrc_passive[n:] += force
 
     def _set(self, x: np.ndarray) -> None:
-        """MuJoCo's state for the plant state ``x``: the surface mount continues from where the last
-        step left it when ``x`` is that step's state, else it starts at rest, displaced by the
-        sensor tip's penetration (the penalty's static deflection)."""
-        d = self.data
-        if self._last is not None and np.array_equal(x, self._last[0]):
-            d.qpos[:], d.qvel[:] = self._last[1], self._last[2]
-            return
-        d.qpos[:4], d.qvel[:4] = x[[0, 1, 4, 5]], x[[2, 3, 6, 7]]
-        penetration = self._record_row(x)[self.record["outputs"].index("penetration")]
-        d.qpos[4:6], d.qvel[4:6] = -self._normal(x[4:6], 0.0) * max(penetration, 0.0), 0.0
+        n, k, d = self.nq, self.dim, self.data
+        d.qpos[:], d.qvel[:] = 0.0, 0.0
+        d.qpos[:n], d.qvel[:n] = x[:n], x[n:2 * n]
+        d.qpos[n:n + k], d.qvel[n:n + k] = x[2 * n:2 * n + k], x[2 * n + k:]
 
     def _state(self) -> np.ndarray:
-        d = self.data
-        return np.array([d.qpos[0], d.qpos[1], d.qvel[0], d.qvel[1], d.qpos[2], d.qpos[3], d.qvel[2], d.qvel[3]])
+        n, k, d = self.nq, self.dim, self.data
+        return np.concatenate([d.qpos[:n], d.qvel[:n], d.qpos[n:n + k], d.qvel[n:n + k]])
 
     def advance(self, x: np.ndarray, tau: np.ndarray, nsteps: int, trajectory: np.ndarray) -> int:
-        """Advance ``x`` in place by ``nsteps`` MuJoCo RK4 steps with ``tau`` held; steps done (MuJoCo
-        resets a state it finds unstable: that counts as the state going non-finite)."""
+        """Advance ``x`` in place by ``nsteps`` MuJoCo RK4 steps with ``tau`` held; steps done (it stops
+        before a non-finite state). MuJoCo's passive-force callback is one for the whole process: one
+        MuJoCo plant advances at a time (a sweep's processes each have their own)."""
         mj, d = self.mj, self.data
         self._set(x)
         d.qfrc_applied[:] = 0.0
-        d.qfrc_applied[:2] = tau
-        previous = mj.get_mjcb_passive()
+        d.qfrc_applied[:self.nq] = tau
+        previous = mj.get_mjcb_passive(), mj.get_mju_user_warning()
         mj.set_mjcb_passive(self._passive)
+        # a diverging state is the runner's to report (as the generated plant's): MuJoCo's printed
+        # warnings about it are silenced
+        mj.set_mju_user_warning(_ignore)
         try:
             for k in range(nsteps):
                 mj.mj_step(self.model, d)
                 state = self._state()
-                if d.warning[mj.mjtWarning.mjWARN_BADQACC].number or not np.isfinite(state).all():
+                if not np.isfinite(state).all():
                     return k
                 x[:] = trajectory[k] = state
         finally:
-            mj.set_mjcb_passive(previous)
-        self._last = (x.copy(), d.qpos.copy(), d.qvel.copy())
+            mj.set_mjcb_passive(previous[0])
+            mj.set_mju_user_warning(previous[1])
         return nsteps
+
+    def outputs(self, states: np.ndarray) -> np.ndarray:
+        """The generated plant's output record of each state."""
+        return self.generated.outputs(states)
+
+    def _record_row(self, x: np.ndarray) -> np.ndarray:
+        return self.generated._record_row(x)
