@@ -3,8 +3,8 @@
 The public API, by subpackage:
 
 - robot models (:mod:`hybrid.models`): :class:`Robot` (any serial arm, e.g. from a URDF;
-  :func:`ur5`), the paper's planar :class:`Arm` (:func:`paper_arm`), and their terms
-  (:func:`arm_terms`, :func:`operational_space`);
+  the shipped :func:`ur5` and :func:`panda`), the paper's planar :class:`Arm`
+  (:func:`paper_arm`), and their terms (:func:`arm_terms`, :func:`operational_space`);
 - geometry (:mod:`hybrid.geometry`): the surfaces :class:`Plane`, :class:`Circle`,
   :class:`Sphere`, :class:`Cylinder` and :class:`ImplicitSurface`;
 - control (:mod:`hybrid.control`): the compiled law (:func:`decoupling_law`,
@@ -33,10 +33,11 @@ from hybrid.errors import (
     URDFError,
 )
 from hybrid.experiments.paper import Contact, Experiment, Gains, Sensor, Step, paper_experiment
-from hybrid.experiments.tracing import TracingExperiment, tracing_experiment, ur5
+from hybrid.experiments.tracing import TracingExperiment, tracing_experiment
 from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere
 from hybrid.models.planar_arm import Arm, paper_arm
 from hybrid.models.robot import Robot
+from hybrid.models.shipped import panda, ur5
 from hybrid.models.terms import OperationalSpace, arm_terms, operational_space
 from hybrid.simulation.metrics import metrics
 from hybrid.simulation.results import SimulationResult
@@ -66,5 +67,5 @@ __all__ = [
     "OperationalSpace", "Plane", "Reference", "Robot", "SCHEMES", "Scheme", "Sensor", "SimulationError",
     "SimulationResult", "SingularConfigurationError", "SpatialDecouplingLaw", "Sphere", "Step", "TaskDecoupling",
     "TaskFrameError", "TracingExperiment", "URDFError", "arm_terms", "decoupling_law", "metrics", "operational_space",
-    "paper_arm", "paper_experiment", "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",
+    "panda", "paper_arm", "paper_experiment", "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",
 ]

@@ -10,7 +10,6 @@ from __future__ import annotations
 import hashlib
 import math
 from dataclasses import dataclass, field, fields
-from pathlib import Path
 from typing import ClassVar
 
 import numpy as np
@@ -24,20 +23,14 @@ from hybrid.experiments.settings import START_TOL, RunSettings, check_common_typ
 from hybrid.geometry.surfaces import Sphere, Surface
 from hybrid.geometry.task_axes import reference_direction
 from hybrid.models.robot import Robot
+from hybrid.models.shipped import UR5_URDF, ur5  # noqa: F401  (UR5_URDF: re-exported)
 from hybrid.plants.compiled import SpatialPlant
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.validate import SINGULAR_TOL, _finite
 
-#: the UR5's URDF as example-robot-data ships it (with its licence, beside it)
-UR5_URDF = Path(__file__).resolve().parent.parent / "data" / "ur5_robot.urdf"
 #: the sphere of the default experiment: in front of the UR5, within reach and away from its
 #: singularities along the whole path (a choice, NOTES section 10)
 SPHERE_CENTER, SPHERE_RADIUS = (0.5, 0.0, 0.2), 0.15
-
-
-def ur5() -> Robot:
-    """The UR5 of example-robot-data (tip ``tool0``, gravity on)."""
-    return Robot.from_urdf(UR5_URDF, tip="tool0")
 
 
 @dataclass(frozen=True)
