@@ -8,7 +8,8 @@ The public API, by subpackage:
 - geometry (:mod:`hybrid.geometry`): the surfaces :class:`Plane`, :class:`Circle`,
   :class:`Sphere`, :class:`Cylinder` and :class:`ImplicitSurface`;
 - control (:mod:`hybrid.control`): the compiled law (:func:`decoupling_law`,
-  :func:`task_frame`), the :class:`Controller` component and its schemes (:data:`SCHEMES`);
+  :func:`task_frame`), the :class:`Controller` component, its options (:class:`Posture`, a null-space
+  posture task; :class:`ContactLoss`) and its schemes (:data:`SCHEMES`);
 - experiments and simulation: :func:`paper_experiment`, :func:`tracing_experiment`,
   :func:`simulate`, :class:`SimulationResult`, :func:`metrics`; sweeps (:func:`sweep`);
 - :class:`HybridError`, the base of every error raised on bad input.
@@ -20,7 +21,7 @@ runs only when a unit must be built, and :class:`ImplicitSurface` (a SymPy expre
 
 from __future__ import annotations
 
-from hybrid.control.controller import ContactLoss, Controller, Measurement, Reference
+from hybrid.control.controller import ContactLoss, Controller, Measurement, Posture, Reference
 from hybrid.control.law import DecouplingLaw, decoupling_law, task_frame
 from hybrid.control.schemes import SCHEMES, Khatib, Scheme, TaskDecoupling
 from hybrid.control.spatial_law import SpatialDecouplingLaw
@@ -64,7 +65,7 @@ def __dir__() -> list[str]:
 __all__ = [
     "Arm", "Circle", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw", "Experiment", "Gains",
     "HybridError", "ImplicitSurface", "Khatib", "Measurement", "NativeBuildError", "NonFiniteError",
-    "OperationalSpace", "Plane", "Reference", "Robot", "SCHEMES", "Scheme", "Sensor", "SimulationError",
+    "OperationalSpace", "Plane", "Posture", "Reference", "Robot", "SCHEMES", "Scheme", "Sensor", "SimulationError",
     "SimulationResult", "SingularConfigurationError", "SpatialDecouplingLaw", "Sphere", "Step", "TaskDecoupling",
     "TaskFrameError", "TracingExperiment", "URDFError", "arm_terms", "decoupling_law", "metrics", "operational_space",
     "panda", "paper_arm", "paper_experiment", "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",

@@ -31,6 +31,7 @@ def panda() -> Robot:
     hand's tool centre point, 0.1034 m beyond the flange, between the fingertips), gravity on.
 
     The fingers are locked closed and lumped into the hand, which the last joint carries. With 7
-    joints and at most 6 task axes the arm is redundant.
+    joints and at most 6 task axes the arm is redundant: a :class:`~hybrid.Posture` task acts in
+    the task's null space.
     """
     return Robot.from_urdf(PANDA_URDF, tip="panda_hand_tcp", locked=PANDA_FINGERS)
