@@ -27,7 +27,22 @@ desired frame and the position error are compiled in):
 
 The law then gets ``a`` (in the desired frame ``R_d``, rotated into ``R(r)`` with ``R_d'``'s
 term, as the paper's Figure 3). ``controller_step`` is the decoupling law with the measured
-``F_c`` (the task law) or Khatib's feedforward ``R^T Sigma F_d`` of the desired force;
+``F_c`` (the task law) or Khatib's feedforward ``R^T Sigma F_d`` of the desired force.
+``controller_posture_step`` (generated for a redundant task, ``m < n``) adds a posture task's
+null-space torque (the ``posture`` array: ``q_rest``, ``K_p``, ``K_d`` per joint), the inverse
+dynamics of a joint PD's acceleration ``w``:
+
+    tau0 = B(q) w + n(q, q'),   w = K_p (q_rest - q) - K_d q'      [K_p in 1/s^2, K_d in 1/s]
+
+which the law projects into the task's null space, ``(I - J_y^T Jbar_y^T) tau0``. Applied to the
+arm (its model exact) this gives ``q'' = Jbar_y b + (I - Jbar_y J_y) w`` (``b`` the law's, see
+:mod:`codegen.task_law`): the task acceleration stays ``a`` and the null space moves as the
+projected PD, alike for light wrist and heavy shoulder joints (the weighting by ``B``), with
+gravity and the velocity terms cancelled there too (``n``: the law alone cancels them in the task
+space only, and leaves the null space to fall). Every step takes the ``posture`` array and the
+others ignore it, so the law without a posture is ``controller_step``'s own code, bit for bit (a
+step computing ``tau0`` from zero gains would agree within rounding only: the C compiler's fused
+multiply-adds follow the code around them). A square task (``m = n``) has no null space.
 ``raibert_craig_step`` maps the same loops without dynamic decoupling (NOTES section 7):
 
     tau = diag(B) q''_m + J_y^T Sigma w + g(q),   w_i = -F_d,i + a_i / KP_i  (m_d a_i, force axes)
@@ -63,6 +78,8 @@ LOOP_GAINS = ("KP", "KI", "KI2", "KD")
 #: the ``options`` array: switches (0/1) and numbers
 OPTIONS = ("curvature", "sample_time", "khatib", "integral_limit", "loss_threshold", "approach_speed",
            "pseudoinverse")
+#: the posture task's per-joint numbers, in this order (n each) in the ``posture`` array
+POSTURE = ("q_rest", "Kp", "Kd")
 
 
 @dataclass(frozen=True)
@@ -106,6 +123,22 @@ def loops(x: LoopInputs):
     return ca.vertcat(*a), ca.vertcat(*z_next)
 
 
+def posture_torque(chain: rb.Chain, arm, params, q, qd, posture):
+    """``tau0 = B(q) w + n(q, q')``, ``w = K_p (q_rest - q) - K_d q'``, of the ``posture`` array: the
+    inverse dynamics of the PD's joint acceleration ``w`` (module docstring).
+
+    ``B`` makes the gains a joint acceleration's, so one pair suits every joint (plain torque gains
+    would be stiff for the wrist and soft for the shoulder); ``n`` makes the null space's own motion
+    the projected PD alone (without it the null space sags under gravity, which the law compensates
+    in the task space only). Both are the law's own ``B`` and ``n``, computed once (the kernels'
+    common subexpressions)."""
+    n = chain.n
+    q_rest, kp, kd = posture[:n], posture[n:2 * n], posture[2 * n:]
+    inertias = rb.link_inertias(chain, arm.frames, params)
+    w = kp * (q_rest - q) - kd * qd
+    return rb.crba(chain, arm.frames, params, inertias) @ w + rb.rnea(chain, arm.frames, params, qd, bodies=inertias)
+
+
 def _wrapped(angle):
     """``angle`` in [-pi, pi) (cheaper than atan2 of its sine and cosine)."""
     return angle - 2 * ca.pi * ca.floor((angle + ca.pi) / (2 * ca.pi))
@@ -129,7 +162,9 @@ def references(t, steps, extra):
 def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...], desired_frame: bool = False,
                        position_error: bool = False) -> tuple[Kernel, ...]:
     """``controller_step`` (one sample: measure, loops, decoupling law), ``raibert_craig_step`` (the
-    same loops, no decoupling) and ``task_measurement`` of ``chain`` on ``spec`` for the task ``axes``.
+    same loops, no decoupling) and ``task_measurement`` of ``chain`` on ``spec`` for the task ``axes``,
+    then for a redundant task (fewer axes than joints) ``controller_posture_step`` (the decoupling
+    law with the posture task in its null space).
 
     ``desired_frame`` and ``position_error`` change what is computed, so they are compiled in (a
     variant each); the other options are run-time numbers."""
@@ -141,6 +176,7 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
     gains, sigma = ca.SX.sym("gains", len(LOOP_GAINS) * m), ca.SX.sym("selection", m)
     params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
     theta, e, opts = ca.SX.sym("surface", len(spec.parameters)), ca.SX.sym("e", 3), ca.SX.sym("options", len(OPTIONS))
+    posture = ca.SX.sym("posture", len(POSTURE) * n)
     o = {name: opts[i] for i, name in enumerate(OPTIONS)}
     o["position_error"] = float(position_error)
     curvature = o["curvature"]
@@ -199,7 +235,9 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
             names=tuple(f"{g}_{ax}" for ax in axis_names for g in LOOP_GAINS)),
         Arg("selection", sigma, "1 (1: force-controlled axis)", names=axis_names),
         Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain)), a_s, a_e,
-        Arg("options", opts, "1, s, 1, unit of a, N or N m, m/s or rad/s, 1", names=OPTIONS))
+        Arg("options", opts, "1, s, 1, unit of a, N or N m, m/s or rad/s, 1", names=OPTIONS),
+        Arg("posture", posture, "per joint: rad or m (q_rest), then 1/s^2 (Kp), then 1/s (Kd)",
+            names=tuple(f"{k}_{j}" for k in POSTURE for j in names)))
 
     def outputs(torque):
         return (Arg("tau", torque, rb.joint_units(chain, "tau")),
@@ -216,6 +254,14 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
     raibert_craig = Kernel("raibert_craig_step", inputs, outputs(tau_rc),
                            what + f"Raibert & Craig's scheme (task axes {', '.join(axis_names)})", batched=per_state,
                            guards=(*guards, conditioning_guard(cond_rc, CONDITIONING)))
+    posture_step = ()
+    if m < n:  # a square task has no null space: its law ignores tau0
+        tau0 = posture_torque(chain, arm, params, q, qd, posture)
+        _, tau_posture, _ = decoupling(chain, arm, params, qd, Rm, Rdm, a, contact, tau0, law_curvature)
+        posture_step = (Kernel("controller_posture_step", inputs, outputs(tau_posture),
+                               what + f"the decoupling law with a posture task in its null space (task axes "
+                               f"{', '.join(axis_names)})", batched=per_state,
+                               guards=(*guards, conditioning_guard(cond, CONDITIONING))),)
     R6 = ca.diagcat(tf.R, tf.R)
     measurement = Kernel(
         "task_measurement", (a_q, a_qd, a_fc, a_s, a_e),
@@ -225,7 +271,7 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
         "what the controller measures: tip position p and twist v = (p', w) in base axes, and on all six "
         "task axes at the tip the task velocity R v and the task wrench R F_c",
         batched=("q", "qd", "Fc"), guards=(frame_guard(tf.sine),))
-    return step, raibert_craig, measurement
+    return (step, raibert_craig, measurement, *posture_step)
 
 
 def _raibert_craig(chain: rb.Chain, arm, params, Rm, a, yd, gains, sigma, pseudoinverse):

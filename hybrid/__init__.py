@@ -3,12 +3,13 @@
 The public API, by subpackage:
 
 - robot models (:mod:`hybrid.models`): :class:`Robot` (any serial arm, e.g. from a URDF;
-  :func:`ur5`), the paper's planar :class:`Arm` (:func:`paper_arm`), and their terms
-  (:func:`arm_terms`, :func:`operational_space`);
+  the shipped :func:`ur5` and :func:`panda`), the paper's planar :class:`Arm`
+  (:func:`paper_arm`), and their terms (:func:`arm_terms`, :func:`operational_space`);
 - geometry (:mod:`hybrid.geometry`): the surfaces :class:`Plane`, :class:`Circle`,
   :class:`Sphere`, :class:`Cylinder` and :class:`ImplicitSurface`;
 - control (:mod:`hybrid.control`): the compiled law (:func:`decoupling_law`,
-  :func:`task_frame`), the :class:`Controller` component and its schemes (:data:`SCHEMES`);
+  :func:`task_frame`), the :class:`Controller` component, its options (:class:`Posture`, a null-space
+  posture task; :class:`ContactLoss`) and its schemes (:data:`SCHEMES`);
 - experiments and simulation: :func:`paper_experiment`, :func:`tracing_experiment`,
   :func:`simulate`, :class:`SimulationResult`, :func:`metrics`; sweeps (:func:`sweep`);
 - :class:`HybridError`, the base of every error raised on bad input.
@@ -20,7 +21,7 @@ runs only when a unit must be built, and :class:`ImplicitSurface` (a SymPy expre
 
 from __future__ import annotations
 
-from hybrid.control.controller import ContactLoss, Controller, Measurement, Reference
+from hybrid.control.controller import ContactLoss, Controller, Measurement, Posture, Reference
 from hybrid.control.law import DecouplingLaw, decoupling_law
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
@@ -35,12 +36,13 @@ from hybrid.errors import (
 )
 from hybrid.experiments.experiment import Experiment
 from hybrid.experiments.paper import paper_experiment
-from hybrid.experiments.tracing import tracing_experiment, ur5
+from hybrid.experiments.tracing import tracing_experiment
 from hybrid.geometry.frames import task_frame
 from hybrid.geometry.paths import CirclePath, LinePath
 from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere
 from hybrid.models.planar_arm import Arm, paper_arm
 from hybrid.models.robot import Robot
+from hybrid.models.shipped import panda, ur5
 from hybrid.models.terms import OperationalSpace, arm_terms, operational_space
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.simulation.metrics import metrics
@@ -68,8 +70,8 @@ def __dir__() -> list[str]:
 __all__ = [
     "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw", "Experiment",
     "Gains", "HybridError", "ImplicitSurface", "Khatib", "LinePath", "Measurement", "NativeBuildError",
-    "NonFiniteError", "OperationalSpace", "Plane", "Reference", "Robot", "SCHEMES", "Scheme", "Sensor",
-    "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "Step",
-    "TaskDecoupling", "TaskFrameError", "URDFError", "arm_terms", "decoupling_law", "metrics", "operational_space",
+    "NonFiniteError", "OperationalSpace", "Plane", "Posture", "Reference", "Robot", "SCHEMES", "Scheme", "Sensor",
+    "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling",
+    "TaskFrameError", "URDFError", "arm_terms", "decoupling_law", "metrics", "operational_space", "panda",
     "paper_arm", "paper_experiment", "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",
 ]

@@ -8,7 +8,7 @@ from conftest import UR5, example_robot
 
 import hybrid
 from hybrid import reference as ref
-from hybrid.experiments.tracing import UR5_URDF
+from hybrid.models.shipped import UR5_URDF
 from hybrid.plants.compiled import SpatialPlant
 from hybrid.simulation.runner import run
 

@@ -43,6 +43,60 @@ class ContactLoss:
             raise HybridError(f"ContactLoss approach_speed = {self.approach_speed}; give a speed >= 0")
 
 
+def _gain(name: str, value, n: int) -> tuple[float, ...]:
+    """A posture gain: one number >= 0 for every joint, or one per joint."""
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        arr = np.full(1, np.nan)
+    if arr.ndim > 1 or (arr.ndim == 1 and arr.size != n) or not np.isfinite(arr).all() or (arr < 0).any():
+        raise HybridError(f"Posture {name} = {value!r:.60}; give one finite number >= 0 for every joint, or "
+                          f"{n} of them (one per joint)")
+    return tuple(float(v) for v in np.broadcast_to(arr, (n,)))
+
+
+@dataclass(frozen=True)
+class Posture:
+    """A posture task for a redundant arm: the joints pulled towards ``q_rest`` [rad or m] in the
+    task's null space by the inverse dynamics (the controller's model) of a joint PD,
+
+        tau0 = B(q) w + n(q, q'),   w = stiffness (q_rest - q) - damping q'
+
+    which the decoupling law projects, ``(I - J_y^T Jbar_y^T) tau0``: the task acceleration stays
+    the loops' ``a``, and the joint motion the task leaves free follows the projected PD ``w``.
+
+    ``stiffness`` ``K_p`` [1/s^2] and ``damping`` ``K_d`` [1/s], one number for every joint or one
+    per joint, are a joint acceleration's gains: weighted by ``B(q)`` one pair suits a light wrist
+    and a heavy shoulder joint alike (plain torque gains [N m/rad] would not); ``sqrt(K_p)`` is the
+    null-space motion's natural frequency [rad/s] and ``K_d / (2 sqrt(K_p))`` its damping ratio (the
+    defaults: 5 rad/s, critically damped). ``n`` (gravity, velocity terms, viscosity) is cancelled
+    in the null space too, where the law alone leaves it: without a posture a redundant arm's null
+    space falls under gravity, and with gains 0 it coasts.
+    """
+
+    q_rest: tuple[float, ...]
+    stiffness: float | tuple[float, ...] = 25.0
+    damping: float | tuple[float, ...] = 10.0
+
+    def __post_init__(self):
+        try:
+            q = np.asarray(self.q_rest, dtype=float)
+        except (TypeError, ValueError):
+            q = np.full(1, np.nan)
+        if q.ndim != 1 or q.size == 0 or not np.isfinite(q).all():
+            raise HybridError(f"Posture q_rest = {self.q_rest!r:.60}; give the rest posture, one finite joint "
+                              "position per joint [rad or m]")
+        object.__setattr__(self, "q_rest", tuple(float(v) for v in q))
+        for name in ("stiffness", "damping"):
+            value = _gain(name, getattr(self, name), q.size)
+            object.__setattr__(self, name, value if np.ndim(getattr(self, name)) else value[0])
+
+    def as_array(self) -> np.ndarray:
+        """The generated step's ``posture`` array: ``q_rest``, then ``K_p`` and ``K_d`` per joint."""
+        n = len(self.q_rest)
+        return np.concatenate([self.q_rest, _gain("stiffness", self.stiffness, n), _gain("damping", self.damping, n)])
+
+
 @dataclass(frozen=True)
 class Reference:
     """A reference signal ``y_d(t)`` and its rate ``y_d'(t)`` (the velocity loops' feedforward).
@@ -119,6 +173,11 @@ class Controller:
     contact_loss : a :class:`ContactLoss` rule for force axes; off by default.
     reference : the task frame's reference direction ``e`` (base axes).
     singular_tol : conditioning below which a sample raises :class:`SingularConfigurationError`.
+    posture : a :class:`Posture` task in the null space of the task (off by default). It needs a
+        redundant task (fewer axes than joints: a 7-joint Panda, or a UR5 on ``axes="position"``)
+        and a scheme with a null space (``"task"``, ``"khatib"``); otherwise it is refused (it would do
+        nothing, or disturb the task). Its numbers are run-time inputs of the compiled step (changing
+        them never recompiles); without it the step is the law's own code, bit for bit.
     """
 
     def __init__(self, robot: Robot | Arm, surface, scheme: str | Scheme = "task", *, axes=None, selection=None,
@@ -126,7 +185,8 @@ class Controller:
                  sample_time: float = 0.01, integral: bool = True, curvature: bool = False,
                  frame: str = "actual", path: Callable | None = None, reference=(0.0, 0.0, 1.0),
                  position_error: bool = False, integral_limit: float | None = None,
-                 contact_loss: ContactLoss | None = None, singular_tol: float = 1e-3):
+                 contact_loss: ContactLoss | None = None, singular_tol: float = 1e-3,
+                 posture: Posture | None = None):
         if isinstance(robot, Arm):
             robot = Robot.planar(robot)
         if not isinstance(robot, Robot):
@@ -160,18 +220,24 @@ class Controller:
         if self.scheme.needs_force_gain and any(s and g.KPf <= 0 for g, s in zip(self.gains, self.selection)):
             raise HybridError(f"the {self.scheme.name} scheme commands m_d a = a / KPf on force axes: give KPf > 0")
         self.position_error, self.integral_limit, self.contact_loss = position_error, integral_limit, contact_loss
+        self.posture = self._posture(posture)
         self._references = self._axis_references(force_reference, velocity_reference)
         unit = units.controller_unit(robot.chain, robot.name, self._spatial.spec(), self.axes,
                                         frame == "desired", position_error)
-        self._step, self._measure = unit.function(self.scheme.step), unit.function("task_measurement")
+        # a posture has its own generated step (the law plus tau0), so the law without one stays the very code
+        # it was, bit for bit; both are in the same unit, and the posture's numbers are run-time inputs of both
+        self._step_name = self.scheme.step if self.posture is None else "controller_posture_step"
+        self._step, self._measure = unit.function(self._step_name), unit.function("task_measurement")
         m = len(self.axes)
         loss = contact_loss or ContactLoss(-_OFF, 0.0)
         options = np.array([float(curvature), self.sample_time, float(self.scheme.feeds_desired_force),
                             _OFF if integral_limit is None else float(integral_limit), loss.threshold,
                             loss.approach_speed, float(self.scheme.pseudoinverse)])
         steps = np.array([ref.step or (0.0, 0.0, 0.0) for ref in self._references], float).ravel()
+        # every step takes the posture's numbers (zeros when off: the step without a posture ignores them)
+        posture_array = np.zeros(3 * robot.n) if posture is None else self.posture.as_array()
         self._params = (steps, self._gain_array(), np.array(self.selection, float), robot.as_array(),
-                        self._spatial.as_array(), np.array(self.reference), options)
+                        self._spatial.as_array(), np.array(self.reference), options, posture_array)
         self._t, self._extra, self._rate, self._target = np.zeros(1), np.zeros(m), np.zeros(m), np.zeros(9)
         self._fc = np.zeros(6)
         self._fc_head = {2: self._fc[:2], 3: self._fc[:3]}
@@ -209,10 +275,10 @@ class Controller:
 
     def step_variant(self) -> dict:
         """What the compiled step is made of: the model's chain and name, the surface's spec, the task
-        axes, the compiled-in options and the scheme's step function."""
+        axes, the compiled-in options and the step function (the scheme's, or the posture task's)."""
         return {"chain": self.robot.chain, "name": self.robot.name, "spec": self._spatial.spec(), "axes": self.axes,
                 "desired_frame": self.frame == "desired", "position_error": self.position_error,
-                "step": self.scheme.step}
+                "step": self._step_name}
 
     @property
     def axis_names(self) -> tuple[str, ...]:
@@ -256,6 +322,33 @@ class Controller:
         if not self.integral:
             per_axis = [replace(g, KI2v=0.0, KIf=0.0) for g in per_axis]
         return tuple(per_axis)
+
+    def _posture(self, posture) -> Posture | None:
+        """``posture`` checked against the arm, the task and the scheme (see the class docstring)."""
+        if posture is None:
+            return None
+        if not isinstance(posture, Posture):
+            raise HybridError(f"posture = {posture!r:.60}; give a hybrid.Posture(q_rest, stiffness, damping) or None")
+        n, m = self.robot.n, len(self.axes)
+        if len(posture.q_rest) != n:
+            raise HybridError(f"Posture q_rest has {len(posture.q_rest)} joint positions; the arm has {n} joints "
+                              f"({', '.join(self.robot.joint_names)})")
+        if m >= n:
+            raise HybridError(f"a posture task acts in the task's null space, and this task has none: {m} task axes "
+                              f"({', '.join(self.axis_names)}) for {n} joints; drop posture, or give a task of fewer "
+                              "axes than joints (e.g. axes='position')")
+        if self.scheme.step != "controller_step":
+            raise HybridError(f"the {self.scheme.name} scheme maps the loops without a null-space projection, so a "
+                              "posture task would disturb the task: use it with the 'task' or 'khatib' scheme")
+        limits = self.robot.limits
+        if limits is not None:
+            q = np.array(posture.q_rest)
+            outside = [f"{name} = {v:g} (limits {lo:g} to {hi:g})" for name, v, lo, hi in
+                       zip(self.robot.joint_names, q, limits.lower, limits.upper) if not lo <= v <= hi]
+            if outside:
+                raise HybridError(f"Posture q_rest is outside the joint limits: {'; '.join(outside)}; give a rest "
+                                  "posture within them")
+        return posture
 
     def _gain_array(self) -> np.ndarray:
         """``(KP, KI, KI2, KD)`` per axis, as the generated step reads them."""

@@ -19,7 +19,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from hybrid.control.controller import Controller
+from hybrid.control.controller import Controller, Posture
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES
@@ -61,6 +61,8 @@ class Experiment(RunSettings):
     elbow : +1 (``q2 > 0``) or -1: the planar arm's start configuration.
     reference : the task frame's reference direction ``e`` (base axes).
     axes : the controller's task axes (see :func:`hybrid.decoupling_law`); default the robot's.
+    posture : a :class:`~hybrid.Posture` task in the null space of a redundant arm's task (its rest
+        posture is also where the start's inverse kinematics begins); off by default.
     controller : a scheme's name (``"task"``, ``"khatib"``, ``"raibert_craig"``, ``"fisher_mujtaba"``).
     frame : ``"actual"`` (the loops in ``R(r)``) or ``"desired"`` (in ``R(r_d)``).
     backend : which committed unit runs the closed-form plant (``"sympy"`` or ``"casadi"``).
@@ -74,6 +76,7 @@ class Experiment(RunSettings):
     elbow: int = 1
     reference: tuple[float, float, float] = (0.0, 0.0, 1.0)
     axes: str | tuple[int, ...] | None = None
+    posture: Posture | None = None
     controller: str = "task"
     integral: bool = True
     curvature: bool = False
@@ -109,6 +112,9 @@ class Experiment(RunSettings):
                 f"the {'planar arm needs a planar surface (a hybrid.Circle or a 2-D hybrid.Plane)' if planar else ''}"
                 f"{'' if planar else 'planar surfaces (2 coordinates) are for the paper planar arm; give a 3-D one'}"
                 f", got {self.surface!r:.60}")
+        if self.posture is not None and not isinstance(self.posture, Posture):
+            raise HybridError(f"posture = {self.posture!r:.60}; give a hybrid.Posture(q_rest, stiffness, damping) "
+                              "or None")
         if self.path is not None and not isinstance(self.path, Path):
             raise HybridError(f"path = {self.path!r:.60}; give a hybrid.CirclePath or hybrid.LinePath, or None")
         if not isinstance(self.backend, str) or self.backend not in BACKENDS:
@@ -156,7 +162,7 @@ class Experiment(RunSettings):
     def build_controller(self) -> Controller:
         """Exactly the controller this run uses: its model of the arm, loops, references, options."""
         return Controller(self.controller_robot(), self.surface, self.controller, axes=self.axes,
-                          reference=self.reference, **self.controller_settings())
+                          reference=self.reference, posture=self.posture, **self.controller_settings())
 
     def _path(self) -> Path | None:
         if self.path is not None:
@@ -207,6 +213,7 @@ class Experiment(RunSettings):
         d["start_point"] = None if self.start_point is None else list(self.start_point)
         d["reference"] = list(self.reference)
         d["axes"] = list(self.axes) if isinstance(self.axes, tuple) else self.axes
+        d["posture"] = None if self.posture is None else asdict(self.posture)
         return {"kind": "experiment", **d}
 
     @classmethod
@@ -232,6 +239,8 @@ class Experiment(RunSettings):
         if d["path"] is not None:
             path = dict(d["path"])
             d["path"] = {"CirclePath": CirclePath, "LinePath": LinePath}[path.pop("kind")](**path)
+        if d["posture"] is not None:
+            d["posture"] = Posture(**d["posture"])
         if isinstance(d["axes"], list):
             d["axes"] = tuple(d["axes"])
         return cls(**d)
@@ -249,8 +258,9 @@ def _initial_state(exp: Experiment) -> np.ndarray:
             raise HybridError(f"start_point {np.round(exp.start_point, 4).tolist()} m is {gap * 1000:.1f} mm off "
                               f"the surface; give a point on it (within {START_TOL * 1000:g} mm), e.g. "
                               f"{np.round(p0, 4).tolist()}")
-    return _pressed_start(exp.robot, exp.surface, tuple(p0.tolist()), exp.elbow, exp.reference, exp.singular_tol,
-                          exp.force_reference(0.0), exp.contact.stiffness, exp.sensor.stiffness)
+    q0 = None if exp.posture is None else exp.posture.q_rest
+    return _pressed_start(exp.robot, exp.surface, tuple(p0.tolist()), exp.elbow, q0, exp.reference,
+                          exp.singular_tol, exp.force_reference(0.0), exp.contact.stiffness, exp.sensor.stiffness)
 
 
 def _probe(exp: Experiment, p: np.ndarray) -> np.ndarray:
@@ -260,13 +270,13 @@ def _probe(exp: Experiment, p: np.ndarray) -> np.ndarray:
 
 # the runs of a sweep mostly start alike: what they share is worked out once (from the values it reads)
 @lru_cache(maxsize=1024)
-def _pressed_start(robot, surface, p0, elbow, reference, singular_tol, F0, k_e, K_s) -> np.ndarray:
+def _pressed_start(robot, surface, p0, elbow, q0, reference, singular_tol, F0, k_e, K_s) -> np.ndarray:
     normal = surface.normal_at(p0)
     s, r = pressed(p0, normal, F0, k_e, K_s)
     # the tool's orientation is set where the task controls it (the planar arm's follows from r)
     rotation = None if robot.closed_form is not None else _tool_rotation(np.asarray(reference), normal)
     try:
-        q = robot.inverse_kinematics(np.append(r, 0.0) if len(r) == 2 else r, rotation, elbow=elbow)
+        q = robot.inverse_kinematics(np.append(r, 0.0) if len(r) == 2 else r, rotation, q0=q0, elbow=elbow)
     except HybridError as exc:
         raise HybridError(f"the start pose cannot be reached: {exc}") from None
     cond = float(robot.conditioning(q))

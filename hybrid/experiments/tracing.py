@@ -8,25 +8,16 @@ steps from 10 N to 20 N at 0.5 s, the speed along ``t1`` from 0.15 m/s to 0.3 m/
 
 from __future__ import annotations
 
-from pathlib import Path
-
 from hybrid.control.references import Step
 from hybrid.errors import HybridError
 from hybrid.experiments.experiment import Experiment
 from hybrid.experiments.settings import with_overrides
 from hybrid.geometry.surfaces import Sphere
-from hybrid.models.robot import Robot
+from hybrid.models.shipped import ur5
 
-#: the UR5's URDF as example-robot-data ships it (with its licence, beside it)
-UR5_URDF = Path(__file__).resolve().parent.parent / "data" / "ur5_robot.urdf"
 #: the sphere of the default experiment: in front of the UR5, within reach and away from its
 #: singularities along the whole path (a choice)
 SPHERE_CENTER, SPHERE_RADIUS = (0.5, 0.0, 0.2), 0.15
-
-
-def ur5() -> Robot:
-    """The UR5 of example-robot-data (tip ``tool0``, gravity on)."""
-    return Robot.from_urdf(UR5_URDF, tip="tool0")
 
 
 def tracing_experiment(**overrides) -> Experiment:
