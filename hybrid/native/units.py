@@ -133,32 +133,22 @@ def plant_unit(chain, name: str, spec) -> Unit:
                     lambda: generator("robot_unit").build_plant_unit(chain, spec, prefix, robot_info(chain, name)))
 
 
-def loop_unit(plant: tuple, variant: dict, lanes: int | None) -> Unit:
-    """The whole closed loop of a plant (``("planar", surface kind)`` or ``("spatial", chain, name,
-    surface spec)``) and a controller step (``variant``: its chain, name, surface spec, axes, variants
-    and step function); ``lanes=1``: the build for one run at a time."""
+def loop_unit(plant, variant: dict, lanes: int | None) -> Unit:
+    """The whole closed loop of a generated plant (a :class:`hybrid.plants.compiled.LoopPlant`) and a
+    controller step (``variant``: its chain, name, surface spec, axes, variants and step function);
+    ``lanes=1``: the build for one run at a time."""
     v = variant
-    kind = plant[1] if plant[0] == "planar" else f"{plant[2]}_{plant[3].kind}"
-    prefix = c_identifier(f"hybrid_{v['name']}_{kind}_{v['step']}_loop{'_one' if lanes == 1 else ''}")
-    plant_key = list(plant) if plant[0] == "planar" else ["spatial", chain_key(plant[1]), plant[3].key()]
-    key = {"chain": chain_key(v["chain"]), "surface": v["spec"].key(), "axes": list(v["axes"]), "plant": plant_key,
+    prefix = c_identifier(f"hybrid_{v['name']}_{plant.name}_{v['step']}_loop{'_one' if lanes == 1 else ''}")
+    key = {"chain": chain_key(v["chain"]), "surface": v["spec"].key(), "axes": list(v["axes"]), "plant": plant.key(),
            **{k: v[k] for k in ("desired_frame", "position_error", "step")}, "lanes": lanes}
     return compiled(prefix, key, lambda: _build_loop(prefix, plant, v, lanes))
 
 
-def _build_loop(prefix: str, plant: tuple, v: dict, lanes: int | None):
+def _build_loop(prefix: str, plant, v: dict, lanes: int | None):
     steps = {k.name: k for k in generator("controller_step").controller_kernels(
         v["chain"], v["spec"], v["axes"], v["desired_frame"], v["position_error"])}
-    if plant[0] == "planar":
-        kernels = {k.name: k for k in generator("model").kernels(2)}
-        rhs, outputs, force = kernels[f"plant_rhs_{plant[1]}"], kernels[f"plant_outputs_{plant[1]}"], ("Fc_x", "Fc_y")
-        what = f"the paper's closed loop on a {plant[1]}"
-    else:
-        kernels = {k.name: k for k in generator("spatial_plant").plant_kernels(plant[1], plant[3])}
-        rhs, outputs, force = kernels["plant_rhs"], kernels["plant_outputs"], ("Fc_x", "Fc_y", "Fc_z")
-        what = f"the 3-D experiment's closed loop: {plant[2]} on a {plant[3].kind}"
-    info = {"plant": plant[0], "surface": plant[1] if plant[0] == "planar" else plant[3].kind, "step": v["step"],
-            "robot": v["name"]}
+    rhs, outputs, force = plant.kernels(generator)
+    info = {"plant": plant.key()[0], "surface": plant.name, "step": v["step"], "robot": v["name"]}
     loop = generator("closed_loop")
     return loop.build_closed_loop_unit(loop.LoopSpec(rhs, outputs, steps[v["step"]], force), prefix,
-                                       f"{what}: {v['step']}", info, lanes)
+                                       f"{plant.what}: {v['step']}", info, lanes)

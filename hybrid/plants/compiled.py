@@ -6,6 +6,7 @@ non-finite state) and ``outputs(states)`` (the ``PLANT_OUTPUTS`` record of each 
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from functools import cache
 
 import numpy as np
@@ -27,6 +28,59 @@ def planar_record() -> dict:
     committed manifest when first asked for."""
     functions = {f["name"]: f for f in manifest("sympy")["functions"]}
     return plant_record(functions["plant_rhs_circle"], functions["plant_outputs_circle"])
+
+
+class LoopPlant:
+    """What the compiled closed loop needs of a generated plant: ``name`` (part of its unit's name),
+    ``key()`` (what the generated code depends on, for the cache), ``kernels(generator)`` (its state
+    derivative, its output record and the record's sensor-force columns, from the generator's
+    modules), ``what`` (a line for the unit's header). Equal plants compare equal: they share a build."""
+
+
+@dataclass(frozen=True)
+class PlanarLoopPlant(LoopPlant):
+    """The paper's closed-form plant on a planar surface of ``kind``."""
+
+    kind: str
+
+    @property
+    def name(self) -> str:
+        return self.kind
+
+    @property
+    def what(self) -> str:
+        return f"the paper's closed loop on a {self.kind}"
+
+    def key(self) -> list:
+        return ["planar", self.kind]
+
+    def kernels(self, generator) -> tuple:
+        kernels = {k.name: k for k in generator("model").kernels(2)}
+        return kernels[f"plant_rhs_{self.kind}"], kernels[f"plant_outputs_{self.kind}"], ("Fc_x", "Fc_y")
+
+
+@dataclass(frozen=True)
+class RigidBodyLoopPlant(LoopPlant):
+    """The generated rigid-body plant of the arm ``chain`` (named ``robot``) on the surface ``spec``."""
+
+    chain: object
+    robot: str
+    spec: object
+
+    @property
+    def name(self) -> str:
+        return f"{self.robot}_{self.spec.kind}"
+
+    @property
+    def what(self) -> str:
+        return f"the 3-D experiment's closed loop: {self.robot} on a {self.spec.kind}"
+
+    def key(self) -> list:
+        return ["spatial", units.chain_key(self.chain), self.spec.key()]
+
+    def kernels(self, generator) -> tuple:
+        kernels = {k.name: k for k in generator("spatial_plant").plant_kernels(self.chain, self.spec)}
+        return kernels["plant_rhs"], kernels["plant_outputs"], ("Fc_x", "Fc_y", "Fc_z")
 
 
 class Plant:
@@ -94,9 +148,9 @@ class NativePlant(CompiledPlant):
         self._arm = exp.arm
 
     @staticmethod
-    def loop_key(exp) -> tuple:
-        """What the closed loop's generated plant is built from (:func:`hybrid.native.units.loop_unit`)."""
-        return ("planar", exp.surface.kind)
+    def loop_plant(exp) -> LoopPlant:
+        """What the compiled closed loop's plant is built from (:func:`hybrid.native.units.loop_unit`)."""
+        return PlanarLoopPlant(exp.surface.kind)
 
     @staticmethod
     def inputs(exp) -> dict[str, np.ndarray]:
@@ -122,9 +176,9 @@ class SpatialPlant(CompiledPlant):
         self._robot = exp.robot
 
     @staticmethod
-    def loop_key(exp) -> tuple:
-        """What the closed loop's generated plant is built from (:func:`hybrid.native.units.loop_unit`)."""
-        return ("spatial", exp.robot.chain, exp.robot.name, exp.surface.lift().spec())
+    def loop_plant(exp) -> LoopPlant:
+        """What the compiled closed loop's plant is built from (:func:`hybrid.native.units.loop_unit`)."""
+        return RigidBodyLoopPlant(exp.robot.chain, exp.robot.name, exp.surface.lift().spec())
 
     @staticmethod
     def inputs(exp) -> dict[str, np.ndarray]:

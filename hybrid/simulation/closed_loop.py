@@ -47,10 +47,9 @@ class Loop:
 
 
 @cache
-def _loop(plant: tuple, variant: tuple, lanes: int | None = None) -> Loop:
-    """The compiled loop of a plant (``("planar", surface kind)`` or ``("spatial", chain, name, surface
-    spec)``) and a controller step (:meth:`Controller.step_variant`, as sorted items); ``lanes=1``: the
-    build for one run at a time."""
+def _loop(plant, variant: tuple, lanes: int | None = None) -> Loop:
+    """The compiled loop of a plant (:class:`~hybrid.plants.compiled.LoopPlant`) and a controller step
+    (:meth:`Controller.step_variant`, as sorted items); ``lanes=1``: the build for one run at a time."""
     unit = units.loop_unit(plant, dict(variant), lanes)
     module, loop = unit.module, unit.manifest["closed_loop"]
     return Loop(getattr(module.lib, loop["symbol"]), module.ffi, (plant, variant),
@@ -59,7 +58,7 @@ def _loop(plant: tuple, variant: tuple, lanes: int | None = None) -> Loop:
 
 
 @cache
-def _available_loop(plant: tuple, variant: tuple, lanes: int | None = None) -> Loop | None:
+def _available_loop(plant, variant: tuple, lanes: int | None = None) -> Loop | None:
     """:func:`_loop`, or None (said once) when it cannot be built here: its C needs GCC's or Clang's
     vector extensions, and without them every run takes the Python runner."""
     try:
@@ -91,7 +90,7 @@ def prepare(exp, x0: np.ndarray | None = None) -> Prepared | None:
     if x0 is None:
         x0 = exp.initial_state()
         exp.check_path()
-    plant, given = exp.plant_class.loop_key(exp), exp.plant_class.inputs(exp)
+    plant, given = exp.plant_class.loop_plant(exp), exp.plant_class.inputs(exp)
     loop = _available_loop(plant, tuple(sorted(ctrl.step_variant().items())))
     if loop is None:
         return None
