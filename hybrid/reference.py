@@ -13,7 +13,7 @@ from functools import cache
 import numpy as np
 
 from hybrid.errors import HybridError, NonFiniteError, SingularConfigurationError
-from hybrid.plants.compiled import planar_record
+from hybrid.plants.planar import planar_record
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.runner import check_memory, run
 

@@ -16,7 +16,7 @@ import hybrid
 from hybrid import metrics
 from hybrid.control.controller import Controller
 from hybrid.native.build import CFLAGS, compiler
-from hybrid.plants.compiled import NativePlant
+from hybrid.plants.planar import PlanarPlant
 from hybrid.simulation import closed_loop
 from hybrid.simulation.runner import run
 
@@ -42,7 +42,7 @@ def test_compiled_runs_equal_the_python_runner(case):
     prepared = closed_loop.prepare(exp)
     assert prepared is not None
     got = closed_loop.run([prepared], record=True)[0]
-    ref = run(exp, NativePlant(exp), Controller.from_experiment(exp), exp.initial_state())
+    ref = run(exp, PlanarPlant(exp), Controller.from_experiment(exp), exp.initial_state())
     assert got.status == 0 and got.failed_sample == -1
     scale = np.abs(ref.state).max(axis=0) + 1e-3
     assert np.abs((got.states - ref.state) / scale).max() < 1e-7
@@ -57,11 +57,11 @@ def test_compiled_runs_equal_the_python_runner(case):
 @pytest.mark.parametrize("overrides", [{}, {"controller": "khatib", "contact": hybrid.Contact(friction=0.3)}])
 def test_the_3d_experiment_in_c_equals_the_python_runner(overrides):
     """The UR5 on the sphere (NOTES section 10): the 6-joint plant and six-axis controller as lanes."""
-    from hybrid.plants.compiled import SpatialPlant
+    from hybrid.plants.rigid_body import RigidBodyPlant
 
     exp = hybrid.tracing_experiment(duration=0.8, **overrides)
     got = closed_loop.run([closed_loop.prepare(exp)], record=True)[0]
-    plant = SpatialPlant(exp)
+    plant = RigidBodyPlant(exp)
     ref = run(exp, plant, Controller.from_experiment(exp), exp.initial_state())
     assert got.status == 0
     assert np.abs((got.states - ref.state) / (np.abs(ref.state).max(axis=0) + 1e-3)).max() < 1e-7
@@ -72,7 +72,7 @@ def test_the_3d_experiment_in_c_equals_the_python_runner(overrides):
 def test_metrics_in_c_equal_the_numpy_definitions_on_the_same_record():
     exp = _experiment("steps_down")
     got = closed_loop.run([closed_loop.prepare(exp)], record=True)[0]
-    plant = NativePlant(exp)
+    plant = PlanarPlant(exp)
     record = plant.outputs(got.states)
     t = np.arange(len(got.states)) * exp.step
     col = {name: record[:, i] for i, name in enumerate(plant.record["outputs"])}

@@ -10,7 +10,7 @@ from hybrid.codegen.model import PLANT_OUTPUTS
 
 import hybrid
 from hybrid import reference
-from hybrid.plants import compiled as plants
+from hybrid.plants import planar as plants
 from hybrid.simulation.metrics import settling_time
 
 EXACT = dict(model_error=0.0, viscous_compensation=1.0, contact=hybrid.Contact(friction=0.0))

@@ -95,7 +95,7 @@ def test_every_surface_gives_the_same_contact(kind):
     gravity and the sensor's preload, both plants integrate 0.1 s alike (in contact throughout)."""
     base = hybrid.tracing_experiment()
     exp = hybrid.tracing_experiment(surface=surfaces(base)[kind], start_point=tuple(base.start()))
-    generated, mj = exp.plant(), exp.mujoco_plant()
+    generated, mj = exp.plant(), mujoco_plant.mujoco_plant(exp)
     x0 = exp.initial_state()
     n = exp.robot.n
     terms = robot_terms(exp.robot, x0[:n], np.zeros(n))

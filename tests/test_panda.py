@@ -15,7 +15,7 @@ from hybrid import reference as ref
 from hybrid.models.robot import robot_terms
 from hybrid.models.shipped import PANDA_URDF, UR5_URDF
 from hybrid.native import units
-from hybrid.plants.compiled import SpatialPlant
+from hybrid.plants.rigid_body import RigidBodyPlant
 from hybrid.simulation import closed_loop
 from hybrid.simulation.runner import run
 
@@ -104,7 +104,7 @@ def run_checked(exp, x0, posture, q_rest):
         error.append(np.linalg.norm(q_rest - q))
         return tau
 
-    run(exp, SpatialPlant(exp), controller, x0)
+    run(exp, RigidBodyPlant(exp), controller, x0)
     assert len(error) == exp.n_samples
     return worst[0], np.array(error)
 
@@ -136,7 +136,7 @@ def test_the_compiled_loop_runs_the_posture_task_as_the_python_runner_does(at_re
     assert all(p is not None and p.loop is prepared[0].loop for p in prepared)
     outcomes = closed_loop.run(prepared, record=True)
     for e, got in zip(exps, outcomes):
-        want = run(e, SpatialPlant(e), e.build_controller(), x0)
+        want = run(e, RigidBodyPlant(e), e.build_controller(), x0)
         assert got.status == 0
         assert np.abs((got.states - want.state) / (np.abs(want.state).max(axis=0) + 1e-3)).max() < 1e-7
     ends = [np.linalg.norm(q_rest - got.states[-1, :7]) for got in outcomes]

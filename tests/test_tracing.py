@@ -9,7 +9,7 @@ from conftest import UR5, example_robot
 import hybrid
 from hybrid import reference as ref
 from hybrid.models.shipped import UR5_URDF
-from hybrid.plants.compiled import SpatialPlant
+from hybrid.plants.rigid_body import RigidBodyPlant
 from hybrid.simulation.runner import run
 
 EXACT = dict(model_error=0.0, viscous_compensation=1.0, contact=hybrid.Contact(friction=0.0))
@@ -88,7 +88,7 @@ def test_closed_loop_task_acceleration_equals_the_command():
         samples[0] += 1
         return tau
 
-    plant = SpatialPlant(exp)
+    plant = RigidBodyPlant(exp)
     run(exp, plant, controller, exp.initial_state())
     assert samples[0] == exp.n_samples
     assert worst[0] < 1e-7

@@ -32,9 +32,9 @@ from hybrid.models.chain import Chain, Joint
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot
 from hybrid.models.urdf import JointLimits, LinkInertia
-from hybrid.plants.compiled import NativePlant, SpatialPlant
 from hybrid.plants.contact import Contact, Sensor
-from hybrid.plants.mujoco import MujocoPlant
+from hybrid.plants.planar import PlanarPlant
+from hybrid.plants.rigid_body import RigidBodyPlant
 from hybrid.validate import SINGULAR_TOL, _point
 
 #: the committed units that can run the closed-form plant and law (the same equations, two printers)
@@ -143,17 +143,11 @@ class Experiment(RunSettings):
     @property
     def plant_class(self) -> type:
         """The generated plant of these runs: the closed form of the planar arm, else the rigid-body one."""
-        return NativePlant if self.robot.closed_form is not None else SpatialPlant
+        return PlanarPlant if self.robot.closed_form is not None else RigidBodyPlant
 
     def plant(self):
         """The generated plant of this run (the true arm, sensor, contact on the surface)."""
         return self.plant_class(self)
-
-    def mujoco_plant(self):
-        """MuJoCo as this run's plant (:mod:`hybrid.plants.mujoco`; needs the ``mujoco`` extra): the arm
-        read by MuJoCo, the sensor, contact and friction of the generated plant (the planar plant's
-        sensor tip has no gravity, as the closed form's)."""
-        return MujocoPlant(self, self.robot, sensor_gravity=self.robot.closed_form is None)
 
     def controller_robot(self) -> Robot:
         """The controller's (wrong) model of the arm."""

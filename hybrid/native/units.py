@@ -134,7 +134,7 @@ def plant_unit(chain, name: str, spec) -> Unit:
 
 
 def loop_unit(plant, variant: dict, lanes: int | None) -> Unit:
-    """The whole closed loop of a generated plant (a :class:`hybrid.plants.compiled.LoopPlant`) and a
+    """The whole closed loop of a generated plant (a :class:`hybrid.plants.interface.LoopPlant`) and a
     controller step (``variant``: its chain, name, surface spec, axes, variants and step function);
     ``lanes=1``: the build for one run at a time."""
     v = variant

@@ -48,7 +48,7 @@ class Loop:
 
 @cache
 def _loop(plant, variant: tuple, lanes: int | None = None) -> Loop:
-    """The compiled loop of a plant (:class:`~hybrid.plants.compiled.LoopPlant`) and a controller step
+    """The compiled loop of a plant (:class:`~hybrid.plants.interface.LoopPlant`) and a controller step
     (:meth:`Controller.step_variant`, as sorted items); ``lanes=1``: the build for one run at a time."""
     unit = units.loop_unit(plant, dict(variant), lanes)
     module, loop = unit.module, unit.manifest["closed_loop"]

@@ -13,7 +13,7 @@ import numpy as np
 from hybrid import files
 from hybrid.errors import HybridError
 from hybrid.experiments.experiment import Experiment
-from hybrid.plants.compiled import planar_record
+from hybrid.plants.planar import planar_record
 
 
 @dataclass

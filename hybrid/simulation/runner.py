@@ -17,8 +17,9 @@ import numpy as np
 
 from hybrid.control.loops import model_error_note
 from hybrid.errors import HybridError, NonFiniteError
-from hybrid.experiments.settings import RunSettings
-from hybrid.plants.compiled import planar_record
+from hybrid.experiments.experiment import Experiment
+from hybrid.plants.interface import plant_for
+from hybrid.plants.planar import planar_record
 from hybrid.simulation import closed_loop
 from hybrid.simulation.metrics import run_metrics
 from hybrid.simulation.results import SimulationResult
@@ -63,21 +64,20 @@ def check_memory(exp, record: dict | None = None) -> None:
 
 
 def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> SimulationResult:
-    """Run ``exp`` (the paper's :class:`Experiment` or a :class:`~hybrid.tracing.TracingExperiment`):
-    controller sampled every ``sample_time``, plant RK4 every ``step``. ``plant="mujoco"`` runs the
-    paper's experiment with MuJoCo as the plant (:mod:`hybrid.mujoco_plant`). With ``compiled=False``
-    the Python runner runs it even where the compiled loop could (the reference that loop is tested
-    against; equal within rounding)."""
-    if plant not in ("generated", "mujoco"):
-        raise HybridError(f"plant = {plant!r}; give 'generated' (the compiled plant) or 'mujoco'")
-    if not isinstance(exp, RunSettings):
+    """Run the experiment ``exp``: its controller sampled every ``sample_time`` under zero-order hold,
+    its plant advanced by RK4 every ``step``. ``plant`` names one of :data:`hybrid.plants.interface.PLANTS`:
+    ``"generated"`` (the experiment's own: the paper's arm in closed form, else its rigid-body plant)
+    or ``"mujoco"`` (MuJoCo reading the arm's URDF, :mod:`hybrid.plants.mujoco`). With
+    ``compiled=False`` the Python runner runs it even where the compiled loop could (the reference
+    that loop is tested against; equal within rounding)."""
+    if not isinstance(exp, Experiment):
         raise HybridError(f"simulate() takes an experiment (see hybrid.paper_experiment() and "
                           f"hybrid.tracing_experiment()), got {type(exp).__name__}")
-    model = exp.plant() if plant == "generated" else exp.mujoco_plant()
+    model = plant_for(exp, plant)
     check_memory(exp, model.record)  # before the path check, whose arrays grow with the run too
     x0 = exp.initial_state()
     exp.check_path()
-    if plant == "mujoco":
+    if plant != "generated":  # the compiled loop runs the generated plants only
         return run(exp, model, exp.build_controller(), x0)
     return _compiled_or_run(exp, model, x0, compiled)
 
