@@ -17,7 +17,6 @@ import importlib
 import importlib.util
 import json
 from functools import cache
-from importlib.metadata import version
 from pathlib import Path
 
 from hybrid.errors import HybridError
@@ -76,11 +75,18 @@ def fingerprint() -> str:
     return digest.hexdigest()
 
 
+@cache
+def _tool_versions() -> dict:
+    """The generator's tools' versions (read from their installed metadata, not by importing them)."""
+    import importlib.metadata  # slow to import (it parses e-mail headers): only when a unit is asked for
+
+    return {tool: importlib.metadata.version(tool) for tool in ("casadi", "sympy")}
+
+
 def compiled(prefix: str, key: dict, make) -> Unit:
     """Generate (cached by ``key``, the generator's source and the versions of SymPy and CasADi),
     compile (cached) and load the unit that ``make()`` builds."""
-    key = {**key, "generator": fingerprint(), "casadi": version("casadi"), "sympy": version("sympy"),
-           "prefix": prefix}
+    key = {**key, "generator": fingerprint(), **_tool_versions(), "prefix": prefix}
     folder = build.generated_unit(prefix, key, lambda: make().files)
     module, manifest = build.load_generated(folder, prefix)
     return Unit(module, manifest, " (a wrist, elbow or shoulder singularity)",

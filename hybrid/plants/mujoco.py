@@ -29,7 +29,7 @@ is the generated plant's, computed from the state.
 from __future__ import annotations
 
 import math
-from xml.sax.saxutils import quoteattr
+from html import escape
 
 import numpy as np
 
@@ -118,14 +118,14 @@ def robot_urdf(robot: Robot) -> str:
     def v(values):
         return " ".join(repr(float(c)) for c in values)
 
-    parts, parent = [f"<robot name={quoteattr(robot.name)}>", '<link name="base"/>'], "base"
+    parts, parent = [f'<robot name="{escape(robot.name)}">', '<link name="base"/>'], "base"
     for i, (joint, link) in enumerate(zip(robot.chain.joints, robot.links)):
         kind = "continuous" if joint.kind == "revolute" else "prismatic"
         limit = '<limit lower="-1e6" upper="1e6" effort="0" velocity="0"/>' if kind == "prismatic" else ""
         I = np.asarray(link.inertia, float) + TINY * np.eye(3) * (not np.any(link.inertia))  # noqa: E741
         inertia = " ".join(f'{k}="{float(I[a, b])!r}"' for k, (a, b) in zip(
             ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"), ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))))
-        parts += [f'<joint name={quoteattr(joint.name)} type="{kind}"><parent link="{parent}"/><child link="link{i}"/>'
+        parts += [f'<joint name="{escape(joint.name)}" type="{kind}"><parent link="{parent}"/><child link="link{i}"/>'
                   f'<origin xyz="{v(joint.translation)}" rpy="{v(_rpy(np.asarray(joint.rotation)))}"/>'
                   f'<axis xyz="{v(joint.axis)}"/>{limit}</joint>',
                   f'<link name="link{i}"><inertial><origin xyz="{v(link.com)}"/>'
