@@ -2,16 +2,20 @@
 
 The public API, by subpackage:
 
-- robot models (:mod:`hybrid.models`): :class:`Robot` (any serial arm, e.g. from a URDF;
-  the shipped :func:`ur5` and :func:`panda`), the paper's planar :class:`Arm`
-  (:func:`paper_arm`), and their terms (:func:`arm_terms`, :func:`operational_space`);
-- geometry (:mod:`hybrid.geometry`): the surfaces :class:`Plane`, :class:`Circle`,
-  :class:`Sphere`, :class:`Cylinder` and :class:`ImplicitSurface`;
-- control (:mod:`hybrid.control`): the compiled law (:func:`decoupling_law`,
-  :func:`task_frame`), the :class:`Controller` component, its options (:class:`Posture`, a null-space
-  posture task; :class:`ContactLoss`) and its schemes (:data:`SCHEMES`);
-- experiments and simulation: :func:`paper_experiment`, :func:`tracing_experiment`,
-  :func:`simulate`, :class:`SimulationResult`, :func:`metrics`; sweeps (:func:`sweep`);
+- robot models (:mod:`hybrid.models`): :class:`Robot`, the one robot model (any serial arm, e.g.
+  from a URDF; the shipped :func:`ur5` and :func:`panda`, their files :data:`UR5_URDF` and
+  :data:`PANDA_URDF`; the paper's planar arm as ``Robot.planar(paper_arm())``, with :class:`Arm` its
+  parameters), and their terms (:func:`arm_terms`, :func:`operational_space`);
+- geometry (:mod:`hybrid.geometry`): the surfaces :class:`Plane`, :class:`Circle`, :class:`Sphere`,
+  :class:`Cylinder` and :class:`ImplicitSurface`; paths on them (:class:`CirclePath`,
+  :class:`LinePath`); the task frame at points of any surface (:func:`task_frame`);
+- control (:mod:`hybrid.control`): the compiled law (:class:`DecouplingLaw`, :func:`decoupling_law`),
+  the :class:`Controller` component, its options (:class:`Posture`, a null-space posture task;
+  :class:`ContactLoss`) and its schemes (:data:`SCHEMES`); :class:`Gains`, :class:`Step`;
+- experiments and simulation: the one :class:`Experiment` type and its factories
+  (:func:`paper_experiment`, :func:`tracing_experiment`, :func:`panda_experiment`), the plant's
+  :class:`Sensor` and :class:`Contact`, :func:`simulate`, :class:`SimulationResult`, :func:`metrics`;
+  sweeps (:func:`sweep`);
 - :class:`HybridError`, the base of every error raised on bad input.
 
 Importing the package loads neither SymPy nor CasADi and reads no file: the code generator
@@ -42,7 +46,7 @@ from hybrid.geometry.paths import CirclePath, LinePath
 from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere
 from hybrid.models.planar_arm import Arm, paper_arm
 from hybrid.models.robot import Robot
-from hybrid.models.shipped import panda, ur5
+from hybrid.models.shipped import PANDA_URDF, UR5_URDF, panda, ur5
 from hybrid.models.terms import OperationalSpace, arm_terms, operational_space
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.simulation.metrics import metrics
@@ -70,8 +74,9 @@ def __dir__() -> list[str]:
 __all__ = [
     "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw", "Experiment",
     "Gains", "HybridError", "ImplicitSurface", "Khatib", "LinePath", "Measurement", "NativeBuildError",
-    "NonFiniteError", "OperationalSpace", "Plane", "Posture", "Reference", "Robot", "SCHEMES", "Scheme", "Sensor",
-    "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling",
-    "TaskFrameError", "URDFError", "arm_terms", "decoupling_law", "metrics", "operational_space", "panda",
-    "paper_arm", "paper_experiment", "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",
+    "NonFiniteError", "OperationalSpace", "PANDA_URDF", "Plane", "Posture", "Reference", "Robot", "SCHEMES",
+    "Scheme", "Sensor", "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "Step",
+    "TaskDecoupling", "TaskFrameError", "UR5_URDF", "URDFError", "arm_terms", "decoupling_law", "metrics",
+    "operational_space", "panda", "paper_arm", "paper_experiment", "simulate", "sweep", "task_frame",
+    "tracing_experiment", "ur5",
 ]

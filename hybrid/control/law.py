@@ -21,7 +21,6 @@ another surface of the same kind, needs no recompilation.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from functools import partial
 
 import numpy as np
@@ -40,7 +39,6 @@ from hybrid.validate import SINGULAR_TOL, check_singular_tol
 BACKENDS = ("rigid_body", "sympy", "casadi")
 
 
-@dataclass(frozen=True)
 class DecouplingLaw:
     """The compiled decoupling law of ``robot`` on ``surface`` for the task ``axes``.
 
@@ -48,34 +46,35 @@ class DecouplingLaw:
     torques [N m or N], ``law.evaluate(...)`` both. ``q`` [rad or m] and ``qdot`` have one entry per
     joint, ``a`` one task acceleration per axis [m/s^2 or rad/s^2, task frame], ``Fc`` the measured
     contact wrench on the robot (``wrench_size`` entries, base axes); or N rows of each for N states
-    in one native call (``out=`` then takes the caller's arrays).
+    in one native call (``out=`` then takes the caller's arrays). Its settings are read-only: the
+    compiled entry point is bound to them.
     """
 
-    robot: Robot
-    surface: Surface
-    curvature: bool = False
-    reference: tuple[float, float, float] = (0.0, 0.0, 1.0)
-    axes: tuple[int, ...] | str | None = None
-    backend: str | None = None
-    singular_tol: float = SINGULAR_TOL
+    __slots__ = ("robot", "surface", "curvature", "reference", "axes", "backend", "singular_tol", "_fn",
+                 "_params", "_tail", "_fast", "_binding")
 
-    def __post_init__(self):
+    def __init__(self, robot: Robot | Arm, surface: Surface, curvature: bool = False,
+                 reference=(0.0, 0.0, 1.0), axes=None, backend: str | None = None,
+                 singular_tol: float = SINGULAR_TOL):
         init = partial(object.__setattr__, self)
-        if isinstance(self.robot, Arm):  # the paper's parameters stand for its arm, in closed form
-            if not (isinstance(self.surface, Surface) and self.surface.dim == 2):
+        if isinstance(robot, Arm):  # the paper's parameters stand for its arm, in closed form
+            if not (isinstance(surface, Surface) and surface.dim == 2):
                 raise HybridError(f"the planar arm needs a hybrid.Circle or hybrid.Plane in 2-D, got "
-                                  f"{self.surface!r:.100}; for a 3-D surface use a hybrid.Robot")
-            init("robot", Robot.planar(self.robot))
-        if not isinstance(self.robot, Robot):
-            raise HybridError(f"robot must be a hybrid.Robot (or the paper's hybrid.Arm), got "
-                              f"{type(self.robot).__name__}")
-        if not isinstance(self.curvature, bool):
-            raise HybridError(f"curvature must be True or False, got {self.curvature!r}")
-        check_singular_tol("decoupling_law", self.singular_tol)
-        init("reference", tuple(reference_direction(self.reference)))
-        init("axes", check_axes(self.robot, self.axes))
+                                  f"{surface!r:.100}; for a 3-D surface use a hybrid.Robot")
+            robot = Robot.planar(robot)
+        if not isinstance(robot, Robot):
+            raise HybridError(f"robot must be a hybrid.Robot (or the paper's hybrid.Arm), got {type(robot).__name__}")
+        if not isinstance(curvature, bool):
+            raise HybridError(f"curvature must be True or False, got {curvature!r}")
+        check_singular_tol("decoupling_law", singular_tol)
+        init("robot", robot)
+        init("surface", surface)
+        init("curvature", curvature)
+        init("singular_tol", float(singular_tol))
+        init("reference", tuple(reference_direction(reference)))
+        init("axes", check_axes(robot, axes))
         closed = self._closed_form_applies()
-        backend = self.backend if self.backend is not None else ("sympy" if closed else "rigid_body")
+        backend = backend if backend is not None else ("sympy" if closed else "rigid_body")
         if backend not in BACKENDS:
             raise HybridError(f"backend must be one of {', '.join(BACKENDS)}, got {backend!r:.40}")
         if backend != "rigid_body" and not closed:
@@ -83,23 +82,29 @@ class DecouplingLaw:
                               "hybrid.Robot.planar(arm) (or a hybrid.Arm) on a hybrid.Circle or a 2-D hybrid.Plane, "
                               "planar task axes and reference (0, 0, 1); use backend='rigid_body'")
         init("backend", backend)
-        check = self.robot.closed_form if backend != "rigid_body" else None
         if backend == "rigid_body":
-            spatial = spatial_surface(self.surface)
-            fn = units.law_unit(self.robot.chain, self.robot.name, spatial.spec(), self.axes).function(
-                "decoupling_law")
-            params = (self.robot.as_array(), spatial.as_array(), np.array(self.reference))
-            tail = (np.zeros(self.robot.n),)  # tau0
+            spatial = spatial_surface(surface)
+            fn = units.law_unit(robot.chain, robot.name, spatial.spec(), self.axes).function("decoupling_law")
+            params = (robot.as_array(), spatial.as_array(), np.array(self.reference))
+            tail = (np.zeros(robot.n),)  # tau0
         else:
-            fn = units.planar_unit(backend).function(f"decoupling_law_{self.surface.kind}")
-            params, tail = (check.as_array(), self.surface.as_array()), ()
+            fn = units.planar_unit(backend).function(f"decoupling_law_{surface.kind}")
+            params, tail = (robot.closed_form.as_array(), surface.as_array()), ()
         init("_fn", fn)
-        init("_params", (*params, np.array([1.0 if self.curvature else 0.0])))
+        init("_params", (*params, np.array([1.0 if curvature else 0.0])))
         init("_tail", tail)
         # one state from NumPy arrays skips cffi's per-array conversion (see hybrid/native/fastcall.c)
         fast, handle = fn.fast_bind(4 + len(tail), *self._params, singular_tol=self.singular_tol)
         init("_fast", fast)
         init("_binding", handle)
+
+    def __setattr__(self, name, value):
+        raise AttributeError(f"a DecouplingLaw's settings are read-only; build another law to change {name}")
+
+    def __repr__(self) -> str:
+        return (f"DecouplingLaw(robot={self.robot.name!r}, surface={self.surface!r}, curvature={self.curvature}, "
+                f"reference={self.reference}, axes={self.axes}, backend={self.backend!r}, "
+                f"singular_tol={self.singular_tol})")
 
     def _closed_form_applies(self) -> bool:
         return (self.robot.closed_form is not None and isinstance(self.surface, Surface) and self.surface.dim == 2

@@ -87,12 +87,16 @@ def surface_function(surface):
 
 
 def _implicit_function(surface):
-    """``phi`` and its gradient of an :class:`~hybrid.ImplicitSurface`, its parameters bound."""
+    """``phi`` and its gradient of any other surface (an :class:`~hybrid.ImplicitSurface`, or a
+    built-in surface's own formula), its parameters bound, differentiated by SymPy."""
     import sympy as sp
 
     x, y, z = sp.symbols("x y z", real=True)
-    values = {sp.Symbol(k, real=True): float(v) for k, v in surface.parameters.items()}
-    phi = surface.phi.xreplace(values)
+    if hasattr(surface, "phi"):
+        values = {sp.Symbol(k, real=True): float(v) for k, v in surface.parameters.items()}
+        phi = surface.phi.xreplace(values)
+    else:
+        phi = surface.formula((x, y, z), [sp.Float(v) for v in surface.as_array()], sp.sqrt)
     f = sp.lambdify((x, y, z), [phi, *(sp.diff(phi, v) for v in (x, y, z))], modules="math")
 
     def implicit(p):
