@@ -11,7 +11,8 @@ The public API, by subpackage:
   :func:`task_frame`), the :class:`Controller` component, its options (:class:`Posture`, a null-space
   posture task; :class:`ContactLoss`) and its schemes (:data:`SCHEMES`);
 - experiments and simulation: :func:`paper_experiment`, :func:`tracing_experiment`,
-  :func:`simulate`, :class:`SimulationResult`, :func:`metrics`; sweeps (:func:`sweep`);
+  :func:`panda_experiment`, :func:`simulate`, :class:`SimulationResult`, :func:`metrics`; sweeps
+  (:func:`sweep`);
 - :class:`HybridError`, the base of every error raised on bad input.
 
 Importing the package loads neither SymPy nor CasADi and reads no file: the code generator
@@ -35,6 +36,7 @@ from hybrid.errors import (
     URDFError,
 )
 from hybrid.experiments.experiment import Experiment
+from hybrid.experiments.panda import panda_experiment
 from hybrid.experiments.paper import paper_experiment
 from hybrid.experiments.tracing import tracing_experiment
 from hybrid.geometry.frames import task_frame
@@ -73,5 +75,6 @@ __all__ = [
     "NonFiniteError", "OperationalSpace", "Plane", "Posture", "Reference", "Robot", "SCHEMES", "Scheme", "Sensor",
     "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling",
     "TaskFrameError", "URDFError", "arm_terms", "decoupling_law", "metrics", "operational_space", "panda",
-    "paper_arm", "paper_experiment", "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",
+    "panda_experiment", "paper_arm", "paper_experiment", "simulate", "sweep", "task_frame", "tracing_experiment",
+    "ur5",
 ]
