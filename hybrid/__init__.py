@@ -39,6 +39,7 @@ from hybrid.errors import (
     URDFError,
 )
 from hybrid.experiments.experiment import Experiment
+from hybrid.experiments.panda import panda_experiment
 from hybrid.experiments.paper import paper_experiment
 from hybrid.experiments.tracing import tracing_experiment
 from hybrid.geometry.frames import task_frame
@@ -77,6 +78,6 @@ __all__ = [
     "NonFiniteError", "OperationalSpace", "PANDA_URDF", "Plane", "Posture", "Reference", "Robot", "SCHEMES",
     "Scheme", "Sensor", "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "Step",
     "TaskDecoupling", "TaskFrameError", "UR5_URDF", "URDFError", "arm_terms", "decoupling_law", "metrics",
-    "operational_space", "panda", "paper_arm", "paper_experiment", "simulate", "sweep", "task_frame",
-    "tracing_experiment", "ur5",
+    "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment", "simulate", "sweep",
+    "task_frame", "tracing_experiment", "ur5",
 ]

@@ -8,7 +8,6 @@ import sys
 
 import numpy as np
 import pytest
-from conftest import PANDA, example_robot
 
 import hybrid
 from hybrid.models.robot import robot_terms
@@ -22,20 +21,10 @@ FORCE_TOL, SPEED_TOL = 1e-3, 1e-4
 #: the paper's by the sticking friction to about 1e-10 N (as much as a one-ulp change of the start
 #: state moves them); a friction or contact formula off by 0.1 % exceeds the 3-D bounds
 ROUNDING = {"planar": (1e-7, 1e-8), "spatial": (1e-9, 1e-10)}
-FINGERS = ("panda_finger_joint1", "panda_finger_joint2")
 
 
 def rms(x):
     return float(np.sqrt(np.mean(np.square(x))))
-
-
-def panda_experiment(**overrides):
-    """The Panda of example-robot-data (fingers locked 2 cm open) tracing a sphere in its reach: the
-    start pose well conditioned (m/(|J| |J^+|) = 0.32) and 0.6 rad inside every joint limit. The one
-    place to change for a Panda experiment of the library."""
-    robot = hybrid.Robot.from_urdf(example_robot(PANDA[0]), tip=PANDA[1], locked=dict.fromkeys(FINGERS, 0.02))
-    settings = dict(robot=robot, surface=hybrid.Sphere((0.45, 0.0, 0.4), 0.15), latitude=30.0)
-    return hybrid.tracing_experiment(**{**settings, **overrides})
 
 
 def assert_close(force, speed, kind):
@@ -72,8 +61,11 @@ def test_ur5_experiment_agrees():
 
 
 def test_panda_experiment_agrees():
-    res = assert_agrees(panda_experiment(duration=0.6))
-    assert res.force_normal[-1] > 15
+    """The whole default run, its posture task on and both references stepping within it."""
+    exp = hybrid.panda_experiment()
+    res = assert_agrees(exp)
+    assert res.force_normal[-1] == pytest.approx(exp.force_reference.after, abs=0.1)
+    assert res.velocity_tangential[-1] == pytest.approx(exp.speed_reference.after, abs=1e-3)
 
 
 def surfaces(exp):
@@ -147,7 +139,7 @@ def arm_robots(tmp_path):
     odd = tmp_path / "odd.urdf"
     odd.write_text(ODD_URDF)
     ur5 = hybrid.tracing_experiment().robot
-    return {"ur5": (ur5, True), "panda": (panda_experiment().robot, True),
+    return {"ur5": (ur5, True), "panda": (hybrid.panda_experiment().robot, True),
             # a revolute and a prismatic joint, a massless link, an unreadable mesh, a joint locked at 0.7 rad
             "odd": (hybrid.Robot.from_urdf(odd, tip="tip", locked={"off": 0.7}), True),
             "planar": (hybrid.Robot.planar(hybrid.paper_arm()), False),

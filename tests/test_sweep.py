@@ -149,7 +149,7 @@ def test_cli_sweep_writes_table_and_heatmaps(tmp_path):
     ('[parameters]\nmodel_error = 3\n', "list of values"),
     ('stuff = 1\n[parameters]\nmodel_error = [0]\n', "unknown key"),
     ('[parameters\n', "not valid TOML"),
-    ('experiment = "moon"\n[parameters]\nmodel_error = [0]\n', "give 'paper' or 'tracing'"),
+    ('experiment = "moon"\n[parameters]\nmodel_error = [0]\n', "give one of 'paper', 'tracing', 'panda'"),
     ('[parameters]\nmodel_error = {uniform = 0.3}\n', "takes two numbers"),
     ('base = 3\n[parameters]\nmodel_error = [0]\n', "must be a table"),
     ('[parameters]\nmodel_error = [0]\n[figures]\nx = "model_error"\ny = "speed"\n', "not a swept parameter"),

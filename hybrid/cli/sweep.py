@@ -16,8 +16,7 @@ from hybrid import sweeps as sw
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.errors import HybridError
-from hybrid.experiments.paper import paper_experiment
-from hybrid.experiments.tracing import tracing_experiment
+from hybrid.experiments import FACTORIES
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.simulation.metrics import metrics
 from hybrid.sweeps import sweep
@@ -98,9 +97,9 @@ def _base(kind: str, settings: dict):
                                   f"{typ.__name__} has {', '.join(sorted(known))}")
             value = typ(**value)
         made[key] = value
-    if kind not in ("paper", "tracing"):
-        raise HybridError(f"experiment = {kind!r}; give 'paper' or 'tracing'")
-    return (paper_experiment if kind == "paper" else tracing_experiment)(**made)
+    if kind not in FACTORIES:
+        raise HybridError(f"experiment = {kind!r}; give one of {', '.join(repr(k) for k in FACTORIES)}")
+    return FACTORIES[kind](**made)
 
 
 def read_config(path: Path) -> dict:
