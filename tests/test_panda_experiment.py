@@ -9,12 +9,12 @@ from dataclasses import replace
 import numpy as np
 import pytest
 from conftest import PANDA
-from hybrid.plants.rigid_body import RigidBodyPlant
 
 import hybrid
 from hybrid import reference as ref
 from hybrid.models.robot import robot_terms
 from hybrid.models.shipped import PANDA_URDF
+from hybrid.plants.rigid_body import RigidBodyPlant
 from hybrid.simulation import closed_loop
 from hybrid.simulation.runner import run
 
