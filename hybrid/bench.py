@@ -144,7 +144,7 @@ def run_benchmarks(quick: bool = False) -> dict:
     arm, circle = paper_arm(), Circle((0.5, 0.0), 0.2)
     law = decoupling_law(arm, circle, curvature=True)
     q, qd, a, Fc = (np.array(v) for v in ([2.2, 1.9], [0.3, -0.4], [0.1, 1.0], [-8.0, 3.0]))
-    p, s = arm.as_array(), circle.as_array()
+    p, s = arm.as_array(), circle.cross_section().as_array()
     rep = 3 if quick else 7
     results = []
     steps = 12 + 3 * len(ROBOTS)
@@ -481,7 +481,7 @@ def controller_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool,
     step = ctrl._step  # the function the controller binds
     values = dict(zip((n for n, _ in step.inputs), (q, qd, Fc, np.zeros(12), [0.3], np.zeros(6), np.zeros(6),
                                                     np.zeros(9), *ctrl._params)))
-    ops = kernel_function(controller_kernels(robot.chain, sphere.lift().spec(), ctrl.axes)[0]).n_instructions()
+    ops = kernel_function(controller_kernels(robot.chain, sphere.spec(), ctrl.axes)[0]).n_instructions()
     add(f"{name}: {STEP_IN_C}", c_harness_ns(step.unit.folder, step.unit.manifest["unit"], step.entry, values,
                                              50_000 if quick else 500_000, rep), ratio=f"{ops} generated operations")
     add(f"{name}: {STEP_ONE}", _median_ns(lambda: ctrl(0.3, q, qd, Fc), 2000 if quick else 20000, rep))

@@ -227,8 +227,8 @@ class NumpyPlant:
     plant interface: see :class:`hybrid.plants.Plant`)."""
 
     def __init__(self, exp):
-        self.kind, self.h = exp.surface.kind, exp.step
-        self.arm, self.plant, self.surface = exp.arm.as_array(), exp.plant_array(), exp.surface.as_array()
+        self.kind, self.h = exp.section.kind, exp.step
+        self.arm, self.plant, self.surface = exp.arm.as_array(), exp.plant_array(), exp.section.as_array()
         self.record, self.nq = planar_record(), 2
 
     def sensor_wrench(self, x):
@@ -262,8 +262,8 @@ class NumpyController:
 
     def __init__(self, exp):
         self.exp, self.g, self.T = exp, exp.effective_gains(), exp.sample_time
-        self.kind = exp.surface.kind
-        self.arm, self.surface = exp.controller_robot().closed_form.as_array(), exp.surface.as_array()
+        self.kind = exp.section.kind
+        self.arm, self.surface = exp.controller_robot().closed_form.as_array(), exp.section.as_array()
         self.int_v = self.int2_v = self.int_f = 0.0
 
     def loops(self, t, v, f):

@@ -30,7 +30,7 @@ def test_missing_centripetal_term_gives_the_predicted_force_error(speed):
     exp = hybrid.paper_experiment(integral=False, v_d=hybrid.Step(0.3, speed, 1.0), **EXACT)
     res = hybrid.simulate(exp)
     m_d = 1.0 / exp.gains.KPf
-    rho_r = np.hypot(*(last(res, res.outputs[:, :2]) - exp.surface.center).T)  # arm tip's circle
+    rho_r = np.hypot(*(last(res, res.outputs[:, :2]) - exp.section.center).T)  # arm tip's circle
     predicted = np.mean(m_d * last(res, res.velocity_tangential) ** 2 / rho_r)
     error = np.mean(last(res, res.force_reference - res.force_normal))
     assert error == pytest.approx(predicted, abs=0.03)

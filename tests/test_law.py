@@ -30,7 +30,7 @@ def test_law_matches_numpy_reference(rng, backend, kind, curvature, elbow):
         F, tau = law.evaluate(st["q"], st["qdot"], st["a"], st["Fc"])
         for i in range(100):
             Fr, taur = ref.decoupling_law(kind, st["q"][i], st["qdot"][i], st["a"][i], st["Fc"][i],
-                                          arm.as_array(), surface.as_array(), curvature)
+                                          arm.as_array(), surface.cross_section().as_array(), curvature)
             worst = max(worst, rel_err(F[i], Fr), rel_err(tau[i], taur))
         # the single-state path gives the batch's numbers (the batch runs as SIMD lanes: within rounding)
         np.testing.assert_allclose(law(st["q"][0], st["qdot"][0], st["a"][0], st["Fc"][0]), F[0], rtol=1e-12,
@@ -47,7 +47,7 @@ def test_single_state_gives_the_same_numbers_for_any_array_layout(rng, backend):
         st = random_states(rng, 1)
         # values exact in float32, so every layout below holds the same numbers
         base = [st[k][0].astype(np.float32).astype(float) for k in ("q", "qdot", "a", "Fc")]
-        Fr, taur = ref.decoupling_law(kind, *base, arm.as_array(), surface.as_array(), True)
+        Fr, taur = ref.decoupling_law(kind, *base, arm.as_array(), surface.cross_section().as_array(), True)
         F, tau = law(*base), law.torque(*base)
         assert rel_err(F, Fr) < 1e-9 and rel_err(tau, taur) < 1e-9
         both = law.evaluate(*base)
@@ -128,7 +128,8 @@ def test_task_frame_derivative_by_finite_differences(rng, kind):
         np.testing.assert_allclose(Rd, fd, rtol=1e-5, atol=1e-6)
         np.testing.assert_allclose(R @ R.T, np.eye(2), atol=1e-14)  # a rotation...
         assert np.linalg.det(R) == pytest.approx(-1.0) or np.linalg.det(R) == pytest.approx(1.0)
-        np.testing.assert_allclose(R[1], surface.normal_at(r) if kind == "circle" else surface.normal,
+        section = surface.cross_section()  # the paper's planar surfaces are cylinders and planes along z
+        np.testing.assert_allclose(R[1], section.normal_at(r) if kind == "circle" else section.normal,
                                    atol=1e-14)  # ...whose second row is the outward normal
 
 
@@ -144,7 +145,7 @@ def test_decoupling_identity(rng, kind, curvature):
         r, J, Jdqd = ref.kinematics(st["q"], st["qdot"], arm.as_array())
         qdd = np.linalg.solve(B, tau + J.T @ st["Fc"] - n)   # the robot in contact
         rdd, rd = J @ qdd + Jdqd, J @ st["qdot"]
-        R, Rd = ref.frame(kind, r, rd, surface.as_array())
+        R, Rd = ref.frame(kind, r, rd, surface.cross_section().as_array())
         ydot = R @ rdd + (Rd @ rd if curvature else 0.0)
         np.testing.assert_allclose(ydot, st["a"], rtol=1e-9, atol=1e-9 * (1 + np.abs(st["a"]).max()))
 

@@ -43,8 +43,10 @@ def test_planar_task_frame_for_n_points_equals_the_closed_form_one_by_one(rng, s
 
 
 def test_task_frame_refuses_what_it_cannot_mean():
-    with pytest.raises(hybrid.HybridError, match="shape"):
+    with pytest.raises(hybrid.HybridError, match="no planar cross-section"):
         hybrid.task_frame(hybrid.Sphere((0, 0, 0), 1.0), [1.0, 0.0], [0.0, 0.0])
+    with pytest.raises(hybrid.HybridError, match="shape"):
+        hybrid.task_frame(hybrid.Sphere((0, 0, 0), 1.0), [1.0, 0.0, 0.0, 1.0], [0.0, 0.0, 0.0, 0.0])
     with pytest.raises(hybrid.HybridError, match="hybrid surface"):
         hybrid.task_frame("sphere", [1.0, 0.0, 0.0], [0.0, 0.0, 0.0])
     with pytest.raises(hybrid.TaskFrameError):  # e parallel to n
@@ -57,12 +59,12 @@ def test_the_start_state_is_at_rest_pressing_with_the_force_reference(make):
     along the normal, the sensor tip F_d(0)/k_e into the surface."""
     exp = make()
     x0 = exp.initial_state()
-    n, d = exp.robot.n, exp.surface.dim
+    n, d = exp.robot.n, len(exp.start())
     q, qd, s, sd = x0[:n], x0[n:2 * n], x0[2 * n:2 * n + d], x0[2 * n + d:]
     assert not qd.any() and not sd.any()
     tip = hybrid.arm_terms(exp.robot, q, qd)["r"][:d]
     F0 = exp.force_reference(0.0)
-    normal = exp.surface.lift().normal_at(np.append(s, 0.0) if d == 2 else s)[:d]
+    normal = exp.surface.normal_at(np.append(s, 0.0) if d == 2 else s)[:d]
     # the sensor spring's force on the robot, K_s (s - r): F_d(0) along the normal (to the inverse
     # kinematics' tolerance of 1e-10 m times K_s)
     np.testing.assert_allclose(exp.sensor.stiffness * (s - tip), F0 * normal, atol=exp.sensor.stiffness * 1e-9)
@@ -96,7 +98,7 @@ def test_settings_round_trip_through_their_data():
 def test_one_experiment_type_refuses_mixed_dimensions():
     with pytest.raises(hybrid.HybridError, match="planar arm needs a planar surface"):
         hybrid.paper_experiment(surface=hybrid.Sphere((0.5, 0, 0), 0.2))
-    with pytest.raises(hybrid.HybridError, match="planar surfaces"):
+    with pytest.raises(hybrid.HybridError, match="three numbers"):  # a 3-D arm starts at a 3-D point
         hybrid.tracing_experiment(surface=hybrid.Circle((0.5, 0.0), 0.2), start_point=(0.3, 0.0))
     with pytest.raises(hybrid.HybridError, match="no latitude circle"):
         hybrid.tracing_experiment(surface=hybrid.Plane((0.4, 0, 0.1), (0, 0, 1)), latitude=30.0)

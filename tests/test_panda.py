@@ -161,7 +161,7 @@ def test_posture_off_is_bitwise_the_law_without_a_null_space_torque(rng, robots,
     identically 0: the law's own code. (Zero posture numbers in a step that computes ``tau0`` would
     agree only within rounding: the compiler's fused multiply-adds follow the code around them.)"""
     robot, model, fid = robots["panda"]
-    spec, axes = SPHERE.lift().spec(), tuple(range(6))
+    spec, axes = SPHERE.spec(), tuple(range(6))
     prefix = "hybrid_test_zero_tau0_controller"
 
     def make():

@@ -21,7 +21,7 @@ def test_readme_example(tmp_path, monkeypatch, capsys):
     exec(compile(blocks[0], "README.md", "exec"), ns)
     arm, circle = ns["arm"], ns["circle"]
     F_ref, tau_ref = ref.decoupling_law("circle", ns["q"], ns["qdot"], ns["a"], ns["Fc"], arm.as_array(),
-                                        circle.as_array(), True)
+                                        circle.cross_section().as_array(), True)
     np.testing.assert_allclose(ns["F"], F_ref, rtol=1e-10)
     np.testing.assert_allclose(ns["tau"], tau_ref, rtol=1e-10)
     # the batch runs as SIMD lanes: the one-state numbers within rounding

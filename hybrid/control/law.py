@@ -58,9 +58,9 @@ class DecouplingLaw:
                  singular_tol: float = SINGULAR_TOL):
         init = partial(object.__setattr__, self)
         if isinstance(robot, Arm):  # the paper's parameters stand for its arm, in closed form
-            if not (isinstance(surface, Surface) and surface.dim == 2):
+            if not (isinstance(surface, Surface) and surface.cross_section() is not None):
                 raise HybridError(f"the planar arm needs a hybrid.Circle or hybrid.Plane in 2-D, got "
-                                  f"{surface!r:.100}; for a 3-D surface use a hybrid.Robot")
+                                  f"{surface!r:.100}; for another surface use a hybrid.Robot")
             robot = Robot.planar(robot)
         if not isinstance(robot, Robot):
             raise HybridError(f"robot must be a hybrid.Robot (or the paper's hybrid.Arm), got {type(robot).__name__}")
@@ -88,8 +88,9 @@ class DecouplingLaw:
             params = (robot.as_array(), spatial.as_array(), np.array(self.reference))
             tail = (np.zeros(robot.n),)  # tau0
         else:
-            fn = units.planar_unit(backend).function(f"decoupling_law_{surface.kind}")
-            params, tail = (robot.closed_form.as_array(), surface.as_array()), ()
+            section = surface.cross_section()
+            fn = units.planar_unit(backend).function(f"decoupling_law_{section.kind}")
+            params, tail = (robot.closed_form.as_array(), section.as_array()), ()
         init("_fn", fn)
         init("_params", (*params, np.array([1.0 if curvature else 0.0])))
         init("_tail", tail)
@@ -107,7 +108,8 @@ class DecouplingLaw:
                 f"singular_tol={self.singular_tol})")
 
     def _closed_form_applies(self) -> bool:
-        return (self.robot.closed_form is not None and isinstance(self.surface, Surface) and self.surface.dim == 2
+        return (self.robot.closed_form is not None and isinstance(self.surface, Surface)
+                and self.surface.cross_section() is not None
                 and self.axes == AXES["planar"] and self.reference == (0.0, 0.0, 1.0))
 
     def __reduce__(self):

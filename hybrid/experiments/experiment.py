@@ -106,12 +106,9 @@ class Experiment(RunSettings):
         if not isinstance(self.surface, Surface):
             raise HybridError(f"unknown surface {self.surface!r:.60}; give a hybrid Circle, Plane, Sphere, Cylinder "
                               "or ImplicitSurface")
-        planar = self.robot.closed_form is not None
-        if planar != (self.surface.dim == 2):
-            raise HybridError(
-                f"the {'planar arm needs a planar surface (a hybrid.Circle or a 2-D hybrid.Plane)' if planar else ''}"
-                f"{'' if planar else 'planar surfaces (2 coordinates) are for the paper planar arm; give a 3-D one'}"
-                f", got {self.surface!r:.60}")
+        if self.robot.closed_form is not None and self.surface.cross_section() is None:
+            raise HybridError(f"the planar arm needs a planar surface (a hybrid.Circle or a 2-D hybrid.Plane: a "
+                              f"cylinder or a plane along base z), got {self.surface!r:.60}")
         if self.posture is not None and not isinstance(self.posture, Posture):
             raise HybridError(f"posture = {self.posture!r:.60}; give a hybrid.Posture(q_rest, stiffness, damping) "
                               "or None")
@@ -124,7 +121,7 @@ class Experiment(RunSettings):
         object.__setattr__(self, "reference", tuple(reference_direction(self.reference)))
         if self.start_point is not None:
             object.__setattr__(self, "start_point", _point("Experiment", "start_point", self.start_point,
-                                                           (self.surface.dim,)))
+                                                           (self._geometry().dim,)))
         elif self._path() is None:
             raise HybridError(f"a {type(self.surface).__name__} has no path of its own: give start_point, a point "
                               "on the surface [m], or a path")
@@ -158,11 +155,21 @@ class Experiment(RunSettings):
         return Controller(self.controller_robot(), self.surface, self.controller, axes=self.axes,
                           reference=self.reference, posture=self.posture, **self.controller_settings())
 
+    @property
+    def section(self):
+        """The surface's cross-section the planar arm runs on (:meth:`Surface.cross_section`), or None."""
+        return None if self.robot.closed_form is None else self.surface.cross_section()
+
+    def _geometry(self):
+        """Where the start, the path and the normals are taken: the planar arm's cross-section, else the
+        surface itself."""
+        return self.surface if self.robot.closed_form is None else self.surface.cross_section()
+
     def _path(self) -> Path | None:
         if self.path is not None:
             return self.path
         try:
-            return self.surface.path()
+            return self._geometry().path()
         except HybridError:
             return None
 
@@ -171,7 +178,7 @@ class Experiment(RunSettings):
         else the path's start."""
         if self.start_point is None:
             return self._path().point_at(self._path().start)
-        projected = self.surface.project(self.start_point)
+        projected = self._geometry().project(self.start_point)
         return np.array(self.start_point) if projected is None else projected
 
     def desired_point(self, t: float) -> tuple[np.ndarray, np.ndarray]:
@@ -243,7 +250,7 @@ class Experiment(RunSettings):
 def _initial_state(exp: Experiment) -> np.ndarray:
     p0 = exp.start()
     if exp.start_point is not None:
-        projected = exp.surface.project(exp.start_point) is not None
+        projected = exp._geometry().project(exp.start_point) is not None
         # without a closed-form projection the plant's own record says how far the point is
         gap = (float(np.linalg.norm(np.asarray(exp.start_point) - p0)) if projected
                else abs(float(exp.plant().outputs(_probe(exp, p0))[0][exp.plant().record["outputs"].index(
@@ -253,7 +260,7 @@ def _initial_state(exp: Experiment) -> np.ndarray:
                               f"the surface; give a point on it (within {START_TOL * 1000:g} mm), e.g. "
                               f"{np.round(p0, 4).tolist()}")
     q0 = None if exp.posture is None else exp.posture.q_rest
-    return _pressed_start(exp.robot, exp.surface, tuple(p0.tolist()), exp.elbow, q0, exp.reference,
+    return _pressed_start(exp.robot, exp._geometry(), tuple(p0.tolist()), exp.elbow, q0, exp.reference,
                           exp.singular_tol, exp.force_reference(0.0), exp.contact.stiffness, exp.sensor.stiffness)
 
 

@@ -22,33 +22,38 @@ def task_frame(surface: Surface, r, rdot, *, reference=(0.0, 0.0, 1.0),
                backend: str = "sympy") -> tuple[np.ndarray, np.ndarray]:
     """``R(r)`` and ``R'(r, r')`` on ``surface`` at the point ``r`` [m] moving at ``r'`` [m/s].
 
-    One point (``r``, ``rdot`` of shape ``(d,)``, ``d`` the surface's dimension) gives arrays of shape
-    ``(d, d)``; N points (shape ``(N, d)``) give ``(N, d, d)`` in one native call. A planar surface's
-    one point runs the committed closed-form unit of ``backend``; its N points, and every 3-D
-    surface, the frame generated for the surface (``reference`` is the 3-D frame's ``e``).
+    Points of 3 coordinates give the 3-D frame, ``(3, 3)`` for one point and ``(N, 3, 3)`` for N
+    (shape ``(N, 3)``) in one native call, generated for the surface (``reference`` its ``e``).
+    Points of 2 coordinates (in the base xy-plane, on a surface with a
+    :meth:`~hybrid.geometry.surfaces.Surface.cross_section`: a cylinder about z, a vertical plane)
+    give the paper's 2 x 2 frame: one point from the committed closed-form unit of ``backend``, N
+    points from the 3-D frame's rows ``t1, n`` and columns ``x, y``.
     """
     if not isinstance(surface, Surface):
         raise HybridError(f"surface must be a hybrid surface (Circle, Plane, Sphere, Cylinder, ImplicitSurface), "
                           f"got {surface!r:.60}")
-    d = surface.dim
+    d = 2 if np.shape(r)[-1:] == (2,) else 3
     r, rdot = as_array("r", r, d, batched=None), as_array("rdot", rdot, d, batched=None)
     if r.shape != rdot.shape:
         raise HybridError(f"r and rdot must have the same shape, got {r.shape} and {rdot.shape}")
     if not (np.isfinite(r).all() and np.isfinite(rdot).all()):  # a plane's frame would not show it
         raise NonFiniteError(f"task_frame: non-finite input r = {r}, rdot = {rdot}")
     if d == 2:
+        section = surface.cross_section()
+        if section is None:
+            raise HybridError(f"points of 2 coordinates lie in the base xy-plane, but {surface!r:.60} has no planar "
+                              "cross-section there; give 3 coordinates")
         if not np.array_equal(reference_direction(reference), (0.0, 0.0, 1.0)):
-            raise HybridError("a planar surface's frame has e = z (tangent t = (-n_y, n_x)); leave reference out")
+            raise HybridError("a planar frame has e = z (tangent t = (-n_y, n_x)); leave reference out")
         if not is_batch(r):
-            out = units.planar_unit(backend).function(f"task_frame_{surface.kind}")(r, rdot, surface.as_array())
+            out = units.planar_unit(backend).function(f"task_frame_{section.kind}")(r, rdot, section.as_array())
             return out["R"], out["Rd"]
         r, rdot = (np.column_stack([x, np.zeros(len(x))]) for x in (r, rdot))
-    lifted = surface.lift()
-    frame = units.frame_unit(lifted.spec()).function("task_frame")
+    frame = units.frame_unit(surface.spec()).function("task_frame")
     e = reference_direction(reference)
     call = frame.batch if is_batch(r) else frame
-    out = call(r, rdot, lifted.as_array(), e)
+    out = call(r, rdot, surface.as_array(), e)
     R, Rd = out["R"], out["Rd"]
-    if d == 2:  # rows t1, n and columns x, y of the lift's frame
+    if d == 2:  # rows t1, n and columns x, y of the 3-D frame
         R, Rd = R[:, ::2, :2], Rd[:, ::2, :2]
     return R, Rd

@@ -18,12 +18,12 @@ import sympy as sp
 
 from hybrid.codegen import surfaces as cs
 from hybrid.errors import HybridError
-from hybrid.geometry.surfaces import SurfaceSpec, _Spatial, _unit_normal
+from hybrid.geometry.surfaces import Surface, SurfaceSpec, _unit_normal
 from hybrid.validate import _finite
 
 
 @dataclass(frozen=True)
-class ImplicitSurface(_Spatial):
+class ImplicitSurface(Surface):
     """Any surface ``phi(x, y, z) = 0`` written in SymPy, ``phi > 0`` on the robot's side.
 
     ``parameters`` maps the names of ``phi``'s other symbols to their values (run-time inputs

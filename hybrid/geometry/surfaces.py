@@ -1,12 +1,13 @@
 """Surfaces the tool slides on, as validated dataclasses (SI units).
 
-Planar (the paper's arm, NOTES section 3): :class:`Circle` and a 2-D :class:`Plane`.
-Spatial (NOTES section 9): a 3-D :class:`Plane`, :class:`Sphere`, :class:`Cylinder`, and
-:class:`ImplicitSurface` for any ``phi(x, y, z) = 0`` a user writes in SymPy. Every surface
-gives ``phi > 0`` on the robot's side and the unit normal ``n = grad phi / |grad phi|`` towards
-the robot. A spatial surface's ``spec()`` is its expression for code generation and
-``as_array()`` its run-time parameters; a planar one ``lift()`` s to the spatial surface it
-is the cross-section of (so the general law can run the paper's case).
+Every surface is 3-D: :class:`Plane`, :class:`Sphere`, :class:`Cylinder`, and
+:class:`ImplicitSurface` for any ``phi(x, y, z) = 0`` a user writes down. Every surface gives
+``phi > 0`` on the robot's side and the unit normal ``n = grad phi / |grad phi|`` towards the
+robot; ``spec()`` is what the generator needs of it and ``as_array()`` its run-time parameters.
+The paper's planar surfaces are constructors of 3-D ones: :func:`Circle` a cylinder about base z,
+a :class:`Plane` given in 2 coordinates a vertical plane. Where the planar arm runs on such a
+surface it uses the surface's :meth:`~Surface.cross_section` (a :class:`CircleSection` or
+:class:`LineSection`), which the committed closed-form units take.
 """
 
 from __future__ import annotations
@@ -45,14 +46,13 @@ SURFACE_KINDS: dict[str, type] = {}
 
 
 class Surface:
-    """The base of every surface: ``kind``, ``dim`` (2 for the planar arm's, 3 in space),
-    ``as_array()`` (the generated code's run-time parameters), ``normal_at(p)``, ``lift()`` (the
-    3-D surface; a planar one is the cross-section of its lift at ``z = 0``), ``project(p)`` (the
-    nearest surface point, where it has a closed form, else None) and ``path()`` (where a run
-    goes on it unless told)."""
+    """The base of every surface (3-D): ``kind``, ``as_array()`` (the generated code's run-time
+    parameters), ``normal_at(p)``, ``project(p)`` (the nearest surface point, where it has a closed
+    form, else None), ``path()`` (where a run goes on it unless told) and ``cross_section()`` (where
+    the paper's planar arm can run on it)."""
 
     kind: str
-    dim: int
+    dim = 3
     #: a built-in surface's run-time parameters, named in ``as_array`` order
     parameters_named: tuple[str, ...] = ()
 
@@ -74,6 +74,11 @@ class Surface:
     def project(self, p) -> np.ndarray | None:
         return None
 
+    def cross_section(self) -> Section | None:
+        """The cross-section by the base xy-plane where the paper's planar arm can run on it (a
+        vertical cylinder's circle, a vertical plane's line), else None."""
+        return None
+
     def path(self):
         raise HybridError(f"a {type(self).__name__} has no path of its own: give the experiment a path "
                           "(hybrid.CirclePath or hybrid.LinePath) or a start_point")
@@ -92,36 +97,37 @@ def _positive(owner: str, name: str, value) -> None:
         raise HybridError(f"{owner}.{name} = {value} m; give a positive {name}")
 
 
-# --------------------------------------------------------------------------- planar
+# ----------------------------------------------------------------- planar cross-sections
+
+
+class Section:
+    """A surface's cross-section by the base xy-plane, where the paper's planar arm moves: its
+    ``kind`` names the committed closed-form units (``"circle"``, ``"plane"``), ``as_array()`` their
+    ``surface`` array, ``normal_at``, ``path()`` and ``project`` in 2 coordinates, ``lift()`` the 3-D
+    surface it is the cross-section of. Built by :meth:`Surface.cross_section`."""
+
+    dim = 2
 
 
 @dataclass(frozen=True)
-class Circle(Surface):
-    """A disc of centre ``center`` [m] and radius ``radius`` [m], touched from outside.
-
-    Task frame: normal ``n = (r - c)/|r - c|`` (out of the disc, towards the robot),
-    tangent ``t = (-n_y, n_x)`` (counter-clockwise). Arc coordinate ``s = radius * angle``.
-    """
+class CircleSection(Section):
+    """The circle of centre ``center`` [m] and radius ``radius`` [m]: a vertical cylinder's
+    cross-section. Normal ``n = (r - c)/|r - c|`` (out of the disc, towards the robot), tangent
+    ``t = (-n_y, n_x)`` (counter-clockwise), arc length ``radius * angle``."""
 
     center: tuple[float, float]
     radius: float
     kind = "circle"
-    dim = 2
-
-    def __post_init__(self):
-        object.__setattr__(self, "center", _point("Circle", "center", self.center))
-        _positive("Circle", "radius", self.radius)
 
     def as_array(self) -> np.ndarray:
         return np.array([*self.center, self.radius])
 
     def lift(self) -> Cylinder:
-        """The cylinder about base z of which this circle is the cross-section."""
         return Cylinder((*self.center, 0.0), (0.0, 0.0, 1.0), self.radius)
 
     def normal_at(self, p) -> np.ndarray:
-        """Unit normal towards the robot at the surface point nearest ``p``."""
-        d = np.asarray(p, float) - self.center
+        """Unit normal towards the robot at the circle's point nearest ``p``."""
+        d = np.asarray(p, float)[:2] - self.center
         norm = np.hypot(*d)
         if norm == 0:
             raise HybridError(f"the point {p} is the circle's centre, where its normal is undefined")
@@ -132,16 +138,54 @@ class Circle(Surface):
         return CirclePath(self.center, self.radius)
 
     def project(self, p) -> np.ndarray:
-        """The surface point nearest ``p`` (radially)."""
+        """The circle's point nearest ``p`` (radially)."""
         return self.path().point_at(self.path().arc_of(p))
 
 
 @dataclass(frozen=True)
-class Plane(Surface):
-    """A plane through ``point`` [m] with unit ``normal`` pointing towards the robot.
+class LineSection(Section):
+    """The line through ``point`` [m] with unit ``normal`` towards the robot: a vertical plane's
+    cross-section. Tangent ``t = (-n_y, n_x)``, arc length ``(p - point) . t``."""
 
-    Two coordinates make the paper's planar line (tangent ``t = (-n_y, n_x)``, arc coordinate
-    ``s = (p - point) . t``); three make a plane in space (``phi = n . (p - point)``).
+    point: tuple[float, float]
+    normal: tuple[float, float]
+    kind = "plane"
+
+    def as_array(self) -> np.ndarray:
+        return np.array([*self.point, *self.normal])
+
+    def lift(self) -> Plane:
+        return Plane((*self.point, 0.0), (*self.normal, 0.0))
+
+    def normal_at(self, p) -> np.ndarray:
+        return np.array(self.normal)
+
+    def path(self) -> LinePath:
+        return LinePath(self.point, (-self.normal[1], self.normal[0]))
+
+    def project(self, p) -> np.ndarray:
+        """The line's point nearest ``p`` (along the normal)."""
+        p = np.asarray(p, float)[:2]
+        n = np.asarray(self.normal)
+        return p - n * float((p - self.point) @ n)
+
+
+def Circle(center, radius: float) -> Cylinder:  # noqa: N802  (a constructor, named as the shape it makes)
+    """The paper's disc of centre ``center`` = (x, y) [m] and radius ``radius`` [m], touched from
+    outside: the cylinder about base z through ``(x, y, 0)`` (its cross-section is the circle)."""
+    c = _point("Circle", "center", center)
+    _positive("Circle", "radius", radius)
+    return Cylinder((*c, 0.0), (0.0, 0.0, 1.0), radius)
+
+
+# --------------------------------------------------------------------------- planes
+
+
+@dataclass(frozen=True)
+class Plane(Surface):
+    """A plane through ``point`` [m] with unit ``normal`` pointing towards the robot:
+    ``phi = n . (p - point)``. Two coordinates give the paper's planar line: the vertical plane
+    through ``(x, y, 0)`` with normal ``(n_x, n_y, 0)``.
     """
 
     point: tuple[float, ...]
@@ -155,12 +199,10 @@ class Plane(Surface):
             example = "(-1, 0)" if len(point) == 2 else "(0, 0, 1)"
             raise HybridError(f"Plane.normal = {self.normal} has zero length; give the direction "
                               f"from the surface towards the robot, e.g. {example}")
-        object.__setattr__(self, "point", point)
-        object.__setattr__(self, "normal", unit_vector("Plane", "normal", normal))
-
-    @property
-    def dim(self) -> int:
-        return len(self.point)
+        # a planar line's normal is made unit in its plane, then lifted (z = 0, exactly)
+        normal = unit_vector("Plane", "normal", normal)
+        object.__setattr__(self, "point", (*point, 0.0)[:3])
+        object.__setattr__(self, "normal", (*normal, 0.0)[:3])
 
     def as_array(self) -> np.ndarray:
         return np.array([*self.point, *self.normal])
@@ -172,27 +214,15 @@ class Plane(Surface):
         n = theta[3:6]
         return sum(n[i] * (p[i] - theta[i]) for i in range(3)) / sqrt(sum(v * v for v in n))
 
-    def spec(self) -> SurfaceSpec:
-        self._spatial()
-        return super().spec()
-
-    def lift(self) -> Plane:
-        return self if self.dim == 3 else Plane((*self.point, 0.0), (*self.normal, 0.0))
+    def cross_section(self) -> LineSection | None:
+        """The line where a vertical plane cuts the base xy-plane (None for another plane)."""
+        if self.normal[2] != 0.0:
+            return None
+        return LineSection(self.point[:2], self.normal[:2])
 
     def normal_at(self, p) -> np.ndarray:
         """Unit normal towards the robot (the same everywhere)."""
         return np.array(self.normal)
-
-    def _spatial(self) -> None:
-        if self.dim != 3:
-            raise HybridError("this Plane is planar (2 coordinates); give 3-D point and normal, or use .lift()")
-
-    def path(self) -> LinePath:
-        """A planar line's own path: along the tangent ``t = (-n_y, n_x)``, arc length 0 at ``point``."""
-        if self.dim != 2:
-            raise HybridError("a plane in space has no path of its own: give the experiment a path (a "
-                              "hybrid.LinePath or hybrid.CirclePath on the plane) or a start_point")
-        return LinePath(self.point, (-self.normal[1], self.normal[0]))
 
     def project(self, p) -> np.ndarray:
         """The surface point nearest ``p`` (along the normal)."""
@@ -201,18 +231,12 @@ class Plane(Surface):
         return p - n * float((p - self.point) @ n)
 
 
-# -------------------------------------------------------------------------- spatial
+# ----------------------------------------------------------------- curved surfaces
 
-
-class _Spatial(Surface):
-    dim = 3
-
-    def lift(self):
-        return self
 
 
 @dataclass(frozen=True)
-class Sphere(_Spatial):
+class Sphere(Surface):
     """A sphere of centre ``center`` [m] and radius ``radius`` [m], touched from outside:
     ``phi = |p - c| - radius``."""
 
@@ -257,7 +281,7 @@ class Sphere(_Spatial):
 
 
 @dataclass(frozen=True)
-class Cylinder(_Spatial):
+class Cylinder(Surface):
     """An infinite cylinder of radius ``radius`` [m] about the line through ``point`` [m]
     along ``axis``, touched from outside: ``phi = |(I - u u^T)(p - point)| - radius``."""
 
@@ -308,5 +332,9 @@ class Cylinder(_Spatial):
         raise HybridError("a cylinder has no path of its own: give the experiment a path, e.g. "
                           "cylinder.circle_at(point)")
 
+    def cross_section(self) -> CircleSection | None:
+        """The circle where a vertical cylinder cuts the base xy-plane (None for another cylinder)."""
+        if self.axis[0] != 0.0 or self.axis[1] != 0.0:
+            return None
+        return CircleSection(self.point[:2], self.radius)
 
-PlanarSurface = Circle | Plane

@@ -12,7 +12,7 @@ from functools import lru_cache
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.geometry.surfaces import Circle, Plane, Surface
+from hybrid.geometry.surfaces import Surface
 from hybrid.validate import unit_vector
 
 #: the six task axes, in the task frame's row order
@@ -48,16 +48,11 @@ def check_axes(robot, axes) -> tuple[int, ...]:
 
 
 def spatial_surface(surface):
-    """The 3-D surface of ``surface`` (a planar one lifted), checked."""
+    """``surface``, checked to be one."""
     if not isinstance(surface, Surface):
         raise HybridError(f"surface must be a hybrid Plane, Circle, Sphere, Cylinder or ImplicitSurface, "
                           f"got {type(surface).__name__}")
-    return _lifted(surface) if isinstance(surface, (Circle, Plane)) else surface.lift()
-
-
-@lru_cache(maxsize=256)  # a planar surface's lift is checked like any surface: once per surface will do
-def _lifted(surface):
-    return surface.lift()
+    return surface
 
 
 def reference_direction(e) -> np.ndarray:

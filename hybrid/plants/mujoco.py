@@ -237,7 +237,7 @@ class MujocoPlant(Plant):
         self.conditioning, self.conditioning_name = self.generated.conditioning, self.generated.conditioning_name
         self.force_columns = self.generated.force_columns
         self.dim = (len(self.record["state"]) - 2 * robot.n) // 2  # the sensor tip's coordinates (2 or 3)
-        self._phi = surface_function(exp.surface.lift())
+        self._phi = surface_function(exp.surface)
 
         spec, self.source = arm_spec(robot)
         last = spec.joint(robot.joint_names[-1]).parent

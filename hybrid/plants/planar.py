@@ -48,7 +48,7 @@ class PlanarPlant(GeneratedPlant):
 
     def __init__(self, exp):
         unit = units.planar_unit(exp.backend)
-        kind = exp.surface.kind
+        kind = exp.section.kind
         held = tuple(self.inputs(exp).values())
         super().__init__(unit.function(f"plant_rhs_{kind}"), unit.function(f"plant_outputs_{kind}"),
                          held, held, exp.step, ("Fc_x", "Fc_y"))
@@ -57,12 +57,12 @@ class PlanarPlant(GeneratedPlant):
     @staticmethod
     def loop_plant(exp) -> LoopPlant:
         """What the compiled closed loop's plant is built from (:func:`hybrid.native.units.loop_unit`)."""
-        return PlanarLoopPlant(exp.surface.kind)
+        return PlanarLoopPlant(exp.section.kind)
 
     @staticmethod
     def inputs(exp) -> dict[str, np.ndarray]:
         """The plant's parameter arrays (after ``x, tau``) by the manifest's names."""
-        return {"arm": exp.arm.as_array(), "plant": exp.plant_array(), "surface": exp.surface.as_array()}
+        return {"arm": exp.arm.as_array(), "plant": exp.plant_array(), "surface": exp.section.as_array()}
 
     conditioning_name = "2|det J|/|J|_F^2"
 

@@ -39,7 +39,7 @@ class RigidBodyPlant(GeneratedPlant):
     """The 3-D experiment's plant: a URDF arm, 3-D sensor, contact on any surface (NOTES section 10)."""
 
     def __init__(self, exp):
-        unit = units.plant_unit(exp.robot.chain, exp.robot.name, exp.surface.lift().spec())
+        unit = units.plant_unit(exp.robot.chain, exp.robot.name, exp.surface.spec())
         given = self.inputs(exp)
         super().__init__(unit.function("plant_rhs"), unit.function("plant_outputs"),
                          tuple(given[k] for k in ("robot", "plant", "surface")), tuple(given.values()), exp.step,
@@ -49,13 +49,13 @@ class RigidBodyPlant(GeneratedPlant):
     @staticmethod
     def loop_plant(exp) -> LoopPlant:
         """What the compiled closed loop's plant is built from (:func:`hybrid.native.units.loop_unit`)."""
-        return RigidBodyLoopPlant(exp.robot.chain, exp.robot.name, exp.surface.lift().spec())
+        return RigidBodyLoopPlant(exp.robot.chain, exp.robot.name, exp.surface.spec())
 
     @staticmethod
     def inputs(exp) -> dict[str, np.ndarray]:
         """The plant's parameter arrays (after ``x, tau``; the output record's also ``e``) by the
         manifest's names."""
-        return {"robot": exp.robot.as_array(), "plant": exp.plant_array(), "surface": exp.surface.lift().as_array(),
+        return {"robot": exp.robot.as_array(), "plant": exp.plant_array(), "surface": exp.surface.as_array(),
                 "e": np.asarray(exp.reference, float)}
 
     conditioning_name = "m/(|J|_F |J^+|_F)"
