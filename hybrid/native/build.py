@@ -18,7 +18,6 @@ import io
 import json
 import logging
 import os
-import platform
 import shutil
 import subprocess
 import sysconfig
@@ -40,7 +39,7 @@ log = logging.getLogger("hybrid")
 #: code is tuned for this processor (FMA, AVX-512 where present): the cache key then carries the
 #: processor's identity, so a shared cache never hands a build to a machine that cannot run it.
 CFLAGS = ("-O3", "-fPIC", "-fno-math-errno", "-std=gnu99") + (
-    ("-march=native",) if platform.machine() in ("x86_64", "AMD64") else ())
+    ("-march=native",) if os.uname().machine in ("x86_64", "AMD64") else ())
 
 
 @cache
@@ -49,9 +48,9 @@ def processor() -> str:
     try:
         lines = Path("/proc/cpuinfo").read_text().splitlines()
     except OSError:
-        return f"{platform.machine()} {platform.processor()}"
+        return f"{os.uname().machine} {os.uname().version}"
     pick = [ln.split(":", 1)[1].strip() for ln in lines if ln.startswith(("model name", "flags", "Features"))]
-    return hashlib.sha256(" | ".join(dict.fromkeys(pick)).encode()).hexdigest()[:16] + f" {platform.machine()}"
+    return hashlib.sha256(" | ".join(dict.fromkeys(pick)).encode()).hexdigest()[:16] + f" {os.uname().machine}"
 
 
 def source_dir() -> Path:

@@ -37,6 +37,14 @@ def generated_plant(exp):
     return exp.plant()
 
 
+@register_plant("mujoco")
+def mujoco_plant(exp):
+    """MuJoCo as the experiment's plant (:func:`hybrid.plants.mujoco.mujoco_plant`)."""
+    from hybrid.plants import mujoco  # an optional extra: its module loads when a run asks for it
+
+    return mujoco.mujoco_plant(exp)
+
+
 def plant_for(exp, name: str):
     """The plant ``name`` of the experiment ``exp``."""
     if not isinstance(name, str) or name not in PLANTS:

@@ -36,7 +36,7 @@ import numpy as np
 from hybrid.errors import HybridError
 from hybrid.models.robot import Robot, robot_terms
 from hybrid.models.urdf import read_chain
-from hybrid.plants.interface import Plant, register_plant
+from hybrid.plants.interface import Plant
 
 #: the mass [kg] (and inertia [kg m^2]) given to a moving body without, which MuJoCo refuses: it changes
 #: the mass matrix by TINY times a squared distance, at the level of rounding. Also the sensor body's
@@ -362,7 +362,6 @@ class MujocoPlant(Plant):
         return self.generated._record_row(x)
 
 
-@register_plant("mujoco")
 def mujoco_plant(exp) -> MujocoPlant:
     """MuJoCo as the plant of ``exp``: the arm read by MuJoCo, the sensor, contact and friction of the
     generated plant (the closed-form planar plant's sensor tip has no gravity: nor has MuJoCo's then)."""
