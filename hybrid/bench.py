@@ -139,6 +139,26 @@ def _versions() -> dict:
     return out
 
 
+IMPORT = "import hybrid in a fresh process, less the interpreter's start"
+
+
+def import_benchmarks(rep: int, add) -> None:
+    """``import hybrid`` against ``import numpy``, each in fresh processes (the best of ``rep``), less
+    a bare interpreter's start: the import's own cost, and its ratio to NumPy's."""
+    def best(code: str) -> float:
+        times = []
+        for _ in range(rep):
+            t0 = time.perf_counter()
+            subprocess.run([sys.executable, "-c", code], check=True)
+            times.append(time.perf_counter() - t0)
+        return min(times)
+
+    bare = best("pass")
+    numpy_s, hybrid_s = best("import numpy") - bare, best("import hybrid") - bare
+    ratio = hybrid_s / numpy_s
+    add(IMPORT, hybrid_s * 1e3, "ms", ratio=f"{ratio:.2f}x import numpy ({numpy_s * 1e3:.0f} ms)", ratio_value=ratio)
+
+
 def run_benchmarks(quick: bool = False) -> dict:
     """Every benchmark; returns ``{"machine": ..., "results": [{name, median, unit, ...}]}``."""
     arm, circle = paper_arm(), Circle((0.5, 0.0), 0.2)
@@ -153,6 +173,7 @@ def run_benchmarks(quick: bool = False) -> dict:
     def add(name, ns, unit="ns", **extra):
         results.append({"name": name, "median": ns, "unit": unit, **extra})
 
+    import_benchmarks(5 if quick else 21, add)
     values = {"q": q, "qd": qd, "a": a, "Fc": Fc, "arm": p, "surface": s, "opts": [1.0]}
     for b in ("sympy", "casadi"):
         k += 1
@@ -228,6 +249,7 @@ def run_benchmarks(quick: bool = False) -> dict:
     if not quick:  # the experiment's target is for the full 2 s run
         targets.append((comp["name"], "<= 25 ms, >= 100x NumPy",
                         comp["median"] <= 25 and slow["median"] / comp["median"] >= 100))
+    targets.append((IMPORT, "<= 2.5x import numpy", by[IMPORT]["ratio_value"] <= 2.5))
     for name, target, met in targets:
         by[name].update(target=target, met=bool(met))
     for name, (path, tip) in ROBOTS.items():
