@@ -100,3 +100,21 @@ def well_conditioned_states(rng, robot, model, fid, surface, N, e=(0.0, 0.0, 1.0
         if s[-1] / s[0] > 0.05 and np.isfinite(R).all() and np.linalg.norm(np.cross(e, R[2])) > 0.1:
             out.append((q, qd, terms))
     return out
+
+
+def blockdiag(R):
+    """``diag(R, R)``: a 3 x 3 rotation acting on a twist's linear and angular parts."""
+    Z3 = np.zeros((3, 3))
+    return np.block([[R, Z3], [Z3, R]])
+
+
+def pinocchio_panda():
+    """Pinocchio's Panda from the shipped URDF, the fingers locked at 0 as :func:`hybrid.panda` does."""
+    from hybrid.models.shipped import PANDA_URDF
+
+    pin = pytest.importorskip("pinocchio")
+    model = pin.buildModelFromUrdf(str(PANDA_URDF))
+    names = hybrid.panda().joint_names
+    model = pin.buildReducedModel(model, [model.getJointId(n) for n in model.names[1:] if n not in names],
+                                  pin.neutral(model))
+    return pin, model, model.createData(), model.getFrameId(PANDA[1])

@@ -7,19 +7,16 @@ import itertools
 
 import numpy as np
 import pytest
-from conftest import pinocchio_terms, well_conditioned_states
+from conftest import blockdiag, pinocchio_terms, well_conditioned_states
 from hybrid.codegen.model import PLANT_OUTPUTS
 
 import hybrid
 from hybrid import reference as ref
 
 SPHERE = hybrid.Sphere((0.4, 0.1, 0.3), 0.15)
-Z3 = np.zeros((3, 3))
 OUT = {name: i for i, name in enumerate(PLANT_OUTPUTS)}
 
 
-def blockdiag(R):
-    return np.block([[R, Z3], [Z3, R]])
 
 
 def closed_loop(exp, plant, ctrl):

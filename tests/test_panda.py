@@ -7,7 +7,7 @@ from dataclasses import replace
 import casadi as ca
 import numpy as np
 import pytest
-from conftest import PANDA, UR5, example_robot, well_conditioned_states
+from conftest import PANDA, UR5, blockdiag, example_robot, pinocchio_panda, well_conditioned_states
 from hybrid.codegen import controller_step, robot_unit
 
 import hybrid
@@ -23,11 +23,8 @@ EXACT = dict(model_error=0.0, viscous_compensation=1.0, contact=hybrid.Contact(f
 SPHERE = hybrid.Sphere((0.4, 0.1, 0.3), 0.15)
 #: the Panda's usual ready pose (within its joint limits)
 READY = np.array([0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785])
-Z3 = np.zeros((3, 3))
 
 
-def blockdiag(R):
-    return np.block([[R, Z3], [Z3, R]])
 
 
 def test_the_shipped_panda_is_example_robot_datas():
@@ -52,14 +49,6 @@ def test_the_shipped_urdfs_are_package_data():
 # ----------------------------------------------------------------------------- the posture task
 
 
-def pinocchio_panda():
-    """Pinocchio's Panda from the shipped URDF, the fingers locked at 0 as :func:`hybrid.panda` does."""
-    pin = pytest.importorskip("pinocchio")
-    model = pin.buildModelFromUrdf(str(PANDA_URDF))
-    names = hybrid.panda().joint_names
-    model = pin.buildReducedModel(model, [model.getJointId(n) for n in model.names[1:] if n not in names],
-                                  pin.neutral(model))
-    return pin, model, model.createData(), model.getFrameId(PANDA[1])
 
 
 @pytest.fixture(scope="module")

@@ -8,12 +8,11 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
-from conftest import PANDA
+from conftest import blockdiag, pinocchio_panda
 
 import hybrid
 from hybrid import reference as ref
 from hybrid.models.robot import robot_terms
-from hybrid.models.shipped import PANDA_URDF
 from hybrid.plants.rigid_body import RigidBodyPlant
 from hybrid.simulation import closed_loop
 from hybrid.simulation.runner import run
@@ -22,11 +21,8 @@ from hybrid.simulation.runner import run
 #: contact keeps its friction: it acts on the sensor tip, and the arm feels only the sensor's
 #: spring-damper force, which is what the controller reads at the sample
 EXACT = dict(model_error=0.0, viscous_compensation=1.0, curvature=True)
-Z3 = np.zeros((3, 3))
 
 
-def blockdiag(R):
-    return np.block([[R, Z3], [Z3, R]])
 
 
 @pytest.fixture(scope="module")
@@ -35,14 +31,6 @@ def default_run():
     return exp, hybrid.simulate(exp)
 
 
-def pinocchio_panda():
-    """Pinocchio's Panda from the shipped URDF, the fingers locked at 0 as :func:`hybrid.panda` does."""
-    pin = pytest.importorskip("pinocchio")
-    model = pin.buildModelFromUrdf(str(PANDA_URDF))
-    names = hybrid.panda().joint_names
-    model = pin.buildReducedModel(model, [model.getJointId(n) for n in model.names[1:] if n not in names],
-                                  pin.neutral(model))
-    return pin, model, model.createData(), model.getFrameId(PANDA[1])
 
 
 def run_checked(exp, x0, q_rest):
