@@ -31,7 +31,7 @@ class RunSettings:
         return math.ceil(self.duration / self.sample_time - 1e-9)
 
     def effective_gains(self) -> Gains:
-        """The gains in force: without integral action ``KI2v = KIf = 0`` (NOTES section 4)."""
+        """The gains in force: without integral action ``KI2v = KIf = 0``."""
         return self.gains if self.integral else replace(self.gains, KI2v=0.0, KIf=0.0)
 
     def pressed_at(self, point, normal) -> tuple[np.ndarray, np.ndarray]:

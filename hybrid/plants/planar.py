@@ -44,7 +44,7 @@ class PlanarLoopPlant(LoopPlant):
 
 
 class PlanarPlant(GeneratedPlant):
-    """The paper's plant: arm + 2-D sensor + surface (NOTES section 5)."""
+    """The paper's plant in closed form: its arm, the 2-D elastic sensor, the surface's cross-section."""
 
     def __init__(self, exp):
         unit = units.planar_unit(exp.backend)

@@ -36,7 +36,7 @@ class RigidBodyLoopPlant(LoopPlant):
 
 
 class RigidBodyPlant(GeneratedPlant):
-    """The 3-D experiment's plant: a URDF arm, 3-D sensor, contact on any surface (NOTES section 10)."""
+    """The 3-D experiment's plant: a URDF arm, 3-D sensor, contact on any surface."""
 
     def __init__(self, exp):
         unit = units.plant_unit(exp.robot.chain, exp.robot.name, exp.surface.spec())
