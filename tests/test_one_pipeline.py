@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 import pytest
 
 import hybrid
+import hybrid.geometry.surfaces
 from hybrid import reference as ref
 
 
@@ -102,3 +105,94 @@ def test_one_experiment_type_refuses_mixed_dimensions():
         hybrid.tracing_experiment(surface=hybrid.Circle((0.5, 0.0), 0.2), start_point=(0.3, 0.0))
     with pytest.raises(hybrid.HybridError, match="no latitude circle"):
         hybrid.tracing_experiment(surface=hybrid.Plane((0.4, 0, 0.1), (0, 0, 1)), latitude=30.0)
+
+
+# ------------------------------------------------------- what a new surface, scheme or plant takes
+
+
+@dataclass(frozen=True)
+class Paraboloid(hybrid.geometry.surfaces.Surface):
+    """A surface written here, as a user or a new built-in would: one class, its formula and
+    parameters. ``z = z0 + k |(x, y) - (x0, y0)|^2``, touched from above."""
+
+    x0: float
+    y0: float
+    z0: float
+    k: float
+    kind = "test_paraboloid"
+    parameters_named = ("x0", "y0", "z0", "k")
+
+    @staticmethod
+    def formula(p, theta, sqrt):
+        return (p[2] - theta[2] - theta[3] * ((p[0] - theta[0]) ** 2 + (p[1] - theta[1]) ** 2))
+
+    def as_array(self) -> np.ndarray:
+        return np.array([self.x0, self.y0, self.z0, self.k])
+
+    def normal_at(self, p) -> np.ndarray:
+        g = np.array([-2 * self.k * (p[0] - self.x0), -2 * self.k * (p[1] - self.y0), 1.0])
+        return g / np.linalg.norm(g)
+
+
+def test_a_new_surface_is_one_class(tmp_path):
+    """Frames, the law, the 3-D experiment, its files and MuJoCo take it with no other change."""
+    surface = Paraboloid(0.45, 0.0, 0.1, 2.0)
+    p, pd = np.array([0.5, 0.05, 0.1 + 2.0 * 0.0025 * 2]), np.array([0.1, -0.05, 0.02])
+    R, Rd = hybrid.task_frame(surface, p, pd)
+    R_ref, Rd_ref = ref.spatial_frame(surface, p, pd, (0.0, 0.0, 1.0))
+    np.testing.assert_allclose(R, R_ref, atol=1e-12)
+    np.testing.assert_allclose(Rd, Rd_ref, atol=1e-10)
+    np.testing.assert_allclose(R[2], surface.normal_at(p), atol=1e-12)  # the formula and the class agree
+    start = (0.4, 0.0, 0.1 + 2.0 * 0.05**2)
+    exp = hybrid.tracing_experiment(surface=surface, start_point=start, duration=0.05)
+    res = hybrid.simulate(exp)
+    assert np.isfinite(res.state).all() and res.force_normal[-1] == pytest.approx(10.0, abs=1.0)
+    back = hybrid.SimulationResult.load(res.save(tmp_path / "paraboloid"))
+    assert back.experiment == exp
+    pytest.importorskip("mujoco")
+    theirs = hybrid.simulate(exp, plant="mujoco")
+    assert np.sqrt(np.mean((theirs.force_normal - res.force_normal) ** 2)) < 1e-9
+
+
+def test_a_new_scheme_is_one_class():
+    """A registered scheme runs wherever a scheme's name is taken: here the task law with Khatib's
+    feedforward, which is Khatib's scheme by another name (its torques are Khatib's)."""
+    from hybrid.control import schemes
+
+    @schemes.register
+    class Feedforward(schemes.TaskDecoupling):
+        name = "test_feedforward"
+        feeds_desired_force = True
+
+    try:
+        ours = hybrid.simulate(hybrid.paper_experiment(controller="test_feedforward", duration=0.3))
+        khatib = hybrid.simulate(hybrid.paper_experiment(controller="khatib", duration=0.3))
+        np.testing.assert_array_equal(ours.tau, khatib.tau)
+    finally:
+        del schemes.SCHEMES["test_feedforward"]
+
+
+def test_a_new_plant_is_one_implementation():
+    """A plant that implements the interface and registers a name runs every experiment: here the
+    generated plant behind a plant of one's own (the Python runner's numbers, to the bit)."""
+    from hybrid.plants import interface
+
+    class Wrapped(interface.Plant):
+        def __init__(self, exp):
+            self.inner = exp.plant()
+            self.record, self.nq, self.force_columns = self.inner.record, self.inner.nq, self.inner.force_columns
+            self.conditioning, self.conditioning_name = self.inner.conditioning, self.inner.conditioning_name
+
+        def advance(self, x, tau, nsteps, trajectory):
+            return self.inner.advance(x, tau, nsteps, trajectory)
+
+        def outputs(self, states):
+            return self.inner.outputs(states)
+
+    interface.register_plant("test_wrapped")(Wrapped)
+    try:
+        exp = hybrid.tracing_experiment(duration=0.05)
+        ours = hybrid.simulate(exp, plant="test_wrapped")
+        np.testing.assert_array_equal(ours.state, hybrid.simulate(exp, compiled=False).state)
+    finally:
+        del interface.PLANTS["test_wrapped"]
