@@ -137,8 +137,10 @@ def check_figures(figures: dict | None, parameters, metrics) -> None:
     if "x" not in figures or "y" not in figures:
         raise HybridError("[figures] needs x and y (two swept parameters)")
     wanted = figures.get("metrics", [])
-    if not isinstance(wanted, list) or not set(wanted) <= set(metrics):
-        raise HybridError(f"[figures] metrics must be a list of metric names: {', '.join(metrics)}")
+    if not isinstance(wanted, list) or not all(isinstance(w, str) for w in wanted) or not set(wanted) <= set(metrics):
+        unknown = [w for w in wanted if w not in metrics] if isinstance(wanted, list) else wanted
+        raise HybridError(f"[figures] metrics = {unknown!r:.60}: give a list of the runs' metric names (below)\n"
+                          f"  known: {', '.join(metrics)}")
 
 
 def _metric_names(base) -> list[str]:

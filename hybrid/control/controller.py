@@ -240,7 +240,9 @@ class Controller:
                         self._spatial.as_array(), np.array(self.reference), options, posture_array)
         self._t, self._extra, self._rate, self._target = np.zeros(1), np.zeros(m), np.zeros(m), np.zeros(9)
         self._fc = np.zeros(6)
-        self._fc_head = {2: self._fc[:2], 3: self._fc[:3]}
+        # a force without moments: the planar arm's in its plane (2), any other arm's in space (3)
+        self._force_size = 2 if robot.closed_form is not None else 3
+        self._fc_head = self._fc[:self._force_size]
         self._varying = [(i, ref.value) for i, ref in enumerate(self._references) if ref.value is not None]
         self._rates = [(i, ref.rate) for i, ref in enumerate(self._references) if ref.rate is not None]
         # with references all steps and no path, the per-sample inputs end at t: the rest is bound
@@ -404,16 +406,14 @@ class Controller:
 
     def _python_references(self, t: float) -> None:
         """The references given as code, at ``t``: into the step's ``yd_extra`` and ``yd_rate``."""
-        try:
-            for i, value in self._varying:
-                self._extra[i] = value(t)
-            for i, rate in self._rates:
-                self._rate[i] = rate(t)
-        except HybridError:
-            raise
-        except (TypeError, ValueError) as exc:
-            raise HybridError(f"a reference at t = {t} s did not give a number ({exc}); a reference f(t) "
-                              "returns one number (and its rate(t) one number)") from None
+        for target, calls, what in ((self._extra, self._varying, "reference"), (self._rate, self._rates, "rate")):
+            for i, f in calls:
+                name = f"the {self.axis_names[i]} {what}"
+                value = _called(f, t, name)
+                if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
+                    raise HybridError(f"{name} gave {value!r:.40} at t = {t} s; a reference f(t) returns one number "
+                                      "(and its rate(t) one number)")
+                target[i] = value
 
     def __call__(self, t: float, q, qdot, Fc) -> np.ndarray:
         """``tau`` [N m or N] for the sample at time ``t`` [s], from the joint state and the measured
@@ -421,10 +421,10 @@ class Controller:
         advances the integrals by one sample."""
         if type(Fc) is not np.ndarray or Fc.shape != (6,):
             Fc = self._padded(Fc)
-        try:
-            self._t[0] = t
-        except (TypeError, ValueError):
-            raise HybridError(f"t = {t!r:.40}; give the sample time in seconds (a number)") from None
+        if type(t) is not float and (isinstance(t, (str, bytes, bool, np.bool_))
+                                     or not isinstance(t, (int, np.integer, np.floating))):
+            raise HybridError(f"t = {t!r:.40}; give the sample time in seconds (a number)")
+        self._t[0] = t
         if not _isfinite(self._t[0]):
             raise HybridError(f"t = {t!r}; give a finite sample time")
         out, z = self._out, self._z
@@ -452,26 +452,26 @@ class Controller:
                 **{name: o.copy() for (name, _, _), o in zip(self._step.outputs[2:], self._out[2:])}}
 
     def _padded(self, Fc) -> np.ndarray:
-        """``Fc`` as the step's 6-vector (into a buffer for the common 2 or 3 forces)."""
-        if type(Fc) is np.ndarray and Fc.dtype == np.float64 and Fc.shape in ((2,), (3,)):
-            self._fc[2] = 0.0
-            self._fc_head[Fc.shape[0]][...] = Fc  # the moment entries stay 0
+        """``Fc`` as the step's 6-vector (into a buffer for a force without moments)."""
+        if type(Fc) is np.ndarray and Fc.dtype == np.float64 and Fc.shape == (self._force_size,):
+            self._fc_head[...] = Fc  # the other entries stay 0
             return self._fc
-        return _wrench(Fc)
+        return _wrench(Fc, self._force_size)
 
     def _desired(self, t: float) -> np.ndarray:
-        got = self.path(t)
+        got = _called(self.path, t, "the path")
         if not isinstance(got, tuple) or len(got) not in (2, 3):
             raise HybridError(f"path({t}) returned {got!r:.60}; return (p_d, p_d') or (p_d, p_d', phi_d)")
-        phi = _vector3("path angles", got[2]) if len(got) == 3 else np.zeros(3)
-        return np.concatenate([_vector3("path point", got[0]), _vector3("path velocity", got[1]), phi])
+        d = self._force_size  # a point of the planar arm's plane, or of space
+        phi = _vector("path angles", got[2], 3) if len(got) == 3 else np.zeros(3)
+        return np.concatenate([_vector("path point", got[0], d), _vector("path velocity", got[1], d), phi])
 
     def _checked(self, q, qdot, Fc) -> None:
         """The general path: any array-like input, and the error that names the cause."""
         t = self._t[0]
         if not all(np.isfinite(v).all() for v in (self._t, self._extra, self._rate, self._target)):
-            raise HybridError(f"the references at t = {t} s are not finite: values {self._extra}, rates "
-                              f"{self._rate}, desired point {self._target}")
+            raise HybridError(f"the references at t = {t} s are not finite; give references that return finite "
+                              f"numbers\n  values {self._extra}, rates {self._rate}, desired point {self._target}")
         got = self._step(q, qdot, Fc, self._z, self._t, self._extra, self._rate, self._target, *self._params,
                          singular_tol=self.singular_tol)
         for (name, _, _), o in zip(self._step.outputs, self._out):
@@ -479,27 +479,41 @@ class Controller:
 
     def measure(self, q, qdot, Fc) -> Measurement:
         """What the controller measures at ``q, qdot, Fc`` (see :class:`Measurement`)."""
-        out = self._measure(q, qdot, _wrench(Fc), self._params[4], self._params[5])
+        out = self._measure(q, qdot, _wrench(Fc, self._force_size), self._params[4], self._params[5])
         return Measurement(out["p"], out["v"], out["task_velocity"], out["task_wrench"])
 
 
-def _wrench(Fc) -> np.ndarray:
-    """A measured force (2 or 3 entries) or wrench (6) as the 6-vector ``(f, m)``."""
+def _called(f, t: float, name: str):
+    """``f(t)``, a user's callback: whatever it raises becomes a HybridError naming it and the time (the
+    original kept as the cause)."""
     try:
-        arr = np.asarray(Fc, dtype=float).ravel()
+        return f(t)
+    except HybridError:
+        raise
+    except Exception as exc:  # any failure of the user's code, RecursionError included
+        raise HybridError(f"{name} failed at t = {t} s: {type(exc).__name__}: {str(exc)[:80]}\n"
+                          "  (the original error is this one's cause)") from exc
+
+
+def _wrench(Fc, force_size: int) -> np.ndarray:
+    """A measured force without moments (``force_size`` entries: 2 in the planar arm's plane, 3 in
+    space) or a wrench (6), base axes, as the 6-vector ``(f, m)``."""
+    try:
+        arr = np.asarray(Fc, dtype=float)
     except (TypeError, ValueError):
         arr = None
-    if arr is None or np.ndim(Fc) != 1 or arr.size not in (2, 3, 6):
-        raise HybridError(f"Fc = {Fc!r:.60}; give the measured force on the robot (2 or 3 numbers, base axes) "
+    if arr is None or arr.shape not in ((force_size,), (6,)):
+        raise HybridError(f"Fc = {Fc!r:.60}; give the measured force on the robot ({force_size} numbers, base axes) "
                           "or the wrench (force, moment: 6 numbers)")
     return np.concatenate([arr, np.zeros(6 - arr.size)])
 
 
-def _vector3(name: str, v) -> np.ndarray:
+def _vector(name: str, v, size: int) -> np.ndarray:
+    """``v`` as ``size`` finite numbers, padded to 3 (a planar point lies at z = 0)."""
     try:
-        arr = np.asarray(v, dtype=float).ravel()
+        arr = np.asarray(v, dtype=float)
     except (TypeError, ValueError):
         arr = np.full(1, np.nan)
-    if arr.size not in (2, 3) or not np.isfinite(arr).all():
-        raise HybridError(f"the desired {name} {v!r:.60} must be 2 or 3 finite numbers [m, m/s]")
-    return np.concatenate([arr, np.zeros(3 - arr.size)])
+    if arr.shape != (size,) or not np.isfinite(arr).all():
+        raise HybridError(f"the desired {name} {v!r:.60} must be {size} finite numbers [m, m/s or rad]")
+    return np.concatenate([arr, np.zeros(3 - size)])

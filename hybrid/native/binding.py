@@ -20,24 +20,25 @@ from hybrid.native.build import load_fastcall
 
 
 def status_error(status: int, where: str, singular_hint: str = "", **inputs) -> HybridError:
-    """The exception for a native status code, naming the inputs that caused it."""
-    shown = ", ".join(f"{k}={np.array2string(np.asarray(v), precision=6)}" for k, v in inputs.items()
-                      if np.size(v) <= 12)  # states, not parameter arrays
+    """The exception for a native status code: what happened and the fix on the first line, the
+    inputs that caused it (the states, not the parameter arrays) on the next."""
+    shown = "\n  at " + ", ".join(f"{k}={np.array2string(np.asarray(v), precision=6)}" for k, v in inputs.items()
+                                  if np.size(v) <= 12)
     if status == 1:
         return SingularConfigurationError(
-            f"{where}: the Jacobian is singular or nearly so at {shown}{singular_hint}; "
-            "keep the arm away from the singular pose, or lower singular_tol")
+            f"{where}: the Jacobian is singular or nearly so{singular_hint}; keep the arm away from the singular "
+            f"pose, or lower singular_tol{shown}")
     if status == 3:
         return TaskFrameError(
-            f"{where}: the task frame is undefined at {shown}: the reference direction e is parallel to the "
-            "surface normal there; choose another reference direction (decoupling_law(..., reference=...))")
+            f"{where}: the task frame is undefined: the reference direction e is parallel to the surface normal "
+            f"there; choose another reference direction (decoupling_law(..., reference=...)){shown}")
     if status == 4:
         return SingularConfigurationError(
-            f"{where}: the ZYX Euler angles are singular at {shown} (beta = +-pi/2, cos beta = 0); "
-            "use coordinates='twist' there, or keep the tool away from that orientation")
+            f"{where}: the ZYX Euler angles are singular (beta = +-pi/2, cos beta = 0); use coordinates='twist' "
+            f"there, or keep the tool away from that orientation{shown}")
     bad = [k for k, v in inputs.items() if not np.isfinite(np.asarray(v, float)).all()]
     hint = f"non-finite input {', '.join(bad)}" if bad else "the inputs are finite but extreme"
-    return NonFiniteError(f"{where}: result is NaN or infinite ({hint}) at {shown}")
+    return NonFiniteError(f"{where}: result is NaN or infinite ({hint}){shown}")
 
 
 def as_array(name: str, x, size: int, batched: bool | None = False) -> np.ndarray:

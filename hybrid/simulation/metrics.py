@@ -33,6 +33,16 @@ def _series(name: str, x, n: int) -> np.ndarray:
         raise HybridError(f"metrics: {name} must be numbers, one per time sample") from None
     if arr.ndim != 1 or len(arr) != n:
         raise HybridError(f"metrics: {name} must have one value per time sample ({n}), got shape {arr.shape}")
+    return _finite_series(name, arr)
+
+
+def _finite_series(name: str, arr: np.ndarray) -> np.ndarray:
+    """``arr``, refused where it holds a NaN or an infinity: every metric would silently be NaN."""
+    bad = ~np.isfinite(arr)
+    if bad.any():
+        i = int(np.flatnonzero(bad.reshape(len(arr), -1).any(axis=1))[0])
+        raise HybridError(f"metrics: {name} holds NaN or infinite values (first at sample {i}); give finite "
+                          "series (a run that stopped has none: take its finite part)")
     return arr
 
 
@@ -58,7 +68,7 @@ def metrics(t, force_normal, velocity_tangential, force_reference, speed_referen
     except (TypeError, ValueError):
         t = np.zeros(0)
     if t.ndim != 1 or len(t) < 2 or not np.all(np.diff(t) > 0):
-        raise HybridError("metrics: t must be at least two increasing sample times [s]")
+        raise HybridError("metrics: t must be at least two increasing, finite sample times [s]")
     F, v, Fd, vd = (_series(name, x, len(t)) for name, x in (
         ("force_normal", force_normal), ("velocity_tangential", velocity_tangential),
         ("force_reference", force_reference), ("speed_reference", speed_reference)))
@@ -107,9 +117,9 @@ def metrics(t, force_normal, velocity_tangential, force_reference, speed_referen
         if torques.ndim not in (1, 2) or len(torques) != len(t):
             raise HybridError(f"metrics: tau must have one row of joint torques per time sample ({len(t)}), "
                               f"got shape {torques.shape}")
-        torques = torques.reshape(len(t), -1)
+        torques = _finite_series("tau", torques.reshape(len(t), -1))
         for j in range(torques.shape[1]):
-            m[f"peak_torque_joint{j + 1}_Nm"] = float(np.nanmax(np.abs(torques[:, j])))
+            m[f"peak_torque_joint{j + 1}_Nm"] = float(np.max(np.abs(torques[:, j])))
     return m
 
 

@@ -114,9 +114,11 @@ def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
             if not np.isfinite(tau).all():
                 raise NonFiniteError(f"the controller's torque is {tau.tolist()} N m")
         except HybridError as exc:
+            first, _, rest = str(exc).partition("\n")
             raise SimulationError(
-                f"at t = {t:.4f} s (q = {np.round(q, 5).tolist()} rad, qdot = {np.round(qdot, 4).tolist()} "
-                f"rad/s): {exc}", t, _result(exp, plant, states[:1 + k * m], taus[:1 + k * m], False)) from exc
+                f"at t = {t:.4f} s: {first}\n  q = {np.round(q, 5).tolist()} rad, qdot = "
+                f"{np.round(qdot, 4).tolist()} rad/s" + (f"\n{rest}" if rest else ""),
+                t, _result(exp, plant, states[:1 + k * m], taus[:1 + k * m], False)) from exc
         if k == 0:
             taus[0] = tau  # the first sample's torque acts from t = 0
         rows = slice(1 + k * m, 1 + (k + 1) * m)
