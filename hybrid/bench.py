@@ -230,7 +230,7 @@ def run_benchmarks(quick: bool = False) -> dict:
     k += 1
     _progress(k, steps, "regenerate from scratch")
     t0 = time.perf_counter()
-    subprocess.run([sys.executable, "-c", "from codegen.regenerate import expected_files; expected_files()"],
+    subprocess.run([sys.executable, "-c", "from hybrid.codegen.regenerate import expected_files; expected_files()"],
                    check=True, cwd=Path(__file__).resolve().parent.parent)
     add("regenerate from scratch (both backends, fresh process)", (time.perf_counter() - t0) * 1e3, "ms")
 

@@ -196,3 +196,19 @@ def test_a_new_plant_is_one_implementation():
         np.testing.assert_array_equal(ours.state, hybrid.simulate(exp, compiled=False).state)
     finally:
         del interface.PLANTS["test_wrapped"]
+
+
+def test_paper_settings_saved_before_experiments_were_one_type_still_load():
+    """The former form of a paper run's settings: the arm's parameters as ``arm``, a 2-D surface."""
+    from dataclasses import asdict
+
+    exp = hybrid.paper_experiment(controller="khatib", elbow=-1, start_point=(0.3, 0.0))
+    old = {"controller": "khatib", "integral": True, "curvature": False, "frame": "actual", "model_error": 0.1,
+           "viscous_compensation": 0.5, "arm": asdict(hybrid.paper_arm()),
+           "surface": {"kind": "circle", "center": [0.5, 0.0], "radius": 0.2}, "start_point": [0.3, 0.0],
+           "elbow": -1, "backend": "sympy", "singular_tol": 1e-3, "duration": 2.0, "step": 1e-4, "sample_time": 1e-2,
+           **{k: asdict(getattr(exp, k)) for k in ("sensor", "contact", "gains", "force_reference",
+                                                   "speed_reference")}}
+    assert hybrid.Experiment.from_dict(old) == exp
+    old["surface"] = {"kind": "plane", "point": [0.3, 0.0], "normal": [-1.0, 0.0]}
+    assert hybrid.Experiment.from_dict(old).surface == hybrid.Plane((0.3, 0.0, 0.0), (-1.0, 0.0, 0.0))

@@ -164,7 +164,7 @@ def test_the_factory_takes_the_settings_the_others_take():
     exp = hybrid.panda_experiment()
     assert exp.robot == hybrid.panda() and len(exp.build_controller().axes) == 6
     assert exp.posture == hybrid.Posture(exp.posture.q_rest) and exp.step == 1e-4 and exp.sample_time == 1e-2
-    np.testing.assert_allclose(exp.start(), exp.path.point_at(exp.path.start), atol=1e-12)
+    np.testing.assert_allclose(exp.start(), exp.followed_path().point_at(exp.followed_path().start), atol=1e-12)
 
     tuned = hybrid.panda_experiment(KPv=50.0, F_d=12.0, v_d=hybrid.Step(0.02, 0.04, 1.0), posture=None)
     assert tuned.gains == replace(hybrid.Gains(), KPv=50.0) and tuned.posture is None
@@ -175,11 +175,14 @@ def test_the_factory_takes_the_settings_the_others_take():
     moved = hybrid.panda_experiment(surface=pillar)
     start = np.array(moved.start_point)
     assert pillar.project(start) == pytest.approx(start) and start[2] == pytest.approx(0.78)
-    assert moved.path.radius == 0.3 and np.allclose(moved.path.point_at(moved.path.start), start)
+    path = moved.followed_path()
+    assert path.radius == 0.3 and np.allclose(path.point_at(path.start), start)
     through = hybrid.panda_experiment(start_point=tuple(exp.surface.project((0.45, -0.1, 0.75))))
-    assert np.allclose(through.path.point_at(through.path.start), through.start_point)
+    assert np.allclose(through.followed_path().point_at(through.followed_path().start), through.start_point)
 
     with pytest.raises(hybrid.HybridError, match="unknown setting.*for panda_experiment"):
         hybrid.panda_experiment(latitude=30.0)
-    with pytest.raises(hybrid.HybridError, match="circle_at needs a cylinder about base z"):
-        hybrid.panda_experiment(surface=hybrid.Cylinder((0.7, 0.0, 0.0), (1.0, 0.0, 1.0), 0.25))
+    tilted = hybrid.Cylinder((0.7, 0.0, 0.0), (1.0, 0.0, 1.0), 0.25)  # no circle around it to follow
+    assert hybrid.panda_experiment(surface=tilted).followed_path() is None
+    with pytest.raises(hybrid.HybridError, match="frame='desired' follows the experiment's path"):
+        hybrid.panda_experiment(surface=tilted, frame="desired")

@@ -50,7 +50,7 @@ def latitude_drift(exp, res):
     """How far the arm tip has left its latitude circle at the end (along t2, the meridian) [m]."""
     r = last(res, res.outputs[:, :3]) - np.array(exp.surface.center)
     polar = np.arccos(r[:, 2] / np.linalg.norm(r, axis=1))
-    latitude = np.arccos((exp.path.center[2] - exp.surface.center[2]) / exp.surface.radius)
+    latitude = np.arccos((exp.followed_path().center[2] - exp.surface.center[2]) / exp.surface.radius)
     return abs(np.mean(polar) - latitude) * np.mean(np.linalg.norm(r, axis=1))
 
 

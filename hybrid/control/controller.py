@@ -148,7 +148,7 @@ class Controller:
         :meth:`Robot.planar` with the planar task axes ``(t1, n)``.
     surface : Plane, Circle, Sphere, Cylinder or ImplicitSurface
     scheme : str or Scheme
-        ``"task"`` (De Luca & Manes), ``"khatib"`` or a :class:`~hybrid.schemes.Scheme`.
+        ``"task"`` (De Luca & Manes), ``"khatib"`` or a :class:`~hybrid.Scheme`.
     axes : task axes (see :func:`hybrid.decoupling_law`); default all six, ``"planar"`` for an Arm.
     selection : the force-controlled axes, by name (``"n"``) or index; default the normal ``n``.
     gains : :class:`Gains` for every axis (velocity axes use ``KPv, KIv, KI2v``; force axes
@@ -266,7 +266,7 @@ class Controller:
     @property
     def runs_in_c(self) -> bool:
         """True when every reference is a number or a :class:`Step` and no path is given: then a
-        whole run can be compiled C (:mod:`hybrid.closed_loop`)."""
+        whole run can be compiled C (:mod:`hybrid.simulation.closed_loop`)."""
         return self._short
 
     def step_inputs(self) -> dict[str, np.ndarray]:
@@ -326,31 +326,7 @@ class Controller:
         return tuple(per_axis)
 
     def _posture(self, posture) -> Posture | None:
-        """``posture`` checked against the arm, the task and the scheme (see the class docstring)."""
-        if posture is None:
-            return None
-        if not isinstance(posture, Posture):
-            raise HybridError(f"posture = {posture!r:.60}; give a hybrid.Posture(q_rest, stiffness, damping) or None")
-        n, m = self.robot.n, len(self.axes)
-        if len(posture.q_rest) != n:
-            raise HybridError(f"Posture q_rest has {len(posture.q_rest)} joint positions; the arm has {n} joints "
-                              f"({', '.join(self.robot.joint_names)})")
-        if m >= n:
-            raise HybridError(f"a posture task acts in the task's null space, and this task has none: {m} task axes "
-                              f"({', '.join(self.axis_names)}) for {n} joints; drop posture, or give a task of fewer "
-                              "axes than joints (e.g. axes='position')")
-        if self.scheme.step != "controller_step":
-            raise HybridError(f"the {self.scheme.name} scheme maps the loops without a null-space projection, so a "
-                              "posture task would disturb the task: use it with the 'task' or 'khatib' scheme")
-        limits = self.robot.limits
-        if limits is not None:
-            q = np.array(posture.q_rest)
-            outside = [f"{name} = {v:g} (limits {lo:g} to {hi:g})" for name, v, lo, hi in
-                       zip(self.robot.joint_names, q, limits.lower, limits.upper) if not lo <= v <= hi]
-            if outside:
-                raise HybridError(f"Posture q_rest is outside the joint limits: {'; '.join(outside)}; give a rest "
-                                  "posture within them")
-        return posture
+        return check_posture(self.robot, self.axes, self.scheme, posture)
 
     def _gain_array(self) -> np.ndarray:
         """``(KP, KI, KI2, KD)`` per axis, as the generated step reads them."""
@@ -481,6 +457,35 @@ class Controller:
         """What the controller measures at ``q, qdot, Fc`` (see :class:`Measurement`)."""
         out = self._measure(q, qdot, _wrench(Fc, self._force_size), self._params[4], self._params[5])
         return Measurement(out["p"], out["v"], out["task_velocity"], out["task_wrench"])
+
+
+def check_posture(robot, axes: tuple[int, ...], scheme, posture) -> Posture | None:
+    """``posture`` checked against the arm, its task ``axes`` and the scheme (see :class:`Posture`)."""
+    if posture is None:
+        return None
+    if not isinstance(posture, Posture):
+        raise HybridError(f"posture = {posture!r:.60}; give a hybrid.Posture(q_rest, stiffness, damping) or None")
+    n, m = robot.n, len(axes)
+    if len(posture.q_rest) != n:
+        raise HybridError(f"Posture q_rest has {len(posture.q_rest)} joint positions; the arm has {n} joints "
+                          f"({', '.join(robot.joint_names)})")
+    if m >= n:
+        names = ", ".join(AXIS_NAMES[i] for i in axes)
+        raise HybridError(f"a posture task acts in the task's null space, and this task has none: {m} task axes "
+                          f"({names}) for {n} joints; drop posture, or give a task of fewer axes than joints "
+                          "(e.g. axes='position')")
+    if scheme.step != "controller_step":
+        raise HybridError(f"the {scheme.name} scheme maps the loops without a null-space projection, so a "
+                          "posture task would disturb the task: use it with the 'task' or 'khatib' scheme")
+    limits = robot.limits
+    if limits is not None:
+        q = np.array(posture.q_rest)
+        outside = [f"{name} = {v:g} (limits {lo:g} to {hi:g})" for name, v, lo, hi in
+                   zip(robot.joint_names, q, limits.lower, limits.upper) if not lo <= v <= hi]
+        if outside:
+            raise HybridError(f"Posture q_rest is outside the joint limits: {'; '.join(outside)}; give a rest "
+                              "posture within them")
+    return posture
 
 
 def _called(f, t: float, name: str):

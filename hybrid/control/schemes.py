@@ -92,4 +92,4 @@ def scheme_of(scheme) -> Scheme:
     if isinstance(scheme, str) and scheme in SCHEMES:
         return SCHEMES[scheme]()
     raise HybridError(f"unknown scheme {scheme!r:.40}; choose one of {', '.join(SCHEMES)} or pass a "
-                      "hybrid.schemes.Scheme")
+                      "hybrid.Scheme")

@@ -19,15 +19,15 @@ from functools import lru_cache
 
 import numpy as np
 
-from hybrid.control.controller import Controller, Posture
+from hybrid.control.controller import Controller, Posture, check_posture
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
-from hybrid.control.schemes import SCHEMES
+from hybrid.control.schemes import SCHEMES, scheme_of
 from hybrid.errors import HybridError
 from hybrid.experiments.settings import START_TOL, RunSettings, check_common_types, check_timing, pressed
 from hybrid.geometry.paths import CirclePath, LinePath, Path
-from hybrid.geometry.surfaces import SURFACE_KINDS, Surface
-from hybrid.geometry.task_axes import reference_direction
+from hybrid.geometry.surfaces import SURFACE_KINDS, Circle, Plane, Surface
+from hybrid.geometry.task_axes import check_axes, reference_direction
 from hybrid.models.chain import Chain, Joint
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot
@@ -69,8 +69,8 @@ class Experiment(RunSettings):
     singular_tol : the run stops when the Jacobian's conditioning at a sample falls below it.
     """
 
-    robot: Robot
-    surface: Surface
+    robot: Robot | None = None
+    surface: Surface | None = None
     path: Path | None = None
     start_point: tuple[float, ...] | None = None
     elbow: int = 1
@@ -98,6 +98,9 @@ class Experiment(RunSettings):
         check_common_types(self)
         if self.controller not in SCHEMES:
             raise HybridError(f"unknown controller {self.controller!r}; choose one of {', '.join(SCHEMES)}")
+        if self.robot is None or self.surface is None:
+            raise HybridError("an Experiment needs a robot and a surface; give both, or start from a factory: "
+                              "hybrid.paper_experiment(), hybrid.tracing_experiment(), hybrid.panda_experiment()")
         if isinstance(self.robot, Arm):  # the paper's parameters stand for its arm
             object.__setattr__(self, "robot", Robot.planar(self.robot))
         if not isinstance(self.robot, Robot):
@@ -115,17 +118,28 @@ class Experiment(RunSettings):
         if self.path is not None and not isinstance(self.path, Path):
             raise HybridError(f"path = {self.path!r:.60}; give a hybrid.CirclePath or hybrid.LinePath, or None")
         if not isinstance(self.backend, str) or self.backend not in BACKENDS:
-            raise HybridError(f"unknown backend {self.backend!r:.40}; choose one of {BACKENDS}")
+            raise HybridError(f"unknown backend {self.backend!r:.40}; choose one of {BACKENDS} (the NumPy reference "
+                              "runs as hybrid.reference.simulate(experiment))")
         if isinstance(self.elbow, bool) or not isinstance(self.elbow, (int, np.integer)) or self.elbow not in (1, -1):
             raise HybridError(f"elbow = {self.elbow!r}; give +1 (q2 > 0) or -1 (q2 < 0)")
         object.__setattr__(self, "reference", tuple(reference_direction(self.reference)))
+        if self.robot.closed_form is not None and self.reference != (0.0, 0.0, 1.0):
+            raise HybridError(f"reference = {self.reference}: the planar arm's task frame has e = z (its plant "
+                              "records in it); leave reference out")
+        if self.robot.closed_form is None:
+            for name, value, default in (("elbow", self.elbow, 1), ("backend", self.backend, "sympy")):
+                if value != default:
+                    raise HybridError(f"{name} = {value!r} is a setting of the planar arm's closed form; leave it "
+                                      f"out for the robot {self.robot.name!r}")
+        # what the controller will refuse, refused now (building it compiles its step)
+        check_posture(self.robot, check_axes(self.robot, self.axes), scheme_of(self.controller), self.posture)
         if self.start_point is not None:
             object.__setattr__(self, "start_point", _point("Experiment", "start_point", self.start_point,
                                                            (self._geometry().dim,)))
-        elif self._path() is None:
+        elif self.followed_path() is None:
             raise HybridError(f"a {type(self.surface).__name__} has no path of its own: give start_point, a point "
                               "on the surface [m], or a path")
-        if self.frame == "desired" and self._path() is None:
+        if self.frame == "desired" and self.followed_path() is None:
             raise HybridError("frame='desired' follows the experiment's path: give a path (hybrid.CirclePath or "
                               "hybrid.LinePath), or use frame='actual'")
         check_timing(self)
@@ -165,11 +179,17 @@ class Experiment(RunSettings):
         surface itself."""
         return self.surface if self.robot.closed_form is None else self.surface.cross_section()
 
-    def _path(self) -> Path | None:
+    def followed_path(self) -> Path | None:
+        """The path the desired point follows: the one given, else the surface's through the start point
+        given, else the surface's own (None where there is none)."""
         if self.path is not None:
             return self.path
+        geometry = self._geometry()
+        if self.start_point is not None:
+            projected = geometry.project(self.start_point)
+            return geometry.path_through(self.start_point if projected is None else projected)
         try:
-            return self._geometry().path()
+            return geometry.path()
         except HybridError:
             return None
 
@@ -177,26 +197,26 @@ class Experiment(RunSettings):
         """The sensor tip's start point on the surface [m]: ``start_point`` (projected onto the surface),
         else the path's start."""
         if self.start_point is None:
-            return self._path().point_at(self._path().start)
+            return self.followed_path().point_at(self.followed_path().start)
         projected = self._geometry().project(self.start_point)
         return np.array(self.start_point) if projected is None else projected
 
     def desired_point(self, t: float) -> tuple[np.ndarray, np.ndarray]:
         """``r_d(t)`` [m] on the path, reached from the start at the desired speed, and ``r_d'(t)`` [m/s]."""
-        path = self._path()
+        path = self.followed_path()
         s = path.arc_of(self.start()) + self.speed_reference.integral(t)
         return path.point_at(s), self.speed_reference(t) * path.tangent_at(s)
 
     def initial_state(self) -> np.ndarray:
         """The run's start state ``x0 = (q, q', s, s')``: at rest, the sensor tip pressing at the start
-        point with ``F_d(0)`` (:meth:`~hybrid.experiments.settings.RunSettings.pressed_at`), the tool's
+        point with ``F_d(0)`` (:func:`~hybrid.experiments.settings.pressed`), the tool's
         z axis along ``-n`` when the task has rotational axes, the joints from inverse kinematics of
         the true arm. What a foreign loop starts from."""
         return _initial_state(self).copy()
 
     def check_path(self) -> None:
         """Refuse a run whose desired path leaves the arm's workspace (where the reach is known)."""
-        reach, path = self.robot.reach(), self._path()
+        reach, path = self.robot.reach(), self.followed_path()
         if reach is not None and path is not None:
             _check_path(reach, path, path.arc_of(self.start()), self.speed_reference, self.n_samples,
                         self.sample_time, self.duration)
@@ -230,7 +250,13 @@ class Experiment(RunSettings):
     @classmethod
     def _from_dict(cls, d: dict) -> Experiment:
         d = dict(d)
-        if d.pop("kind", None) != "experiment":
+        kind = d.pop("kind", None)
+        if kind is None and "arm" in d:  # a paper run saved before experiments were one type
+            d = _from_paper_settings(d)
+        elif kind == "tracing":
+            raise ValueError("a 3-D run saved before experiments were one type names its robot only by name: "
+                             "its arrays load with numpy.load")
+        elif kind != "experiment":
             raise ValueError("no 'kind': 'experiment' entry")
         parts = {"sensor": Sensor, "contact": Contact, "gains": Gains, "force_reference": Step,
                  "speed_reference": Step}
@@ -249,16 +275,16 @@ class Experiment(RunSettings):
 
 def _initial_state(exp: Experiment) -> np.ndarray:
     p0 = exp.start()
-    if exp.start_point is not None:
-        projected = exp._geometry().project(exp.start_point) is not None
-        # without a closed-form projection the plant's own record says how far the point is
-        gap = (float(np.linalg.norm(np.asarray(exp.start_point) - p0)) if projected
-               else abs(float(exp.plant().outputs(_probe(exp, p0))[0][exp.plant().record["outputs"].index(
-                   "penetration")])))
-        if not gap <= START_TOL:
-            raise HybridError(f"start_point {np.round(exp.start_point, 4).tolist()} m is {gap * 1000:.1f} mm off "
-                              f"the surface; give a point on it (within {START_TOL * 1000:g} mm), e.g. "
-                              f"{np.round(p0, 4).tolist()}")
+    given = np.asarray(exp.start_point if exp.start_point is not None else p0)  # a path's start is checked too
+    nearest = exp._geometry().project(given)
+    # without a closed-form projection the plant's own record says how far the point is
+    gap = (float(np.linalg.norm(given - nearest)) if nearest is not None
+           else abs(float(exp.plant().outputs(_probe(exp, p0))[0][exp.plant().record["outputs"].index("penetration")])))
+    if not gap <= START_TOL:
+        what = "start_point" if exp.start_point is not None else "the path's start"
+        hint = f", e.g. {np.round(nearest, 4).tolist()}" if nearest is not None else ""
+        raise HybridError(f"{what} {np.round(given, 4).tolist()} m is {gap * 1000:.1f} mm off the surface; give a "
+                          f"point on it (within {START_TOL * 1000:g} mm){hint}")
     q0 = None if exp.posture is None else exp.posture.q_rest
     return _pressed_start(exp.robot, exp._geometry(), tuple(p0.tolist()), exp.elbow, q0, exp.reference,
                           exp.singular_tol, exp.force_reference(0.0), exp.contact.stiffness, exp.sensor.stiffness)
@@ -310,6 +336,18 @@ def _check_path(reach, path, s0, speed_reference, n_samples, sample_time, durati
         raise HybridError(f"the desired path leaves the arm's workspace at t = {t[i]:.3f} s "
                           f"(point {np.round(points[i], 4).tolist()} m, {d[i]:.3f} m from the base, reach "
                           f"{lo:.3f}-{hi:.3f} m); shorten duration, lower the speed or move the surface")
+
+
+def _from_paper_settings(d: dict) -> dict:
+    """The settings of a paper run in the form saved before experiments were one type: the planar arm's
+    parameters as ``arm``, the surface as a 2-D circle or line."""
+    surface = dict(d.pop("surface"))
+    kind = surface.pop("kind")
+    lifted = Circle(**surface) if kind == "circle" else Plane(**surface)
+    d["robot"], d["surface"] = {"closed_form": d.pop("arm")}, surface_to_dict(lifted)
+    d["backend"] = "sympy" if d.get("backend") == "numpy" else d.get("backend", "sympy")
+    d.update(path=None, reference=[0.0, 0.0, 1.0], axes=None, posture=None)
+    return d
 
 
 # ------------------------------------------------------------- robots and surfaces as data

@@ -61,9 +61,7 @@ def panda_experiment(**overrides) -> Experiment:
     surface = overrides.get("surface", Cylinder(CYLINDER_POINT, (0.0, 0.0, 1.0), CYLINDER_RADIUS))
     defaults = {"robot": panda(), "surface": surface, "posture": Posture(REST_POSTURE),
                 "force_reference": Step(10.0, 15.0, 0.5), "speed_reference": Step(0.05, 0.1, 1.5), "duration": 3.0}
-    if isinstance(surface, Cylinder) and "path" not in overrides:
-        start = overrides.get("start_point")
-        if start is None:  # the default start, moved radially onto a cylinder of the caller's
-            start = defaults["start_point"] = tuple(surface.project(START_POINT).tolist())
-        defaults["path"] = surface.circle_at(start)
+    if isinstance(surface, Cylinder) and "start_point" not in overrides:
+        # the default start, moved radially onto a cylinder of the caller's (the path runs through it)
+        defaults["start_point"] = tuple(surface.project(START_POINT).tolist())
     return with_overrides(Experiment, "panda_experiment", overrides, defaults)

@@ -27,7 +27,9 @@ def paper_experiment(**overrides) -> Experiment:
     if arm is not None:
         if not isinstance(arm, Arm):
             raise HybridError(f"arm = {arm!r:.60}; give a hybrid.Arm (see hybrid.paper_arm())")
-        overrides.setdefault("robot", Robot.planar(arm))
+        if "robot" in overrides:
+            raise HybridError("give arm (the planar arm's parameters) or robot, not both")
+        overrides["robot"] = Robot.planar(arm)
     defaults = {"robot": Robot.planar(paper_arm()), "surface": Circle(center=(0.5, 0.0), radius=0.2),
                 "start_point": (0.3, 0.0), "force_reference": Step(10.0, 20.0, 0.4),
                 "speed_reference": Step(0.3, 0.6, 1.0), "duration": 2.0}

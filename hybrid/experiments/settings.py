@@ -34,12 +34,6 @@ class RunSettings:
         """The gains in force: without integral action ``KI2v = KIf = 0``."""
         return self.gains if self.integral else replace(self.gains, KI2v=0.0, KIf=0.0)
 
-    def pressed_at(self, point, normal) -> tuple[np.ndarray, np.ndarray]:
-        """The sensor tip ``s`` and the arm tip ``r`` at rest, the sensor tip on the surface at
-        ``point`` (unit ``normal``) pressing with ``F_d(0)``: it penetrates ``F/k_e`` (the surface in
-        equilibrium) and the arm tip sits ``F/K_s`` beyond it (the sensor spring in equilibrium)."""
-        return pressed(point, normal, self.force_reference(0.0), self.contact.stiffness, self.sensor.stiffness)
-
     def controller_settings(self) -> dict:
         """The :class:`~hybrid.Controller` keywords every experiment sets alike: the force loop on the
         normal, the speed reference on ``t1``, gains, sampling, options."""
@@ -56,8 +50,10 @@ class RunSettings:
 
 
 def pressed(point, normal, F0: float, k_e: float, K_s: float) -> tuple[np.ndarray, np.ndarray]:
-    """:meth:`RunSettings.pressed_at` from the numbers it reads: the force ``F0`` [N], the surface's
-    stiffness ``k_e`` and the sensor's ``K_s`` [N/m]."""
+    """The sensor tip ``s`` and the arm tip ``r`` at rest, the sensor tip on the surface at ``point``
+    (unit ``normal``) pressing with the force ``F0`` [N]: it penetrates ``F0/k_e`` (the surface's
+    stiffness ``k_e`` [N/m], in equilibrium) and the arm tip sits ``F0/K_s`` beyond it (the sensor
+    spring's ``K_s`` [N/m], in equilibrium)."""
     s = np.asarray(point, float) - normal * max(F0, 0.0) / k_e
     return s, s - normal * F0 / K_s
 

@@ -29,11 +29,11 @@ def tracing_experiment(**overrides) -> Experiment:
     """
     latitude = overrides.pop("latitude", None)
     surface = overrides.get("surface", Sphere(SPHERE_CENTER, SPHERE_RADIUS))
-    if latitude is not None or ("path" not in overrides and isinstance(surface, Sphere)):
+    if latitude is not None:  # else the path follows the surface (a sphere's: 60 degrees from the top)
         if not isinstance(surface, Sphere):
             raise HybridError(f"latitude = {latitude}: a {type(surface).__name__} has no latitude circle; give a "
                               "path or a start_point")
-        overrides.setdefault("path", surface.latitude_circle(60.0 if latitude is None else latitude))
+        overrides.setdefault("path", surface.latitude_circle(latitude))
     defaults = {"robot": ur5(), "surface": surface, "force_reference": Step(10.0, 20.0, 0.5),
                 "speed_reference": Step(0.15, 0.3, 1.5), "duration": 3.0}
     return with_overrides(Experiment, "tracing_experiment", overrides, defaults)

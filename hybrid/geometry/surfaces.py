@@ -83,6 +83,11 @@ class Surface:
         raise HybridError(f"a {type(self).__name__} has no path of its own: give the experiment a path "
                           "(hybrid.CirclePath or hybrid.LinePath) or a start_point")
 
+    def path_through(self, p):
+        """The path a run starting at the surface point ``p`` follows unless told (along ``t1`` for
+        ``e = z``); None where the surface has none."""
+        return None
+
 
 def _unit_normal(g: np.ndarray, where: str) -> np.ndarray:
     norm = float(np.linalg.norm(g))
@@ -103,8 +108,8 @@ def _positive(owner: str, name: str, value) -> None:
 class Section:
     """A surface's cross-section by the base xy-plane, where the paper's planar arm moves: its
     ``kind`` names the committed closed-form units (``"circle"``, ``"plane"``), ``as_array()`` their
-    ``surface`` array, ``normal_at``, ``path()`` and ``project`` in 2 coordinates, ``lift()`` the 3-D
-    surface it is the cross-section of. Built by :meth:`Surface.cross_section`."""
+    ``surface`` array, ``normal_at``, ``path()`` and ``project`` in 2 coordinates. Built by
+    :meth:`Surface.cross_section`."""
 
     dim = 2
 
@@ -122,9 +127,6 @@ class CircleSection(Section):
     def as_array(self) -> np.ndarray:
         return np.array([*self.center, self.radius])
 
-    def lift(self) -> Cylinder:
-        return Cylinder((*self.center, 0.0), (0.0, 0.0, 1.0), self.radius)
-
     def normal_at(self, p) -> np.ndarray:
         """Unit normal towards the robot at the circle's point nearest ``p``."""
         d = np.asarray(p, float)[:2] - self.center
@@ -136,6 +138,9 @@ class CircleSection(Section):
     def path(self) -> CirclePath:
         """The circle itself, counter-clockwise (the paper's path; arc length ``radius * angle``)."""
         return CirclePath(self.center, self.radius)
+
+    def path_through(self, p) -> CirclePath:
+        return self.path()
 
     def project(self, p) -> np.ndarray:
         """The circle's point nearest ``p`` (radially)."""
@@ -154,14 +159,14 @@ class LineSection(Section):
     def as_array(self) -> np.ndarray:
         return np.array([*self.point, *self.normal])
 
-    def lift(self) -> Plane:
-        return Plane((*self.point, 0.0), (*self.normal, 0.0))
-
     def normal_at(self, p) -> np.ndarray:
         return np.array(self.normal)
 
     def path(self) -> LinePath:
         return LinePath(self.point, (-self.normal[1], self.normal[0]))
+
+    def path_through(self, p) -> LinePath:
+        return self.path()
 
     def project(self, p) -> np.ndarray:
         """The line's point nearest ``p`` (along the normal)."""
@@ -224,6 +229,12 @@ class Plane(Surface):
         """Unit normal towards the robot (the same everywhere)."""
         return np.array(self.normal)
 
+    def path_through(self, p) -> LinePath:
+        """The line through ``p`` along ``t1 = z x n`` (base x on a horizontal plane)."""
+        n = np.asarray(self.normal)
+        d = np.array([-n[1], n[0], 0.0])
+        return LinePath(tuple(np.asarray(p, float)), tuple(d) if np.linalg.norm(d) > 1e-9 else (1.0, 0.0, 0.0))
+
     def project(self, p) -> np.ndarray:
         """The surface point nearest ``p`` (along the normal)."""
         p = np.asarray(p, float)
@@ -279,6 +290,15 @@ class Sphere(Surface):
         """The default path on a sphere: its latitude circle 60 degrees from the top."""
         return self.latitude_circle()
 
+    def path_through(self, p) -> CirclePath:
+        """The latitude circle through the point ``p`` of the sphere (about the vertical through its centre)."""
+        p, c = np.asarray(p, float), np.asarray(self.center, float)
+        rho = math.hypot(p[0] - c[0], p[1] - c[1])
+        if rho < 1e-9:
+            return None  # a pole: no circle through it
+        path = CirclePath((c[0], c[1], float(p[2])), rho)
+        return CirclePath(path.center, rho, path.arc_of(p))
+
 
 @dataclass(frozen=True)
 class Cylinder(Surface):
@@ -331,6 +351,10 @@ class Cylinder(Surface):
     def path(self) -> CirclePath:
         raise HybridError("a cylinder has no path of its own: give the experiment a path, e.g. "
                           "cylinder.circle_at(point)")
+
+    def path_through(self, p) -> CirclePath | None:
+        """The circle around a vertical cylinder through ``p`` (None for another cylinder)."""
+        return self.circle_at(p) if self.cross_section() is not None else None
 
     def cross_section(self) -> CircleSection | None:
         """The circle where a vertical cylinder cuts the base xy-plane (None for another cylinder)."""

@@ -43,7 +43,8 @@ class Robot:
 
     Build it with :meth:`from_urdf` or :meth:`planar`. Terms come from :func:`hybrid.arm_terms`.
     ``closed_form`` holds the parameters of the paper's planar arm when the robot is that arm
-    (:meth:`planar`): its terms, plant and inverse kinematics then also exist in closed form.
+    (:meth:`planar`): its terms, plant and inverse kinematics then also exist in closed form, and
+    its chain, links, viscosities and gravity are derived from it (one place for its numbers).
     """
 
     name: str
@@ -58,6 +59,12 @@ class Robot:
     source: tuple | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self):
+        if self.closed_form is not None:  # the planar arm's parameters are its closed form's, in one place
+            if not isinstance(self.closed_form, Arm):
+                raise HybridError(f"closed_form = {self.closed_form!r:.60}; give a hybrid.Arm or None")
+            chain, links, damping, gravity = _planar_parts(self.closed_form)
+            for name, value in (("chain", chain), ("links", links), ("damping", damping), ("gravity", gravity)):
+                object.__setattr__(self, name, value)
         object.__setattr__(self, "gravity", _gravity(self.gravity))
         if len(self.links) != self.chain.n or len(self.damping) != self.chain.n:
             raise HybridError(f"Robot needs one link and one damping per joint ({self.chain.n}), got "
@@ -139,7 +146,11 @@ class Robot:
                   damping: float | None = None) -> Robot:
         """This robot with the body moved by ``joint`` given new parameters (the others kept):
         ``mass`` [kg], ``com`` (3) [m] and ``inertia`` (3x3 about the centre of mass) [kg m^2],
-        both in the joint's frame, ``damping`` its viscosity."""
+        both in the joint's frame, ``damping`` its viscosity. The planar arm's parameters are its
+        ``closed_form``'s: change them there (``Robot.planar(dataclasses.replace(arm, m2=...))``)."""
+        if self.closed_form is not None:
+            raise HybridError("the planar arm's links are its closed form's parameters; change them there: "
+                              "Robot.planar(dataclasses.replace(arm, m2=...)), or sweep 'arm.m2'")
         if joint not in self.joint_names:
             raise HybridError(f"no joint named {joint!r}; the joints are {', '.join(self.joint_names)}")
         i = self.joint_names.index(joint)
@@ -221,17 +232,24 @@ class Robot:
 @lru_cache(maxsize=256)
 def _planar(cls, arm: Arm) -> Robot:
     """:meth:`Robot.planar`, once per arm (a robot is immutable: the runs of a sweep share it)."""
+    bounds = [np.full(2, v) for v in (-math.inf, math.inf, math.inf, math.inf)]
+    for b in bounds:
+        b.setflags(write=False)  # the robot is shared by every caller with an equal arm
+    chain, links, damping, gravity = _planar_parts(arm)
+    return cls("planar_arm", chain, links, damping, gravity, JointLimits(*bounds), arm)
+
+
+@lru_cache(maxsize=256)
+def _planar_parts(arm: Arm) -> tuple:
+    """The planar arm as a serial chain: revolute joints about base z, links along x, the tip ``L2``
+    beyond joint 2; its links' inertias, its viscosities and gravity (along ``-y``)."""
     eye = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
     joints = tuple(rb.Joint(f"joint{i + 1}", "revolute", eye, (L, 0.0, 0.0), (0.0, 0.0, 1.0))
                    for i, L in enumerate((0.0, arm.L1)))
     chain = rb.Chain(joints, eye, (arm.L2, 0.0, 0.0))
     links = tuple(LinkInertia(m, (d, 0.0, 0.0), ((inertia, 0.0, 0.0), (0.0, inertia, 0.0), (0.0, 0.0, inertia)))
                   for m, d, inertia in ((arm.m1, arm.d1, arm.I1), (arm.m2, arm.d2, arm.I2)))
-    bounds = [np.full(2, v) for v in (-math.inf, math.inf, math.inf, math.inf)]
-    for b in bounds:
-        b.setflags(write=False)  # the robot is shared by every caller with an equal arm
-    limits = JointLimits(*bounds)
-    return cls("planar_arm", chain, links, (arm.V1, arm.V2), (0.0, -arm.gravity, 0.0), limits, arm)
+    return chain, links, (arm.V1, arm.V2), (0.0, -arm.gravity, 0.0)
 
 
 def _vector(name: str, v, shape) -> np.ndarray:

@@ -1,11 +1,11 @@
 """Whole runs of the paper's and the 3-D experiment in compiled C, many at once as SIMD lanes.
 
 :func:`prepare` turns an experiment into one row of numbers for the generated closed loop
-(:mod:`codegen.closed_loop`), or None when part of its controller runs in Python (references
-given as code, a desired path) or it asks for the NumPy reference; :func:`run` runs prepared
-experiments, grouped by the loop they share, one native call per group. ``simulate`` and
-``sweep`` use it; the Python runner (:func:`hybrid.simulation.run`) is the reference it is tested
-against and the path that explains a run that stopped.
+(:mod:`hybrid.codegen.closed_loop`), or None when part of its controller runs in Python
+(references given as code, a desired path); :func:`run` runs prepared experiments, grouped by
+the loop they share, one native call per group. ``simulate`` and ``sweep`` use it; the Python
+runner (:func:`hybrid.simulation.runner.run`) is the reference it is tested against and the path
+that explains a run that stopped.
 """
 
 from __future__ import annotations

@@ -111,7 +111,8 @@ class SimulationResult:
                 settings = json.loads(str(z["experiment"]))
                 experiment = Experiment.from_dict(settings)
                 metrics = json.loads(str(z["metrics"]))
-                record = _record(json.loads(str(z["record"])))
+                # a file from before the record was saved holds a paper run: its record is the paper plant's
+                record = _record(json.loads(str(z["record"]))) if "record" in z.files else planar_record()
             n = len(arrays["t"])
             shapes = {"t": (n,), "state": (n, len(record["state"])), "tau": (n, record["nq"]),
                       "outputs": (n, len(record["outputs"])), "force_reference": (n,), "speed_reference": (n,)}
