@@ -176,7 +176,8 @@ class DecouplingLaw:
         held = self._held(tau0)
         batched = is_batch(q)
         if held and batched and tau0 is None:
-            held = (np.zeros((len(np.asarray(q)), self.robot.n)),)
+            # a view: the batch checks its size before copying it
+            held = (np.broadcast_to(np.zeros(self.robot.n), (len(np.asarray(q)), self.robot.n)),)
         out = {k: v for k, v in (out or {}).items() if v is not None}
         if not batched:
             if out:
