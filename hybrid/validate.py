@@ -127,9 +127,15 @@ def machine_memory() -> int:
         return ASSUMED_MEMORY
 
 
+def count_text(n: int) -> str:
+    """A whole number as text: in full, or its power of ten when astronomical (a float would
+    overflow, and Python refuses to print integers of thousands of digits)."""
+    return f"{n:,}" if n < 10**15 else f"about 10^{int(math.log10(n))}"
+
+
 def _gib(nbytes: int) -> str:
-    gib = nbytes / 2**30
-    return f"{gib:.1f} GiB" if gib < 1e6 else f"{gib:.3g} GiB"
+    gib = nbytes // 2**30
+    return count_text(gib) + " GiB" if gib >= 10**6 else f"{nbytes / 2**30:.1f} GiB"
 
 
 def check_size(what: str, nbytes: int, fix: str, fraction: float | None = None) -> None:
