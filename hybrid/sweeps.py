@@ -508,7 +508,7 @@ def _prepare(out: Path, description: dict, force: bool):
         same = spec.is_file() and _read_text(spec) == text
         if not same:
             theirs = sorted({p for pattern in OUTPUTS for p in out.glob(pattern)}
-                            | set((out / "parts").glob("*.parquet")))
+                            | {p for p in (out / "parts").glob("*.parquet") if not p.name.startswith(".")})
             if theirs and not force:
                 why = (("its sweep.json differs" if _is_description(spec) else "its sweep.json is not a sweep's")
                        if spec.exists() else f"it has {_listing(out, theirs)} but no sweep.json")
@@ -578,7 +578,7 @@ def _read_parts(out: Path, base, todo_all: list[tuple[int, dict]], force: bool) 
 
     known = set(metric_names(base))
     rows: dict[int, dict] = {}
-    for part in sorted((out / "parts").glob("*.parquet")):
+    for part in sorted(p for p in (out / "parts").glob("*.parquet") if not p.name.startswith(".")):
         try:
             frame = pd.read_parquet(part)
         except Exception as exc:  # noqa: BLE001 - pyarrow's errors are many; a part written by us reads
