@@ -19,6 +19,7 @@ import importlib
 import json
 import math
 import os
+import re
 import sys
 import threading
 import time
@@ -32,6 +33,7 @@ from hybrid import files
 from hybrid.errors import HybridError
 from hybrid.experiments.settings import RunSettings, setting_aliases
 from hybrid.simulation import closed_loop
+from hybrid.simulation.metrics import metrics
 from hybrid.simulation.runner import SimulationError, simulate
 from hybrid.validate import check_size, count_text, product
 
@@ -563,8 +565,6 @@ def _lock(out: Path):
 
 def metric_names(base) -> list[str]:
     """The names of the metrics a run of ``base`` reports (by the metrics' own definition)."""
-    from hybrid.simulation.metrics import metrics
-
     t = np.linspace(0.0, 1.0, 3)
     nq = base.robot.n if hasattr(base, "robot") else 2
     return list(metrics(t, t, t, t, t, penetration=t, contact_force=t, tau=np.zeros((3, nq))))
@@ -598,8 +598,6 @@ def _read_parts(out: Path, base, todo_all: list[tuple[int, dict]], force: bool) 
 
 def _part_problem(name: str, frame, todo_all: list[tuple[int, dict]], metrics: set[str]) -> str | None:
     """Why the table ``frame`` of the part file ``name`` is not one this sweep wrote, or None."""
-    import re
-
     from pandas.api import types
 
     match = re.fullmatch(r"part-(\d{8,})-(\d{8,})\.parquet", name)
