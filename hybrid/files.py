@@ -9,6 +9,7 @@ the path and what to do.
 from __future__ import annotations
 
 import contextlib
+import fnmatch
 import os
 import tempfile
 from collections.abc import Callable, Iterator
@@ -32,6 +33,28 @@ def temporary(path: Path) -> tuple[int, str]:
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=path.suffix)
     os.fchmod(fd, 0o666 & ~_UMASK)
     return fd, tmp
+
+
+def leftovers(folder: Path, patterns) -> list[Path]:
+    """The temporary files :func:`temporary` made in ``folder`` for targets whose names match one of
+    ``patterns`` (``fnmatch`` patterns: ``"results.parquet"``, ``"part-*.parquet"``) and that nothing
+    renamed or removed: what a killed process left. The folder-probe files too."""
+    found = []
+    for path in Path(folder).glob(".*"):
+        name = path.name[1:]
+        if fnmatch.fnmatchcase(path.name, ".hybrid-probe-????????"):
+            found.append(path)
+            continue
+        for pattern in patterns:
+            suffix = Path(pattern).suffix
+            stem = name[:len(name) - len(suffix)] if suffix and name.endswith(suffix) else None
+            target, _, random = (stem or "").rpartition(".")
+            # mkstemp's random part: 8 characters of [a-z0-9_]
+            if target and len(random) == 8 and fnmatch.fnmatchcase(target, pattern) \
+                    and all(c.isdigit() or "a" <= c <= "z" or c == "_" for c in random):
+                found.append(path)
+                break
+    return [p for p in found if p.is_file()]
 
 
 def _why(exc: OSError) -> str:

@@ -19,10 +19,11 @@ import importlib
 import json
 import math
 import os
+import re
 import sys
 import threading
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -32,7 +33,9 @@ from hybrid import files
 from hybrid.errors import HybridError
 from hybrid.experiments.settings import RunSettings, setting_aliases
 from hybrid.simulation import closed_loop
+from hybrid.simulation.metrics import metrics
 from hybrid.simulation.runner import SimulationError, simulate
+from hybrid.validate import check_size, count_text, product
 
 ENGINES = ("local", "dask")
 
@@ -42,8 +45,12 @@ ENGINES = ("local", "dask")
 
 def _numbers(owner, **values) -> None:
     for name, v in values.items():
-        if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) or not math.isfinite(v):
-            raise HybridError(f"{owner}: {name} = {v!r:.40} must be a finite number")
+        try:
+            ok = not isinstance(v, bool) and isinstance(v, (int, float, np.integer, np.floating)) and math.isfinite(v)
+        except OverflowError:  # an int beyond float range
+            ok = False
+        if not ok:
+            raise HybridError(f"{owner}: {name} = {_shown(v)} must be a finite number (within float range)")
 
 
 @dataclass(frozen=True)
@@ -97,42 +104,98 @@ class Normal:
 DISTRIBUTIONS = {"uniform": Uniform, "loguniform": LogUniform, "normal": Normal}
 
 
+#: memory a sweep keeps per run (its point, its row of metrics, its row of the table), estimated [bytes]
+RUN_BYTES = 2048
+#: and per swept parameter of each run [bytes]
+PARAMETER_BYTES = 256
+
+
+def check_runs(runs: int, n_parameters: int, what: str) -> None:
+    """Refuse, before building them, more runs than the sweep's table can hold in memory."""
+    check_size(f"{what} {count_text(runs)} runs, whose table needs",
+               runs * (RUN_BYTES + PARAMETER_BYTES * n_parameters), "sweep fewer values or samples")
+
+
+def check_mapping(parameters) -> None:
+    """``parameters`` is a non-empty mapping whose keys are setting names (text)."""
+    usage = "{setting name: a list of values or a distribution}, e.g. {'model_error': [0.0, 0.1]}"
+    if not isinstance(parameters, Mapping):
+        pairs = isinstance(parameters, (list, tuple)) and parameters and all(
+            isinstance(p, (list, tuple)) and len(p) == 2 for p in parameters)
+        got = "a list of pairs; make it a dict (dict(pairs))" if pairs else f"{type(parameters).__name__}"
+        raise HybridError(f"parameters must be a mapping {usage}, got {got}")
+    if not parameters:
+        raise HybridError(f"parameters is empty: give at least one setting to sweep, {usage}")
+    for name in parameters:
+        if not isinstance(name, str) or not name:
+            raise HybridError(f"parameter names are setting names (text), got {_shown(name, 60)}")
+
+
+def parameters_mapping(parameters) -> dict:
+    """``parameters`` checked to be ``{setting name: values or distribution}`` (values: a list, tuple,
+    range or 1-D array, taken as a list), before anything reads it."""
+    check_mapping(parameters)
+    checked = {}
+    for name, values in parameters.items():
+        if isinstance(values, np.ndarray) and values.ndim == 1:
+            values = values.tolist()
+        elif isinstance(values, range):
+            values = list(values)
+        if isinstance(values, (Uniform, LogUniform, Normal)):
+            checked[name] = values
+            continue
+        if not isinstance(values, (list, tuple)):
+            raise HybridError(f"parameter {name!r}: give a list of values or a distribution (hybrid.sweeps.Uniform, "
+                              f"LogUniform, Normal), got {type(values).__name__} {_shown(values, 60)}")
+        if len(values) == 0:
+            raise HybridError(f"parameter {name!r} has no values; give at least one")
+        _check_values(name, values)
+        checked[name] = list(values)
+    return checked
+
+
+def _shown(value, width: int = 40) -> str:
+    """``repr(value)`` cut to ``width`` characters; a number too long to print by its size."""
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**15:
+        return ("-" if value < 0 else "") + count_text(abs(value))
+    try:
+        return repr(value)[:width]
+    except Exception:  # noqa: BLE001 - a user's object whose repr fails is still named by its type
+        return f"a {type(value).__name__}"
+
+
+def _whole(name: str, value, low: int) -> int:
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)) or value < low:
+        raise HybridError(f"{name} = {_shown(value)}; give a whole number >= {low}")
+    return int(value)
+
+
 def points(parameters: Mapping, samples: int | None = None, seed: int = 0) -> list[dict]:
     """The sweep's points: the full grid of the value lists, or ``samples`` random draws (a list is
-    then drawn from uniformly; ``seed`` makes the draws repeatable)."""
-    if not isinstance(parameters, Mapping) or not parameters:
-        raise HybridError("parameters must be a non-empty mapping {setting name: values or distribution}")
+    then drawn from uniformly; ``seed`` makes the draws repeatable). How many is checked against the
+    machine's memory before any is made."""
+    parameters = parameters_mapping(parameters)
     names = list(parameters)
-    for name, values in parameters.items():
-        if not isinstance(name, str):
-            raise HybridError(f"parameter names are setting names (text), got {name!r}")
-        is_list = isinstance(values, Sequence) and not isinstance(values, str)
-        if not (is_list or hasattr(values, "sample")):
-            raise HybridError(f"parameter {name!r}: give a list of values or a distribution (hybrid.sweeps.Uniform, "
-                              f"LogUniform, Normal), got {values!r:.60}")
-        if is_list and len(values) == 0:
-            raise HybridError(f"parameter {name!r} has no values")
-        if is_list:
-            _check_values(name, values)
+    seed = _whole("seed", seed, 0)
     if samples is None:
         lists = [parameters[n] for n in names]
-        if any(not isinstance(v, Sequence) or isinstance(v, str) for v in lists):
+        if any(not isinstance(v, list) for v in lists):
             raise HybridError("a distribution needs samples=N (the number of random draws)")
+        sizes = [len(v) for v in lists]
+        check_runs(product(sizes), len(names), f"the grid of {' x '.join(map(str, sizes))} values is")
         grid = np.array(np.meshgrid(*[np.arange(len(v)) for v in lists], indexing="ij")).reshape(len(names), -1).T
         return [{n: _plain(lists[k][i]) for k, (n, i) in enumerate(zip(names, row))} for row in grid]
-    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 1:
-        raise HybridError(f"samples = {samples!r}; give a whole number of runs >= 1")
-    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
-        raise HybridError(f"seed = {seed!r}; give a whole number >= 0")
+    samples = _whole("samples", samples, 1)
+    check_runs(samples, len(names), "samples =")
     rng = np.random.default_rng(seed)
     columns = {}
     for n in names:
         values = parameters[n]
-        if hasattr(values, "sample"):
-            columns[n] = values.sample(rng, int(samples))
+        if isinstance(values, list):
+            columns[n] = [values[i] for i in rng.integers(0, len(values), samples)]
         else:
-            columns[n] = [values[i] for i in rng.integers(0, len(values), int(samples))]
-    return [{n: _plain(columns[n][i]) for n in names} for i in range(int(samples))]
+            columns[n] = values.sample(rng, samples)
+    return [{n: _plain(columns[n][i]) for n in names} for i in range(samples)]
 
 
 def _check_values(name: str, values) -> None:
@@ -142,11 +205,14 @@ def _check_values(name: str, values) -> None:
         if isinstance(v, (bool, np.bool_)):
             kinds.add("bool")
         elif isinstance(v, (int, float, np.integer, np.floating)):
+            if isinstance(v, int) and not -2**63 <= v < 2**63:  # no column of the table holds it
+                raise HybridError(f"parameter {name!r}: {_shown(v)} is beyond a table's whole numbers "
+                                  "(64 bits); give it as a float")
             kinds.add("number")
         elif isinstance(v, str):
             kinds.add("text")
         else:
-            raise HybridError(f"parameter {name!r}: {v!r:.50} is not a number, text or boolean; sweep a "
+            raise HybridError(f"parameter {name!r}: {_shown(v, 50)} is not a number, text or boolean; sweep a "
                               "setting's numbers by a dotted name, e.g. 'force_reference.after'")
     if len(kinds) > 1:
         raise HybridError(f"parameter {name!r} mixes {' and '.join(sorted(kinds))} values; give one kind")
@@ -162,12 +228,28 @@ def _plain(value):
 # --------------------------------------------------------------------- settings
 
 
+def check_base(base) -> None:
+    """Refuse a base that is not an experiment, saying what to give."""
+    if isinstance(base, RunSettings):
+        return
+    usage = "base must be an experiment, e.g. hybrid.paper_experiment() or hybrid.tracing_experiment()"
+    if isinstance(base, Mapping):
+        raise HybridError(f"{usage}, got a mapping; the experiment comes first: sweep(base, parameters)")
+    if callable(base) and not isinstance(base, type):
+        raise HybridError(f"{usage}, got the function {getattr(base, '__name__', '?')}; call it: "
+                          f"{getattr(base, '__name__', 'paper_experiment')}()")
+    got = f"the class {base.__name__}; make one" if isinstance(base, type) else type(base).__name__
+    raise HybridError(f"{usage}, got {got}")
+
+
 def check_names(base, names) -> None:
     """Refuse, before any run, a setting name the experiment does not have (naming the known ones), and
     two names of which one sets a part of the other (``contact`` and ``contact.friction``)."""
-    if not isinstance(base, RunSettings):
-        raise HybridError(f"base must be an experiment (hybrid.paper_experiment() or hybrid.tracing_experiment()), "
-                          f"got {type(base).__name__}")
+    check_base(base)
+    names = list(names)
+    for name in names:
+        if not isinstance(name, str):
+            raise HybridError(f"parameter names are setting names (text), got {type(name).__name__} {_shown(name, 60)}")
     paths = {name: setting_aliases().get(name, name) for name in names}
     for a, pa in paths.items():
         for b, pb in paths.items():
@@ -187,6 +269,11 @@ def check_names(base, names) -> None:
 def apply(base, settings: Mapping):
     """``base`` with ``settings`` (field names, gain names, ``F_d``/``v_d``, or dotted paths) applied;
     the experiment checks the result as it would any other."""
+    check_base(base)
+    if not isinstance(settings, Mapping):
+        raise HybridError(f"settings must be a mapping {{setting name: value}}, e.g. {{'model_error': 0.1}}, got "
+                          f"{type(settings).__name__}")
+    check_names(base, settings)
     aliases = setting_aliases()
     nested: dict = {}
     for name, value in settings.items():
@@ -298,23 +385,88 @@ def _load_loops(base, chunks) -> None:
             pass
 
 
-def _dask(base, chunks, client, workers: int):
-    """Chunks as Dask tasks (retried when a worker dies), as they finish."""
+#: how long [s] a sweep waits by default to reach a Dask scheduler (``connect_timeout``)
+CONNECT_TIMEOUT = 5.0
+#: the schemes of a scheduler's address a sweep connects to
+SCHEMES = ("tcp", "tls", "ws", "wss")
+
+
+def check_client(client, engine: str) -> None:
+    """``client`` as the documented type, before anything connects: None, a scheduler's address
+    (text), or a ``dask.distributed.Client``; and only for ``engine="dask"``."""
+    if client is None:
+        return
+    if engine != "dask":
+        raise HybridError(f"client is for engine='dask'; leave it out for engine={engine!r}, or pass engine='dask'")
+    if isinstance(client, str):
+        _check_address(client)
+        return
     try:
-        from dask.distributed import Client, LocalCluster, as_completed
+        from dask.distributed import Client
     except ImportError:
         raise HybridError("engine='dask' needs dask.distributed: pip install 'dask[distributed]'") from None
-    own = client is None
-    if own:
-        client = Client(LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                                     dashboard_address=None))
-    elif isinstance(client, str):
-        own, client = True, Client(client)
+    if not isinstance(client, Client):
+        raise HybridError(f"client must be a dask.distributed.Client or a scheduler's address such as "
+                          f"'tcp://127.0.0.1:8786', got {type(client).__name__}")
+    if client.status != "running":
+        raise HybridError(f"the Dask client is {client.status}; give a connected one, or its scheduler's address")
+
+
+def _check_address(address: str) -> None:
+    """A scheduler's address ``[scheme://]host:port``: refused here, in words, rather than by Dask."""
+    usage = f"give [scheme://]host:port with scheme {', '.join(SCHEMES)}, e.g. 'tcp://127.0.0.1:8786'"
+    scheme, sep, rest = address.strip().rpartition("://")
+    host, _, port = rest.rpartition(":")
+    if (sep and scheme not in SCHEMES) or not host or not port.isdigit() or not 0 < int(port) < 65536 \
+            or any(c.isspace() for c in rest):
+        raise HybridError(f"the Dask scheduler address {address!r:.80} is not one; {usage}")
+
+
+def _connect(client, workers: int, timeout: float):
+    """``(client, own)``: the given client, a new one to the address given, or one of a new local
+    cluster; every failure a HybridError saying how long it waited."""
     try:
-        base_future = client.scatter(base, broadcast=True)
-        futures = client.map(run_points, [base_future] * len(chunks), chunks, pure=False, retries=3)
+        from dask.distributed import Client, LocalCluster
+    except ImportError:
+        raise HybridError("engine='dask' needs dask.distributed: pip install 'dask[distributed]'") from None
+    if client is not None and not isinstance(client, str):
+        return client, False
+    try:
+        if client is None:
+            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None)
+            try:
+                return Client(cluster, timeout=timeout), True
+            except BaseException:
+                cluster.close()
+                raise
+        return Client(client, timeout=timeout), True
+    except HybridError:
+        raise
+    except Exception as exc:  # noqa: BLE001 - Dask raises OSError, ValueError, TimeoutError and its own
+        where = "a local Dask cluster" if client is None else f"the Dask scheduler at {client}"
+        raise HybridError(f"could not reach {where} within {timeout:g} s (connect_timeout); check that it runs "
+                          f"and the address, or raise connect_timeout\n  {type(exc).__name__}: {exc}") from None
+
+
+def _dask(base, chunks, client, workers: int, timeout: float = CONNECT_TIMEOUT):
+    """Chunks as Dask tasks (retried when a worker dies), as they finish."""
+    from dask.distributed import as_completed
+
+    client, own = _connect(client, workers, timeout)
+    try:
+        try:
+            base_future = client.scatter(base, broadcast=True, timeout=timeout)
+            futures = client.map(run_points, [base_future] * len(chunks), chunks, pure=False, retries=3)
+        except Exception as exc:  # noqa: BLE001 - a lost or refusing scheduler, in Dask's words below
+            raise HybridError(f"the Dask scheduler did not take the sweep within {timeout:g} s (connect_timeout); "
+                              f"check the cluster\n  {type(exc).__name__}: {exc}") from None
         for f in as_completed(futures):
-            yield f.result()
+            try:
+                rows = f.result()
+            except Exception as exc:  # noqa: BLE001 - run_points makes every run a row: this is the cluster's
+                raise HybridError(f"a Dask task of the sweep failed ({type(exc).__name__}); finished chunks are "
+                                  f"kept with out=, run it again to resume\n  {exc}") from None
+            yield rows
     finally:
         if own:
             cluster = client.cluster
@@ -338,31 +490,71 @@ def _describe(base, parameters: Mapping, samples, seed) -> dict:
             "parameters": [[k, values(v)] for k, v in parameters.items()], "samples": samples, "seed": seed}
 
 
-def _prepare(out: Path, description: dict, force: bool) -> None:
-    """Create ``out`` or check that it holds this same sweep (parts of another are refused, or cleared
-    with ``force``)."""
+#: what a sweep writes into its folder besides ``parts/`` (``heatmap_*``: the command's figures)
+OUTPUTS = ("sweep.json", "results.parquet", "results.csv", "heatmap_*.png")
+PART = "part-*.parquet"
+STATUSES = ("ok", "failed", "invalid", "error")
+
+
+def _prepare(out: Path, description: dict, force: bool):
+    """Create ``out``, lock it, remove what an interrupted write left there, and check that it holds this
+    same sweep or nothing of ours: files of our names without this sweep's ``sweep.json`` are another's
+    (the user's, or another sweep's) and are refused, or cleared with ``force``. Returns the lock."""
     files.writable_folder(out, "sweep folder")
-    spec = out / "sweep.json"
-    text = json.dumps(description, indent=2, sort_keys=True, default=str) + "\n"
-    parts = list((out / "parts").glob("*.parquet"))
-    same = spec.exists() and spec.read_text() == text
-    if not same and (spec.exists() or parts):
-        if not force:
-            why = "its sweep.json differs" if spec.exists() else "it has results but no sweep.json"
-            raise HybridError(f"{out} holds a different sweep ({why}); choose another folder, or pass force=True "
-                              "(--force) to start this one there afresh")
-        for part in parts:
-            part.unlink()
-    if not same:
-        files.write_text(spec, text, overwrite=True)
-    (out / "parts").mkdir(exist_ok=True)
+    lock = _lock(out)  # before anything is removed: a running sweep's temporaries are its own
+    try:
+        for left in files.leftovers(out, OUTPUTS) + files.leftovers(out / "parts", (PART,)):
+            left.unlink(missing_ok=True)
+        spec = out / "sweep.json"
+        text = json.dumps(description, indent=2, sort_keys=True, default=str) + "\n"
+        same = spec.is_file() and _read_text(spec) == text
+        if not same:
+            theirs = sorted({p for pattern in OUTPUTS for p in out.glob(pattern)}
+                            | {p for p in (out / "parts").glob("*.parquet") if not p.name.startswith(".")})
+            if theirs and not force:
+                why = (("its sweep.json differs" if _is_description(spec) else "its sweep.json is not a sweep's")
+                       if spec.exists() else f"it has {_listing(out, theirs)} but no sweep.json")
+                raise HybridError(f"{out} holds a different sweep ({why}); choose another folder, or pass force=True "
+                                  "(--force) to start this one there afresh (replacing them)")
+            for path in theirs:
+                if path.is_file() and path != spec:
+                    path.unlink()
+            files.write_text(spec, text, overwrite=True)
+        (out / "parts").mkdir(exist_ok=True)
+    except BaseException:
+        lock.close()
+        raise
+    return lock
+
+
+def _read_text(path: Path) -> str | None:
+    try:
+        return path.read_text()
+    except (OSError, UnicodeDecodeError):
+        return None
+
+
+def _is_description(spec: Path) -> bool:
+    """Whether ``spec`` reads as a sweep's description (written by a sweep, maybe another one)."""
+    try:
+        return isinstance(json.loads(_read_text(spec) or ""), dict) and "sweep" in json.loads(spec.read_text())
+    except (ValueError, OSError):
+        return False
+
+
+def _listing(out: Path, paths: list[Path]) -> str:
+    shown = ", ".join(str(p.relative_to(out)) for p in paths[:3])
+    return shown + (f" and {len(paths) - 3} more" if len(paths) > 3 else "")
 
 
 def _lock(out: Path):
     """An exclusive lock on ``out`` for the sweep's lifetime: a second sweep into it is refused."""
     import fcntl
 
-    handle = open(out / ".lock", "w")
+    try:
+        handle = open(out / ".lock", "w")
+    except OSError as exc:
+        raise HybridError(f"cannot lock the sweep folder {out} ({exc.strerror}); choose another folder") from None
     try:
         fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
     except OSError:
@@ -371,20 +563,82 @@ def _lock(out: Path):
     return handle
 
 
-def _read_parts(out: Path) -> list[dict]:
-    """The rows of the parts already written, each run once."""
+def metric_names(base) -> list[str]:
+    """The names of the metrics a run of ``base`` reports (by the metrics' own definition)."""
+    t = np.linspace(0.0, 1.0, 3)
+    nq = base.robot.n if hasattr(base, "robot") else 2
+    return list(metrics(t, t, t, t, t, penetration=t, contact_force=t, tau=np.zeros((3, nq))))
+
+
+def _read_parts(out: Path, base, todo_all: list[tuple[int, dict]], force: bool) -> list[dict]:
+    """The rows of the parts already written, each run once, each part checked to be this sweep's:
+    its name, columns and their types, and its runs' numbers and parameters. Another's is refused,
+    or with ``force`` removed (its runs are run again)."""
     import pandas as pd
 
+    known = set(metric_names(base))
     rows: dict[int, dict] = {}
-    for part in sorted((out / "parts").glob("part-*.parquet")):
+    for part in sorted(p for p in (out / "parts").glob("*.parquet") if not p.name.startswith(".")):
         try:
             frame = pd.read_parquet(part)
-        except Exception:  # noqa: BLE001 - a part that does not read is redone (written atomically, it should not)
+        except Exception as exc:  # noqa: BLE001 - pyarrow's errors are many; a part written by us reads
+            problem = f"it does not read as Parquet ({type(exc).__name__})"
+        else:
+            problem = _part_problem(part.name, frame, todo_all, known)
+        if problem is not None:
+            if not force:
+                raise HybridError(f"{part} is not this sweep's: {problem}; remove it, or pass force=True (--force) "
+                                  "to run its runs again")
             part.unlink()
             continue
         for row in frame.to_dict("records"):
             rows.setdefault(int(row["run"]), row)
     return list(rows.values())
+
+
+def _part_problem(name: str, frame, todo_all: list[tuple[int, dict]], metrics: set[str]) -> str | None:
+    """Why the table ``frame`` of the part file ``name`` is not one this sweep wrote, or None."""
+    from pandas.api import types
+
+    match = re.fullmatch(r"part-(\d{8,})-(\d{8,})\.parquet", name)
+    if match is None:
+        return "its name is not part-FIRST-LAST.parquet"
+    names = list(todo_all[0][1]) if todo_all else []
+    missing = [c for c in ("run", *names, "status", "error") if c not in frame.columns]
+    if missing:
+        return f"it has no column {', '.join(map(str, missing))}"
+    foreign = [c for c in frame.columns if c not in ("run", *names, "status", "error") and c not in metrics]
+    if foreign:
+        return f"it has column {', '.join(map(str, foreign[:3]))}, which is not a parameter or metric of this sweep"
+    if frame.empty or not types.is_integer_dtype(frame["run"]) or frame["run"].duplicated().any():
+        return "its run column is not the run numbers of a chunk"
+    runs = frame["run"].tolist()
+    first, last = int(match.group(1)), int(match.group(2))
+    if runs[0] != first or runs[-1] != last or runs != sorted(runs) or last >= len(todo_all):
+        return f"its runs are not {first} to {last} of this sweep's {len(todo_all)}"
+    if not frame["status"].isin(STATUSES).all() or not frame["error"].map(lambda e: isinstance(e, str)).all():
+        return "its status and error columns are not a sweep's"
+    bad = [c for c in frame.columns if c in metrics and not (types.is_numeric_dtype(frame[c])
+                                                            and not types.is_bool_dtype(frame[c]))]
+    if bad:
+        return f"its column {bad[0]} is not numbers"
+    for row in frame[["run", *names]].to_dict("records"):
+        point = todo_all[row["run"]][1]
+        for n in names:
+            if not _same(row[n], point[n]):
+                return f"its run {row['run']} has {n} = {row[n]!r:.30}, this sweep's has {point[n]!r:.30}"
+    return None
+
+
+def _same(got, want) -> bool:
+    """A parameter's value read back equals the sweep's: same kind, same value (NaN equal to NaN)."""
+    if isinstance(want, bool):
+        return isinstance(got, (bool, np.bool_)) and bool(got) == want
+    if isinstance(want, str):
+        return isinstance(got, str) and got == want
+    if isinstance(got, (bool, np.bool_, str)) or not isinstance(got, (int, float, np.integer, np.floating)):
+        return False
+    return got == want or (math.isnan(got) and math.isnan(want))
 
 
 def _write_part(out: Path, rows: list[dict]) -> None:
@@ -412,55 +666,79 @@ def _table(rows: list[dict], names: list[str]):
 
 def sweep(base, parameters: Mapping, *, samples: int | None = None, seed: int = 0, engine: str = "local",
           client=None, out=None, workers: int | None = None, chunk_size: int | None = None, csv: bool = False,
-          force: bool = False, progress: bool = False):
+          force: bool = False, progress: bool = False, connect_timeout: float = CONNECT_TIMEOUT):
     """Run ``base`` (an experiment) at every point of ``parameters``; one row of metrics per run.
 
     Parameters
     ----------
     base : :class:`hybrid.Experiment` or :class:`hybrid.TracingExperiment`.
-    parameters : ``{setting name: values}``: a list (a full grid over the lists) or a distribution
-        (:class:`Uniform`, :class:`LogUniform`, :class:`Normal`, drawn ``samples`` times). Names are
-        the experiment's fields, the gains (``KPf``), ``F_d``/``v_d``, or dotted paths
+    parameters : ``{setting name: values}`` (a mapping): a list (a full grid over the lists) or a
+        distribution (:class:`Uniform`, :class:`LogUniform`, :class:`Normal`, drawn ``samples`` times).
+        Names are the experiment's fields, the gains (``KPf``), ``F_d``/``v_d``, or dotted paths
         (``"contact.friction"``, ``"gains.KPf"``, ``"force_reference.after"``).
     samples, seed : random draws instead of the grid, repeatable by ``seed``.
     engine : ``"local"`` (processes on this machine; ``workers``, default every core) or ``"dask"``
         (``client``: a ``dask.distributed.Client`` or a scheduler address; default a ``LocalCluster``).
     out : a folder for incremental results and resuming (see the module docstring); with ``csv`` also
-        ``results.csv``. ``force`` starts a different sweep afresh in a folder that holds one.
+        ``results.csv``. ``force`` starts a different sweep afresh in a folder that holds one, or
+        files of its names without its ``sweep.json``, and runs again the parts that are not its own.
+    connect_timeout : how long [s] to wait for a Dask scheduler (default :data:`CONNECT_TIMEOUT`).
+
+    The number of runs is checked against the machine's memory before any is made.
     """
-    if engine not in ENGINES:
-        raise HybridError(f"engine = {engine!r}; choose one of {', '.join(ENGINES)}")
+    if not isinstance(engine, str) or engine not in ENGINES:
+        raise HybridError(f"engine = {_shown(engine)}; choose one of {', '.join(ENGINES)}")
     for name, value in (("workers", workers), ("chunk_size", chunk_size)):
-        if value is not None and (isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1):
-            raise HybridError(f"{name} = {value!r}; give a whole number >= 1 (or None for the default)")
+        if value is not None:
+            _whole(name, value, 1)
+    for name, value in (("csv", csv), ("force", force), ("progress", progress)):
+        if not isinstance(value, (bool, np.bool_)):
+            raise HybridError(f"{name} = {_shown(value)}; give True or False")
+    if isinstance(connect_timeout, (bool, np.bool_)) or not isinstance(connect_timeout, (int, float, np.integer,
+                                                                                         np.floating)) \
+            or not 0 < connect_timeout <= 3600:
+        raise HybridError(f"connect_timeout = {_shown(connect_timeout)}; give a number of seconds in (0, 3600]")
+    check_base(base)
+    check_mapping(parameters)
     check_names(base, parameters)
+    parameters = parameters_mapping(parameters)
+    check_client(client, engine)
+    if workers is not None:
+        check_size(f"workers = {count_text(workers)} processes of about {WORKER_BYTES // 2**20} MiB each need",
+                   int(workers) * WORKER_BYTES, "give fewer workers (the default is one per core)")
     todo_all = list(enumerate(points(parameters, samples, seed)))
     names = list(parameters)
     done_rows: list[dict] = []
     lock = None
     if out is not None:
         out = files.output_path(out)
-        _prepare(out, _describe(base, parameters, samples, seed), force)
-        lock = _lock(out)
-        done_rows = _read_parts(out)
-        done = {int(r["run"]) for r in done_rows}
-        todo = [(i, p) for i, p in todo_all if i not in done]
-    else:
-        todo = todo_all
+        lock = _prepare(out, _describe(base, parameters, samples, seed), bool(force))
     try:
-        return _run(base, todo, todo_all, names, done_rows, engine, client, out, workers, chunk_size, csv, progress)
+        if out is not None:
+            done_rows = _read_parts(out, base, todo_all, bool(force))
+            done = {int(r["run"]) for r in done_rows}
+            todo = [(i, p) for i, p in todo_all if i not in done]
+        else:
+            todo = todo_all
+        return _run(base, todo, todo_all, names, done_rows, engine, client, out, workers, chunk_size, bool(csv),
+                    bool(progress), float(connect_timeout))
     finally:
         if lock is not None:
             lock.close()
 
 
-def _run(base, todo, todo_all, names, done_rows, engine, client, out, workers, chunk_size, csv, progress):
+#: the memory of one worker process, estimated (the library, NumPy and the compiled loops) [bytes]
+WORKER_BYTES = 150 * 2**20
+
+
+def _run(base, todo, todo_all, names, done_rows, engine, client, out, workers, chunk_size, csv, progress,
+         timeout=CONNECT_TIMEOUT):
     cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
     workers = max(1, min(workers or cores, len(todo) or 1))
     # whole groups of lanes (8 runs fill AVX-512's, and twice or four times narrower ones)
     size = chunk_size or 8 * max(1, min(8, math.ceil(len(todo) / (32 * workers))))
     chunks = _chunks(todo, size)
-    results = _local(base, chunks, workers) if engine == "local" else _dask(base, chunks, client, workers)
+    results = _local(base, chunks, workers) if engine == "local" else _dask(base, chunks, client, workers, timeout)
     rows, t0, failed = list(done_rows), time.perf_counter(), 0
     for k, chunk_rows in enumerate(results):
         if k == 0 and "pandas" not in sys.modules:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import math
+import os
 import re
 
 import numpy as np
@@ -107,3 +108,54 @@ def check_singular_tol(owner: str, value) -> None:
     _finite(owner, singular_tol=value)
     if not 0 <= value < 1:
         raise HybridError(f"singular_tol = {value}; give a value in [0, 1) (default {SINGULAR_TOL})")
+
+
+# --------------------------------------------------------------------- sizes
+
+#: the most memory one request sized by a user's numbers (N states, a sweep's runs, a run's record)
+#: may take, as a fraction of the machine's
+MEMORY_FRACTION = 0.5
+#: what to assume when the system does not say how much memory it has [bytes]
+ASSUMED_MEMORY = 8 * 2**30
+
+
+def machine_memory() -> int:
+    """The machine's physical memory [bytes] (:data:`ASSUMED_MEMORY` where the system does not say)."""
+    try:
+        return int(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
+    except (ValueError, OSError, AttributeError):
+        return ASSUMED_MEMORY
+
+
+def count_text(n: int) -> str:
+    """A whole number as text: in full, or its power of ten when astronomical (a float would
+    overflow, and Python refuses to print integers of thousands of digits)."""
+    return f"{n:,}" if n < 10**15 else f"about 10^{int(math.log10(n))}"
+
+
+def _gib(nbytes: int) -> str:
+    gib = nbytes // 2**30
+    return count_text(gib) + " GiB" if gib >= 10**6 else f"{nbytes / 2**30:.1f} GiB"
+
+
+def check_size(what: str, nbytes: int, fix: str, fraction: float | None = None) -> None:
+    """Refuse, before anything is allocated, a request that would take ``nbytes`` bytes, more than
+    ``fraction`` (default :data:`MEMORY_FRACTION`) of the machine's memory.
+
+    Parameters
+    ----------
+    what : the request with its numbers, ending in its verb, e.g. ``"1,000,000,000 states of
+        robot_terms need"``.
+    nbytes : the estimate (a Python int: exact however large the product).
+    fix : what to do instead, e.g. ``"pass fewer states at a time"``.
+    """
+    total = machine_memory()
+    limit = (MEMORY_FRACTION if fraction is None else fraction) * total
+    if int(nbytes) > limit:
+        raise HybridError(f"{what} {_gib(int(nbytes))}; this machine has {_gib(total)}: {fix}\n"
+                          f"  (a request may take at most {100 * limit / total:.0f}% of the memory)")
+
+
+def product(counts) -> int:
+    """The product of whole numbers as a Python int: exact, never overflowing as NumPy's would."""
+    return math.prod(int(c) for c in counts)

@@ -18,7 +18,6 @@ from hybrid.control.references import Step
 from hybrid.errors import HybridError
 from hybrid.experiments import FACTORIES
 from hybrid.plants.contact import Contact, Sensor
-from hybrid.simulation.metrics import metrics
 from hybrid.sweeps import sweep
 
 DEMO = Path(__file__).resolve().parent.parent / "data" / "sweep_demo.toml"
@@ -32,7 +31,10 @@ def add_parser(sub) -> None:
     p.add_argument("--out", required=True, help="folder for results.parquet, parts (resume) and figures")
     p.add_argument("--csv", action="store_true", help="also write results.csv")
     p.add_argument("--engine", default="local", choices=("local", "dask"))
-    p.add_argument("--scheduler", help="a Dask scheduler's address (default: a local cluster)")
+    p.add_argument("--scheduler", help="a Dask scheduler's address, e.g. tcp://127.0.0.1:8786 (default: a local "
+                   "cluster)")
+    p.add_argument("--connect-timeout", type=float, default=sw.CONNECT_TIMEOUT, metavar="SECONDS",
+                   help=f"how long to wait for the Dask scheduler (default {sw.CONNECT_TIMEOUT:g} s)")
     p.add_argument("--workers", type=int, help="processes (default: every core)")
     p.add_argument("--force", action="store_true", help="start afresh in a folder that holds another sweep")
     p.set_defaults(func=run)
@@ -143,21 +145,13 @@ def check_figures(figures: dict | None, parameters, metrics) -> None:
                           f"  known: {', '.join(metrics)}")
 
 
-def _metric_names(base) -> list[str]:
-    """The names every run reports (those of a run of ``base``, by the metrics' own definition)."""
-    import numpy as np
-
-
-    t = np.linspace(0.0, 1.0, 3)
-    nq = base.robot.n if hasattr(base, "robot") else 2
-    return list(metrics(t, t, t, t, t, penetration=t, contact_force=t, tau=np.zeros((3, nq))))
-
-
 def run(args) -> int:
     from hybrid.plots import sweep_heatmaps
 
     if bool(args.config) == bool(args.demo):
         raise HybridError("give a sweep file or --demo (one of the two)")
+    if args.scheduler is not None and args.engine != "dask":
+        raise HybridError("--scheduler is for --engine dask; add --engine dask, or leave --scheduler out")
     path = DEMO if args.demo else Path(args.config)
     config = read_config(path)
     base = _base(config.get("experiment", "paper"), config.get("base", {}))
@@ -166,11 +160,11 @@ def run(args) -> int:
     unknown = set(options) - {"samples", "seed"}
     if unknown:
         raise HybridError(f"[sweep]: unknown {', '.join(sorted(unknown))}; it takes samples and seed")
-    check_figures(config.get("figures"), parameters, _metric_names(base))
+    check_figures(config.get("figures"), parameters, sw.metric_names(base))
     out = Path(args.out)
     table = sweep(base, parameters, samples=options.get("samples"), seed=options.get("seed", 0),
                   engine=args.engine, client=args.scheduler, out=out, workers=args.workers, csv=args.csv,
-                  force=args.force, progress=True)
+                  force=args.force, progress=True, connect_timeout=args.connect_timeout)
     written = sweep_heatmaps(table, config.get("figures"), out)
     counts = table["status"].value_counts().to_dict()
     print(f"{len(table)} runs ({', '.join(f'{n} {s}' for s, n in counts.items())}); wrote results.parquet"

@@ -33,7 +33,7 @@ from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot
 from hybrid.native import units
 from hybrid.native.binding import is_batch
-from hybrid.validate import SINGULAR_TOL, check_singular_tol
+from hybrid.validate import SINGULAR_TOL, check_singular_tol, check_size
 
 #: the derivations a law can run: the rigid-body algorithms, or the planar arm's committed closed form
 BACKENDS = ("rigid_body", "sympy", "casadi")
@@ -176,7 +176,8 @@ class DecouplingLaw:
         held = self._held(tau0)
         batched = is_batch(q)
         if held and batched and tau0 is None:
-            held = (np.zeros((len(np.asarray(q)), self.robot.n)),)
+            # a view: the batch checks its size before copying it
+            held = (np.broadcast_to(np.zeros(self.robot.n), (len(np.asarray(q)), self.robot.n)),)
         out = {k: v for k, v in (out or {}).items() if v is not None}
         if not batched:
             if out:
@@ -189,6 +190,9 @@ class DecouplingLaw:
 
 def _finite_tau0(tau0) -> None:
     """A square task ignores ``tau0`` (no null space): a non-finite one must still be refused."""
+    if isinstance(tau0, np.ndarray) and tau0.ndim == 2:  # the check's own arrays are sized by the states
+        check_size(f"{len(tau0):,} states of tau0 (shape {tau0.shape}) need", 9 * tau0.size,
+                   "pass fewer states at a time (in chunks)")
     try:
         finite = bool(np.isfinite(np.asarray(tau0, dtype=float)).all())
     except (TypeError, ValueError):

@@ -17,6 +17,7 @@ import numpy as np
 
 from hybrid.errors import HybridError, NonFiniteError, SingularConfigurationError, TaskFrameError
 from hybrid.native.build import load_fastcall
+from hybrid.validate import check_size
 
 
 def status_error(status: int, where: str, singular_hint: str = "", **inputs) -> HybridError:
@@ -47,6 +48,10 @@ def as_array(name: str, x, size: int, batched: bool | None = False) -> np.ndarra
     if type(x) is np.ndarray and x.dtype == np.float64 and x.flags.c_contiguous and batched is not True \
             and x.shape == (size,):
         return x  # already what C wants: no copy, no checks to repeat
+    if batched is not False and isinstance(x, np.ndarray) and x.ndim == 2:
+        # a broadcast view of N states takes no memory; its contiguous copy does
+        check_size(f"{len(x):,} states of {name} (shape {x.shape}) need", 8 * x.size,
+                   "pass fewer states at a time (in chunks)")
     try:
         arr = np.asarray(x)
         if np.iscomplexobj(arr):
@@ -218,6 +223,7 @@ class Function:
         (float64, C-contiguous, writable, ``(N, *shape)``), the others are allocated."""
         if self._batch is None:
             raise HybridError(f"{self.name} has no batched entry point")
+        self.check_batch(args)
         ins = self._inputs(args, batched=True)
         lengths = {len(ins[n]) for n in self.per_state}
         if len(lengths) != 1:
@@ -244,6 +250,25 @@ class Function:
                                **self._labelled({n: (v[i] if n in self.per_state else v) for n, v in ins.items()}))
         given = out or {}
         return {n: given[n] if n in given else outs[n].reshape((N, *shape)) for n, _, shape in self.outputs}
+
+    def check_batch(self, args) -> None:
+        """Refuse, before converting or allocating anything, a batch whose inputs' copies and outputs
+        would not fit in memory (with the numbers)."""
+        rows = []
+        for (name, _), x in zip(self.inputs, args):
+            if name in self.per_state:
+                try:
+                    shape = x.shape if isinstance(x, np.ndarray) else np.shape(x)
+                except (TypeError, ValueError):  # ragged: the shape check names it
+                    continue
+                if len(shape) == 2:
+                    rows.append(int(shape[0]))
+        if not rows:
+            return
+        N = max(rows)
+        per_state = sum(size for name, size in self.inputs if name in self.per_state) + self._total
+        check_size(f"{N:,} states of {self.name} ({per_state} numbers each, inputs and outputs) need",
+                   N * (8 * per_state + np.dtype(np.intc).itemsize), "pass fewer states at a time (in chunks)")
 
     def _out_buffer(self, name: str, N: int, size: int, shape: tuple, given) -> np.ndarray:
         """The ``(N, size)`` array the batch writes output ``name`` into: the caller's, checked, or new."""

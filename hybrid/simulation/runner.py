@@ -10,8 +10,6 @@ again, for the account of where and why. The NumPy reference runs through the sa
 
 from __future__ import annotations
 
-import os
-
 import numpy as np
 
 from hybrid.control.loops import model_error_note
@@ -22,6 +20,7 @@ from hybrid.plants.planar import planar_record
 from hybrid.simulation import closed_loop
 from hybrid.simulation.metrics import run_metrics
 from hybrid.simulation.results import SimulationResult
+from hybrid.validate import check_size
 
 
 class SimulationError(HybridError):
@@ -48,15 +47,8 @@ def check_memory(exp, record: dict | None = None) -> None:
     record = record or planar_record()
     steps = exp.steps_per_sample * exp.n_samples + 1
     per_step = 8 * (len(record["state"]) + record["nq"] + len(record["outputs"]) + 3)  # doubles kept per RK4 step
-    need = steps * per_step
-    try:
-        total = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
-    except (ValueError, OSError, AttributeError):
-        return
-    if need > MEMORY_FRACTION * total:
-        raise HybridError(f"duration = {exp.duration} s at step = {exp.step} s is {steps:,} RK4 steps, whose record "
-                          f"needs {need / 2**30:.1f} GiB; this machine has {total / 2**30:.1f} GiB: shorten "
-                          "duration or lengthen step")
+    check_size(f"duration = {exp.duration} s at step = {exp.step} s is {steps:,} RK4 steps, whose record needs",
+               steps * per_step, "shorten duration or lengthen step", fraction=MEMORY_FRACTION)
 
 
 # ---------------------------------------------------------------------- runner
