@@ -31,7 +31,7 @@ import numpy as np
 
 from hybrid import files
 from hybrid.errors import HybridError
-from hybrid.experiments.settings import RunSettings, setting_aliases
+from hybrid.experiments.settings import RunSettings, setting_aliases, setting_path
 from hybrid.simulation import closed_loop
 from hybrid.simulation.metrics import metrics
 from hybrid.simulation.runner import SimulationError, simulate
@@ -250,13 +250,13 @@ def check_names(base, names) -> None:
     for name in names:
         if not isinstance(name, str):
             raise HybridError(f"parameter names are setting names (text), got {type(name).__name__} {_shown(name, 60)}")
-    paths = {name: setting_aliases().get(name, name) for name in names}
+    paths = {name: setting_path(name) for name in names}
     for a, pa in paths.items():
         for b, pb in paths.items():
             if a != b and (pb == pa or pb.startswith(pa + ".")):
                 raise HybridError(f"parameters {a!r} and {b!r} set the same setting; keep one of them")
     for name in names:
-        path = setting_aliases().get(name, name).split(".")
+        path = setting_path(name).split(".")
         obj = base
         for part in path:
             if not dataclasses.is_dataclass(obj) or part not in {f.name for f in dataclasses.fields(obj)}:
@@ -274,10 +274,9 @@ def apply(base, settings: Mapping):
         raise HybridError(f"settings must be a mapping {{setting name: value}}, e.g. {{'model_error': 0.1}}, got "
                           f"{type(settings).__name__}")
     check_names(base, settings)
-    aliases = setting_aliases()
     nested: dict = {}
     for name, value in settings.items():
-        path = aliases.get(name, name).split(".")
+        path = setting_path(name).split(".")
         node = nested
         for part in path[:-1]:
             node = node.setdefault(part, {})

@@ -212,3 +212,16 @@ def test_paper_settings_saved_before_experiments_were_one_type_still_load():
     assert hybrid.Experiment.from_dict(old) == exp
     old["surface"] = {"kind": "plane", "point": [0.3, 0.0], "normal": [-1.0, 0.0]}
     assert hybrid.Experiment.from_dict(old).surface == hybrid.Plane((0.3, 0.0, 0.0), (-1.0, 0.0, 0.0))
+
+
+def test_the_planar_arms_parameters_sweep_by_their_names():
+    """``arm.m2`` is the planar robot's closed form's ``m2``: the run is the one of an arm built so."""
+    from dataclasses import replace
+
+    base = hybrid.paper_experiment(duration=0.2)
+    table = hybrid.sweep(base, {"arm.m2": [4.5]})
+    alone = hybrid.simulate(hybrid.paper_experiment(duration=0.2, arm=replace(hybrid.paper_arm(), m2=4.5)))
+    assert table["rms_force_error_N"][0] == alone.metrics["rms_force_error_N"]
+    assert table["rms_force_error_N"][0] != hybrid.simulate(base).metrics["rms_force_error_N"]
+    with pytest.raises(hybrid.HybridError, match="closed form's parameters"):
+        hybrid.Robot.planar(hybrid.paper_arm()).with_link("joint2", mass=10.0)

@@ -121,6 +121,19 @@ def check_timing(exp) -> None:
 REFERENCE_ALIASES = {"F_d": "force_reference", "v_d": "speed_reference"}
 
 
+#: short prefixes of settings' paths: the planar arm's parameters (``arm.m2``) are its robot's closed form
+PREFIX_ALIASES = {"arm.": "robot.closed_form."}
+
+
+def setting_path(name: str) -> str:
+    """The dotted path a setting name stands for (:func:`setting_aliases`, :data:`PREFIX_ALIASES`)."""
+    path = setting_aliases().get(name, name)
+    for short, long in PREFIX_ALIASES.items():
+        if path.startswith(short):
+            return long + path[len(short):]
+    return path
+
+
 def setting_aliases() -> dict[str, str]:
     """Short names of settings and the paths they stand for: ``F_d`` / ``v_d`` for the references,
     each gain by its own name (``KPf`` for ``gains.KPf``)."""
