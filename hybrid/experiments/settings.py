@@ -1,4 +1,4 @@
-"""What every experiment shares: its checks, the settings it derives, and overrides by keyword."""
+"""The experiment's checks, the settings it derives, and its factories' overrides by keyword."""
 
 from __future__ import annotations
 
@@ -20,7 +20,8 @@ START_TOL = 1e-3
 
 
 class RunSettings:
-    """What every experiment derives from its settings (a mixin of the experiment dataclasses)."""
+    """What an :class:`~hybrid.Experiment` derives from its settings (its base: sample counts, gains in
+    force, the controller's keywords, the plant's array)."""
 
     @property
     def steps_per_sample(self) -> int:
@@ -59,8 +60,8 @@ def pressed(point, normal, F0: float, k_e: float, K_s: float) -> tuple[np.ndarra
 
 
 def check_common_types(exp) -> None:
-    """The fields every experiment shares, of the kind they must be (references given as numbers
-    become constant :class:`Step` references)."""
+    """The experiment's fields of the kind they must be (references given as numbers become constant
+    :class:`Step` references)."""
     owner = type(exp).__name__
     for name in ("integral", "curvature"):
         if not isinstance(getattr(exp, name), bool):
