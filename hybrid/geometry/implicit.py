@@ -160,10 +160,19 @@ def parse_phi(text: str, parameters: tuple[str, ...]) -> sp.Expr:
         kids = _operands(node, refuse)
         if not ready:
             stack.append((node, depth, True))
-            stack.extend((k, depth + 1, False) for k in kids)
+            # SymPy flattens a chain of sums (or of products) into one node: only other operations nest
+            stack.extend((k, depth + (0 if _group(k) is not None and _group(k) == _group(node) else 1), False)
+                         for k in kids)
             continue
         done[id(node)] = _build(node, [done.pop(id(k)) for k in kids], symbols, refuse)
     return done[id(tree.body)]
+
+
+def _group(node) -> str | None:
+    """``"sum"`` or ``"product"`` for a node SymPy merges with a parent of the same group."""
+    if isinstance(node, ast.BinOp):
+        return {ast.Add: "sum", ast.Sub: "sum", ast.Mult: "product", ast.Div: "product"}.get(type(node.op))
+    return None
 
 
 def _operands(node, refuse) -> list:

@@ -371,11 +371,12 @@ def _limits(j: Node, kind: str, where: str) -> tuple[float, float, float, float]
     return lo, hi, velocity, effort
 
 
-#: above this many moving joints a chain warns (:class:`~hybrid.errors.LargeModelWarning`): generating
-#: and compiling its code takes minutes (measured: 24 joints ~15 s, 48 joints ~1-2 min for the rigid-body
-#: unit alone on one core; it grows about as the cube of the joints, and a law or closed loop is larger)
-WARN_JOINTS = 24
-#: the most moving joints a chain may have: beyond it generation would take hours
+#: above this many moving joints a chain warns (:class:`~hybrid.errors.LargeModelWarning`): the first
+#: build of each of its units takes a minute or more. Measured on two shared cores, the rigid-body unit
+#: alone (generate, then ``cc -O2``): 6 joints 2 s, 24 joints 16 s, 48 joints 2.5 min, growing about as
+#: the cube of the joints; a law, controller or closed loop of the same arm takes longer still.
+WARN_JOINTS = 32
+#: the most moving joints a chain may have (about 25 min for its rigid-body unit alone)
 MAX_JOINTS = 100
 
 
@@ -385,14 +386,15 @@ def check_chain_size(n: int, what: str) -> None:
         raise URDFError(f"{what} has {n} moving joints; at most {MAX_JOINTS} are supported (generating its "
                         f"code would take hours); lock joints with locked={{...}} or pick an earlier tip")
     if n > WARN_JOINTS:
-        warnings.warn(f"{what} has {n} moving joints: generating and compiling its code will take about "
-                      f"{expected_minutes(n)} the first time (cached afterwards); lock joints with "
+        warnings.warn(f"{what} has {n} moving joints: generating and compiling its code takes about "
+                      f"{expected_minutes(n)} per unit the first time (cached afterwards); lock joints with "
                       "locked={...} to shorten it", LargeModelWarning, stacklevel=4)
 
 
 def expected_minutes(n: int) -> str:
-    """The rough time to generate and compile the rigid-body unit of an ``n``-joint chain."""
-    minutes = 1.5 * (n / 48) ** 3
+    """The rough time to generate and compile the rigid-body unit of an ``n``-joint chain (measured
+    2.5 min at 48 joints, scaled as the cube of the joints)."""
+    minutes = 2.5 * (n / 48) ** 3
     return f"{minutes:.0f} minutes" if minutes >= 1.5 else "a minute"
 
 
