@@ -18,6 +18,8 @@ no paths, stable ordering, so regenerating gives the same bytes.
 from __future__ import annotations
 
 import json
+import re
+import unicodedata
 from collections.abc import Callable
 from dataclasses import dataclass
 from importlib.metadata import version
@@ -55,8 +57,13 @@ class Unit:
 
 
 def comment_safe(text: str) -> str:
-    """``text`` that cannot end or break a C comment (names come from users' URDF files)."""
-    kept = "".join(c if (c.isprintable() or c == "\n") and c != "\\" else " " for c in text)
+    """``text`` that cannot end or break a C comment (names come from users' URDF files), in ASCII:
+    accents are dropped and other non-ASCII characters become ``?`` (the manifest keeps each name
+    exactly, JSON-escaped), so the source is plain ASCII whatever the compiler's charset."""
+    letters = "".join(c for c in unicodedata.normalize("NFKD", text) if not unicodedata.combining(c))
+    kept = "".join(c if not c.isascii() else c if (c.isprintable() or c == "\n") and c != "\\" else " "
+                   for c in letters)
+    kept = re.sub(r"\?(?=\?)", "? ", kept.encode("ascii", "replace").decode("ascii"))  # no trigraph: no ??/ splice
     return kept.replace("*/", "* /").replace("/*", "/ *")
 
 

@@ -16,7 +16,8 @@ The public API, by subpackage:
   (:func:`paper_experiment`, :func:`tracing_experiment`, :func:`panda_experiment`), the plant's
   :class:`Sensor` and :class:`Contact`, :func:`simulate`, :class:`SimulationResult`, :func:`metrics`;
   sweeps (:func:`sweep`);
-- :class:`HybridError`, the base of every error raised on bad input.
+- :class:`HybridError`, the base of every error raised on bad input; :class:`LargeModelWarning`,
+  warned for a chain whose code takes minutes to generate.
 
 Importing the package loads neither SymPy nor CasADi and reads no file: the code generator
 runs only when a unit must be built, and :class:`ImplicitSurface` (a SymPy expression) and
@@ -32,6 +33,7 @@ from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES, Khatib, Scheme, TaskDecoupling
 from hybrid.errors import (
     HybridError,
+    LargeModelWarning,
     NativeBuildError,
     NonFiniteError,
     SingularConfigurationError,
@@ -73,11 +75,11 @@ def __dir__() -> list[str]:
 
 
 __all__ = [
-    "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw", "Experiment",
-    "Gains", "HybridError", "ImplicitSurface", "Khatib", "LinePath", "Measurement", "NativeBuildError",
-    "NonFiniteError", "OperationalSpace", "PANDA_URDF", "Plane", "Posture", "Reference", "Robot", "SCHEMES",
-    "Scheme", "Sensor", "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "Step",
-    "TaskDecoupling", "TaskFrameError", "UR5_URDF", "URDFError", "arm_terms", "decoupling_law", "metrics",
-    "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment", "simulate", "sweep",
-    "task_frame", "tracing_experiment", "ur5",
+    "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw",
+    "Experiment", "Gains", "HybridError", "ImplicitSurface", "Khatib", "LargeModelWarning", "LinePath",
+    "Measurement", "NativeBuildError", "NonFiniteError", "OperationalSpace", "PANDA_URDF", "Plane", "Posture",
+    "Reference", "Robot", "SCHEMES", "Scheme", "Sensor", "SimulationError", "SimulationResult",
+    "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "UR5_URDF", "URDFError",
+    "arm_terms", "decoupling_law", "metrics", "operational_space", "panda", "panda_experiment", "paper_arm",
+    "paper_experiment", "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",
 ]

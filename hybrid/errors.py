@@ -23,3 +23,7 @@ class URDFError(HybridError):
 
 class TaskFrameError(HybridError):
     """The task frame is undefined: its reference direction is parallel to the surface normal."""
+
+
+class LargeModelWarning(UserWarning):
+    """A model so large that generating and compiling its code takes minutes (the message says how long)."""

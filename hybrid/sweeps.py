@@ -35,7 +35,7 @@ from hybrid.experiments.settings import RunSettings, setting_aliases, setting_pa
 from hybrid.simulation import closed_loop
 from hybrid.simulation.metrics import metrics
 from hybrid.simulation.runner import SimulationError, simulate
-from hybrid.validate import check_size, count_text, product
+from hybrid.validate import check_nesting, check_size, count_text, product, shown
 
 ENGINES = ("local", "dask")
 
@@ -50,7 +50,7 @@ def _numbers(owner, **values) -> None:
         except OverflowError:  # an int beyond float range
             ok = False
         if not ok:
-            raise HybridError(f"{owner}: {name} = {_shown(v)} must be a finite number (within float range)")
+            raise HybridError(f"{owner}: {name} = {shown(v)} must be a finite number (within float range)")
 
 
 @dataclass(frozen=True)
@@ -128,13 +128,14 @@ def check_mapping(parameters) -> None:
         raise HybridError(f"parameters is empty: give at least one setting to sweep, {usage}")
     for name in parameters:
         if not isinstance(name, str) or not name:
-            raise HybridError(f"parameter names are setting names (text), got {_shown(name, 60)}")
+            raise HybridError(f"parameter names are setting names (text), got {shown(name, 60)}")
 
 
 def parameters_mapping(parameters) -> dict:
     """``parameters`` checked to be ``{setting name: values or distribution}`` (values: a list, tuple,
     range or 1-D array, taken as a list), before anything reads it."""
     check_mapping(parameters)
+    check_nesting("sweep parameters", dict(parameters))  # before any message or JSON recurses into them
     checked = {}
     for name, values in parameters.items():
         if isinstance(values, np.ndarray) and values.ndim == 1:
@@ -146,7 +147,7 @@ def parameters_mapping(parameters) -> dict:
             continue
         if not isinstance(values, (list, tuple)):
             raise HybridError(f"parameter {name!r}: give a list of values or a distribution (hybrid.sweeps.Uniform, "
-                              f"LogUniform, Normal), got {type(values).__name__} {_shown(values, 60)}")
+                              f"LogUniform, Normal), got {type(values).__name__} {shown(values, 60)}")
         if len(values) == 0:
             raise HybridError(f"parameter {name!r} has no values; give at least one")
         _check_values(name, values)
@@ -154,19 +155,9 @@ def parameters_mapping(parameters) -> dict:
     return checked
 
 
-def _shown(value, width: int = 40) -> str:
-    """``repr(value)`` cut to ``width`` characters; a number too long to print by its size."""
-    if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**15:
-        return ("-" if value < 0 else "") + count_text(abs(value))
-    try:
-        return repr(value)[:width]
-    except Exception:  # noqa: BLE001 - a user's object whose repr fails is still named by its type
-        return f"a {type(value).__name__}"
-
-
 def _whole(name: str, value, low: int) -> int:
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)) or value < low:
-        raise HybridError(f"{name} = {_shown(value)}; give a whole number >= {low}")
+        raise HybridError(f"{name} = {shown(value)}; give a whole number >= {low}")
     return int(value)
 
 
@@ -206,13 +197,13 @@ def _check_values(name: str, values) -> None:
             kinds.add("bool")
         elif isinstance(v, (int, float, np.integer, np.floating)):
             if isinstance(v, int) and not -2**63 <= v < 2**63:  # no column of the table holds it
-                raise HybridError(f"parameter {name!r}: {_shown(v)} is beyond a table's whole numbers "
+                raise HybridError(f"parameter {name!r}: {shown(v)} is beyond a table's whole numbers "
                                   "(64 bits); give it as a float")
             kinds.add("number")
         elif isinstance(v, str):
             kinds.add("text")
         else:
-            raise HybridError(f"parameter {name!r}: {_shown(v, 50)} is not a number, text or boolean; sweep a "
+            raise HybridError(f"parameter {name!r}: {shown(v, 50)} is not a number, text or boolean; sweep a "
                               "setting's numbers by a dotted name, e.g. 'force_reference.after'")
     if len(kinds) > 1:
         raise HybridError(f"parameter {name!r} mixes {' and '.join(sorted(kinds))} values; give one kind")
@@ -249,7 +240,7 @@ def check_names(base, names) -> None:
     names = list(names)
     for name in names:
         if not isinstance(name, str):
-            raise HybridError(f"parameter names are setting names (text), got {type(name).__name__} {_shown(name, 60)}")
+            raise HybridError(f"parameter names are setting names (text), got {type(name).__name__} {shown(name, 60)}")
     paths = {name: setting_path(name) for name in names}
     for a, pa in paths.items():
         for b, pb in paths.items():
@@ -625,7 +616,7 @@ def _part_problem(name: str, frame, todo_all: list[tuple[int, dict]], metrics: s
         point = todo_all[row["run"]][1]
         for n in names:
             if not _same(row[n], point[n]):
-                return f"its run {row['run']} has {n} = {row[n]!r:.30}, this sweep's has {point[n]!r:.30}"
+                return f"its run {row['run']} has {n} = {shown(row[n], 30)}, this sweep's has {shown(point[n], 30)}"
     return None
 
 
@@ -686,17 +677,17 @@ def sweep(base, parameters: Mapping, *, samples: int | None = None, seed: int = 
     The number of runs is checked against the machine's memory before any is made.
     """
     if not isinstance(engine, str) or engine not in ENGINES:
-        raise HybridError(f"engine = {_shown(engine)}; choose one of {', '.join(ENGINES)}")
+        raise HybridError(f"engine = {shown(engine)}; choose one of {', '.join(ENGINES)}")
     for name, value in (("workers", workers), ("chunk_size", chunk_size)):
         if value is not None:
             _whole(name, value, 1)
     for name, value in (("csv", csv), ("force", force), ("progress", progress)):
         if not isinstance(value, (bool, np.bool_)):
-            raise HybridError(f"{name} = {_shown(value)}; give True or False")
+            raise HybridError(f"{name} = {shown(value)}; give True or False")
     if isinstance(connect_timeout, (bool, np.bool_)) or not isinstance(connect_timeout, (int, float, np.integer,
                                                                                          np.floating)) \
             or not 0 < connect_timeout <= 3600:
-        raise HybridError(f"connect_timeout = {_shown(connect_timeout)}; give a number of seconds in (0, 3600]")
+        raise HybridError(f"connect_timeout = {shown(connect_timeout)}; give a number of seconds in (0, 3600]")
     check_base(base)
     check_mapping(parameters)
     check_names(base, parameters)

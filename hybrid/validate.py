@@ -4,9 +4,12 @@ from __future__ import annotations
 
 import dataclasses
 import hashlib
+import keyword
 import math
 import os
 import re
+import reprlib
+import unicodedata
 
 import numpy as np
 
@@ -87,15 +90,102 @@ def _moments(eig) -> str:
 
 #: the longest prefix of emitted symbols and file names (a longer name is cut and given a hash)
 MAX_PREFIX = 48
+#: the longest name a user may give for a C prefix (one over :data:`MAX_PREFIX` is cut and given a hash)
+MAX_C_NAME = 1000
+#: an ASCII C name that reserves nothing: a letter first (C keeps ``_X`` and ``__`` names for itself)
+_C_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+#: an ASCII identifier (a symbol in a formula; it only reaches C inside comments)
+_ASCII_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+
+def shown(value, limit: int = 60) -> str:
+    """``repr(value)`` cut to about ``limit`` characters, safe for any value: nested containers are
+    shown a few levels deep, so a deeply nested or huge value cannot overflow or fill memory."""
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**15:
+        return ("-" if value < 0 else "") + count_text(abs(value))  # a number too long to print, by its size
+    r = reprlib.Repr()
+    r.maxlevel, r.maxstring, r.maxother = 3, limit, limit
+    r.maxlist = r.maxtuple = r.maxdict = r.maxset = r.maxfrozenset = r.maxdeque = r.maxarray = 6
+    try:
+        text = r.repr(value)
+    except Exception:  # a user's object whose __repr__ fails: name its type instead
+        text = f"<{type(value).__name__}>"
+    return text if len(text) <= limit else text[:limit - 3] + "..."
+
+
+#: the deepest nesting of tables and lists read from a user's file
+MAX_NESTING = 16
+
+
+def check_nesting(what: str, value, max_depth: int = MAX_NESTING) -> None:
+    """Refuse ``value`` (dicts and lists inside each other) nested more than ``max_depth`` deep.
+
+    Walked with an explicit stack, so checking cannot itself overflow; every later step (messages,
+    JSON, comparisons) may then recurse freely.
+    """
+    stack = [(value, 0, ())]
+    while stack:
+        item, depth, keys = stack.pop()
+        if depth > max_depth:
+            at = ".".join(str(k)[:30] for k in keys[:4]) + ("..." if len(keys) > 4 else "")
+            raise HybridError(f"{what}: {at or 'the value'} is nested more than {max_depth} tables or lists deep; "
+                              "write it flatter")
+        if isinstance(item, dict):
+            stack.extend((v, depth + 1, (*keys, k) if len(keys) <= 4 else keys) for k, v in item.items())
+        elif isinstance(item, (list, tuple)):
+            stack.extend((v, depth + 1, keys) for v in item)
+
+
+def c_name_problem(name) -> str | None:
+    """Why ``name`` cannot be used as it is for C symbols and file names, or None when it can."""
+    if not isinstance(name, str):
+        return f"it is a {type(name).__name__}, not text"
+    bad = next((c for c in name if not c.isascii()), None)
+    if bad is not None:
+        return f"it has the non-ASCII character {bad!r} (U+{ord(bad):04X})"
+    if not name:
+        return "it is empty"
+    if len(name) > MAX_C_NAME:
+        return f"it has {len(name)} characters (at most {MAX_C_NAME})"
+    if not _C_NAME.fullmatch(name):
+        bad = next((c for c in name if not (c.isalnum() or c == "_")), None)
+        return f"it has the character {bad!r}" if bad is not None else "it does not start with a letter"
+    return None
+
+
+def check_c_name(what: str, name) -> str:
+    """``name`` if it can prefix C symbols and file names as it is (ASCII letters, digits, ``_``,
+    a letter first); otherwise a HybridError that suggests a name that can."""
+    problem = c_name_problem(name)
+    if problem:
+        hint = f", e.g. {c_identifier(name)!r}" if isinstance(name, str) else ""
+        raise HybridError(f"{what} {shown(name, 60)} cannot name C symbols and files: {problem}; give ASCII "
+                          f"letters, digits and _, starting with a letter{hint}")
+    return name
+
+
+def check_identifier(what: str, name, max_len: int = 64) -> str:
+    """``name`` if it is an ASCII identifier of at most ``max_len`` characters (a symbol of a
+    formula, shown in generated comments and manifests); otherwise a HybridError."""
+    if not isinstance(name, str) or len(name) > max_len or not _ASCII_IDENTIFIER.fullmatch(name) \
+            or keyword.iskeyword(name):
+        raise HybridError(f"{what} {shown(name, 60)} must be an ASCII identifier (letters, digits, _; not "
+                          f"a Python keyword) of at most {max_len} characters")
+    return name
 
 
 def c_identifier(name: str) -> str:
-    """``name`` made a C identifier (the prefix of every emitted symbol and file), at most
-    :data:`MAX_PREFIX` characters."""
-    ident = re.sub(r"\W", "_", name, flags=re.ASCII)
-    ident = ident if re.match(r"[A-Za-z_]", ident) else f"robot_{ident}"
-    if len(ident) > MAX_PREFIX:
-        ident = f"{ident[:MAX_PREFIX - 13]}_{hashlib.sha256(name.encode()).hexdigest()[:12]}"
+    """``name`` made a C identifier (the prefix of every emitted symbol and file): ASCII, a letter
+    first, at most :data:`MAX_PREFIX` characters. Accents are dropped (``robôt`` gives ``robot``);
+    a name that had other non-ASCII characters gets a hash of it, so two such names stay apart."""
+    if not isinstance(name, str):
+        raise HybridError(f"a robot's name must be text, got {type(name).__name__}")
+    letters = "".join(c for c in unicodedata.normalize("NFKD", name) if not unicodedata.combining(c))
+    ident = re.sub(r"[^A-Za-z0-9_]", "_", letters.encode("ascii", "ignore").decode("ascii"))
+    ident = ident if re.match(r"[A-Za-z]", ident) else f"robot_{ident}"
+    if not letters.isascii() or len(ident) > MAX_PREFIX:
+        digest = hashlib.sha256(name.encode("utf-8", "surrogatepass")).hexdigest()
+        ident = f"{ident[:MAX_PREFIX - 13]}_{digest[:12]}"
     return ident
 
 

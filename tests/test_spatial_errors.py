@@ -284,3 +284,58 @@ def test_non_finite_tau0_is_refused_even_where_it_has_no_effect(law):
     z6 = np.zeros(6)
     with pytest.raises(hybrid.NonFiniteError, match="tau0"):
         law.torque(Q, z6, z6, z6, tau0=np.full(6, np.nan))
+
+
+@pytest.mark.parametrize("text, parameters, match", [
+    # a call with the wrong number of arguments, checked from the one table of functions
+    ("sin(x, y)", {}, r"sin with 2 arguments \(sin takes 1 argument\)"),
+    ("x - atan(x, y)", {}, r"atan with 2 arguments"),
+    ("sqrt() + x", {}, r"sqrt with 0 arguments"),
+    ("Min() + x", {}, r"Min with 0 arguments \(Min takes at least 2"),
+    ("Max(x) - 1", {}, r"Max with 1 argument "),
+    ("exp(x, y, z)", {}, r"exp with 3 arguments"),
+    ("Abs(x, 1)", {}, r"Abs with 2 arguments"),
+    ("log(x, 2)", {}, r"log with 2 arguments"),
+    # a function used as a value, a constant or parameter called
+    ("sin + x", {}, "the function sin without calling it"),
+    ("x * cos", {}, "the function cos without calling it"),
+    ("x - pi(1)", {}, "a call that is not one of"),
+    ("x - a(1)", {"a": 1.0}, "a call that is not one of"),
+    # parameter names that hide a function or a constant
+    ("x - sin", {"sin": 1.0}, "parameter name 'sin' hides the function sin"),
+    ("x - pi", {"pi": 3}, "parameter name 'pi' hides the constant pi"),
+    ("x - E", {"E": 2}, "parameter name 'E' hides the constant E"),
+    ("x - Max", {"Max": 2.0}, "hides the function Max"),
+    # values C cannot hold
+    ("x - 1/0", {}, "has the value zoo"),
+    ("x - log(0)", {}, "has the value zoo"),
+    ("x - sqrt(-1)", {}, "has the value I"),
+    ("x - acos(2)", {}, "has the value acos"),
+    ("x - 1e200*1e200", {}, r"has the value -1\.0+e\+400"),
+    # nesting deeper than SymPy and the generator can walk
+    ("x" + "**(x" * 150 + ")" * 150, {}, "nested more than 100 levels"),
+    ("-" * 1000 + "x", {}, "nested more than 100 levels"),
+    ("sqrt(" * 150 + "x" + ")" * 150, {}, "nested"),
+])
+def test_phi_text_arity_shadowing_and_values(text, parameters, match):
+    with pytest.raises(hybrid.HybridError, match=match) as info:
+        hybrid.ImplicitSurface(text, parameters)
+    assert len(str(info.value).splitlines()) == 1 and len(str(info.value)) < 400
+
+
+def test_phi_text_builds_the_same_expression_as_sympy():
+    """Names SymPy's own parser uses (Integer, Symbol, Float) are ordinary parameters; text and SymPy agree."""
+    x, y, z = sp.symbols("x y z", real=True)
+    odd = hybrid.ImplicitSurface("x - Integer*Symbol + Float", {"Integer": 2.0, "Symbol": 3.0, "Float": 0.5})
+    assert {str(s) for s in odd.phi.free_symbols} == {"x", "Integer", "Symbol", "Float"}
+    a = sp.Symbol("a", real=True)
+    text = hybrid.ImplicitSurface("(x/a)**2 + y**2 + Min(z, 2*z, -z) - sin(pi/8)*E", {"a": 0.3})
+    assert sp.simplify(text.phi - ((x / a) ** 2 + y**2 + sp.Min(z, 2 * z, -z) - sp.sin(sp.pi / 8) * sp.E)) == 0
+    long = hybrid.ImplicitSurface("+".join(["x"] * 600), {})  # a long flat sum is not deep
+    assert long.phi == 600 * x
+
+
+@pytest.mark.parametrize("name", ["θ", "rä", "a" * 65, "", "1a", "a-b", "lambda", 3, "x"])
+def test_parameter_names_are_ascii_identifiers(name):
+    with pytest.raises(hybrid.HybridError, match="ImplicitSurface parameter name"):
+        hybrid.ImplicitSurface("x - 1", {name: 1.0})

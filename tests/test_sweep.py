@@ -282,3 +282,29 @@ def test_a_run_that_breaks_unexpectedly_is_a_row(monkeypatch):
     monkeypatch.setattr(closed_loop, "prepare", broken)
     table = sweep(BASE, {"model_error": [0.0, 0.3]}, workers=1)
     assert list(table["status"]) == ["ok", "error"] and "ZeroDivisionError" in table["error"][1]
+
+
+DEEP = 2000
+
+
+@pytest.mark.parametrize("text, words", [
+    ('[parameters]\nmodel_error = ' + "{a = " * DEEP + "1" + "}" * DEEP + "\n", "nested too deeply to read"),
+    ('[parameters]\nmodel_error = ' + "[" * DEEP + "0" + "]" * DEEP + "\n", "nested too deeply to read"),
+    ('[parameters]\nmodel_error.' + ".".join(["a"] * DEEP) + " = 1\n", "parameters.model_error.a.a... is nested"),
+    ('[parameters]\nmodel_error = [{' + "a." * DEEP + "b = 1}]\n", "is nested more than 16"),
+    ('[parameters]\nmodel_error = [0]\n[sweep]\nseed.' + ".".join(["a"] * DEEP) + " = 1\n", "sweep.seed.a.a..."),
+    ('[parameters]\nmodel_error = [0]\n[base]\ncontact.' + ".".join(["a"] * 40) + " = 1\n", "base.contact"),
+    ('experiment = {name = "paper"}\n[parameters]\nmodel_error = [0]\n', "experiment = {'name': 'paper'}; give"),
+    ('[parameters]\nmodel_error = [0]\n[figures]\nx = {a = 1}\ny = "model_error"\n', "x = {'a': 1} is not a swept"),
+    ('[parameters]\nmodel_error = [0]\n[figures]\nx = "model_error"\ny = "model_error"\nmetrics = [{a = 1}]\n',
+     "metric names"),
+])
+def test_deep_or_mistyped_sweep_files_are_one_line(tmp_path, capsys, text, words):
+    """Tables nested thousands deep, or a table where a name belongs: an error, never a RecursionError."""
+    from hybrid.cli.main import main
+
+    config = tmp_path / "s.toml"
+    config.write_text(text)
+    assert main(["sweep", str(config), "--out", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err
+    assert words in err and len(err.strip().splitlines()) == 1 and len(err) < 600, err[:700]

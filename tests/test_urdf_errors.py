@@ -56,6 +56,17 @@ CASES = [
     ("undefined link", edited('<child link="fore"/>', '<child link="forearm"/>'),
      r"joint 'elbow' \(line \d+\): its child link 'forearm' is not defined"),
     ("two roots", edited("</robot>", '<link name="stray"/></robot>'), r"expected one root link, found 2"),
+    ("lower above upper", edited('lower="-2" upper="2"', 'lower="2" upper="-2"'),
+     r"joint 'shoulder', <limit> at line \d+: lower=\"2\" is above upper=\"-2\""),
+    ("prismatic lower above upper", edited('lower="-0.3" upper="0.3"', 'lower="0.31" upper="0.3"'),
+     r"joint 'slide', <limit> at line \d+: lower=\"0.31\" is above upper"),
+    ("negative effort", edited('effort="50"', 'effort="-50"'),
+     r"joint 'shoulder', <limit> .*effort=\"-50\" is negative"),
+    ("negative velocity", edited('effort="50" velocity="2"', 'effort="50" velocity="-0.1"'),
+     r"joint 'shoulder', <limit> .*velocity=\"-0.1\" is negative"),
+    ("negative tiny velocity", edited('velocity="1.0"', 'velocity="-1e-9"'), r"joint 'slide'.*velocity=\"-1e-09\""),
+    ("negative zero-mass link", edited('<mass value="0.8"/>', '<mass value="-0.0001"/>'),
+     r"link 'fore' \(line \d+\): mass -0.0001 kg is negative"),
 ]
 
 
@@ -184,3 +195,126 @@ def test_a_massless_last_link_is_refused(tmp_path):
     robot = hybrid.Robot.from_urdf(write(tmp_path, SLIDER), tip="tool")
     with pytest.raises(hybrid.HybridError, match="last joint 'elbow' has no mass and no inertia"):
         robot.with_link("elbow", mass=0.0, inertia=np.zeros((3, 3)))
+
+
+def test_a_branch_of_thousands_of_links_is_merged(tmp_path):
+    """Merging what hangs off the chain walks the tree without recursion: 5000 links in one branch."""
+    n = 5000
+    branch = "".join(f'<link name="b{i}"><inertial><mass value="0.001"/><inertia ixx="1e-7" ixy="0" ixz="0" '
+                     f'iyy="1e-7" iyz="0" izz="1e-7"/></inertial></link><joint name="bj{i}" type="fixed">'
+                     f'<parent link="{"upper" if i == 0 else f"b{i - 1}"}"/><child link="b{i}"/>'
+                     '<origin xyz="0.0001 0 0"/></joint>' for i in range(n))
+    plain = hybrid.Robot.from_urdf(write(tmp_path, SLIDER), tip="tool")
+    robot = hybrid.Robot.from_urdf(write(tmp_path, edited("</robot>", branch + "</robot>")), tip="tool")
+    assert robot.n == 3
+    assert robot.links[1].mass == pytest.approx(plain.links[1].mass + n * 0.001)
+    # a second deep branch off another link, through revolute joints held at 0
+    revolute = branch.replace('type="fixed"', 'type="revolute"').replace(
+        "</joint>", '<axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>')
+    revolute = revolute.replace('"upper"', '"fore"').replace('name="b', 'name="c').replace('link="b', 'link="c')
+    both = hybrid.Robot.from_urdf(write(tmp_path, edited("</robot>", branch + revolute + "</robot>")), tip="tool")
+    assert both.links[2].mass == pytest.approx(plain.links[2].mass + n * 0.001)
+
+
+def long_arm(n: int) -> str:
+    """A URDF of ``n`` revolute joints in series (links l0 .. l{n})."""
+    parts = ['<robot name="long"><link name="l0"/>']
+    for i in range(n):
+        parts.append(f'<joint name="j{i}" type="revolute"><parent link="l{i}"/><child link="l{i + 1}"/>'
+                     f'<origin xyz="0 0 0.1"/><axis xyz="{["0 0 1", "0 1 0"][i % 2]}"/>'
+                     '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
+                     f'<link name="l{i + 1}"><inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" '
+                     'iyy="0.01" iyz="0" izz="0.01"/></inertial></link>')
+    return "".join(parts) + "</robot>"
+
+
+def test_long_chains_warn_then_are_refused(tmp_path):
+    import warnings
+
+    from hybrid.models.urdf import MAX_JOINTS, WARN_JOINTS
+
+    path = write(tmp_path, long_arm(MAX_JOINTS + 50))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # no warning below the threshold
+        assert hybrid.Robot.from_urdf(path, tip=f"l{WARN_JOINTS}").n == WARN_JOINTS
+    for n in (WARN_JOINTS + 1, MAX_JOINTS):
+        with pytest.warns(hybrid.LargeModelWarning, match=rf"has {n} moving joints: .* takes about .*minute"):
+            assert hybrid.Robot.from_urdf(path, tip=f"l{n}").n == n
+    for n in (MAX_JOINTS + 1, MAX_JOINTS + 50):
+        with pytest.raises(hybrid.URDFError, match=rf"has {n} moving joints; at most {MAX_JOINTS}") as info:
+            hybrid.Robot.from_urdf(path, tip=f"l{n}")
+        assert len(str(info.value).splitlines()) == 1
+    # locking joints brings a long arm under the bound
+    locked = {f"j{i}": 0.0 for i in range(60)}
+    with pytest.warns(hybrid.LargeModelWarning):
+        assert hybrid.Robot.from_urdf(path, tip=f"l{MAX_JOINTS + 50}", locked=locked).n == MAX_JOINTS - 10
+    from hybrid.native.standalone import generate
+
+    with pytest.raises(hybrid.URDFError, match="at most"):
+        generate(path, f"l{MAX_JOINTS + 1}", tmp_path / "gen")
+    assert not (tmp_path / "gen").exists()
+
+
+@pytest.mark.parametrize("name, problem", [
+    ("robôt", "non-ASCII character 'ô'"), ("ロボット", "non-ASCII"), ("arm\u200b", "U+200B"),
+    ("1arm", "does not start with a letter"), ("_arm", "does not start with a letter"), ("", "it is empty"),
+    ("my-arm", "the character '-'"), ("my arm", "the character ' '"), ("../arm", "the character '.'"),
+    ("arm;", "the character ';'"), ("a" * 1001, "1001 characters"), (3, "not text"),
+])
+def test_a_bad_name_for_the_generated_c_is_refused(tmp_path, name, problem):
+    from hybrid.native.standalone import generate
+
+    with pytest.raises(hybrid.HybridError, match=f"--name .* cannot name C symbols and files: .*{re.escape(problem)}") \
+            as info:
+        generate(write(tmp_path, SLIDER), "tool", tmp_path / "gen", name=name)
+    assert len(str(info.value).splitlines()) == 1 and len(str(info.value)) < 300
+    assert not (tmp_path / "gen").exists()
+
+
+def test_the_cli_refuses_a_non_ascii_name(tmp_path, capsys):
+    from hybrid.cli.main import main
+
+    assert main(["generate", "--urdf", str(write(tmp_path, SLIDER)), "--tip", "tool", "--out",
+                 str(tmp_path / "gen"), "--name", "bras_à_ressort"]) == 2
+    err = capsys.readouterr().err
+    assert "cannot name C symbols" in err and "e.g. 'bras_a_ressort'" in err and len(err.splitlines()) == 1
+
+
+@pytest.mark.parametrize("name", ["robôt", "ロボット", "ボ", "Ro bot✓", "1st arm", "_x", "", "ﬁne", "x" * 300,
+                                  "a\udc80b", "αβ", "γδ"])
+def test_derived_prefixes_are_ascii_c_names(name):
+    from hybrid.validate import MAX_PREFIX, c_identifier, c_name_problem
+
+    ident = c_identifier(name)
+    assert ident.isascii() and c_name_problem(ident) is None and len(ident) <= MAX_PREFIX
+    assert re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", ident)
+    assert c_identifier("αβ") != c_identifier("γδ")  # names that lose every letter stay apart
+    assert c_identifier("robôt") == "robot"
+
+
+def test_non_ascii_robot_and_joint_names_give_ascii_c(tmp_path):
+    """A URDF's own names may be anything: the files are ASCII, compile strictly, the manifest keeps the names."""
+    import json
+    import shutil
+    import subprocess
+
+    text = SLIDER.replace('name="slider_arm"', 'name="robôt✓"').replace('name="elbow"', 'name="ellbögen"') \
+        .replace('name="shoulder"', 'name="肩 *??/&#10;/ #error boom"')
+    path = write(tmp_path, text)
+    out = generate_default(path, tmp_path / "gen")
+    assert sorted(p.name for p in out)[0].startswith("robot_") and all(p.name.isascii() for p in out)
+    for p in out:
+        assert p.read_bytes().isascii(), p.name
+    manifest = json.loads(next(p for p in out if p.suffix == ".json").read_text())
+    assert [j["name"] for j in manifest["robot"]["joints"]] == ["slide", "肩 *??/\n/ #error boom", "ellbögen"]
+    c = next(p for p in out if p.suffix == ".c")
+    cc = shutil.which("gcc") or shutil.which("cc")
+    proc = subprocess.run([cc, "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-c", str(c), "-o",
+                           str(tmp_path / "x.o")], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr[:2000]
+
+
+def generate_default(path, out):
+    from hybrid.native.standalone import generate
+
+    return generate(path, "tool", out)

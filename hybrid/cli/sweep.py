@@ -19,6 +19,7 @@ from hybrid.errors import HybridError
 from hybrid.experiments import FACTORIES
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.sweeps import sweep
+from hybrid.validate import MAX_NESTING, check_nesting, shown
 
 DEMO = Path(__file__).resolve().parent.parent / "data" / "sweep_demo.toml"
 SECTIONS = {"experiment", "base", "parameters", "sweep", "figures"}
@@ -56,13 +57,13 @@ def _value(name: str, value):
             raise HybridError(f"parameter {name!r}: {kind} takes two numbers, e.g. {{{kind} = [0.0, 0.3]}}")
         return sw.DISTRIBUTIONS[kind](*args)
     if not isinstance(value, list):
-        raise HybridError(f"parameter {name!r}: give a list of values or a distribution table, got {value!r:.60}")
+        raise HybridError(f"parameter {name!r}: give a list of values or a distribution table, got {shown(value, 60)}")
     return value
 
 
 def _linspace(name: str, args) -> list[float]:
     usage = (f"parameter {name!r}: linspace takes the first and last values and a whole count of 1 to "
-             f"1,000,000, e.g. {{linspace = [0.0, 0.5, 11]}}; got {args!r:.60}")
+             f"1,000,000, e.g. {{linspace = [0.0, 0.5, 11]}}; got {shown(args, 60)}")
     numbers = (isinstance(args, list) and len(args) == 3 and not any(isinstance(a, bool) for a in args)
                and all(isinstance(a, (int, float)) for a in args))
     try:
@@ -99,8 +100,8 @@ def _base(kind: str, settings: dict):
                                   f"{typ.__name__} has {', '.join(sorted(known))}")
             value = typ(**value)
         made[key] = value
-    if kind not in FACTORIES:
-        raise HybridError(f"experiment = {kind!r}; give one of {', '.join(repr(k) for k in FACTORIES)}")
+    if not isinstance(kind, str) or kind not in FACTORIES:
+        raise HybridError(f"experiment = {shown(kind, 60)}; give one of {', '.join(repr(k) for k in FACTORIES)}")
     return FACTORIES[kind](**made)
 
 
@@ -112,6 +113,10 @@ def read_config(path: Path) -> dict:
         raise HybridError(f"cannot read the sweep file {path}: {exc.strerror}") from None
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
         raise HybridError(f"{path} is not valid TOML: {exc}") from None
+    except RecursionError:  # the TOML reader recurses into inline tables and arrays
+        raise HybridError(f"{path}: tables or lists are nested too deeply to read; write them at most "
+                          f"{MAX_NESTING} deep") from None
+    check_nesting(str(path), config)
     unknown = set(config) - SECTIONS
     if unknown:
         raise HybridError(f"{path}: unknown key(s) {', '.join(sorted(unknown))}; a sweep file has "
@@ -133,8 +138,8 @@ def check_figures(figures: dict | None, parameters, metrics) -> None:
         raise HybridError(f"[figures]: unknown {', '.join(sorted(set(figures) - known))}; it takes "
                           f"{', '.join(sorted(known))}")
     for key in ("x", "y", "rows", "cols"):
-        if key in figures and figures[key] not in parameters:
-            raise HybridError(f"[figures] {key} = {figures[key]!r} is not a swept parameter "
+        if key in figures and (not isinstance(figures[key], str) or figures[key] not in parameters):
+            raise HybridError(f"[figures] {key} = {shown(figures[key], 60)} is not a swept parameter "
                               f"({', '.join(parameters)})")
     if "x" not in figures or "y" not in figures:
         raise HybridError("[figures] needs x and y (two swept parameters)")

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import ast
 import hashlib
-import keyword
+import math
+import operator
 from dataclasses import dataclass
 
 import casadi as ca
@@ -19,7 +20,7 @@ import sympy as sp
 from hybrid.codegen import surfaces as cs
 from hybrid.errors import HybridError
 from hybrid.geometry.surfaces import Surface, SurfaceSpec, _unit_normal
-from hybrid.validate import _finite
+from hybrid.validate import _finite, check_identifier, shown
 
 
 @dataclass(frozen=True)
@@ -40,17 +41,19 @@ class ImplicitSurface(Surface):
         if not isinstance(self.parameters, dict):
             raise HybridError(f"ImplicitSurface.parameters must be a {{name: value}} dict, got "
                               f"{type(self.parameters).__name__}")
+        check_parameter_names(tuple(self.parameters))
         for name, value in self.parameters.items():
-            if not isinstance(name, str) or not name.isidentifier() or keyword.iskeyword(name) \
-                    or name in ("x", "y", "z"):
-                raise HybridError(f"ImplicitSurface parameter name {name!r} must be an identifier other "
-                                  "than x, y, z")
             _finite("ImplicitSurface", **{name: value})
         phi = self.phi
         if isinstance(phi, str):
             phi = parse_phi(phi, tuple(self.parameters))
         if not isinstance(phi, sp.Expr):
             raise HybridError(f"ImplicitSurface.phi must be a SymPy expression of x, y, z, got {type(phi).__name__}")
+        bad = _non_finite(phi)
+        if bad is not None:
+            raise HybridError(f"ImplicitSurface.phi = {shown(phi, 60)} has the value {bad} (a division by zero, "
+                              "the log of 0, the root of a negative number or a number beyond float range); "
+                              "write phi with real, finite values")
         # one symbol per name, real, whatever assumptions the user's symbols carried
         phi = phi.xreplace({s: sp.Symbol(str(s), real=True) for s in phi.free_symbols})
         names = {str(s) for s in phi.free_symbols}
@@ -87,46 +90,156 @@ class ImplicitSurface(Surface):
         return _unit_normal(g, f"grad phi vanishes at {p}")
 
 
-#: what a surface written as text may use besides numbers, x, y, z and its parameters
-PHI_FUNCTIONS = ("sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "exp", "log", "sqrt",
-                 "Abs", "Min", "Max")
-PHI_CONSTANTS = ("pi", "E")
+#: what a surface written as text may call, with the least and most arguments of each (None: any)
+PHI_FUNCTIONS = {"sin": (1, 1), "cos": (1, 1), "tan": (1, 1), "asin": (1, 1), "acos": (1, 1), "atan": (1, 1),
+                 "sinh": (1, 1), "cosh": (1, 1), "tanh": (1, 1), "exp": (1, 1), "log": (1, 1), "sqrt": (1, 1),
+                 "Abs": (1, 1), "Min": (2, None), "Max": (2, None)}
+PHI_CONSTANTS = {"pi": sp.pi, "E": sp.E}
 MAX_PHI_CHARS = 2000
-_PHI_NODES = (ast.Expression, ast.BinOp, ast.UnaryOp, ast.Add, ast.Sub, ast.Mult, ast.Div, ast.Pow,
-              ast.USub, ast.UAdd, ast.Load, ast.Name, ast.Constant, ast.Call)
+#: the deepest nesting of operations in a formula (SymPy and the generator walk it recursively)
+MAX_PHI_DEPTH = 100
+_PHI_NODES = (ast.BinOp, ast.UnaryOp, ast.Name, ast.Constant, ast.Call)
+_BINARY = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul, ast.Div: operator.truediv,
+           ast.Pow: operator.pow}
+_UNARY = {ast.USub: operator.neg, ast.UAdd: operator.pos}
+
+
+def check_parameter_names(parameters: tuple) -> None:
+    """Each parameter name an ASCII identifier that is none of ``x, y, z`` and does not hide one
+    of the functions or constants a formula may use."""
+    for name in parameters:
+        check_identifier("ImplicitSurface parameter name", name)
+        if name in ("x", "y", "z"):
+            raise HybridError(f"ImplicitSurface parameter name {name!r} must be an identifier other than x, y, z")
+        if name in PHI_FUNCTIONS or name in PHI_CONSTANTS:
+            what = "function" if name in PHI_FUNCTIONS else "constant"
+            raise HybridError(f"ImplicitSurface parameter name {name!r} hides the {what} {name} of phi's "
+                              "formulas; rename the parameter")
+
+
+def _arity(name: str) -> str:
+    least, most = PHI_FUNCTIONS[name]
+    if least == most:
+        return f"{least} argument" + ("s" if least != 1 else "")
+    return f"at least {least} arguments" if most is None else f"{least} to {most} arguments"
 
 
 def parse_phi(text: str, parameters: tuple[str, ...]) -> sp.Expr:
     """``phi`` written as text, read without running it: only arithmetic, numbers, ``x, y, z``,
-    the parameters, :data:`PHI_FUNCTIONS` and :data:`PHI_CONSTANTS` are accepted."""
-    shown = f"{text[:60]!r}" + ("..." if len(text) > 60 else "")
+    the parameters, :data:`PHI_FUNCTIONS` (each with its number of arguments) and
+    :data:`PHI_CONSTANTS` are accepted. The expression is built from the checked syntax tree
+    itself (no SymPy parser, whose own names a parameter could hide)."""
+    if not isinstance(text, str):
+        raise HybridError(f"ImplicitSurface.phi as text must be a str, got {type(text).__name__}")
+    check_parameter_names(tuple(parameters))
+    shown_text = f"{text[:60]!r}" + ("..." if len(text) > 60 else "")
     if len(text) > MAX_PHI_CHARS:
         raise HybridError(f"ImplicitSurface.phi is {len(text)} characters; write it in at most {MAX_PHI_CHARS}")
     try:
         tree = ast.parse(text.strip(), mode="eval")
     except SyntaxError as exc:
-        raise HybridError(f"ImplicitSurface.phi {shown} is not an expression ({exc.msg}, "
+        raise HybridError(f"ImplicitSurface.phi {shown_text} is not an expression ({exc.msg}, "
                           f"column {exc.offset})") from None
-    names = {*parameters, "x", "y", "z", *PHI_FUNCTIONS, *PHI_CONSTANTS}
-    for node in ast.walk(tree):
-        bad = None
-        if not isinstance(node, _PHI_NODES):
-            bad = f"{type(node).__name__.lower()} syntax"
-        elif isinstance(node, ast.Name) and node.id not in names:
-            bad = f"the name {node.id!r} (not x, y, z, a parameter, a known function or pi, E)"
-        elif isinstance(node, ast.Constant) and (not isinstance(node.value, (int, float))
-                                                 or isinstance(node.value, bool) or not abs(node.value) < 1e300):
-            bad = f"the constant {node.value!r:.30}"
-        elif isinstance(node, ast.Call) and (node.keywords or not isinstance(node.func, ast.Name)
-                                             or node.func.id not in PHI_FUNCTIONS):
-            bad = "a call that is not one of " + ", ".join(PHI_FUNCTIONS)
-        elif isinstance(node, ast.BinOp) and isinstance(node.op, ast.Pow) and not _small_exponent(node.right):
-            bad = "an exponent that is not a number of at most 64 in size or an expression of x, y, z"
-        if bad:
-            raise HybridError(f"ImplicitSurface.phi {shown} uses {bad}; write phi with +, -, *, /, **, numbers, "
-                              "x, y, z, its parameters and " + ", ".join(PHI_FUNCTIONS))
+    except (RecursionError, MemoryError):  # the parser's own limit on nesting
+        raise HybridError(f"ImplicitSurface.phi {shown_text} is nested too deeply; write it with at most "
+                          f"{MAX_PHI_DEPTH} levels of operations") from None
     symbols = {n: sp.Symbol(n, real=True) for n in (*parameters, "x", "y", "z")}
-    return sp.sympify(text, locals=symbols, evaluate=False)
+
+    def refuse(bad: str):
+        raise HybridError(f"ImplicitSurface.phi {shown_text} uses {bad}; write phi with +, -, *, /, **, numbers, "
+                          "x, y, z, its parameters and " + ", ".join(PHI_FUNCTIONS))
+
+    # post-order over the tree with an explicit stack: a long formula cannot exhaust Python's recursion
+    done: dict[int, sp.Expr] = {}
+    stack = [(tree.body, 1, False)]
+    while stack:
+        node, depth, ready = stack.pop()
+        if depth > MAX_PHI_DEPTH:
+            raise HybridError(f"ImplicitSurface.phi {shown_text} is nested more than {MAX_PHI_DEPTH} levels deep; "
+                              "write it more simply")
+        kids = _operands(node, refuse)
+        if not ready:
+            stack.append((node, depth, True))
+            # SymPy flattens a chain of sums (or of products) into one node: only other operations nest
+            stack.extend((k, depth + (0 if _group(k) is not None and _group(k) == _group(node) else 1), False)
+                         for k in kids)
+            continue
+        done[id(node)] = _build(node, [done.pop(id(k)) for k in kids], symbols, refuse)
+    return done[id(tree.body)]
+
+
+def _group(node) -> str | None:
+    """``"sum"`` or ``"product"`` for a node SymPy merges with a parent of the same group."""
+    if isinstance(node, ast.BinOp):
+        return {ast.Add: "sum", ast.Sub: "sum", ast.Mult: "product", ast.Div: "product"}.get(type(node.op))
+    return None
+
+
+def _operands(node, refuse) -> list:
+    """The operands of one node of a formula, after checking the node itself."""
+    if not isinstance(node, _PHI_NODES):
+        refuse(f"{type(node).__name__.lower()} syntax")
+    if isinstance(node, ast.BinOp):
+        if type(node.op) not in _BINARY:
+            refuse(f"the operator {type(node.op).__name__}")
+        if isinstance(node.op, ast.Pow) and not _small_exponent(node.right):
+            refuse("an exponent that is not a number of at most 64 in size or an expression of x, y, z")
+        return [node.left, node.right]
+    if isinstance(node, ast.UnaryOp):
+        if type(node.op) not in _UNARY:
+            refuse(f"the operator {type(node.op).__name__}")
+        return [node.operand]
+    if isinstance(node, ast.Call):
+        if node.keywords or not isinstance(node.func, ast.Name) or node.func.id not in PHI_FUNCTIONS:
+            refuse("a call that is not one of " + ", ".join(PHI_FUNCTIONS))
+        name, n = node.func.id, len(node.args)
+        least, most = PHI_FUNCTIONS[name]
+        if n < least or (most is not None and n > most):
+            refuse(f"{name} with {n} argument{'s' if n != 1 else ''} ({name} takes {_arity(name)})")
+        return list(node.args)
+    return []
+
+
+def _build(node, args: list, symbols: dict, refuse) -> sp.Expr:
+    """The SymPy expression of one checked node from those of its operands."""
+    if isinstance(node, ast.BinOp):
+        return _BINARY[type(node.op)](*args)
+    if isinstance(node, ast.UnaryOp):
+        return _UNARY[type(node.op)](args[0])
+    if isinstance(node, ast.Call):
+        return getattr(sp, node.func.id)(*args)
+    if isinstance(node, ast.Name):
+        if node.id in symbols:
+            return symbols[node.id]
+        if node.id in PHI_CONSTANTS:
+            return PHI_CONSTANTS[node.id]
+        if node.id in PHI_FUNCTIONS:
+            refuse(f"the function {node.id} without calling it")
+        refuse(f"the name {node.id!r} (not x, y, z, a parameter, a known function or pi, E)")
+    value = node.value
+    if not isinstance(value, (int, float)) or isinstance(value, bool) or not abs(value) < 1e300:
+        refuse(f"the constant {value!r:.30}")
+    return sp.Integer(value) if isinstance(value, int) else sp.Float(value)
+
+
+def _non_finite(phi: sp.Expr) -> str | None:
+    """A value of ``phi`` that C cannot hold as a finite double (zoo, nan, oo, I, 1e400), or None."""
+    for bad in (sp.zoo, sp.nan, sp.oo, -sp.oo, sp.I):
+        if phi.has(bad):
+            return str(bad)
+    for number in phi.atoms(sp.Number):
+        try:
+            ok = math.isfinite(float(number))
+        except (OverflowError, TypeError, ValueError):
+            ok = False
+        if not ok:
+            return str(number.evalf(6))[:30]
+    for term in phi.atoms(sp.Function, sp.Pow):  # a constant part such as acos(2) or (-8)**(1/3)
+        if not term.free_symbols:
+            value = complex(term.evalf())
+            if not (math.isfinite(value.real) and value.imag == 0):
+                return f"{term} = {value:.6g}"
+    return None
 
 
 def _small_exponent(node) -> bool:
