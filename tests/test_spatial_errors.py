@@ -125,7 +125,7 @@ def test_wrong_shapes_name_the_argument(law):
     (lambda: hybrid.ImplicitSurface("x**2 + y**2 - r**2", {}), "uses the name 'r'"),
     (lambda: hybrid.ImplicitSurface(sp.Symbol("x") ** 2 - sp.Symbol("r"), {}), "uses r, which parameters does not"),
     (lambda: hybrid.ImplicitSurface("__import__('os').getcwd() or x", {}), "uses .* syntax"),
-    (lambda: hybrid.ImplicitSurface("x - factorial(10)", {}), "a call that is not one of"),
+    (lambda: hybrid.ImplicitSurface("x - factorial(10)", {}), "not one of the functions below"),
     (lambda: hybrid.ImplicitSurface("x - 2**2**40", {}), "exponent"),
     (lambda: hybrid.ImplicitSurface("x" + " + x" * 1000, {}), "characters; write it in at most"),
     (lambda: hybrid.ImplicitSurface("a + 1", {"a": 1.0}), "does not depend on x, y or z"),
@@ -299,8 +299,8 @@ def test_non_finite_tau0_is_refused_even_where_it_has_no_effect(law):
     # a function used as a value, a constant or parameter called
     ("sin + x", {}, "the function sin without calling it"),
     ("x * cos", {}, "the function cos without calling it"),
-    ("x - pi(1)", {}, "a call that is not one of"),
-    ("x - a(1)", {"a": 1.0}, "a call that is not one of"),
+    ("x - pi(1)", {}, "not one of the functions below"),
+    ("x - a(1)", {"a": 1.0}, "not one of the functions below"),
     # parameter names that hide a function or a constant
     ("x - sin", {"sin": 1.0}, "parameter name 'sin' hides the function sin"),
     ("x - pi", {"pi": 3}, "parameter name 'pi' hides the constant pi"),
@@ -320,7 +320,7 @@ def test_non_finite_tau0_is_refused_even_where_it_has_no_effect(law):
 def test_phi_text_arity_shadowing_and_values(text, parameters, match):
     with pytest.raises(hybrid.HybridError, match=match) as info:
         hybrid.ImplicitSurface(text, parameters)
-    assert len(str(info.value).splitlines()) == 1 and len(str(info.value)) < 400
+    assert len(str(info.value).splitlines()[0]) < 200  # the allowed functions follow on the next line
 
 
 def test_phi_text_builds_the_same_expression_as_sympy():

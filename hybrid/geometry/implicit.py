@@ -51,9 +51,9 @@ class ImplicitSurface(Surface):
             raise HybridError(f"ImplicitSurface.phi must be a SymPy expression of x, y, z, got {type(phi).__name__}")
         bad = _non_finite(phi)
         if bad is not None:
-            raise HybridError(f"ImplicitSurface.phi = {shown(phi, 60)} has the value {bad} (a division by zero, "
-                              "the log of 0, the root of a negative number or a number beyond float range); "
-                              "write phi with real, finite values")
+            raise HybridError(f"ImplicitSurface.phi = {shown(phi, 60)} has the value {bad}; write phi with real, "
+                              "finite values\n  (a division by zero, the log of 0, the root of a negative number or a "
+                              "number beyond float range)")
         # one symbol per name, real, whatever assumptions the user's symbols carried
         phi = phi.xreplace({s: sp.Symbol(str(s), real=True) for s in phi.free_symbols})
         names = {str(s) for s in phi.free_symbols}
@@ -146,8 +146,8 @@ def parse_phi(text: str, parameters: tuple[str, ...]) -> sp.Expr:
     symbols = {n: sp.Symbol(n, real=True) for n in (*parameters, "x", "y", "z")}
 
     def refuse(bad: str):
-        raise HybridError(f"ImplicitSurface.phi {shown_text} uses {bad}; write phi with +, -, *, /, **, numbers, "
-                          "x, y, z, its parameters and " + ", ".join(PHI_FUNCTIONS))
+        raise HybridError(f"ImplicitSurface.phi {shown_text} uses {bad}; write it with the operations below\n"
+                          "  +, -, *, /, **, numbers, x, y, z, its parameters, pi, E and " + ", ".join(PHI_FUNCTIONS))
 
     # post-order over the tree with an explicit stack: a long formula cannot exhaust Python's recursion
     done: dict[int, sp.Expr] = {}
@@ -191,7 +191,9 @@ def _operands(node, refuse) -> list:
         return [node.operand]
     if isinstance(node, ast.Call):
         if node.keywords or not isinstance(node.func, ast.Name) or node.func.id not in PHI_FUNCTIONS:
-            refuse("a call that is not one of " + ", ".join(PHI_FUNCTIONS))
+            called = node.func.id if isinstance(node.func, ast.Name) else "an expression"
+            refuse(f"a call of {called!r}, not one of the functions below" if not node.keywords
+                   else "a call with keyword arguments")
         name, n = node.func.id, len(node.args)
         least, most = PHI_FUNCTIONS[name]
         if n < least or (most is not None and n > most):
