@@ -118,3 +118,19 @@ def pinocchio_panda():
     model = pin.buildReducedModel(model, [model.getJointId(n) for n in model.names[1:] if n not in names],
                                   pin.neutral(model))
     return pin, model, model.createData(), model.getFrameId(PANDA[1])
+
+
+def task_acceleration_gap(panda, exp, ctrl, q, qdot, Fc, tau):
+    """How far the task acceleration ``R v' + R' v`` of Pinocchio's arm under the torque ``tau`` and the
+    sensor's force ``Fc`` is from the loops' ``a`` of the controller's latest sample, and ``J``."""
+    from hybrid import reference as ref
+
+    pin, model, data, fid = panda
+    pin.forwardKinematics(model, data, q, qdot, np.zeros(len(q)))
+    pin.updateFramePlacements(model, data)
+    J = pin.computeFrameJacobian(model, data, q, fid, pin.LOCAL_WORLD_ALIGNED)
+    Jdqd = pin.getFrameClassicalAcceleration(model, data, fid, pin.LOCAL_WORLD_ALIGNED).vector
+    qdd = pin.aba(model, data, q, qdot, tau + J[:3].T @ Fc[:3] - np.array(exp.robot.damping) * qdot)
+    v, vdot = J @ qdot, J @ qdd + Jdqd
+    R, Rd = ref.spatial_frame(exp.surface, data.oMf[fid].translation.copy(), v[:3], exp.reference)
+    return np.abs(blockdiag(R) @ vdot + blockdiag(Rd) @ v - ctrl.last["a"]).max(), J
