@@ -4,7 +4,7 @@
 integration settings, ``HL_W`` at a time (see :mod:`codegen.lanes`): per control sample, the
 sensor's reading, one controller step (measurement, loops, law, its guards), then
 ``steps_per_sample`` classical RK4 steps of the plant with the torque held (zero-order hold). The
-metrics of NOTES section 8 are updated on the fly, row by row (the definitions of
+metrics of conventions §8 are updated on the fly, row by row (the definitions of
 :func:`hybrid.metrics`): a row's with its step's first stage, which gives the signals they read, the
 last row's after the last step. The joints' sin and cos are computed once a step, at its start; the
 stages rotate from there. Per-step states and torques are written only when asked.

@@ -1,6 +1,6 @@
 """One control sample in generated C: measurement, the task-frame loops, the control law.
 
-The loops of NOTES section 4, one per task axis ``i`` in the loop frame ``R_f`` (rows of
+The loops of conventions §4, one per task axis ``i`` in the loop frame ``R_f`` (rows of
 ``R = diag(R_L, R_L)`` at the arm tip, or at a desired point), with ``sigma_i = 1`` on a
 force-controlled axis. Integrals advance once per sample period ``T``, current error
 included (``z1 += T e``, ``z2 += T z1``):
@@ -43,7 +43,7 @@ space only, and leaves the null space to fall). Every step takes the ``posture``
 others ignore it, so the law without a posture is ``controller_step``'s own code, bit for bit (a
 step computing ``tau0`` from zero gains would agree within rounding only: the C compiler's fused
 multiply-adds follow the code around them). A square task (``m = n``) has no null space.
-``raibert_craig_step`` maps the same loops without dynamic decoupling (NOTES section 7):
+``raibert_craig_step`` maps the same loops without dynamic decoupling (conventions §7):
 
     tau = diag(B) q''_m + J_y^T Sigma w + g(q),   w_i = -F_d,i + a_i / KP_i  (m_d a_i, force axes)
 
@@ -145,7 +145,7 @@ def _wrapped(angle):
 
 
 def _euler_map_of(Rot):
-    """``T_A(phi)`` (NOTES section 9) from the rotation itself: the sines and cosines of ``alpha,
+    """``T_A(phi)`` (conventions §9) from the rotation itself: the sines and cosines of ``alpha,
     beta`` are ratios of its entries, so no trigonometric call is needed."""
     cb = ca.sqrt(Rot[0, 0] ** 2 + Rot[1, 0] ** 2)
     inv = 1 / cb

@@ -3,7 +3,7 @@
 Every function here returns plain SymPy expressions of named input symbols. The
 backends turn a :class:`Kernel` (named input arrays, named output arrays) into C.
 
-Conventions are those of ``shared/paper/NOTES.md`` section 3: planar serial arm of
+Conventions are those of docs/conventions.md §3: planar serial arm of
 revolute joints, task axis 0 tangent (velocity), axis 1 normal pointing from the
 surface to the robot (force), ``F_c`` the force on the robot in the base frame.
 """
@@ -206,7 +206,7 @@ def operational_space(arm: ArmModel):
 
 
 def decoupling_law(kind: str, arm: ArmModel):
-    """The corrected decoupling law of NOTES section 2 for a planar two-link arm.
+    """The corrected decoupling law of conventions §2 for a planar two-link arm.
 
     ``F* = B_o R^T (a - kappa R' r') + n_o - F_c`` and ``tau = J^T F*``, evaluated as
     ``q''* = J^{-1} (R^T (a - kappa R' r') - J' q')``, ``tau = B q''* + n - J^T F_c``,

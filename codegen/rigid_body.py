@@ -1,6 +1,6 @@
 """Recursive rigid-body algorithms of a serial chain, as CasADi SX expressions.
 
-Conventions of ``shared/paper/NOTES.md`` section 9. Every spatial quantity is in base axes,
+Conventions of docs/conventions.md §9. Every spatial quantity is in base axes,
 about the base origin (Featherstone's "world coordinates"): a motion vector is
 ``(w, v_O)``, the angular velocity and the velocity of the body point at the base origin;
 a force vector ``(n_O, f)``. Joint ``i``'s motion subspace is then ``S_i = (z_i, p_i x z_i)``

@@ -1,4 +1,4 @@
-"""The 3-D experiment's plant (NOTES section 10) as generated C: any serial arm, a 3-D elastic force
+"""The 3-D experiment's plant (conventions §10) as generated C: any serial arm, a 3-D elastic force
 sensor at its tip, penalty contact on any surface, Coulomb friction against the sliding velocity.
 
 State ``x = (q, q', s, s')``: the joints and the sensor tip ``s`` (mass ``m_s``, base axes) tied

@@ -1,6 +1,6 @@
 """Surfaces ``phi(p) = 0`` and the task frame ``R_L(p)`` on them, with its exact ``R_L'(p, p')``.
 
-Conventions of ``shared/paper/NOTES.md`` section 9: ``phi > 0`` on the robot's side, unit
+Conventions of docs/conventions.md §9: ``phi > 0`` on the robot's side, unit
 normal ``n = grad phi / |grad phi|`` from the surface to the robot; task-frame rows
 ``t1 = e x n / |e x n|``, ``t2 = n x t1``, ``n`` for a reference direction ``e``. ``R_L'`` is
 the directional derivative of ``R_L`` along ``p'``: it carries the surface's curvature.

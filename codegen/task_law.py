@@ -1,4 +1,4 @@
-"""The decoupling law in its general (spatial) form, NOTES section 9, for any serial arm and surface.
+"""The decoupling law in its general (spatial) form, conventions §9, for any serial arm and surface.
 
 Task axes: the six rows of ``R = diag(R_L, R_L)`` (``t1, t2, n`` linear, then angular about
 the same axes); a task uses ``m`` of them (``axes``): all six, the three linear ones
@@ -10,8 +10,8 @@ axes, where ``R_m = R`` is a rotation, the code works with ``J`` and ``R^T a``, 
     F*   = R_m^T f_y                                   (a wrench, base axes)
     tau  = J_y^T f_y + (I - J_y^T Jbar_y^T) tau0       (= J^T F* + null-space torque)
 
-For all six axes this is ``F* = Lambda (R^T (a - R' v) - J' q') + Jbar^T n - F_c`` of NOTES
-section 9; applying ``tau`` gives ``R_m v' + R_m' v = a`` whatever ``tau0``. A square task
+For all six axes this is ``F* = Lambda (R^T (a - R' v) - J' q') + Jbar^T n - F_c`` of conventions
+§9; applying ``tau`` gives ``R_m v' + R_m' v = a`` whatever ``tau0``. A square task
 (``m = n``) is solved through the thin QR of ``J_y^T``, and ``tau = B q''* + n - J^T F_c`` by one
 Newton-Euler pass (no ``B`` at all; ``tau0`` has no effect); a redundant one through the Cholesky
 factors of ``B`` and of ``Lambda_y^-1``.
@@ -169,7 +169,7 @@ def euler_zyx(Rot):
 
 
 def euler_map(phi) -> ca.SX:
-    """``T_A(phi)`` with ``w = T_A phi'`` (NOTES section 9)."""
+    """``T_A(phi)`` with ``w = T_A phi'`` (conventions §9)."""
     return euler_map_of(ca.sin(phi[0]), ca.cos(phi[0]), ca.sin(phi[1]), ca.cos(phi[1]))
 
 

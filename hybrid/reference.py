@@ -2,7 +2,7 @@
 
 It serves as the test reference for the generated C and as the "what a user would
 otherwise write" path of the benchmarks. Closed forms for the two-link arm follow
-NOTES section 3; the law follows NOTES section 2 literally (forming ``B_o`` and ``n_o``).
+conventions §3; the law follows conventions §2 literally (forming ``B_o`` and ``n_o``).
 All functions take one state; parameters are the arrays of the generated C.
 """
 
@@ -81,7 +81,7 @@ def operational_space(q, qd, arm):
 
 
 def decoupling_law(kind, q, qd, a, Fc, arm, surface, curvature):
-    """``(F*, tau)`` of NOTES section 2: ``F* = B_o R^T (a - R' r') + n_o - F_c``."""
+    """``(F*, tau)`` of conventions §2: ``F* = B_o R^T (a - R' r') + n_o - F_c``."""
     r, J, _ = kinematics(q, qd, arm)
     rd = J @ qd
     R, Rd = frame(kind, r, rd, surface)
@@ -148,7 +148,7 @@ def plant_outputs(kind, x, arm, plant, surface):
     return np.array([*r, *(R @ rd), *Fc, *(R @ Fc), *s, delta, N, f, v])
 
 
-# ------------------------------------------------------------ spatial (NOTES section 9)
+# ------------------------------------------------------------ spatial (conventions §9)
 
 
 def _gradient_and_hessian(surface, p):
@@ -187,7 +187,7 @@ def _implicit_derivatives(surface):
 
 
 def spatial_frame(surface, p, pd, e):
-    """``R_L`` (rows ``t1, t2, n``) and ``R_L'`` of NOTES section 9, differentiated by hand:
+    """``R_L`` (rows ``t1, t2, n``) and ``R_L'`` of conventions §9, differentiated by hand:
     ``n' = (I - n n^T) H p' / |grad phi|``, ``t1' = (I - t1 t1^T)(e x n') / |e x n|``,
     ``t2' = n' x t1 + n x t1'``."""
     g, H = _gradient_and_hessian(surface, p)
@@ -203,7 +203,7 @@ def spatial_frame(surface, p, pd, e):
 
 
 def spatial_decoupling_law(J, Jdqd, B, n, R_L, Rd_L, qd, a, Fc, tau0, axes, curvature):
-    """``(F*, tau)`` of NOTES section 9 from the arm's terms, written literally with inverses:
+    """``(F*, tau)`` of conventions §9 from the arm's terms, written literally with inverses:
     ``f_y = Lambda_y (a - R_m' v - R_m J' q') + Jbar_y^T (n - J^T F_c)``, ``F* = R_m^T f_y``,
     ``tau = J_y^T f_y + (I - J_y^T Jbar_y^T) tau0``, ``J_y = R_m J``."""
     Z = np.zeros((3, 3))
@@ -256,7 +256,7 @@ class NumpyPlant:
 
 
 class NumpyController:
-    """The paper's sampled controller written from NOTES sections 4 and 7 (tangent velocity loop
+    """The paper's sampled controller written from conventions §4 and §7 (tangent velocity loop
     PI^2, normal force loop impedance + integral; integrals advanced once per sample, current
     error included), on the closed forms above: ``tau = controller(t, q, qdot, Fc)``."""
 

@@ -56,7 +56,7 @@ def test_compiled_runs_equal_the_python_runner(case):
 
 @pytest.mark.parametrize("overrides", [{}, {"controller": "khatib", "contact": hybrid.Contact(friction=0.3)}])
 def test_the_3d_experiment_in_c_equals_the_python_runner(overrides):
-    """The UR5 on the sphere (NOTES section 10): the 6-joint plant and six-axis controller as lanes."""
+    """The UR5 on the sphere (conventions §10): the 6-joint plant and six-axis controller as lanes."""
     from hybrid.plants.rigid_body import RigidBodyPlant
 
     exp = hybrid.tracing_experiment(duration=0.8, **overrides)

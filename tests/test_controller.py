@@ -45,7 +45,7 @@ def test_from_experiment_in_an_independent_numpy_plant_gives_simulates_forces_an
 
 def test_paper_controller_equals_the_numpy_controller_on_random_samples(rng):
     """Every option of the experiment maps onto the component: same torques as the NumPy controller
-    written from NOTES sections 4 and 7, over sequences of random samples (the integrals carry over)."""
+    written from conventions §4 and §7, over sequences of random samples (the integrals carry over)."""
     for controller, frame, curvature, integral in itertools.product(("task", "khatib"), ("actual", "desired"),
                                                                     (False, True), (False, True)):
         exp = hybrid.paper_experiment(controller=controller, frame=frame, curvature=curvature, integral=integral)
@@ -58,7 +58,7 @@ def test_paper_controller_equals_the_numpy_controller_on_random_samples(rng):
 
 
 def loops_by_hand(y, f, z, yd, rate, gains, sigma, T, r_err=None, limit=np.inf, loss=None):
-    """NOTES section 4 per axis, written from the text (z: one (int e, int int e) row per axis), with
+    """conventions §4 per axis, written from the text (z: one (int e, int int e) row per axis), with
     the options of the controller: position error r_err, anti-windup limit, contact-loss rule."""
     a, z_old, z = np.zeros(len(y)), z.copy(), z.copy()
     for i in range(len(y)):
@@ -95,7 +95,7 @@ def zyx_angles(R):
 
 
 def euler_map(phi):
-    """T_A of NOTES section 9: w = T_A phi'."""
+    """T_A of conventions §9: w = T_A phi'."""
     sa, ca, sb, cb = np.sin(phi[0]), np.cos(phi[0]), np.sin(phi[1]), np.cos(phi[1])
     return np.array([[0, -sa, ca * cb], [0, ca, sa * cb], [1, 0, -sb]])
 
@@ -111,7 +111,7 @@ class Ramp:
 
 
 def hand_torque(scheme, J, Jdqd, B, n, gravity, R, Rd, qd, a, Fc, yd, sigma, gains):
-    """The scheme's torque from Pinocchio's terms, written from NOTES sections 7 and 9."""
+    """The scheme's torque from Pinocchio's terms, written from conventions §7 and §9."""
     if scheme in ("task", "khatib"):
         contact = blockdiag(R).T @ (sigma * yd) if scheme == "khatib" else Fc
         return ref.spatial_decoupling_law(J, Jdqd, B, n, R, Rd, qd, a, contact, np.zeros(len(qd)), range(6), True)[1]

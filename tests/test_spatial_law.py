@@ -1,4 +1,4 @@
-"""The general (6-D) decoupling law of NOTES section 9 against Pinocchio + NumPy, finite differences and physics."""
+"""The general (6-D) decoupling law of conventions §9 against Pinocchio + NumPy, finite differences and physics."""
 
 from __future__ import annotations
 

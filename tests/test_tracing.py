@@ -1,4 +1,4 @@
-"""The 3-D experiment (NOTES section 10) checked against physics and against Pinocchio."""
+"""The 3-D experiment (conventions §10) checked against physics and against Pinocchio."""
 
 from __future__ import annotations
 

@@ -21,7 +21,7 @@ PRODUCTS = ("metrics.json", "metrics.csv", *(f"{c}.{ext}" for c in SCHEMES for e
 
 def add_parser(sub) -> None:
     p = sub.add_parser("paper", help="run the schemes on the paper's experiment; write figures and metrics")
-    t = sub.add_parser("trace", help="run the schemes on the 3-D experiment (UR5 on a sphere, NOTES section 10); "
+    t = sub.add_parser("trace", help="run the schemes on the 3-D experiment (UR5 on a sphere, conventions §10); "
                                      "write figures and metrics")
     for q in (p, t):
         q.add_argument("--out", required=True, help="folder for figures, metrics and time series")

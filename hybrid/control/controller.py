@@ -1,7 +1,7 @@
 """The hybrid controller as a component: ``tau = ctrl(t, q, qdot, Fc)`` in any loop.
 
 One control sample is one native call (see :mod:`codegen.controller_step`): the task-frame
-measurement, the loops of NOTES section 4 on every task axis, and the decoupling law. The
+measurement, the loops of conventions §4 on every task axis, and the decoupling law. The
 controller keeps the loops' integrals between calls. References that are numbers or steps
 are evaluated in the compiled step at the sample time ``t``; others, given as code, in Python.
 """
@@ -159,7 +159,7 @@ class Controller:
         ``{axis name: value}``. Default: 10 N on the normal when it is a force axis, every other
         reference 0.
     sample_time : the period ``T`` [s] at which the integrals advance.
-    integral : with ``False`` the integral actions ``KI2v, KIf`` are 0 (NOTES section 4).
+    integral : with ``False`` the integral actions ``KI2v, KIf`` are 0 (conventions §4).
     curvature : give ``R'`` to the law (with ``frame="desired"``: the loop frame's ``R_d'``).
     frame : ``"actual"`` (loops in ``R(r)``) or ``"desired"`` (in ``R(r_d)``, the paper's Figure 3),
         which needs ``path``.

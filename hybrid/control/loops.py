@@ -19,7 +19,7 @@ from hybrid.validate import _finite, field_values
 
 @dataclass(frozen=True)
 class Gains:
-    """Loop gains of NOTES section 4 (task frame, per axis).
+    """Loop gains of conventions §4 (task frame, per axis).
 
     Velocity: ``a_t = v_d' + KPv e_v + KIv int e_v + KI2v int int e_v``.
     Force: ``a_n = -KPf e_F - KDf v_n - KIf int e_F`` with ``e_F = F_d - F_c,n``.

@@ -1,7 +1,7 @@
 """Hybrid control schemes, as registered classes: what the loops' output becomes.
 
-Every scheme shares the task-frame loops (NOTES section 4); they differ in how the loops'
-accelerations and the contact force become joint torques (NOTES section 7). A scheme is
+Every scheme shares the task-frame loops (conventions §4); they differ in how the loops'
+accelerations and the contact force become joint torques (conventions §7). A scheme is
 named by its ``name`` in :data:`SCHEMES` (``Controller(..., scheme="khatib")``) and carries its
 behaviour as explicit properties, which the generated controller step reads.
 """

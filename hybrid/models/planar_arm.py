@@ -14,7 +14,7 @@ from hybrid.validate import _finite, check_model_error, field_values
 
 @dataclass(frozen=True)
 class Arm:
-    """Planar two-link arm of revolute joints (NOTES section 3 and 5).
+    """Planar two-link arm of revolute joints (conventions §3 and §5).
 
     Link ``i`` has length ``Li`` [m], mass ``mi`` [kg] with its centre of mass at ``di`` [m]
     along the link, inertia ``Ii`` [kg m^2] about that centre, joint viscosity ``Vi``
@@ -109,5 +109,5 @@ def check_arm(arm) -> None:
 
 
 def paper_arm() -> Arm:
-    """The two-link SCARA of the paper (NOTES section 5)."""
+    """The two-link SCARA of the paper (conventions §5)."""
     return Arm(L1=0.45, L2=0.32, m1=0.0, m2=3.5, d1=0.0, d2=0.15, I1=0.25, I2=0.16, V1=1.3, V2=0.2)

@@ -104,7 +104,7 @@ class Robot:
 
     @classmethod
     def planar(cls, arm: Arm) -> Robot:
-        """The paper's planar arm (NOTES section 3) as a serial chain: revolute joints about base z,
+        """The paper's planar arm (conventions §3) as a serial chain: revolute joints about base z,
         links along x, the tip at ``L2`` beyond joint 2, gravity ``arm.gravity`` along ``-y``."""
         if not isinstance(arm, Arm):
             raise HybridError(f"arm must be a hybrid.Arm, got {type(arm).__name__}")

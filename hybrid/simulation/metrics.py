@@ -1,4 +1,4 @@
-"""Metrics of a run (NOTES section 8), named with their units, from any time series."""
+"""Metrics of a run (conventions §8), named with their units, from any time series."""
 
 from __future__ import annotations
 
@@ -48,7 +48,7 @@ def _finite_series(name: str, arr: np.ndarray) -> np.ndarray:
 
 def metrics(t, force_normal, velocity_tangential, force_reference, speed_reference, *, force_step=None,
             speed_step=None, penetration=None, contact_force=None, tau=None) -> dict:
-    """NOTES section 8 metrics of one run from its time series (one value per sample of ``t`` [s]).
+    """conventions §8 metrics of one run from its time series (one value per sample of ``t`` [s]).
 
     Parameters
     ----------
