@@ -12,7 +12,7 @@ def test_bench_quick_reports_every_benchmark():
                  "1,000 paper runs by hybrid.sweep"):
         assert part in names
     assert all(r["median"] > 0 for r in report["results"])
-    # the issue's targets are reported (met or not), never asserted
+    # the targets are reported (met or not), never asserted
     assert {r["name"] for r in report["results"] if "target" in r} >= {
         "F* in C, sympy backend, per call", "F* from Python, one state (law(q, qdot, a, Fc))",
         "panda: r, rotation, J, J'q', B, n in C, per call (robot_terms)"}
