@@ -26,6 +26,7 @@ runs only when a unit must be built, and :class:`ImplicitSurface` (a SymPy expre
 
 from __future__ import annotations
 
+from hybrid._version import __version__
 from hybrid.control.controller import ContactLoss, Controller, Measurement, Posture, Reference
 from hybrid.control.law import DecouplingLaw, decoupling_law
 from hybrid.control.loops import Gains
@@ -75,11 +76,11 @@ def __dir__() -> list[str]:
 
 
 __all__ = [
-    "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw",
-    "Experiment", "Gains", "HybridError", "ImplicitSurface", "Khatib", "LargeModelWarning", "LinePath",
-    "Measurement", "NativeBuildError", "NonFiniteError", "OperationalSpace", "PANDA_URDF", "Plane", "Posture",
-    "Reference", "Robot", "SCHEMES", "Scheme", "Sensor", "SimulationError", "SimulationResult",
-    "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "UR5_URDF", "URDFError",
-    "arm_terms", "decoupling_law", "metrics", "operational_space", "panda", "panda_experiment", "paper_arm",
-    "paper_experiment", "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",
+    "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw", "Experiment",
+    "Gains", "HybridError", "ImplicitSurface", "Khatib", "LargeModelWarning", "LinePath", "Measurement",
+    "NativeBuildError", "NonFiniteError", "OperationalSpace", "PANDA_URDF", "Plane", "Posture", "Reference", "Robot",
+    "SCHEMES", "Scheme", "Sensor", "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere",
+    "Step", "TaskDecoupling", "TaskFrameError", "UR5_URDF", "URDFError", "__version__", "arm_terms",
+    "decoupling_law", "metrics", "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment",
+    "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",
 ]

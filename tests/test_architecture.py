@@ -354,3 +354,12 @@ def test_a_warm_run_needs_neither_sympy_nor_casadi(tmp_path):
     again = _run(["-c", code], tmp_path)
     assert again.returncode == 0, again.stderr
     assert again.stdout.strip() == "[]", f"a warm run loaded {again.stdout.strip()}"
+
+
+def test_the_version_has_one_source():
+    """``hybrid.__version__`` is the installed distribution's version (the build reads the same file)."""
+    from importlib.metadata import version
+
+    import hybrid
+
+    assert hybrid.__version__ == version("hybrid-decoupling")
