@@ -274,19 +274,23 @@ class Experiment(RunSettings):
 
 
 def _initial_state(exp: Experiment) -> np.ndarray:
-    p0 = exp.start()
-    given = np.asarray(exp.start_point if exp.start_point is not None else p0)  # a path's start is checked too
-    nearest = exp._geometry().project(given)
-    # without a closed-form projection the plant's own record says how far the point is
-    gap = (float(np.linalg.norm(given - nearest)) if nearest is not None
-           else abs(float(exp.plant().outputs(_probe(exp, p0))[0][exp.plant().record["outputs"].index("penetration")])))
+    geometry = exp._geometry()
+    path = exp.followed_path() if exp.start_point is None else None
+    given = np.asarray(exp.start_point) if path is None else path.point_at(path.start)  # a path's start too
+    nearest = geometry.project(given)
+    p0 = nearest if nearest is not None and path is None else given  # as exp.start() gives it
+    if nearest is not None:
+        gap = float(np.linalg.norm(given - nearest))
+    else:  # without a closed-form projection the plant's own record says how far the point is
+        plant = exp.plant()
+        gap = abs(float(plant.outputs(_probe(exp, p0))[0][plant.record["outputs"].index("penetration")]))
     if not gap <= START_TOL:
         what = "start_point" if exp.start_point is not None else "the path's start"
         hint = f", e.g. {np.round(nearest, 4).tolist()}" if nearest is not None else ""
         raise HybridError(f"{what} {np.round(given, 4).tolist()} m is {gap * 1000:.1f} mm off the surface; give a "
                           f"point on it (within {START_TOL * 1000:g} mm){hint}")
     q0 = None if exp.posture is None else exp.posture.q_rest
-    return _pressed_start(exp.robot, exp._geometry(), tuple(p0.tolist()), exp.elbow, q0, exp.reference,
+    return _pressed_start(exp.robot, geometry, tuple(np.asarray(p0).tolist()), exp.elbow, q0, exp.reference,
                           exp.singular_tol, exp.force_reference(0.0), exp.contact.stiffness, exp.sensor.stiffness)
 
 

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -43,6 +44,13 @@ class SurfaceSpec:
 
 #: every surface class, by its kind (for files that name a surface by kind)
 SURFACE_KINDS: dict[str, type] = {}
+
+
+@lru_cache(maxsize=1024)
+def _once(cls, *args):
+    """``cls(*args)`` of an immutable geometric object, made once per arguments: a sweep's runs ask
+    their surface for the same cross-section and path many times."""
+    return cls(*args)
 
 
 class Surface:
@@ -137,14 +145,15 @@ class CircleSection(Section):
 
     def path(self) -> CirclePath:
         """The circle itself, counter-clockwise (the paper's path; arc length ``radius * angle``)."""
-        return CirclePath(self.center, self.radius)
+        return _once(CirclePath, self.center, self.radius)
 
     def path_through(self, p) -> CirclePath:
         return self.path()
 
     def project(self, p) -> np.ndarray:
         """The circle's point nearest ``p`` (radially)."""
-        return self.path().point_at(self.path().arc_of(p))
+        path = self.path()
+        return path.point_at(path.arc_of(p))
 
 
 @dataclass(frozen=True)
@@ -163,7 +172,7 @@ class LineSection(Section):
         return np.array(self.normal)
 
     def path(self) -> LinePath:
-        return LinePath(self.point, (-self.normal[1], self.normal[0]))
+        return _once(LinePath, self.point, (-self.normal[1], self.normal[0]))
 
     def path_through(self, p) -> LinePath:
         return self.path()
@@ -223,7 +232,7 @@ class Plane(Surface):
         """The line where a vertical plane cuts the base xy-plane (None for another plane)."""
         if self.normal[2] != 0.0:
             return None
-        return LineSection(self.point[:2], self.normal[:2])
+        return _once(LineSection, self.point[:2], self.normal[:2])
 
     def normal_at(self, p) -> np.ndarray:
         """Unit normal towards the robot (the same everywhere)."""
@@ -360,5 +369,5 @@ class Cylinder(Surface):
         """The circle where a vertical cylinder cuts the base xy-plane (None for another cylinder)."""
         if self.axis[0] != 0.0 or self.axis[1] != 0.0:
             return None
-        return CircleSection(self.point[:2], self.radius)
+        return _once(CircleSection, self.point[:2], self.radius)
 

@@ -65,6 +65,14 @@ class Robot:
             chain, links, damping, gravity = _planar_parts(self.closed_form)
             for name, value in (("chain", chain), ("links", links), ("damping", damping), ("gravity", gravity)):
                 object.__setattr__(self, name, value)
+        else:  # a closed form's parts come from an Arm, which checked the same (B(q) positive definite)
+            self._check_parts()
+        params = np.concatenate([*(link.as_array() for link in self.links), self.damping, self.gravity])
+        params.setflags(write=False)  # frozen: built once, read-only like the fields it comes from
+        object.__setattr__(self, "_params", params)
+
+    def _check_parts(self) -> None:
+        """The links, viscosities and gravity: one of each per joint, physical values."""
         object.__setattr__(self, "gravity", _gravity(self.gravity))
         if len(self.links) != self.chain.n or len(self.damping) != self.chain.n:
             raise HybridError(f"Robot needs one link and one damping per joint ({self.chain.n}), got "
@@ -79,10 +87,6 @@ class Robot:
             _finite(f"Robot damping[{name}]", damping=d)
             if d < 0:
                 raise HybridError(f"damping of joint '{name}' is {d}; give a viscosity >= 0")
-        # frozen: the parameter array is built once and read-only, like the fields it comes from
-        params = np.concatenate([*(link.as_array() for link in self.links), self.damping, self.gravity])
-        params.setflags(write=False)
-        object.__setattr__(self, "_params", params)
 
     # ------------------------------------------------------------- construction
 
@@ -249,7 +253,7 @@ def _planar_parts(arm: Arm) -> tuple:
     chain = rb.Chain(joints, eye, (arm.L2, 0.0, 0.0))
     links = tuple(LinkInertia(m, (d, 0.0, 0.0), ((inertia, 0.0, 0.0), (0.0, inertia, 0.0), (0.0, 0.0, inertia)))
                   for m, d, inertia in ((arm.m1, arm.d1, arm.I1), (arm.m2, arm.d2, arm.I2)))
-    return chain, links, (arm.V1, arm.V2), (0.0, -arm.gravity, 0.0)
+    return chain, links, (float(arm.V1), float(arm.V2)), (0.0, -float(arm.gravity), 0.0)
 
 
 def _vector(name: str, v, shape) -> np.ndarray:
