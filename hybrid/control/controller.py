@@ -20,7 +20,7 @@ from hybrid.control.schemes import Scheme, scheme_of
 from hybrid.errors import HybridError
 from hybrid.geometry.task_axes import AXIS_NAMES, check_axes, reference_direction, spatial_surface
 from hybrid.models.planar_arm import Arm
-from hybrid.models.robot import Robot
+from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
 from hybrid.validate import _finite, check_singular_tol
 
@@ -187,10 +187,7 @@ class Controller:
                  position_error: bool = False, integral_limit: float | None = None,
                  contact_loss: ContactLoss | None = None, singular_tol: float = 1e-3,
                  posture: Posture | None = None):
-        if isinstance(robot, Arm):
-            robot = Robot.planar(robot)
-        if not isinstance(robot, Robot):
-            raise HybridError(f"robot must be a hybrid.Robot or hybrid.Arm, got {type(robot).__name__}")
+        robot = as_robot(robot)
         for name, value in (("integral", integral), ("curvature", curvature), ("position_error", position_error)):
             if not isinstance(value, bool):
                 raise HybridError(f"{name} = {value!r}; give True or False")

@@ -30,7 +30,7 @@ from hybrid.geometry.frames import task_frame
 from hybrid.geometry.surfaces import Surface
 from hybrid.geometry.task_axes import AXES, check_axes, reference_direction, spatial_surface
 from hybrid.models.planar_arm import Arm
-from hybrid.models.robot import Robot
+from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
 from hybrid.native.binding import is_batch
 from hybrid.validate import SINGULAR_TOL, check_singular_tol, check_size
@@ -61,9 +61,7 @@ class DecouplingLaw:
             if not (isinstance(surface, Surface) and surface.cross_section() is not None):
                 raise HybridError(f"the planar arm needs a hybrid.Circle or hybrid.Plane in 2-D, got "
                                   f"{surface!r:.100}; for another surface use a hybrid.Robot")
-            robot = Robot.planar(robot)
-        if not isinstance(robot, Robot):
-            raise HybridError(f"robot must be a hybrid.Robot (or the paper's hybrid.Arm), got {type(robot).__name__}")
+        robot = as_robot(robot)
         if not isinstance(curvature, bool):
             raise HybridError(f"curvature must be True or False, got {curvature!r}")
         check_singular_tol("decoupling_law", singular_tol)

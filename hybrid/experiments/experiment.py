@@ -30,7 +30,7 @@ from hybrid.geometry.surfaces import SURFACE_KINDS, Circle, Plane, Surface
 from hybrid.geometry.task_axes import check_axes, reference_direction
 from hybrid.models.chain import Chain, Joint
 from hybrid.models.planar_arm import Arm
-from hybrid.models.robot import Robot
+from hybrid.models.robot import Robot, as_robot
 from hybrid.models.urdf import JointLimits, LinkInertia
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.plants.planar import PlanarPlant
@@ -101,11 +101,7 @@ class Experiment(RunSettings):
         if self.robot is None or self.surface is None:
             raise HybridError("an Experiment needs a robot and a surface; give both, or start from a factory: "
                               "hybrid.paper_experiment(), hybrid.tracing_experiment(), hybrid.panda_experiment()")
-        if isinstance(self.robot, Arm):  # the paper's parameters stand for its arm
-            object.__setattr__(self, "robot", Robot.planar(self.robot))
-        if not isinstance(self.robot, Robot):
-            raise HybridError(f"robot must be a hybrid.Robot (e.g. hybrid.Robot.from_urdf, hybrid.ur5()), got "
-                              f"{type(self.robot).__name__}")
+        object.__setattr__(self, "robot", as_robot(self.robot))
         if not isinstance(self.surface, Surface):
             raise HybridError(f"unknown surface {self.surface!r:.60}; give a hybrid Circle, Plane, Sphere, Cylinder "
                               "or ImplicitSurface")
@@ -177,7 +173,8 @@ class Experiment(RunSettings):
     def _geometry(self):
         """Where the start, the path and the normals are taken: the planar arm's cross-section, else the
         surface itself."""
-        return self.surface if self.robot.closed_form is None else self.surface.cross_section()
+        section = self.section
+        return self.surface if section is None else section
 
     def followed_path(self) -> Path | None:
         """The path the desired point follows: the one given, else the surface's through the start point

@@ -233,6 +233,17 @@ class Robot:
         return units.robot_unit(self.chain, self.name)
 
 
+def as_robot(robot) -> Robot:
+    """``robot``, or the paper's planar arm when given its parameters (an :class:`Arm`); anything else is
+    a HybridError."""
+    if isinstance(robot, Arm):
+        return Robot.planar(robot)
+    if not isinstance(robot, Robot):
+        raise HybridError(f"robot must be a hybrid.Robot (e.g. hybrid.ur5(), hybrid.Robot.from_urdf) or the paper's "
+                          f"hybrid.Arm, got {type(robot).__name__}")
+    return robot
+
+
 @lru_cache(maxsize=256)
 def _planar(cls, arm: Arm) -> Robot:
     """:meth:`Robot.planar`, once per arm (a robot is immutable: the runs of a sweep share it)."""
