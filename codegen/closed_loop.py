@@ -38,7 +38,7 @@ METRICS = ("force_overshoot_N", "force_overshoot_percent", "force_settling_time_
            "steady_state_speed_error_m_per_s", "rms_force_error_N", "rms_speed_error_m_per_s", "max_penetration_m",
            "contact_losses", "time_out_of_contact_s")
 #: controller-step inputs the loop drives itself (the rest are the run's parameters)
-_DRIVEN = ("q", "qd", "Fc", "integrals", "t", "yd_extra", "yd_rate", "target")
+_DRIVEN = ("q", "qd", "Fc", "integrals", "last_torque", "t", "yd_extra", "yd_rate", "target")
 
 
 @dataclass(frozen=True)
@@ -248,7 +248,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     hl_v pre_rhs[PLANT_RHS_LANES_NPRE], pre_sig[LOOP_SIGNALS_LANES_NPRE], pre_both[PLANT_RHS_SIGNALS_LANES_NPRE],
         pre_step[{step.name.upper()}_LANES_NPRE];
     hl_v blk[{nb}], x[{nx}], xt[{nx}], k1[{nx}], k2[{nx}], k3[{nx}], k4[{nx}], s[{ns}], fc[6], z[{2 * m}], tv[1],
-        zero[9], base[{3 * nq}];
+        zero[9], base[{3 * nq}], last[{nq + 1}];
     {out_decl}
     lanes_run run;
     lanes_metrics mt;
@@ -271,6 +271,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     for (j = 0; j < 9; ++j) zero[j] = hl_splat(0.0);
     for (j = 0; j < 6; ++j) fc[j] = hl_splat(0.0);
     for (j = 0; j < {2 * m}; ++j) z[j] = hl_splat(0.0);
+    for (j = 0; j <= {nq}; ++j) last[j] = hl_splat(0.0);
     for (j = 0; j < {nx}; ++j) x[j] = blk[{x0} + j];
     plant_rhs_lanes_pre({held});
     loop_signals_lanes_pre({shown});
@@ -281,9 +282,12 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         loop_signals_lanes(x, pre_sig, s);
         for (j = 0; j < {nf}; ++j) fc[j] = s[j];
         tv[0] = hl_splat(k * sample_time);
-        {step.name}_lanes(x, x + {nq}, fc, z, tv, zero, zero, zero, pre_step, {out_args});
+        {step.name}_lanes(x, x + {nq}, fc, z, last, tv, zero, zero, zero, pre_step, {out_args});
 {guards}        flag(&run, {finite}, HYBRID_NONFINITE, k);
         for (j = 0; j < {2 * m}; ++j) z[j] = {z_next}[j];
+        /* the torque the rate limit starts from at the next sample */
+        for (j = 0; j < {nq}; ++j) last[j] = {tau}[j];
+        last[{nq}] = hl_splat(1.0);
         if (k == 0) record(states, taus, g, used, 0, rows, x, {tau}, hl_splat(0.0) == 0.0, run.alive);
         for (i = 0; i < steps_per_sample; ++i) {{
             /* the joints' sin and cos at the step's start: its stages rotate from there */

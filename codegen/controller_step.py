@@ -80,6 +80,8 @@ OPTIONS = ("curvature", "sample_time", "khatib", "integral_limit", "loss_thresho
            "pseudoinverse")
 #: the posture task's per-joint numbers, in this order (n each) in the ``posture`` array
 POSTURE = ("q_rest", "Kp", "Kd")
+#: the torque limits' per-joint numbers, in this order (n each) in the ``limits`` array
+LIMITS = ("tau_max", "rate_max")
 
 
 @dataclass(frozen=True)
@@ -139,6 +141,32 @@ def posture_torque(chain: rb.Chain, arm, params, q, qd, posture):
     return rb.crba(chain, arm.frames, params, inertias) @ w + rb.rnea(chain, arm.frames, params, qd, bodies=inertias)
 
 
+def _clamped(x, lo, hi):
+    """``x`` within ``[lo, hi]`` by comparisons (a NaN stays NaN, so a non-finite torque is still reported;
+    ``fmin``/``fmax`` would hide it)."""
+    return ca.if_else(x > hi, hi, ca.if_else(x < lo, lo, x))
+
+
+def limited(tau, z, z_next, last, limits):
+    """The torque within its limits, the integrals after the sample, and whether it saturated.
+
+    ``last`` holds the last sample's torque and a flag (1 once a torque was applied: the first sample
+    after a start has no rate to limit); ``limits`` the largest ``|tau_j|`` and the largest change of
+    ``tau_j`` in one sample (the rate bound first, then the magnitude's). A saturated sample keeps the
+    integrals as they were (conditional integration: the loops do not wind up against a torque the
+    arm does not get). Limits of 1e300 change nothing, bit for bit."""
+    n = tau.shape[0]
+    prev, started, tau_max, rate_max = last[:n], last[n], limits[:n], limits[n:]
+    out = []
+    for j in range(n):
+        lo, hi = ca.if_else(started, prev[j] - rate_max[j], -tau_max[j]), ca.if_else(started, prev[j] + rate_max[j],
+                                                                                          tau_max[j])
+        out.append(_clamped(_clamped(tau[j], lo, hi), -tau_max[j], tau_max[j]))
+    out = ca.vertcat(*out)
+    saturated = ca.sum1(out != tau) > 0
+    return out, ca.if_else(saturated, z, z_next), saturated
+
+
 def _wrapped(angle):
     """``angle`` in [-pi, pi) (cheaper than atan2 of its sine and cosine)."""
     return angle - 2 * ca.pi * ca.floor((angle + ca.pi) / (2 * ca.pi))
@@ -170,13 +198,13 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
     variant each); the other options are run-time numbers."""
     n, m = chain.n, len(axes)
     q, qd = ca.SX.sym("q", n), ca.SX.sym("qd", n)
-    Fc, z = ca.SX.sym("Fc", 6), ca.SX.sym("integrals", 2 * m)
+    Fc, z, last = ca.SX.sym("Fc", 6), ca.SX.sym("integrals", 2 * m), ca.SX.sym("last_torque", n + 1)
     t, steps = ca.SX.sym("t"), ca.SX.sym("steps", 3 * m)
     yd_extra, yd_rate, target = ca.SX.sym("yd_extra", m), ca.SX.sym("yd_rate", m), ca.SX.sym("target", 9)
     gains, sigma = ca.SX.sym("gains", len(LOOP_GAINS) * m), ca.SX.sym("selection", m)
     params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
     theta, e, opts = ca.SX.sym("surface", len(spec.parameters)), ca.SX.sym("e", 3), ca.SX.sym("options", len(OPTIONS))
-    posture = ca.SX.sym("posture", len(POSTURE) * n)
+    posture, limits = ca.SX.sym("posture", len(POSTURE) * n), ca.SX.sym("limits", len(LIMITS) * n)
     o = {name: opts[i] for i, name in enumerate(OPTIONS)}
     o["position_error"] = float(position_error)
     curvature = o["curvature"]
@@ -224,6 +252,8 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
     inputs = (
         a_q, a_qd, a_fc,
         Arg("integrals", z, "per axis: unit of e times s, then times s^2", names=integral_names),
+        Arg("last_torque", last, (*rb.joint_units(chain, "tau"), "1"),
+            names=(*(f"tau_{j}" for j in names), "started")),
         Arg("t", t, "s"),
         Arg("yd_extra", yd_extra, "m/s, rad/s (velocity axes); N, N m (force axes)", names=axis_names),
         Arg("yd_rate", yd_rate, "m/s^2, rad/s^2 (velocity axes; unused on force axes)", names=axis_names),
@@ -237,17 +267,21 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
         Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain)), a_s, a_e,
         Arg("options", opts, "1, s, 1, unit of a, N or N m, m/s or rad/s, 1", names=OPTIONS),
         Arg("posture", posture, "per joint: rad or m (q_rest), then 1/s^2 (Kp), then 1/s (Kd)",
-            names=tuple(f"{k}_{j}" for k in POSTURE for j in names)))
+            names=tuple(f"{k}_{j}" for k in POSTURE for j in names)),
+        Arg("limits", limits, "per joint: N m or N (tau_max), then N m or N per sample (rate_max)",
+            names=tuple(f"{k}_{j}" for k in LIMITS for j in names)))
 
     def outputs(torque):
+        torque, z_kept, saturated = limited(torque, z, z_next, last, limits)
         return (Arg("tau", torque, rb.joint_units(chain, "tau")),
-                Arg("integrals_next", z_next, "as integrals"),
+                Arg("integrals_next", z_kept, "as integrals"),
                 Arg("a", a_f, tuple("m/s^2" if i < 3 else "rad/s^2" for i in axes), names=axis_names),
-                Arg("y", y, velocity_units, names=axis_names), Arg("f", f, force_units, names=axis_names))
+                Arg("y", y, velocity_units, names=axis_names), Arg("f", f, force_units, names=axis_names),
+                Arg("saturated", saturated, "1 (1: a limit bounded the torque; the integrals were kept)"))
 
     what = (f"one control sample on a {spec.kind}: task velocity y = R_f v and wrench f = R_f F_c in the loop "
             "frame, the loops' task acceleration a and integrals after the sample, and the torque tau of ")
-    per_state = ("q", "qd", "Fc", "integrals", "t", "yd_extra", "yd_rate", "target")
+    per_state = ("q", "qd", "Fc", "integrals", "last_torque", "t", "yd_extra", "yd_rate", "target")
     step = Kernel("controller_step", inputs, outputs(tau),
                   what + f"the decoupling law (task axes {', '.join(axis_names)})", batched=per_state,
                   guards=(*guards, conditioning_guard(cond, CONDITIONING)))

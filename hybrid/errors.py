@@ -25,5 +25,22 @@ class TaskFrameError(HybridError):
     """The task frame is undefined: its reference direction is parallel to the surface normal."""
 
 
+class SampleTimingError(HybridError):
+    """A control sample off the sample clock: ``t`` did not advance by one sample time (within the
+    controller's ``timing_tolerance``). ``status`` names the fault (``SAMPLE_LATE``, ``SAMPLE_EARLY``,
+    ``SAMPLE_REPEATED``, ``SAMPLE_BACKWARDS``); ``torque`` [N m or N] is what to apply: the law's at
+    this sample, within the limits, with the loops' integrals left as they were."""
+
+    def __init__(self, status: str, t: float, last: float, sample_time: float, torque):
+        self.status, self.t, self.torque = status, float(t), torque
+        t, last = float(t), float(last)
+        what = {"SAMPLE_LATE": "late", "SAMPLE_EARLY": "early", "SAMPLE_REPEATED": "repeated",
+                "SAMPLE_BACKWARDS": "backwards"}[status]
+        super().__init__(
+            f"sample at t = {t!r} s is {what}: {t - last:.6g} s after the last (t = {last!r} s), the sample time "
+            f"is {sample_time:g} s\n  call the controller once every sample time; apply this error's torque "
+            "(the integrals were left as they were), or give timing_tolerance=None to skip the check")
+
+
 class LargeModelWarning(UserWarning):
     """A model so large that generating and compiling its code takes minutes (the message says how long)."""

@@ -17,7 +17,7 @@ import numpy as np
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.control.schemes import Scheme, scheme_of
-from hybrid.errors import HybridError
+from hybrid.errors import HybridError, SampleTimingError
 from hybrid.geometry.task_axes import AXIS_NAMES, check_axes, reference_direction, spatial_surface
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
@@ -26,6 +26,8 @@ from hybrid.validate import _finite, check_singular_tol
 
 #: "no limit" for the options that are off (the generated step takes finite numbers only)
 _OFF = 1e300
+#: the sample-timing statuses, by the interval since the last sample (see Controller's timing_tolerance)
+TIMING = ("SAMPLE_LATE", "SAMPLE_EARLY", "SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
 
 
 @dataclass(frozen=True)
@@ -178,6 +180,19 @@ class Controller:
         and a scheme with a null space (``"task"``, ``"khatib"``); otherwise it is refused (it would do
         nothing, or disturb the task). Its numbers are run-time inputs of the compiled step (changing
         them never recompiles); without it the step is the law's own code, bit for bit.
+    torque_limit : the largest ``|tau_j|`` [N m or N]: ``"urdf"`` (the default: the URDF's ``effort``
+        limits, none where it gives none and for the planar arm), None (no limit), one number for
+        every joint or one per joint.
+    torque_step_limit : the largest change of ``tau_j`` from one sample to the next [N m or N per
+        sample], one number or one per joint; None (the default): no limit. The first sample after a
+        start or :meth:`reset` is not rate-limited, unless ``reset(torque=...)`` gave the torque the arm
+        had. A sample whose torque a limit bounded keeps the loops' integrals (no wind-up); ``last``
+        says ``saturated``.
+    timing_tolerance : the samples' timing check: a sample is on time when ``t`` advanced by the
+        sample time within ``timing_tolerance`` of it (default 0.25: 25 %). A late, early, repeated or
+        backwards sample raises :class:`~hybrid.SampleTimingError` carrying the torque to apply (that
+        of the law at this sample, within the limits) and leaves the integrals as they were; None:
+        no check. The generated C returns the same as named statuses (:meth:`generate`).
     """
 
     def __init__(self, robot: Robot | Arm, surface, scheme: str | Scheme = "task", *, axes=None, selection=None,
@@ -186,7 +201,8 @@ class Controller:
                  frame: str = "actual", path: Callable | None = None, reference=(0.0, 0.0, 1.0),
                  position_error: bool = False, integral_limit: float | None = None,
                  contact_loss: ContactLoss | None = None, singular_tol: float = 1e-3,
-                 posture: Posture | None = None):
+                 posture: Posture | None = None, torque_limit="urdf", torque_step_limit=None,
+                 timing_tolerance: float | None = 0.25):
         robot = as_robot(robot)
         for name, value in (("integral", integral), ("curvature", curvature), ("position_error", position_error)):
             if not isinstance(value, bool):
@@ -218,6 +234,14 @@ class Controller:
             raise HybridError(f"the {self.scheme.name} scheme commands m_d a = a / KPf on force axes: give KPf > 0")
         self.position_error, self.integral_limit, self.contact_loss = position_error, integral_limit, contact_loss
         self.posture = self._posture(posture)
+        self.torque_limit = self._limit("torque_limit", torque_limit)
+        self.torque_step_limit = self._limit("torque_step_limit", torque_step_limit)
+        if timing_tolerance is not None:
+            _finite("Controller", timing_tolerance=timing_tolerance)
+            if not 0 < timing_tolerance < 1:
+                raise HybridError(f"timing_tolerance = {timing_tolerance}; give a fraction of the sample time "
+                                  "between 0 and 1 (0.25: a sample may come 25 % early or late), or None")
+        self.timing_tolerance = None if timing_tolerance is None else float(timing_tolerance)
         self._references = self._axis_references(force_reference, velocity_reference)
         unit = units.controller_unit(robot.chain, robot.name, self._spatial.spec(), self.axes,
                                         frame == "desired", position_error)
@@ -233,9 +257,12 @@ class Controller:
         steps = np.array([ref.step or (0.0, 0.0, 0.0) for ref in self._references], float).ravel()
         # every step takes the posture's numbers (zeros when off: the step without a posture ignores them)
         posture_array = np.zeros(3 * robot.n) if posture is None else self.posture.as_array()
+        limits = np.concatenate([np.minimum(self.torque_limit, _OFF), np.minimum(self.torque_step_limit, _OFF)])
         self._params = (steps, self._gain_array(), np.array(self.selection, float), robot.as_array(),
-                        self._spatial.as_array(), np.array(self.reference), options, posture_array)
+                        self._spatial.as_array(), np.array(self.reference), options, posture_array, limits)
         self._t, self._extra, self._rate, self._target = np.zeros(1), np.zeros(m), np.zeros(m), np.zeros(9)
+        # the torque last given to the arm and 1 once there is one (the rate limit's start), the last sample time
+        self._last, self._clock = np.zeros(robot.n + 1), None
         self._fc = np.zeros(6)
         # a force without moments: the planar arm's in its plane (2), any other arm's in space (3)
         self._force_size = 2 if robot.closed_form is not None else 3
@@ -245,7 +272,7 @@ class Controller:
         # with references all steps and no path, the per-sample inputs end at t: the rest is bound
         self._short = not (self._varying or self._rates or path)
         held = (self._extra, self._rate, self._target) if self._short else ()
-        _, self._binding = self._step.fast_bind(5 if self._short else 8, *held, *self._params,
+        _, self._binding = self._step.fast_bind(6 if self._short else 9, *held, *self._params,
                                                 singular_tol=self.singular_tol)
         self._into = self._step.unit.fast().call_into
         # outputs written in place: tau, the integrals' next buffer, a, y, f
@@ -325,6 +352,24 @@ class Controller:
     def _posture(self, posture) -> Posture | None:
         return check_posture(self.robot, self.axes, self.scheme, posture)
 
+    def _limit(self, name: str, value) -> np.ndarray:
+        """A per-joint limit > 0 (``inf``: none) from None, ``"urdf"``, one number or one per joint."""
+        n = self.robot.n
+        if value is None:
+            return np.full(n, np.inf)
+        if isinstance(value, str) and value == "urdf" and name == "torque_limit":
+            limits = self.robot.limits
+            return np.full(n, np.inf) if limits is None else np.array(limits.effort, float)
+        try:
+            arr = np.broadcast_to(np.asarray(value, dtype=float), (n,)).copy()
+        except (TypeError, ValueError):
+            arr = np.full(n, np.nan)
+        if isinstance(value, (str, bool)) or np.isnan(arr).any() or (arr <= 0).any():
+            urdf = "'urdf' (the URDF's effort limits), " if name == "torque_limit" else ""
+            raise HybridError(f"{name} = {value!r:.60}; give {urdf}None (no limit), one number > 0 [N m or N"
+                              f"{' per sample' if name != 'torque_limit' else ''}] or {n} of them (one per joint)")
+        return arr
+
     def _gain_array(self) -> np.ndarray:
         """``(KP, KI, KI2, KD)`` per axis, as the generated step reads them."""
         rows = [(g.KPf, g.KIf, 0.0, g.KDf) if s else (g.KPv, g.KIv, g.KI2v, 0.0)
@@ -356,10 +401,23 @@ class Controller:
 
     # ------------------------------------------------------------------ running
 
-    def reset(self) -> None:
-        """Zero the loops' integrals (a new run)."""
+    def reset(self, torque=None) -> None:
+        """A new run: the loops' integrals zero, no last sample (the next one is on time whenever it
+        comes). ``torque`` [N m or N, one per joint], when given, is the torque the arm has now: the
+        first sample's torque is then rate-limited from it (``torque_step_limit``)."""
         self._z[:] = 0.0
         self._sampled = False
+        self._last[:] = 0.0
+        self._clock = None
+        if torque is not None:
+            try:
+                tau = np.asarray(torque, dtype=float)
+            except (TypeError, ValueError):
+                tau = np.full(1, np.nan)
+            if tau.shape != (self.robot.n,) or not np.isfinite(tau).all():
+                raise HybridError(f"reset(torque={torque!r:.60}); give the arm's present torque, {self.robot.n} "
+                                  "finite numbers [N m or N], or None")
+            self._last[:-1], self._last[-1] = tau, 1.0
 
     @property
     def state(self) -> np.ndarray:
@@ -391,7 +449,11 @@ class Controller:
     def __call__(self, t: float, q, qdot, Fc) -> np.ndarray:
         """``tau`` [N m or N] for the sample at time ``t`` [s], from the joint state and the measured
         wrench on the robot ``Fc`` (base axes: force [N] of 2 or 3 entries, or force and moment, 6);
-        advances the integrals by one sample."""
+        advances the integrals by one sample.
+
+        A sample the law cannot serve raises: :class:`HybridError` for a non-finite input (nothing
+        changes), :class:`SingularConfigurationError` or :class:`TaskFrameError` (the integrals and the
+        last torque stay), :class:`SampleTimingError` off the sample clock (see ``timing_tolerance``)."""
         if type(Fc) is not np.ndarray or Fc.shape != (6,):
             Fc = self._padded(Fc)
         if type(t) is not float and (isinstance(t, (str, bytes, bool, np.bool_))
@@ -400,20 +462,46 @@ class Controller:
         self._t[0] = t
         if not _isfinite(self._t[0]):
             raise HybridError(f"t = {t!r}; give a finite sample time")
+        t = self._t[0]
+        timing = self._timing(t)
         out, z = self._out, self._z
         if self._short:
-            done = self._into(self._binding, out, q, qdot, Fc, z, self._t)
+            done = self._into(self._binding, out, q, qdot, Fc, z, self._last, self._t)
         else:
             self._python_references(t)
             if self.path is not None:
                 self._target[:] = self._desired(t)
-            done = self._into(self._binding, out, q, qdot, Fc, z, self._t, self._extra, self._rate, self._target)
+            done = self._into(self._binding, out, q, qdot, Fc, z, self._last, self._t, self._extra, self._rate,
+                              self._target)
         if done is None:
             self._checked(q, qdot, Fc)
+        self._tick(t)
+        self._last[:-1], self._last[-1] = out[0], 1.0
+        self._sampled = True
+        if timing is not None:  # the law's torque, the integrals as they were
+            raise SampleTimingError(timing, t, self._clock_before, self.sample_time, out[0].copy())
         # the integrals' two buffers trade places: no copy
         self._z, out[1] = out[1], z
-        self._sampled = True
         return out[0].copy()
+
+    def _timing(self, t: float) -> str | None:
+        """The timing status of a sample at ``t`` (None: on time, or no check, or no last sample)."""
+        self._clock_before = self._clock
+        if self._clock is None or self.timing_tolerance is None:
+            return None
+        dt, T, tol = t - self._clock, self.sample_time, self.timing_tolerance
+        if dt < 0:
+            return "SAMPLE_BACKWARDS"
+        if dt == 0:
+            return "SAMPLE_REPEATED"
+        if dt < T * (1 - tol):
+            return "SAMPLE_EARLY"
+        return "SAMPLE_LATE" if dt > T * (1 + tol) else None
+
+    def _tick(self, t: float) -> None:
+        """The sample clock after a sample at ``t``: it follows every sample that moves forward."""
+        if self._clock is None or t > self._clock:
+            self._clock = t
 
     @property
     def last(self) -> dict[str, np.ndarray] | None:
@@ -421,8 +509,10 @@ class Controller:
         and task wrench ``f`` (loop frame), by name; None before the first sample."""
         if not self._sampled:
             return None
-        return {"tau": self._out[0].copy(), "integrals": self._z.copy(),
-                **{name: o.copy() for (name, _, _), o in zip(self._step.outputs[2:], self._out[2:])}}
+        got = {"tau": self._out[0].copy(), "integrals": self._z.copy(),
+               **{name: o.copy() for (name, _, _), o in zip(self._step.outputs[2:], self._out[2:])}}
+        got["saturated"] = bool(got["saturated"][0])
+        return got
 
     def _padded(self, Fc) -> np.ndarray:
         """``Fc`` as the step's 6-vector (into a buffer for a force without moments)."""
@@ -440,13 +530,26 @@ class Controller:
         return np.concatenate([_vector("path point", got[0], d), _vector("path velocity", got[1], d), phi])
 
     def _checked(self, q, qdot, Fc) -> None:
-        """The general path: any array-like input, and the error that names the cause."""
+        """The general path: any array-like input, and the error that names the cause. A sample the
+        law fails on (its inputs fine) still moves the sample clock, as the generated C's does."""
         t = self._t[0]
         if not all(np.isfinite(v).all() for v in (self._t, self._extra, self._rate, self._target)):
             raise HybridError(f"the references at t = {t} s are not finite; give references that return finite "
                               f"numbers\n  values {self._extra}, rates {self._rate}, desired point {self._target}")
-        got = self._step(q, qdot, Fc, self._z, self._t, self._extra, self._rate, self._target, *self._params,
-                         singular_tol=self.singular_tol)
+        for name, v in (("q", q), ("qdot", qdot)):
+            try:
+                arr = np.asarray(v, dtype=float)
+            except (TypeError, ValueError):
+                arr = None
+            if arr is None or arr.shape != (self.robot.n,) or not np.isfinite(arr).all():
+                raise HybridError(f"{name} = {v!r:.60}; give {self.robot.n} finite numbers (one per joint)")
+        try:
+            got = self._step(q, qdot, Fc, self._z, self._last, self._t, self._extra, self._rate, self._target,
+                             *self._params, singular_tol=self.singular_tol)
+        except HybridError:
+            if np.isfinite(Fc).all():
+                self._tick(t)
+            raise
         for (name, _, _), o in zip(self._step.outputs, self._out):
             o[:] = got[name].ravel()
 

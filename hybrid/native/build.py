@@ -402,7 +402,7 @@ def _writable_cache() -> Path:
 
 
 #: the most arguments a function may have for the one-state entry point (hybrid/fastcall.c)
-FAST_MAX_ARGS = 16
+FAST_MAX_ARGS = 24
 
 
 def fastcall_prelude(manifest: dict) -> str:
