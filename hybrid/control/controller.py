@@ -306,6 +306,23 @@ class Controller:
                 "desired_frame": self.frame == "desired", "position_error": self.position_error,
                 "step": self._step_name}
 
+    def generate(self, out, name: str | None = None, force: bool = False) -> list:
+        """Write this controller as standalone C99 into the folder ``out``: ``<name>.c``, ``<name>.h`` and
+        the manifest ``<name>.json`` (``name``: ASCII letters, digits and ``_``, a letter first; default
+        ``<robot>_controller``). Returns the paths written.
+
+        The C is this controller, sample for sample: ``<name>_controller_init(&c)`` gives a struct with
+        this configuration (gains, references, model, surface, limits, options: fields that may change
+        between samples), and ``<name>_controller_step(&c, t, q, qd, wrench, tau)`` runs one sample
+        (``wrench``: six numbers, force and moment on the robot at the tip in base axes) and returns a
+        status, where this class raises (see ``timing_tolerance``). References given as code are the
+        caller's: it writes them into ``c.yd_extra``, ``c.yd_rate`` and ``c.target`` each sample. C99,
+        no allocation, no globals, no I/O, reentrant; the same bytes for the same controller. Files in
+        ``out`` with other content are refused unless ``force``."""
+        from hybrid.native.standalone import generate_controller
+
+        return generate_controller(self, out, name, force)
+
     @property
     def axis_names(self) -> tuple[str, ...]:
         return tuple(AXIS_NAMES[i] for i in self.axes)

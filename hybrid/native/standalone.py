@@ -1,4 +1,5 @@
-"""``python -m hybrid generate``: standalone C for a user's arm, written into a folder of theirs."""
+"""``python -m hybrid generate``: standalone C for a user's arm, or their whole controller, written into a
+folder of theirs."""
 
 from __future__ import annotations
 
@@ -27,15 +28,53 @@ def generate(urdf, tip: str, out, name: str | None = None, locked: dict | None =
     unit = units.generator("robot_unit").build_robot_unit(
         parsed.chain, prefix, units.robot_info(parsed.chain, parsed.name) | {"tip": tip},
         defaults=robot.as_array())
+    return write_files(out, unit.files, force)
+
+
+def generate_controller(ctrl, out, name: str | None = None, force: bool = False) -> list[Path]:
+    """Write the controller ``ctrl`` (a :class:`hybrid.Controller`) as standalone C99 into ``out``:
+    ``<prefix>.c``, ``.h`` and ``.json`` (see :meth:`hybrid.Controller.generate`)."""
+    if name is not None:
+        check_c_name("name", name)
+    prefix = c_identifier(f"{ctrl.robot.name}_controller" if name is None else name)
+    variant = ctrl.step_variant()
+    values = {k: [float(x) for x in v] for k, v in ctrl.step_inputs().items()}
+    values |= {"timing_tolerance": -1.0 if ctrl.timing_tolerance is None else ctrl.timing_tolerance,
+               "singular_tol": ctrl.singular_tol}
+    spec, axes = variant["spec"], variant["axes"]
+    compiled_in = {k: variant[k] for k in ("desired_frame", "position_error")}
+    info = {"robot": units.robot_info(variant["chain"], variant["name"]),
+            "surface": {"kind": spec.kind, "parameters": list(spec.parameters)}, "axes": list(axes),
+            "scheme": ctrl.scheme.name, "step": variant["step"], "variant": compiled_in,
+            "task_axes": list(ctrl.axis_names)}
+    key = {"chain": units.chain_key(variant["chain"]), "surface": spec.key(), **info, "values": values,
+           "generator": units.fingerprint(), "prefix": prefix}
+
+    def make() -> dict[str, str]:
+        step = {k.name: k for k in units.generator("controller_step").controller_kernels(
+            variant["chain"], spec, axes, **compiled_in)}[variant["step"]]
+        what = (f"the hybrid force/velocity controller ({ctrl.scheme.name} scheme) of the {ctrl.robot.n}-joint arm "
+                f"'{variant['name']}' on a {spec.kind}, task axes {', '.join(ctrl.axis_names)}")
+        return units.generator("standalone_controller").build_standalone_controller(step, prefix, what, info,
+                                                                                   values).files
+
+    folder = build.generated_unit(prefix, key, make)
+    files = {n: (folder / n).read_text() for n in (f"{prefix}.c", f"{prefix}.h", f"{prefix}.json")}
+    return write_files(out, files, force)
+
+
+def write_files(out, files: dict[str, str], force: bool) -> list[Path]:
+    """``files`` written into the folder ``out``, each atomically; files there with other content are
+    refused unless ``force``."""
     out = Path(out)
     if out.exists() and not out.is_dir():
         raise HybridError(f"--out {out} is a file; give a folder")
-    clash = [n for n, text in unit.files.items() if (out / n).is_file() and (out / n).read_text() != text]
+    clash = [n for n, text in files.items() if (out / n).is_file() and (out / n).read_text() != text]
     if clash and not force:
         raise HybridError(f"{', '.join(clash)} already exist in {out} with other content; "
                           "pass --force to overwrite them, or choose another --out or --name")
     try:
-        build.write_unit_files(out, unit.files)
+        build.write_unit_files(out, files)
     except OSError as exc:
         raise HybridError(f"cannot write into {out} ({exc.strerror}); choose a writable --out") from None
-    return [out / n for n in unit.files]
+    return [out / n for n in files]

@@ -1,0 +1,295 @@
+"""The controller as standalone C: one control sample behind a struct the caller owns.
+
+``<prefix>_controller`` holds everything one sample reads and keeps: the configuration (the step's
+run-time parameters, which may change between samples), the references the caller computes, the
+loops' integrals, the torque last written, the sample clock, and the last sample's loop outputs.
+``<prefix>_controller_step(&c, t, q, qd, wrench, tau)`` runs one sample of the step kernel of
+:mod:`codegen.controller_step` (measurement, loops, law, torque limits) and checks the call:
+
+- a non-finite ``t``, ``q``, ``qd`` or ``wrench``: ``INPUT_NONFINITE``, ``tau`` the torque last
+  written (0 before any), nothing changes;
+- the law failing (its guards, a non-finite output): that status, ``tau`` the torque last written,
+  the integrals and the last torque unchanged; the clock follows ``t``;
+- ``t`` off the sample clock (its interval since the last sample outside ``(1 +- tolerance) T``, or
+  0, or negative): ``SAMPLE_LATE``, ``SAMPLE_EARLY``, ``SAMPLE_REPEATED``, ``SAMPLE_BACKWARDS``,
+  ``tau`` the law's at this sample within the limits, the integrals unchanged; the clock follows a
+  forward ``t`` (so the next sample on time is accepted).
+
+The Python :class:`hybrid.Controller` does the same (raising where this returns a status), and
+the text is a pure function of its inputs (no dates, no paths, stable ordering).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+
+import casadi as ca
+
+from hybrid.native.stamp import MANIFEST_STAMP, json_body_hash, stamp
+
+from .emit import GENERATOR_VERSION, STATUS, Unit, _casadi_cores, comment_safe
+from .kernel import Kernel
+
+#: statuses of the call beyond the kernels' (HYBRID_OK .. HYBRID_EULER_SINGULAR), in this order
+CALL_STATUS = ("INPUT_NONFINITE", "SAMPLE_LATE", "SAMPLE_EARLY", "SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
+#: the step's inputs the call fills from its own arguments and the struct's state
+_CALL = {"q": "q", "qd": "qd", "Fc": "wrench", "integrals": "c->integrals", "last_torque": "last", "t": "tv"}
+#: the step's inputs the caller computes per sample (references given as code), zero after init
+_CALLER = ("yd_extra", "yd_rate", "target")
+#: the inputs held as named scalar fields (their elements' names), not an array
+_SCALARS = ("options",)
+#: what each status means, for the header and the manifest
+_MEANING = {
+    "OK": "a sample on time; tau is the law's, the integrals advanced",
+    "SINGULAR": "the task Jacobian's conditioning is below singular_tol; tau is the torque last written",
+    "NONFINITE": "the law's output is not finite; tau is the torque last written",
+    "FRAME_UNDEFINED": "the task frame's reference direction is parallel to the normal; tau is the torque last written",
+    "EULER_SINGULAR": "cos(beta) of the tip's ZYX Euler angles is near 0; tau is the torque last written",
+    "INPUT_NONFINITE": "t, q, qd or wrench is not finite; tau is the torque last written, nothing changed",
+    "SAMPLE_LATE": "t advanced by more than (1 + timing_tolerance) sample_time",
+    "SAMPLE_EARLY": "t advanced by less than (1 - timing_tolerance) sample_time",
+    "SAMPLE_REPEATED": "t equals the last sample's",
+    "SAMPLE_BACKWARDS": "t is before the last sample's",
+}
+
+
+def statuses() -> dict[str, int]:
+    """Every status of the standalone step by its short name."""
+    codes = {k.removeprefix("HYBRID_"): v for k, v in STATUS.items()}
+    return codes | {name: len(STATUS) + i for i, name in enumerate(CALL_STATUS)}
+
+
+def _number(v: float) -> str:
+    text = repr(float(v))
+    if text in ("inf", "-inf", "nan"):
+        raise ValueError(f"a configuration value must be finite, got {text}")
+    return text
+
+
+def _macro(text: str) -> str:
+    return re.sub(r"[^A-Za-z0-9]+", "_", text).strip("_").upper()
+
+
+def _index_macros(prefix: str, field: str, names) -> list[str]:
+    """``#define <PREFIX>_<FIELD>_<NAME> index`` for an array's elements (none when two names clash)."""
+    made = [f"{prefix.upper()}_{field.upper()}_{_macro(n)}" for n in names]
+    if len(set(made)) < len(made):
+        return []
+    return [f"#define {m} {i}" for i, m in enumerate(made)]
+
+
+def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict, values: dict) -> Unit:
+    """C source, header and manifest of the standalone controller around ``step``.
+
+    ``values`` holds the configuration ``_init`` writes: every parameter input of ``step`` by name
+    (a sequence of numbers), ``timing_tolerance`` and ``singular_tol``.
+    """
+    inputs = {a.name: a for a in step.inputs}
+    driven = (*_CALL, *_CALLER)
+    if tuple(inputs)[:len(driven)] != driven:
+        raise ValueError(f"a controller step's inputs start {driven}, got {tuple(inputs)[:len(driven)]}")
+    params = [a for a in step.inputs[len(driven):]]
+    nq, m = inputs["q"].size, inputs["yd_extra"].size
+    tau, z_next, *loop_out, saturated = step.outputs
+    P = prefix.upper()
+    codes = statuses()
+
+    # ------------------------------------------------------------------ the struct
+    fields, macros = [], []
+
+    def array_field(a, doc: str) -> None:
+        unit = a.unit if isinstance(a.unit, str) else ", ".join(dict.fromkeys(a.unit))
+        layout = f" = {{{comment_safe(', '.join(a.names))}}}" if a.names else ""
+        fields.append(f"    /* {comment_safe(doc)} [{comment_safe(unit)}]{layout} */\n    double {a.name}[{a.size}];")
+        if a.names:
+            macros.extend(_index_macros(prefix, a.name, a.names))
+
+    fields.append("    /* ---- configuration: the run-time parameters, any of which may change between samples */")
+    for a in params:
+        if a.name in _SCALARS:
+            units = a.unit.split(", ") if isinstance(a.unit, str) else list(a.unit)
+            for i, n in enumerate(a.names):
+                u = units[i] if len(units) == len(a.names) else a.unit
+                fields.append(f"    double {n}; /* {a.name} [{comment_safe(u)}] */")
+        else:
+            array_field(a, f"{a.name}")
+    fields.append("    double timing_tolerance; /* a sample is on time when t advanced by sample_time within this "
+                  "fraction of it [1]; < 0: no timing check */")
+    fields.append("    double singular_tol; /* the task Jacobian's least conditioning [1] */")
+    fields.append("    /* ---- references the caller computes each sample (0 after init): added to the steps' values */")
+    for name in _CALLER:
+        array_field(inputs[name], {"yd_extra": "reference added per axis",
+                                   "yd_rate": "reference rate per axis (velocity axes' feedforward)",
+                                   "target": "the desired point, its velocity and ZYX angles (desired frame, "
+                                             "position error)"}[name])
+    fields.append("    /* ---- state kept between samples (zero after init and reset) */")
+    array_field(inputs["integrals"], "the loops' integrals")
+    fields.append(f"    double tau[{nq}]; /* the torque last written [{comment_safe(', '.join(dict.fromkeys(tau.unit if isinstance(tau.unit, tuple) else (tau.unit,))))}] */")
+    fields.append("    int has_torque; /* 1: tau is the arm's torque, the next sample is rate-limited from it */")
+    fields.append("    double t_last; /* the sample clock: the last sample's t [s] */")
+    fields.append("    int has_clock; /* 1: t_last is set (the next sample's timing is checked) */")
+    fields.append("    /* ---- the last sample's loop outputs (loop frame) */")
+    for a in loop_out:
+        array_field(a, {"a": "task acceleration", "y": "task velocity", "f": "task wrench"}.get(a.name, a.name))
+    fields.append("    int saturated; /* 1: a torque limit bounded the last sample's torque (integrals kept) */")
+    struct = "typedef struct {\n" + "\n".join(fields) + f"\n}} {prefix}_controller;"
+
+    status_lines = "\n".join(f"#define {P}_{name} {code} /* {comment_safe(_MEANING[name])} */"
+                             for name, code in codes.items())
+    defines = [f"#define {P}_NQ {nq} /* joints */", f"#define {P}_M {m} /* task axes */"]
+    header = f"""#ifndef {P}_H
+#define {P}_H
+/* {prefix}: {comment_safe(what)}.
+   Standalone C99: no allocation, no globals, no I/O; reentrant (every state is in the struct).
+   Emitted by hybrid's codegen (generator version {GENERATOR_VERSION}); interface: {prefix}.json.
+
+   {prefix}_controller c;
+   {prefix}_controller_init(&c);                                   (the configuration's values)
+   status = {prefix}_controller_step(&c, t, q, qd, wrench, tau);   (one sample; {P}_OK is 0)
+
+   wrench: the force and moment on the robot at the tip frame's origin, base axes [N, N m]. */
+
+{chr(10).join(defines)}
+{status_lines}
+{chr(10).join(macros)}
+
+{struct}
+
+/* the configuration's values, and the state of a new run */
+void {prefix}_controller_init({prefix}_controller *c);
+/* a new run: the state zero (the configuration and the caller's references as they are) */
+void {prefix}_controller_reset({prefix}_controller *c);
+/* one control sample at time t [s] from q, qd [{P}_NQ] and wrench [6]: writes tau [{P}_NQ] (always finite)
+   and returns a status ({P}_OK, or one of the others above) */
+int {prefix}_controller_step({prefix}_controller *c, double t, const double *q, const double *qd,
+                             const double *wrench, double *tau);
+/* the status's name ("OK", "SAMPLE_LATE", ...), "UNKNOWN" for another number */
+const char *{prefix}_status_name(int status);
+
+#endif
+"""
+
+    # ------------------------------------------------------------------ the functions
+    init = []
+    for a in params:
+        vals = [float(v) for v in values[a.name]]
+        if len(vals) != a.size:
+            raise ValueError(f"{a.name} takes {a.size} values, got {len(vals)}")
+        if a.name in _SCALARS:
+            init += [f"    c->{n} = {_number(v)};" for n, v in zip(a.names, vals)]
+        else:
+            init.append(f"    {{\n        static const double v[{a.size}] = {{{', '.join(_number(v) for v in vals)}}};\n"
+                        f"        for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = v[i];\n    }}")
+    init.append(f"    c->timing_tolerance = {_number(values['timing_tolerance'])};")
+    init.append(f"    c->singular_tol = {_number(values['singular_tol'])};")
+    for name in _CALLER:
+        init.append(f"    for (i = 0; i < {inputs[name].size}; ++i) c->{name}[i] = 0.0;")
+    scalars = {a.name: a for a in params if a.name in _SCALARS}
+    packs = "".join(f"    double {name}[{a.size}];\n" for name, a in scalars.items())
+    pack = "".join(f"    {name}[{i}] = c->{n};\n" for name, a in scalars.items() for i, n in enumerate(a.names))
+    call = ", ".join([*_CALL.values(), *(f"c->{n}" for n in _CALLER),
+                      *(a.name if a.name in _SCALARS else f"c->{a.name}" for a in params),
+                      *(f"o_{a.name}" for a in step.core_outputs())])
+    outs = "".join(f"    double o_{a.name}[{a.size}];\n" for a in step.core_outputs())
+    guards = "".join(
+        f"    if (status == {P}_OK && fabs(o_{g.name}[0]) < "
+        f"{'c->singular_tol' if g.tolerance == 'singular_tol' else g.c_tolerance}) status = {P}_{g.status.removeprefix('HYBRID_')};\n"
+        for g in step.guards)
+    finite = " || ".join(f"!all_finite(o_{a.name}, {a.size})" for a in step.core_outputs())
+    keep = "".join(f"    for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = o_{a.name}[i];\n" for a in loop_out)
+    if "sample_time" not in scalars["options"].names:
+        raise ValueError("the controller step's options have no sample_time")
+    names = ", ".join(f'"{n}"' for n in codes)
+    source = f"""/* {prefix}: {comment_safe(what)}.
+   Emitted by hybrid's codegen (generator version {GENERATOR_VERSION}, CasADi {ca.__version__}).
+   Compile: cc -std=c99 -O2 -c {prefix}.c (link with -lm). */
+#include <math.h>
+#include "{prefix}.h"
+
+{_casadi_cores(prefix, (step,))}
+static int all_finite(const double *v, int n) {{
+    int i;
+    for (i = 0; i < n; ++i) {{
+        if (!isfinite(v[i])) return 0;
+    }}
+    return 1;
+}}
+
+void {prefix}_controller_reset({prefix}_controller *c) {{
+    int i;
+    for (i = 0; i < {2 * m}; ++i) c->integrals[i] = 0.0;
+    for (i = 0; i < {nq}; ++i) c->tau[i] = 0.0;
+{"".join(f"    for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = 0.0;{chr(10)}" for a in loop_out)}    c->has_torque = 0;
+    c->t_last = 0.0;
+    c->has_clock = 0;
+    c->saturated = 0;
+}}
+
+void {prefix}_controller_init({prefix}_controller *c) {{
+    int i;
+{chr(10).join(init)}
+    {prefix}_controller_reset(c);
+}}
+
+/* the timing of a sample at t against the sample clock */
+static int timing(const {prefix}_controller *c, double t) {{
+    double dt;
+    if (!c->has_clock || c->timing_tolerance < 0.0) return {P}_OK;
+    dt = t - c->t_last;
+    if (dt < 0.0) return {P}_SAMPLE_BACKWARDS;
+    if (dt == 0.0) return {P}_SAMPLE_REPEATED;
+    if (dt < c->sample_time * (1.0 - c->timing_tolerance)) return {P}_SAMPLE_EARLY;
+    if (dt > c->sample_time * (1.0 + c->timing_tolerance)) return {P}_SAMPLE_LATE;
+    return {P}_OK;
+}}
+
+int {prefix}_controller_step({prefix}_controller *c, double t, const double *q, const double *qd,
+                             const double *wrench, double *tau) {{
+    double last[{nq + 1}], tv[1];
+{packs}{outs}    int i, status = {P}_OK, on_time;
+    if (!isfinite(t) || !all_finite(q, {nq}) || !all_finite(qd, {nq}) || !all_finite(wrench, 6)) {{
+        for (i = 0; i < {nq}; ++i) tau[i] = c->tau[i];
+        return {P}_INPUT_NONFINITE;
+    }}
+    on_time = timing(c, t);
+    for (i = 0; i < {nq}; ++i) last[i] = c->tau[i];
+    last[{nq}] = c->has_torque ? 1.0 : 0.0;
+    tv[0] = t;
+{pack}    {step.name}_core({call});
+{guards}    if (status == {P}_OK && ({finite})) status = {P}_NONFINITE;
+    /* the clock follows every sample that moves forward */
+    if (!c->has_clock || t > c->t_last) c->t_last = t;
+    c->has_clock = 1;
+    if (status != {P}_OK) {{
+        for (i = 0; i < {nq}; ++i) tau[i] = c->tau[i];
+        return status;
+    }}
+    for (i = 0; i < {nq}; ++i) tau[i] = c->tau[i] = o_{tau.name}[i];
+    c->has_torque = 1;
+    c->saturated = o_{saturated.name}[0] != 0.0;
+{keep}    if (on_time != {P}_OK) return on_time;
+    for (i = 0; i < {2 * m}; ++i) c->integrals[i] = o_{z_next.name}[i];
+    return {P}_OK;
+}}
+
+const char *{prefix}_status_name(int status) {{
+    static const char *const names[] = {{{names}}};
+    return status >= 0 && status < {len(codes)} ? names[status] : "UNKNOWN";
+}}
+"""
+    fields_doc = [{"name": a.name, "size": a.size, **({"names": list(a.names)} if a.names else {}),
+                   "unit": a.unit if isinstance(a.unit, str) else list(a.unit)}
+                  for a in (*params, *(inputs[n] for n in _CALLER))]
+    data = {"do_not_edit": MANIFEST_STAMP, "unit": prefix, "generator": GENERATOR_VERSION,
+            "tools": f"CasADi {ca.__version__}", **info, "nq": nq, "m": m,
+            "status": {f"{P}_{k}": v for k, v in codes.items()},
+            "status_meaning": {f"{P}_{k}": _MEANING[k] for k in codes},
+            "struct": f"{prefix}_controller", "fields": fields_doc,
+            "scalars": {a.name: list(a.names) for a in params if a.name in _SCALARS},
+            "functions": [f"{prefix}_controller_init", f"{prefix}_controller_reset", f"{prefix}_controller_step",
+                          f"{prefix}_status_name"],
+            "configuration": {k: ([float(x) for x in v] if not isinstance(v, (int, float)) else float(v))
+                              for k, v in sorted(values.items())}}
+    data["body_sha256"] = json_body_hash(data)
+    return Unit(prefix, stamp(source), stamp(header), json.dumps(data, indent=1) + "\n")
