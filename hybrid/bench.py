@@ -497,12 +497,16 @@ def controller_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool,
         return
     robot = Robot.from_urdf(path, tip=tip)
     sphere = Sphere(SPHERE[:3], SPHERE[3])
-    ctrl = Controller(robot, sphere, force_reference=Step(10.0, 20.0, 0.5), velocity_reference=Step(0.15, 0.3, 1.5))
+    # the same sample again and again: no sample clock to keep
+    ctrl = Controller(robot, sphere, force_reference=Step(10.0, 20.0, 0.5), velocity_reference=Step(0.15, 0.3, 1.5),
+                      timing_tolerance=None)
     q = np.array([0.3, -1.0, 1.2, -0.4, 1.1, 0.2, 0.5][:robot.n])
     qd, Fc = np.full(robot.n, 0.1), np.array([1.0, 2.0, 3.0, 0.0, 0.0, 0.0])
     step = ctrl._step  # the function the controller binds
-    values = dict(zip((n for n, _ in step.inputs), (q, qd, Fc, np.zeros(12), [0.3], np.zeros(6), np.zeros(6),
-                                                    np.zeros(9), *ctrl._params)))
+    m = len(ctrl.axes)
+    values = {"q": q, "qd": qd, "Fc": Fc, "integrals": np.zeros(2 * m), "last_torque": np.zeros(robot.n + 1),
+              "t": [0.3], "yd_extra": np.zeros(m), "yd_rate": np.zeros(m), "target": np.zeros(9),
+              **ctrl.step_inputs()}
     ops = kernel_function(controller_kernels(robot.chain, sphere.spec(), ctrl.axes)[0]).n_instructions()
     add(f"{name}: {STEP_IN_C}", c_harness_ns(step.unit.folder, step.unit.manifest["unit"], step.entry, values,
                                              50_000 if quick else 500_000, rep), ratio=f"{ops} generated operations")
