@@ -78,6 +78,16 @@ LOOP_GAINS = ("KP", "KI", "KI2", "KD")
 #: the ``options`` array: switches (0/1) and numbers
 OPTIONS = ("curvature", "sample_time", "khatib", "integral_limit", "loss_threshold", "approach_speed",
            "pseudoinverse")
+#: what each option means (the standalone controller's header documents its fields with these)
+OPTION_DOCS = {
+    "curvature": "1: the law feeds the task frame's rate R' forward (the curvature term), 0: not [1]",
+    "sample_time": "the sample period T at which the integrals advance [s]",
+    "khatib": "1: the law takes the desired force R^T Sigma F_d (Khatib's scheme), 0: the measured wrench [1]",
+    "integral_limit": "anti-windup: the largest integral action per axis [m/s^2 or rad/s^2]; 1e300: off",
+    "loss_threshold": "a force axis whose force falls below this has lost contact [N or N m]; -1e300: off",
+    "approach_speed": "the speed at which a force axis that lost contact approaches the surface [m/s or rad/s]",
+    "pseudoinverse": "Raibert & Craig's scheme: 1: the selected rows' pseudo-inverse (Fisher & Mujtaba), 0: J_y^-1",
+}
 #: the posture task's per-joint numbers, in this order (n each) in the ``posture`` array
 POSTURE = ("q_rest", "Kp", "Kd")
 #: the torque limits' per-joint numbers, in this order (n each) in the ``limits`` array
@@ -141,9 +151,12 @@ def posture_torque(chain: rb.Chain, arm, params, q, qd, posture):
     return rb.crba(chain, arm.frames, params, inertias) @ w + rb.rnea(chain, arm.frames, params, qd, bodies=inertias)
 
 
+#: the largest finite double (|x| <= it is false for infinities and NaN)
+_DBL_MAX = 1.7976931348623157e308
+
+
 def _clamped(x, lo, hi):
-    """``x`` within ``[lo, hi]`` by comparisons (a NaN stays NaN, so a non-finite torque is still reported;
-    ``fmin``/``fmax`` would hide it)."""
+    """``x`` within ``[lo, hi]`` by comparisons (``fmin``/``fmax`` would make a NaN a number)."""
     return ca.if_else(x > hi, hi, ca.if_else(x < lo, lo, x))
 
 
@@ -154,14 +167,16 @@ def limited(tau, z, z_next, last, limits):
     after a start has no rate to limit); ``limits`` the largest ``|tau_j|`` and the largest change of
     ``tau_j`` in one sample (the rate bound first, then the magnitude's). A saturated sample keeps the
     integrals as they were (conditional integration: the loops do not wind up against a torque the
-    arm does not get). Limits of 1e300 change nothing, bit for bit."""
+    arm does not get). A limit of the largest double (``DBL_MAX``) is none: it changes no finite torque."""
     n = tau.shape[0]
     prev, started, tau_max, rate_max = last[:n], last[n], limits[:n], limits[n:]
     out = []
     for j in range(n):
         lo, hi = ca.if_else(started, prev[j] - rate_max[j], -tau_max[j]), ca.if_else(started, prev[j] + rate_max[j],
                                                                                           tau_max[j])
-        out.append(_clamped(_clamped(tau[j], lo, hi), -tau_max[j], tau_max[j]))
+        # a torque that is not finite stays as it is, and is reported so
+        finite = ca.fabs(tau[j]) <= _DBL_MAX
+        out.append(ca.if_else(finite, _clamped(_clamped(tau[j], lo, hi), -tau_max[j], tau_max[j]), tau[j]))
     out = ca.vertcat(*out)
     saturated = ca.sum1(out != tau) > 0
     return out, ca.if_else(saturated, z, z_next), saturated
@@ -268,7 +283,7 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
         Arg("options", opts, "1, s, 1, unit of a, N or N m, m/s or rad/s, 1", names=OPTIONS),
         Arg("posture", posture, "per joint: rad or m (q_rest), then 1/s^2 (Kp), then 1/s (Kd)",
             names=tuple(f"{k}_{j}" for k in POSTURE for j in names)),
-        Arg("limits", limits, "per joint: N m or N (tau_max), then N m or N per sample (rate_max)",
+        Arg("limits", limits, "per joint: N m or N (tau_max), then N m or N per sample (rate_max); DBL_MAX: none",
             names=tuple(f"{k}_{j}" for k in LIMITS for j in names)))
 
     def outputs(torque):

@@ -28,6 +28,7 @@ import casadi as ca
 
 from hybrid.native.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
+from .controller_step import OPTION_DOCS
 from .emit import GENERATOR_VERSION, STATUS, Unit, _casadi_cores, comment_safe
 from .kernel import Kernel
 
@@ -44,7 +45,8 @@ _MEANING = {
     "OK": "a sample on time; tau is the law's, the integrals advanced",
     "SINGULAR": "the task Jacobian's conditioning is below singular_tol; tau is the torque last written",
     "NONFINITE": "the law's output is not finite; tau is the torque last written",
-    "FRAME_UNDEFINED": "the task frame's reference direction is parallel to the normal; tau is the torque last written",
+    "FRAME_UNDEFINED": "the task frame's reference direction is parallel to the normal; tau is the torque last "
+                       "written",
     "EULER_SINGULAR": "cos(beta) of the tip's ZYX Euler angles is near 0; tau is the torque last written",
     "INPUT_NONFINITE": "t, q, qd or wrench is not finite; tau is the torque last written, nothing changed",
     "SAMPLE_LATE": "t advanced by more than (1 + timing_tolerance) sample_time",
@@ -108,16 +110,14 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     fields.append("    /* ---- configuration: the run-time parameters, any of which may change between samples */")
     for a in params:
         if a.name in _SCALARS:
-            units = a.unit.split(", ") if isinstance(a.unit, str) else list(a.unit)
-            for i, n in enumerate(a.names):
-                u = units[i] if len(units) == len(a.names) else a.unit
-                fields.append(f"    double {n}; /* {a.name} [{comment_safe(u)}] */")
+            fields += [f"    double {n}; /* {comment_safe(OPTION_DOCS.get(n, n))} */" for n in a.names]
         else:
             array_field(a, f"{a.name}")
     fields.append("    double timing_tolerance; /* a sample is on time when t advanced by sample_time within this "
                   "fraction of it [1]; < 0: no timing check */")
     fields.append("    double singular_tol; /* the task Jacobian's least conditioning [1] */")
-    fields.append("    /* ---- references the caller computes each sample (0 after init): added to the steps' values */")
+    fields.append("    /* ---- references the caller computes each sample (0 after init): added to the steps' "
+                  "values */")
     for name in _CALLER:
         array_field(inputs[name], {"yd_extra": "reference added per axis",
                                    "yd_rate": "reference rate per axis (velocity axes' feedforward)",
@@ -125,7 +125,8 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
                                              "position error)"}[name])
     fields.append("    /* ---- state kept between samples (zero after init and reset) */")
     array_field(inputs["integrals"], "the loops' integrals")
-    fields.append(f"    double tau[{nq}]; /* the torque last written [{comment_safe(', '.join(dict.fromkeys(tau.unit if isinstance(tau.unit, tuple) else (tau.unit,))))}] */")
+    tau_unit = ", ".join(dict.fromkeys(tau.unit if isinstance(tau.unit, tuple) else (tau.unit,)))
+    fields.append(f"    double tau[{nq}]; /* the torque last written [{comment_safe(tau_unit)}] */")
     fields.append("    int has_torque; /* 1: tau is the arm's torque, the next sample is rate-limited from it */")
     fields.append("    double t_last; /* the sample clock: the last sample's t [s] */")
     fields.append("    int has_clock; /* 1: t_last is set (the next sample's timing is checked) */")
@@ -179,7 +180,8 @@ const char *{prefix}_status_name(int status);
         if a.name in _SCALARS:
             init += [f"    c->{n} = {_number(v)};" for n, v in zip(a.names, vals)]
         else:
-            init.append(f"    {{\n        static const double v[{a.size}] = {{{', '.join(_number(v) for v in vals)}}};\n"
+            numbers = ", ".join(_number(v) for v in vals)
+            init.append(f"    {{\n        static const double v[{a.size}] = {{{numbers}}};\n"
                         f"        for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = v[i];\n    }}")
     init.append(f"    c->timing_tolerance = {_number(values['timing_tolerance'])};")
     init.append(f"    c->singular_tol = {_number(values['singular_tol'])};")
@@ -194,8 +196,8 @@ const char *{prefix}_status_name(int status);
     outs = "".join(f"    double o_{a.name}[{a.size}];\n" for a in step.core_outputs())
     guards = "".join(
         f"    if (status == {P}_OK && fabs(o_{g.name}[0]) < "
-        f"{'c->singular_tol' if g.tolerance == 'singular_tol' else g.c_tolerance}) status = {P}_{g.status.removeprefix('HYBRID_')};\n"
-        for g in step.guards)
+        f"{'c->singular_tol' if g.tolerance == 'singular_tol' else g.c_tolerance}) "
+        f"status = {P}_{g.status.removeprefix('HYBRID_')};\n" for g in step.guards)
     finite = " || ".join(f"!all_finite(o_{a.name}, {a.size})" for a in step.core_outputs())
     keep = "".join(f"    for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = o_{a.name}[i];\n" for a in loop_out)
     if "sample_time" not in scalars["options"].names:

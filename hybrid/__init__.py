@@ -80,8 +80,8 @@ __all__ = [
     "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw", "Experiment",
     "Gains", "HybridError", "ImplicitSurface", "Khatib", "LargeModelWarning", "LinePath", "Measurement",
     "NativeBuildError", "NonFiniteError", "OperationalSpace", "PANDA_URDF", "Plane", "Posture", "Reference", "Robot",
-    "SCHEMES", "SampleTimingError", "Scheme", "Sensor", "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere",
-    "Step", "TaskDecoupling", "TaskFrameError", "UR5_URDF", "URDFError", "__version__", "arm_terms",
-    "decoupling_law", "metrics", "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment",
-    "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",
+    "SCHEMES", "SampleTimingError", "Scheme", "Sensor", "SimulationError", "SimulationResult",
+    "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "UR5_URDF", "URDFError",
+    "__version__", "arm_terms", "decoupling_law", "metrics", "operational_space", "panda", "panda_experiment",
+    "paper_arm", "paper_experiment", "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",
 ]

@@ -18,12 +18,12 @@ Q_UR5 = np.array([0.0, -1.2, 1.6, -1.9, -1.57, 0.0])
 
 @pytest.fixture(scope="module")
 def ur5_ctrl():
-    return hybrid.Controller(hybrid.ur5(), SPHERE)
+    return hybrid.Controller(hybrid.ur5(), SPHERE, timing_tolerance=None)  # samples at any time
 
 
 @pytest.fixture(scope="module")
 def paper_ctrl():
-    return hybrid.Controller(hybrid.paper_arm(), hybrid.Circle((0.5, 0.0), 0.2))
+    return hybrid.Controller(hybrid.paper_arm(), hybrid.Circle((0.5, 0.0), 0.2), timing_tolerance=None)
 
 
 def first_line(exc: BaseException) -> str:

@@ -190,7 +190,8 @@ def test_a_diverging_run_stops_where_the_generated_one_does():
         with pytest.raises(hybrid.SimulationError, match="NaN or infinite") as info:
             hybrid.simulate(exp, plant=plant)
         stops.append(info.value.time)
-    assert stops[0] == stops[1]
+    # in the same control sample: the last one's growth is so steep that rounding moves the step it overflows at
+    assert stops[0] // exp.sample_time == stops[1] // exp.sample_time
 
 
 def test_mujoco_refuses_what_it_cannot_run(monkeypatch):

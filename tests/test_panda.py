@@ -162,13 +162,15 @@ def test_posture_off_is_bitwise_the_law_without_a_null_space_torque(rng, robots,
     for scheme in ("task", "khatib"):
         ctrl = hybrid.Controller(robot, SPHERE, scheme, force_reference=hybrid.Step(10.0, 20.0, 0.05),
                                  velocity_reference=0.1, curvature=True)
+        last = np.zeros(robot.n + 1)  # the last torque and whether there is one (the rate limit's)
         for k, (q, qd, _) in enumerate(well_conditioned_states(rng, robot, model, fid, SPHERE, 8)):
             Fc = rng.normal(0, 10, 6)
             z = ctrl.state.ravel()
             tau = ctrl(k * 0.01, q, qd, Fc)
-            want = zero_tau0(q, qd, Fc, z, np.array([k * 0.01]), np.zeros(6), np.zeros(6), np.zeros(9),
+            want = zero_tau0(q, qd, Fc, z, last, np.array([k * 0.01]), np.zeros(6), np.zeros(6), np.zeros(9),
                              *ctrl.step_inputs().values(), singular_tol=ctrl.singular_tol)["tau"]
             assert tau.tobytes() == want.tobytes()
+            last = np.append(tau, 1.0)
 
 
 def test_a_task_without_null_space_or_a_scheme_without_projection_refuses_a_posture(robots):

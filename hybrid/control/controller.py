@@ -17,11 +17,12 @@ import numpy as np
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.control.schemes import Scheme, scheme_of
-from hybrid.errors import HybridError, SampleTimingError
+from hybrid.errors import HybridError, NonFiniteError, SampleTimingError
 from hybrid.geometry.task_axes import AXIS_NAMES, check_axes, reference_direction, spatial_surface
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
+from hybrid.native.standalone import generate_controller
 from hybrid.validate import _finite, check_singular_tol
 
 #: "no limit" for the options that are off (the generated step takes finite numbers only)
@@ -257,7 +258,8 @@ class Controller:
         steps = np.array([ref.step or (0.0, 0.0, 0.0) for ref in self._references], float).ravel()
         # every step takes the posture's numbers (zeros when off: the step without a posture ignores them)
         posture_array = np.zeros(3 * robot.n) if posture is None else self.posture.as_array()
-        limits = np.concatenate([np.minimum(self.torque_limit, _OFF), np.minimum(self.torque_step_limit, _OFF)])
+        # no limit is the largest double: bounding a finite torque by it changes nothing, bit for bit
+        limits = np.minimum(np.concatenate([self.torque_limit, self.torque_step_limit]), np.finfo(float).max)
         self._params = (steps, self._gain_array(), np.array(self.selection, float), robot.as_array(),
                         self._spatial.as_array(), np.array(self.reference), options, posture_array, limits)
         self._t, self._extra, self._rate, self._target = np.zeros(1), np.zeros(m), np.zeros(m), np.zeros(9)
@@ -319,8 +321,6 @@ class Controller:
         caller's: it writes them into ``c.yd_extra``, ``c.yd_rate`` and ``c.target`` each sample. C99,
         no allocation, no globals, no I/O, reentrant; the same bytes for the same controller. Files in
         ``out`` with other content are refused unless ``force``."""
-        from hybrid.native.standalone import generate_controller
-
         return generate_controller(self, out, name, force)
 
     @property
@@ -558,8 +558,11 @@ class Controller:
                 arr = np.asarray(v, dtype=float)
             except (TypeError, ValueError):
                 arr = None
-            if arr is None or arr.shape != (self.robot.n,) or not np.isfinite(arr).all():
-                raise HybridError(f"{name} = {v!r:.60}; give {self.robot.n} finite numbers (one per joint)")
+            if arr is None or arr.shape != (self.robot.n,):
+                raise HybridError(f"{name} = {v!r:.60}; give {self.robot.n} numbers (one per joint)")
+            if not np.isfinite(arr).all():
+                raise NonFiniteError(f"{name} = {arr.tolist()} is not finite; give finite joint positions and "
+                                     "velocities [rad, rad/s or m, m/s]")
         try:
             got = self._step(q, qdot, Fc, self._z, self._last, self._t, self._extra, self._rate, self._target,
                              *self._params, singular_tol=self.singular_tol)
