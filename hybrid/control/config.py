@@ -410,7 +410,7 @@ class _Reader:
     def shape(self, key: Key, table: dict, kinds: dict, what: str):
         """``table``'s ``kind`` and its parameters, read by the types in ``kinds``."""
         if "kind" not in table:
-            raise self.error(key, f"has no kind; add kind = one of {', '.join(repr(k) for k in kinds)}")
+            raise self.error(key, f"has no kind; add kind = one of {', '.join(json.dumps(k) for k in kinds)}")
         kind = self.choice((*key, "kind"), table["kind"], tuple(kinds))
         params = kinds[kind]
         self.known(key, table, ("kind", *params), f"a {kind} {what}")
