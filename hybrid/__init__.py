@@ -11,7 +11,8 @@ The public API, by subpackage:
   :class:`LinePath`); the task frame at points of any surface (:func:`task_frame`);
 - control (:mod:`hybrid.control`): the compiled law (:class:`DecouplingLaw`, :func:`decoupling_law`),
   the :class:`Controller` component, its options (:class:`Posture`, a null-space posture task;
-  :class:`ContactLoss`) and its schemes (:data:`SCHEMES`); :class:`Gains`, :class:`Step`;
+  :class:`ContactLoss`) and its schemes (:data:`SCHEMES`); :class:`Gains`, :class:`Step`; a controller
+  described in a TOML file (:func:`read_controller_config`);
 - experiments and simulation: the one :class:`Experiment` type and its factories
   (:func:`paper_experiment`, :func:`tracing_experiment`, :func:`panda_experiment`), the plant's
   :class:`Sensor` and :class:`Contact`, :func:`simulate`, :class:`SimulationResult`, :func:`metrics`;
@@ -27,6 +28,7 @@ runs only when a unit must be built, and :class:`ImplicitSurface` (a SymPy expre
 from __future__ import annotations
 
 from hybrid._version import __version__
+from hybrid.control.config import read_controller_config
 from hybrid.control.controller import ContactLoss, Controller, Measurement, Posture, Reference
 from hybrid.control.law import DecouplingLaw, decoupling_law
 from hybrid.control.loops import Gains
@@ -83,5 +85,6 @@ __all__ = [
     "SCHEMES", "SampleTimingError", "Scheme", "Sensor", "SimulationError", "SimulationResult",
     "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "UR5_URDF", "URDFError",
     "__version__", "arm_terms", "decoupling_law", "metrics", "operational_space", "panda", "panda_experiment",
-    "paper_arm", "paper_experiment", "simulate", "sweep", "task_frame", "tracing_experiment", "ur5",
+    "paper_arm", "paper_experiment", "read_controller_config", "simulate", "sweep", "task_frame",
+    "tracing_experiment", "ur5",
 ]

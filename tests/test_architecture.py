@@ -43,6 +43,8 @@ LAZY_IMPORTS = {
     ("hybrid.plants.interface", "hybrid.plants.mujoco"): "MuJoCo is an optional extra: it loads when a run asks",
     ("hybrid.experiments.experiment", "hybrid.geometry.implicit"):
         "SymPy loads only when a file names a surface a user wrote down",
+    ("hybrid.control.config", "hybrid.geometry.implicit"):
+        "SymPy loads only when a controller file writes its surface as a formula",
 }
 
 

@@ -14,7 +14,9 @@ from pathlib import Path
 from hybrid import bench
 from hybrid.cli import experiments as experiment_cli
 from hybrid.cli import sweep as sweep_cli
+from hybrid.control.config import read_controller_config
 from hybrid.errors import HybridError
+from hybrid.models.robot import Robot
 from hybrid.native import checkout
 from hybrid.native.standalone import generate
 from hybrid.native.units import generator
@@ -62,8 +64,11 @@ def _lock(text: str) -> tuple[str, float]:
 
 
 def _generate(args) -> int:
-
-    written = generate(args.urdf, args.tip, args.out, args.name, dict(args.lock) or None, force=args.force)
+    if args.controller is None:
+        written = generate(args.urdf, args.tip, args.out, args.name, dict(args.lock) or None, force=args.force)
+    else:  # the controller the file describes, for this arm
+        robot = Robot.from_urdf(args.urdf, args.tip, locked=dict(args.lock) or None)
+        written = read_controller_config(args.controller, robot).generate(args.out, args.name, force=args.force)
     print("wrote " + ", ".join(str(p) for p in written))
     return 0
 
@@ -86,13 +91,19 @@ def build_parser() -> argparse.ArgumentParser:
                         "works from an installed package too")
     r.set_defaults(func=_regenerate)
 
-    g = sub.add_parser("generate", help="write standalone C99 (.c, .h, manifest .json) for a URDF arm")
+    g = sub.add_parser("generate", help="write standalone C99 (.c, .h, manifest .json) for a URDF arm",
+                       description="Write standalone C99 for the arm of a URDF: its model's terms or, with "
+                                   "--controller, the hybrid controller a TOML file describes.")
     g.add_argument("--urdf", required=True, help="the robot's URDF file")
     g.add_argument("--tip", required=True, help="the link that ends the chain (e.g. tool0)")
     g.add_argument("--out", required=True, help="folder to write into")
     g.add_argument("--name", help="prefix of the files and C symbols (default: the URDF's robot name)")
     g.add_argument("--lock", action="append", type=_lock, default=[], metavar="JOINT[=POSITION]",
                    help="hold this joint at POSITION (default 0); repeatable")
+    g.add_argument("--controller", metavar="CONFIG.toml",
+                   help="write the controller this TOML file describes (surface, scheme, task axes, gains, "
+                        "references, limits; see hybrid/data/controller_ur5_sphere.toml) for the arm, in place "
+                        "of the arm's terms alone")
     g.add_argument("--force", action="store_true", help="overwrite files with other content")
     g.set_defaults(func=_generate)
 
