@@ -102,3 +102,28 @@ def test_prefix_is_a_c_identifier(name, ident):
     from hybrid.validate import c_identifier
 
     assert c_identifier(name) == ident
+
+
+def test_readme_controller_c_example_is_the_python_controller(tmp_path):
+    """The README's controller example, generated from the shipped TOML by the command it gives, built
+    strictly and run: its torque is the Python controller's of the same file, gains changed alike."""
+    config = ROOT / "hybrid" / "data" / "controller_ur5_sphere.toml"
+    proc = generate(tmp_path / "ur5s", UR5, "ur5s", "--controller", str(config))
+    assert proc.returncode == 0, proc.stderr
+    block = re.findall(r"```c\n(.*?)```", README, flags=re.S)[1]
+    assert "ur5s_controller_step" in block, "README lost its controller C example"
+    (tmp_path / "step.c").write_text(block)
+    exe = tmp_path / "step"
+    build = subprocess.run([CC, *STRICT, str(tmp_path / "step.c"), str(tmp_path / "ur5s" / "ur5s.c"),
+                            f"-I{tmp_path / 'ur5s'}", "-o", str(exe), "-lm"], capture_output=True, text=True)
+    assert build.returncode == 0, build.stderr
+    out = subprocess.run([str(exe)], capture_output=True, text=True, check=True).stdout.split("\n")
+    tau_c = np.array([float(line.split()[1]) for line in out if line.startswith("tau")])
+    assert not [line for line in out if line.startswith("sample")]  # every sample OK
+    changed = tmp_path / "changed.toml"
+    changed.write_text(config.read_text() + "\n[gains.n]\nKPf = 3.0\n")
+    ctrl = hybrid.read_controller_config(changed, hybrid.Robot.from_urdf(example_robot(UR5[0]), tip="tool0"))
+    q = np.array([0.0, 0.63, -2.25, -1.0, -1.57, 0.0])
+    for k in range(3):
+        tau = ctrl(k * ctrl.sample_time, q, np.zeros(6), np.array([0.0, 0.0, 10.0, 0.0, 0.0, 0.0]))
+    np.testing.assert_allclose(tau_c, tau, rtol=1e-12, atol=1e-12 * np.abs(tau).max())
