@@ -9,7 +9,8 @@ def test_bench_quick_reports_every_benchmark():
     for part in ("sympy backend", "casadi backend", "one state", "batched", "plain NumPy", "lambdify",
                  "CasADi Function", "compiled", "regenerate", "ur5: r, rotation, J", "panda: generate + compile",
                  "panda: the same by Pinocchio", "panda: generated C size", "ur5: controller step from Python",
-                 "1,000 paper runs by hybrid.sweep"):
+                 "1,000 paper runs by hybrid.sweep", "paper: standalone controller step in C",
+                 "paper: standalone controller, .text", "paper: standalone controller, compile time"):
         assert part in names
     assert all(r["median"] > 0 for r in report["results"])
     # the targets are reported (met or not), never asserted
