@@ -406,3 +406,11 @@ def _unit_axis(j: Node, where: str) -> np.ndarray:
         raise URDFError(f"{where} (line {j.line}): the joint axis is zero; "
                         "give a direction, e.g. <axis xyz=\"0 0 1\"/>")
     return axis / norm
+
+
+def rigid_offset(path, tip: str, frame: str) -> tuple[np.ndarray, np.ndarray]:
+    """The pose ``(r [m], R)`` of the URDF link ``frame`` in the axes of the link ``tip`` of the file
+    at ``path``, for a ``frame`` rigidly attached to ``tip`` (joined to it by fixed joints only: a
+    sensor's or a tool's frame beyond the flange). Not implemented yet."""
+    raise URDFError(f"a sensor mounted at the URDF frame {frame!r} is not supported yet; give its position "
+                      "and rotation in tip axes")
