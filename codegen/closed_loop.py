@@ -38,7 +38,7 @@ METRICS = ("force_overshoot_N", "force_overshoot_percent", "force_settling_time_
            "steady_state_speed_error_m_per_s", "rms_force_error_N", "rms_speed_error_m_per_s", "max_penetration_m",
            "contact_losses", "time_out_of_contact_s")
 #: controller-step inputs the loop drives itself (the rest are the run's parameters)
-_DRIVEN = ("q", "qd", "Fc", "integrals", "last_torque", "t", "yd_extra", "yd_rate", "target")
+_DRIVEN = ("q", "qd", "Fc", "integrals", "last_torque", "filter", "t", "yd_extra", "yd_rate", "target")
 
 
 @dataclass(frozen=True)
@@ -248,7 +248,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     hl_v pre_rhs[PLANT_RHS_LANES_NPRE], pre_sig[LOOP_SIGNALS_LANES_NPRE], pre_both[PLANT_RHS_SIGNALS_LANES_NPRE],
         pre_step[{step.name.upper()}_LANES_NPRE];
     hl_v blk[{nb}], x[{nx}], xt[{nx}], k1[{nx}], k2[{nx}], k3[{nx}], k4[{nx}], s[{ns}], fc[6], z[{2 * m}], tv[1],
-        zero[9], base[{3 * nq}], last[{nq + 1}];
+        zero[13], base[{3 * nq}], last[{nq + 1}];
     {out_decl}
     lanes_run run;
     lanes_metrics mt;
@@ -268,7 +268,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     mt.n_f = mt.n_v = mt.sum_fe = mt.sum_ve = mt.n_last = mt.sum_f2 = mt.sum_v2 = mt.in_prev = mt.losses = mt.t_out
         = hl_splat(0.0);
     for (j = 0; j < {nq}; ++j) mt.tau[j] = hl_splat(0.0);
-    for (j = 0; j < 9; ++j) zero[j] = hl_splat(0.0);
+    for (j = 0; j < 13; ++j) zero[j] = hl_splat(0.0);
     for (j = 0; j < 6; ++j) fc[j] = hl_splat(0.0);
     for (j = 0; j < {2 * m}; ++j) z[j] = hl_splat(0.0);
     for (j = 0; j <= {nq}; ++j) last[j] = hl_splat(0.0);
@@ -282,7 +282,8 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         loop_signals_lanes(x, pre_sig, s);
         for (j = 0; j < {nf}; ++j) fc[j] = s[j];
         tv[0] = hl_splat(k * sample_time);
-        {step.name}_lanes(x, x + {nq}, fc, z, last, tv, zero, zero, zero, pre_step, {out_args});
+        /* the plant's sensor gives the wrench on the robot itself: no filter state */
+        {step.name}_lanes(x, x + {nq}, fc, z, last, zero, tv, zero, zero, zero, pre_step, {out_args});
 {guards}        flag(&run, {finite}, HYBRID_NONFINITE, k);
         for (j = 0; j < {2 * m}; ++j) z[j] = {z_next}[j];
         /* the torque the rate limit starts from at the next sample */

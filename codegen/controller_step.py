@@ -92,6 +92,11 @@ OPTION_DOCS = {
 POSTURE = ("q_rest", "Kp", "Kd")
 #: the torque limits' per-joint numbers, in this order (n each) in the ``limits`` array
 LIMITS = ("tau_max", "rate_max")
+#: the force/torque sensor's numbers (``hybrid.control.wrench_sensor``): the mount (position, rotation in
+#: tip axes, row-major), the sign, the tool (mass, centre of mass in sensor axes), the bias, the filter
+SENSOR = ("r_x", "r_y", "r_z", *(f"R_{i}{j}" for i in range(3) for j in range(3)), "sign", "tool_mass",
+          "tool_cx", "tool_cy", "tool_cz", "bias_fx", "bias_fy", "bias_fz", "bias_mx", "bias_my", "bias_mz",
+          "cutoff_hz", "order")
 
 
 @dataclass(frozen=True)
@@ -182,6 +187,45 @@ def limited(tau, z, z_next, last, limits):
     return out, ca.if_else(saturated, z, z_next), saturated
 
 
+def sensor_wrench(tip_R, reading, sensor, gravity):
+    """The raw ``reading`` of a force/torque sensor as ``(w_t, F)``: the environment's wrench on the tool
+    in sensor axes about the sensor origin (sign, bias and the tool's weight taken off), and the wrench on
+    the robot at the tip origin in base axes (``hybrid.control.wrench_sensor``'s steps 1 and 2)."""
+    r = sensor[0:3]
+    Rm = ca.reshape(sensor[3:12], 3, 3).T  # row-major
+    sign, mass, com, bias = sensor[12], sensor[13], sensor[14:17], sensor[17:23]
+    R_s = tip_R @ Rm
+    f_g = mass * (R_s.T @ gravity)
+    w_t = sign * reading - bias - ca.vertcat(f_g, ca.cross(com, f_g))
+    f = R_s @ w_t[:3]
+    return w_t, ca.vertcat(f, R_s @ w_t[3:] + ca.cross(tip_R @ r, f))
+
+
+def low_pass(x, state, sensor, sample_time):
+    """The Butterworth low-pass of order ``sensor[24]`` (1 or 2) at ``sensor[23]`` Hz (none at 0) on each
+    component of ``x``, in transposed direct form II (``state``: two numbers per component), by the
+    bilinear transform with the cutoff prewarped (-3 dB exactly at the cutoff). The state's last number is
+    1 once the filter has started: before, it takes the steady state of ``x`` (no start-up transient).
+    Returns ``(y, state after)``."""
+    cutoff, second = sensor[23], sensor[24] > 1.5
+    K = ca.tan(ca.pi * cutoff * sample_time)
+    n1, n2 = 1 / (1 + K), 1 / (1 + ca.sqrt(2) * K + K * K)
+    b0 = ca.if_else(second, K * K * n2, K * n1)
+    b1 = ca.if_else(second, 2 * K * K * n2, K * n1)
+    b2 = ca.if_else(second, K * K * n2, 0)
+    a1 = ca.if_else(second, 2 * (K * K - 1) * n2, (K - 1) * n1)
+    a2 = ca.if_else(second, (1 - ca.sqrt(2) * K + K * K) * n2, 0)
+    on, started = cutoff > 0, state[2 * x.shape[0]]
+    ys, nxt = [], []
+    for i in range(x.shape[0]):
+        s1 = ca.if_else(started, state[2 * i], (1 - b0) * x[i])
+        s2 = ca.if_else(started, state[2 * i + 1], (b2 - a2) * x[i])
+        y = b0 * x[i] + s1
+        ys.append(ca.if_else(on, y, x[i]))
+        nxt += [ca.if_else(on, b1 * x[i] - a1 * y + s2, 0), ca.if_else(on, b2 * x[i] - a2 * y, 0)]
+    return ca.vertcat(*ys), ca.vertcat(*nxt, 1)
+
+
 def _wrapped(angle):
     """``angle`` in [-pi, pi) (cheaper than atan2 of its sine and cosine)."""
     return angle - 2 * ca.pi * ca.floor((angle + ca.pi) / (2 * ca.pi))
@@ -203,17 +247,19 @@ def references(t, steps, extra):
 
 
 def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...], desired_frame: bool = False,
-                       position_error: bool = False) -> tuple[Kernel, ...]:
+                       position_error: bool = False, wrench_sensor: bool = False) -> tuple[Kernel, ...]:
     """``controller_step`` (one sample: measure, loops, decoupling law), ``raibert_craig_step`` (the
     same loops, no decoupling) and ``task_measurement`` of ``chain`` on ``spec`` for the task ``axes``,
     then for a redundant task (fewer axes than joints) ``controller_posture_step`` (the decoupling
     law with the posture task in its null space).
 
-    ``desired_frame`` and ``position_error`` change what is computed, so they are compiled in (a
-    variant each); the other options are run-time numbers."""
+    ``desired_frame``, ``position_error`` and ``wrench_sensor`` (the wrench input is a force/torque
+    sensor's raw reading, turned into ``F_c`` by :func:`sensor_wrench` and :func:`low_pass`) change what
+    is computed, so they are compiled in (a variant each); the other options are run-time numbers."""
     n, m = chain.n, len(axes)
     q, qd = ca.SX.sym("q", n), ca.SX.sym("qd", n)
     Fc, z, last = ca.SX.sym("Fc", 6), ca.SX.sym("integrals", 2 * m), ca.SX.sym("last_torque", n + 1)
+    filt, sensor = ca.SX.sym("filter", 13), ca.SX.sym("sensor", len(SENSOR))
     t, steps = ca.SX.sym("t"), ca.SX.sym("steps", 3 * m)
     yd_extra, yd_rate, target = ca.SX.sym("yd_extra", m), ca.SX.sym("yd_rate", m), ca.SX.sym("target", 9)
     gains, sigma = ca.SX.sym("gains", len(LOOP_GAINS) * m), ca.SX.sym("selection", m)
@@ -226,6 +272,12 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
 
     arm = arm_motion(chain, q, qd)
     p, v = arm.frames.tip_p, arm.v
+    reading = Fc
+    if wrench_sensor:  # the reading becomes the wrench on the robot at the tip, filtered
+        _, raw_Fc = sensor_wrench(arm.frames.tip_R, reading, sensor, params[-3:])
+        Fc, filt_next = low_pass(raw_Fc, filt, sensor, o["sample_time"])
+    else:
+        filt_next = ca.SX.zeros(13, 1)
     tf = task_frame(spec, p, v[:3], theta, e)
     Rm, Rdm = task_rows(tf, axes)
     # the loop frame: at the tip, or at the desired point target = (p_d, p_d', phi_d)
@@ -253,7 +305,11 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
     force_units = tuple("N" if i < 3 else "N m" for i in axes)
     a_q = Arg("q", q, rb.joint_units(chain, "q"), names=names)
     a_qd = Arg("qd", qd, rb.joint_units(chain, "qd"), names=names)
-    a_fc = Arg("Fc", Fc, ("N",) * 3 + ("N m",) * 3, names=("f_x", "f_y", "f_z", "m_x", "m_y", "m_z"))
+    wrench_names = ("f_x", "f_y", "f_z", "m_x", "m_y", "m_z")
+    a_fc = Arg("Fc", reading, ("N",) * 3 + ("N m",) * 3, names=wrench_names)
+    a_robot = Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain))
+    a_sensor = Arg("sensor", sensor, "m, 1, 1, kg, m, N and N m, Hz, 1 (see hybrid/control/wrench_sensor.py)",
+                   names=SENSOR)
     a_s = Arg("surface", theta, "m (lengths), 1 (directions)", names=spec.parameters)
     a_e = Arg("e", e, "1", names=("e_x", "e_y", "e_z"))
     integral_names = tuple(f"{k}_{ax}" for ax in axis_names for k in ("z1", "z2"))
@@ -269,6 +325,7 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
         Arg("integrals", z, "per axis: unit of e times s, then times s^2", names=integral_names),
         Arg("last_torque", last, (*rb.joint_units(chain, "tau"), "1"),
             names=(*(f"tau_{j}" for j in names), "started")),
+        Arg("filter", filt, "as the wrench (the sensor filter's state, two per component), then 1 once started"),
         Arg("t", t, "s"),
         Arg("yd_extra", yd_extra, "m/s, rad/s (velocity axes); N, N m (force axes)", names=axis_names),
         Arg("yd_rate", yd_rate, "m/s^2, rad/s^2 (velocity axes; unused on force axes)", names=axis_names),
@@ -279,12 +336,12 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
         Arg("gains", gains, "per axis KP, KI, KI2, KD (see codegen/controller_step.py)",
             names=tuple(f"{g}_{ax}" for ax in axis_names for g in LOOP_GAINS)),
         Arg("selection", sigma, "1 (1: force-controlled axis)", names=axis_names),
-        Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain)), a_s, a_e,
+        a_robot, a_s, a_e,
         Arg("options", opts, "1, s, 1, unit of a, N or N m, m/s or rad/s, 1", names=OPTIONS),
         Arg("posture", posture, "per joint: rad or m (q_rest), then 1/s^2 (Kp), then 1/s (Kd)",
             names=tuple(f"{k}_{j}" for k in POSTURE for j in names)),
         Arg("limits", limits, "per joint: N m or N (tau_max), then N m or N per sample (rate_max); DBL_MAX: none",
-            names=tuple(f"{k}_{j}" for k in LIMITS for j in names)))
+            names=tuple(f"{k}_{j}" for k in LIMITS for j in names)), a_sensor)
 
     def outputs(torque):
         torque, z_kept, saturated = limited(torque, z, z_next, last, limits)
@@ -292,11 +349,13 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
                 Arg("integrals_next", z_kept, "as integrals"),
                 Arg("a", a_f, tuple("m/s^2" if i < 3 else "rad/s^2" for i in axes), names=axis_names),
                 Arg("y", y, velocity_units, names=axis_names), Arg("f", f, force_units, names=axis_names),
-                Arg("saturated", saturated, "1 (1: a limit bounded the torque; the integrals were kept)"))
+                Arg("saturated", saturated, "1 (1: a limit bounded the torque; the integrals were kept)"),
+                Arg("filter_next", filt_next, "as filter"),
+                Arg("contact_wrench", Fc, ("N",) * 3 + ("N m",) * 3, names=wrench_names))
 
     what = (f"one control sample on a {spec.kind}: task velocity y = R_f v and wrench f = R_f F_c in the loop "
             "frame, the loops' task acceleration a and integrals after the sample, and the torque tau of ")
-    per_state = ("q", "qd", "Fc", "integrals", "last_torque", "t", "yd_extra", "yd_rate", "target")
+    per_state = ("q", "qd", "Fc", "integrals", "last_torque", "filter", "t", "yd_extra", "yd_rate", "target")
     step = Kernel("controller_step", inputs, outputs(tau),
                   what + f"the decoupling law (task axes {', '.join(axis_names)})", batched=per_state,
                   guards=(*guards, conditioning_guard(cond, CONDITIONING)))
@@ -312,14 +371,20 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
                                f"{', '.join(axis_names)})", batched=per_state,
                                guards=(*guards, conditioning_guard(cond, CONDITIONING))),)
     R6 = ca.diagcat(tf.R, tf.R)
+    # the sensor's stages before the filter (which keeps a state): the measurement is of one instant
+    compensated, at_tip = (sensor_wrench(arm.frames.tip_R, reading, sensor, params[-3:]) if wrench_sensor
+                           else (reading, reading))
     measurement = Kernel(
-        "task_measurement", (a_q, a_qd, a_fc, a_s, a_e),
+        "task_measurement", (a_q, a_qd, a_fc, a_s, a_e, a_robot, a_sensor),
         (Arg("p", p, "m"), Arg("v", v, "m/s, rad/s", names=("vx", "vy", "vz", "wx", "wy", "wz")),
          Arg("task_velocity", R6 @ v, "m/s, rad/s", names=AXIS_NAMES),
-         Arg("task_wrench", R6 @ Fc, "N, N m", names=AXIS_NAMES)),
-        "what the controller measures: tip position p and twist v = (p', w) in base axes, and on all six "
-        "task axes at the tip the task velocity R v and the task wrench R F_c",
-        batched=("q", "qd", "Fc"), guards=(frame_guard(tf.sine),))
+         Arg("task_wrench", R6 @ at_tip, "N, N m", names=AXIS_NAMES),
+         Arg("compensated", compensated, ("N",) * 3 + ("N m",) * 3, names=wrench_names),
+         Arg("contact_wrench", at_tip, ("N",) * 3 + ("N m",) * 3, names=wrench_names)),
+        "what the controller measures: tip position p and twist v = (p', w) in base axes; the sensor's "
+        "reading less its bias and the tool's weight (sensor axes) and the wrench on the robot at the tip F_c "
+        "(base axes, before the filter); on all six task axes at the tip the task velocity R v and the task "
+        "wrench R F_c", batched=("q", "qd", "Fc"), guards=(frame_guard(tf.sine),))
     return (step, raibert_craig, measurement, *posture_step)
 
 

@@ -35,11 +35,14 @@ from .kernel import Kernel
 #: statuses of the call beyond the kernels' (HYBRID_OK .. HYBRID_EULER_SINGULAR), in this order
 CALL_STATUS = ("INPUT_NONFINITE", "SAMPLE_LATE", "SAMPLE_EARLY", "SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
 #: the step's inputs the call fills from its own arguments and the struct's state
-_CALL = {"q": "q", "qd": "qd", "Fc": "wrench", "integrals": "c->integrals", "last_torque": "last", "t": "tv"}
+_CALL = {"q": "q", "qd": "qd", "Fc": "wrench", "integrals": "c->integrals", "last_torque": "last",
+         "filter": "c->filter", "t": "tv"}
 #: the step's inputs the caller computes per sample (references given as code), zero after init
 _CALLER = ("yd_extra", "yd_rate", "target")
 #: the inputs held as named scalar fields (their elements' names), not an array
 _SCALARS = ("options",)
+#: what the step's wrench argument is, unless the unit's info says otherwise
+_WRENCH = "the force and moment on the robot at the tip frame's origin, base axes [N, N m]"
 #: what each status means, for the header and the manifest
 _MEANING = {
     "OK": "a sample on time; tau is the law's, the integrals advanced",
@@ -93,7 +96,9 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
         raise ValueError(f"a controller step's inputs start {driven}, got {tuple(inputs)[:len(driven)]}")
     params = [a for a in step.inputs[len(driven):]]
     nq, m = inputs["q"].size, inputs["yd_extra"].size
-    tau, z_next, *loop_out, saturated = step.outputs
+    out = {a.name: a for a in step.outputs}
+    tau, z_next, saturated, filter_next = out["tau"], out["integrals_next"], out["saturated"], out["filter_next"]
+    loop_out = [out[k] for k in ("a", "y", "f", "contact_wrench")]
     P = prefix.upper()
     codes = statuses()
 
@@ -125,6 +130,7 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
                                              "position error)"}[name])
     fields.append("    /* ---- state kept between samples (zero after init and reset) */")
     array_field(inputs["integrals"], "the loops' integrals")
+    array_field(inputs["filter"], "the wrench filter's state")
     tau_unit = ", ".join(dict.fromkeys(tau.unit if isinstance(tau.unit, tuple) else (tau.unit,)))
     fields.append(f"    double tau[{nq}]; /* the torque last written [{comment_safe(tau_unit)}] */")
     fields.append("    int has_torque; /* 1: tau is the arm's torque, the next sample is rate-limited from it */")
@@ -132,7 +138,8 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     fields.append("    int has_clock; /* 1: t_last is set (the next sample's timing is checked) */")
     fields.append("    /* ---- the last sample's loop outputs (loop frame) */")
     for a in loop_out:
-        array_field(a, {"a": "task acceleration", "y": "task velocity", "f": "task wrench"}.get(a.name, a.name))
+        array_field(a, {"a": "task acceleration", "y": "task velocity", "f": "task wrench",
+                        "contact_wrench": "the wrench on the robot at the tip the law used (base axes)"}[a.name])
     fields.append("    int saturated; /* 1: a torque limit bounded the last sample's torque (integrals kept) */")
     struct = "typedef struct {\n" + "\n".join(fields) + f"\n}} {prefix}_controller;"
 
@@ -149,7 +156,7 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
    {prefix}_controller_init(&c);                                   (the configuration's values)
    status = {prefix}_controller_step(&c, t, q, qd, wrench, tau);   (one sample; {P}_OK is 0)
 
-   wrench: the force and moment on the robot at the tip frame's origin, base axes [N, N m]. */
+   wrench: {comment_safe(info.get("wrench", _WRENCH))}. */
 
 {chr(10).join(defines)}
 {status_lines}
@@ -221,6 +228,7 @@ static int all_finite(const double *v, int n) {{
 void {prefix}_controller_reset({prefix}_controller *c) {{
     int i;
     for (i = 0; i < {2 * m}; ++i) c->integrals[i] = 0.0;
+    for (i = 0; i < {inputs["filter"].size}; ++i) c->filter[i] = 0.0;
     for (i = 0; i < {nq}; ++i) c->tau[i] = 0.0;
 {"".join(f"    for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = 0.0;{chr(10)}" for a in loop_out)}    c->has_torque = 0;
     c->t_last = 0.0;
@@ -270,6 +278,7 @@ int {prefix}_controller_step({prefix}_controller *c, double t, const double *q, 
     for (i = 0; i < {nq}; ++i) tau[i] = c->tau[i] = o_{tau.name}[i];
     c->has_torque = 1;
     c->saturated = o_{saturated.name}[0] != 0.0;
+    for (i = 0; i < {filter_next.size}; ++i) c->filter[i] = o_{filter_next.name}[i];
 {keep}    if (on_time != {P}_OK) return on_time;
     for (i = 0; i < {2 * m}; ++i) c->integrals[i] = o_{z_next.name}[i];
     return {P}_OK;

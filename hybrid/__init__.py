@@ -34,6 +34,7 @@ from hybrid.control.law import DecouplingLaw, decoupling_law
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES, Khatib, Scheme, TaskDecoupling
+from hybrid.control.wrench_sensor import Tool, WrenchSensor
 from hybrid.errors import (
     HybridError,
     LargeModelWarning,
@@ -83,8 +84,8 @@ __all__ = [
     "Gains", "HybridError", "ImplicitSurface", "Khatib", "LargeModelWarning", "LinePath", "Measurement",
     "NativeBuildError", "NonFiniteError", "OperationalSpace", "PANDA_URDF", "Plane", "Posture", "Reference", "Robot",
     "SCHEMES", "SampleTimingError", "Scheme", "Sensor", "SimulationError", "SimulationResult",
-    "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "UR5_URDF", "URDFError",
-    "__version__", "arm_terms", "decoupling_law", "metrics", "operational_space", "panda", "panda_experiment",
-    "paper_arm", "paper_experiment", "read_controller_config", "simulate", "sweep", "task_frame",
-    "tracing_experiment", "ur5",
+    "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "Tool", "UR5_URDF",
+    "URDFError", "WrenchSensor", "__version__", "arm_terms", "decoupling_law", "metrics", "operational_space",
+    "panda", "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config", "simulate", "sweep",
+    "task_frame", "tracing_experiment", "ur5",
 ]

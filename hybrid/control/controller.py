@@ -17,6 +17,7 @@ import numpy as np
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.control.schemes import Scheme, scheme_of
+from hybrid.control.wrench_sensor import SENSOR, WrenchSensor
 from hybrid.errors import HybridError, NonFiniteError, SampleTimingError
 from hybrid.geometry.task_axes import AXIS_NAMES, check_axes, reference_direction, spatial_surface
 from hybrid.models.planar_arm import Arm
@@ -133,12 +134,19 @@ class Reference:
 class Measurement:
     """What the controller measures, at the arm tip: position ``p`` [m] and twist ``v = (p', w)``
     [m/s, rad/s] in base axes; on all six task axes ``t1, t2, n`` (then rotations about them) the
-    task velocity ``R v`` and the task wrench ``R F_c`` [N, N m]."""
+    task velocity ``R v`` and the task wrench ``R F_c`` [N, N m]. With a sensor, the stages of its
+    reading: ``reading`` (as given), ``compensated`` (less the bias and the tool's weight, sensor
+    axes) and ``contact_wrench`` (``F_c``: base axes, at the tip, before the filter, which keeps a
+    state: ``last["contact_wrench"]`` is the filtered one a sample used); without, all three are the
+    wrench given."""
 
     p: np.ndarray
     v: np.ndarray
     task_velocity: np.ndarray
     task_wrench: np.ndarray
+    reading: np.ndarray
+    compensated: np.ndarray
+    contact_wrench: np.ndarray
 
 
 class Controller:
@@ -194,6 +202,10 @@ class Controller:
         backwards sample raises :class:`~hybrid.SampleTimingError` carrying the torque to apply (that
         of the law at this sample, within the limits) and leaves the integrals as they were; None:
         no check. The generated C returns the same as named statuses (:meth:`generate`).
+    wrench_sensor : a :class:`~hybrid.WrenchSensor`: the wrench given at each sample is then its raw
+        reading (six numbers, sensor axes), which the step turns into ``F_c`` (its sign, bias, the
+        tool's weight at the current orientation, the mount's lever, the filter; conventions §12).
+        None (the default): the wrench given is ``F_c`` itself.
     """
 
     def __init__(self, robot: Robot | Arm, surface, scheme: str | Scheme = "task", *, axes=None, selection=None,
@@ -203,7 +215,7 @@ class Controller:
                  position_error: bool = False, integral_limit: float | None = None,
                  contact_loss: ContactLoss | None = None, singular_tol: float = 1e-3,
                  posture: Posture | None = None, torque_limit="urdf", torque_step_limit=None,
-                 timing_tolerance: float | None = 0.25):
+                 timing_tolerance: float | None = 0.25, wrench_sensor: WrenchSensor | None = None):
         robot = as_robot(robot)
         for name, value in (("integral", integral), ("curvature", curvature), ("position_error", position_error)):
             if not isinstance(value, bool):
@@ -243,9 +255,12 @@ class Controller:
                 raise HybridError(f"timing_tolerance = {timing_tolerance}; give a fraction of the sample time "
                                   "between 0 and 1 (0.25: a sample may come 25 % early or late), or None")
         self.timing_tolerance = None if timing_tolerance is None else float(timing_tolerance)
+        if wrench_sensor is not None and not isinstance(wrench_sensor, WrenchSensor):
+            raise HybridError(f"wrench_sensor = {wrench_sensor!r:.60}; give a hybrid.WrenchSensor(...) or None")
+        self.wrench_sensor = wrench_sensor
         self._references = self._axis_references(force_reference, velocity_reference)
         unit = units.controller_unit(robot.chain, robot.name, self._spatial.spec(), self.axes,
-                                        frame == "desired", position_error)
+                                     frame == "desired", position_error, wrench_sensor is not None)
         # a posture has its own generated step (the law plus tau0), so the law without one stays the very code
         # it was, bit for bit; both are in the same unit, and the posture's numbers are run-time inputs of both
         self._step_name = self.scheme.step if self.posture is None else "controller_posture_step"
@@ -260,25 +275,28 @@ class Controller:
         posture_array = np.zeros(3 * robot.n) if posture is None else self.posture.as_array()
         # no limit is the largest double: bounding a finite torque by it changes nothing, bit for bit
         limits = np.minimum(np.concatenate([self.torque_limit, self.torque_step_limit]), np.finfo(float).max)
+        sensor = np.zeros(len(SENSOR)) if wrench_sensor is None else wrench_sensor.as_array(robot, self.sample_time)
         self._params = (steps, self._gain_array(), np.array(self.selection, float), robot.as_array(),
-                        self._spatial.as_array(), np.array(self.reference), options, posture_array, limits)
+                        self._spatial.as_array(), np.array(self.reference), options, posture_array, limits, sensor)
         self._t, self._extra, self._rate, self._target = np.zeros(1), np.zeros(m), np.zeros(m), np.zeros(9)
         # the torque last given to the arm and 1 once there is one (the rate limit's start), the last sample time
         self._last, self._clock = np.zeros(robot.n + 1), None
+        self._filter = np.zeros(13)  # the sensor filter's state
         self._fc = np.zeros(6)
-        # a force without moments: the planar arm's in its plane (2), any other arm's in space (3)
-        self._force_size = 2 if robot.closed_form is not None else 3
+        # a force without moments: the planar arm's in its plane (2), any other arm's in space (3); a sensor's
+        # reading is always six numbers
+        self._force_size = 6 if wrench_sensor else 2 if robot.closed_form is not None else 3
         self._fc_head = self._fc[:self._force_size]
         self._varying = [(i, ref.value) for i, ref in enumerate(self._references) if ref.value is not None]
         self._rates = [(i, ref.rate) for i, ref in enumerate(self._references) if ref.rate is not None]
         # with references all steps and no path, the per-sample inputs end at t: the rest is bound
         self._short = not (self._varying or self._rates or path)
-        held = (self._extra, self._rate, self._target) if self._short else ()
-        _, self._binding = self._step.fast_bind(6 if self._short else 9, *held, *self._params,
-                                                singular_tol=self.singular_tol)
+        self._bind()
         self._into = self._step.unit.fast().call_into
-        # outputs written in place: tau, the integrals' next buffer, a, y, f
+        # outputs written in place (the manifest's order: tau, the integrals' next buffer, a, y, f, saturated, the
+        # filter's next state, the contact wrench)
         self._out = [np.empty(size) for _, size, _ in self._step.outputs]
+        self._filter_out = [name for name, _, _ in self._step.outputs].index("filter_next")
         self._z, self._sampled = np.zeros(2 * m), False
 
     # ----------------------------------------------------------------- settings
@@ -289,11 +307,30 @@ class Controller:
         paper's experiment or a 3-D one (:func:`hybrid.tracing_experiment`): the experiment builds it."""
         return exp.build_controller()
 
+    def _bind(self) -> None:
+        """Bind the step's fixed inputs (all but the per-sample ones) to this controller's numbers."""
+        held = (self._extra, self._rate, self._target) if self._short else ()
+        _, self._binding = self._step.fast_bind(7 if self._short else 10, *held, *self._params,
+                                                singular_tol=self.singular_tol)
+
+    def set_wrench_sensor(self, sensor: WrenchSensor) -> None:
+        """Change the sensor's numbers between samples (a new tool, a new bias: :func:`hybrid.tare`); the
+        controller must have been built with a sensor (its step reads a raw reading)."""
+        if self.wrench_sensor is None:
+            raise HybridError("this controller takes the contact wrench itself, not a sensor's reading: build it "
+                              "with wrench_sensor=hybrid.WrenchSensor(...) to give it one")
+        if not isinstance(sensor, WrenchSensor):
+            raise HybridError(f"sensor = {sensor!r:.60}; give a hybrid.WrenchSensor(...)")
+        self._params = (*self._params[:-1], sensor.as_array(self.robot, self.sample_time))
+        self.wrench_sensor = sensor
+        self._bind()
+
     @property
     def runs_in_c(self) -> bool:
-        """True when every reference is a number or a :class:`Step` and no path is given: then a
-        whole run can be compiled C (:mod:`hybrid.simulation.closed_loop`)."""
-        return self._short
+        """True when every reference is a number or a :class:`Step`, no path is given and the wrench is
+        given as such (no sensor reading): then a whole run can be compiled C
+        (:mod:`hybrid.simulation.closed_loop`)."""
+        return self._short and self.wrench_sensor is None
 
     def step_inputs(self) -> dict[str, np.ndarray]:
         """The compiled step's inputs this controller fixes (gains, references' steps, model,
@@ -306,7 +343,7 @@ class Controller:
         axes, the compiled-in options and the step function (the scheme's, or the posture task's)."""
         return {"chain": self.robot.chain, "name": self.robot.name, "spec": self._spatial.spec(), "axes": self.axes,
                 "desired_frame": self.frame == "desired", "position_error": self.position_error,
-                "step": self._step_name}
+                "wrench_sensor": self.wrench_sensor is not None, "step": self._step_name}
 
     def generate(self, out, name: str | None = None, force: bool = False) -> list:
         """Write this controller as standalone C99 into the folder ``out``: ``<name>.c``, ``<name>.h`` and
@@ -425,6 +462,7 @@ class Controller:
         self._z[:] = 0.0
         self._sampled = False
         self._last[:] = 0.0
+        self._filter[:] = 0.0
         self._clock = None
         if torque is not None:
             try:
@@ -483,17 +521,19 @@ class Controller:
         timing = self._timing(t)
         out, z = self._out, self._z
         if self._short:
-            done = self._into(self._binding, out, q, qdot, Fc, z, self._last, self._t)
+            done = self._into(self._binding, out, q, qdot, Fc, z, self._last, self._filter, self._t)
         else:
             self._python_references(t)
             if self.path is not None:
                 self._target[:] = self._desired(t)
-            done = self._into(self._binding, out, q, qdot, Fc, z, self._last, self._t, self._extra, self._rate,
-                              self._target)
+            done = self._into(self._binding, out, q, qdot, Fc, z, self._last, self._filter, self._t, self._extra,
+                              self._rate, self._target)
         if done is None:
             self._checked(q, qdot, Fc)
         self._tick(t)
         self._last[:-1], self._last[-1] = out[0], 1.0
+        k = self._filter_out  # the filter advances on every sample the law served
+        self._filter, out[k] = out[k], self._filter
         self._sampled = True
         if timing is not None:  # the law's torque, the integrals as they were
             raise SampleTimingError(timing, t, self._clock_before, self.sample_time, out[0].copy())
@@ -526,10 +566,10 @@ class Controller:
         and task wrench ``f`` (loop frame), by name; None before the first sample."""
         if not self._sampled:
             return None
-        got = {"tau": self._out[0].copy(), "integrals": self._z.copy(),
-               **{name: o.copy() for (name, _, _), o in zip(self._step.outputs[2:], self._out[2:])}}
-        got["saturated"] = bool(got["saturated"][0])
-        return got
+        out = {name: o for (name, _, _), o in zip(self._step.outputs, self._out)}
+        return {"tau": out["tau"].copy(), "integrals": self._z.copy(), "a": out["a"].copy(), "y": out["y"].copy(),
+                "f": out["f"].copy(), "saturated": bool(out["saturated"][0]),
+                "contact_wrench": out["contact_wrench"].copy()}
 
     def _padded(self, Fc) -> np.ndarray:
         """``Fc`` as the step's 6-vector (into a buffer for a force without moments)."""
@@ -564,8 +604,8 @@ class Controller:
                 raise NonFiniteError(f"{name} = {arr.tolist()} is not finite; give finite joint positions and "
                                      "velocities [rad, rad/s or m, m/s]")
         try:
-            got = self._step(q, qdot, Fc, self._z, self._last, self._t, self._extra, self._rate, self._target,
-                             *self._params, singular_tol=self.singular_tol)
+            got = self._step(q, qdot, Fc, self._z, self._last, self._filter, self._t, self._extra, self._rate,
+                             self._target, *self._params, singular_tol=self.singular_tol)
         except HybridError:
             if np.isfinite(Fc).all():
                 self._tick(t)
@@ -575,8 +615,10 @@ class Controller:
 
     def measure(self, q, qdot, Fc) -> Measurement:
         """What the controller measures at ``q, qdot, Fc`` (see :class:`Measurement`)."""
-        out = self._measure(q, qdot, _wrench(Fc, self._force_size), self._params[4], self._params[5])
-        return Measurement(out["p"], out["v"], out["task_velocity"], out["task_wrench"])
+        reading = _wrench(Fc, self._force_size)
+        out = self._measure(q, qdot, reading, self._params[4], self._params[5], self._params[3], self._params[-1])
+        return Measurement(out["p"], out["v"], out["task_velocity"], out["task_wrench"], reading, out["compensated"],
+                           out["contact_wrench"])
 
 
 def check_posture(robot, axes: tuple[int, ...], scheme, posture) -> Posture | None:

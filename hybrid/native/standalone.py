@@ -42,11 +42,15 @@ def generate_controller(ctrl, out, name: str | None = None, force: bool = False)
     values |= {"timing_tolerance": -1.0 if ctrl.timing_tolerance is None else ctrl.timing_tolerance,
                "singular_tol": ctrl.singular_tol}
     spec, axes = variant["spec"], variant["axes"]
-    compiled_in = {k: variant[k] for k in ("desired_frame", "position_error")}
+    compiled_in = {k: variant[k] for k in ("desired_frame", "position_error", "wrench_sensor")}
     info = {"robot": units.robot_info(variant["chain"], variant["name"]),
             "surface": {"kind": spec.kind, "parameters": list(spec.parameters)}, "axes": list(axes),
             "scheme": ctrl.scheme.name, "step": variant["step"], "variant": compiled_in,
-            "task_axes": list(ctrl.axis_names)}
+            "task_axes": list(ctrl.axis_names),
+            "wrench": ("the force/torque sensor's raw reading, sensor axes about its origin [N, N m] (the sensor "
+                       "field's mount, sign, tool, bias and filter turn it into the contact wrench)"
+                       if compiled_in["wrench_sensor"] else
+                       "the force and moment on the robot at the tip frame's origin, base axes [N, N m]")}
     key = {"chain": units.chain_key(variant["chain"]), "surface": spec.key(), **info, "values": values,
            "generator": units.fingerprint(), "prefix": prefix}
 

@@ -120,10 +120,11 @@ def frame_unit(spec) -> Unit:
 
 @cache
 def controller_unit(chain, name: str, spec, axes: tuple[int, ...], desired_frame: bool = False,
-                    position_error: bool = False) -> Unit:
+                    position_error: bool = False, wrench_sensor: bool = False) -> Unit:
     """One control sample (measurement, loops, law) of ``chain`` on the surface ``spec``, compiled;
-    the loop frame at the desired point and the position-error loops are compiled-in variants."""
-    variant = {"desired_frame": desired_frame, "position_error": position_error}
+    the loop frame at the desired point, the position-error loops and a force/torque sensor's reading
+    are compiled-in variants."""
+    variant = {"desired_frame": desired_frame, "position_error": position_error, "wrench_sensor": wrench_sensor}
     suffix = "".join(f"_{k}" for k, on in variant.items() if on)
     prefix = c_identifier(f"hybrid_{name}_{spec.kind}_controller{suffix}")
     return compiled(prefix, {"chain": chain_key(chain), "surface": spec.key(), "axes": list(axes), **variant},
@@ -146,13 +147,13 @@ def loop_unit(plant, variant: dict, lanes: int | None) -> Unit:
     v = variant
     prefix = c_identifier(f"hybrid_{v['name']}_{plant.name}_{v['step']}_loop{'_one' if lanes == 1 else ''}")
     key = {"chain": chain_key(v["chain"]), "surface": v["spec"].key(), "axes": list(v["axes"]), "plant": plant.key(),
-           **{k: v[k] for k in ("desired_frame", "position_error", "step")}, "lanes": lanes}
+           **{k: v[k] for k in ("desired_frame", "position_error", "wrench_sensor", "step")}, "lanes": lanes}
     return compiled(prefix, key, lambda: _build_loop(prefix, plant, v, lanes))
 
 
 def _build_loop(prefix: str, plant, v: dict, lanes: int | None):
     steps = {k.name: k for k in generator("controller_step").controller_kernels(
-        v["chain"], v["spec"], v["axes"], v["desired_frame"], v["position_error"])}
+        v["chain"], v["spec"], v["axes"], v["desired_frame"], v["position_error"], v["wrench_sensor"])}
     rhs, outputs, force = plant.kernels(generator)
     info = {"plant": plant.key()[0], "surface": plant.name, "step": v["step"], "robot": v["name"]}
     loop = generator("closed_loop")
