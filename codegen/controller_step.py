@@ -22,8 +22,12 @@ desired frame and the position error are compiled in):
   (``KI z1 + KI2 z2``; ``KI2 z2`` with ``position_error``) would exceed it in magnitude keeps the
   axis's integrals as they were.
 - ``loss_threshold``, ``approach_speed``: a force axis whose measured force falls below the
-  threshold has lost contact: it holds its integral and approaches at ``approach_speed``
-  (``a = -KD (y + approach_speed)``, the impedance's own damping) until the force returns.
+  threshold is out of contact (before the first touch, or after a loss): it approaches at
+  ``approach_speed`` (``a = -KD (y + approach_speed)``, the impedance's own damping) until the force
+  returns, its integral kept at ``z1 = (KD approach_speed - KP e) / KI - T e``, where the force law
+  (after the integral's advance) commands the same acceleration: at the touch ``a`` changes by
+  ``(KP + KI T)`` times the force's own change in that sample, no more (with ``KI = 0`` the
+  integral is held, and the jump is ``KD approach_speed - KP e``).
 
 The law then gets ``a`` (in the desired frame ``R_d``, rotated into ``R(r)`` with ``R_d'``'s
 term, as the paper's Figure 3). ``controller_step`` is the decoupling law with the measured
@@ -128,11 +132,13 @@ def loops(x: LoopInputs):
         z2n = (1 - s) * (z2 + T * z1n)
         # anti-windup: keep the integrals when the integral action would leave the limit
         held = ca.fabs((1 - pe_i) * KI * z1n + KI2 * z2n) > o["integral_limit"]
-        # contact loss on a force axis: hold the integral, approach the surface
+        # out of contact on a force axis: approach the surface, the integral where the force law would agree
         lost = s * (x.f[i] < o["loss_threshold"])
         keep = ca.fmax(held, lost)
         z1n = keep * ((1 - pe_i) * z1 + pe_i * z1n) + (1 - keep) * z1n
         z2n = keep * (1 - s) * z2 + (1 - keep) * z2n
+        tracked = (KD * o["approach_speed"] - KP * e) / ca.if_else(KI != 0, KI, 1) - T * e
+        z1n = ca.if_else(lost * (KI != 0), tracked, z1n)
         a_velocity = x.yd_rate[i] + KP * e + KI * z1n + KI2 * z2n
         a_force = (1 - lost) * (-KP * e - KD * x.y[i] - KI * z1n) - lost * KD * (x.y[i] + o["approach_speed"])
         a.append(s * a_force + (1 - s) * a_velocity)

@@ -67,8 +67,10 @@ def loops_by_hand(y, f, z, yd, rate, gains, sigma, T, r_err=None, limit=np.inf, 
         if sigma[i]:
             e = yd[i] - f[i]
             z[i, 0] += T * e
-            if loss is not None and f[i] < loss.threshold:
+            if loss is not None and f[i] < loss.threshold:  # the integral where the force law would agree
                 z[i] = z_old[i]
+                if g.KIf:
+                    z[i, 0] = (g.KDf * loss.approach_speed - g.KPf * e) / g.KIf - T * e
                 a[i] = -g.KDf * (y[i] + loss.approach_speed)
                 continue
             if abs(g.KIf * z[i, 0]) > limit:
@@ -335,3 +337,23 @@ def test_default_references_follow_the_selection_and_bad_samples_are_named():
         ctrl.state = "abc"
     with pytest.raises(hybrid.HybridError, match="selection"):
         hybrid.Controller(arm, circle, selection=[np.array([1, 2])])
+
+
+def test_the_first_touch_hands_over_without_a_jump(robots):
+    """Out of contact the force axis approaches; at the touch its acceleration changes by (KPf + KIf T)
+    times the force's change in that sample: the integral was kept where the force law agrees."""
+    robot = robots["ur5"][0]
+    g = hybrid.Gains()
+    ctrl = hybrid.Controller(robot, SPHERE, gains=g, contact_loss=hybrid.ContactLoss(0.5, 0.02), torque_limit=None)
+    q, qd = np.array([0.0, 0.63, -2.25, -1.0, -1.57, 0.0]), np.zeros(6)
+    n = np.array([ctrl.measure(q, qd, np.eye(6)[k]).task_wrench[2] for k in range(3)])  # the normal, base axes
+    k_n = ctrl.axes.index(2)
+    forces = [0.0, 0.1, 0.3, 0.7]  # N along the normal: below the threshold, then touching
+    a = []
+    for k, f in enumerate(forces):
+        ctrl(k * ctrl.sample_time, q, qd, np.concatenate([f * n, np.zeros(3)]))
+        a.append(ctrl.last["a"][k_n])
+    y = ctrl.last["y"][k_n]
+    np.testing.assert_allclose(a[:3], -g.KDf * (y + 0.02), rtol=1e-12)
+    jump = (g.KPf + g.KIf * ctrl.sample_time) * (forces[3] - forces[2])
+    assert a[3] - a[2] == pytest.approx(jump, rel=1e-9)

@@ -34,9 +34,11 @@ TIMING = ("SAMPLE_LATE", "SAMPLE_EARLY", "SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
 
 @dataclass(frozen=True)
 class ContactLoss:
-    """What a force axis does when its measured force falls below ``threshold`` [N or N m]: it
-    holds its integral and approaches the surface at ``approach_speed`` [m/s or rad/s] (through
-    the impedance's damping ``KDf``) until the force comes back."""
+    """What a force axis does when its measured force is below ``threshold`` [N or N m] (before the
+    first touch, or after a loss of contact): it approaches the surface at ``approach_speed`` [m/s or
+    rad/s] (through the impedance's damping ``KDf``) until the force comes back, its integral kept
+    where the force law commands the same acceleration, so the hand-over at the touch has no jump
+    (conventions §4)."""
 
     threshold: float = 0.5
     approach_speed: float = 0.02

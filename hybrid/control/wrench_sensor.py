@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from hybrid.errors import HybridError
+from hybrid.models.urdf import rigid_offset
 
 
 def _vector(owner: str, name: str, value, size: int) -> tuple[float, ...]:
@@ -126,8 +127,6 @@ class WrenchSensor:
         """The sensor frame in tip axes: ``(r [m], R_m)`` (from ``frame`` in ``robot``'s URDF when given)."""
         if self.frame is None:
             return np.array(self.position), np.array(self.rotation)
-        from hybrid.models.urdf import rigid_offset
-
         source = getattr(robot, "source", None)
         if source is None:
             raise HybridError(f"WrenchSensor frame = {self.frame!r} names a URDF frame, but the robot "
