@@ -184,8 +184,21 @@ def _link_inertial(link: Node, source: str) -> tuple[float, np.ndarray, np.ndarr
     return m, T[:3, 3], R @ I @ R.T
 
 
-def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
-    """The serial chain from the URDF at ``path`` to the link ``tip`` (see the module doc)."""
+@dataclass(frozen=True)
+class _Tree:
+    """A URDF file's links and joints by name, and how they connect."""
+
+    source: str  # the file's name, for messages
+    root: Node
+    links: dict  # name -> <link>
+    joints: dict  # name -> <joint>
+    parent_of: dict  # link -> the joint it is the child of
+    children: dict  # link -> the joints it is the parent of, in the file's order
+    ends: dict  # joint -> (parent link, child link)
+
+
+def _read_tree(path) -> _Tree:
+    """Read and parse the URDF at ``path``; check its links and joints form one tree."""
     if not isinstance(path, (str, os.PathLike)):
         raise URDFError(f"the URDF path must be a file name, got {type(path).__name__}")
     try:
@@ -238,6 +251,31 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
     if len(roots) != 1:
         raise URDFError(f"{source}: expected one root link, found {len(roots)} ({', '.join(roots[:5])}); "
                         "the links must form one tree (a closed chain or a loose link breaks it)")
+    return _Tree(source, root, links, joints, parent_of, children, ends)
+
+
+def _joint_transform(tree: _Tree, name: str, value: float) -> np.ndarray:
+    """Transform parent link -> child link of the joint ``name`` held at ``value``."""
+    j = tree.joints[name]
+    where = f"{tree.source}: joint '{name}'"
+    T = _transform(j.find("origin"), where)
+    kind = j.attrib["type"]
+    if kind in MOVING and value:
+        axis = _unit_axis(j, where)
+        M = np.eye(4)
+        if kind == "prismatic":
+            M[:3, 3] = axis * value
+        else:
+            M[:3, :3] = _axis_rotation(axis, value)
+        T = T @ M
+    return T
+
+
+def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
+    """The serial chain from the URDF at ``path`` to the link ``tip`` (see the module doc)."""
+    tree = _read_tree(path)
+    source, root, links, joints = tree.source, tree.root, tree.links, tree.joints
+    parent_of, children, ends = tree.parent_of, tree.children, tree.ends
     if tip not in links:
         near = ", ".join(sorted(links)[:12])
         raise URDFError(f"{source}: no link named '{tip}' for the tip; links are: {near}"
@@ -261,22 +299,6 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
         link = ends[parent_of[link]][0]
     path_joints.reverse()
 
-    def joint_transform(name: str, value: float) -> np.ndarray:
-        """Transform parent link -> child link of a joint held at ``value``."""
-        j = joints[name]
-        where = f"{source}: joint '{name}'"
-        T = _transform(j.find("origin"), where)
-        kind = j.attrib["type"]
-        if kind in MOVING and value:
-            axis = _unit_axis(j, where)
-            M = np.eye(4)
-            if kind == "prismatic":
-                M[:3, 3] = axis * value
-            else:
-                M[:3, :3] = _axis_rotation(axis, value)
-            T = T @ M
-        return T
-
     def moving(name: str) -> bool:
         return joints[name].attrib["type"] in MOVING and name not in locked
 
@@ -295,7 +317,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
                 if jn == skip_joint:  # the chain goes on through it
                     continue
                 # off the chain (any type, mimic or not): held at its locked value, 0 by default
-                stack.append((ends[jn][1], T_link @ joint_transform(jn, locked.get(jn, 0.0)), None))
+                stack.append((ends[jn][1], T_link @ _joint_transform(tree, jn, locked.get(jn, 0.0)), None))
 
     # walk the chain, merging fixed and locked joints into the next origin
     chain_joints, bodies, damping, lims = [], [], [], []
@@ -315,7 +337,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
             raise URDFError(f"{at}: a mimic joint lies on the chain; mimic joints are not supported "
                             "on the controlled chain (lock it with locked={...}, or pick another tip)")
         if not moving(jn):
-            T_acc = T_acc @ joint_transform(jn, locked.get(jn, 0.0))
+            T_acc = T_acc @ _joint_transform(tree, jn, locked.get(jn, 0.0))
             merge_subtree(body, ends[jn][1], T_acc, next_on_path)
             continue
         if chain_joints:
@@ -349,7 +371,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
     chain = Chain(tuple(chain_joints), tuple(tuple(map(float, r)) for r in T_acc[:3, :3]),
                   tuple(map(float, T_acc[:3, 3])))
     lo, hi, vel, eff = (np.array(c, dtype=float) for c in zip(*lims))
-    return ParsedChain(root.attrib.get("name", path.stem), chain, tuple(b.inertia() for b in bodies),
+    return ParsedChain(root.attrib.get("name", Path(path).stem), chain, tuple(b.inertia() for b in bodies),
                        tuple(damping), JointLimits(lo, hi, vel, eff))
 
 
