@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from hybrid.errors import HybridError
+from hybrid.models.urdf import rigid_offset
 
 
 def _vector(owner: str, name: str, value, size: int) -> tuple[float, ...]:
@@ -126,15 +127,13 @@ class WrenchSensor:
         """The sensor frame in tip axes: ``(r [m], R_m)`` (from ``frame`` in ``robot``'s URDF when given)."""
         if self.frame is None:
             return np.array(self.position), np.array(self.rotation)
-        from hybrid.models.urdf import rigid_offset
-
         source = getattr(robot, "source", None)
         if source is None:
             raise HybridError(f"WrenchSensor frame = {self.frame!r} names a URDF frame, but the robot "
                               f"{getattr(robot, 'name', robot)!r} was not read from a URDF; give position and "
                               "rotation instead")
-        path, tip, _ = source
-        return rigid_offset(path, tip, self.frame)
+        path, tip, locked = source
+        return rigid_offset(path, tip, self.frame, dict(locked))
 
     def as_array(self, robot, sample_time: float) -> np.ndarray:
         """The generated step's ``sensor`` array (see :data:`SENSOR`)."""

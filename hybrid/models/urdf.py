@@ -8,6 +8,7 @@ a :class:`~hybrid.errors.URDFError` naming the element, its line, and what to do
 
 from __future__ import annotations
 
+import difflib
 import math
 import os
 import warnings
@@ -430,9 +431,55 @@ def _unit_axis(j: Node, where: str) -> np.ndarray:
     return axis / norm
 
 
-def rigid_offset(path, tip: str, frame: str) -> tuple[np.ndarray, np.ndarray]:
-    """The pose ``(r [m], R)`` of the URDF link ``frame`` in the axes of the link ``tip`` of the file
-    at ``path``, for a ``frame`` rigidly attached to ``tip`` (joined to it by fixed joints only: a
-    sensor's or a tool's frame beyond the flange). Not implemented yet."""
-    raise URDFError(f"a sensor mounted at the URDF frame {frame!r} is not supported yet; give its position "
-                      "and rotation in tip axes")
+def rigid_offset(path, tip: str, frame: str, locked: dict | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The pose ``(r [m], R)`` of the URDF link ``frame`` in the axes of the link ``tip`` of the file at
+    ``path``: ``r`` its origin and ``R`` its axes (3 x 3, columns), both in tip axes.
+
+    ``frame`` must be rigidly attached to ``tip``: joined to it by fixed joints only (joints named in
+    ``locked``, ``{joint name: position}``, count as fixed at that position), in either direction along
+    the tree: beyond the tip (a sensor's or tool's frame past the flange), above it (the flange's link),
+    or on a branch of a link rigidly above it. ``frame == tip`` gives the identity.
+    """
+    tree = _read_tree(path)
+    locked = dict(locked or {})
+    for name in locked:
+        if name not in tree.joints:
+            raise URDFError(f"locked names joint {name!r:.60}, which {tree.source} does not define")
+    for role, name in (("tip", tip), ("frame", frame)):
+        if not isinstance(name, str) or name not in tree.links:
+            near = difflib.get_close_matches(str(name), tree.links, n=1)
+            hint = f"did you mean '{near[0]}'?" if near else f"links are: {', '.join(sorted(tree.links)[:12])}"
+            raise URDFError(f"{role} = {name!r:.60} is not a link of {tree.source}; give a link name ({hint})")
+
+    def up(link: str) -> list[str]:
+        """The joints from ``link`` up to the root, nearest first."""
+        out = []
+        while link in tree.parent_of and tree.parent_of[link] not in out:  # a loop of links ends the walk
+            out.append(tree.parent_of[link])
+            link = tree.ends[out[-1]][0]
+        return out
+
+    tip_up, frame_up = up(tip), up(frame)
+    common = set(tip_up) & set(frame_up)  # the joints above the two links' lowest common ancestor
+    tip_up = [j for j in tip_up if j not in common]
+    frame_up = [j for j in frame_up if j not in common]
+    for jn in tip_up + frame_up:  # nearest the tip first, then the frame's side
+        kind = tree.joints[jn].attrib["type"]
+        if kind != "fixed" and jn not in locked:
+            fix = (f"; a joint held still can be locked where the robot is read (Robot.from_urdf(..., "
+                   f"locked={{'{jn}': position}}))") if jn in frame_up else ", a joint of the arm's chain"
+            raise URDFError(
+                f"frame = '{frame}' is not rigidly attached to the tip '{tip}'; give a frame joined to it by fixed "
+                f"joints only\n  the sensor must be rigidly attached to the tip's link: in {tree.source}, '{frame}' "
+                f"moves with joint '{jn}' ({kind}){fix}")
+
+    def pose(joints_up: list[str]) -> np.ndarray:
+        """The link at the bottom of ``joints_up`` in the axes of the link at its top."""
+        T = np.eye(4)
+        for jn in reversed(joints_up):
+            T = T @ _joint_transform(tree, jn, locked.get(jn, 0.0))
+        return T
+
+    A, B = pose(tip_up), pose(frame_up)  # the tip and the frame in the axes of their common ancestor
+    R = A[:3, :3].T @ B[:3, :3]
+    return A[:3, :3].T @ (B[:3, 3] - A[:3, 3]), R
