@@ -131,6 +131,10 @@ def identify_tool(robot: Robot, sensor: WrenchSensor, q, readings, *,
     readings : the raw readings at those poses (N x 6: force [N], then moment [N m], sensor axes, in the
         sensor's own sign convention).
     max_condition : the largest condition number of the regressor accepted.
+
+    A mass that comes out below zero by more than three of its standard errors is refused (a reading of the
+    wrong sign, or of a sensor in contact); within them the sensor carries no tool: the bias alone is
+    fitted (the readings' mean) and the tool is ``Tool()``.
     """
     _check_sensor(sensor)
     g = _check_robot(robot)
@@ -144,7 +148,7 @@ def identify_tool(robot: Robot, sensor: WrenchSensor, q, readings, *,
     q = _array("q", q, (N, robot.n), f"{N} poses of {robot.n} joint positions")
     w = sensor.sign * _array("readings", readings, (N, 6), f"one reading per pose (force, then moment) for "
                                                            f"the {N} poses of q")
-    if not (isinstance(max_condition, (int, float)) and max_condition >= 1):
+    if isinstance(max_condition, bool) or not (isinstance(max_condition, (int, float)) and max_condition >= 1):
         raise HybridError(f"max_condition = {max_condition!r:.40}; give a number >= 1")
     gn = float(np.linalg.norm(g))
     u = np.einsum("nji,j->ni", _sensor_rotations(robot, sensor, q), g) / gn  # R_s^T g / |g|
