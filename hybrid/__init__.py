@@ -12,7 +12,9 @@ The public API, by subpackage:
 - control (:mod:`hybrid.control`): the compiled law (:class:`DecouplingLaw`, :func:`decoupling_law`),
   the :class:`Controller` component, its options (:class:`Posture`, a null-space posture task;
   :class:`ContactLoss`) and its schemes (:data:`SCHEMES`); :class:`Gains`, :class:`Step`; a controller
-  described in a TOML file (:func:`read_controller_config`);
+  described in a TOML file (:func:`read_controller_config`); a force/torque sensor's bias and tool
+  (:class:`WrenchSensor`, the :class:`Tool` beyond it) identified from readings at rest
+  (:func:`identify_tool`, :class:`ToolIdentification`) and tared at run time (:func:`tare`);
 - experiments and simulation: the one :class:`Experiment` type and its factories
   (:func:`paper_experiment`, :func:`tracing_experiment`, :func:`panda_experiment`), the plant's
   :class:`Sensor` and :class:`Contact`, :func:`simulate`, :class:`SimulationResult`, :func:`metrics`;
@@ -30,6 +32,7 @@ from __future__ import annotations
 from hybrid._version import __version__
 from hybrid.control.config import read_controller_config
 from hybrid.control.controller import ContactLoss, Controller, Measurement, Posture, Reference
+from hybrid.control.identification import ToolIdentification, identify_tool, tare
 from hybrid.control.law import DecouplingLaw, decoupling_law
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
@@ -84,8 +87,8 @@ __all__ = [
     "Gains", "HybridError", "ImplicitSurface", "Khatib", "LargeModelWarning", "LinePath", "Measurement",
     "NativeBuildError", "NonFiniteError", "OperationalSpace", "PANDA_URDF", "Plane", "Posture", "Reference", "Robot",
     "SCHEMES", "SampleTimingError", "Scheme", "Sensor", "SimulationError", "SimulationResult",
-    "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "Tool", "UR5_URDF",
-    "URDFError", "WrenchSensor", "__version__", "arm_terms", "decoupling_law", "metrics", "operational_space",
-    "panda", "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config", "simulate", "sweep",
-    "task_frame", "tracing_experiment", "ur5",
+    "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "Tool", "ToolIdentification",
+    "UR5_URDF", "URDFError", "WrenchSensor", "__version__", "arm_terms", "decoupling_law", "identify_tool", "metrics",
+    "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config",
+    "simulate", "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
 ]

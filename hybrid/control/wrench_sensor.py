@@ -132,8 +132,8 @@ class WrenchSensor:
             raise HybridError(f"WrenchSensor frame = {self.frame!r} names a URDF frame, but the robot "
                               f"{getattr(robot, 'name', robot)!r} was not read from a URDF; give position and "
                               "rotation instead")
-        path, tip, _ = source
-        return rigid_offset(path, tip, self.frame)
+        path, tip, locked = source
+        return rigid_offset(path, tip, self.frame, dict(locked))
 
     def as_array(self, robot, sample_time: float) -> np.ndarray:
         """The generated step's ``sensor`` array (see :data:`SENSOR`)."""

@@ -8,6 +8,7 @@ a :class:`~hybrid.errors.URDFError` naming the element, its line, and what to do
 
 from __future__ import annotations
 
+import difflib
 import math
 import os
 import warnings
@@ -184,8 +185,21 @@ def _link_inertial(link: Node, source: str) -> tuple[float, np.ndarray, np.ndarr
     return m, T[:3, 3], R @ I @ R.T
 
 
-def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
-    """The serial chain from the URDF at ``path`` to the link ``tip`` (see the module doc)."""
+@dataclass(frozen=True)
+class _Tree:
+    """A URDF file's links and joints by name, and how they connect."""
+
+    source: str  # the file's name, for messages
+    root: Node
+    links: dict  # name -> <link>
+    joints: dict  # name -> <joint>
+    parent_of: dict  # link -> the joint it is the child of
+    children: dict  # link -> the joints it is the parent of, in the file's order
+    ends: dict  # joint -> (parent link, child link)
+
+
+def _read_tree(path) -> _Tree:
+    """Read and parse the URDF at ``path``; check its links and joints form one tree."""
     if not isinstance(path, (str, os.PathLike)):
         raise URDFError(f"the URDF path must be a file name, got {type(path).__name__}")
     try:
@@ -238,6 +252,31 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
     if len(roots) != 1:
         raise URDFError(f"{source}: expected one root link, found {len(roots)} ({', '.join(roots[:5])}); "
                         "the links must form one tree (a closed chain or a loose link breaks it)")
+    return _Tree(source, root, links, joints, parent_of, children, ends)
+
+
+def _joint_transform(tree: _Tree, name: str, value: float) -> np.ndarray:
+    """Transform parent link -> child link of the joint ``name`` held at ``value``."""
+    j = tree.joints[name]
+    where = f"{tree.source}: joint '{name}'"
+    T = _transform(j.find("origin"), where)
+    kind = j.attrib["type"]
+    if kind in MOVING and value:
+        axis = _unit_axis(j, where)
+        M = np.eye(4)
+        if kind == "prismatic":
+            M[:3, 3] = axis * value
+        else:
+            M[:3, :3] = _axis_rotation(axis, value)
+        T = T @ M
+    return T
+
+
+def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
+    """The serial chain from the URDF at ``path`` to the link ``tip`` (see the module doc)."""
+    tree = _read_tree(path)
+    source, root, links, joints = tree.source, tree.root, tree.links, tree.joints
+    parent_of, children, ends = tree.parent_of, tree.children, tree.ends
     if tip not in links:
         near = ", ".join(sorted(links)[:12])
         raise URDFError(f"{source}: no link named '{tip}' for the tip; links are: {near}"
@@ -261,22 +300,6 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
         link = ends[parent_of[link]][0]
     path_joints.reverse()
 
-    def joint_transform(name: str, value: float) -> np.ndarray:
-        """Transform parent link -> child link of a joint held at ``value``."""
-        j = joints[name]
-        where = f"{source}: joint '{name}'"
-        T = _transform(j.find("origin"), where)
-        kind = j.attrib["type"]
-        if kind in MOVING and value:
-            axis = _unit_axis(j, where)
-            M = np.eye(4)
-            if kind == "prismatic":
-                M[:3, 3] = axis * value
-            else:
-                M[:3, :3] = _axis_rotation(axis, value)
-            T = T @ M
-        return T
-
     def moving(name: str) -> bool:
         return joints[name].attrib["type"] in MOVING and name not in locked
 
@@ -295,7 +318,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
                 if jn == skip_joint:  # the chain goes on through it
                     continue
                 # off the chain (any type, mimic or not): held at its locked value, 0 by default
-                stack.append((ends[jn][1], T_link @ joint_transform(jn, locked.get(jn, 0.0)), None))
+                stack.append((ends[jn][1], T_link @ _joint_transform(tree, jn, locked.get(jn, 0.0)), None))
 
     # walk the chain, merging fixed and locked joints into the next origin
     chain_joints, bodies, damping, lims = [], [], [], []
@@ -315,7 +338,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
             raise URDFError(f"{at}: a mimic joint lies on the chain; mimic joints are not supported "
                             "on the controlled chain (lock it with locked={...}, or pick another tip)")
         if not moving(jn):
-            T_acc = T_acc @ joint_transform(jn, locked.get(jn, 0.0))
+            T_acc = T_acc @ _joint_transform(tree, jn, locked.get(jn, 0.0))
             merge_subtree(body, ends[jn][1], T_acc, next_on_path)
             continue
         if chain_joints:
@@ -349,7 +372,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
     chain = Chain(tuple(chain_joints), tuple(tuple(map(float, r)) for r in T_acc[:3, :3]),
                   tuple(map(float, T_acc[:3, 3])))
     lo, hi, vel, eff = (np.array(c, dtype=float) for c in zip(*lims))
-    return ParsedChain(root.attrib.get("name", path.stem), chain, tuple(b.inertia() for b in bodies),
+    return ParsedChain(root.attrib.get("name", Path(path).stem), chain, tuple(b.inertia() for b in bodies),
                        tuple(damping), JointLimits(lo, hi, vel, eff))
 
 
@@ -408,9 +431,55 @@ def _unit_axis(j: Node, where: str) -> np.ndarray:
     return axis / norm
 
 
-def rigid_offset(path, tip: str, frame: str) -> tuple[np.ndarray, np.ndarray]:
-    """The pose ``(r [m], R)`` of the URDF link ``frame`` in the axes of the link ``tip`` of the file
-    at ``path``, for a ``frame`` rigidly attached to ``tip`` (joined to it by fixed joints only: a
-    sensor's or a tool's frame beyond the flange). Not implemented yet."""
-    raise URDFError(f"a sensor mounted at the URDF frame {frame!r} is not supported yet; give its position "
-                      "and rotation in tip axes")
+def rigid_offset(path, tip: str, frame: str, locked: dict | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The pose ``(r [m], R)`` of the URDF link ``frame`` in the axes of the link ``tip`` of the file at
+    ``path``: ``r`` its origin and ``R`` its axes (3 x 3, columns), both in tip axes.
+
+    ``frame`` must be rigidly attached to ``tip``: joined to it by fixed joints only (joints named in
+    ``locked``, ``{joint name: position}``, count as fixed at that position), in either direction along
+    the tree: beyond the tip (a sensor's or tool's frame past the flange), above it (the flange's link),
+    or on a branch of a link rigidly above it. ``frame == tip`` gives the identity.
+    """
+    tree = _read_tree(path)
+    locked = dict(locked or {})
+    for name in locked:
+        if name not in tree.joints:
+            raise URDFError(f"locked names joint {name!r:.60}, which {tree.source} does not define")
+    for role, name in (("tip", tip), ("frame", frame)):
+        if not isinstance(name, str) or name not in tree.links:
+            near = difflib.get_close_matches(str(name), tree.links, n=1)
+            hint = f"did you mean '{near[0]}'?" if near else f"links are: {', '.join(sorted(tree.links)[:12])}"
+            raise URDFError(f"{role} = {name!r:.60} is not a link of {tree.source}; give a link name ({hint})")
+
+    def up(link: str) -> list[str]:
+        """The joints from ``link`` up to the root, nearest first."""
+        out = []
+        while link in tree.parent_of and tree.parent_of[link] not in out:  # a loop of links ends the walk
+            out.append(tree.parent_of[link])
+            link = tree.ends[out[-1]][0]
+        return out
+
+    tip_up, frame_up = up(tip), up(frame)
+    common = set(tip_up) & set(frame_up)  # the joints above the two links' lowest common ancestor
+    tip_up = [j for j in tip_up if j not in common]
+    frame_up = [j for j in frame_up if j not in common]
+    for jn in tip_up + frame_up:  # nearest the tip first, then the frame's side
+        kind = tree.joints[jn].attrib["type"]
+        if kind != "fixed" and jn not in locked:
+            fix = (f"; a joint held still can be locked where the robot is read (Robot.from_urdf(..., "
+                   f"locked={{'{jn}': position}}))") if jn in frame_up else ", a joint of the arm's chain"
+            raise URDFError(
+                f"frame = '{frame}' is not rigidly attached to the tip '{tip}'; give a frame joined to it by fixed "
+                f"joints only\n  the sensor must be rigidly attached to the tip's link: in {tree.source}, '{frame}' "
+                f"moves with joint '{jn}' ({kind}){fix}")
+
+    def pose(joints_up: list[str]) -> np.ndarray:
+        """The link at the bottom of ``joints_up`` in the axes of the link at its top."""
+        T = np.eye(4)
+        for jn in reversed(joints_up):
+            T = T @ _joint_transform(tree, jn, locked.get(jn, 0.0))
+        return T
+
+    A, B = pose(tip_up), pose(frame_up)  # the tip and the frame in the axes of their common ancestor
+    R = A[:3, :3].T @ B[:3, :3]
+    return A[:3, :3].T @ (B[:3, 3] - A[:3, 3]), R
