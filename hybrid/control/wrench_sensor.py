@@ -24,6 +24,7 @@ inverse (the reading a sensor would give for a wrench, used by the simulated sen
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 
@@ -133,7 +134,8 @@ class WrenchSensor:
                               f"{getattr(robot, 'name', robot)!r} was not read from a URDF; give position and "
                               "rotation instead")
         path, tip, locked = source
-        return rigid_offset(path, tip, self.frame, dict(locked))
+        r, R = _mounted(path, tip, self.frame, tuple(locked))
+        return r.copy(), R.copy()
 
     def as_array(self, robot, sample_time: float) -> np.ndarray:
         """The generated step's ``sensor`` array (see :data:`SENSOR`)."""
@@ -141,6 +143,13 @@ class WrenchSensor:
         r, Rm = self.mount(robot)
         return np.concatenate([r, Rm.ravel(), [float(self.sign), self.tool.mass], self.tool.com, self.bias,
                                [0.0 if self.cutoff is None else self.cutoff, float(self.order)]])
+
+
+@lru_cache(maxsize=64)
+def _mounted(path: str, tip: str, frame: str, locked: tuple) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`rigid_offset`, read once per file, tip, frame and locked joints (a sensor's chain runs at
+    every sample)."""
+    return rigid_offset(path, tip, frame, dict(locked))
 
 
 #: the ``sensor`` array of the generated step, in order
