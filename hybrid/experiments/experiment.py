@@ -23,8 +23,16 @@ from hybrid.control.controller import Controller, Posture, check_posture
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES, scheme_of
+from hybrid.control.wrench_sensor import Tool, WrenchSensor
 from hybrid.errors import HybridError
-from hybrid.experiments.settings import START_TOL, RunSettings, check_common_types, check_timing, pressed
+from hybrid.experiments.settings import (
+    START_TOL,
+    RunSettings,
+    check_common_types,
+    check_sensing,
+    check_timing,
+    pressed,
+)
 from hybrid.geometry.paths import CirclePath, LinePath, Path
 from hybrid.geometry.surfaces import SURFACE_KINDS, Circle, Plane, Surface
 from hybrid.geometry.task_axes import check_axes, reference_direction
@@ -64,6 +72,13 @@ class Experiment(RunSettings):
     posture : a :class:`~hybrid.Posture` task in the null space of a redundant arm's task (its rest
         posture is also where the start's inverse kinematics begins); off by default.
     controller : a scheme's name (``"task"``, ``"khatib"``, ``"raibert_craig"``, ``"fisher_mujtaba"``).
+    sensor : the plant's elastic sensor and its signal (noise, bias, lag, delay: :class:`~hybrid.Sensor`).
+    wrench_sensor : the true force/torque sensor and tool (a :class:`~hybrid.WrenchSensor`): the
+        controller is then given its raw reading (sensor axes) for the plant's force, at the true
+        arm's tip pose (conventions §13), and turns it back with ``controller_wrench_sensor``. None (the
+        default): the controller is given the wrench on the robot itself.
+    controller_wrench_sensor : the sensor and tool as the controller believes them (its mount, sign,
+        tool, bias and its filter's ``cutoff``); default ``wrench_sensor`` itself. Needs ``wrench_sensor``.
     frame : ``"actual"`` (the loops in ``R(r)``) or ``"desired"`` (in ``R(r_d)``).
     backend : which committed unit runs the closed-form plant (``"sympy"`` or ``"casadi"``).
     singular_tol : the run stops when the Jacobian's conditioning at a sample falls below it.
@@ -85,6 +100,8 @@ class Experiment(RunSettings):
     viscous_compensation: float = 0.5
     sensor: Sensor = field(default_factory=Sensor)
     contact: Contact = field(default_factory=Contact)
+    wrench_sensor: WrenchSensor | None = None
+    controller_wrench_sensor: WrenchSensor | None = None
     gains: Gains = field(default_factory=Gains)
     force_reference: Step = field(default_factory=lambda: Step(10.0, 20.0, 0.4))
     speed_reference: Step = field(default_factory=lambda: Step(0.3, 0.6, 1.0))
@@ -135,6 +152,7 @@ class Experiment(RunSettings):
         elif self.followed_path() is None:
             raise HybridError(f"a {type(self.surface).__name__} has no path of its own: give start_point, a point "
                               "on the surface [m], or a path")
+        check_sensing(self)
         if self.frame == "desired" and self.followed_path() is None:
             raise HybridError("frame='desired' follows the experiment's path: give a path (hybrid.CirclePath or "
                               "hybrid.LinePath), or use frame='actual'")
@@ -232,6 +250,8 @@ class Experiment(RunSettings):
         d["reference"] = list(self.reference)
         d["axes"] = list(self.axes) if isinstance(self.axes, tuple) else self.axes
         d["posture"] = None if self.posture is None else asdict(self.posture)
+        for name in ("wrench_sensor", "controller_wrench_sensor"):
+            d[name] = None if d[name] is None else asdict(d[name])
         return {"kind": "experiment", **d}
 
     @classmethod
@@ -265,6 +285,9 @@ class Experiment(RunSettings):
             d["path"] = {"CirclePath": CirclePath, "LinePath": LinePath}[path.pop("kind")](**path)
         if d["posture"] is not None:
             d["posture"] = Posture(**d["posture"])
+        for name in ("wrench_sensor", "controller_wrench_sensor"):
+            if d.get(name) is not None:
+                d[name] = WrenchSensor(**{**d[name], "tool": Tool(**d[name]["tool"])})
         if isinstance(d["axes"], list):
             d["axes"] = tuple(d["axes"])
         return cls(**d)

@@ -9,6 +9,7 @@ import numpy as np
 
 from hybrid.control.loops import Gains, check_loops
 from hybrid.control.references import Step
+from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.errors import HybridError
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.validate import _finite, check_singular_tol
@@ -41,7 +42,8 @@ class RunSettings:
         return {"selection": ("n",), "gains": self.gains, "force_reference": self.force_reference,
                 "velocity_reference": self.speed_reference, "sample_time": self.sample_time,
                 "integral": self.integral, "curvature": self.curvature, "frame": self.frame,
-                "path": self.desired_point if self.frame == "desired" else None, "singular_tol": self.singular_tol}
+                "path": self.desired_point if self.frame == "desired" else None, "singular_tol": self.singular_tol,
+                "wrench_sensor": self.controller_wrench_sensor or self.wrench_sensor}
 
     def plant_array(self) -> np.ndarray:
         """The ``plant[7]`` array of the generated C (sensor, then contact)."""
@@ -57,6 +59,27 @@ def pressed(point, normal, F0: float, k_e: float, K_s: float) -> tuple[np.ndarra
     spring's ``K_s`` [N/m], in equilibrium)."""
     s = np.asarray(point, float) - normal * max(F0, 0.0) / k_e
     return s, s - normal * F0 / K_s
+
+
+def check_sensing(exp) -> None:
+    """The sensor's signal and the force/torque sensors, checked alike for every experiment
+    (conventions §13)."""
+    exp.sensor.check_sampling(exp.sample_time)
+    for name in ("wrench_sensor", "controller_wrench_sensor"):
+        value = getattr(exp, name)
+        if value is not None and not isinstance(value, WrenchSensor):
+            raise HybridError(f"{name} = {value!r:.60}; give a hybrid.WrenchSensor(...) or None")
+    if exp.controller_wrench_sensor is not None and exp.wrench_sensor is None:
+        raise HybridError("controller_wrench_sensor is what the controller believes of the true sensor: give "
+                          "wrench_sensor too (the true one)")
+    if exp.wrench_sensor is not None:
+        if any(exp.sensor.bias):
+            raise HybridError(f"Sensor bias = {exp.sensor.bias} with a wrench_sensor: the true sensor's bias is "
+                              "wrench_sensor=hybrid.WrenchSensor(bias=...) (in its axes); leave Sensor bias at 0")
+        for sensor in (exp.wrench_sensor, exp.controller_wrench_sensor):
+            if sensor is not None:
+                sensor.mount(exp.robot)  # a URDF frame that is not there is refused now
+                sensor.check_sampling(exp.sample_time)
 
 
 def check_common_types(exp) -> None:

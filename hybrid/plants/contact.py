@@ -1,8 +1,12 @@
-"""The plant's elastic force sensor and its penalty contact with friction, as validated parameters."""
+"""The plant's elastic force sensor (and the signal it gives) and its penalty contact with friction, as
+validated parameters."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
+
+import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.validate import _finite, field_values
@@ -10,16 +14,91 @@ from hybrid.validate import _finite, field_values
 
 @dataclass(frozen=True)
 class Sensor:
-    """2-D elastic force sensor at the arm tip: tip mass on an isotropic spring-damper."""
+    """The plant's elastic force sensor at the arm tip: a tip mass on an isotropic spring-damper
+    (conventions §5, §10), and the signal it gives the controller (conventions §13).
+
+    Parameters
+    ----------
+    mass, stiffness, damping : the tip mass ``m_s`` [kg], the spring ``K_s`` [N/m] and damper
+        ``D_s`` [N s/m] between it and the arm tip; the sensor measures the spring-damper's force.
+    noise : the standard deviations ``(force [N], moment [N m])`` of white Gaussian noise added to
+        each component of every reading (one draw per control sample); ``(0, 0)``: none.
+    bias : a constant offset of the reading ``(f_x, f_y, f_z, m_x, m_y, m_z)`` [N, N m], base axes
+        (with an experiment's ``wrench_sensor`` the true sensor's bias is that sensor's own, in its
+        axes, and this stays 0).
+    bandwidth_hz : the corner frequency [Hz] of a first-order lag on the reading, discretised at the
+        sample time (below its Nyquist frequency); None: no lag.
+    delay_samples : the reading reaches the controller this many control samples late (a whole
+        number >= 0).
+    seed : the noise's seed: the same seed, the same noise, run after run.
+
+    With every signal option off (the defaults) the controller gets the spring-damper's force itself,
+    as before these options existed, bit for bit.
+    """
 
     mass: float = 0.025       # m_s [kg]
     stiffness: float = 1000.0  # K_s [N/m]
     damping: float = 7.0      # D_s [N s/m]
+    noise: tuple[float, float] = (0.0, 0.0)  # standard deviations: force [N], moment [N m]
+    bias: tuple[float, ...] = (0.0,) * 6      # [N, N m]
+    bandwidth_hz: float | None = None         # first-order lag [Hz]
+    delay_samples: int = 0                    # whole control samples
+    seed: int = 0
 
     def __post_init__(self):
-        _finite("Sensor", **field_values(self))
+        _finite("Sensor", mass=self.mass, stiffness=self.stiffness, damping=self.damping)
         if self.mass <= 0 or self.stiffness <= 0 or self.damping < 0:
-            raise HybridError(f"Sensor needs mass > 0, stiffness > 0, damping >= 0; got {self}")
+            raise HybridError(f"Sensor needs mass > 0, stiffness > 0, damping >= 0; got mass = {self.mass}, "
+                              f"stiffness = {self.stiffness}, damping = {self.damping}")
+        noise = _numbers("noise", self.noise, 2, "(force [N], moment [N m]) standard deviations, e.g. (0.2, 0.01)")
+        if min(noise) < 0:
+            raise HybridError(f"Sensor noise = {self.noise!r}: a standard deviation is negative; give two numbers "
+                              ">= 0, (force [N], moment [N m]), e.g. noise=(0.2, 0.01)")
+        object.__setattr__(self, "noise", noise)
+        object.__setattr__(self, "bias", _numbers("bias", self.bias, 6, "(f_x, f_y, f_z, m_x, m_y, m_z) [N, N m]"))
+        if self.bandwidth_hz is not None:
+            b = self.bandwidth_hz
+            if not _real(b) or not math.isfinite(b) or b <= 0:
+                raise HybridError(f"Sensor bandwidth_hz = {b!r:.40}; give the lag's corner frequency in Hz (> 0), "
+                                  "or None for no lag")
+            object.__setattr__(self, "bandwidth_hz", float(b))
+        d = self.delay_samples
+        if not _real(d) or not math.isfinite(d) or d != int(d) or d < 0:
+            raise HybridError(f"Sensor delay_samples = {d!r:.40}; give a whole number of control samples >= 0 "
+                              "(e.g. delay_samples=2: 20 ms at a 10 ms sample time)")
+        object.__setattr__(self, "delay_samples", int(d))
+        s = self.seed
+        if not _real(s) or not math.isfinite(s) or s != int(s) or s < 0:
+            raise HybridError(f"Sensor seed = {s!r:.40}; give a whole number >= 0")
+        object.__setattr__(self, "seed", int(s))
+
+    @property
+    def ideal(self) -> bool:
+        """True when the reading is the spring-damper's force itself: no noise, bias, lag or delay."""
+        return (self.noise == (0.0, 0.0) and not any(self.bias) and self.bandwidth_hz is None
+                and self.delay_samples == 0)
+
+    def check_sampling(self, sample_time: float) -> None:
+        """Refuse a lag whose corner frequency is at or above the Nyquist frequency of ``sample_time`` [s]."""
+        if self.bandwidth_hz is not None and self.bandwidth_hz >= 0.5 / sample_time:
+            raise HybridError(f"Sensor bandwidth_hz = {self.bandwidth_hz:g} Hz is at or above the Nyquist frequency "
+                              f"{0.5 / sample_time:g} Hz of the sample time {sample_time:g} s; give a bandwidth "
+                              "below it, or None for no lag")
+
+
+def _real(v) -> bool:
+    return isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool)
+
+
+def _numbers(name: str, value, size: int, what: str) -> tuple[float, ...]:
+    """``value`` as ``size`` finite numbers (a list read from a file is a tuple again)."""
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        arr = np.full(1, np.nan)
+    if arr.shape != (size,) or not np.isfinite(arr).all() or any(isinstance(v, bool) for v in np.ravel(value)):
+        raise HybridError(f"Sensor {name} = {value!r:.60}; give {size} finite numbers: {what}")
+    return tuple(float(v) + 0.0 for v in arr)
 
 
 @dataclass(frozen=True)

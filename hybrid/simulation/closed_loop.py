@@ -2,10 +2,11 @@
 
 :func:`prepare` turns an experiment into one row of numbers for the generated closed loop
 (:mod:`hybrid.codegen.closed_loop`), or None when part of its controller runs in Python
-(references given as code, a desired path); :func:`run` runs prepared experiments, grouped by
-the loop they share, one native call per group. ``simulate`` and ``sweep`` use it; the Python
-runner (:func:`hybrid.simulation.runner.run`) is the reference it is tested against and the path
-that explains a run that stopped.
+(references given as code, a desired path, a force/torque sensor's reading) or the plant's sensor
+has noise, a bias, a lag or a delay (the Python runner gives those); :func:`run` runs prepared
+experiments, grouped by the loop they share, one native call per group. ``simulate`` and ``sweep``
+use it; the Python runner (:func:`hybrid.simulation.runner.run`) is the reference it is tested
+against and the path that explains a run that stopped.
 """
 
 from __future__ import annotations
@@ -82,10 +83,12 @@ class Prepared:
 def prepare(exp, x0: np.ndarray | None = None) -> Prepared | None:
     """``exp`` (the paper's experiment or a 3-D one) as a row of the compiled loop, after the checks
     ``simulate`` makes of the settings (a refused experiment raises their HybridError; the record's
-    memory is ``simulate``'s to check: a sweep keeps none); None when it cannot run there. A given
-    start state ``x0`` is the caller's, checked (``simulate`` passes its own)."""
+    memory is ``simulate``'s to check: a sweep keeps none); None when it cannot run there: part of its
+    controller runs in Python, or its sensor's signal is not the sensor's force itself (noise, bias, lag,
+    delay: :mod:`hybrid.simulation.sensing`). A given start state ``x0`` is the caller's, checked
+    (``simulate`` passes its own)."""
     ctrl = exp.build_controller()
-    if not ctrl.runs_in_c:
+    if not ctrl.runs_in_c or not exp.sensor.ideal:
         return None
     if x0 is None:
         x0 = exp.initial_state()

@@ -20,6 +20,7 @@ from hybrid.plants.planar import planar_record
 from hybrid.simulation import closed_loop
 from hybrid.simulation.metrics import run_metrics
 from hybrid.simulation.results import SimulationResult
+from hybrid.simulation.sensing import plant_reader
 from hybrid.validate import check_size
 
 
@@ -95,11 +96,13 @@ def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
     states = np.empty((total + 1, len(x)))
     taus = np.full((total + 1, nq), np.nan)  # NaN marks "no torque computed" in a partial run
     states[0] = x
+    # what the controller is given: the plant's sensor force, or the sensor's signal (conventions §13)
+    read = plant_reader(exp, plant) or plant.sensor_wrench
     for k in range(n_samples):
         t = k * exp.sample_time
         q, qdot = x[0:nq].copy(), x[nq:2 * nq].copy()
         # the sensor's reading: its spring and damper between arm tip and sensor tip
-        Fc = plant.sensor_wrench(x)
+        Fc = read(x)
         try:
             tau = np.ascontiguousarray(controller(t, q, qdot, Fc), dtype=float)
             if not np.isfinite(tau).all():
