@@ -27,10 +27,12 @@ from hybrid.control.wrench_sensor import Tool, WrenchSensor
 from hybrid.errors import HybridError
 from hybrid.experiments.settings import (
     START_TOL,
+    TOUCH_THRESHOLD,
     RunSettings,
     check_common_types,
     check_sensing,
     check_timing,
+    free,
     pressed,
 )
 from hybrid.geometry.paths import CirclePath, LinePath, Path
@@ -79,6 +81,13 @@ class Experiment(RunSettings):
         default): the controller is given the wrench on the robot itself.
     controller_wrench_sensor : the sensor and tool as the controller believes them (its mount, sign,
         tool, bias and its filter's ``cutoff``); default ``wrench_sensor`` itself. Needs ``wrench_sensor``.
+    start_gap : [m] the run starts with the sensor tip this far from the surface along its normal at
+        the start point, at rest and out of contact (conventions §4); 0 (the default): on the surface,
+        pressing with ``F_d(0)``. Needs ``approach_speed``.
+    approach_speed : [m/s] with it the controller has a :class:`~hybrid.ContactLoss` rule: a force axis
+        whose measured force is below ``touch_threshold`` approaches the surface at this speed (before
+        the first touch, and after a loss of contact); 0 (the default): no such rule.
+    touch_threshold : [N] the force below which the force axis counts as out of contact (0.5 N).
     frame : ``"actual"`` (the loops in ``R(r)``) or ``"desired"`` (in ``R(r_d)``).
     backend : which committed unit runs the closed-form plant (``"sympy"`` or ``"casadi"``).
     singular_tol : the run stops when the Jacobian's conditioning at a sample falls below it.
@@ -102,6 +111,9 @@ class Experiment(RunSettings):
     contact: Contact = field(default_factory=Contact)
     wrench_sensor: WrenchSensor | None = None
     controller_wrench_sensor: WrenchSensor | None = None
+    start_gap: float = 0.0
+    approach_speed: float = 0.0
+    touch_threshold: float = TOUCH_THRESHOLD
     gains: Gains = field(default_factory=Gains)
     force_reference: Step = field(default_factory=lambda: Step(10.0, 20.0, 0.4))
     speed_reference: Step = field(default_factory=lambda: Step(0.3, 0.6, 1.0))
@@ -224,9 +236,11 @@ class Experiment(RunSettings):
 
     def initial_state(self) -> np.ndarray:
         """The run's start state ``x0 = (q, q', s, s')``: at rest, the sensor tip pressing at the start
-        point with ``F_d(0)`` (:func:`~hybrid.experiments.settings.pressed`), the tool's
-        z axis along ``-n`` when the task has rotational axes, the joints from inverse kinematics of
-        the true arm. What a foreign loop starts from."""
+        point with ``F_d(0)`` (:func:`~hybrid.experiments.settings.pressed`), or with ``start_gap`` the
+        sensor tip that far from it along the normal, out of contact, the sensor at rest
+        (:func:`~hybrid.experiments.settings.free`); the tool's z axis along ``-n`` when the task has
+        rotational axes, the joints from inverse kinematics of the true arm. What a foreign loop starts
+        from."""
         return _initial_state(self).copy()
 
     def check_path(self) -> None:
@@ -310,7 +324,13 @@ def _initial_state(exp: Experiment) -> np.ndarray:
         raise HybridError(f"{what} {np.round(given, 4).tolist()} m is {gap * 1000:.1f} mm off the surface; give a "
                           f"point on it (within {START_TOL * 1000:g} mm){hint}")
     q0 = None if exp.posture is None else exp.posture.q_rest
-    return _pressed_start(exp.robot, geometry, tuple(np.asarray(p0).tolist()), exp.elbow, q0, exp.reference,
+    p0 = tuple(np.asarray(p0).tolist())
+    if exp.start_gap > 0:
+        # the sensor tip's weight hangs on its spring where the plant gives it gravity (the 3-D plant's)
+        weight = np.zeros(3) if exp.robot.closed_form is not None else exp.sensor.mass * np.array(exp.robot.gravity)
+        return _free_start(exp.robot, geometry, p0, exp.elbow, q0, exp.reference, exp.singular_tol, exp.start_gap,
+                           tuple((weight[:len(p0)] / exp.sensor.stiffness).tolist()))
+    return _pressed_start(exp.robot, geometry, p0, exp.elbow, q0, exp.reference,
                           exp.singular_tol, exp.force_reference(0.0), exp.contact.stiffness, exp.sensor.stiffness)
 
 
@@ -324,17 +344,37 @@ def _probe(exp: Experiment, p: np.ndarray) -> np.ndarray:
 def _pressed_start(robot, surface, p0, elbow, q0, reference, singular_tol, F0, k_e, K_s) -> np.ndarray:
     normal = surface.normal_at(p0)
     s, r = pressed(p0, normal, F0, k_e, K_s)
+    return _at_rest(robot, normal, p0, s, r, elbow, q0, reference, singular_tol)
+
+
+@lru_cache(maxsize=1024)
+def _free_start(robot, surface, p0, elbow, q0, reference, singular_tol, gap, sag) -> np.ndarray:
+    normal = surface.normal_at(p0)
+    s, r = free(p0, normal, gap, np.array(sag))
+    return _at_rest(robot, normal, p0, s, r, elbow, q0, reference, singular_tol, gap)
+
+
+def _at_rest(robot, normal, p0, s, r, elbow, q0, reference, singular_tol, gap: float = 0.0) -> np.ndarray:
+    """The state at rest with the sensor tip at ``s`` and the arm tip at ``r`` (the start point ``p0`` on
+    the surface, its ``normal``), the joints from the true arm's inverse kinematics."""
     # the tool's orientation is set where the task controls it (the planar arm's follows from r)
     rotation = None if robot.closed_form is not None else _tool_rotation(np.asarray(reference), normal)
+    where = (f"start_gap = {gap:g} m puts the arm tip at {np.round(r, 4).tolist()} m" if gap > 0 else
+             f"the start point {np.round(p0, 4).tolist()} m")
+    fix = ("give a smaller start_gap, or move the surface or start_point" if gap > 0 else
+           "move the surface or start_point")
     try:
         q = robot.inverse_kinematics(np.append(r, 0.0) if len(r) == 2 else r, rotation, q0=q0, elbow=elbow)
     except HybridError as exc:
+        if gap > 0:
+            first, _, rest = str(exc).partition("\n")
+            raise HybridError(f"{where}, which the arm cannot reach; {fix}\n  {first}"
+                              + (f"\n{rest}" if rest else "")) from None
         raise HybridError(f"the start pose cannot be reached: {exc}") from None
     cond = float(robot.conditioning(q))
     if cond < max(singular_tol, 1e-3):
-        raise HybridError(f"the start point {np.round(p0, 4).tolist()} m puts the arm at or near a singularity "
-                          f"(q = {np.round(q, 4).tolist()} rad, {robot.conditioning_name} = {cond:.2e}); move "
-                          "the surface or start_point")
+        raise HybridError(f"{where} puts the arm at or near a singularity (q = {np.round(q, 4).tolist()} rad, "
+                          f"{robot.conditioning_name} = {cond:.2e}); {fix}")
     return np.concatenate([q, np.zeros(robot.n), s, np.zeros(len(s))])
 
 

@@ -7,6 +7,7 @@ from dataclasses import fields, replace
 
 import numpy as np
 
+from hybrid.control.controller import ContactLoss
 from hybrid.control.loops import Gains, check_loops
 from hybrid.control.references import Step
 from hybrid.control.wrench_sensor import WrenchSensor
@@ -18,6 +19,8 @@ from hybrid.validate import _finite, check_singular_tol
 FRAMES = ("actual", "desired")
 #: how far from the surface a start point may lie [m]
 START_TOL = 1e-3
+#: the measured normal force below which a force axis is out of contact, by default [N]
+TOUCH_THRESHOLD = 0.5
 
 
 class RunSettings:
@@ -39,11 +42,12 @@ class RunSettings:
     def controller_settings(self) -> dict:
         """The :class:`~hybrid.Controller` keywords every experiment sets alike: the force loop on the
         normal, the speed reference on ``t1``, gains, sampling, options."""
+        loss = ContactLoss(self.touch_threshold, self.approach_speed) if self.approach_speed > 0 else None
         return {"selection": ("n",), "gains": self.gains, "force_reference": self.force_reference,
                 "velocity_reference": self.speed_reference, "sample_time": self.sample_time,
                 "integral": self.integral, "curvature": self.curvature, "frame": self.frame,
                 "path": self.desired_point if self.frame == "desired" else None, "singular_tol": self.singular_tol,
-                "wrench_sensor": self.controller_wrench_sensor or self.wrench_sensor}
+                "contact_loss": loss, "wrench_sensor": self.controller_wrench_sensor or self.wrench_sensor}
 
     def plant_array(self) -> np.ndarray:
         """The ``plant[7]`` array of the generated C (sensor, then contact)."""
@@ -61,9 +65,18 @@ def pressed(point, normal, F0: float, k_e: float, K_s: float) -> tuple[np.ndarra
     return s, s - normal * F0 / K_s
 
 
+def free(point, normal, gap: float, sag) -> tuple[np.ndarray, np.ndarray]:
+    """The sensor tip ``s`` and the arm tip ``r`` at rest out of contact: the sensor tip ``gap`` [m] from
+    the surface's ``point`` along its unit ``normal``, the arm tip ``sag`` [m] (the tip mass's weight
+    on the sensor spring, ``m_s g / K_s``, where the plant gives it gravity) above it, so the spring
+    carries just that weight and nothing moves."""
+    s = np.asarray(point, float) + gap * np.asarray(normal, float)
+    return s, s - np.asarray(sag, float)
+
+
 def check_sensing(exp) -> None:
-    """The sensor's signal and the force/torque sensors, checked alike for every experiment
-    (conventions §13)."""
+    """The sensor's signal, the force/torque sensors and the start from free space, checked alike for
+    every experiment (conventions §4, §13)."""
     exp.sensor.check_sampling(exp.sample_time)
     for name in ("wrench_sensor", "controller_wrench_sensor"):
         value = getattr(exp, name)
@@ -80,6 +93,21 @@ def check_sensing(exp) -> None:
             if sensor is not None:
                 sensor.mount(exp.robot)  # a URDF frame that is not there is refused now
                 sensor.check_sampling(exp.sample_time)
+    for name in ("start_gap", "approach_speed", "touch_threshold"):
+        value = getattr(exp, name)
+        _finite(type(exp).__name__, **{name: value})
+        object.__setattr__(exp, name, float(value))
+    units = {"start_gap": "m", "approach_speed": "m/s"}
+    for name, unit in units.items():
+        if getattr(exp, name) < 0:
+            raise HybridError(f"{name} = {getattr(exp, name):g} {unit}; give a {name.replace('_', ' ')} >= 0 "
+                              f"(0: {'start on the surface, pressed' if name == 'start_gap' else 'no approach'})")
+    if exp.touch_threshold <= 0:
+        raise HybridError(f"touch_threshold = {exp.touch_threshold:g} N; give the force below which the force axis "
+                          f"is out of contact, > 0 (default {TOUCH_THRESHOLD:g} N)")
+    if exp.start_gap > 0 and exp.approach_speed == 0:
+        raise HybridError(f"start_gap = {exp.start_gap:g} m needs an approach speed to reach the surface: give "
+                          "approach_speed > 0 [m/s], e.g. approach_speed=0.05")
 
 
 def check_common_types(exp) -> None:
