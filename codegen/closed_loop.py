@@ -36,7 +36,10 @@ METRICS = ("force_overshoot_N", "force_overshoot_percent", "force_settling_time_
            "speed_drop_after_force_step_m_per_s", "force_deviation_after_speed_step_N",
            "speed_overshoot_after_speed_step_m_per_s", "steady_state_force_error_N",
            "steady_state_speed_error_m_per_s", "rms_force_error_N", "rms_speed_error_m_per_s", "max_penetration_m",
-           "contact_losses", "time_out_of_contact_s")
+           "contact_losses", "time_out_of_contact_s", "first_touch_time_s", "first_touch_overshoot_N",
+           "first_touch_settling_s")
+#: the first touch's settling band, a fraction of the force reference at the touch (``hybrid.metrics``')
+TOUCH_BAND = 0.05
 #: controller-step inputs the loop drives itself (the rest are the run's parameters)
 _DRIVEN = ("q", "qd", "Fc", "integrals", "last_torque", "filter", "t", "yd_extra", "yd_rate", "target")
 
@@ -159,7 +162,7 @@ static void flag(lanes_run *run, hl_i bad, int status, int k) {{
 /* the metrics' running sums and extremes (hybrid.metrics' definitions, updated row by row) */
 typedef struct {{
     hl_v peak, n_f, first_f, last_out_f, last_f, drop, n_v, dev, v_max, sum_fe, sum_ve, n_last, sum_f2, sum_v2,
-        pen, in_prev, losses, t_out, tau[{nq}];
+        pen, in_prev, losses, t_out, touch, fd0, w_end, t_peak, t_last_out, t_last, tau[{nq}];
 }} lanes_metrics;
 
 static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, long i, double h,
@@ -196,6 +199,19 @@ static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const
         mt->t_out += hl_select(contact, hl_splat(0.0), hl_splat(ti - (double)(i - 1) * h));
     }}
     mt->in_prev = hl_bool(contact);
+    {{ /* the first touch: the first row in contact, then the window until the force reference next changes */
+        const hl_i first = contact & (mt->touch < 0.0);
+        hl_i in_t;
+        hl_v bt;
+        mt->touch = hl_select(first, idx, mt->touch);
+        mt->fd0 = hl_select(first, Fd, mt->fd0);
+        mt->w_end = hl_select(first, hl_select((fa != fb) & (fat > t), fat, hl_splat(INFINITY)), mt->w_end);
+        in_t = (mt->touch >= 0.0) & (t < mt->w_end);
+        bt = {TOUCH_BAND!r} * hl_fabs(mt->fd0);
+        mt->t_peak = hl_select(in_t & (F > mt->t_peak), F, mt->t_peak);
+        mt->t_last_out = hl_select(in_t & (hl_fabs(F - mt->fd0) > bt), idx, mt->t_last_out);
+        mt->t_last = hl_select(in_t, idx, mt->t_last);
+    }}
     for (j = 0; j < {nq}; ++j) {{
         const hl_v a = hl_fabs(tau[j]);
         mt->tau[j] = hl_select(a > mt->tau[j], a, mt->tau[j]);
@@ -225,6 +241,13 @@ static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int l, lon
     out[10] = mt->pen[l];
     out[11] = mt->losses[l];
     out[12] = mt->t_out[l];
+    out[13] = out[14] = out[15] = NAN;
+    if (mt->touch[l] >= 0) {{
+        const double lo = mt->t_last_out[l], lt = mt->t_last[l], first = mt->touch[l];
+        out[13] = first * h;
+        out[14] = mt->t_peak[l] - mt->fd0[l];
+        out[15] = lo < 0 ? 0.0 : lo == lt ? NAN : (lo + 1) * h - first * h;
+    }}
     for (j = 0; j < {nq}; ++j) out[{len(METRICS)} + j] = mt->tau[j][l];
 }}
 
@@ -267,6 +290,10 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     mt.first_f = mt.last_out_f = mt.last_f = hl_splat(-1.0);
     mt.n_f = mt.n_v = mt.sum_fe = mt.sum_ve = mt.n_last = mt.sum_f2 = mt.sum_v2 = mt.in_prev = mt.losses = mt.t_out
         = hl_splat(0.0);
+    mt.touch = mt.t_last_out = mt.t_last = hl_splat(-1.0);
+    mt.fd0 = hl_splat(0.0);
+    mt.w_end = hl_splat(INFINITY);
+    mt.t_peak = hl_splat(-INFINITY);
     for (j = 0; j < {nq}; ++j) mt.tau[j] = hl_splat(0.0);
     for (j = 0; j < 13; ++j) zero[j] = hl_splat(0.0);
     for (j = 0; j < 6; ++j) fc[j] = hl_splat(0.0);

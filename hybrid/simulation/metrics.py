@@ -61,7 +61,8 @@ def metrics(t, force_normal, velocity_tangential, force_reference, speed_referen
     Returns every metric, always: one after a step that falls outside the run, or whose series was
     not given, is NaN. Force overshoot and 2 % settling after the force step, speed drop after it,
     force deviation and speed overshoot after the speed step, steady-state errors (last 0.2 s), RMS
-    errors, penetration, contact losses and time out of contact, peak torque per joint.
+    errors, penetration, contact losses and time out of contact, the first touch (its time, the force's
+    overshoot after it and its 2 % settling; :func:`first_touch`), peak torque per joint.
     """
     try:
         t = np.asarray(t, dtype=float)
@@ -109,6 +110,9 @@ def metrics(t, force_normal, velocity_tangential, force_reference, speed_referen
         in_contact = _series("contact_force", contact_force, len(t)) > 0
         m["contact_losses"] = int(np.count_nonzero(in_contact[:-1] & ~in_contact[1:]))
         m["time_out_of_contact_s"] = float(np.sum(np.diff(t)[~in_contact[1:]]))
+        m.update(first_touch(t, F, Fd, in_contact, fs))
+    else:
+        m.update(dict.fromkeys(FIRST_TOUCH, nan))
     if tau is not None:
         try:
             torques = np.asarray(tau, dtype=float)
@@ -121,6 +125,29 @@ def metrics(t, force_normal, velocity_tangential, force_reference, speed_referen
         for j in range(torques.shape[1]):
             m[f"peak_torque_joint{j + 1}_Nm"] = float(np.max(np.abs(torques[:, j])))
     return m
+
+
+#: the first touch's metrics (:func:`first_touch`), in the order ``hybrid.metrics`` reports them
+FIRST_TOUCH = ("first_touch_time_s", "first_touch_overshoot_N", "first_touch_settling_s")
+#: the first touch's settling band, a fraction of the force reference at the touch (conventions §8)
+TOUCH_BAND = 0.05
+
+
+def first_touch(t: np.ndarray, F: np.ndarray, Fd: np.ndarray, in_contact: np.ndarray, force_step: Step) -> dict:
+    """The first touch (conventions §8): its time ``t[i0]``, the first sample in contact; the force's
+    overshoot after it, ``max F - F_d(t[i0])`` from the touch until the force reference next changes
+    (the force step, when later; else the run's end, included); and the time from the touch until the
+    force stays within ``TOUCH_BAND`` (5 %) of ``|F_d(t[i0])|`` in that window (NaN if it does not).
+    All NaN for a run that never touches. A run that starts in contact touches at ``t[0]``."""
+    touched = np.flatnonzero(in_contact)
+    if len(touched) == 0:
+        return dict.fromkeys(FIRST_TOUCH, float("nan"))
+    i0 = touched[0]
+    target = Fd[i0]
+    later = force_step.after != force_step.before and force_step.at > t[i0]
+    window = (t >= t[i0]) & (t < force_step.at) if later else t >= t[i0]
+    return {"first_touch_time_s": float(t[i0]), "first_touch_overshoot_N": float(F[window].max() - target),
+            "first_touch_settling_s": settling_time(t[window], F[window], target, TOUCH_BAND * abs(target))}
 
 
 def run_metrics(res) -> dict:
