@@ -21,8 +21,9 @@ class Sensor:
     ----------
     mass, stiffness, damping : the tip mass ``m_s`` [kg], the spring ``K_s`` [N/m] and damper
         ``D_s`` [N s/m] between it and the arm tip; the sensor measures the spring-damper's force.
-    noise : the standard deviations ``(force [N], moment [N m])`` of white Gaussian noise added to
-        each component of every reading (one draw per control sample); ``(0, 0)``: none.
+    force_noise, moment_noise : the standard deviations [N] and [N m] of white Gaussian noise added
+        to each force and each moment component of every reading (one draw per control sample); 0:
+        none.
     bias : a constant offset of the reading ``(f_x, f_y, f_z, m_x, m_y, m_z)`` [N, N m], base axes
         (with an experiment's ``wrench_sensor`` the true sensor's bias is that sensor's own, in its
         axes, and this stays 0).
@@ -39,7 +40,8 @@ class Sensor:
     mass: float = 0.025       # m_s [kg]
     stiffness: float = 1000.0  # K_s [N/m]
     damping: float = 7.0      # D_s [N s/m]
-    noise: tuple[float, float] = (0.0, 0.0)  # standard deviations: force [N], moment [N m]
+    force_noise: float = 0.0                  # standard deviation [N]
+    moment_noise: float = 0.0                 # standard deviation [N m]
     bias: tuple[float, ...] = (0.0,) * 6      # [N, N m]
     bandwidth_hz: float | None = None         # first-order lag [Hz]
     delay_samples: int = 0                    # whole control samples
@@ -50,11 +52,13 @@ class Sensor:
         if self.mass <= 0 or self.stiffness <= 0 or self.damping < 0:
             raise HybridError(f"Sensor needs mass > 0, stiffness > 0, damping >= 0; got mass = {self.mass}, "
                               f"stiffness = {self.stiffness}, damping = {self.damping}")
-        noise = _numbers("noise", self.noise, 2, "(force [N], moment [N m]) standard deviations, e.g. (0.2, 0.01)")
-        if min(noise) < 0:
-            raise HybridError(f"Sensor noise = {self.noise!r}: a standard deviation is negative; give two numbers "
-                              ">= 0, (force [N], moment [N m]), e.g. noise=(0.2, 0.01)")
-        object.__setattr__(self, "noise", noise)
+        for name, unit, example in (("force_noise", "N", 0.2), ("moment_noise", "N m", 0.01)):
+            v = getattr(self, name)
+            _finite("Sensor", **{name: v})
+            if v < 0:
+                raise HybridError(f"Sensor {name} = {v!r}; give a standard deviation >= 0 [{unit}] (0: no noise), "
+                                  f"e.g. {name}={example}")
+            object.__setattr__(self, name, float(v))
         object.__setattr__(self, "bias", _numbers("bias", self.bias, 6, "(f_x, f_y, f_z, m_x, m_y, m_z) [N, N m]"))
         if self.bandwidth_hz is not None:
             b = self.bandwidth_hz
@@ -75,7 +79,7 @@ class Sensor:
     @property
     def ideal(self) -> bool:
         """True when the reading is the spring-damper's force itself: no noise, bias, lag or delay."""
-        return (self.noise == (0.0, 0.0) and not any(self.bias) and self.bandwidth_hz is None
+        return (self.force_noise == 0 and self.moment_noise == 0 and not any(self.bias) and self.bandwidth_hz is None
                 and self.delay_samples == 0)
 
     def check_sampling(self, sample_time: float) -> None:

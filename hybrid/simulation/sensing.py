@@ -8,11 +8,12 @@ tip (base axes). The controller is given
    reading that sensor gives for ``F_k`` at the true arm's tip pose (:func:`~hybrid.control.wrench_sensor.reading_of`:
    sensor axes, its sign, its bias and the tool's weight at the current orientation);
 2. ``y_k = a y_(k-1) + (1 - a) w_k``, ``a = exp(-2 pi f_b T)``: a first-order lag of corner frequency
-   ``f_b`` discretised at the sample time ``T`` (exact at the samples for a reading that changes at the
-   sample instants), started at ``y_0 = w_0`` (at rest before the run);
+   ``f_b`` discretised at the sample time ``T`` (the continuous lag's value at the samples when the
+   reading over each sample period is the one read at its end), started at ``y_0 = w_0`` (at rest
+   before the run);
 3. ``m_k = y_k + b + sigma * n_k``: the bias ``b`` and white Gaussian noise, ``n_k`` standard normal per
-   component from the seeded generator (force components scaled by the force's ``sigma``, moments by
-   the moment's);
+   component from the seeded generator, ``sigma`` the force's standard deviation on the force
+   components and the moment's on the moments;
 4. the delay: at sample ``k`` the controller gets ``m_max(k - d, 0)``.
 
 :class:`SensorSignal` is steps 2-4 on any sequence of readings; :func:`plant_reader` builds the whole
@@ -43,7 +44,7 @@ class SensorSignal:
         #: the lag's pole ``a`` (0: no lag)
         self.pole = 0.0 if sensor.bandwidth_hz is None else math.exp(-2 * math.pi * sensor.bandwidth_hz * sample_time)
         self.bias = np.array(sensor.bias)
-        self.scale = np.repeat(np.array(sensor.noise), 3)
+        self.scale = np.repeat([sensor.force_noise, sensor.moment_noise], 3)
         self.delay = sensor.delay_samples
         self._noisy = bool(self.scale.any())
         self._rng = np.random.default_rng(sensor.seed)
