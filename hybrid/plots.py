@@ -158,3 +158,32 @@ def sweep_heatmaps(table, figures: dict | None, out: Path) -> list[Path]:
         fig.suptitle(metric, fontsize=9)
         written.append(_save(fig, out / f"heatmap_{metric}.png", dpi=120))
     return written
+
+
+def first_touch_figure(results: dict, path: Path) -> Path:
+    """Runs from free space, each ``{label: result}``: the measured normal force and the surface's normal
+    force on the sensor tip against the time from the first touch (conventions §8)."""
+    import numpy as np
+
+    fig, axes = plt.subplots(2, 1, figsize=(7, 5.5), sharex=True)
+    for label, res in results.items():
+        touched = np.flatnonzero(res.contact_force > 0)
+        if len(touched) == 0:
+            continue
+        t = res.t - res.t[touched[0]]
+        axes[0].plot(t, res.force_normal, lw=1.1, label=label)
+        axes[1].plot(t, res.contact_force, lw=0.8, label=label)
+    any_res = next(iter(results.values()))
+    touched = np.flatnonzero(any_res.contact_force > 0)
+    t0 = any_res.t[touched[0]] if len(touched) else 0.0
+    axes[0].plot(any_res.t - t0, any_res.force_reference, "k--", lw=1.0, label="reference")
+    axes[0].set_ylabel("measured normal force [N]")
+    axes[1].set_ylabel("surface's normal force [N]")
+    axes[0].set_title("the first touch: the sensor's force, and the surface's on the sensor tip", fontsize=9)
+    axes[0].grid(alpha=0.3)
+    axes[0].legend(fontsize=7)
+    axes[1].set_xlim(-0.02, 0.3)
+    axes[1].set_xlabel("time from the first touch [s]")
+    axes[1].grid(alpha=0.3)
+    fig.tight_layout()
+    return _save(fig, path)
