@@ -194,3 +194,12 @@ def test_the_readme_example_runs_and_gives_the_studys_numbers():
     # the controller believes the true tool and bias: it holds the force as without a sensor, less what its
     # 20 Hz filter's lag costs at 0.3 m/s on the sphere (0.1 N)
     assert abs(ns["res"].metrics["steady_state_force_error_N"]) < 0.15
+
+
+def test_the_figure_of_the_touch_is_drawn(tmp_path):
+    from hybrid.plots import first_touch_figure
+
+    runs = {"free": hybrid.simulate(touching("paper", duration=0.3)),
+            "never": hybrid.simulate(touching("paper", duration=0.05))}  # a run that never touches is left out
+    path = first_touch_figure(runs, tmp_path / "touch.png")
+    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -100,7 +100,8 @@ def _numbers(name: str, value, size: int, what: str) -> tuple[float, ...]:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
         arr = np.full(1, np.nan)
-    if arr.shape != (size,) or not np.isfinite(arr).all() or any(isinstance(v, bool) for v in np.ravel(value)):
+    flags = isinstance(value, (list, tuple)) and any(isinstance(v, (bool, np.bool_)) for v in value)
+    if arr.shape != (size,) or not np.isfinite(arr).all() or flags:
         raise HybridError(f"Sensor {name} = {value!r:.60}; give {size} finite numbers: {what}")
     return tuple(float(v) + 0.0 for v in arr)
 
