@@ -162,7 +162,7 @@ static void flag(lanes_run *run, hl_i bad, int status, int k) {{
 /* the metrics' running sums and extremes (hybrid.metrics' definitions, updated row by row) */
 typedef struct {{
     hl_v peak, n_f, first_f, last_out_f, last_f, drop, n_v, dev, v_max, sum_fe, sum_ve, n_last, sum_f2, sum_v2,
-        pen, in_prev, losses, t_out, touch, fd0, w_end, t_peak, t_last_out, t_last, tau[{nq}];
+        pen, in_prev, losses, t_out, touch, fd0, band, w_end, t_peak, t_last_out, t_last, tau[{nq}];
 }} lanes_metrics;
 
 static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, long i, double h,
@@ -202,14 +202,15 @@ static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const
     {{ /* the first touch: the first row in contact, then the window until the force reference next changes */
         const hl_i first = contact & (mt->touch < 0.0);
         hl_i in_t;
-        hl_v bt;
-        mt->touch = hl_select(first, idx, mt->touch);
-        mt->fd0 = hl_select(first, Fd, mt->fd0);
-        mt->w_end = hl_select(first, hl_select((fa != fb) & (fat > t), fat, hl_splat(INFINITY)), mt->w_end);
+        if (hl_any(first)) {{
+            mt->touch = hl_select(first, idx, mt->touch);
+            mt->fd0 = hl_select(first, Fd, mt->fd0);
+            mt->band = hl_select(first, {TOUCH_BAND!r} * hl_fabs(Fd), mt->band);
+            mt->w_end = hl_select(first, hl_select((fa != fb) & (fat > t), fat, hl_splat(INFINITY)), mt->w_end);
+        }}
         in_t = (mt->touch >= 0.0) & (t < mt->w_end);
-        bt = {TOUCH_BAND!r} * hl_fabs(mt->fd0);
         mt->t_peak = hl_select(in_t & (F > mt->t_peak), F, mt->t_peak);
-        mt->t_last_out = hl_select(in_t & (hl_fabs(F - mt->fd0) > bt), idx, mt->t_last_out);
+        mt->t_last_out = hl_select(in_t & (hl_fabs(F - mt->fd0) > mt->band), idx, mt->t_last_out);
         mt->t_last = hl_select(in_t, idx, mt->t_last);
     }}
     for (j = 0; j < {nq}; ++j) {{
@@ -291,7 +292,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     mt.n_f = mt.n_v = mt.sum_fe = mt.sum_ve = mt.n_last = mt.sum_f2 = mt.sum_v2 = mt.in_prev = mt.losses = mt.t_out
         = hl_splat(0.0);
     mt.touch = mt.t_last_out = mt.t_last = hl_splat(-1.0);
-    mt.fd0 = hl_splat(0.0);
+    mt.fd0 = mt.band = hl_splat(0.0);
     mt.w_end = hl_splat(INFINITY);
     mt.t_peak = hl_splat(-INFINITY);
     for (j = 0; j < {nq}; ++j) mt.tau[j] = hl_splat(0.0);
