@@ -36,7 +36,7 @@ from .kernel import Kernel
 CALL_STATUS = ("INPUT_NONFINITE", "SAMPLE_LATE", "SAMPLE_EARLY", "SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
 #: the step's inputs the call fills from its own arguments and the struct's state
 _CALL = {"q": "q", "qd": "qd", "Fc": "wrench", "integrals": "c->integrals", "last_torque": "last",
-         "filter": "c->filter", "t": "tv"}
+         "filter": "c->filter", "estimate": "c->estimate", "t": "tv"}
 #: the step's inputs the caller computes per sample (references given as code), zero after init
 _CALLER = ("yd_extra", "yd_rate", "target")
 #: the inputs held as named scalar fields (their elements' names), not an array
@@ -131,6 +131,7 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     fields.append("    /* ---- state kept between samples (zero after init and reset) */")
     array_field(inputs["integrals"], "the loops' integrals")
     array_field(inputs["filter"], "the wrench filter's state")
+    array_field(inputs["estimate"], "an estimated surface's state")
     tau_unit = ", ".join(dict.fromkeys(tau.unit if isinstance(tau.unit, tuple) else (tau.unit,)))
     fields.append(f"    double tau[{nq}]; /* the torque last written [{comment_safe(tau_unit)}] */")
     fields.append("    int has_torque; /* 1: tau is the arm's torque, the next sample is rate-limited from it */")
@@ -229,6 +230,7 @@ void {prefix}_controller_reset({prefix}_controller *c) {{
     int i;
     for (i = 0; i < {2 * m}; ++i) c->integrals[i] = 0.0;
     for (i = 0; i < {inputs["filter"].size}; ++i) c->filter[i] = 0.0;
+    for (i = 0; i < {inputs["estimate"].size}; ++i) c->estimate[i] = 0.0;
     for (i = 0; i < {nq}; ++i) c->tau[i] = 0.0;
 {"".join(f"    for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = 0.0;{chr(10)}" for a in loop_out)}    c->has_torque = 0;
     c->t_last = 0.0;
@@ -279,6 +281,7 @@ int {prefix}_controller_step({prefix}_controller *c, double t, const double *q, 
     c->has_torque = 1;
     c->saturated = o_{saturated.name}[0] != 0.0;
     for (i = 0; i < {filter_next.size}; ++i) c->filter[i] = o_{filter_next.name}[i];
+    for (i = 0; i < {inputs["estimate"].size}; ++i) c->estimate[i] = o_estimate_next[i];
 {keep}    if (on_time != {P}_OK) return on_time;
     for (i = 0; i < {2 * m}; ++i) c->integrals[i] = o_{z_next.name}[i];
     return {P}_OK;
