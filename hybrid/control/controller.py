@@ -22,6 +22,7 @@ from hybrid.geometry.task_axes import AXIS_NAMES, check_axes, reference_directio
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
+from hybrid.native.standalone import generate_controller
 from hybrid.validate import _finite, check_singular_tol
 
 #: "no limit" for the options that are off (the generated step takes finite numbers only)
@@ -319,8 +320,6 @@ class Controller:
         caller's: it writes them into ``c.yd_extra``, ``c.yd_rate`` and ``c.target`` each sample. C99,
         no allocation, no globals, no I/O, reentrant; the same bytes for the same controller. Files in
         ``out`` with other content are refused unless ``force``."""
-        from hybrid.native.standalone import generate_controller
-
         return generate_controller(self, out, name, force)
 
     @property
