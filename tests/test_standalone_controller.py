@@ -17,7 +17,6 @@ import numpy as np
 import pytest
 
 import hybrid
-from hybrid.control.controller import TIMING
 
 STRICT = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]
 
