@@ -79,8 +79,10 @@ def _index_macros(prefix: str, field: str, names) -> list[str]:
     return [f"#define {m} {i}" for i, m in enumerate(made)]
 
 
-def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict, values: dict) -> Unit:
-    """C source, header and manifest of the standalone controller around ``step``.
+def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict, values: dict,
+                                stem: str | None = None) -> Unit:
+    """C source, header and manifest of the standalone controller around ``step``: its symbols start
+    ``prefix``, its files ``stem`` (default ``prefix``).
 
     ``values`` holds the configuration ``_init`` writes: every parameter input of ``step`` by name
     (a sequence of numbers), ``timing_tolerance`` and ``singular_tol``.
@@ -93,6 +95,7 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     nq, m = inputs["q"].size, inputs["yd_extra"].size
     tau, z_next, *loop_out, saturated = step.outputs
     P = prefix.upper()
+    stem = stem or prefix
     codes = statuses()
 
     # ------------------------------------------------------------------ the struct
@@ -117,7 +120,8 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     fields.append("    double timing_tolerance; /* a sample is on time when t advanced by sample_time within this "
                   "fraction of it [1]; < 0: no timing check */")
     fields.append("    double singular_tol; /* the task Jacobian's least conditioning [1] */")
-    fields.append("    /* ---- references the caller computes each sample (0 after init): added to the steps' values */")
+    fields.append("    /* ---- references the caller computes each sample (0 after init): added to the steps' "
+                  "values */")
     for name in _CALLER:
         array_field(inputs[name], {"yd_extra": "reference added per axis",
                                    "yd_rate": "reference rate per axis (velocity axes' feedforward)",
@@ -125,7 +129,8 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
                                              "position error)"}[name])
     fields.append("    /* ---- state kept between samples (zero after init and reset) */")
     array_field(inputs["integrals"], "the loops' integrals")
-    fields.append(f"    double tau[{nq}]; /* the torque last written [{comment_safe(', '.join(dict.fromkeys(tau.unit if isinstance(tau.unit, tuple) else (tau.unit,))))}] */")
+    tau_units = ", ".join(dict.fromkeys(tau.unit if isinstance(tau.unit, tuple) else (tau.unit,)))
+    fields.append(f"    double tau[{nq}]; /* the torque last written [{comment_safe(tau_units)}] */")
     fields.append("    int has_torque; /* 1: tau is the arm's torque, the next sample is rate-limited from it */")
     fields.append("    double t_last; /* the sample clock: the last sample's t [s] */")
     fields.append("    int has_clock; /* 1: t_last is set (the next sample's timing is checked) */")
@@ -138,11 +143,11 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     status_lines = "\n".join(f"#define {P}_{name} {code} /* {comment_safe(_MEANING[name])} */"
                              for name, code in codes.items())
     defines = [f"#define {P}_NQ {nq} /* joints */", f"#define {P}_M {m} /* task axes */"]
-    header = f"""#ifndef {P}_H
-#define {P}_H
+    header = f"""#ifndef {stem.upper()}_H
+#define {stem.upper()}_H
 /* {prefix}: {comment_safe(what)}.
    Standalone C99: no allocation, no globals, no I/O; reentrant (every state is in the struct).
-   Emitted by hybrid's codegen (generator version {GENERATOR_VERSION}); interface: {prefix}.json.
+   Emitted by hybrid's codegen (generator version {GENERATOR_VERSION}); interface: {stem}.json.
 
    {prefix}_controller c;
    {prefix}_controller_init(&c);                                   (the configuration's values)
@@ -179,7 +184,8 @@ const char *{prefix}_status_name(int status);
         if a.name in _SCALARS:
             init += [f"    c->{n} = {_number(v)};" for n, v in zip(a.names, vals)]
         else:
-            init.append(f"    {{\n        static const double v[{a.size}] = {{{', '.join(_number(v) for v in vals)}}};\n"
+            numbers = ", ".join(_number(v) for v in vals)
+            init.append(f"    {{\n        static const double v[{a.size}] = {{{numbers}}};\n"
                         f"        for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = v[i];\n    }}")
     init.append(f"    c->timing_tolerance = {_number(values['timing_tolerance'])};")
     init.append(f"    c->singular_tol = {_number(values['singular_tol'])};")
@@ -194,7 +200,8 @@ const char *{prefix}_status_name(int status);
     outs = "".join(f"    double o_{a.name}[{a.size}];\n" for a in step.core_outputs())
     guards = "".join(
         f"    if (status == {P}_OK && fabs(o_{g.name}[0]) < "
-        f"{'c->singular_tol' if g.tolerance == 'singular_tol' else g.c_tolerance}) status = {P}_{g.status.removeprefix('HYBRID_')};\n"
+        f"{'c->singular_tol' if g.tolerance == 'singular_tol' else g.c_tolerance}) "
+        f"status = {P}_{g.status.removeprefix('HYBRID_')};\n"
         for g in step.guards)
     finite = " || ".join(f"!all_finite(o_{a.name}, {a.size})" for a in step.core_outputs())
     keep = "".join(f"    for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = o_{a.name}[i];\n" for a in loop_out)
@@ -203,9 +210,9 @@ const char *{prefix}_status_name(int status);
     names = ", ".join(f'"{n}"' for n in codes)
     source = f"""/* {prefix}: {comment_safe(what)}.
    Emitted by hybrid's codegen (generator version {GENERATOR_VERSION}, CasADi {ca.__version__}).
-   Compile: cc -std=c99 -O2 -c {prefix}.c (link with -lm). */
+   Compile: cc -std=c99 -O2 -c {stem}.c (link with -lm). */
 #include <math.h>
-#include "{prefix}.h"
+#include "{stem}.h"
 
 {_casadi_cores(prefix, (step,))}
 static int all_finite(const double *v, int n) {{
@@ -281,7 +288,8 @@ const char *{prefix}_status_name(int status) {{
     fields_doc = [{"name": a.name, "size": a.size, **({"names": list(a.names)} if a.names else {}),
                    "unit": a.unit if isinstance(a.unit, str) else list(a.unit)}
                   for a in (*params, *(inputs[n] for n in _CALLER))]
-    data = {"do_not_edit": MANIFEST_STAMP, "unit": prefix, "generator": GENERATOR_VERSION,
+    data = {"do_not_edit": MANIFEST_STAMP, "unit": stem, **({"prefix": prefix} if stem != prefix else {}),
+            "generator": GENERATOR_VERSION,
             "tools": f"CasADi {ca.__version__}", **info, "nq": nq, "m": m,
             "status": {f"{P}_{k}": v for k, v in codes.items()},
             "status_meaning": {f"{P}_{k}": _MEANING[k] for k in codes},
@@ -292,4 +300,4 @@ const char *{prefix}_status_name(int status) {{
             "configuration": {k: ([float(x) for x in v] if not isinstance(v, (int, float)) else float(v))
                               for k, v in sorted(values.items())}}
     data["body_sha256"] = json_body_hash(data)
-    return Unit(prefix, stamp(source), stamp(header), json.dumps(data, indent=1) + "\n")
+    return Unit(stem, stamp(source), stamp(header), json.dumps(data, indent=1) + "\n")
