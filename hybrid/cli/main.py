@@ -62,7 +62,12 @@ def _lock(text: str) -> tuple[str, float]:
 
 
 def _generate(args) -> int:
-
+    if args.experiment is not None:
+        return experiment_cli.run_generate(args)
+    if args.settings:
+        raise HybridError("--set overrides an experiment's settings: give --experiment too")
+    if not args.urdf or not args.tip:
+        raise HybridError("generate needs --urdf and --tip (a URDF arm's kernels), or --experiment")
     written = generate(args.urdf, args.tip, args.out, args.name, dict(args.lock) or None, force=args.force)
     print("wrote " + ", ".join(str(p) for p in written))
     return 0
@@ -86,14 +91,16 @@ def build_parser() -> argparse.ArgumentParser:
                         "works from an installed package too")
     r.set_defaults(func=_regenerate)
 
-    g = sub.add_parser("generate", help="write standalone C99 (.c, .h, manifest .json) for a URDF arm")
-    g.add_argument("--urdf", required=True, help="the robot's URDF file")
-    g.add_argument("--tip", required=True, help="the link that ends the chain (e.g. tool0)")
+    g = sub.add_parser("generate", help="write standalone C99 (.c, .h, manifest .json) for a URDF arm, or an "
+                                        "experiment's controller and plant")
+    g.add_argument("--urdf", help="the robot's URDF file")
+    g.add_argument("--tip", help="the link that ends the chain (e.g. tool0)")
     g.add_argument("--out", required=True, help="folder to write into")
-    g.add_argument("--name", help="prefix of the files and C symbols (default: the URDF's robot name)")
+    g.add_argument("--name", help="prefix of the files and C symbols (default: the robot's name)")
     g.add_argument("--lock", action="append", type=_lock, default=[], metavar="JOINT[=POSITION]",
                    help="hold this joint at POSITION (default 0); repeatable")
     g.add_argument("--force", action="store_true", help="overwrite files with other content")
+    experiment_cli.add_generate_arguments(g)
     g.set_defaults(func=_generate)
 
 
