@@ -192,3 +192,79 @@ def test_plant_statuses_and_bytes(tmp_path):
         hybrid.paper_experiment(KPf=3.0).generate(tmp_path / "a", "same")
     with pytest.raises(hybrid.HybridError, match="cannot name C symbols"):
         exp.generate(tmp_path / "c", "1bad")
+
+
+# ------------------------------------------------------------------ the ros2_control-shaped wrapper
+
+ROS2_LIKE = EXAMPLE.parent / "ros2_like"
+
+
+@pytest.fixture(scope="module")
+def ros2_like(example):
+    """examples/ros2_like built with ``g++ -std=c++17 -Wall -Wextra -Werror`` on the example's generated C."""
+    for name in ("main.cpp", "hybrid_controller.hpp"):
+        shutil.copy(ROS2_LIKE / name, example / name)
+    for unit in ("ur5_controller", "ur5_plant"):
+        subprocess.run(["gcc", *STRICT, "-O2", "-c", f"{unit}.c", "-o", f"{unit}.o"], cwd=example, check=True)
+    build = subprocess.run(["g++", "-std=c++17", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O2", "main.cpp",
+                            "ur5_controller.o", "ur5_plant.o", "-o", "ros2_like"], cwd=example, capture_output=True,
+                           text=True)
+    assert build.returncode == 0, build.stderr
+    return example / "ros2_like"
+
+
+def periods(program: Path, *args: str) -> list[dict]:
+    done = subprocess.run([str(program), *args], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    rows = []
+    for line in done.stdout.splitlines():
+        k, t, updated, result, status, *numbers = line.split(",")
+        v = np.array(numbers, float)
+        rows.append({"k": int(k), "t": float(t), "updated": updated == "1", "result": result, "status": status,
+                     "q": v[:NQ], "qd": v[NQ:2 * NQ], "wrench": v[2 * NQ:2 * NQ + 6], "effort": v[2 * NQ + 6:]})
+    return rows
+
+
+def python_torque(ctrl, row):
+    """The Python controller's torque for the period's update (None where it refuses the sample)."""
+    try:
+        return ctrl(row["t"], row["q"], row["qd"], row["wrench"])
+    except hybrid.HybridError:
+        return None
+
+
+def test_ros2_like_equals_python(ros2_like):
+    rows = periods(ros2_like, "--samples", "300")
+    assert len(rows) == 300 and all(r["result"] == "OK" and r["status"] == "OK" for r in rows)
+    ctrl = hybrid.tracing_experiment(duration=3.0).build_controller()
+    worst_tau = 0.0
+    for r in rows:
+        tau = python_torque(ctrl, r)
+        worst_tau = max(worst_tau, float(np.max(np.abs(r["effort"] - tau)) / np.max(np.abs(tau))))
+    assert worst_tau < 1e-12
+
+
+def test_ros2_like_holds_the_last_effort_on_error(ros2_like):
+    rows = periods(ros2_like, "--samples", "200", "--miss", "100", "--nan", "150")
+    expected = {100: ("-", "-"), 101: ("ERROR", "SAMPLE_LATE"), 150: ("ERROR", "INPUT_NONFINITE"),
+                151: ("ERROR", "SAMPLE_LATE")}  # after a NaN the step's clock has not moved: one period late
+    for r in rows:
+        assert (r["result"], r["status"]) == expected.get(r["k"], ("OK", "OK")), r["k"]
+    for k, held in ((100, 99), (101, 99), (150, 149), (151, 149)):
+        np.testing.assert_array_equal(rows[k]["effort"], rows[held]["effort"])
+    assert np.isnan(rows[150]["wrench"][0])
+    # the samples it took, as the Python controller takes them: the same torques where both go on
+    ctrl = hybrid.tracing_experiment(duration=3.0).build_controller()
+    for r in rows:
+        if not r["updated"]:
+            continue
+        tau = python_torque(ctrl, r)
+        assert (tau is None) == (r["result"] == "ERROR"), r["k"]
+        if tau is not None:
+            np.testing.assert_allclose(r["effort"], tau, rtol=1e-12, atol=1e-12 * np.max(np.abs(tau)))
+
+
+def test_ros2_like_refuses_bad_arguments(ros2_like):
+    for args in (["--samples"], ["--miss", "x"], ["--bogus", "1"], ["--nan", "-2"]):
+        done = subprocess.run([str(ros2_like), *args], capture_output=True, text=True)
+        assert done.returncode == 2 and "usage" in done.stderr
