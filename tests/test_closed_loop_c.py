@@ -12,6 +12,7 @@ record and RK4 steps, for the UR5, the Panda and the planar arm's closed form.
 
 from __future__ import annotations
 
+import json
 import math
 import re
 import shutil
@@ -192,6 +193,34 @@ def test_plant_statuses_and_bytes(tmp_path):
         hybrid.paper_experiment(KPf=3.0).generate(tmp_path / "a", "same")
     with pytest.raises(hybrid.HybridError, match="cannot name C symbols"):
         exp.generate(tmp_path / "c", "1bad")
+
+
+def test_generate_command_sets_and_refuses(tmp_path, capsys):
+    from hybrid.cli.main import main
+
+    assert main(["generate", "--experiment", "paper", "--set", "contact.friction=0.05", "--set", "KPf=3",
+                 "--set", "controller=khatib", "--set", "F_d={before = 8.0, after = 12.0, at = 0.3}", "--out",
+                 str(tmp_path), "--name", "pk"]) == 0
+    plant = json.loads((tmp_path / "pk_plant.json").read_text())
+    controller = json.loads((tmp_path / "pk_controller.json").read_text())
+    exp = hybrid.paper_experiment(contact=hybrid.Contact(friction=0.05), KPf=3.0, controller="khatib",
+                                  F_d=hybrid.Step(8.0, 12.0, 0.3))
+    assert plant["configuration"]["plant"] == exp.plant_array().tolist()
+    assert plant["configuration"]["x0"] == exp.initial_state().tolist()
+    assert controller["scheme"] == "khatib"
+    assert controller["configuration"]["gains"] == exp.build_controller().step_inputs()["gains"].tolist()
+    capsys.readouterr()
+    for args, message in (
+            (["--experiment", "paper", "--urdf", "x.urdf"], "one or the other"),
+            (["--set", "KPf=3"], "give --experiment too"),
+            ([], "--urdf and --tip"),
+            (["--experiment", "paper", "--set", "KPf"], "KEY=VALUE"),
+            (["--experiment", "paper", "--set", "KPf=1", "--set", "KPf=2"], "twice"),
+            (["--experiment", "paper", "--set", "bogus=1"], "unknown setting"),
+            (["--experiment", "tracing", "--set", "contact.bogus=1"], "unknown setting"),
+            (["--experiment", "paper", "--set", "KPf=4"], "--force")):
+        assert main(["generate", *args, "--out", str(tmp_path), "--name", "pk"]) == 2, args
+        assert message in capsys.readouterr().err, args
 
 
 # ------------------------------------------------------------------ the ros2_control-shaped wrapper

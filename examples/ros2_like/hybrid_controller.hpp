@@ -129,7 +129,9 @@ public:
     }
 
     CallbackReturn on_configure(const Parameters &parameters) {
-        if (!initialised_ || parameters.joints.size() != nq || parameters.sensor.empty()) return CallbackReturn::FAILURE;
+        if (!initialised_ || parameters.joints.size() != nq || parameters.sensor.empty()) {
+            return CallbackReturn::FAILURE;
+        }
         parameters_ = parameters;
         configured_ = true;
         return CallbackReturn::SUCCESS;
