@@ -1,5 +1,5 @@
-"""``python -m hybrid generate``: standalone C for a user's arm, or their whole controller, written into a
-folder of theirs."""
+"""``python -m hybrid generate``: standalone C for a user's arm, their whole controller, or an experiment's
+closed loop (its controller and its plant), written into a folder of theirs."""
 
 from __future__ import annotations
 
