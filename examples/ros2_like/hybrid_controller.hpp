@@ -165,7 +165,8 @@ public:
     }
 
     // claims the configured interfaces (FAILURE when one is missing), starts a new run: the loops'
-    // integrals and the sample clock at zero, the efforts held at 0 until the first sample
+    // integrals and the sample clock at zero; the efforts it holds on an error before its first good
+    // sample are 0 (the generated step's convention); the commands are not touched until the first update
     CallbackReturn on_activate() {
         if (!configured_ || !order(command_interface_configuration(), commands_) ||
             !order(state_interface_configuration(), states_)) {
@@ -173,7 +174,6 @@ public:
         }
         Traits::reset(&c_);
         held_.fill(0.0);
-        for (auto &command : commands_) command.set_value(0.0);
         has_t0_ = false;
         status_ = 0;
         active_ = true;
