@@ -84,8 +84,10 @@ def _index_macros(prefix: str, field: str, names) -> list[str]:
     return [f"#define {m} {i}" for i, m in enumerate(made)]
 
 
-def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict, values: dict) -> Unit:
-    """C source, header and manifest of the standalone controller around ``step``.
+def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict, values: dict,
+                                stem: str | None = None) -> Unit:
+    """C source, header and manifest of the standalone controller around ``step``: its symbols start
+    ``prefix``, its files ``stem`` (default ``prefix``).
 
     ``values`` holds the configuration ``_init`` writes: every parameter input of ``step`` by name
     (a sequence of numbers), ``timing_tolerance`` and ``singular_tol``.
@@ -100,6 +102,7 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     tau, z_next, saturated, filter_next = out["tau"], out["integrals_next"], out["saturated"], out["filter_next"]
     loop_out = [out[k] for k in ("a", "y", "f", "contact_wrench")]
     P = prefix.upper()
+    stem = stem or prefix
     codes = statuses()
 
     # ------------------------------------------------------------------ the struct
@@ -147,11 +150,11 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     status_lines = "\n".join(f"#define {P}_{name} {code} /* {comment_safe(_MEANING[name])} */"
                              for name, code in codes.items())
     defines = [f"#define {P}_NQ {nq} /* joints */", f"#define {P}_M {m} /* task axes */"]
-    header = f"""#ifndef {P}_H
-#define {P}_H
+    header = f"""#ifndef {stem.upper()}_H
+#define {stem.upper()}_H
 /* {prefix}: {comment_safe(what)}.
    Standalone C99: no allocation, no globals, no I/O; reentrant (every state is in the struct).
-   Emitted by hybrid's codegen (generator version {GENERATOR_VERSION}); interface: {prefix}.json.
+   Emitted by hybrid's codegen (generator version {GENERATOR_VERSION}); interface: {stem}.json.
 
    {prefix}_controller c;
    {prefix}_controller_init(&c);                                   (the configuration's values)
@@ -213,9 +216,9 @@ const char *{prefix}_status_name(int status);
     names = ", ".join(f'"{n}"' for n in codes)
     source = f"""/* {prefix}: {comment_safe(what)}.
    Emitted by hybrid's codegen (generator version {GENERATOR_VERSION}, CasADi {ca.__version__}).
-   Compile: cc -std=c99 -O2 -c {prefix}.c (link with -lm). */
+   Compile: cc -std=c99 -O2 -c {stem}.c (link with -lm). */
 #include <math.h>
-#include "{prefix}.h"
+#include "{stem}.h"
 
 {_casadi_cores(prefix, (step,))}
 static int all_finite(const double *v, int n) {{
@@ -295,7 +298,8 @@ const char *{prefix}_status_name(int status) {{
     fields_doc = [{"name": a.name, "size": a.size, **({"names": list(a.names)} if a.names else {}),
                    "unit": a.unit if isinstance(a.unit, str) else list(a.unit)}
                   for a in (*params, *(inputs[n] for n in _CALLER))]
-    data = {"do_not_edit": MANIFEST_STAMP, "unit": prefix, "generator": GENERATOR_VERSION,
+    data = {"do_not_edit": MANIFEST_STAMP, "unit": stem, **({"prefix": prefix} if stem != prefix else {}),
+            "generator": GENERATOR_VERSION,
             "tools": f"CasADi {ca.__version__}", **info, "nq": nq, "m": m,
             "status": {f"{P}_{k}": v for k, v in codes.items()},
             "status_meaning": {f"{P}_{k}": _MEANING[k] for k in codes},
@@ -306,4 +310,4 @@ const char *{prefix}_status_name(int status) {{
             "configuration": {k: ([float(x) for x in v] if not isinstance(v, (int, float)) else float(v))
                               for k, v in sorted(values.items())}}
     data["body_sha256"] = json_body_hash(data)
-    return Unit(prefix, stamp(source), stamp(header), json.dumps(data, indent=1) + "\n")
+    return Unit(stem, stamp(source), stamp(header), json.dumps(data, indent=1) + "\n")

@@ -32,6 +32,7 @@ from hybrid.models.chain import Chain, Joint
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
 from hybrid.models.urdf import JointLimits, LinkInertia
+from hybrid.native.standalone import generate_experiment
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.plants.planar import PlanarPlant
 from hybrid.plants.rigid_body import RigidBodyPlant
@@ -217,6 +218,24 @@ class Experiment(RunSettings):
         if reach is not None and path is not None:
             _check_path(reach, path, path.arc_of(self.start()), self.speed_reference, self.n_samples,
                         self.sample_time, self.duration)
+
+    def generate(self, out, name: str | None = None, force: bool = False) -> list:
+        """Write this run's closed loop as standalone C99 into the folder ``out``: the controller
+        (``<name>_controller.c``, ``.h``, ``.json``; the struct ``<name>_controller``, as
+        :meth:`hybrid.Controller.generate` writes it) and the plant (``<name>_plant.c``, ``.h``, ``.json``).
+        Returns the paths written.
+
+        ``<name>_plant_init(&p)`` gives a struct with this run's plant parameters (the true arm, the
+        sensor, the contact, the surface), its timing (``h``, ``steps_per_sample``, ``sample_time``,
+        ``duration``) and its start state (:meth:`initial_state`); ``<name>_plant_wrench`` reads the
+        sensor (what the controller's step takes), ``<name>_plant_advance(&p, tau, n)`` takes ``n`` RK4
+        steps with the torque held, ``<name>_plant_signals`` gives what the metrics read. A loop of
+        samples around the two is this run (``hybrid.simulate``'s) to rounding error. ``name``: ASCII
+        letters, digits and ``_``, a letter first (default the robot's name). C99, no allocation, no
+        globals, no I/O, reentrant; the same bytes for the same experiment. Files in ``out`` with other
+        content are refused unless ``force``. References the controller takes from its caller (a desired
+        frame) are the caller's to write into the controller's struct each sample."""
+        return generate_experiment(self, out, name, force)
 
     # ------------------------------------------------------------------- files
 
