@@ -234,19 +234,26 @@ def low_pass(x, state, sensor, sample_time):
 
 
 #: the estimator's state: the normal estimate, its rate, 1 once started
-ESTIMATE = ("n_x", "n_y", "n_z", "ndot_x", "ndot_y", "ndot_z", "started")
+ESTIMATE = ("n_x", "n_y", "n_z", "ndot_x", "ndot_y", "ndot_z", "F_x", "F_y", "F_z", "started")
 
 
 def estimated_frame(state, s, F, v, e, T):
     """The task frame from an estimate of the normal (``hybrid.control.estimation``), and the state after
     this sample: ``s`` holds the estimator's tuning (its ``parameters_named``), ``F`` the contact force on
     the robot and ``v`` the tip's velocity (base axes)."""
-    w_force, w_velocity, correct, tau_f, gamma, tau_r, f_min, v_min = (s[i] for i in range(8))
-    started = state[6]
-    n_prev = ca.if_else(started, state[0:3], s[8:11])
-    rate_prev = state[3:6]
-    vn = ca.dot(n_prev, v)
-    v_t = v - vn * n_prev
+    w_force, w_velocity, correct, tau_f, inv_tau_v, rate_gain, f_min, v_min = (s[i] for i in range(8))
+    compliance = s[11]
+    alpha = 1 - ca.exp(-T / tau_f)
+    kappa = rate_gain * alpha / (2 - alpha)  # the alpha-beta tracker's beta / alpha
+    started = state[9]
+    rate = started * state[3:6]
+    # the prediction: the normal turns on at its estimated rate (no lag on a steadily curving surface)
+    m = ca.if_else(started, state[0:3], s[8:11]) + T * rate
+    n_pred = m / ca.norm_2(m)
+    # the contact point's velocity: the tip's, and the rate of the tool's deflection under the force
+    v = v + started * compliance * (F - state[6:9]) / T
+    vn = ca.dot(n_pred, v)
+    v_t = v - vn * n_pred
     speed = ca.norm_2(v_t)
     moving = speed > v_min
     v_hat = v_t / ca.if_else(moving, speed, 1)
@@ -255,14 +262,13 @@ def estimated_frame(state, s, F, v, e, T):
     magnitude = ca.norm_2(F_perp)
     touching = magnitude > f_min
     n_force = F_perp / ca.if_else(touching, magnitude, 1)
-    gain_force = w_force * touching * (1 - ca.exp(-T / tau_f))
-    # the velocity is tangent to the surface: the normal is driven orthogonal to it
-    step_velocity = -w_velocity * moving * gamma * T * vn * v_t
-    m = n_prev + gain_force * (n_force - n_prev) + step_velocity
+    # the corrections: towards the force's direction, and the normal turned orthogonal to the velocity
+    d_velocity = -w_velocity * inv_tau_v * T * vn / ca.if_else(moving, speed * speed, 1) * v_t
+    d = w_force * touching * alpha * (n_force - n_pred) + ca.if_else(moving, d_velocity, ca.SX.zeros(3, 1))
+    m = n_pred + d
     n = m / ca.norm_2(m)
-    beta = 1 - ca.exp(-T / tau_r)
-    rate = ca.if_else(started, rate_prev + beta * ((n - n_prev) / T - rate_prev), ca.SX.zeros(3, 1))
-    return normal_frame(n, rate, e), ca.vertcat(n, rate, 1)
+    rate = rate + kappa / T * (d - ca.dot(d, n) * n)
+    return normal_frame(n, rate, e), ca.vertcat(n, rate - ca.dot(rate, n) * n, F, 1)
 
 
 def normal_frame(n, rate, e) -> TaskFrame:
@@ -386,7 +392,8 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
         Arg("last_torque", last, (*rb.joint_units(chain, "tau"), "1"),
             names=(*(f"tau_{j}" for j in names), "started")),
         Arg("filter", filt, "as the wrench (the sensor filter's state, two per component), then 1 once started"),
-        Arg("estimate", est, "1, 1/s, 1 (the normal's estimate, its rate, 1 once started)", names=ESTIMATE),
+        Arg("estimate", est, "1, 1/s, N, 1 (the normal's estimate, its rate, the last force, 1 once started)",
+            names=ESTIMATE),
         Arg("t", t, "s"),
         Arg("yd_extra", yd_extra, "m/s, rad/s (velocity axes); N, N m (force axes)", names=axis_names),
         Arg("yd_rate", yd_rate, "m/s^2, rad/s^2 (velocity axes; unused on force axes)", names=axis_names),
@@ -434,7 +441,7 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
                                f"{', '.join(axis_names)})", batched=per_state,
                                guards=(*guards, conditioning_guard(cond, CONDITIONING))),)
     # an estimated surface's frame as the estimate stands (the measurement is of one instant)
-    tf_now = normal_frame(ca.if_else(est[6], est[0:3], theta[8:11]), est[3:6], e) if spec.estimated else tf
+    tf_now = normal_frame(ca.if_else(est[9], est[0:3], theta[8:11]), est[3:6], e) if spec.estimated else tf
     R6 = ca.diagcat(tf_now.R, tf_now.R)
     # the sensor's stages before the filter (which keeps a state): the measurement is of one instant
     compensated, at_tip = (sensor_wrench(arm.frames.tip_R, reading, sensor, params[-3:]) if wrench_sensor

@@ -290,7 +290,7 @@ class Controller:
         # the torque last given to the arm and 1 once there is one (the rate limit's start), the last sample time
         self._last, self._clock = np.zeros(robot.n + 1), None
         self._filter = np.zeros(13)  # the sensor filter's state
-        self._estimate = np.zeros(7)  # an estimated surface's state: the normal, its rate, started
+        self._estimate = np.zeros(10)  # an estimated surface's state: the normal, its rate, the last force, started
         self._fc = np.zeros(6)
         # a force without moments: the planar arm's in its plane (2), any other arm's in space (3); a sensor's
         # reading is always six numbers
@@ -589,7 +589,7 @@ class Controller:
         None for a surface the controller is told."""
         if not self._estimated:
             return None
-        return self._estimate[:3].copy() if self._estimate[6] else np.array(self._spatial.initial_normal)
+        return self._estimate[:3].copy() if self._estimate[9] else np.array(self._spatial.initial_normal)
 
     def _padded(self, Fc) -> np.ndarray:
         """``Fc`` as the step's 6-vector (into a buffer for a force without moments)."""

@@ -6,20 +6,24 @@ task frame from it (the rows ``t1 = e x n / |e x n|``, ``t2 = n x t1``, ``n``), 
 from the estimate's rate, so the law's curvature term still acts. Two estimators, and their sum:
 
 - **force** (after Yoshikawa & Sudou, 1993): the contact force on the robot is the normal force along
-  ``n`` plus friction along the sliding direction; without its component along the tangential
-  velocity ``v_t`` (``correct_friction``) it points along ``n``. The estimate moves towards that
-  direction with the time constant ``force_time_constant`` [s] while the force exceeds
-  ``contact_threshold`` [N] (it holds through a loss of contact);
-- **velocity** (after Karayiannidis et al., 2014): the tip's velocity is tangent to the surface, so
-  the estimate is driven orthogonal to it, ``n' = -gamma (n . v) (v - (n . v) n)``, with ``gamma = 1 /
-  (velocity_time_constant nominal_speed^2)`` [s/m^2]: at ``nominal_speed`` [m/s] the normal's
-  component along the motion decays with ``velocity_time_constant`` [s]. It sees only the motion's
-  direction (the component along ``t2`` is left to the force);
-- **fusion**: both increments each sample.
+  ``n`` plus friction along the sliding direction; without its component along the sliding velocity
+  (the friction correction) it points along ``n``. The estimate moves towards that direction with the
+  time constant ``force_time_constant`` [s] while the force exceeds ``contact_threshold`` [N] (it
+  holds through a loss of contact). With the friction removed along the estimated tangent, this
+  estimate cannot see a tilt along the motion: alone it drifts there;
+- **velocity** (after Karayiannidis et al., 2014): the contact point's velocity is tangent to the
+  surface, so the estimate is turned orthogonal to it, ``n' = -(n . u) (u - (n . u) n) / tau_v`` with
+  ``u = v / |v_t|``: the normal's tilt along the motion decays with ``velocity_time_constant`` [s] at
+  any speed. It sees only the motion's direction (the tilt about it is the force's);
+- **fusion** (the default): both corrections each sample; each sees what the other cannot.
 
-The rate ``n'`` is the estimate's difference quotient through a first-order low-pass of time
-constant ``rate_time_constant`` [s]. Below ``min_speed`` [m/s] of tangential speed the velocity
-estimator and the friction correction hold.
+The contact point's velocity is the tip's plus the rate of the tool's deflection, ``compliance``
+[m/N] times the force's rate (0 for a rigid tool: a compliant one's deflection under a changing force
+would look like a slope). The estimate is a tracker (alpha-beta): it predicts the normal on at its
+estimated rate ``n'`` before each correction, and the rate takes ``rate_gain`` times the
+critically damped share of the correction, so a steadily curving surface is followed without lag,
+and the task frame's rate (the law's curvature term) comes from ``n'``. Below ``min_speed`` [m/s] of
+sliding speed the velocity correction and the friction correction hold.
 
 :func:`estimate_step` is the NumPy statement of one sample (the generated step's reference).
 """
@@ -47,23 +51,27 @@ class EstimatedSurface(Surface):
     method : ``"fusion"`` (default), ``"force"``, ``"velocity"`` or ``"force_uncorrected"`` (the force's
         direction as it is, friction and all: biased by the friction angle).
     initial_normal : the estimate's start (base axes; made unit), e.g. the normal a drawing gives.
-    force_time_constant, velocity_time_constant, rate_time_constant : [s], > 0.
-    nominal_speed : [m/s], > 0: the speed at which ``velocity_time_constant`` holds.
+    force_time_constant, velocity_time_constant : [s], > 0 (the force's at least one sample time).
+    rate_gain : >= 0: 1 the tracker's critically damped rate gain, 0 no rate (a lag on curved parts).
+        Default: 0.5 for ``"fusion"``, 0 for one estimator alone (whose correction sees one direction only:
+        a rate fed by it would turn the estimate about the directions it cannot see).
     contact_threshold : [N], >= 0: the force estimate holds below it.
     min_speed : [m/s], >= 0: the velocity estimate and the friction correction hold below it.
+    compliance : [m/N], >= 0: the tool's (and sensor's) compliance between the tip and the contact.
     """
 
     method: str = "fusion"
     initial_normal: tuple[float, float, float] = (0.0, 0.0, 1.0)
     force_time_constant: float = 0.03
     velocity_time_constant: float = 0.1
-    nominal_speed: float = 0.15
-    rate_time_constant: float = 0.05
+    rate_gain: float | None = None
     contact_threshold: float = 1.0
     min_speed: float = 0.01
+    compliance: float = 0.0
     kind = "estimated"
-    parameters_named = ("w_force", "w_velocity", "correct_friction", "force_time_constant", "gamma",
-                        "rate_time_constant", "contact_threshold", "min_speed", "n0_x", "n0_y", "n0_z")
+    parameters_named = ("w_force", "w_velocity", "correct_friction", "force_time_constant",
+                        "inverse_velocity_time_constant", "rate_gain", "contact_threshold", "min_speed", "n0_x", "n0_y",
+                        "n0_z", "compliance")
 
     def __post_init__(self):
         if not isinstance(self.method, str) or self.method not in METHODS:
@@ -76,9 +84,11 @@ class EstimatedSurface(Surface):
             raise HybridError(f"EstimatedSurface initial_normal = {self.initial_normal!r:.60}; give a nonzero "
                               "direction (3 finite numbers, base axes) from the surface towards the robot")
         object.__setattr__(self, "initial_normal", tuple(float(v) for v in n / np.linalg.norm(n)))
+        if self.rate_gain is None:
+            object.__setattr__(self, "rate_gain", 0.5 if self.method == "fusion" else 0.0)
         for name, positive in (("force_time_constant", True), ("velocity_time_constant", True),
-                               ("nominal_speed", True), ("rate_time_constant", True),
-                               ("contact_threshold", False), ("min_speed", False)):
+                               ("rate_gain", False),
+                               ("contact_threshold", False), ("min_speed", False), ("compliance", False)):
             value = getattr(self, name)
             ok = not isinstance(value, bool) and isinstance(value, (int, float, np.integer, np.floating)) \
                 and np.isfinite(value) and (value > 0 if positive else value >= 0)
@@ -93,9 +103,9 @@ class EstimatedSurface(Surface):
     def as_array(self) -> np.ndarray:
         """The tuning as the generated step reads it (:data:`parameters_named`)."""
         w_force, w_velocity, correct = METHODS[self.method]
-        gamma = 1.0 / (self.velocity_time_constant * self.nominal_speed ** 2)
-        return np.array([w_force, w_velocity, correct, self.force_time_constant, gamma, self.rate_time_constant,
-                         self.contact_threshold, self.min_speed, *self.initial_normal])
+        return np.array([w_force, w_velocity, correct, self.force_time_constant, 1.0 / self.velocity_time_constant,
+                         self.rate_gain,
+                         self.contact_threshold, self.min_speed, *self.initial_normal, self.compliance])
 
     def normal_at(self, p):
         raise HybridError("an EstimatedSurface has no normal of its own: the controller estimates it; give the "
@@ -103,22 +113,30 @@ class EstimatedSurface(Surface):
 
     def check_sampling(self, sample_time: float) -> None:
         """Refuse time constants shorter than the sample time (the discrete estimate would overshoot)."""
-        for name in ("force_time_constant", "rate_time_constant"):
+        for name in ("force_time_constant",):
             if getattr(self, name) < sample_time:
                 raise HybridError(f"EstimatedSurface {name} = {getattr(self, name):g} s is shorter than the sample "
                                   f"time {sample_time:g} s; give at least one sample time")
 
 
 def estimate_step(state: np.ndarray, tuning: np.ndarray, F, v, T: float) -> np.ndarray:
-    """One sample of the estimator (module docstring) in NumPy: the state ``(n, n', started)`` after it,
+    """One sample of the estimator (module docstring) in NumPy: the state ``(n, n', F, started)`` after it,
     from the contact force ``F`` on the robot and the tip velocity ``v`` [base axes], ``tuning`` an
     :class:`EstimatedSurface`'s ``as_array()`` and ``T`` the sample time [s]."""
-    w_force, w_velocity, correct, tau_f, gamma, tau_r, f_min, v_min = tuning[:8]
-    started = state[6] != 0
-    n_prev = state[:3] if started else tuning[8:11]
+    w_force, w_velocity, correct, tau_f, inv_tau_v, rate_gain, f_min, v_min = tuning[:8]
+    compliance = tuning[11]
+    alpha = 1 - np.exp(-T / tau_f)
+    kappa = rate_gain * alpha / (2 - alpha)
+    started = state[9] != 0
     F, v = np.asarray(F, float), np.asarray(v, float)
-    vn = n_prev @ v
-    v_t = v - vn * n_prev
+    rate = state[3:6] if started else np.zeros(3)
+    m = (state[:3] if started else tuning[8:11]) + T * rate
+    n_pred = m / np.linalg.norm(m)
+    # the contact point's velocity: the tip's and the tool's deflection's rate
+    if started:
+        v = v + compliance * (F - state[6:9]) / T
+    vn = n_pred @ v
+    v_t = v - vn * n_pred
     speed = np.linalg.norm(v_t)
     moving = speed > v_min
     v_hat = v_t / speed if moving else v_t
@@ -126,8 +144,10 @@ def estimate_step(state: np.ndarray, tuning: np.ndarray, F, v, T: float) -> np.n
     magnitude = np.linalg.norm(F_perp)
     touching = magnitude > f_min
     n_force = F_perp / magnitude if touching else F_perp
-    m = n_prev + w_force * touching * (1 - np.exp(-T / tau_f)) * (n_force - n_prev) \
-        - w_velocity * moving * gamma * T * vn * v_t
+    d = w_force * touching * alpha * (n_force - n_pred)
+    if moving:
+        d = d - w_velocity * inv_tau_v * T * vn / (speed * speed) * v_t
+    m = n_pred + d
     n = m / np.linalg.norm(m)
-    rate = state[3:6] + (1 - np.exp(-T / tau_r)) * ((n - n_prev) / T - state[3:6]) if started else np.zeros(3)
-    return np.concatenate([n, rate, [1.0]])
+    rate = rate + kappa / T * (d - (d @ n) * n)
+    return np.concatenate([n, rate - (rate @ n) * n, F, [1.0]])

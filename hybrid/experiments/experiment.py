@@ -54,6 +54,10 @@ class Experiment(RunSettings):
         viscous_compensation)``.
     surface : Surface
         What the sensor tip touches (2-D for the planar arm, 3-D otherwise).
+    controller_surface : Surface, optional
+        The surface the controller is told: the true ``surface`` (the default), a wrong one (a sphere of
+        another radius, a plane for a curved part), or a :class:`~hybrid.EstimatedSurface` it estimates
+        online. The plant always has the true one.
     path : CirclePath or LinePath, optional
         Where the desired point runs (for ``frame="desired"`` and the workspace check); default the
         surface's own path (:meth:`Surface.path`), when it has one.
@@ -72,6 +76,7 @@ class Experiment(RunSettings):
 
     robot: Robot | None = None
     surface: Surface | None = None
+    controller_surface: Surface | None = None
     path: Path | None = None
     start_point: tuple[float, ...] | None = None
     elbow: int = 1
@@ -106,6 +111,13 @@ class Experiment(RunSettings):
         if not isinstance(self.surface, Surface):
             raise HybridError(f"unknown surface {self.surface!r:.60}; give a hybrid Circle, Plane, Sphere, Cylinder "
                               "or ImplicitSurface")
+        if self.controller_surface is not None:
+            if not isinstance(self.controller_surface, Surface):
+                raise HybridError(f"controller_surface = {self.controller_surface!r:.60}; give a hybrid surface (a "
+                                  "wrong one, or hybrid.EstimatedSurface()) or None (the true surface)")
+            if self.controller_surface.spec().estimated and self.frame == "desired":
+                raise HybridError("frame='desired' puts the loops on the desired point of a surface the controller "
+                                  "knows; with an EstimatedSurface give frame='actual'")
         if self.robot.closed_form is not None and self.surface.cross_section() is None:
             raise HybridError(f"the planar arm needs a planar surface (a hybrid.Circle or a 2-D hybrid.Plane: a "
                               f"cylinder or a plane along base z), got {self.surface!r:.60}")
@@ -163,7 +175,8 @@ class Experiment(RunSettings):
 
     def build_controller(self) -> Controller:
         """Exactly the controller this run uses: its model of the arm, loops, references, options."""
-        return Controller(self.controller_robot(), self.surface, self.controller, axes=self.axes,
+        surface = self.surface if self.controller_surface is None else self.controller_surface
+        return Controller(self.controller_robot(), surface, self.controller, axes=self.axes,
                           reference=self.reference, posture=self.posture, **self.controller_settings())
 
     @property
@@ -246,6 +259,7 @@ class Experiment(RunSettings):
             d[name] = asdict(d[name])
         d["robot"] = robot_to_dict(self.robot)
         d["surface"] = surface_to_dict(self.surface)
+        d["controller_surface"] = None if self.controller_surface is None else surface_to_dict(self.controller_surface)
         d["path"] = None if self.path is None else {"kind": type(self.path).__name__, **asdict(self.path)}
         d["start_point"] = None if self.start_point is None else list(self.start_point)
         d["reference"] = list(self.reference)
@@ -279,6 +293,8 @@ class Experiment(RunSettings):
         for k, typ in parts.items():
             d[k] = typ(**d[k])
         d["robot"], d["surface"] = robot_from_dict(d["robot"]), surface_from_dict(d["surface"])
+        if d.get("controller_surface") is not None:
+            d["controller_surface"] = surface_from_dict(d["controller_surface"])
         if d["path"] is not None:
             path = dict(d["path"])
             d["path"] = {"CirclePath": CirclePath, "LinePath": LinePath}[path.pop("kind")](**path)

@@ -95,6 +95,8 @@ def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
     states = np.empty((total + 1, len(x)))
     taus = np.full((total + 1, nq), np.nan)  # NaN marks "no torque computed" in a partial run
     states[0] = x
+    # an estimated surface's normal, at each sample (after it)
+    normals = np.full((n_samples, 3), np.nan) if controller.normal is not None else None
     for k in range(n_samples):
         t = k * exp.sample_time
         q, qdot = x[0:nq].copy(), x[nq:2 * nq].copy()
@@ -110,6 +112,8 @@ def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
                 f"at t = {t:.4f} s: {first}\n  q = {np.round(q, 5).tolist()} rad, qdot = "
                 f"{np.round(qdot, 4).tolist()} rad/s" + (f"\n{rest}" if rest else ""),
                 t, _result(exp, plant, states[:1 + k * m], taus[:1 + k * m], False)) from exc
+        if normals is not None:
+            normals[k] = controller.normal
         if k == 0:
             taus[0] = tau  # the first sample's torque acts from t = 0
         rows = slice(1 + k * m, 1 + (k + 1) * m)
@@ -118,7 +122,7 @@ def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
         if done < m:
             last = 1 + k * m + done
             raise _divergence(_result(exp, plant, states[:last], taus[:last], False), plant, t, q, qdot, tau, x)
-    return _result(exp, plant, states, taus, True)
+    return _result(exp, plant, states, taus, True, normals)
 
 
 def _divergence(partial: SimulationResult, plant, t: float, q, qdot, tau, x) -> SimulationError:
@@ -151,11 +155,13 @@ def _closest_singularity(res: SimulationResult, plant, near: float = 0.1) -> str
             f"t = {res.t[rows[i]]:.4f} s): raise singular_tol to stop there, or keep the path away from full extension")
 
 
-def _result(exp, plant, states: np.ndarray, taus: np.ndarray, metrics: bool | dict) -> SimulationResult:
-    """The result of a run; ``metrics``: computed from the series (True), none (False), or as given."""
+def _result(exp, plant, states: np.ndarray, taus: np.ndarray, metrics: bool | dict,
+            normals: np.ndarray | None = None) -> SimulationResult:
+    """The result of a run; ``metrics``: computed from the series (True), none (False), or as given;
+    ``normals``: an estimated surface's normal at each sample."""
     t = np.arange(len(states)) * exp.step
     res = SimulationResult(exp, t, states, taus, plant.outputs(states), exp.force_reference.sampled(t),
-                           exp.speed_reference.sampled(t), record=plant.record)
+                           exp.speed_reference.sampled(t), record=plant.record, normal_estimate=normals)
     if metrics is True:
         res.metrics = run_metrics(res)
     elif metrics:
