@@ -96,7 +96,8 @@ def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
     taus = np.full((total + 1, nq), np.nan)  # NaN marks "no torque computed" in a partial run
     states[0] = x
     # an estimated surface's normal, at each sample (after it)
-    normals = np.full((n_samples, 3), np.nan) if controller.normal is not None else None
+    estimates = getattr(controller, "normal", None) is not None  # any callable controller runs here
+    normals = np.full((n_samples, 3), np.nan) if estimates else None
     for k in range(n_samples):
         t = k * exp.sample_time
         q, qdot = x[0:nq].copy(), x[nq:2 * nq].copy()
