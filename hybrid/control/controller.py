@@ -28,6 +28,8 @@ from hybrid.validate import _finite, check_singular_tol
 
 #: "no limit" for the options that are off (the generated step takes finite numbers only)
 _OFF = 1e300
+#: the compiled step's inputs a controller fixes, in the step's order (after the per-sample ones)
+PARAMETERS = ("steps", "gains", "selection", "robot", "surface", "e", "options", "posture", "limits", "sensor")
 #: the sample-timing statuses, by the interval since the last sample (see Controller's timing_tolerance)
 TIMING = ("SAMPLE_LATE", "SAMPLE_EARLY", "SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
 
@@ -267,12 +269,9 @@ class Controller:
             raise HybridError(f"wrench_sensor = {wrench_sensor!r:.60}; give a hybrid.WrenchSensor(...) or None")
         self.wrench_sensor = wrench_sensor
         self._references = self._axis_references(force_reference, velocity_reference)
-        unit = units.controller_unit(robot.chain, robot.name, self._spatial.spec(), self.axes,
-                                     frame == "desired", position_error, wrench_sensor is not None)
         # a posture has its own generated step (the law plus tau0), so the law without one stays the very code
         # it was, bit for bit; both are in the same unit, and the posture's numbers are run-time inputs of both
         self._step_name = self.scheme.step if self.posture is None else "controller_posture_step"
-        self._step, self._measure = unit.function(self._step_name), unit.function("task_measurement")
         m = len(self.axes)
         loss = contact_loss or ContactLoss(-_OFF, 0.0)
         options = np.array([float(curvature), self.sample_time, float(self.scheme.feeds_desired_force),
@@ -300,14 +299,26 @@ class Controller:
         self._rates = [(i, ref.rate) for i, ref in enumerate(self._references) if ref.rate is not None]
         # with references all steps and no path, the per-sample inputs end at t: the rest is bound
         self._short = not (self._varying or self._rates or path)
-        self._bind()
+        # the compiled step is built at the first sample (a run of the compiled closed loop never needs it)
+        self._binding = None
+        self._z, self._sampled = np.zeros(2 * m), False
+
+    def _native(self) -> None:
+        """The compiled step and measurement, bound to this controller's numbers (built once, cached)."""
+        unit = units.controller_unit(self.robot.chain, self.robot.name, self._spatial.spec(), self.axes,
+                                     self.frame == "desired", self.position_error, self.wrench_sensor is not None)
+        self._step, self._measure = unit.function(self._step_name), unit.function("task_measurement")
+        names = [name for name, _ in self._step.inputs]
+        if tuple(names[len(names) - len(PARAMETERS):]) != PARAMETERS:
+            raise RuntimeError(f"the compiled step's inputs end {names[-len(PARAMETERS):]}, not {PARAMETERS}: "
+                               "the generator and hybrid/control/controller.py disagree")
         self._into = self._step.unit.fast().call_into
         # outputs written in place (the manifest's order: tau, the integrals' next buffer, a, y, f, saturated, the
-        # filter's next state, the contact wrench)
+        # filter's next state, the estimate's next state, the contact wrench)
         self._out = [np.empty(size) for _, size, _ in self._step.outputs]
         names = [name for name, _, _ in self._step.outputs]
         self._filter_out = names.index("filter_next"), names.index("estimate_next")
-        self._z, self._sampled = np.zeros(2 * m), False
+        self._bind()
 
     # ----------------------------------------------------------------- settings
 
@@ -318,7 +329,10 @@ class Controller:
         return exp.build_controller()
 
     def _bind(self) -> None:
-        """Bind the step's fixed inputs (all but the per-sample ones) to this controller's numbers."""
+        """Bind the step's fixed inputs (all but the per-sample ones) to this controller's numbers (once the
+        step is built)."""
+        if not hasattr(self, "_step"):
+            return
         held = (self._extra, self._rate, self._target) if self._short else ()
         _, self._binding = self._step.fast_bind(8 if self._short else 11, *held, *self._params,
                                                 singular_tol=self.singular_tol)
@@ -345,8 +359,7 @@ class Controller:
     def step_inputs(self) -> dict[str, np.ndarray]:
         """The compiled step's inputs this controller fixes (gains, references' steps, model,
         options), by the manifest's names."""
-        names = [name for name, _ in self._step.inputs]
-        return dict(zip(names[len(names) - len(self._params):], self._params))
+        return dict(zip(PARAMETERS, self._params))
 
     def step_variant(self) -> dict:
         """What the compiled step is made of: the model's chain and name, the surface's spec, the task
@@ -530,6 +543,8 @@ class Controller:
             raise HybridError(f"t = {t!r}; give a finite sample time")
         t = self._t[0]
         timing = self._timing(t)
+        if self._binding is None:
+            self._native()
         out, z = self._out, self._z
         if self._short:
             done = self._into(self._binding, out, q, qdot, Fc, z, self._last, self._filter, self._estimate, self._t)
@@ -635,6 +650,8 @@ class Controller:
 
     def measure(self, q, qdot, Fc) -> Measurement:
         """What the controller measures at ``q, qdot, Fc`` (see :class:`Measurement`)."""
+        if self._binding is None:
+            self._native()
         reading = _wrench(Fc, self._force_size)
         out = self._measure(q, qdot, reading, self._params[4], self._params[5], self._params[3], self._params[-1],
                             self._estimate)

@@ -76,7 +76,7 @@ def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> Simulat
 def _compiled_or_run(exp, plant, x0: np.ndarray, compiled: bool = True) -> SimulationResult:
     """The whole run in compiled C when the loop takes it (as a sweep runs it), else, and for the
     account of a run that stopped there, the Python runner (the record's memory checked already)."""
-    prepared = closed_loop.prepare(exp, x0) if compiled else None
+    prepared = closed_loop.prepare(exp, x0, lanes=1) if compiled else None
     if prepared is not None:
         done = closed_loop.run([prepared], record=True)[0]
         if done.status == 0:
