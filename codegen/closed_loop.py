@@ -41,7 +41,7 @@ METRICS = ("force_overshoot_N", "force_overshoot_percent", "force_settling_time_
 #: the first touch's settling band, a fraction of the force reference at the touch (``hybrid.metrics``')
 TOUCH_BAND = 0.05
 #: controller-step inputs the loop drives itself (the rest are the run's parameters)
-_DRIVEN = ("q", "qd", "Fc", "integrals", "last_torque", "filter", "t", "yd_extra", "yd_rate", "target")
+_DRIVEN = ("q", "qd", "Fc", "integrals", "last_torque", "filter", "estimate", "t", "yd_extra", "yd_rate", "target")
 
 
 @dataclass(frozen=True)
@@ -310,8 +310,8 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         loop_signals_lanes(x, pre_sig, s);
         for (j = 0; j < {nf}; ++j) fc[j] = s[j];
         tv[0] = hl_splat(k * sample_time);
-        /* the plant's sensor gives the wrench on the robot itself: no filter state */
-        {step.name}_lanes(x, x + {nq}, fc, z, last, zero, tv, zero, zero, zero, pre_step, {out_args});
+        /* the plant's sensor gives the wrench on the robot itself and the surface is told: no filter, no estimate */
+        {step.name}_lanes(x, x + {nq}, fc, z, last, zero, zero, tv, zero, zero, zero, pre_step, {out_args});
 {guards}        flag(&run, {finite}, HYBRID_NONFINITE, k);
         for (j = 0; j < {2 * m}; ++j) z[j] = {z_next}[j];
         /* the torque the rate limit starts from at the next sample */

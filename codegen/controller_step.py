@@ -64,7 +64,8 @@ import casadi as ca
 from . import factor
 from . import rigid_body as rb
 from .kernel import Arg, Guard, Kernel, conditioning_guard
-from .surfaces import SurfaceSpec, task_frame
+from .rigid_body import cross
+from .surfaces import SurfaceSpec, TaskFrame, task_frame
 from .task_law import (
     AXIS_NAMES,
     CONDITIONING,
@@ -232,6 +233,59 @@ def low_pass(x, state, sensor, sample_time):
     return ca.vertcat(*ys), ca.vertcat(*nxt, 1)
 
 
+#: the estimator's state: the normal estimate, its rate, 1 once started
+ESTIMATE = ("n_x", "n_y", "n_z", "ndot_x", "ndot_y", "ndot_z", "F_x", "F_y", "F_z", "started")
+
+
+def estimated_frame(state, s, F, v, e, T):
+    """The task frame from an estimate of the normal (``hybrid.control.estimation``), and the state after
+    this sample: ``s`` holds the estimator's tuning (its ``parameters_named``), ``F`` the contact force on
+    the robot and ``v`` the tip's velocity (base axes)."""
+    w_force, w_velocity, correct, tau_f, inv_tau_v, rate_gain, f_min, v_min = (s[i] for i in range(8))
+    compliance = s[11]
+    alpha = 1 - ca.exp(-T / tau_f)
+    kappa = rate_gain * alpha / (2 - alpha)  # the alpha-beta tracker's beta / alpha
+    started = state[9]
+    rate = started * state[3:6]
+    # the prediction: the normal turns on at its estimated rate (no lag on a steadily curving surface)
+    m = ca.if_else(started, state[0:3], s[8:11]) + T * rate
+    n_pred = m / ca.norm_2(m)
+    # the contact point's velocity: the tip's, and the rate of the tool's deflection under the force
+    v = v + started * compliance * (F - state[6:9]) / T
+    vn = ca.dot(n_pred, v)
+    v_t = v - vn * n_pred
+    speed = ca.norm_2(v_t)
+    moving = speed > v_min
+    v_hat = v_t / ca.if_else(moving, speed, 1)
+    # the friction on the tool is along the sliding direction: without it the force is along the normal
+    F_perp = F - correct * moving * ca.dot(F, v_hat) * v_hat
+    magnitude = ca.norm_2(F_perp)
+    touching = magnitude > f_min
+    n_force = F_perp / ca.if_else(touching, magnitude, 1)
+    # the corrections: towards the force's direction, and the normal turned orthogonal to the velocity
+    d_velocity = -w_velocity * inv_tau_v * T * vn / ca.if_else(moving, speed * speed, 1) * v_t
+    d = w_force * touching * alpha * (n_force - n_pred) + ca.if_else(moving, d_velocity, ca.SX.zeros(3, 1))
+    m = n_pred + d
+    n = m / ca.norm_2(m)
+    rate = rate + kappa / T * (d - ca.dot(d, n) * n)
+    return normal_frame(n, rate, e), ca.vertcat(n, rate - ca.dot(rate, n) * n, F, 1)
+
+
+def normal_frame(n, rate, e) -> TaskFrame:
+    """The task frame of the unit normal ``n`` and its rate (docs/conventions.md §9's rows from ``n``
+    and ``e``, differentiated along ``n'``, taken tangent)."""
+    rate_t = rate - ca.dot(rate, n) * n
+    e_unit = e / ca.norm_2(e)
+    c = cross(e_unit, n)
+    sine = ca.norm_2(c)
+    t1 = c / sine
+    t2 = cross(n, t1)
+    u = cross(e_unit, rate_t) / sine
+    t1d = u - ca.dot(t1, u) * t1
+    t2d = cross(rate_t, t1) + cross(n, t1d)
+    return TaskFrame(ca.vertcat(t1.T, t2.T, n.T), ca.vertcat(t1d.T, t2d.T, rate_t.T), sine, n)
+
+
 def _wrapped(angle):
     """``angle`` in [-pi, pi) (cheaper than atan2 of its sine and cosine)."""
     return angle - 2 * ca.pi * ca.floor((angle + ca.pi) / (2 * ca.pi))
@@ -266,6 +320,7 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
     q, qd = ca.SX.sym("q", n), ca.SX.sym("qd", n)
     Fc, z, last = ca.SX.sym("Fc", 6), ca.SX.sym("integrals", 2 * m), ca.SX.sym("last_torque", n + 1)
     filt, sensor = ca.SX.sym("filter", 13), ca.SX.sym("sensor", len(SENSOR))
+    est = ca.SX.sym("estimate", len(ESTIMATE))
     t, steps = ca.SX.sym("t"), ca.SX.sym("steps", 3 * m)
     yd_extra, yd_rate, target = ca.SX.sym("yd_extra", m), ca.SX.sym("yd_rate", m), ca.SX.sym("target", 9)
     gains, sigma = ca.SX.sym("gains", len(LOOP_GAINS) * m), ca.SX.sym("selection", m)
@@ -284,7 +339,12 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
         Fc, filt_next = low_pass(raw_Fc, filt, sensor, o["sample_time"])
     else:
         filt_next = ca.SX.zeros(13, 1)
-    tf = task_frame(spec, p, v[:3], theta, e)
+    if spec.estimated:  # the frame from the estimate of the normal (the surface's parameters are the tuning)
+        if desired_frame or position_error:
+            raise ValueError("an estimated surface has no desired point's frame or position error")
+        tf, est_next = estimated_frame(est, theta, Fc[:3], v[:3], e, o["sample_time"])
+    else:
+        tf, est_next = task_frame(spec, p, v[:3], theta, e), ca.SX.zeros(len(ESTIMATE), 1)
     Rm, Rdm = task_rows(tf, axes)
     # the loop frame: at the tip, or at the desired point target = (p_d, p_d', phi_d)
     tf_f = task_frame(spec, target[:3], target[3:6], theta, e) if desired_frame else tf
@@ -332,6 +392,8 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
         Arg("last_torque", last, (*rb.joint_units(chain, "tau"), "1"),
             names=(*(f"tau_{j}" for j in names), "started")),
         Arg("filter", filt, "as the wrench (the sensor filter's state, two per component), then 1 once started"),
+        Arg("estimate", est, "1, 1/s, N, 1 (the normal's estimate, its rate, the last force, 1 once started)",
+            names=ESTIMATE),
         Arg("t", t, "s"),
         Arg("yd_extra", yd_extra, "m/s, rad/s (velocity axes); N, N m (force axes)", names=axis_names),
         Arg("yd_rate", yd_rate, "m/s^2, rad/s^2 (velocity axes; unused on force axes)", names=axis_names),
@@ -357,11 +419,13 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
                 Arg("y", y, velocity_units, names=axis_names), Arg("f", f, force_units, names=axis_names),
                 Arg("saturated", saturated, "1 (1: a limit bounded the torque; the integrals were kept)"),
                 Arg("filter_next", filt_next, "as filter"),
+                Arg("estimate_next", est_next, "as estimate", names=ESTIMATE),
                 Arg("contact_wrench", Fc, ("N",) * 3 + ("N m",) * 3, names=wrench_names))
 
     what = (f"one control sample on a {spec.kind}: task velocity y = R_f v and wrench f = R_f F_c in the loop "
             "frame, the loops' task acceleration a and integrals after the sample, and the torque tau of ")
-    per_state = ("q", "qd", "Fc", "integrals", "last_torque", "filter", "t", "yd_extra", "yd_rate", "target")
+    per_state = ("q", "qd", "Fc", "integrals", "last_torque", "filter", "estimate", "t", "yd_extra", "yd_rate",
+                 "target")
     step = Kernel("controller_step", inputs, outputs(tau),
                   what + f"the decoupling law (task axes {', '.join(axis_names)})", batched=per_state,
                   guards=(*guards, conditioning_guard(cond, CONDITIONING)))
@@ -376,12 +440,15 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
                                what + f"the decoupling law with a posture task in its null space (task axes "
                                f"{', '.join(axis_names)})", batched=per_state,
                                guards=(*guards, conditioning_guard(cond, CONDITIONING))),)
-    R6 = ca.diagcat(tf.R, tf.R)
+    # an estimated surface's frame as the estimate stands (the measurement is of one instant)
+    tf_now = normal_frame(ca.if_else(est[9], est[0:3], theta[8:11]), est[3:6], e) if spec.estimated else tf
+    R6 = ca.diagcat(tf_now.R, tf_now.R)
     # the sensor's stages before the filter (which keeps a state): the measurement is of one instant
     compensated, at_tip = (sensor_wrench(arm.frames.tip_R, reading, sensor, params[-3:]) if wrench_sensor
                            else (reading, reading))
     measurement = Kernel(
-        "task_measurement", (a_q, a_qd, a_fc, a_s, a_e, a_robot, a_sensor),
+        "task_measurement", (a_q, a_qd, a_fc, a_s, a_e, a_robot, a_sensor,
+                             Arg("estimate", est, "as the step's estimate", names=ESTIMATE)),
         (Arg("p", p, "m"), Arg("v", v, "m/s, rad/s", names=("vx", "vy", "vz", "wx", "wy", "wz")),
          Arg("task_velocity", R6 @ v, "m/s, rad/s", names=AXIS_NAMES),
          Arg("task_wrench", R6 @ at_tip, "N, N m", names=AXIS_NAMES),
@@ -390,7 +457,7 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
         "what the controller measures: tip position p and twist v = (p', w) in base axes; the sensor's "
         "reading less its bias and the tool's weight (sensor axes) and the wrench on the robot at the tip F_c "
         "(base axes, before the filter); on all six task axes at the tip the task velocity R v and the task "
-        "wrench R F_c", batched=("q", "qd", "Fc"), guards=(frame_guard(tf.sine),))
+        "wrench R F_c", batched=("q", "qd", "Fc"), guards=(frame_guard(tf_now.sine),))
     return (step, raibert_craig, measurement, *posture_step)
 
 

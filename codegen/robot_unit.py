@@ -106,6 +106,12 @@ def build_frame_unit(spec, prefix: str) -> Unit:
                     tool=f"CasADi {ca.__version__}")
 
 
+def _phi_text(spec) -> str:
+    """The surface's ``phi`` as text for a manifest; an estimated surface has none (the controller estimates
+    its normal)."""
+    return "estimated online" if spec.estimated else str(phi_of(spec))
+
+
 def _task_unit(kernels, what: str, chain: rb.Chain, spec, axes, prefix: str, info: dict,
                variant: dict | None = None) -> Unit:
     extra = {"variant": variant} if variant else {}
@@ -113,5 +119,5 @@ def _task_unit(kernels, what: str, chain: rb.Chain, spec, axes, prefix: str, inf
                     f"{what} of the {chain.n}-joint arm '{info.get('robot', prefix)}' on a {spec.kind}, "
                     f"task axes {', '.join(AXIS_NAMES[i] for i in axes)}",
                     info={"robot": info, "surface": {"kind": spec.kind, "parameters": list(spec.parameters),
-                                                      "phi": str(phi_of(spec))}, "axes": list(axes), **extra},
+                                                      "phi": _phi_text(spec)}, "axes": list(axes), **extra},
                     tool=f"CasADi {ca.__version__}", defines={"NQ": chain.n, "M": len(axes)})

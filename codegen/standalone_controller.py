@@ -36,7 +36,7 @@ from .kernel import Kernel
 CALL_STATUS = ("INPUT_NONFINITE", "SAMPLE_LATE", "SAMPLE_EARLY", "SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
 #: the step's inputs the call fills from its own arguments and the struct's state
 _CALL = {"q": "q", "qd": "qd", "Fc": "wrench", "integrals": "c->integrals", "last_torque": "last",
-         "filter": "c->filter", "t": "tv"}
+         "filter": "c->filter", "estimate": "c->estimate", "t": "tv"}
 #: the step's inputs the caller computes per sample (references given as code), zero after init
 _CALLER = ("yd_extra", "yd_rate", "target")
 #: the inputs held as named scalar fields (their elements' names), not an array
@@ -84,8 +84,10 @@ def _index_macros(prefix: str, field: str, names) -> list[str]:
     return [f"#define {m} {i}" for i, m in enumerate(made)]
 
 
-def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict, values: dict) -> Unit:
-    """C source, header and manifest of the standalone controller around ``step``.
+def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict, values: dict,
+                                stem: str | None = None) -> Unit:
+    """C source, header and manifest of the standalone controller around ``step``: its symbols start
+    ``prefix``, its files ``stem`` (default ``prefix``).
 
     ``values`` holds the configuration ``_init`` writes: every parameter input of ``step`` by name
     (a sequence of numbers), ``timing_tolerance`` and ``singular_tol``.
@@ -100,6 +102,7 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     tau, z_next, saturated, filter_next = out["tau"], out["integrals_next"], out["saturated"], out["filter_next"]
     loop_out = [out[k] for k in ("a", "y", "f", "contact_wrench")]
     P = prefix.upper()
+    stem = stem or prefix
     codes = statuses()
 
     # ------------------------------------------------------------------ the struct
@@ -131,6 +134,7 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     fields.append("    /* ---- state kept between samples (zero after init and reset) */")
     array_field(inputs["integrals"], "the loops' integrals")
     array_field(inputs["filter"], "the wrench filter's state")
+    array_field(inputs["estimate"], "an estimated surface's state")
     tau_unit = ", ".join(dict.fromkeys(tau.unit if isinstance(tau.unit, tuple) else (tau.unit,)))
     fields.append(f"    double tau[{nq}]; /* the torque last written [{comment_safe(tau_unit)}] */")
     fields.append("    int has_torque; /* 1: tau is the arm's torque, the next sample is rate-limited from it */")
@@ -146,11 +150,11 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     status_lines = "\n".join(f"#define {P}_{name} {code} /* {comment_safe(_MEANING[name])} */"
                              for name, code in codes.items())
     defines = [f"#define {P}_NQ {nq} /* joints */", f"#define {P}_M {m} /* task axes */"]
-    header = f"""#ifndef {P}_H
-#define {P}_H
+    header = f"""#ifndef {stem.upper()}_H
+#define {stem.upper()}_H
 /* {prefix}: {comment_safe(what)}.
    Standalone C99: no allocation, no globals, no I/O; reentrant (every state is in the struct).
-   Emitted by hybrid's codegen (generator version {GENERATOR_VERSION}); interface: {prefix}.json.
+   Emitted by hybrid's codegen (generator version {GENERATOR_VERSION}); interface: {stem}.json.
 
    {prefix}_controller c;
    {prefix}_controller_init(&c);                                   (the configuration's values)
@@ -212,9 +216,9 @@ const char *{prefix}_status_name(int status);
     names = ", ".join(f'"{n}"' for n in codes)
     source = f"""/* {prefix}: {comment_safe(what)}.
    Emitted by hybrid's codegen (generator version {GENERATOR_VERSION}, CasADi {ca.__version__}).
-   Compile: cc -std=c99 -O2 -c {prefix}.c (link with -lm). */
+   Compile: cc -std=c99 -O2 -c {stem}.c (link with -lm). */
 #include <math.h>
-#include "{prefix}.h"
+#include "{stem}.h"
 
 {_casadi_cores(prefix, (step,))}
 static int all_finite(const double *v, int n) {{
@@ -229,6 +233,7 @@ void {prefix}_controller_reset({prefix}_controller *c) {{
     int i;
     for (i = 0; i < {2 * m}; ++i) c->integrals[i] = 0.0;
     for (i = 0; i < {inputs["filter"].size}; ++i) c->filter[i] = 0.0;
+    for (i = 0; i < {inputs["estimate"].size}; ++i) c->estimate[i] = 0.0;
     for (i = 0; i < {nq}; ++i) c->tau[i] = 0.0;
 {"".join(f"    for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = 0.0;{chr(10)}" for a in loop_out)}    c->has_torque = 0;
     c->t_last = 0.0;
@@ -279,6 +284,7 @@ int {prefix}_controller_step({prefix}_controller *c, double t, const double *q, 
     c->has_torque = 1;
     c->saturated = o_{saturated.name}[0] != 0.0;
     for (i = 0; i < {filter_next.size}; ++i) c->filter[i] = o_{filter_next.name}[i];
+    for (i = 0; i < {inputs["estimate"].size}; ++i) c->estimate[i] = o_estimate_next[i];
 {keep}    if (on_time != {P}_OK) return on_time;
     for (i = 0; i < {2 * m}; ++i) c->integrals[i] = o_{z_next.name}[i];
     return {P}_OK;
@@ -292,7 +298,8 @@ const char *{prefix}_status_name(int status) {{
     fields_doc = [{"name": a.name, "size": a.size, **({"names": list(a.names)} if a.names else {}),
                    "unit": a.unit if isinstance(a.unit, str) else list(a.unit)}
                   for a in (*params, *(inputs[n] for n in _CALLER))]
-    data = {"do_not_edit": MANIFEST_STAMP, "unit": prefix, "generator": GENERATOR_VERSION,
+    data = {"do_not_edit": MANIFEST_STAMP, "unit": stem, **({"prefix": prefix} if stem != prefix else {}),
+            "generator": GENERATOR_VERSION,
             "tools": f"CasADi {ca.__version__}", **info, "nq": nq, "m": m,
             "status": {f"{P}_{k}": v for k, v in codes.items()},
             "status_meaning": {f"{P}_{k}": _MEANING[k] for k in codes},
@@ -303,4 +310,4 @@ const char *{prefix}_status_name(int status) {{
             "configuration": {k: ([float(x) for x in v] if not isinstance(v, (int, float)) else float(v))
                               for k, v in sorted(values.items())}}
     data["body_sha256"] = json_body_hash(data)
-    return Unit(prefix, stamp(source), stamp(header), json.dumps(data, indent=1) + "\n")
+    return Unit(stem, stamp(source), stamp(header), json.dumps(data, indent=1) + "\n")

@@ -32,6 +32,7 @@ from __future__ import annotations
 from hybrid._version import __version__
 from hybrid.control.config import read_controller_config
 from hybrid.control.controller import ContactLoss, Controller, Measurement, Posture, Reference
+from hybrid.control.estimation import EstimatedSurface
 from hybrid.control.identification import ToolIdentification, identify_tool, tare
 from hybrid.control.law import DecouplingLaw, decoupling_law
 from hybrid.control.loops import Gains
@@ -83,12 +84,12 @@ def __dir__() -> list[str]:
 
 
 __all__ = [
-    "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw", "Experiment",
-    "Gains", "HybridError", "ImplicitSurface", "Khatib", "LargeModelWarning", "LinePath", "Measurement",
-    "NativeBuildError", "NonFiniteError", "OperationalSpace", "PANDA_URDF", "Plane", "Posture", "Reference", "Robot",
-    "SCHEMES", "SampleTimingError", "Scheme", "Sensor", "SimulationError", "SimulationResult",
-    "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "Tool", "ToolIdentification",
-    "UR5_URDF", "URDFError", "WrenchSensor", "__version__", "arm_terms", "decoupling_law", "identify_tool", "metrics",
-    "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config",
-    "simulate", "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
+    "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw",
+    "EstimatedSurface", "Experiment", "Gains", "HybridError", "ImplicitSurface", "Khatib", "LargeModelWarning",
+    "LinePath", "Measurement", "NativeBuildError", "NonFiniteError", "OperationalSpace", "PANDA_URDF", "Plane",
+    "Posture", "Reference", "Robot", "SCHEMES", "SampleTimingError", "Scheme", "Sensor", "SimulationError",
+    "SimulationResult", "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "Tool",
+    "ToolIdentification", "UR5_URDF", "URDFError", "WrenchSensor", "__version__", "arm_terms", "decoupling_law",
+    "identify_tool", "metrics", "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment",
+    "read_controller_config", "simulate", "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
 ]

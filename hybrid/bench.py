@@ -512,7 +512,7 @@ def controller_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool,
     step = ctrl._step  # the function the controller binds
     m = len(ctrl.axes)
     values = {"q": q, "qd": qd, "Fc": Fc, "integrals": np.zeros(2 * m), "last_torque": np.zeros(robot.n + 1),
-              "filter": np.zeros(13),
+              "filter": np.zeros(13), "estimate": np.zeros(10),
               "t": [0.3], "yd_extra": np.zeros(m), "yd_rate": np.zeros(m), "target": np.zeros(9),
               **ctrl.step_inputs()}
     ops = kernel_function(controller_kernels(robot.chain, sphere.spec(), ctrl.axes)[0]).n_instructions()

@@ -167,8 +167,9 @@ def test_posture_off_is_bitwise_the_law_without_a_null_space_torque(rng, robots,
             Fc = rng.normal(0, 10, 6)
             z = ctrl.state.ravel()
             tau = ctrl(k * 0.01, q, qd, Fc)
-            want = zero_tau0(q, qd, Fc, z, last, np.zeros(13), np.array([k * 0.01]), np.zeros(6), np.zeros(6),
-                             np.zeros(9), *ctrl.step_inputs().values(), singular_tol=ctrl.singular_tol)["tau"]
+            want = zero_tau0(q, qd, Fc, z, last, np.zeros(13), np.zeros(10), np.array([k * 0.01]), np.zeros(6),
+                             np.zeros(6), np.zeros(9), *ctrl.step_inputs().values(),
+                             singular_tol=ctrl.singular_tol)["tau"]
             assert tau.tobytes() == want.tobytes()
             last = np.append(tau, 1.0)
 

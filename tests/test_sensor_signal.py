@@ -1,4 +1,4 @@
-"""The plant's sensor signal (conventions §13): noise, bias, lag and delay, each against its definition;
+"""The plant's sensor signal (conventions §14): noise, bias, lag and delay, each against its definition;
 a true force/torque sensor's reading; with every option off, the runs of before, bit for bit."""
 
 from __future__ import annotations
@@ -270,3 +270,14 @@ def test_bad_force_torque_sensor_settings_are_refused():
     _refused(r"wrench_sensor = 3; give a hybrid.WrenchSensor", hybrid.paper_experiment, wrench_sensor=3)
     _refused(r"WrenchSensor frame = 'tool0' names a URDF frame", hybrid.paper_experiment,
              wrench_sensor=hybrid.WrenchSensor(frame="tool0"))
+
+
+def test_an_experiment_with_a_sensor_signal_is_not_written_as_standalone_c(tmp_path):
+    """The standalone plant gives its sensor's force as the reading: it cannot be such a run."""
+    for exp in (hybrid.paper_experiment(sensor=hybrid.Sensor(force_noise=0.1)),
+                hybrid.paper_experiment(sensor=hybrid.Sensor(delay_samples=1)),
+                hybrid.tracing_experiment(wrench_sensor=hybrid.WrenchSensor())):
+        first = _refused(r"an experiment with a sensor signal \(noise, bias, lag, delay\) or a wrench_sensor runs in "
+                         r"Python only", exp.generate, tmp_path / "c")
+        assert "leave them out" in first
+    assert not (tmp_path / "c").exists()

@@ -1,4 +1,5 @@
-"""``python -m hybrid paper`` and ``python -m hybrid trace``: the schemes compared, end to end."""
+"""``python -m hybrid paper`` and ``python -m hybrid trace``: the schemes compared, end to end; and
+``python -m hybrid generate --experiment NAME``: an experiment's closed loop as standalone C."""
 
 from __future__ import annotations
 
@@ -7,12 +8,21 @@ import io
 import json
 from pathlib import Path
 
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python 3.10
+    import tomli as tomllib
+
 from hybrid import files
+from hybrid.cli.sweep import _base as factory_experiment
 from hybrid.errors import HybridError
+from hybrid.experiments import FACTORIES
 from hybrid.experiments.experiment import BACKENDS
 from hybrid.experiments.paper import paper_experiment
 from hybrid.experiments.tracing import tracing_experiment
 from hybrid.simulation.runner import simulate
+from hybrid.sweeps import apply
+from hybrid.validate import shown
 
 #: the schemes each command compares, in the order of the table
 SCHEMES = ("task", "khatib", "raibert_craig")
@@ -94,4 +104,56 @@ def run_trace(args) -> int:
     results = {c: simulate(tracing_experiment(controller=c, integral=args.integral, curvature=args.curvature))
                for c in SCHEMES}
     write_comparison(results, out, trace_figures)
+    return 0
+
+
+# ------------------------------------------------------------- generate --experiment
+
+
+def add_generate_arguments(g) -> None:
+    """``--experiment`` and ``--set`` of ``python -m hybrid generate``."""
+    g.add_argument("--experiment", choices=tuple(FACTORIES),
+                   help="write this experiment's controller and plant (NAME_controller.c/.h/.json, "
+                        "NAME_plant.c/.h/.json) instead of a URDF arm's kernels")
+    g.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", dest="settings",
+                   help="with --experiment: override a setting, as a sweep file's [base] or parameters name it "
+                        "(duration=3.0, controller=khatib, KPf=3, F_d=15, contact.friction=0.1, "
+                        "force_reference.after=25); VALUE is a TOML value, or else text; repeatable")
+
+
+def setting(text: str) -> tuple[str, object]:
+    """``KEY=VALUE`` as a name and a value: VALUE read as a TOML value (a number, true/false, a quoted
+    string, a list, an inline table), or else as text (``controller=khatib``)."""
+    key, sep, value = text.partition("=")
+    key = key.strip()
+    if not sep or not key or not value.strip():
+        raise HybridError(f"--set {shown(text, 60)}: give KEY=VALUE, e.g. --set duration=3.0")
+    try:
+        return key, tomllib.loads(f"v = {value}")["v"]
+    except tomllib.TOMLDecodeError:
+        return key, value.strip()
+
+
+def experiment_of(kind: str, settings: list[str]):
+    """The experiment ``kind`` with the ``--set`` overrides: plain names go to its factory (as a sweep
+    file's ``[base]`` table), dotted paths (``contact.friction``) then set that one field."""
+    pairs = [setting(text) for text in settings]
+    names = [k for k, _ in pairs]
+    twice = sorted({k for k in names if names.count(k) > 1})
+    if twice:
+        raise HybridError(f"--set {twice[0]} is given twice; give each setting once")
+    exp = factory_experiment(kind, {k: v for k, v in pairs if "." not in k})
+    dotted = {k: v for k, v in pairs if "." in k}
+    return apply(exp, dotted) if dotted else exp
+
+
+def run_generate(args) -> int:
+    """``python -m hybrid generate --experiment NAME [--set KEY=VALUE ...] --out DIR [--name PREFIX]``."""
+    given = [flag for flag, value in (("--urdf", args.urdf), ("--tip", args.tip), ("--lock", args.lock)) if value]
+    if given:
+        raise HybridError(f"--experiment writes an experiment's controller and plant; {', '.join(given)} name a URDF "
+                          "arm's kernels: give one or the other")
+    exp = experiment_of(args.experiment, args.settings)
+    written = exp.generate(args.out, args.name, force=args.force)
+    print("wrote " + ", ".join(str(p) for p in written))
     return 0

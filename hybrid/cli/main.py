@@ -64,6 +64,15 @@ def _lock(text: str) -> tuple[str, float]:
 
 
 def _generate(args) -> int:
+    if args.experiment is not None:
+        if args.controller is not None:
+            raise HybridError("--controller describes a controller for --urdf; an --experiment has its own: give one")
+        return experiment_cli.run_generate(args)
+    if args.settings:
+        raise HybridError("--set overrides an experiment's settings: give --experiment too")
+    if not args.urdf or not args.tip:
+        raise HybridError("generate needs --urdf and --tip (a URDF arm's kernels or, with --controller, its "
+                          "controller), or --experiment")
     if args.controller is None:
         written = generate(args.urdf, args.tip, args.out, args.name, dict(args.lock) or None, force=args.force)
     else:  # the controller the file describes, for this arm
@@ -91,13 +100,15 @@ def build_parser() -> argparse.ArgumentParser:
                         "works from an installed package too")
     r.set_defaults(func=_regenerate)
 
-    g = sub.add_parser("generate", help="write standalone C99 (.c, .h, manifest .json) for a URDF arm",
-                       description="Write standalone C99 for the arm of a URDF: its model's terms or, with "
-                                   "--controller, the hybrid controller a TOML file describes.")
-    g.add_argument("--urdf", required=True, help="the robot's URDF file")
-    g.add_argument("--tip", required=True, help="the link that ends the chain (e.g. tool0)")
+    g = sub.add_parser("generate", help="write standalone C99 (.c, .h, manifest .json) for a URDF arm, its "
+                                        "controller, or an experiment's controller and plant",
+                       description="Write standalone C99: the terms of a URDF arm's model; with --controller, the "
+                                   "hybrid controller a TOML file describes for it; with --experiment, an "
+                                   "experiment's controller and plant (a closed loop in C alone).")
+    g.add_argument("--urdf", help="the robot's URDF file")
+    g.add_argument("--tip", help="the link that ends the chain (e.g. tool0)")
     g.add_argument("--out", required=True, help="folder to write into")
-    g.add_argument("--name", help="prefix of the files and C symbols (default: the URDF's robot name)")
+    g.add_argument("--name", help="prefix of the files and C symbols (default: the robot's name)")
     g.add_argument("--lock", action="append", type=_lock, default=[], metavar="JOINT[=POSITION]",
                    help="hold this joint at POSITION (default 0); repeatable")
     g.add_argument("--controller", metavar="CONFIG.toml",
@@ -105,6 +116,7 @@ def build_parser() -> argparse.ArgumentParser:
                         "references, limits; see hybrid/data/controller_ur5_sphere.toml) for the arm, in place "
                         "of the arm's terms alone")
     g.add_argument("--force", action="store_true", help="overwrite files with other content")
+    experiment_cli.add_generate_arguments(g)
     g.set_defaults(func=_generate)
 
 

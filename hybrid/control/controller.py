@@ -28,6 +28,8 @@ from hybrid.validate import _finite, check_singular_tol
 
 #: "no limit" for the options that are off (the generated step takes finite numbers only)
 _OFF = 1e300
+#: the compiled step's inputs a controller fixes, in the step's order (after the per-sample ones)
+PARAMETERS = ("steps", "gains", "selection", "robot", "surface", "e", "options", "posture", "limits", "sensor")
 #: the sample-timing statuses, by the interval since the last sample (see Controller's timing_tolerance)
 TIMING = ("SAMPLE_LATE", "SAMPLE_EARLY", "SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
 
@@ -241,6 +243,12 @@ class Controller:
         self.robot, self.scheme = robot, scheme_of(scheme)
         self.axes = check_axes(robot, axes)
         self.surface, self._spatial = surface, spatial_surface(surface)
+        self._estimated = self._spatial.spec().estimated
+        if self._estimated:
+            if frame == "desired" or position_error:
+                raise HybridError("an EstimatedSurface has no desired point to put a frame on: the controller does "
+                                  "not know the surface; use frame='actual' and position_error=False with it")
+            self._spatial.check_sampling(sample_time)
         self.sample_time, self.integral, self.curvature, self.frame = float(sample_time), integral, curvature, frame
         self.reference, self.singular_tol, self.path = tuple(reference_direction(reference)), float(singular_tol), path
         self.selection = self._selection(selection)
@@ -261,12 +269,9 @@ class Controller:
             raise HybridError(f"wrench_sensor = {wrench_sensor!r:.60}; give a hybrid.WrenchSensor(...) or None")
         self.wrench_sensor = wrench_sensor
         self._references = self._axis_references(force_reference, velocity_reference)
-        unit = units.controller_unit(robot.chain, robot.name, self._spatial.spec(), self.axes,
-                                     frame == "desired", position_error, wrench_sensor is not None)
         # a posture has its own generated step (the law plus tau0), so the law without one stays the very code
         # it was, bit for bit; both are in the same unit, and the posture's numbers are run-time inputs of both
         self._step_name = self.scheme.step if self.posture is None else "controller_posture_step"
-        self._step, self._measure = unit.function(self._step_name), unit.function("task_measurement")
         m = len(self.axes)
         loss = contact_loss or ContactLoss(-_OFF, 0.0)
         options = np.array([float(curvature), self.sample_time, float(self.scheme.feeds_desired_force),
@@ -284,6 +289,7 @@ class Controller:
         # the torque last given to the arm and 1 once there is one (the rate limit's start), the last sample time
         self._last, self._clock = np.zeros(robot.n + 1), None
         self._filter = np.zeros(13)  # the sensor filter's state
+        self._estimate = np.zeros(10)  # an estimated surface's state: the normal, its rate, the last force, started
         self._fc = np.zeros(6)
         # a force without moments: the planar arm's in its plane (2), any other arm's in space (3); a sensor's
         # reading is always six numbers
@@ -293,13 +299,26 @@ class Controller:
         self._rates = [(i, ref.rate) for i, ref in enumerate(self._references) if ref.rate is not None]
         # with references all steps and no path, the per-sample inputs end at t: the rest is bound
         self._short = not (self._varying or self._rates or path)
-        self._bind()
+        # the compiled step is built at the first sample (a run of the compiled closed loop never needs it)
+        self._binding = None
+        self._z, self._sampled = np.zeros(2 * m), False
+
+    def _native(self) -> None:
+        """The compiled step and measurement, bound to this controller's numbers (built once, cached)."""
+        unit = units.controller_unit(self.robot.chain, self.robot.name, self._spatial.spec(), self.axes,
+                                     self.frame == "desired", self.position_error, self.wrench_sensor is not None)
+        self._step, self._measure = unit.function(self._step_name), unit.function("task_measurement")
+        names = [name for name, _ in self._step.inputs]
+        if tuple(names[len(names) - len(PARAMETERS):]) != PARAMETERS:
+            raise RuntimeError(f"the compiled step's inputs end {names[-len(PARAMETERS):]}, not {PARAMETERS}: "
+                               "the generator and hybrid/control/controller.py disagree")
         self._into = self._step.unit.fast().call_into
         # outputs written in place (the manifest's order: tau, the integrals' next buffer, a, y, f, saturated, the
-        # filter's next state, the contact wrench)
+        # filter's next state, the estimate's next state, the contact wrench)
         self._out = [np.empty(size) for _, size, _ in self._step.outputs]
-        self._filter_out = [name for name, _, _ in self._step.outputs].index("filter_next")
-        self._z, self._sampled = np.zeros(2 * m), False
+        names = [name for name, _, _ in self._step.outputs]
+        self._filter_out = names.index("filter_next"), names.index("estimate_next")
+        self._bind()
 
     # ----------------------------------------------------------------- settings
 
@@ -310,9 +329,12 @@ class Controller:
         return exp.build_controller()
 
     def _bind(self) -> None:
-        """Bind the step's fixed inputs (all but the per-sample ones) to this controller's numbers."""
+        """Bind the step's fixed inputs (all but the per-sample ones) to this controller's numbers (once the
+        step is built)."""
+        if not hasattr(self, "_step"):
+            return
         held = (self._extra, self._rate, self._target) if self._short else ()
-        _, self._binding = self._step.fast_bind(7 if self._short else 10, *held, *self._params,
+        _, self._binding = self._step.fast_bind(8 if self._short else 11, *held, *self._params,
                                                 singular_tol=self.singular_tol)
 
     def set_wrench_sensor(self, sensor: WrenchSensor) -> None:
@@ -332,13 +354,12 @@ class Controller:
         """True when every reference is a number or a :class:`Step`, no path is given and the wrench is
         given as such (no sensor reading): then a whole run can be compiled C
         (:mod:`hybrid.simulation.closed_loop`)."""
-        return self._short and self.wrench_sensor is None
+        return self._short and self.wrench_sensor is None and not self._estimated
 
     def step_inputs(self) -> dict[str, np.ndarray]:
         """The compiled step's inputs this controller fixes (gains, references' steps, model,
         options), by the manifest's names."""
-        names = [name for name, _ in self._step.inputs]
-        return dict(zip(names[len(names) - len(self._params):], self._params))
+        return dict(zip(PARAMETERS, self._params))
 
     def step_variant(self) -> dict:
         """What the compiled step is made of: the model's chain and name, the surface's spec, the task
@@ -465,6 +486,7 @@ class Controller:
         self._sampled = False
         self._last[:] = 0.0
         self._filter[:] = 0.0
+        self._estimate[:] = 0.0
         self._clock = None
         if torque is not None:
             try:
@@ -521,21 +543,24 @@ class Controller:
             raise HybridError(f"t = {t!r}; give a finite sample time")
         t = self._t[0]
         timing = self._timing(t)
+        if self._binding is None:
+            self._native()
         out, z = self._out, self._z
         if self._short:
-            done = self._into(self._binding, out, q, qdot, Fc, z, self._last, self._filter, self._t)
+            done = self._into(self._binding, out, q, qdot, Fc, z, self._last, self._filter, self._estimate, self._t)
         else:
             self._python_references(t)
             if self.path is not None:
                 self._target[:] = self._desired(t)
-            done = self._into(self._binding, out, q, qdot, Fc, z, self._last, self._filter, self._t, self._extra,
-                              self._rate, self._target)
+            done = self._into(self._binding, out, q, qdot, Fc, z, self._last, self._filter, self._estimate, self._t,
+                              self._extra, self._rate, self._target)
         if done is None:
             self._checked(q, qdot, Fc)
         self._tick(t)
         self._last[:-1], self._last[-1] = out[0], 1.0
-        k = self._filter_out  # the filter advances on every sample the law served
+        k, j = self._filter_out  # the filter and the estimate advance on every sample the law served
         self._filter, out[k] = out[k], self._filter
+        self._estimate, out[j] = out[j], self._estimate
         self._sampled = True
         if timing is not None:  # the law's torque, the integrals as they were
             raise SampleTimingError(timing, t, self._clock_before, self.sample_time, out[0].copy())
@@ -571,7 +596,15 @@ class Controller:
         out = {name: o for (name, _, _), o in zip(self._step.outputs, self._out)}
         return {"tau": out["tau"].copy(), "integrals": self._z.copy(), "a": out["a"].copy(), "y": out["y"].copy(),
                 "f": out["f"].copy(), "saturated": bool(out["saturated"][0]),
-                "contact_wrench": out["contact_wrench"].copy()}
+                "contact_wrench": out["contact_wrench"].copy(), "normal": self.normal}
+
+    @property
+    def normal(self) -> np.ndarray | None:
+        """An estimated surface's normal estimate now (base axes; its start before the first sample);
+        None for a surface the controller is told."""
+        if not self._estimated:
+            return None
+        return self._estimate[:3].copy() if self._estimate[9] else np.array(self._spatial.initial_normal)
 
     def _padded(self, Fc) -> np.ndarray:
         """``Fc`` as the step's 6-vector (into a buffer for a force without moments)."""
@@ -606,8 +639,8 @@ class Controller:
                 raise NonFiniteError(f"{name} = {arr.tolist()} is not finite; give finite joint positions and "
                                      "velocities [rad, rad/s or m, m/s]")
         try:
-            got = self._step(q, qdot, Fc, self._z, self._last, self._filter, self._t, self._extra, self._rate,
-                             self._target, *self._params, singular_tol=self.singular_tol)
+            got = self._step(q, qdot, Fc, self._z, self._last, self._filter, self._estimate, self._t, self._extra,
+                             self._rate, self._target, *self._params, singular_tol=self.singular_tol)
         except HybridError:
             if np.isfinite(Fc).all():
                 self._tick(t)
@@ -617,8 +650,11 @@ class Controller:
 
     def measure(self, q, qdot, Fc) -> Measurement:
         """What the controller measures at ``q, qdot, Fc`` (see :class:`Measurement`)."""
+        if self._binding is None:
+            self._native()
         reading = _wrench(Fc, self._force_size)
-        out = self._measure(q, qdot, reading, self._params[4], self._params[5], self._params[3], self._params[-1])
+        out = self._measure(q, qdot, reading, self._params[4], self._params[5], self._params[3], self._params[-1],
+                            self._estimate)
         return Measurement(out["p"], out["v"], out["task_velocity"], out["task_wrench"], reading, out["compensated"],
                            out["contact_wrench"])
 

@@ -42,6 +42,7 @@ from hybrid.models.chain import Chain, Joint
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
 from hybrid.models.urdf import JointLimits, LinkInertia
+from hybrid.native.standalone import generate_experiment
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.plants.planar import PlanarPlant
 from hybrid.plants.rigid_body import RigidBodyPlant
@@ -63,6 +64,10 @@ class Experiment(RunSettings):
         viscous_compensation)``.
     surface : Surface
         What the sensor tip touches (2-D for the planar arm, 3-D otherwise).
+    controller_surface : Surface, optional
+        The surface the controller is told: the true ``surface`` (the default), a wrong one (a sphere of
+        another radius, a plane for a curved part), or a :class:`~hybrid.EstimatedSurface` it estimates
+        online. The plant always has the true one.
     path : CirclePath or LinePath, optional
         Where the desired point runs (for ``frame="desired"`` and the workspace check); default the
         surface's own path (:meth:`Surface.path`), when it has one.
@@ -77,7 +82,7 @@ class Experiment(RunSettings):
     sensor : the plant's elastic sensor and its signal (noise, bias, lag, delay: :class:`~hybrid.Sensor`).
     wrench_sensor : the true force/torque sensor and tool (a :class:`~hybrid.WrenchSensor`): the
         controller is then given its raw reading (sensor axes) for the plant's force, at the true
-        arm's tip pose (conventions §13), and turns it back with ``controller_wrench_sensor``. None (the
+        arm's tip pose (conventions §14), and turns it back with ``controller_wrench_sensor``. None (the
         default): the controller is given the wrench on the robot itself.
     controller_wrench_sensor : the sensor and tool as the controller believes them (its mount, sign,
         tool, bias and its filter's ``cutoff``); default ``wrench_sensor`` itself. Needs ``wrench_sensor``.
@@ -95,6 +100,7 @@ class Experiment(RunSettings):
 
     robot: Robot | None = None
     surface: Surface | None = None
+    controller_surface: Surface | None = None
     path: Path | None = None
     start_point: tuple[float, ...] | None = None
     elbow: int = 1
@@ -134,6 +140,13 @@ class Experiment(RunSettings):
         if not isinstance(self.surface, Surface):
             raise HybridError(f"unknown surface {self.surface!r:.60}; give a hybrid Circle, Plane, Sphere, Cylinder "
                               "or ImplicitSurface")
+        if self.controller_surface is not None:
+            if not isinstance(self.controller_surface, Surface):
+                raise HybridError(f"controller_surface = {self.controller_surface!r:.60}; give a hybrid surface (a "
+                                  "wrong one, or hybrid.EstimatedSurface()) or None (the true surface)")
+            if self.controller_surface.spec().estimated and self.frame == "desired":
+                raise HybridError("frame='desired' puts the loops on the desired point of a surface the controller "
+                                  "knows; with an EstimatedSurface give frame='actual'")
         if self.robot.closed_form is not None and self.surface.cross_section() is None:
             raise HybridError(f"the planar arm needs a planar surface (a hybrid.Circle or a 2-D hybrid.Plane: a "
                               f"cylinder or a plane along base z), got {self.surface!r:.60}")
@@ -192,7 +205,8 @@ class Experiment(RunSettings):
 
     def build_controller(self) -> Controller:
         """Exactly the controller this run uses: its model of the arm, loops, references, options."""
-        return Controller(self.controller_robot(), self.surface, self.controller, axes=self.axes,
+        surface = self.surface if self.controller_surface is None else self.controller_surface
+        return Controller(self.controller_robot(), surface, self.controller, axes=self.axes,
                           reference=self.reference, posture=self.posture, **self.controller_settings())
 
     @property
@@ -250,6 +264,24 @@ class Experiment(RunSettings):
             _check_path(reach, path, path.arc_of(self.start()), self.speed_reference, self.n_samples,
                         self.sample_time, self.duration)
 
+    def generate(self, out, name: str | None = None, force: bool = False) -> list:
+        """Write this run's closed loop as standalone C99 into the folder ``out``: the controller
+        (``<name>_controller.c``, ``.h``, ``.json``; the struct ``<name>_controller``, as
+        :meth:`hybrid.Controller.generate` writes it) and the plant (``<name>_plant.c``, ``.h``, ``.json``).
+        Returns the paths written.
+
+        ``<name>_plant_init(&p)`` gives a struct with this run's plant parameters (the true arm, the
+        sensor, the contact, the surface), its timing (``h``, ``steps_per_sample``, ``sample_time``,
+        ``duration``) and its start state (:meth:`initial_state`); ``<name>_plant_wrench`` reads the
+        sensor (what the controller's step takes), ``<name>_plant_advance(&p, tau, n)`` takes ``n`` RK4
+        steps with the torque held, ``<name>_plant_signals`` gives what the metrics read. A loop of
+        samples around the two is this run (``hybrid.simulate``'s) to rounding error. ``name``: ASCII
+        letters, digits and ``_``, a letter first (default the robot's name). C99, no allocation, no
+        globals, no I/O, reentrant; the same bytes for the same experiment. Files in ``out`` with other
+        content are refused unless ``force``. References the controller takes from its caller (a desired
+        frame) are the caller's to write into the controller's struct each sample."""
+        return generate_experiment(self, out, name, force)
+
     # ------------------------------------------------------------------- files
 
     def to_dict(self) -> dict:
@@ -259,6 +291,7 @@ class Experiment(RunSettings):
             d[name] = asdict(d[name])
         d["robot"] = robot_to_dict(self.robot)
         d["surface"] = surface_to_dict(self.surface)
+        d["controller_surface"] = None if self.controller_surface is None else surface_to_dict(self.controller_surface)
         d["path"] = None if self.path is None else {"kind": type(self.path).__name__, **asdict(self.path)}
         d["start_point"] = None if self.start_point is None else list(self.start_point)
         d["reference"] = list(self.reference)
@@ -294,6 +327,8 @@ class Experiment(RunSettings):
         for k, typ in parts.items():
             d[k] = typ(**d[k])
         d["robot"], d["surface"] = robot_from_dict(d["robot"]), surface_from_dict(d["surface"])
+        if d.get("controller_surface") is not None:
+            d["controller_surface"] = surface_from_dict(d["controller_surface"])
         if d["path"] is not None:
             path = dict(d["path"])
             d["path"] = {"CirclePath": CirclePath, "LinePath": LinePath}[path.pop("kind")](**path)

@@ -76,7 +76,7 @@ def free(point, normal, gap: float, sag) -> tuple[np.ndarray, np.ndarray]:
 
 def check_sensing(exp) -> None:
     """The sensor's signal, the force/torque sensors and the start from free space, checked alike for
-    every experiment (conventions §4, §13)."""
+    every experiment (conventions §4, §14)."""
     exp.sensor.check_sampling(exp.sample_time)
     for name in ("wrench_sensor", "controller_wrench_sensor"):
         value = getattr(exp, name)

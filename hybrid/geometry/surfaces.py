@@ -36,6 +36,9 @@ class SurfaceSpec:
     #: ``phi`` as canonical text (SymPy's ``srepr``), which identifies it
     phi_text: str = "built-in"
     formula: object = None
+    #: True for a surface the controller estimates (its parameters are the estimator's tuning): the
+    #: task frame comes from the estimate, not from ``phi``
+    estimated: bool = False
 
     def key(self) -> str:
         """A stable text identifying the surface's expression (for cache keys)."""

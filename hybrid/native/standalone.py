@@ -1,9 +1,11 @@
-"""``python -m hybrid generate``: standalone C for a user's arm, or their whole controller, written into a
-folder of theirs."""
+"""``python -m hybrid generate``: standalone C for a user's arm, their whole controller, or an experiment's
+closed loop (its controller and its plant), written into a folder of theirs."""
 
 from __future__ import annotations
 
 from pathlib import Path
+
+import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.models.robot import Robot
@@ -37,6 +39,13 @@ def generate_controller(ctrl, out, name: str | None = None, force: bool = False)
     if name is not None:
         check_c_name("name", name)
     prefix = c_identifier(f"{ctrl.robot.name}_controller" if name is None else name)
+    return write_files(out, controller_files(ctrl, prefix), force)
+
+
+def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, str]:
+    """The standalone C of the controller ``ctrl`` by file name: its symbols start ``prefix``, its files
+    ``stem`` (default ``prefix``); generated once per key (cached)."""
+    stem = stem or prefix
     variant = ctrl.step_variant()
     values = {k: [float(x) for x in v] for k, v in ctrl.step_inputs().items()}
     values |= {"timing_tolerance": -1.0 if ctrl.timing_tolerance is None else ctrl.timing_tolerance,
@@ -52,7 +61,7 @@ def generate_controller(ctrl, out, name: str | None = None, force: bool = False)
                        if compiled_in["wrench_sensor"] else
                        "the force and moment on the robot at the tip frame's origin, base axes [N, N m]")}
     key = {"chain": units.chain_key(variant["chain"]), "surface": spec.key(), **info, "values": values,
-           "generator": units.fingerprint(), "prefix": prefix}
+           "generator": units.fingerprint(), "prefix": prefix, **({"stem": stem} if stem != prefix else {})}
 
     def make() -> dict[str, str]:
         step = {k.name: k for k in units.generator("controller_step").controller_kernels(
@@ -60,11 +69,56 @@ def generate_controller(ctrl, out, name: str | None = None, force: bool = False)
         what = (f"the hybrid force/velocity controller ({ctrl.scheme.name} scheme) of the {ctrl.robot.n}-joint arm "
                 f"'{variant['name']}' on a {spec.kind}, task axes {', '.join(ctrl.axis_names)}")
         return units.generator("standalone_controller").build_standalone_controller(step, prefix, what, info,
-                                                                                   values).files
+                                                                                   values, stem).files
+
+    folder = build.generated_unit(stem, key, make)
+    return {n: (folder / n).read_text() for n in (f"{stem}.c", f"{stem}.h", f"{stem}.json")}
+
+
+def generate_experiment(exp, out, name: str | None = None, force: bool = False) -> list[Path]:
+    """Write the closed loop of the experiment ``exp`` as standalone C99 into ``out``: its controller
+    (``<name>_controller.c``, ``.h``, ``.json``: the struct ``<name>_controller``, as
+    :meth:`hybrid.Controller.generate` writes it, symbols ``<name>_...``) and its plant
+    (``<name>_plant.c``, ``.h``, ``.json``: the struct ``<name>_plant`` with the experiment's parameters,
+    timing and start state; :mod:`hybrid.codegen.standalone_plant`). ``name`` defaults to the robot's.
+    Files in ``out`` with other content are refused unless ``force``."""
+    if name is not None:
+        check_c_name("name", name)
+    prefix = c_identifier(exp.robot.name if name is None else name)
+    if not exp.sensor.ideal or exp.wrench_sensor is not None:
+        raise HybridError("the standalone plant gives its sensor's force as the reading: an experiment with a "
+                          "sensor signal (noise, bias, lag, delay) or a wrench_sensor runs in Python only; leave them "
+                          "out to generate it")
+    ctrl = exp.build_controller()
+    x0 = exp.initial_state()
+    exp.check_path()
+    files = controller_files(ctrl, prefix, f"{prefix}_controller") | plant_files(exp, f"{prefix}_plant", x0)
+    return write_files(out, files, force)
+
+
+def plant_files(exp, prefix: str, x0) -> dict[str, str]:
+    """The standalone C of the plant of ``exp`` (starting from ``x0``) by file name; generated once per
+    key (cached)."""
+    plant = exp.plant_class.loop_plant(exp)
+    values = {k: [float(v) for v in np.asarray(a, float).ravel()] for k, a in exp.plant_class.inputs(exp).items()}
+    values |= {"x0": [float(v) for v in x0], "h": float(exp.step), "steps_per_sample": int(exp.steps_per_sample),
+               "sample_time": float(exp.sample_time), "duration": float(exp.duration)}
+    robot, surface = exp.robot, (exp.section or exp.surface).kind
+    info = {"robot": {"robot": robot.name, "joints": list(robot.joint_names)}, "surface": surface,
+            "plant": plant.key()[0], "experiment": exp.to_dict()}
+    backend = exp.backend if robot.closed_form is not None else "casadi"
+    key = {"plant": plant.key(), "values": values, "info": info, "backend": backend,
+           "generator": units.fingerprint(), "prefix": prefix}
+
+    def make() -> dict[str, str]:
+        rhs, outputs, force = plant.kernels(units.generator)
+        what = (f"the plant of an experiment: the {robot.n}-joint arm '{robot.name}', its force sensor and penalty "
+                f"contact with friction on a {surface}, advanced by RK4 with the torque held")
+        return units.generator("standalone_plant").build_standalone_plant(rhs, outputs, force, prefix, what, info,
+                                                                          values, backend).files
 
     folder = build.generated_unit(prefix, key, make)
-    files = {n: (folder / n).read_text() for n in (f"{prefix}.c", f"{prefix}.h", f"{prefix}.json")}
-    return write_files(out, files, force)
+    return {n: (folder / n).read_text() for n in (f"{prefix}.c", f"{prefix}.h", f"{prefix}.json")}
 
 
 def write_files(out, files: dict[str, str], force: bool) -> list[Path]:

@@ -15,7 +15,7 @@ from hybrid.validate import _finite, field_values
 @dataclass(frozen=True)
 class Sensor:
     """The plant's elastic force sensor at the arm tip: a tip mass on an isotropic spring-damper
-    (conventions §5, §10), and the signal it gives the controller (conventions §13).
+    (conventions §5, §10), and the signal it gives the controller (conventions §14).
 
     Parameters
     ----------

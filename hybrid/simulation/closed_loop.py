@@ -80,13 +80,14 @@ class Prepared:
     row: np.ndarray
 
 
-def prepare(exp, x0: np.ndarray | None = None) -> Prepared | None:
+def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None) -> Prepared | None:
     """``exp`` (the paper's experiment or a 3-D one) as a row of the compiled loop, after the checks
     ``simulate`` makes of the settings (a refused experiment raises their HybridError; the record's
     memory is ``simulate``'s to check: a sweep keeps none); None when it cannot run there: part of its
     controller runs in Python, or its sensor's signal is not the sensor's force itself (noise, bias, lag,
     delay: :mod:`hybrid.simulation.sensing`). A given start state ``x0`` is the caller's, checked
-    (``simulate`` passes its own)."""
+    (``simulate`` passes its own). ``lanes=1`` prepares the one-lane build (a run alone; only what it
+    needs is compiled), else the lanes build."""
     ctrl = exp.build_controller()
     if not ctrl.runs_in_c or not exp.sensor.ideal:
         return None
@@ -94,7 +95,8 @@ def prepare(exp, x0: np.ndarray | None = None) -> Prepared | None:
         x0 = exp.initial_state()
         exp.check_path()
     plant, given = exp.plant_class.loop_plant(exp), exp.plant_class.inputs(exp)
-    loop = _available_loop(plant, tuple(sorted(ctrl.step_variant().items())))
+    # the build for the lanes it will run in (lanes=1: a run alone); :func:`run` takes the other if it must
+    loop = _available_loop(plant, tuple(sorted(ctrl.step_variant().items())), lanes)
     if loop is None:
         return None
     fs, vs = exp.force_reference, exp.speed_reference
@@ -130,6 +132,8 @@ def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
         n = len(members)
         if n == 1:  # one run alone: the one-lane build (same row, same arithmetic), built on first use
             loop = _available_loop(*loop.key, lanes=1) or loop
+        elif loop.lanes == 1:  # runs prepared one by one, run together: the lanes build
+            loop = _available_loop(*loop.key) or loop
         runs = np.ascontiguousarray(np.stack([prepared[i].row for i in members]))
         metrics = np.empty((n, len(loop.metrics)))
         status, failed = np.empty(n, np.intc), np.empty(n, np.intc)

@@ -150,8 +150,30 @@ def first_touch(t: np.ndarray, F: np.ndarray, Fd: np.ndarray, in_contact: np.nda
             "first_touch_settling_s": settling_time(t[window], F[window], target, TOUCH_BAND * abs(target))}
 
 
+#: the normal-estimate metrics leave out the first this many seconds (the estimate's settling)
+ESTIMATE_SETTLING_S = 0.5
+
+
+def estimate_metrics(t_samples, angle_error_deg) -> dict:
+    """``normal_angle_error_deg`` (RMS) and ``max_normal_angle_error_deg`` of an estimated surface's normal
+    over the control samples after the first :data:`ESTIMATE_SETTLING_S` seconds."""
+    t, err = np.asarray(t_samples, float), np.asarray(angle_error_deg, float)
+    late = t >= ESTIMATE_SETTLING_S
+    if not late.any():
+        return {"normal_angle_error_deg": float("nan"), "max_normal_angle_error_deg": float("nan")}
+    return {"normal_angle_error_deg": float(np.sqrt(np.mean(err[late] ** 2))),
+            "max_normal_angle_error_deg": float(np.max(err[late]))}
+
+
 def run_metrics(res) -> dict:
-    """The metrics of a :class:`~hybrid.SimulationResult`, with its experiment's reference steps."""
+    """The metrics of a :class:`~hybrid.SimulationResult`, with its experiment's reference steps (and
+    an estimated surface's normal-angle errors, when the controller estimated it)."""
+    if res.normal_estimate is not None:
+        return {**_series_metrics(res), **estimate_metrics(res.sample_t, res.normal_angle_error_deg)}
+    return _series_metrics(res)
+
+
+def _series_metrics(res) -> dict:
     exp = res.experiment
     return metrics(res.t, res.force_normal, res.velocity_tangential, res.force_reference, res.speed_reference,
                    force_step=exp.force_reference, speed_step=exp.speed_reference, penetration=res.penetration,

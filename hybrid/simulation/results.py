@@ -34,6 +34,34 @@ class SimulationResult:
     metrics: dict = field(default_factory=dict)
     #: the plant's record: names and units of the state and output columns, number of joints
     record: dict = field(default_factory=planar_record)
+    #: a controller's estimate of the normal (:class:`~hybrid.EstimatedSurface`), one row per control sample
+    #: (base axes, after the sample); None when the controller is told the surface
+    normal_estimate: np.ndarray | None = None
+
+    @property
+    def sample_t(self) -> np.ndarray:
+        """The control samples' times [s]."""
+        return np.arange(self.experiment.n_samples) * self.experiment.sample_time
+
+    @property
+    def true_normal(self) -> np.ndarray:
+        """The true surface's normal at the sensor tip at each control sample (base axes, 3 columns;
+        the planar arm's lifted into its plane)."""
+        exp, names = self.experiment, self.record["outputs"]
+        tip = [names.index(c) for c in ("s_x", "s_y", "s_z") if c in names]
+        rows = self.outputs[::exp.steps_per_sample][:exp.n_samples, tip]
+        geometry = exp.section or exp.surface
+        normals = np.array([geometry.normal_at(p) for p in rows])
+        return np.pad(normals, ((0, 0), (0, 3 - normals.shape[1])))
+
+    @property
+    def normal_angle_error_deg(self) -> np.ndarray | None:
+        """The angle between the estimated and the true normal at each control sample [deg]; None
+        without an estimate."""
+        if self.normal_estimate is None:
+            return None
+        cos = np.einsum("ij,ij->i", self.normal_estimate, self.true_normal)
+        return np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
 
     @property
     def UNITS(self) -> dict:  # noqa: N802 (a table, as before)

@@ -77,7 +77,7 @@ def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> Simulat
 def _compiled_or_run(exp, plant, x0: np.ndarray, compiled: bool = True) -> SimulationResult:
     """The whole run in compiled C when the loop takes it (as a sweep runs it), else, and for the
     account of a run that stopped there, the Python runner (the record's memory checked already)."""
-    prepared = closed_loop.prepare(exp, x0) if compiled else None
+    prepared = closed_loop.prepare(exp, x0, lanes=1) if compiled else None
     if prepared is not None:
         done = closed_loop.run([prepared], record=True)[0]
         if done.status == 0:
@@ -96,8 +96,11 @@ def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
     states = np.empty((total + 1, len(x)))
     taus = np.full((total + 1, nq), np.nan)  # NaN marks "no torque computed" in a partial run
     states[0] = x
-    # what the controller is given: the plant's sensor force, or the sensor's signal (conventions §13)
+    # what the controller is given: the plant's sensor force, or the sensor's signal (conventions §14)
     read = plant_reader(exp, plant) or plant.sensor_wrench
+    # an estimated surface's normal, at each sample (after it)
+    estimates = getattr(controller, "normal", None) is not None  # any callable controller runs here
+    normals = np.full((n_samples, 3), np.nan) if estimates else None
     for k in range(n_samples):
         t = k * exp.sample_time
         q, qdot = x[0:nq].copy(), x[nq:2 * nq].copy()
@@ -113,6 +116,8 @@ def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
                 f"at t = {t:.4f} s: {first}\n  q = {np.round(q, 5).tolist()} rad, qdot = "
                 f"{np.round(qdot, 4).tolist()} rad/s" + (f"\n{rest}" if rest else ""),
                 t, _result(exp, plant, states[:1 + k * m], taus[:1 + k * m], False)) from exc
+        if normals is not None:
+            normals[k] = controller.normal
         if k == 0:
             taus[0] = tau  # the first sample's torque acts from t = 0
         rows = slice(1 + k * m, 1 + (k + 1) * m)
@@ -121,7 +126,7 @@ def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
         if done < m:
             last = 1 + k * m + done
             raise _divergence(_result(exp, plant, states[:last], taus[:last], False), plant, t, q, qdot, tau, x)
-    return _result(exp, plant, states, taus, True)
+    return _result(exp, plant, states, taus, True, normals)
 
 
 def _divergence(partial: SimulationResult, plant, t: float, q, qdot, tau, x) -> SimulationError:
@@ -154,11 +159,13 @@ def _closest_singularity(res: SimulationResult, plant, near: float = 0.1) -> str
             f"t = {res.t[rows[i]]:.4f} s): raise singular_tol to stop there, or keep the path away from full extension")
 
 
-def _result(exp, plant, states: np.ndarray, taus: np.ndarray, metrics: bool | dict) -> SimulationResult:
-    """The result of a run; ``metrics``: computed from the series (True), none (False), or as given."""
+def _result(exp, plant, states: np.ndarray, taus: np.ndarray, metrics: bool | dict,
+            normals: np.ndarray | None = None) -> SimulationResult:
+    """The result of a run; ``metrics``: computed from the series (True), none (False), or as given;
+    ``normals``: an estimated surface's normal at each sample."""
     t = np.arange(len(states)) * exp.step
     res = SimulationResult(exp, t, states, taus, plant.outputs(states), exp.force_reference.sampled(t),
-                           exp.speed_reference.sampled(t), record=plant.record)
+                           exp.speed_reference.sampled(t), record=plant.record, normal_estimate=normals)
     if metrics is True:
         res.metrics = run_metrics(res)
     elif metrics:

@@ -1,5 +1,5 @@
 """The plant's sensor as the controller reads it: a force/torque sensor's raw reading, a finite
-bandwidth, a bias, noise and a delay (conventions §13).
+bandwidth, a bias, noise and a delay (conventions §14).
 
 At each control sample ``k`` the plant's elastic sensor gives the wrench ``F_k`` on the robot at the
 tip (base axes). The controller is given

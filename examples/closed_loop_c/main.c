@@ -1,0 +1,249 @@
+/* The UR5 tracing a circle on a sphere (the tracing experiment), closed in C alone: the generated
+   controller (ur5_controller.c) against the generated plant (ur5_plant.c), then the run's metrics.
+
+   Per control sample k (t = k * sample_time): the sensor's reading from the state, one controller step,
+   then steps_per_sample RK4 steps of the plant with the torque held. The metrics are those of
+   hybrid.metrics, over every RK4 step's row (t = i * h, the state at the step's start and the last one).
+
+   Build (after `python -m hybrid generate --experiment tracing --out . --name ur5`):
+       cc -std=c99 -O2 main.c ur5_controller.c ur5_plant.c -lm -o closed_loop
+   Run:
+       ./closed_loop [--duration SECONDS] [--record FILE] [--per-sample]
+   --record writes a row per RK4 step (per control sample with --per-sample): t, the state x
+   (UR5_PLANT_NX, the order of ur5_plant.json's "state") and the torque acting from t on
+   (UR5_PLANT_NQ); as text when FILE ends in .csv, else as raw doubles (this machine's byte order). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "ur5_controller.h"
+#include "ur5_plant.h"
+
+/* the metrics' running sums and extremes, updated row by row */
+typedef struct {
+    double fb, fa, fat, vb, va, vat; /* the force and speed references' steps (before, after, at) */
+    double end;                      /* the last row's time */
+    long rows, n_f, n_v, n_last, first_f, last_out_f, last_f, losses, touch, t_last_out, t_last;
+    double peak, drop, dev, v_max, sum_fe, sum_ve, sum_f2, sum_v2, pen, t_out;
+    double fd0, t_band, w_end, t_peak; /* the first touch: F_d then, its band, its window's end, the peak */
+    int in_prev;
+    double tau[UR5_PLANT_NQ];
+} metrics;
+
+static double step_value(double before, double after, double at, double t) {
+    return t < at ? before : after;
+}
+
+static void metrics_start(metrics *m, const ur5_controller *c, long rows, double h) {
+    int j;
+    memset(m, 0, sizeof *m);
+    /* the references the controller tracks: the force on the normal, the speed along t1 */
+    m->fb = c->steps[UR5_STEPS_BEFORE_N];
+    m->fa = c->steps[UR5_STEPS_AFTER_N];
+    m->fat = c->steps[UR5_STEPS_AT_N];
+    m->vb = c->steps[UR5_STEPS_BEFORE_T1];
+    m->va = c->steps[UR5_STEPS_AFTER_T1];
+    m->vat = c->steps[UR5_STEPS_AT_T1];
+    m->rows = rows;
+    m->end = (double)(rows - 1) * h;
+    m->first_f = m->last_out_f = m->last_f = -1;
+    m->touch = m->t_last_out = m->t_last = -1;
+    m->w_end = INFINITY;
+    m->peak = m->drop = m->dev = m->v_max = m->pen = m->t_peak = -INFINITY;
+    for (j = 0; j < UR5_PLANT_NQ; ++j) m->tau[j] = 0.0;
+}
+
+/* row i (time i * h) of the run: the plant's signals there */
+static void metrics_row(metrics *m, const double *s, long i, double h) {
+    const double t = (double)i * h;
+    const double F = s[UR5_PLANT_SIGNALS_FC_N], v = s[UR5_PLANT_SIGNALS_V_T], pen = s[UR5_PLANT_SIGNALS_PENETRATION];
+    const double Fd = step_value(m->fb, m->fa, m->fat, t), vd = step_value(m->vb, m->va, m->vat, t);
+    const double step = m->fa - m->fb, sgn = step >= 0 ? 1.0 : -1.0;
+    /* the window after the force step ends at the speed step (the next disturbance), if later */
+    const double f_end = m->vat > m->fat ? m->vat : m->end;
+    const double band = 0.02 * (m->fa != 0.0 ? fabs(m->fa) : fabs(step));
+    const int contact = s[UR5_PLANT_SIGNALS_N] > 0.0;
+    if (t >= m->fat && t < f_end) {
+        if (sgn * F > m->peak) m->peak = sgn * F;
+        ++m->n_f;
+        if (m->first_f < 0) m->first_f = i;
+        if (fabs(F - m->fa) > band) m->last_out_f = i;
+        m->last_f = i;
+        if (vd - v > m->drop) m->drop = vd - v;
+    }
+    if (t >= m->vat) {
+        ++m->n_v;
+        if (fabs(F - Fd) > m->dev) m->dev = fabs(F - Fd);
+        if (v > m->v_max) m->v_max = v;
+    }
+    if (t >= m->end - 0.2) {
+        m->sum_fe += Fd - F;
+        m->sum_ve += vd - v;
+        ++m->n_last;
+    }
+    m->sum_f2 += (Fd - F) * (Fd - F);
+    m->sum_v2 += (vd - v) * (vd - v);
+    if (pen > m->pen) m->pen = pen;
+    if (i > 0) {
+        if (m->in_prev && !contact) ++m->losses;
+        if (!contact) m->t_out += t - (double)(i - 1) * h;
+    }
+    m->in_prev = contact;
+    /* the first touch: the first row in contact, then its window until the force reference next changes */
+    if (contact && m->touch < 0) {
+        m->touch = i;
+        m->fd0 = Fd;
+        m->t_band = 0.05 * fabs(Fd);
+        m->w_end = m->fa != m->fb && m->fat > t ? m->fat : INFINITY;
+    }
+    if (m->touch >= 0 && t < m->w_end) {
+        if (F > m->t_peak) m->t_peak = F;
+        if (fabs(F - m->fd0) > m->t_band) m->t_last_out = i;
+        m->t_last = i;
+    }
+}
+
+static void metrics_torque(metrics *m, const double *tau) {
+    int j;
+    for (j = 0; j < UR5_PLANT_NQ; ++j) {
+        if (fabs(tau[j]) > m->tau[j]) m->tau[j] = fabs(tau[j]);
+    }
+}
+
+static void metrics_print(const metrics *m, double h) {
+    const double step = m->fa - m->fb, sgn = step >= 0 ? 1.0 : -1.0;
+    double overshoot = NAN, percent = NAN, settling = NAN, drop = NAN, dev = NAN, v_over = NAN;
+    int j;
+    if (m->n_f > 0 && m->fa != m->fb) {
+        overshoot = (sgn * m->peak - m->fa) * sgn;
+        percent = 100 * overshoot / fabs(step);
+        settling = m->last_out_f < 0 ? 0.0
+                 : m->last_out_f == m->last_f ? NAN : (double)(m->last_out_f + 1) * h - (double)m->first_f * h;
+        drop = m->drop;
+    }
+    if (m->n_v > 0 && m->va != m->vb) {
+        dev = m->dev;
+        v_over = m->v_max - m->va;
+    }
+    printf("force_overshoot_N %.17g\n", overshoot);
+    printf("force_overshoot_percent %.17g\n", percent);
+    printf("force_settling_time_2pct_s %.17g\n", settling);
+    printf("speed_drop_after_force_step_m_per_s %.17g\n", drop);
+    printf("force_deviation_after_speed_step_N %.17g\n", dev);
+    printf("speed_overshoot_after_speed_step_m_per_s %.17g\n", v_over);
+    printf("steady_state_force_error_N %.17g\n", m->sum_fe / (double)m->n_last);
+    printf("steady_state_speed_error_m_per_s %.17g\n", m->sum_ve / (double)m->n_last);
+    printf("rms_force_error_N %.17g\n", sqrt(m->sum_f2 / (double)m->rows));
+    printf("rms_speed_error_m_per_s %.17g\n", sqrt(m->sum_v2 / (double)m->rows));
+    printf("max_penetration_m %.17g\n", m->pen);
+    printf("contact_losses %ld\n", m->losses);
+    printf("time_out_of_contact_s %.17g\n", m->t_out);
+    printf("first_touch_time_s %.17g\n", m->touch < 0 ? NAN : (double)m->touch * h);
+    printf("first_touch_overshoot_N %.17g\n", m->touch < 0 ? NAN : m->t_peak - m->fd0);
+    printf("first_touch_settling_s %.17g\n", m->touch < 0 ? NAN : m->t_last_out < 0 ? 0.0
+           : m->t_last_out == m->t_last ? NAN : (double)(m->t_last_out + 1) * h - (double)m->touch * h);
+    for (j = 0; j < UR5_PLANT_NQ; ++j) printf("peak_torque_joint%d_Nm %.17g\n", j + 1, m->tau[j]);
+}
+
+/* one row of the record: t, x, the torque acting from t on */
+static int write_row(FILE *out, int csv, double t, const double *x, const double *tau) {
+    double row[1 + UR5_PLANT_NX + UR5_PLANT_NQ];
+    int j, n = 1 + UR5_PLANT_NX + UR5_PLANT_NQ;
+    row[0] = t;
+    for (j = 0; j < UR5_PLANT_NX; ++j) row[1 + j] = x[j];
+    for (j = 0; j < UR5_PLANT_NQ; ++j) row[1 + UR5_PLANT_NX + j] = tau[j];
+    if (!csv) return fwrite(row, sizeof row[0], (size_t)n, out) == (size_t)n;
+    for (j = 0; j < n; ++j) {
+        if (fprintf(out, j ? ",%.17g" : "%.17g", row[j]) < 0) return 0;
+    }
+    return fputc('\n', out) != EOF;
+}
+
+static int usage(const char *self) {
+    fprintf(stderr, "usage: %s [--duration SECONDS] [--record FILE] [--per-sample]\n", self);
+    return 2;
+}
+
+int main(int argc, char **argv) {
+    ur5_controller c;
+    ur5_plant p;
+    metrics m;
+    double wrench[6], s[UR5_PLANT_NSIGNALS], tau[UR5_PLANT_NQ], prev[UR5_PLANT_NQ], duration;
+    const char *path = NULL;
+    FILE *out = NULL;
+    int per_sample = 0, csv = 0, status, a, i, j;
+    long k, n_samples, row = 0;
+
+    ur5_controller_init(&c);
+    ur5_plant_init(&p);
+    duration = p.duration;
+    for (a = 1; a < argc; ++a) {
+        if (!strcmp(argv[a], "--duration") && a + 1 < argc) {
+            char *end;
+            duration = strtod(argv[++a], &end);
+            if (*end || !(duration > 0)) return usage(argv[0]);
+        } else if (!strcmp(argv[a], "--record") && a + 1 < argc) {
+            path = argv[++a];
+        } else if (!strcmp(argv[a], "--per-sample")) {
+            per_sample = 1;
+        } else {
+            return usage(argv[0]);
+        }
+    }
+    /* as the experiment counts its samples: duration / sample_time, rounded up */
+    n_samples = (long)ceil(duration / p.sample_time - 1e-9);
+    if (path) {
+        const size_t n = strlen(path);
+        csv = n >= 4 && !strcmp(path + n - 4, ".csv");
+        out = fopen(path, csv ? "w" : "wb");
+        if (!out) {
+            perror(path);
+            return 1;
+        }
+    }
+    metrics_start(&m, &c, n_samples * p.steps_per_sample + 1, p.h);
+    for (j = 0; j < UR5_PLANT_NQ; ++j) prev[j] = 0.0;
+    for (k = 0; k < n_samples; ++k) {
+        /* the sensor's reading at the sample instant, one control sample */
+        ur5_plant_wrench(&p, wrench);
+        status = ur5_controller_step(&c, (double)k * p.sample_time, p.x, p.x + UR5_PLANT_NQ, wrench, tau);
+        if (status != UR5_OK) {
+            fprintf(stderr, "the controller stopped at t = %.4f s: %s\n", (double)k * p.sample_time,
+                    ur5_status_name(status));
+            return 1;
+        }
+        metrics_torque(&m, tau);
+        /* the torque held over the sample: the plant's RK4 steps, each row's signals at the step's start */
+        for (i = 0; i < p.steps_per_sample; ++i, ++row) {
+            ur5_plant_signals(&p, s);
+            metrics_row(&m, s, row, p.h);
+            if (out && (!per_sample || i == 0) && !write_row(out, csv, (double)row * p.h, p.x, tau)) {
+                perror(path);
+                return 1;
+            }
+            status = ur5_plant_advance(&p, tau, 1);
+            if (status != UR5_PLANT_OK) {
+                fprintf(stderr, "the plant stopped at t = %.5f s: %s\n", (double)row * p.h,
+                        ur5_plant_status_name(status));
+                return 1;
+            }
+        }
+        for (j = 0; j < UR5_PLANT_NQ; ++j) prev[j] = tau[j];
+    }
+    /* the last row: the state after the last step, the last torque */
+    ur5_plant_signals(&p, s);
+    metrics_row(&m, s, row, p.h);
+    if (out && !write_row(out, csv, (double)row * p.h, p.x, prev)) {
+        perror(path);
+        return 1;
+    }
+    if (out && fclose(out) != 0) {
+        perror(path);
+        return 1;
+    }
+    printf("# the UR5 on the sphere: %ld samples of %g s, %d RK4 steps of %g s each\n", n_samples, p.sample_time,
+           p.steps_per_sample, p.h);
+    metrics_print(&m, p.h);
+    return 0;
+}

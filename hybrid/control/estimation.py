@@ -1,0 +1,153 @@
+"""A surface the controller is not told: the task frame from an online estimate of the normal.
+
+:class:`EstimatedSurface` stands for the surface in a :class:`hybrid.Controller`: the compiled step
+estimates the unit normal ``n`` from what it measures at each sample (conventions §13) and builds the
+task frame from it (the rows ``t1 = e x n / |e x n|``, ``t2 = n x t1``, ``n``), with the frame's rate
+from the estimate's rate, so the law's curvature term still acts. Two estimators, and their sum:
+
+- **force** (after Yoshikawa & Sudou, 1993): the contact force on the robot is the normal force along
+  ``n`` plus friction along the sliding direction; without its component along the sliding velocity
+  (the friction correction) it points along ``n``. The estimate moves towards that direction with the
+  time constant ``force_time_constant`` [s] while the force exceeds ``contact_threshold`` [N] (it
+  holds through a loss of contact). With the friction removed along the estimated tangent, this
+  estimate cannot see a tilt along the motion: alone it drifts there;
+- **velocity** (after Karayiannidis et al., 2014): the contact point's velocity is tangent to the
+  surface, so the estimate is turned orthogonal to it, ``n' = -(n . u) (u - (n . u) n) / tau_v`` with
+  ``u = v / |v_t|``: the normal's tilt along the motion decays with ``velocity_time_constant`` [s] at
+  any speed. It sees only the motion's direction (the tilt about it is the force's);
+- **fusion** (the default): both corrections each sample; each sees what the other cannot.
+
+The contact point's velocity is the tip's plus the rate of the tool's deflection, ``compliance``
+[m/N] times the force's rate (0 for a rigid tool: a compliant one's deflection under a changing force
+would look like a slope). The estimate is a tracker (alpha-beta): it predicts the normal on at its
+estimated rate ``n'`` before each correction, and the rate takes ``rate_gain`` times the
+critically damped share of the correction, so a steadily curving surface is followed without lag,
+and the task frame's rate (the law's curvature term) comes from ``n'``. Below ``min_speed`` [m/s] of
+sliding speed the velocity correction and the friction correction hold.
+
+:func:`estimate_step` is the NumPy statement of one sample (the generated step's reference).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from hybrid.errors import HybridError
+from hybrid.geometry.surfaces import Surface, SurfaceSpec
+
+#: the estimators by name: (weight of the force estimate, of the velocity estimate, friction correction)
+METHODS = {"force": (1.0, 0.0, 1.0), "force_uncorrected": (1.0, 0.0, 0.0), "velocity": (0.0, 1.0, 0.0),
+           "fusion": (1.0, 1.0, 1.0)}
+
+
+@dataclass(frozen=True)
+class EstimatedSurface(Surface):
+    """A surface the controller estimates instead of being told (module docstring for each setting).
+
+    Parameters
+    ----------
+    method : ``"fusion"`` (default), ``"force"``, ``"velocity"`` or ``"force_uncorrected"`` (the force's
+        direction as it is, friction and all: biased by the friction angle).
+    initial_normal : the estimate's start (base axes; made unit), e.g. the normal a drawing gives.
+    force_time_constant, velocity_time_constant : [s], > 0 (the force's at least one sample time).
+    rate_gain : >= 0: 1 the tracker's critically damped rate gain, 0 no rate (a lag on curved parts).
+        Default: 0.5 for ``"fusion"``, 0 for one estimator alone (whose correction sees one direction only:
+        a rate fed by it would turn the estimate about the directions it cannot see).
+    contact_threshold : [N], >= 0: the force estimate holds below it.
+    min_speed : [m/s], >= 0: the velocity estimate and the friction correction hold below it.
+    compliance : [m/N], >= 0: the tool's (and sensor's) compliance between the tip and the contact.
+    """
+
+    method: str = "fusion"
+    initial_normal: tuple[float, float, float] = (0.0, 0.0, 1.0)
+    force_time_constant: float = 0.03
+    velocity_time_constant: float = 0.1
+    rate_gain: float | None = None
+    contact_threshold: float = 1.0
+    min_speed: float = 0.01
+    compliance: float = 0.0
+    kind = "estimated"
+    parameters_named = ("w_force", "w_velocity", "correct_friction", "force_time_constant",
+                        "inverse_velocity_time_constant", "rate_gain", "contact_threshold", "min_speed", "n0_x", "n0_y",
+                        "n0_z", "compliance")
+
+    def __post_init__(self):
+        if not isinstance(self.method, str) or self.method not in METHODS:
+            raise HybridError(f"EstimatedSurface method = {self.method!r:.40}; choose one of {', '.join(METHODS)}")
+        try:
+            n = np.asarray(self.initial_normal, dtype=float)
+        except (TypeError, ValueError):
+            n = np.full(1, np.nan)
+        if n.shape != (3,) or not np.isfinite(n).all() or np.linalg.norm(n) < 1e-9:
+            raise HybridError(f"EstimatedSurface initial_normal = {self.initial_normal!r:.60}; give a nonzero "
+                              "direction (3 finite numbers, base axes) from the surface towards the robot")
+        object.__setattr__(self, "initial_normal", tuple(float(v) for v in n / np.linalg.norm(n)))
+        if self.rate_gain is None:
+            object.__setattr__(self, "rate_gain", 0.5 if self.method == "fusion" else 0.0)
+        for name, positive in (("force_time_constant", True), ("velocity_time_constant", True),
+                               ("rate_gain", False),
+                               ("contact_threshold", False), ("min_speed", False), ("compliance", False)):
+            value = getattr(self, name)
+            ok = not isinstance(value, bool) and isinstance(value, (int, float, np.integer, np.floating)) \
+                and np.isfinite(value) and (value > 0 if positive else value >= 0)
+            if not ok:
+                raise HybridError(f"EstimatedSurface {name} = {value!r:.40}; give a finite number "
+                                  f"{'> 0' if positive else '>= 0'}")
+            object.__setattr__(self, name, float(value))
+
+    def spec(self) -> SurfaceSpec:
+        return SurfaceSpec(self.kind, self.parameters_named, estimated=True)
+
+    def as_array(self) -> np.ndarray:
+        """The tuning as the generated step reads it (:data:`parameters_named`)."""
+        w_force, w_velocity, correct = METHODS[self.method]
+        return np.array([w_force, w_velocity, correct, self.force_time_constant, 1.0 / self.velocity_time_constant,
+                         self.rate_gain,
+                         self.contact_threshold, self.min_speed, *self.initial_normal, self.compliance])
+
+    def normal_at(self, p):
+        raise HybridError("an EstimatedSurface has no normal of its own: the controller estimates it; give the "
+                          "experiment the true surface (the plant's), and this one as controller_surface")
+
+    def check_sampling(self, sample_time: float) -> None:
+        """Refuse time constants shorter than the sample time (the discrete estimate would overshoot)."""
+        for name in ("force_time_constant",):
+            if getattr(self, name) < sample_time:
+                raise HybridError(f"EstimatedSurface {name} = {getattr(self, name):g} s is shorter than the sample "
+                                  f"time {sample_time:g} s; give at least one sample time")
+
+
+def estimate_step(state: np.ndarray, tuning: np.ndarray, F, v, T: float) -> np.ndarray:
+    """One sample of the estimator (module docstring) in NumPy: the state ``(n, n', F, started)`` after it,
+    from the contact force ``F`` on the robot and the tip velocity ``v`` [base axes], ``tuning`` an
+    :class:`EstimatedSurface`'s ``as_array()`` and ``T`` the sample time [s]."""
+    w_force, w_velocity, correct, tau_f, inv_tau_v, rate_gain, f_min, v_min = tuning[:8]
+    compliance = tuning[11]
+    alpha = 1 - np.exp(-T / tau_f)
+    kappa = rate_gain * alpha / (2 - alpha)
+    started = state[9] != 0
+    F, v = np.asarray(F, float), np.asarray(v, float)
+    rate = state[3:6] if started else np.zeros(3)
+    m = (state[:3] if started else tuning[8:11]) + T * rate
+    n_pred = m / np.linalg.norm(m)
+    # the contact point's velocity: the tip's and the tool's deflection's rate
+    if started:
+        v = v + compliance * (F - state[6:9]) / T
+    vn = n_pred @ v
+    v_t = v - vn * n_pred
+    speed = np.linalg.norm(v_t)
+    moving = speed > v_min
+    v_hat = v_t / speed if moving else v_t
+    F_perp = F - correct * moving * (F @ v_hat) * v_hat
+    magnitude = np.linalg.norm(F_perp)
+    touching = magnitude > f_min
+    n_force = F_perp / magnitude if touching else F_perp
+    d = w_force * touching * alpha * (n_force - n_pred)
+    if moving:
+        d = d - w_velocity * inv_tau_v * T * vn / (speed * speed) * v_t
+    m = n_pred + d
+    n = m / np.linalg.norm(m)
+    rate = rate + kappa / T * (d - (d @ n) * n)
+    return np.concatenate([n, rate - (rate @ n) * n, F, [1.0]])

@@ -1,0 +1,186 @@
+"""A surface the controller is not told: its normal estimated online, in the control step.
+
+References: synthetic contact data written here from the physics (a normal force and Coulomb friction
+against the sliding velocity, the velocity tangent to the surface), the NumPy statement of the estimator
+(against the compiled step), the true surface's normal at the contact point (closed loop), and the
+controller told the exact surface.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import hybrid
+from hybrid.control.estimation import estimate_step
+
+
+def _angle(a, b) -> float:
+    a, b = np.asarray(a, float) / np.linalg.norm(a), np.asarray(b, float) / np.linalg.norm(b)
+    return float(np.arctan2(np.linalg.norm(np.cross(a, b)), a @ b))
+
+
+def _turned(n, degrees: float):
+    """``n`` turned by ``degrees`` about an axis orthogonal to it."""
+    t1, _ = _tangents(n)
+    return np.cos(np.radians(degrees)) * n + np.sin(np.radians(degrees)) * t1
+
+
+def _tangents(n):
+    t = np.cross(n, [0.3, -0.5, 0.8])
+    t /= np.linalg.norm(t)
+    return t, np.cross(n, t)
+
+
+def synthetic(n, friction: float, samples: int, T: float = 0.01, speed: float = 0.1, N: float = 10.0,
+              period: float = 0.8):
+    """``(F, v)`` of a tool sliding on a surface of normal ``n`` along a direction turning in the tangent
+    plane once a ``period`` [s] (a circle on a plane, or at one point of a sphere; ``inf``: a straight
+    line): ``F = N n - friction N v / |v|``."""
+    t1, t2 = _tangents(n)
+    out = []
+    for k in range(samples):
+        phase = 2 * np.pi * k * T / period
+        u = np.cos(phase) * t1 + np.sin(phase) * t2
+        out.append((N * n - friction * N * u, speed * u))
+    return out
+
+
+def run_estimator(est, data, T: float = 0.01):
+    state, tuning = np.zeros(10), est.as_array()
+    for F, v in data:
+        state = estimate_step(state, tuning, F, v, T)
+    return state
+
+
+NORMALS = {"plane": np.array([0.0, 0.0, 1.0]), "sphere point": np.array([0.48, -0.36, 0.8])}
+
+
+@pytest.mark.parametrize("where", list(NORMALS))
+@pytest.mark.parametrize("method", ["force", "velocity", "fusion"])
+def test_a_stationary_estimator_converges_to_the_normal(where, method):
+    n = NORMALS[where]
+    t1, t2 = _tangents(n)
+    start = n + 0.2 * t1 - 0.15 * t2  # about 14 degrees off
+    est = hybrid.EstimatedSurface(method=method, initial_normal=start)
+    state = run_estimator(est, synthetic(n, 0.3, 1500))
+    assert _angle(state[:3], n) < 1e-6
+    np.testing.assert_allclose(state[3:6], 0.0, atol=1e-5)  # the rate of a normal at rest
+
+
+@pytest.mark.parametrize("friction", [0.1, 0.3, 0.5])
+def test_friction_biases_the_force_direction_and_not_the_corrected_estimate(friction):
+    n = NORMALS["plane"]
+    data = synthetic(n, friction, 1500, period=np.inf)  # a straight line: the friction keeps its direction
+    t1, t2 = _tangents(n)
+    raw = run_estimator(hybrid.EstimatedSurface(method="force_uncorrected", initial_normal=n), data)
+    assert _angle(raw[:3], n) == pytest.approx(np.arctan(friction), abs=1e-9)
+    assert raw[:3] @ t1 < 0  # tilted against the motion, as the friction
+    # the corrected force sees a tilt about the motion (t2) and not along it: the velocity does
+    across = run_estimator(hybrid.EstimatedSurface(method="force", initial_normal=_turned(n, 0) + 0.2 * t2), data)
+    assert _angle(across[:3], n) < 1e-6
+    fused = run_estimator(hybrid.EstimatedSurface(initial_normal=n + 0.2 * t1 + 0.1 * t2), data)
+    assert _angle(fused[:3], n) < 1e-6
+
+
+def test_a_loss_of_contact_holds_the_estimate():
+    n = NORMALS["sphere point"]
+    est = hybrid.EstimatedSurface(method="force", initial_normal=n)
+    data = synthetic(n, 0.2, 300)
+    state = run_estimator(est, data)
+    # no force (contact lost) and no motion: the estimate stays where it was
+    held = state
+    for _ in range(50):
+        held = estimate_step(held, est.as_array(), np.zeros(3), np.zeros(3), 0.01)
+    assert _angle(held[:3], state[:3]) < 1e-6
+
+
+def test_the_step_estimates_as_the_numpy_statement(rng):
+    exp = hybrid.tracing_experiment(duration=0.4)
+    r = hybrid.simulate(exp)
+    plant, base = exp.plant(), exp.build_controller()
+    est = hybrid.EstimatedSurface(initial_normal=(0.2, 0.1, 1.0), compliance=1e-3)
+    ctrl = hybrid.Controller(base.robot, est, base.scheme, axes=base.axes, selection=("n",), gains=exp.gains,
+                             force_reference=exp.force_reference, velocity_reference=exp.speed_reference,
+                             sample_time=exp.sample_time)
+    state = np.zeros(10)
+    for k in range(exp.n_samples):
+        x = r.state[k * exp.steps_per_sample]
+        F = plant.sensor_wrench(x) + rng.normal(0, 0.3, 6)
+        v = (hybrid.arm_terms(base.robot, x[:6], x[6:12])["J"] @ x[6:12])[:3]
+        ctrl(k * exp.sample_time, x[:6], x[6:12], F)
+        state = estimate_step(state, est.as_array(), F[:3], v, exp.sample_time)
+        np.testing.assert_allclose(ctrl.normal, state[:3], atol=1e-12)
+        np.testing.assert_array_equal(ctrl.last["contact_wrench"], F)  # no sensor: the wrench as given
+
+
+def _cylinder_run(**kw):
+    sphere_start = hybrid.tracing_experiment().initial_state()[12:15]
+    d = sphere_start[:2] - np.array([0.5, 0.0])
+    d /= np.linalg.norm(d)
+    return dict(surface=hybrid.Cylinder((0.5, 0.0, 0.2), (0, 0, 1), 0.13),
+                start_point=(0.5 + 0.13 * d[0], 0.13 * d[1], sphere_start[2]), **kw)
+
+
+@pytest.mark.parametrize("surface", ["sphere", "cylinder"])
+def test_closed_loop_on_a_surface_the_controller_is_not_told(surface):
+    kw = _cylinder_run() if surface == "cylinder" else {}
+    exact = hybrid.tracing_experiment(v_d=0.15, **kw)
+    start = exact.initial_state()[12:15]
+    told = hybrid.simulate(exact)
+    est = hybrid.EstimatedSurface(initial_normal=_turned(exact.surface.normal_at(start), 8.0),
+                                  compliance=1 / exact.sensor.stiffness)
+    res = hybrid.simulate(hybrid.tracing_experiment(v_d=0.15, controller_surface=est, **kw))
+    err = res.normal_angle_error_deg
+    assert err[0] > 5.0  # it started off
+    assert err[res.sample_t >= 0.5].max() < 2.0
+    assert res.metrics["rms_force_error_N"] <= 1.5 * told.metrics["rms_force_error_N"]
+    assert res.metrics["contact_losses"] == 0
+    assert res.metrics["max_normal_angle_error_deg"] == pytest.approx(err[res.sample_t >= 0.5].max())
+    # a controller told a flat plane through the start does far worse
+    flat = hybrid.Plane(tuple(start), tuple(exact.surface.normal_at(start)))
+    try:
+        wrong = hybrid.simulate(hybrid.tracing_experiment(v_d=0.15, controller_surface=flat, duration=1.0, **kw))
+        assert wrong.metrics["rms_force_error_N"] > 3 * res.metrics["rms_force_error_N"]
+    except hybrid.SimulationError:
+        pass  # or it loses the surface altogether
+
+
+def test_the_standalone_c_estimates_as_python(tmp_path):
+    from test_standalone_controller import CController
+
+    exp = hybrid.tracing_experiment(duration=0.3)
+    base = exp.build_controller()
+    est = hybrid.EstimatedSurface(initial_normal=(0.2, 0.1, 1.0), compliance=1e-3)
+    py = hybrid.Controller(base.robot, est, selection=("n",), gains=exp.gains, force_reference=exp.force_reference,
+                           velocity_reference=exp.speed_reference)
+    py.generate(tmp_path, "ur5est")
+    c = CController(tmp_path, "ur5est")
+    r = hybrid.simulate(exp)
+    plant = exp.plant()
+    for k in range(exp.n_samples):
+        x = r.state[k * exp.steps_per_sample]
+        F = plant.sensor_wrench(x)
+        tau = py(k * exp.sample_time, x[:6], x[6:12], F)
+        status, tau_c = c.step(k * exp.sample_time, x[:6], x[6:12], F)
+        assert status == 0
+        np.testing.assert_allclose(tau_c, tau, rtol=1e-12, atol=1e-12 * np.abs(tau).max())
+        np.testing.assert_allclose(list(c.c.estimate)[:3], py.normal, atol=1e-13)
+
+
+def test_bad_estimators_are_refused():
+    for kw, match in (({"initial_normal": (0, 0, 0)}, "initial_normal"), ({"initial_normal": (np.nan, 0, 1)},
+                      "initial_normal"), ({"method": "magic"}, "method"), ({"force_time_constant": 0.0},
+                      "force_time_constant"), ({"velocity_time_constant": -1.0}, "velocity_time_constant"),
+                      ({"compliance": -1e-3}, "compliance"), ({"rate_gain": float("inf")}, "rate_gain")):
+        with pytest.raises(hybrid.HybridError, match=match):
+            hybrid.EstimatedSurface(**kw)
+    est = hybrid.EstimatedSurface()
+    with pytest.raises(hybrid.HybridError, match="frame='actual'"):
+        hybrid.Controller(hybrid.ur5(), est, frame="desired", path=lambda t: (np.zeros(3), np.zeros(3)))
+    with pytest.raises(hybrid.HybridError, match="sample time"):
+        hybrid.Controller(hybrid.ur5(), hybrid.EstimatedSurface(force_time_constant=0.001), sample_time=0.01)
+    with pytest.raises(hybrid.HybridError, match="frame='actual'"):
+        hybrid.tracing_experiment(controller_surface=est, frame="desired")
+    with pytest.raises(hybrid.HybridError, match="controller_surface"):
+        hybrid.tracing_experiment(controller_surface="sphere")
