@@ -509,6 +509,7 @@ def controller_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool,
                       timing_tolerance=None)
     q = np.array([0.3, -1.0, 1.2, -0.4, 1.1, 0.2, 0.5][:robot.n])
     qd, Fc = np.full(robot.n, 0.1), np.array([1.0, 2.0, 3.0, 0.0, 0.0, 0.0])
+    ctrl._native()  # a controller builds its step at its first sample: built here, not timed
     step = ctrl._step  # the function the controller binds
     m = len(ctrl.axes)
     values = {"q": q, "qd": qd, "Fc": Fc, "integrals": np.zeros(2 * m), "last_torque": np.zeros(robot.n + 1),
