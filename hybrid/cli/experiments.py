@@ -31,15 +31,14 @@ SCHEMES = ("task", "khatib", "raibert_craig")
 PRODUCTS = ("metrics.json", "metrics.csv", *(f"{c}.{ext}" for c in SCHEMES for ext in ("npz", "csv")))
 
 
-PAPER = ("Compare the schemes on the paper's experiment. The task law, Khatib's scheme "
-         "and Raibert & Craig's on the paper's planar arm pressing on a disc and sliding along it "
-         "(docs/conventions.md section 5): Figures 5-8 of the paper and an overlay of the three schemes, the "
-         "metrics as a table (printed, metrics.json, metrics.csv) and each run's time series (NAME.npz, "
-         "NAME.csv) in --out.")
-TRACE = ("Compare the schemes on the 3-D experiment (UR5, sphere). The task law, Khatib's scheme and "
-         "Raibert & Craig's on the UR5 tracing a latitude circle on a sphere (docs/conventions.md section 10): "
-         "speed and force, the path as its deviation from the desired one and the penetration, the metrics and "
-         "each run's time series in --out.")
+PAPER = ("Compare the schemes on the paper's experiment. Runs the task law, Khatib's scheme and Raibert & Craig's "
+         "on the paper's planar arm pressing on a disc and sliding along it (docs/conventions.md section 5) and "
+         "writes into --out Figures 5-8 of the paper and an overlay of the three schemes, the metrics (printed as "
+         "a table, metrics.json, metrics.csv) and each run's time series (SCHEME.npz, SCHEME.csv).")
+TRACE = ("Compare the schemes on the 3-D experiment (UR5, sphere). Runs the task law, Khatib's scheme and "
+         "Raibert & Craig's on the UR5 tracing a latitude circle on a sphere (docs/conventions.md section 10) "
+         "and writes into --out their speed and force, their paths (in space, and as the deviation from the "
+         "desired path, with the penetration), the metrics and each run's time series.")
 
 
 def add_parser(sub) -> None:

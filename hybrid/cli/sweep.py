@@ -272,16 +272,22 @@ def run(args) -> int:
     if unknown:
         raise HybridError(f"[sweep]: unknown {', '.join(unknown)}{common.did_you_mean(unknown[0], ('samples', 'seed'))}"
                           "; it takes samples and seed")
+    drawn = [k for k, v in parameters.items() if not isinstance(v, list)]
+    if drawn and "samples" not in options:
+        raise HybridError(f"[parameters] {drawn[0]} draws random values: it needs samples = N in [sweep] (the number "
+                          "of draws), or a list of values")
     check_figures(config.get("figures"), parameters, sw.metric_names(base))
     out = Path(args.out)
     report.detail(f"sweeping {path} into {out} ({args.engine} engine)")
     table = sweep(base, parameters, samples=options.get("samples"), seed=options.get("seed", 0),
                   engine=args.engine, client=args.scheduler, out=out, workers=args.workers, csv=args.csv,
                   force=args.force, progress=True, connect_timeout=args.connect_timeout)
-    with report.step(f"drawing the heatmaps ({', '.join(args.format)})"):
-        written = sweep_heatmaps(table, config.get("figures"), out, formats=tuple(args.format))
-        for figure in written:
-            report.detail(f"  wrote {figure}")
+    written = []
+    if config.get("figures"):
+        with report.step(f"drawing the heatmaps ({', '.join(args.format)})"):
+            written = sweep_heatmaps(table, config["figures"], out, formats=tuple(args.format))
+            for figure in written:
+                report.detail(f"  wrote {figure}")
     counts = table["status"].value_counts().to_dict()
     print(f"{len(table)} runs ({', '.join(f'{n} {s}' for s, n in counts.items())}); wrote results.parquet"
           f"{', results.csv' if args.csv else ''} and {len(written)} figure files to {out}")
