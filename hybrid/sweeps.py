@@ -481,7 +481,7 @@ def _describe(base, parameters: Mapping, samples, seed) -> dict:
 
 
 #: what a sweep writes into its folder besides ``parts/`` (``heatmap_*``: the command's figures)
-OUTPUTS = ("sweep.json", "results.parquet", "results.csv", "heatmap_*.png")
+OUTPUTS = ("sweep.json", "results.parquet", "results.csv", "heatmap_*.png", "heatmap_*.pdf", "heatmap_*.svg")
 PART = "part-*.parquet"
 STATUSES = ("ok", "failed", "invalid", "error")
 
