@@ -1,3 +1,3 @@
 from hybrid.cli.main import main
 
-raise SystemExit(main())
+raise SystemExit(main(prog="python -m hybrid"))

@@ -21,6 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from hybrid import files, reference
+from hybrid.cli import common
 from hybrid.control.controller import Controller
 from hybrid.control.law import decoupling_law
 from hybrid.control.references import Step
@@ -424,12 +425,17 @@ def format_table(report: dict) -> str:
     return "\n".join(lines)
 
 
+DESCRIPTION = ("Time the generated law, the runner and alternatives. Medians over repeated runs, with "
+               "ratios computed within the same run and each target said met or missed; timings are information, "
+               "never pass/fail. Takes minutes (--quick: fewer repeats and a shorter experiment).")
+
+
 def add_parser(sub) -> None:
-    p = sub.add_parser("bench", help="time the generated law, the runner and the alternatives")
+    p = common.command(sub, "bench", DESCRIPTION, _run)
     p.add_argument("--quick", action="store_true", help="fewer repeats, a shorter experiment")
-    p.add_argument("--json", help="also write the results as JSON to this file")
+    p.add_argument("--json", metavar="FILE", help="also write the results as JSON to this file")
     p.add_argument("--force", action="store_true", help="let --json replace an existing file")
-    p.set_defaults(func=_run)
+    common.add_verbose(p)
 
 
 def _run(args) -> int:

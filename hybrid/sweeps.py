@@ -481,7 +481,7 @@ def _describe(base, parameters: Mapping, samples, seed) -> dict:
 
 
 #: what a sweep writes into its folder besides ``parts/`` (``heatmap_*``: the command's figures)
-OUTPUTS = ("sweep.json", "results.parquet", "results.csv", "heatmap_*.png")
+OUTPUTS = ("sweep.json", "results.parquet", "results.csv", "heatmap_*.png", "heatmap_*.pdf", "heatmap_*.svg")
 PART = "part-*.parquet"
 STATUSES = ("ok", "failed", "invalid", "error")
 
@@ -661,7 +661,8 @@ def sweep(base, parameters: Mapping, *, samples: int | None = None, seed: int = 
 
     Parameters
     ----------
-    base : :class:`hybrid.Experiment` or :class:`hybrid.TracingExperiment`.
+    base : :class:`hybrid.Experiment`
+        What every run starts from, e.g. ``hybrid.paper_experiment()``.
     parameters : ``{setting name: values}`` (a mapping): a list (a full grid over the lists) or a
         distribution (:class:`Uniform`, :class:`LogUniform`, :class:`Normal`, drawn ``samples`` times).
         Names are the experiment's fields, the gains (``KPf``), ``F_d``/``v_d``, or dotted paths

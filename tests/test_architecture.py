@@ -40,6 +40,7 @@ REFUSAL = "error: regenerate needs a checkout of the project's repository"
 LAZY_IMPORTS = {
     ("hybrid.cli.experiments", "hybrid.plots"): "matplotlib loads only for the commands that draw",
     ("hybrid.cli.sweep", "hybrid.plots"): "matplotlib loads only when a sweep draws its heatmaps",
+    ("hybrid.simulation.results", "hybrid.plots"): "matplotlib loads only when a result is drawn (res.plot())",
     ("hybrid.plants.interface", "hybrid.plants.mujoco"): "MuJoCo is an optional extra: it loads when a run asks",
     ("hybrid.experiments.experiment", "hybrid.geometry.implicit"):
         "SymPy loads only when a file names a surface a user wrote down",

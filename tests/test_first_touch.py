@@ -197,9 +197,13 @@ def test_the_readme_example_runs_and_gives_the_studys_numbers():
 
 
 def test_the_figure_of_the_touch_is_drawn(tmp_path):
-    from hybrid.plots import first_touch_figure
+    from hybrid.plots import plot_first_touch, save
 
     runs = {"free": hybrid.simulate(touching("paper", duration=0.3)),
             "never": hybrid.simulate(touching("paper", duration=0.05))}  # a run that never touches is left out
-    path = first_touch_figure(runs, tmp_path / "touch.png")
+    fig = plot_first_touch(runs, "a touch")
+    assert [ax.get_ylabel() for ax in fig.axes] == ["measured normal force [N]",
+                                                    "surface's normal force\non the sensor tip [N]"]
+    assert [ln.get_label() for ln in fig.axes[1].get_lines()] == ["free"]
+    path = save(fig, tmp_path / "touch")[0]
     assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

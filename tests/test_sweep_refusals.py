@@ -141,7 +141,7 @@ def test_a_closed_client_a_client_for_local_and_a_bad_timeout_are_refused():
     (["--engine", "dask", "--scheduler", CLOSED, "--connect-timeout", "1"], "within 1 s"),
     (["--engine", "dask", "--scheduler", "nonsense"], "is not one"),
     (["--scheduler", CLOSED], "--scheduler is for --engine dask"),
-    (["--engine", "dask", "--scheduler", CLOSED, "--connect-timeout", "nan"], "connect_timeout"),
+    (["--engine", "dask", "--scheduler", CLOSED, "--connect-timeout", "nan"], "argument --connect-timeout"),
 ])
 def test_cli_dask_failures_are_one_line(tmp_path, extra, words):
     pytest.importorskip("dask.distributed")

@@ -14,7 +14,9 @@ except ModuleNotFoundError:  # Python 3.10
     import tomli as tomllib
 
 from hybrid import files
+from hybrid.cli import common
 from hybrid.cli.sweep import _base as factory_experiment
+from hybrid.cli.sweep import setting_names
 from hybrid.errors import HybridError
 from hybrid.experiments import FACTORIES
 from hybrid.experiments.experiment import BACKENDS
@@ -29,19 +31,32 @@ SCHEMES = ("task", "khatib", "raibert_craig")
 PRODUCTS = ("metrics.json", "metrics.csv", *(f"{c}.{ext}" for c in SCHEMES for ext in ("npz", "csv")))
 
 
+PAPER = ("Compare the schemes on the paper's experiment. Runs the task law, Khatib's scheme and Raibert & Craig's "
+         "on the paper's planar arm pressing on a disc and sliding along it (docs/conventions.md section 5) and "
+         "writes into --out Figures 5-8 of the paper and an overlay of the three schemes, the metrics (printed as "
+         "a table, metrics.json, metrics.csv) and each run's time series (SCHEME.npz, SCHEME.csv).")
+TRACE = ("Compare the schemes on the 3-D experiment (UR5, sphere). Runs the task law, Khatib's scheme and "
+         "Raibert & Craig's on the UR5 tracing a latitude circle on a sphere (docs/conventions.md section 10) "
+         "and writes into --out their speed and force, their paths (in space, and as the deviation from the "
+         "desired path, with the penetration), the metrics and each run's time series.")
+
+
 def add_parser(sub) -> None:
-    p = sub.add_parser("paper", help="run the schemes on the paper's experiment; write figures and metrics")
-    t = sub.add_parser("trace", help="run the schemes on the 3-D experiment (UR5 on a sphere, conventions §10); "
-                                     "write figures and metrics")
+    p = common.command(sub, "paper", PAPER, run_paper)
+    t = common.command(sub, "trace", TRACE, run_trace)
     for q in (p, t):
-        q.add_argument("--out", required=True, help="folder for figures, metrics and time series")
+        q.add_argument("--out", required=True, metavar="DIR", help="folder for figures, metrics and time series")
         q.add_argument("--force", action="store_true", help="overwrite earlier results in --out")
-        q.add_argument("--no-integral", dest="integral", action="store_false", help="drop the integral terms")
+        q.add_argument("--no-integral", dest="integral", action="store_false",
+                       help="drop the integral terms (KI2v = KIf = 0)")
         q.add_argument("--curvature", action="store_true", help="give every scheme the curvature term R'")
+        q.add_argument("--no-series", dest="series", action="store_false",
+                       help="write metrics and figures only, no time series (.npz, .csv)")
+        common.add_format(q)
+        common.add_verbose(q)
     p.add_argument("--backend", default="sympy", choices=BACKENDS,
-                   help="which committed unit (two derivations of the same equations) runs the plant and the law")
-    p.set_defaults(func=run_paper)
-    t.set_defaults(func=run_trace)
+                   help="which committed unit (two derivations of the same equations) runs the plant and the law "
+                        "(default: sympy)")
 
 
 def prepare_out(out: Path, force: bool) -> None:
@@ -49,7 +64,8 @@ def prepare_out(out: Path, force: bool) -> None:
     earlier results unless ``force``."""
     if out.exists() and not out.is_dir():
         raise HybridError(f"--out {out} is an existing file; give a folder (nothing was written)")
-    clash = [n for n in PRODUCTS if (out / n).exists()] + sorted(p.name for p in out.glob("*.png"))
+    figures = sorted(p.name for ext in common.FORMATS for p in out.glob(f"*.{ext}"))
+    clash = [n for n in PRODUCTS if (out / n).exists()] + figures
     if clash and not force:
         raise HybridError(f"--out {out} already holds results ({', '.join(clash[:3])}...); "
                           "choose another folder or pass --force to overwrite them")
@@ -66,12 +82,26 @@ def format_table(metrics: dict[str, dict]) -> str:
     return "\n".join(lines)
 
 
-def write_comparison(results: dict, out: Path, figures) -> None:
-    """Time series, metrics (JSON and CSV) and ``figures(results, out)``; every file atomic, so an
-    interrupted run leaves whole files or none."""
-    for scheme, res in results.items():
-        res.save(out / f"{scheme}.npz", overwrite=True)
-        res.save_csv(out / f"{scheme}.csv", overwrite=True)
+def run_schemes(what: str, make, report) -> dict:
+    """``{scheme: simulate(make(scheme))}`` for every scheme of :data:`SCHEMES`, told as one step."""
+    results = {}
+    with report.step(f"running {what}: {', '.join(SCHEMES)}"):
+        for scheme in SCHEMES:
+            results[scheme] = simulate(make(scheme))
+            report.detail(f"  {scheme}: {len(results[scheme].t):,} integration steps")
+    return results
+
+
+def write_comparison(results: dict, out: Path, figures, args) -> None:
+    """Time series (unless ``--no-series``), metrics (JSON and CSV) and ``figures(results, out,
+    formats)``; every file atomic, so an interrupted run leaves whole files or none."""
+    report = args.report
+    if args.series:
+        with report.step("writing the time series (.npz, .csv)"):
+            for scheme, res in results.items():
+                for path in (res.save(out / f"{scheme}.npz", overwrite=True),
+                             res.save_csv(out / f"{scheme}.csv", overwrite=True)):
+                    report.detail(f"  wrote {path} ({path.stat().st_size / 2**20:.1f} MiB)")
     metrics = {c: r.metrics for c, r in results.items()}
     files.write_text(out / "metrics.json", json.dumps(metrics, indent=2) + "\n", overwrite=True)
     table = io.StringIO()
@@ -80,9 +110,13 @@ def write_comparison(results: dict, out: Path, figures) -> None:
     for name in next(iter(metrics.values())):
         w.writerow([name, *(metrics[c][name] for c in metrics)])
     files.write_text(out / "metrics.csv", table.getvalue(), overwrite=True)
-    written = figures(results, out)
+    with report.step(f"drawing the figures ({', '.join(args.format)})"):
+        written = figures(results, out, formats=tuple(args.format))
+        for path in written:
+            report.detail(f"  wrote {path}")
     print(format_table(metrics))
-    print(f"\nwrote {len(written)} figures, metrics.json/csv and time series (.npz, .csv) to {out}")
+    series = " and time series (.npz, .csv)" if args.series else ""
+    print(f"\nwrote {len(written)} figure files, metrics.json/csv{series} to {out}")
 
 
 def run_paper(args) -> int:
@@ -90,9 +124,9 @@ def run_paper(args) -> int:
 
     out = Path(args.out)
     prepare_out(out, args.force)
-    results = {c: simulate(paper_experiment(controller=c, integral=args.integral, curvature=args.curvature,
-                                            backend=args.backend)) for c in SCHEMES}
-    write_comparison(results, out, paper_figures)
+    results = run_schemes("the paper's experiment", lambda c: paper_experiment(
+        controller=c, integral=args.integral, curvature=args.curvature, backend=args.backend), args.report)
+    write_comparison(results, out, paper_figures, args)
     return 0
 
 
@@ -101,9 +135,9 @@ def run_trace(args) -> int:
 
     out = Path(args.out)
     prepare_out(out, args.force)
-    results = {c: simulate(tracing_experiment(controller=c, integral=args.integral, curvature=args.curvature))
-               for c in SCHEMES}
-    write_comparison(results, out, trace_figures)
+    results = run_schemes("the 3-D experiment", lambda c: tracing_experiment(
+        controller=c, integral=args.integral, curvature=args.curvature), args.report)
+    write_comparison(results, out, trace_figures, args)
     return 0
 
 
@@ -142,9 +176,17 @@ def experiment_of(kind: str, settings: list[str]):
     twice = sorted({k for k in names if names.count(k) > 1})
     if twice:
         raise HybridError(f"--set {twice[0]} is given twice; give each setting once")
-    exp = factory_experiment(kind, {k: v for k, v in pairs if "." not in k})
+    exp = factory_experiment(kind, {k: v for k, v in pairs if "." not in k}, where="--set")
     dotted = {k: v for k, v in pairs if "." in k}
-    return apply(exp, dotted) if dotted else exp
+    if not dotted:
+        return exp
+    names = setting_names(exp)
+    wrong = [k for k in dotted if k not in names]
+    if wrong:
+        raise HybridError(f"--set {wrong[0]}: unknown setting of the {kind} experiment"
+                          f"{common.did_you_mean(wrong[0], names)}; give a dotted path into one of its settings "
+                          "(contact.friction, gains.KPf, force_reference.after)")
+    return apply(exp, dotted)
 
 
 def run_generate(args) -> int:
@@ -154,6 +196,7 @@ def run_generate(args) -> int:
         raise HybridError(f"--experiment writes an experiment's controller and plant; {', '.join(given)} name a URDF "
                           "arm's kernels: give one or the other")
     exp = experiment_of(args.experiment, args.settings)
-    written = exp.generate(args.out, args.name, force=args.force)
+    with args.report.step(f"generating the {args.experiment} experiment's controller and plant as C"):
+        written = exp.generate(args.out, args.name, force=args.force)
     print("wrote " + ", ".join(str(p) for p in written))
     return 0

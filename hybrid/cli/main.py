@@ -1,4 +1,5 @@
-"""Command line: ``python -m hybrid {regenerate,generate,paper,bench}``.
+"""The command line, ``hybrid COMMAND`` or ``python -m hybrid COMMAND``: every command and its
+options are in ``--help``.
 
 Bad usage or input prints one line on stderr and exits with status 2 (``--debug`` shows
 the traceback).
@@ -7,11 +8,14 @@ the traceback).
 from __future__ import annotations
 
 import argparse
+import os
+import re
 import sys
 import traceback
 from pathlib import Path
 
 from hybrid import bench
+from hybrid.cli import common, progress
 from hybrid.cli import experiments as experiment_cli
 from hybrid.cli import sweep as sweep_cli
 from hybrid.control.config import read_controller_config
@@ -24,7 +28,12 @@ from hybrid.native.units import generator
 
 class _Parser(argparse.ArgumentParser):
     def error(self, message):  # one line, status 2, like every other bad input
-        raise HybridError(f"{self.prog}: {message} (see --help)")
+        if re.search(r"arguments are required: COMMAND$", message):
+            commands = next(a for a in self._actions if isinstance(a, argparse._SubParsersAction))
+            raise HybridError(f"{self.prog}: give a command ({', '.join(commands.choices)}; see {self.prog} --help)")
+        choice = re.search(r"invalid choice: '([^']*)' \(choose from (.*)\)", message)
+        hint = common.did_you_mean(choice.group(1), re.findall(r"'([^']*)'", choice.group(2))) if choice else ""
+        raise HybridError(f"{self.prog}: {message}{hint} (see {self.prog} --help)")
 
 
 def _regenerate(args) -> int:
@@ -74,51 +83,64 @@ def _generate(args) -> int:
         raise HybridError("generate needs --urdf and --tip (a URDF arm's kernels or, with --controller, its "
                           "controller), or --experiment")
     if args.controller is None:
-        written = generate(args.urdf, args.tip, args.out, args.name, dict(args.lock) or None, force=args.force)
+        with args.report.step(f"generating C99 for the arm of {args.urdf}"):
+            written = generate(args.urdf, args.tip, args.out, args.name, dict(args.lock) or None, force=args.force)
     else:  # the controller the file describes, for this arm
-        robot = Robot.from_urdf(args.urdf, args.tip, locked=dict(args.lock) or None)
-        written = read_controller_config(args.controller, robot).generate(args.out, args.name, force=args.force)
+        with args.report.step(f"generating C99 for the controller of {args.controller}"):
+            robot = Robot.from_urdf(args.urdf, args.tip, locked=dict(args.lock) or None)
+            written = read_controller_config(args.controller, robot).generate(args.out, args.name, force=args.force)
     print("wrote " + ", ".join(str(p) for p in written))
     return 0
 
 
-def build_parser() -> argparse.ArgumentParser:
-    p = _Parser(prog="python -m hybrid", description=__doc__.split("\n\n")[0])
-    p.add_argument("--debug", action="store_true", help="show tracebacks")
-    sub = p.add_subparsers(dest="command", required=True, parser_class=_Parser)
+DESCRIPTION = """\
+Task-space decoupling hybrid force/velocity control (De Luca & Manes): the schemes compared on the
+paper's experiment and on a 3-D one, parameter sweeps, standalone C for your robot and its
+controller, and benchmarks."""
 
-    r = sub.add_parser(
-        "regenerate", help="rewrite generated/ from the symbolic models (in a checkout)",
-        description="Rewrite generated/ of a checkout of the project's repository from codegen/. An installed "
-                    "package has no generated/ of its own to rewrite, so there it refuses unless --target names "
-                    "a folder.")
+EPILOG = """\
+Run '{prog} COMMAND --help' for a command's options. Bad usage or input prints one line on stderr
+and exits with status 2 (--debug shows the traceback)."""
+
+REGENERATE = ("Rewrite generated/ from codegen/ (in a checkout). Rewrites generated/ of a checkout of the "
+              "project's repository from the symbolic models in codegen/, deterministically. An installed "
+              "package has no generated/ of its own to rewrite, so there it refuses unless --target names a "
+              "folder.")
+GENERATE = ("Write standalone C99 for a URDF arm or an experiment. The files are NAME.c, NAME.h and the "
+            "manifest NAME.json. With --urdf and --tip: the terms of a URDF arm's model; with --controller "
+            "too, the hybrid controller a TOML file describes for it; with --experiment, an experiment's "
+            "controller and plant (a closed loop in C alone).")
+
+
+def build_parser(prog: str = "hybrid") -> argparse.ArgumentParser:
+    p = _Parser(prog=prog, description=DESCRIPTION, epilog=EPILOG.format(prog=prog),
+                formatter_class=common.HelpFormatter)
+    p.add_argument("--debug", action="store_true", help="show the traceback of an error (and its details)")
+    sub = p.add_subparsers(dest="command", metavar="COMMAND", title="commands", required=True, parser_class=_Parser,
+                           help="the command to run; each has its own --help")
+
+    r = common.command(sub, "regenerate", REGENERATE, _regenerate)
     r.add_argument("--check", action="store_true",
                    help="only compare; exit 1 when a file is missing, stale or edited by hand")
     r.add_argument("--force", action="store_true", help="overwrite generated files edited by hand")
     r.add_argument("--target", metavar="DIR",
                    help="write into (with --check: compare) DIR instead of the checkout's generated/; "
                         "works from an installed package too")
-    r.set_defaults(func=_regenerate)
 
-    g = sub.add_parser("generate", help="write standalone C99 (.c, .h, manifest .json) for a URDF arm, its "
-                                        "controller, or an experiment's controller and plant",
-                       description="Write standalone C99: the terms of a URDF arm's model; with --controller, the "
-                                   "hybrid controller a TOML file describes for it; with --experiment, an "
-                                   "experiment's controller and plant (a closed loop in C alone).")
-    g.add_argument("--urdf", help="the robot's URDF file")
-    g.add_argument("--tip", help="the link that ends the chain (e.g. tool0)")
-    g.add_argument("--out", required=True, help="folder to write into")
-    g.add_argument("--name", help="prefix of the files and C symbols (default: the robot's name)")
+    g = common.command(sub, "generate", GENERATE, _generate)
+    g.add_argument("--urdf", metavar="FILE", help="the robot's URDF file")
+    g.add_argument("--tip", metavar="LINK", help="the link that ends the chain (e.g. tool0)")
+    g.add_argument("--out", required=True, metavar="DIR", help="folder to write into")
+    g.add_argument("--name", metavar="PREFIX", help="prefix of the files and C symbols (default: the robot's name)")
     g.add_argument("--lock", action="append", type=_lock, default=[], metavar="JOINT[=POSITION]",
-                   help="hold this joint at POSITION (default 0); repeatable")
+                   help="hold this joint at POSITION [rad or m] (default 0); repeatable")
     g.add_argument("--controller", metavar="CONFIG.toml",
                    help="write the controller this TOML file describes (surface, scheme, task axes, gains, "
                         "references, limits; see hybrid/data/controller_ur5_sphere.toml) for the arm, in place "
                         "of the arm's terms alone")
     g.add_argument("--force", action="store_true", help="overwrite files with other content")
     experiment_cli.add_generate_arguments(g)
-    g.set_defaults(func=_generate)
-
+    common.add_verbose(g)
 
     experiment_cli.add_parser(sub)
     sweep_cli.add_parser(sub)
@@ -126,17 +148,39 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
-def main(argv: list[str] | None = None) -> int:
+def parse(argv: list[str], prog: str = "hybrid") -> argparse.Namespace:
+    """The command line's arguments; an unknown option is refused naming the command it was given to
+    (and the nearest option that command has)."""
+    parser = build_parser(prog)
+    args, extra = parser.parse_known_args(argv)
+    if extra:
+        commands = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+        command = commands.choices[args.command]
+        options = [o for a in command._actions for o in a.option_strings]
+        hint = common.did_you_mean(extra[0].split("=")[0], options) if extra[0].startswith("-") else ""
+        raise HybridError(f"{command.prog}: unrecognized argument{'s' if len(extra) > 1 else ''} "
+                          f"{' '.join(extra)}{hint} (see {command.prog} --help)")
+    return args
+
+
+def main(argv: list[str] | None = None, prog: str | None = None) -> int:
+    """Run the command line ``argv`` (default ``sys.argv[1:]``); ``prog`` is the program's name in
+    help and errors (default: as invoked, ``hybrid`` when ``argv`` is given)."""
+    if prog is None:
+        prog = os.path.basename(sys.argv[0]) if argv is None and sys.argv and sys.argv[0] else "hybrid"
     argv = sys.argv[1:] if argv is None else argv
     debug = "--debug" in argv
     try:
-        args = build_parser().parse_args(argv)
-        return args.func(args)
+        args = parse(argv, prog)
+        with progress.reporting(getattr(args, "verbose", False)) as report:
+            args.report = report
+            return args.func(args)
     except HybridError as exc:
         if debug:
             traceback.print_exc()
         # one line: the error's first line names the value and the fix; --debug shows the rest
-        print(f"error: {str(exc).splitlines()[0] if str(exc) else type(exc).__name__}", file=sys.stderr)
+        line = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        print(f"error: {common.cli_wording(line)}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)

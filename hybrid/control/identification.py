@@ -43,6 +43,8 @@ SAME_DIRECTION = 1e-6
 class ToolIdentification:
     """What :func:`identify_tool` found.
 
+    Attributes
+    ----------
     bias : the sensor's bias [N, N m] (6, sensor axes, in the sign convention of ``s w``).
     tool : the :class:`~hybrid.Tool` (mass [kg], centre of mass [m] in sensor axes).
     residual_force_N, residual_moment_Nm : the RMS over the poses of the norm of the force and moment

@@ -201,7 +201,7 @@ def Circle(center, radius: float) -> Cylinder:  # noqa: N802  (a constructor, na
 @dataclass(frozen=True)
 class Plane(Surface):
     """A plane through ``point`` [m] with unit ``normal`` pointing towards the robot:
-    ``phi = n . (p - point)``. Two coordinates give the paper's planar line: the vertical plane
+    ``phi = n^T (p - point)``. Two coordinates give the paper's planar line: the vertical plane
     through ``(x, y, 0)`` with normal ``(n_x, n_y, 0)``.
     """
 

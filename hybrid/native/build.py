@@ -22,6 +22,7 @@ import shutil
 import subprocess
 import sysconfig
 import tempfile
+import time
 from collections.abc import Callable
 from functools import cache
 from pathlib import Path
@@ -34,6 +35,8 @@ from hybrid.native import checkout
 from hybrid.native.stamp import is_hand_edited
 
 log = logging.getLogger("hybrid")
+#: marks a log record of slow work (compiling, generating): a program showing progress can tell it
+SLOW = {"slow": True}
 
 #: flags for the extension; no -ffast-math: the status checks rely on isfinite(). On x86-64 the
 #: code is tuned for this processor (FMA, AVX-512 where present): the cache key then carries the
@@ -222,11 +225,13 @@ def _cached_module(stem: str, key_material: dict, write_source: Callable[[str, P
             return False
 
     def make() -> None:
-        log.info("hybrid: building %s with %s", name, cc)
+        log.info("hybrid: compiling %s with %s", name, cc, extra=SLOW)
+        t0 = time.perf_counter()
         with tempfile.TemporaryDirectory(dir=entry) as tmp:
             c_file = Path(tmp) / f"{name}.c"
             write_source(name, c_file)
             _compile(c_file, so, cc, includes)
+        log.info("hybrid: compiled %s in %.1f s", name, time.perf_counter() - t0)
         _atomic_write(manifest, json.dumps({"sha256": _sha256(so), "compiler": ident, "flags": CFLAGS}).encode())
 
     def build() -> None:
@@ -368,6 +373,7 @@ def generated_unit(stem: str, key_material: dict, generate: Callable[[], dict[st
             return False
 
     def make() -> None:
+        log.info("hybrid: generating the C of %s", stem, extra=SLOW)
         files = generate()
         write_unit_files(folder, files)
         _atomic_write(done, json.dumps({"files": sorted(files)}).encode())

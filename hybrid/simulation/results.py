@@ -111,6 +111,15 @@ class SimulationResult:
     def contact_force(self):
         return self.output("N")
 
+    def plot(self, title: str | None = None):
+        """The run as a matplotlib Figure: tangential speed [m/s] and normal force [N] against their
+        references over time [s]; for a 3-D run also the sensor tip's deviation from the desired path
+        across it [mm] and its penetration [mm] (:func:`hybrid.plots.plot_result`). Save it with
+        ``fig.savefig("run.pdf")``; nothing is shown or written."""
+        from hybrid.plots import plot_result
+
+        return plot_result(self, title)
+
     def save(self, path: str | Path, overwrite: bool = False) -> Path:
         """Write an ``.npz`` with every array, the units and the experiment's settings; returns the
         path written (``.npz`` is added when missing). Atomic; refuses an existing file unless

@@ -1,16 +1,19 @@
-"""The first touch: how the force's overshoot, its settling and the contact losses grow with the
-approach speed, the environment's stiffness, the controller's filter and the sensor's noise, and the
-paper's Appendix (a nearly rigid contact chatters) in the elastic model.
+"""
+The first touch: approach speed, stiffness, the filter, noise and a nearly rigid surface
+========================================================================================
+
+How the force's overshoot, its settling and the contact losses after the first touch grow with the
+approach speed, the environment's stiffness, the controller's filter and the sensor's noise, lag and
+delay; and the paper's Appendix (a nearly rigid contact chatters) in the elastic model.
 
 Every run starts 5 mm off the surface at rest (``start_gap``) and approaches at ``approach_speed``
 until the measured force passes 0.5 N, then holds 10 N with no tangential motion (conventions §4);
-the metrics are conventions §8's (the first touch's settling band is 5 % of F_d). Prints the
-README's tables (markdown); ``--out DIR`` also writes them as CSV and draws the figure.
+the metrics are conventions §8's (the first touch's settling band is 5 % of F_d). It prints the
+README's tables (markdown) and draws the touch on 1e5 and 1e8 N/m; ``--out DIR`` also writes the
+tables as CSV and the figure as PNG. A few seconds once the compiled loops are built (about 30 s
+from an empty cache)::
 
-    python examples/first_touch_study.py [--out DIR]
-
-It runs in well under a minute once the compiled loops are built (the first run builds them: about
-a minute more).
+    python examples/plot_first_touch.py [--out DIR]
 """
 
 from __future__ import annotations
@@ -24,6 +27,7 @@ import numpy as np
 
 import hybrid
 from hybrid.control.loops import loop_radii
+from hybrid.plots import plot_first_touch, save
 
 GAP, F_D = 0.005, 10.0
 SPEEDS = (0.01, 0.02, 0.05, 0.1, 0.2)
@@ -182,12 +186,12 @@ def main() -> None:
     if args.out:
         import pandas as pd
 
-        from hybrid.plots import first_touch_figure
-
         args.out.mkdir(parents=True, exist_ok=True)
         pd.concat(frames).to_csv(args.out / "speed_and_stiffness.csv", index=False)
         pd.DataFrame(records).to_csv(args.out / "filter_and_noise.csv", index=False)
-        print(f"\nwrote {first_touch_figure(shown, args.out / 'first_touch.png')}")
+    fig = plot_first_touch(shown, "the first touch at 0.05 m/s: the sensor's force, and the surface's on its tip")
+    if args.out:
+        print(f"\nwrote {save(fig, args.out / 'first_touch')[0]}")
 
 
 if __name__ == "__main__":

@@ -1,0 +1,59 @@
+"""The documentation's Python snippets run as written, page by page, and its API reference lists
+every public name.
+
+Each page's ``.. code-block:: python`` blocks run in order, as one script, in a fresh interpreter
+and an empty folder (the snippets of a page build on each other). The build itself is
+``python -m sphinx -W --keep-going -b html docs docs/_build/html`` (``.ci/run``).
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import hybrid
+
+DOCS = Path(__file__).resolve().parent.parent / "docs"
+PAGES = sorted(p for p in [*DOCS.glob("*.rst"), *DOCS.glob("howto/*.rst")]
+               if ".. code-block:: python" in p.read_text())
+#: what runs a page's code: a script of its own, so that worker processes (Dask spawns them) that
+#: import the main module do not run the page again
+RUNNER = """import sys
+if __name__ == "__main__":
+    path = sys.argv[1]
+    exec(compile(open(path).read(), path, "exec"), {"__name__": "__main__"})
+"""
+
+
+def python_blocks(page: Path) -> str:
+    """The page's Python blocks, dedented and joined, line numbers kept apart by blank lines."""
+    blocks = re.findall(r"^\.\. code-block:: python\n\n((?:(?:   .*)?\n)+)", page.read_text(), flags=re.M)
+    return "\n".join("\n".join(line[3:] for line in block.splitlines()) for block in blocks)
+
+
+def test_pages_have_snippets():
+    assert {p.name for p in PAGES} >= {"urdf.rst", "surfaces.rst", "controller.rst", "sweeps.rst",
+                                       "standalone_c.rst", "estimated_surface.rst"}
+
+
+@pytest.mark.parametrize("page", PAGES, ids=lambda p: str(p.relative_to(DOCS)))
+def test_page_snippets_run(page, tmp_path):
+    code = tmp_path / f"{page.stem}_snippets.py"
+    code.write_text(python_blocks(page))
+    runner = tmp_path / "run_page.py"
+    runner.write_text(RUNNER)
+    work = tmp_path / "work"
+    work.mkdir()
+    done = subprocess.run([sys.executable, str(runner), str(code)], cwd=work, capture_output=True, text=True,
+                          timeout=600, env={**os.environ, "MPLBACKEND": "Agg"})
+    assert done.returncode == 0, f"{page.name}'s snippets failed:\n{done.stderr[-3000:]}"
+
+
+def test_api_reference_lists_every_public_name():
+    listed = set(re.findall(r"^   (\w+)$", (DOCS / "api.rst").read_text(), flags=re.M))
+    assert set(hybrid.__all__) - {"__version__"} <= listed
