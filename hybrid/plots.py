@@ -1,4 +1,5 @@
-"""Figures that reproduce the paper's Figures 5-8, and an overlay of both controllers."""
+"""Figures that reproduce the paper's Figures 5-8, an overlay of both controllers, sweeps' heatmaps and an
+estimated surface's normal against the true one."""
 
 from __future__ import annotations
 
@@ -8,6 +9,7 @@ from pathlib import Path
 import matplotlib
 
 from hybrid import files
+from hybrid.errors import HybridError
 
 matplotlib.use("Agg")  # files only: no display needed
 import matplotlib.pyplot as plt  # noqa: E402
@@ -158,3 +160,32 @@ def sweep_heatmaps(table, figures: dict | None, out: Path) -> list[Path]:
         fig.suptitle(metric, fontsize=9)
         written.append(_save(fig, out / f"heatmap_{metric}.png", dpi=120))
     return written
+
+
+def plot_normal_estimate(result, ax=None, *, angle: bool = False, label: str | None = None, color=None):
+    """An estimated surface's normal (:class:`~hybrid.EstimatedSurface`) against the true one over time.
+
+    ``result``: a :class:`~hybrid.SimulationResult` of a controller that estimated the surface. On ``ax``
+    (a new figure's when None) the three components of the estimate (solid) and of the true surface's
+    normal at the sensor tip (dashed), base axes, one per control sample; with ``angle``, the angle
+    between them [deg] instead, drawn with ``label`` and ``color``. Returns the axes; a result without an
+    estimate is a HybridError.
+    """
+    if result.normal_estimate is None:
+        raise HybridError("this run's controller was told its surface: there is no normal estimate to plot; "
+                          "run it with controller_surface=hybrid.EstimatedSurface(...)")
+    if ax is None:
+        _, ax = plt.subplots(figsize=(6, 3.4))
+    t = result.sample_t
+    if angle:
+        ax.plot(t, result.normal_angle_error_deg, color=color, lw=1.2, label=label or "estimate")
+        ax.set_ylabel("normal angle error [deg]")
+    else:
+        true = result.true_normal
+        for i, (name, c) in enumerate(zip("xyz", ("tab:blue", "tab:orange", "tab:green"))):
+            ax.plot(t, result.normal_estimate[:, i], color=c, lw=1.2, label=f"$n_{name}$ estimated")
+            ax.plot(t, true[:, i], color=c, lw=1.0, ls="--", label=f"$n_{name}$ true")
+        ax.set_ylabel("normal (base axes)")
+    ax.set_xlabel("time [s]")
+    ax.grid(alpha=0.3)
+    return ax

@@ -312,3 +312,17 @@ def test_bad_estimators_are_refused():
     with pytest.raises(hybrid.HybridError, match="controller_surface"):
         hybrid.tracing_experiment(controller_surface="sphere")
 
+
+def test_plot_normal_estimate():
+    from hybrid.plots import plot_normal_estimate
+
+    exact = hybrid.tracing_experiment(duration=0.3)
+    res = _estimated_run(exact)
+    ax = plot_normal_estimate(res)
+    assert len(ax.lines) == 6  # three components, estimated and true
+    np.testing.assert_array_equal(ax.lines[0].get_ydata(), res.normal_estimate[:, 0])
+    plot_normal_estimate(res, ax, angle=True, label="estimate")
+    np.testing.assert_array_equal(ax.lines[-1].get_ydata(), res.normal_angle_error_deg)
+    with pytest.raises(hybrid.HybridError, match="no normal estimate"):
+        plot_normal_estimate(hybrid.simulate(exact))
+    ax.figure.clf()
