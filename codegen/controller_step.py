@@ -242,7 +242,7 @@ def estimated_frame(state, s, F, v, e, T):
     this sample: ``s`` holds the estimator's tuning (its ``parameters_named``), ``F`` the contact force on
     the robot and ``v`` the tip's velocity (base axes)."""
     w_force, w_velocity, correct, tau_f, inv_tau_v, rate_gain, f_min, v_min = (s[i] for i in range(8))
-    compliance = s[11]
+    compliance, gate = s[11], s[12]
     alpha = 1 - ca.exp(-T / tau_f)
     kappa = rate_gain * alpha / (2 - alpha)  # the alpha-beta tracker's beta / alpha
     started = state[9]
@@ -251,20 +251,29 @@ def estimated_frame(state, s, F, v, e, T):
     m = ca.if_else(started, state[0:3], s[8:11]) + T * rate
     n_pred = m / ca.norm_2(m)
     # the contact point's velocity: the tip's, and the rate of the tool's deflection under the force
-    v = v + started * compliance * (F - state[6:9]) / T
-    vn = ca.dot(n_pred, v)
-    v_t = v - vn * n_pred
+    deflection_rate = started * compliance * (F - state[6:9]) / T
+    v_c = v + deflection_rate
+    vn = ca.dot(n_pred, v_c)
+    v_t = v_c - vn * n_pred
     speed = ca.norm_2(v_t)
-    moving = speed > v_min
-    v_hat = v_t / ca.if_else(moving, speed, 1)
-    # the friction on the tool is along the sliding direction: without it the force is along the normal
-    F_perp = F - correct * moving * ca.dot(F, v_hat) * v_hat
+    sliding = speed > v_min
+    # the friction on the tool is against the contact point's sliding, or (while it sticks) the tip's pull:
+    # without it the force is along the normal
+    tip_t = v - ca.dot(n_pred, v) * n_pred
+    tip_speed = ca.norm_2(tip_t)
+    pushed = tip_speed > v_min
+    u = ca.if_else(sliding, v_t / ca.if_else(sliding, speed, 1),
+                   ca.if_else(pushed, tip_t / ca.if_else(pushed, tip_speed, 1), ca.SX.zeros(3, 1)))
+    F_perp = F - correct * ca.dot(F, u) * u
     magnitude = ca.norm_2(F_perp)
     touching = magnitude > f_min
     n_force = F_perp / ca.if_else(touching, magnitude, 1)
-    # the corrections: towards the force's direction, and the normal turned orthogonal to the velocity
-    d_velocity = -w_velocity * inv_tau_v * T * vn / ca.if_else(moving, speed * speed, 1) * v_t
-    d = w_force * touching * alpha * (n_force - n_pred) + ca.if_else(moving, d_velocity, ca.SX.zeros(3, 1))
+    # the corrections: towards the force's direction, and the normal turned orthogonal to the contact point's
+    # velocity (in contact; giving way to a fast-changing deflection, the velocity's least certain part)
+    sigma = gate * ca.norm_2(deflection_rate)
+    velocity_on = ca.logic_and(sliding, touching)
+    d_velocity = -w_velocity * inv_tau_v * T * vn / ca.if_else(velocity_on, speed * speed + sigma * sigma, 1) * v_t
+    d = w_force * touching * alpha * (n_force - n_pred) + ca.if_else(velocity_on, d_velocity, ca.SX.zeros(3, 1))
     m = n_pred + d
     n = m / ca.norm_2(m)
     rate = rate + kappa / T * (d - ca.dot(d, n) * n)

@@ -11,6 +11,8 @@ Figures (each returns a :class:`matplotlib.figure.Figure`; nothing is shown or s
   deviation from the desired path [mm] and penetration [mm] over time;
 - :func:`plot_first_touch`: runs from free space: the measured normal force and the surface's force on
   the sensor tip against the time from the first touch;
+- :func:`plot_normal_estimate`: an estimated surface's normal against the true one (or the angle
+  between them [deg]) over time [s];
 - :func:`plot_sweep`: a sweep's metric over two swept settings, a panel per value of up to two
   others, each panel with its own colour scale; or the ratio of one row's values to another's
   (e.g. the task law's metric over Khatib's), on a logarithmic scale centred at 1.
@@ -283,6 +285,35 @@ def plot_path(results: dict, title: str | None = None):
     if title:
         fig.suptitle(title, fontsize=FONT + 1)
     return fig
+
+
+def plot_normal_estimate(result, ax=None, *, angle: bool = False, label: str | None = None, color=None):
+    """An estimated surface's normal (:class:`~hybrid.EstimatedSurface`) against the true one over time.
+
+    ``result``: a :class:`~hybrid.SimulationResult` of a controller that estimated the surface. On ``ax``
+    (a new figure's when None) the three components of the estimate (solid) and of the true surface's
+    normal at the sensor tip (dashed), base axes, one per control sample; with ``angle``, the angle
+    between them [deg] instead, drawn with ``label`` and ``color``. Returns the axes; a result without an
+    estimate is a HybridError.
+    """
+    if result.normal_estimate is None:
+        raise HybridError("this run's controller was told its surface: there is no normal estimate to plot; "
+                          "run it with controller_surface=hybrid.EstimatedSurface(...)")
+    if ax is None:
+        _, ax = plt.subplots(figsize=(6, 3.4))
+    t = result.sample_t
+    if angle:
+        ax.plot(t, result.normal_angle_error_deg, color=color, lw=1.2, label=label or "estimate")
+        ax.set_ylabel("normal angle error [deg]")
+    else:
+        true = result.true_normal
+        for i, (name, c) in enumerate(zip("xyz", ("tab:blue", "tab:orange", "tab:green"))):
+            ax.plot(t, result.normal_estimate[:, i], color=c, lw=1.2, label=f"$n_{name}$ estimated")
+            ax.plot(t, true[:, i], color=c, lw=1.0, ls="--", label=f"$n_{name}$ true")
+        ax.set_ylabel("normal (base axes)")
+    ax.set_xlabel("time [s]")
+    ax.grid(alpha=0.3)
+    return ax
 
 
 # ------------------------------------------------------------------ sweeps

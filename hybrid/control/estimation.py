@@ -19,11 +19,16 @@ from the estimate's rate, so the law's curvature term still acts. Two estimators
 
 The contact point's velocity is the tip's plus the rate of the tool's deflection, ``compliance``
 [m/N] times the force's rate (0 for a rigid tool: a compliant one's deflection under a changing force
-would look like a slope). The estimate is a tracker (alpha-beta): it predicts the normal on at its
-estimated rate ``n'`` before each correction, and the rate takes ``rate_gain`` times the
+would look like a slope). That rate is the least certain part of the velocity (the force sampled, the
+sensor's damping): the velocity correction gives way while it is large against the sliding speed,
+``deflection_gate`` times the deflection's rate entering the correction's denominator, so a force step
+or a touch does not tilt the estimate. The estimate is a tracker (alpha-beta): it predicts the normal on
+at its estimated rate ``n'`` before each correction, and the rate takes ``rate_gain`` times the
 critically damped share of the correction, so a steadily curving surface is followed without lag,
-and the task frame's rate (the law's curvature term) comes from ``n'``. Below ``min_speed`` [m/s] of
-sliding speed the velocity correction and the friction correction hold.
+and the task frame's rate (the law's curvature term) comes from ``n'``. While the contact point sticks
+(its sliding speed below ``min_speed`` [m/s]) but the tip moves, the friction is removed along the tip's
+direction of motion (static friction holds against the tip's pull); with the tip at rest too, the
+friction correction holds. The velocity correction acts only in contact and above ``min_speed``.
 
 :func:`estimate_step` is the NumPy statement of one sample (the generated step's reference).
 """
@@ -53,25 +58,29 @@ class EstimatedSurface(Surface):
     initial_normal : the estimate's start (base axes; made unit), e.g. the normal a drawing gives.
     force_time_constant, velocity_time_constant : [s], > 0 (the force's at least one sample time).
     rate_gain : >= 0: 1 the tracker's critically damped rate gain, 0 no rate (a lag on curved parts).
-        Default: 0.5 for ``"fusion"``, 0 for one estimator alone (whose correction sees one direction only:
+        Default: 1 for ``"fusion"``, 0 for one estimator alone (whose correction sees one direction only:
         a rate fed by it would turn the estimate about the directions it cannot see).
     contact_threshold : [N], >= 0: the force estimate holds below it.
     min_speed : [m/s], >= 0: the velocity estimate and the friction correction hold below it.
     compliance : [m/N], >= 0: the tool's (and sensor's) compliance between the tip and the contact.
+    deflection_gate : >= 0: how far the velocity correction gives way to the deflection's rate ``c |F'|``
+        (its innovation ``v_n |v_t| / (|v_t|^2 + (deflection_gate c |F'|)^2)`` instead of ``v_n / |v_t|``);
+        0: never.
     """
 
     method: str = "fusion"
     initial_normal: tuple[float, float, float] = (0.0, 0.0, 1.0)
     force_time_constant: float = 0.03
-    velocity_time_constant: float = 0.1
+    velocity_time_constant: float = 0.03
     rate_gain: float | None = None
     contact_threshold: float = 1.0
     min_speed: float = 0.01
     compliance: float = 0.0
+    deflection_gate: float = 1.0
     kind = "estimated"
     parameters_named = ("w_force", "w_velocity", "correct_friction", "force_time_constant",
                         "inverse_velocity_time_constant", "rate_gain", "contact_threshold", "min_speed", "n0_x", "n0_y",
-                        "n0_z", "compliance")
+                        "n0_z", "compliance", "deflection_gate")
 
     def __post_init__(self):
         if not isinstance(self.method, str) or self.method not in METHODS:
@@ -85,10 +94,11 @@ class EstimatedSurface(Surface):
                               "direction (3 finite numbers, base axes) from the surface towards the robot")
         object.__setattr__(self, "initial_normal", tuple(float(v) for v in n / np.linalg.norm(n)))
         if self.rate_gain is None:
-            object.__setattr__(self, "rate_gain", 0.5 if self.method == "fusion" else 0.0)
+            object.__setattr__(self, "rate_gain", 1.0 if self.method == "fusion" else 0.0)
         for name, positive in (("force_time_constant", True), ("velocity_time_constant", True),
                                ("rate_gain", False),
-                               ("contact_threshold", False), ("min_speed", False), ("compliance", False)):
+                               ("contact_threshold", False), ("min_speed", False), ("compliance", False),
+                               ("deflection_gate", False)):
             value = getattr(self, name)
             ok = not isinstance(value, bool) and isinstance(value, (int, float, np.integer, np.floating)) \
                 and np.isfinite(value) and (value > 0 if positive else value >= 0)
@@ -105,7 +115,8 @@ class EstimatedSurface(Surface):
         w_force, w_velocity, correct = METHODS[self.method]
         return np.array([w_force, w_velocity, correct, self.force_time_constant, 1.0 / self.velocity_time_constant,
                          self.rate_gain,
-                         self.contact_threshold, self.min_speed, *self.initial_normal, self.compliance])
+                         self.contact_threshold, self.min_speed, *self.initial_normal, self.compliance,
+                         self.deflection_gate])
 
     def normal_at(self, p):
         raise HybridError("an EstimatedSurface has no normal of its own: the controller estimates it; give the "
@@ -124,7 +135,7 @@ def estimate_step(state: np.ndarray, tuning: np.ndarray, F, v, T: float) -> np.n
     from the contact force ``F`` on the robot and the tip velocity ``v`` [base axes], ``tuning`` an
     :class:`EstimatedSurface`'s ``as_array()`` and ``T`` the sample time [s]."""
     w_force, w_velocity, correct, tau_f, inv_tau_v, rate_gain, f_min, v_min = tuning[:8]
-    compliance = tuning[11]
+    compliance, gate = tuning[11], tuning[12]
     alpha = 1 - np.exp(-T / tau_f)
     kappa = rate_gain * alpha / (2 - alpha)
     started = state[9] != 0
@@ -133,20 +144,29 @@ def estimate_step(state: np.ndarray, tuning: np.ndarray, F, v, T: float) -> np.n
     m = (state[:3] if started else tuning[8:11]) + T * rate
     n_pred = m / np.linalg.norm(m)
     # the contact point's velocity: the tip's and the tool's deflection's rate
-    if started:
-        v = v + compliance * (F - state[6:9]) / T
-    vn = n_pred @ v
-    v_t = v - vn * n_pred
+    deflection_rate = compliance * (F - state[6:9]) / T if started else np.zeros(3)
+    v_c = v + deflection_rate
+    vn = n_pred @ v_c
+    v_t = v_c - vn * n_pred
     speed = np.linalg.norm(v_t)
-    moving = speed > v_min
-    v_hat = v_t / speed if moving else v_t
-    F_perp = F - correct * moving * (F @ v_hat) * v_hat
+    sliding = speed > v_min
+    # the friction's direction: against the contact point's sliding, else (it sticks) against the tip's motion
+    tip_t = v - (n_pred @ v) * n_pred
+    tip_speed = np.linalg.norm(tip_t)
+    if sliding:
+        u = v_t / speed
+    elif tip_speed > v_min:
+        u = tip_t / tip_speed
+    else:
+        u = np.zeros(3)
+    F_perp = F - correct * (F @ u) * u
     magnitude = np.linalg.norm(F_perp)
     touching = magnitude > f_min
     n_force = F_perp / magnitude if touching else F_perp
     d = w_force * touching * alpha * (n_force - n_pred)
-    if moving:
-        d = d - w_velocity * inv_tau_v * T * vn / (speed * speed) * v_t
+    if sliding and touching:
+        sigma = gate * np.linalg.norm(deflection_rate)
+        d = d - w_velocity * inv_tau_v * T * vn / (speed * speed + sigma * sigma) * v_t
     m = n_pred + d
     n = m / np.linalg.norm(m)
     rate = rate + kappa / T * (d - (d @ n) * n)
