@@ -31,6 +31,7 @@ import matplotlib
 import numpy as np
 
 from hybrid import files
+from hybrid.errors import HybridError
 
 matplotlib.use("Agg")  # files only: no display needed
 import matplotlib.pyplot as plt  # noqa: E402
