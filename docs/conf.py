@@ -60,7 +60,7 @@ sphinx_gallery_conf = {
     "examples_dirs": "../examples",
     "gallery_dirs": "auto_examples",
     "filename_pattern": os.environ.get("HYBRID_DOCS_GALLERY", r"/plot_"),
-    "ignore_pattern": r"__init__\.py",
+    "ignore_pattern": r"__init__\.py|/studies/",  # the studies take command-line arguments and run for minutes
     "within_subsection_order": "FileNameSortKey",
     "download_all_examples": False,
     "remove_config_comments": True,

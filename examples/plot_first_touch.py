@@ -169,7 +169,8 @@ def appendix() -> tuple[str, str, dict]:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(description="The first touch: approach speed, stiffness, the filter, noise and a "
+                                                 "nearly rigid surface.")
     parser.add_argument("--out", type=Path, help="also write the tables as CSV and the figure here")
     args = parser.parse_args()
     first, frames = speed_and_stiffness()

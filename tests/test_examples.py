@@ -36,3 +36,16 @@ def test_example_runs(path, tmp_path):
     assert done.returncode == 0, f"{path.name} failed:\n{done.stderr[-3000:]}"
     assert seconds < BUDGET
     assert not any(tmp_path.iterdir()), f"{path.name} left files: {sorted(p.name for p in tmp_path.iterdir())}"
+
+
+STUDIES = sorted((Path(__file__).resolve().parent.parent / "examples" / "studies").glob("*.py"))
+
+
+@pytest.mark.parametrize("path", STUDIES, ids=lambda p: p.name)
+def test_study_runs_quick(path, tmp_path):
+    """A study (a longer script with its own output folder) runs in its quick form and writes its tables."""
+    done = subprocess.run([sys.executable, str(path), "--quick", "--out", str(tmp_path / "out")], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=BUDGET, env={**os.environ, "MPLBACKEND": "Agg"})
+    assert done.returncode == 0, f"{path.name} failed:\n{done.stderr[-3000:]}"
+    written = sorted(p.name for p in (tmp_path / "out").iterdir())
+    assert any(name.endswith(".csv") for name in written) and any(name.endswith(".png") for name in written), written

@@ -1,6 +1,6 @@
 """The normal estimator on surfaces the controller is not told: a study.
 
-    python examples/estimation_study.py --out DIR [--quick]
+    python examples/studies/estimation_study.py --out DIR [--quick]
 
 The UR5 of the 3-D experiment traces three surfaces: the sphere (its latitude circle 60 degrees from the
 top), a cylinder about base z (its circle at the sphere run's start height) and an uneven plane, bumps
