@@ -346,6 +346,13 @@ def test_installed_package_refuses_regenerate_and_writes_nothing(tmp_path):
     probe = _run(["-c", "from hybrid.native import build; print(build.source_dir())"], elsewhere, **env)
     assert probe.stdout.strip() == str(site / "hybrid" / "_generated"), probe.stderr
 
+    # the paper's experiment from the installed package, in another folder: metrics and figures, no series
+    paper = _run(["-m", "hybrid", "paper", "--no-series", "--out", "run"], elsewhere, **env)
+    assert paper.returncode == 0, paper.stderr
+    written = sorted(p.name for p in (elsewhere / "run").iterdir())
+    assert any(n.endswith(".png") for n in written) and any("metrics" in n for n in written), written
+    assert not any(n.endswith((".npz", ".csv")) and "metrics" not in n for n in written), written
+
 
 def test_a_warm_run_needs_neither_sympy_nor_casadi(tmp_path):
     """Once a run's units are in the cache, running it loads no part of the generator."""
