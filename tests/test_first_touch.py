@@ -177,16 +177,16 @@ def test_bad_starts_from_free_space_are_refused():
     assert table["status"].tolist() == ["ok", "invalid"] and "start_gap = 0.3 m" in table["error"].iloc[1]
 
 
-def test_the_readme_example_runs_and_gives_the_studys_numbers():
-    """The README's block of the first touch runs as written; its first run is the study's (the paper's
+def test_the_studys_example_runs_and_gives_the_studys_numbers():
+    """The Python block of docs/studies/first_touch.md runs as written; its first run is the study's (the paper's
     arm, 1e5 N/m, 0.05 m/s): 0.46 N of overshoot, 0.16 s to settle, no loss."""
     import re
     from pathlib import Path
 
-    readme = (Path(__file__).resolve().parent.parent / "README.md").read_text()
-    block = next(b for b in re.findall(r"```python\n(.*?)```", readme, flags=re.S) if "start_gap=" in b)
+    page = Path(__file__).resolve().parent.parent / "docs" / "studies" / "first_touch.md"
+    block = next(b for b in re.findall(r"```python\n(.*?)```", page.read_text(), flags=re.S) if "start_gap=" in b)
     ns: dict = {}
-    exec(compile(block, "README.md", "exec"), ns)
+    exec(compile(block, str(page), "exec"), ns)
     m = ns["m"]
     assert m["first_touch_overshoot_N"] == pytest.approx(0.46, abs=0.005)
     assert m["first_touch_settling_s"] == pytest.approx(0.16, abs=0.005) and m["contact_losses"] == 0

@@ -1,4 +1,5 @@
-"""`python -m hybrid generate`: deterministic standalone C99 for a URDF arm, compiled and run as the README shows."""
+"""`python -m hybrid generate`: deterministic standalone C99 for a URDF arm, compiled and run as the reference
+page of the C interface (docs/reference/c_interface.md) shows."""
 
 from __future__ import annotations
 
@@ -17,7 +18,8 @@ from conftest import PANDA, UR5, example_robot
 import hybrid
 
 ROOT = Path(__file__).resolve().parent.parent
-README = (ROOT / "README.md").read_text()
+C_PAGE = (ROOT / "docs" / "reference" / "c_interface.md").read_text()
+ARMS_PAGE = (ROOT / "docs" / "reference" / "arms_and_law.md").read_text()
 CC = shutil.which("gcc") or shutil.which("cc")
 STRICT = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O2"]
 
@@ -46,11 +48,11 @@ def test_generate_is_deterministic_and_compiles_strictly(tmp_path):
     assert {a["name"]: a["shape"] for a in terms["outputs"]}["J"] == [6, 7]
 
 
-def test_readme_c_example_agrees_with_python(tmp_path):
+def test_the_c_example_agrees_with_python(tmp_path):
     proc = generate(tmp_path / "ur5", UR5, "ur5")
     assert proc.returncode == 0, proc.stderr
-    block = re.search(r"```c\n(.*?)```", README, flags=re.S)
-    assert block, "README lost its C example"
+    block = re.search(r"```c\n(.*?)```", C_PAGE, flags=re.S)
+    assert block, "the C interface lost its C example"
     (tmp_path / "main.c").write_text(block.group(1))
     exe = tmp_path / "main"
     build = subprocess.run([CC, *STRICT, str(tmp_path / "main.c"), str(tmp_path / "ur5" / "ur5.c"),
@@ -67,11 +69,11 @@ def test_readme_c_example_agrees_with_python(tmp_path):
     np.testing.assert_allclose(n, terms["n"], rtol=1e-12, atol=1e-12)
 
 
-def test_readme_robot_example_runs():
-    blocks = re.findall(r"```python\n(.*?)```", README, flags=re.S)
+def test_the_robot_example_runs():
+    blocks = re.findall(r"```python\n(.*?)```", ARMS_PAGE, flags=re.S)
     block = next(b for b in blocks if "Robot.from_urdf" in b)
     ns: dict = {}
-    exec(compile(block, "README.md", "exec"), ns)
+    exec(compile(block, "arms_and_law.md", "exec"), ns)
     for key, value in ns["terms"].items():
         np.testing.assert_array_equal(ns["many"][key], np.tile(value, (100,) + (1,) * value.ndim))
     assert ns["panda"].n == 7 and ns["heavier"].links[6].mass == 1.5
@@ -104,14 +106,14 @@ def test_prefix_is_a_c_identifier(name, ident):
     assert c_identifier(name) == ident
 
 
-def test_readme_controller_c_example_is_the_python_controller(tmp_path):
-    """The README's controller example, generated from the shipped TOML by the command it gives, built
+def test_the_controller_c_example_is_the_python_controller(tmp_path):
+    """The C interface's controller example, generated from the shipped TOML by the command it gives, built
     strictly and run: its torque is the Python controller's of the same file, gains changed alike."""
     config = ROOT / "hybrid" / "data" / "controller_ur5_sphere.toml"
     proc = generate(tmp_path / "ur5s", UR5, "ur5s", "--controller", str(config))
     assert proc.returncode == 0, proc.stderr
-    block = re.findall(r"```c\n(.*?)```", README, flags=re.S)[1]
-    assert "ur5s_controller_step" in block, "README lost its controller C example"
+    block = re.findall(r"```c\n(.*?)```", C_PAGE, flags=re.S)[1]
+    assert "ur5s_controller_step" in block, "the C interface lost its controller C example"
     (tmp_path / "step.c").write_text(block)
     exe = tmp_path / "step"
     build = subprocess.run([CC, *STRICT, str(tmp_path / "step.c"), str(tmp_path / "ur5s" / "ur5s.c"),

@@ -147,7 +147,8 @@ def _close(a, b, rel):
 
 @pytest.mark.parametrize("make", [
     lambda **kw: hybrid.tracing_experiment(duration=1.0, **kw),
-    # the paper's sticking friction amplifies rounding to about 1e-10 (README): its arm frictionless here
+    # the paper's sticking friction amplifies rounding to about 1e-10 (docs/studies/first_touch.md): its arm
+    # frictionless here
     lambda **kw: hybrid.paper_experiment(duration=1.0, contact=hybrid.Contact(friction=0.0), **kw),
 ])
 def test_a_noise_free_wrench_sensor_at_the_tip_gives_the_runs_of_before(make):

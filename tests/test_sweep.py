@@ -176,7 +176,7 @@ def test_the_demo_config_reads():
     base = sweep_cli._base(config["experiment"], config["base"])
     check_names(base, config["parameters"])
     values = {k: sweep_cli._value(k, v) for k, v in config["parameters"].items()}
-    assert len(points(values)) == 10140  # the README's reading is of this many runs
+    assert len(points(values)) == 10140  # docs/studies/demo_sweep.md reads this many runs
     assert values["model_error"][:3] == [0.0, 0.02, 0.04] and values["model_error"][-1] == 0.5
 
 
@@ -199,13 +199,13 @@ def test_linspace_values_and_refusals():
         sweep_cli._value("x", {"linspace": [0.0, 1.0, 3], "uniform": [0.0, 1.0]})
 
 
-def test_readme_sweep_example_runs():
+def test_the_demo_study_pages_sweep_example_runs():
     import re
 
-    readme = (Path(__file__).resolve().parent.parent / "README.md").read_text()
-    block = next(b for b in re.findall(r"```python\n(.*?)```", readme, flags=re.S) if "hybrid.sweep(" in b)
+    page = Path(__file__).resolve().parent.parent / "docs" / "studies" / "demo_sweep.md"
+    block = next(b for b in re.findall(r"```python\n(.*?)```", page.read_text(), flags=re.S) if "hybrid.sweep(" in b)
     ns: dict = {}
-    exec(compile(block, "README.md", "exec"), ns)
+    exec(compile(block, str(page), "exec"), ns)
     table = ns["table"]
     assert len(table) == 40 and (table["status"] == "ok").all()
     row = table.iloc[7]
