@@ -76,6 +76,28 @@ def _macro(text: str) -> str:
     return re.sub(r"[^A-Za-z0-9]+", "_", text).strip("_").upper()
 
 
+def init_statements(struct: str, params, values: dict, scalars: tuple[str, ...]) -> list[str]:
+    """C statements giving the fields of ``struct`` (a pointer's name) the configuration's ``values``: one
+    field per parameter input, or its elements' named fields for the inputs in ``scalars``."""
+    lines = []
+    for a in params:
+        vals = [float(v) for v in values[a.name]]
+        if len(vals) != a.size:
+            raise ValueError(f"{a.name} takes {a.size} values, got {len(vals)}")
+        if a.name in scalars and a.names:
+            lines += [f"    {struct}->{n} = {_number(v)};" for n, v in zip(a.names, vals)]
+        else:
+            lines.append(array_statement(struct, a.name, vals))
+    return lines
+
+
+def array_statement(struct: str, field: str, vals) -> str:
+    """The C block copying the numbers ``vals`` into the array ``struct->field`` (``i`` declared)."""
+    numbers = ", ".join(_number(v) for v in vals)
+    return (f"    {{\n        static const double v[{len(vals)}] = {{{numbers}}};\n"
+            f"        for (i = 0; i < {len(vals)}; ++i) {struct}->{field}[i] = v[i];\n    }}")
+
+
 def _index_macros(prefix: str, field: str, names) -> list[str]:
     """``#define <PREFIX>_<FIELD>_<NAME> index`` for an array's elements (none when two names clash)."""
     made = [f"{prefix.upper()}_{field.upper()}_{_macro(n)}" for n in names]
@@ -183,17 +205,7 @@ const char *{prefix}_status_name(int status);
 """
 
     # ------------------------------------------------------------------ the functions
-    init = []
-    for a in params:
-        vals = [float(v) for v in values[a.name]]
-        if len(vals) != a.size:
-            raise ValueError(f"{a.name} takes {a.size} values, got {len(vals)}")
-        if a.name in _SCALARS:
-            init += [f"    c->{n} = {_number(v)};" for n, v in zip(a.names, vals)]
-        else:
-            numbers = ", ".join(_number(v) for v in vals)
-            init.append(f"    {{\n        static const double v[{a.size}] = {{{numbers}}};\n"
-                        f"        for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = v[i];\n    }}")
+    init = init_statements("c", params, values, _SCALARS)
     init.append(f"    c->timing_tolerance = {_number(values['timing_tolerance'])};")
     init.append(f"    c->singular_tol = {_number(values['singular_tol'])};")
     for name in _CALLER:

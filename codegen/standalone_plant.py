@@ -30,7 +30,7 @@ from hybrid.native.stamp import MANIFEST_STAMP, json_body_hash, stamp
 from .closed_loop import SIGNALS
 from .emit import GENERATOR_VERSION, Unit, _casadi_cores, _sympy_cores, comment_safe, rk4_step
 from .kernel import Kernel
-from .standalone_controller import _index_macros, _number
+from .standalone_controller import _index_macros, _number, array_statement, init_statements
 
 #: the plant's statuses
 STATUS = {"OK": 0, "NONFINITE": 1, "INPUT_NONFINITE": 2}
@@ -161,22 +161,11 @@ const char *{prefix}_status_name(int status);
 """
 
     # ------------------------------------------------------------------ the functions
-    init = []
-    for a in params:
-        vals = [float(v) for v in values[a.name]]
-        if len(vals) != a.size:
-            raise ValueError(f"{a.name} takes {a.size} values, got {len(vals)}")
-        if a.name in _SCALARS and a.names:
-            init += [f"    p->{n} = {_number(v)};" for n, v in zip(a.names, vals)]
-        else:
-            numbers = ", ".join(_number(v) for v in vals)
-            init.append(f"    {{\n        static const double v[{a.size}] = {{{numbers}}};\n"
-                        f"        for (i = 0; i < {a.size}; ++i) p->{a.name}[i] = v[i];\n    }}")
+    init = init_statements("p", params, values, _SCALARS)
     x0 = [float(v) for v in values["x0"]]
     if len(x0) != nx:
         raise ValueError(f"x0 takes {nx} values, got {len(x0)}")
-    init.append(f"    {{\n        static const double v[{nx}] = {{{', '.join(_number(v) for v in x0)}}};\n"
-                f"        for (i = 0; i < {nx}; ++i) p->x0[i] = v[i];\n    }}")
+    init.append(array_statement("p", "x0", x0))
     per = int(values["steps_per_sample"])
     init += [f"    p->h = {_number(values['h'])};", f"    p->steps_per_sample = {per};",
              f"    p->sample_time = {_number(values['sample_time'])};",
