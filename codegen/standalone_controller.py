@@ -159,7 +159,8 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     array_field(inputs["estimate"], "an estimated surface's state")
     tau_unit = ", ".join(dict.fromkeys(tau.unit if isinstance(tau.unit, tuple) else (tau.unit,)))
     fields.append(f"    double tau[{nq}]; /* the torque last written [{comment_safe(tau_unit)}] */")
-    fields.append("    int has_torque; /* 1: tau is the arm's torque, the next sample is rate-limited from it */")
+    fields.append("    int has_torque; /* 1: tau is the arm's torque, the next sample is rate-limited from it "
+                  "(a tau that is not finite is discarded) */")
     fields.append("    double t_last; /* the sample clock: the last sample's t [s] */")
     fields.append("    int has_clock; /* 1: t_last is set (the next sample's timing is checked) */")
     fields.append("    /* ---- the last sample's loop outputs (loop frame) */")
@@ -278,6 +279,11 @@ int {prefix}_controller_step({prefix}_controller *c, double t, const double *q, 
     if (!isfinite(t) || !all_finite(q, {nq}) || !all_finite(qd, {nq}) || !all_finite(wrench, 6)) {{
         for (i = 0; i < {nq}; ++i) tau[i] = c->tau[i];
         return {P}_INPUT_NONFINITE;
+    }}
+    /* a torque written into the struct that is not a number cannot bound the next: it is discarded */
+    if (c->has_torque && !all_finite(c->tau, {nq})) {{
+        for (i = 0; i < {nq}; ++i) c->tau[i] = 0.0;
+        c->has_torque = 0;
     }}
     on_time = timing(c, t);
     for (i = 0; i < {nq}; ++i) last[i] = c->tau[i];

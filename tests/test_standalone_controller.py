@@ -293,3 +293,43 @@ def test_generated_bytes_are_deterministic_and_name_checked(tmp_path):
         other.generate(a, "same")
     other.generate(a, "same", force=True)
     assert (a / "same.c").read_bytes() != (b / "same.c").read_bytes()
+
+
+def test_a_non_finite_reference_moves_the_clock_as_in_c(paper_pair):
+    """The law failing on its references (a NaN the caller gives) moves the clock in Python as in C: the
+    next sample on time is accepted by both."""
+    exp, folder, samples = paper_pair
+    state = {"bad": False}
+
+    def speed(t):
+        return float("nan") if state["bad"] else 0.3
+
+    py = hybrid.Controller(exp.build_controller().robot, exp.surface, gains=exp.gains, sample_time=exp.sample_time,
+                           force_reference=exp.force_reference, velocity_reference=speed)
+    for k, (t, q, qd, w) in enumerate(samples[:5]):
+        state["bad"] = k == 3
+        if state["bad"]:
+            with pytest.raises(hybrid.HybridError, match="not finite"):
+                py(t, q, qd, w)
+        else:
+            py(t, q, qd, w)  # sample 4 is on time: the clock took sample 3
+
+
+def test_a_non_finite_torque_in_the_struct_is_discarded(paper_pair):
+    _, folder, samples = paper_pair
+    c = CController(folder, "chk")
+    c.set_array("tau", [float("nan"), 1.0])
+    c.c.has_torque = 1
+    status, tau = c.step(*samples[0])
+    assert c.name(status) == "OK" and np.isfinite(tau).all()
+
+
+def test_a_urdf_effort_of_zero_is_no_limit(tmp_path):
+    text = hybrid.UR5_URDF.read_text().replace('effort="150.0"', 'effort="0"', 1)
+    urdf = tmp_path / "ur5.urdf"
+    urdf.write_text(text)
+    robot = hybrid.Robot.from_urdf(urdf, tip="tool0")
+    ctrl = hybrid.Controller(robot, hybrid.Sphere((0.5, 0.0, 0.2), 0.15))
+    assert np.isinf(ctrl.torque_limit[0]) and (ctrl.torque_limit[1:] > 0).all()
+    with pytest.raises(hybrid.HybridError, match="finite sample time"):
+        ctrl(10 ** 400, np.zeros(6), np.zeros(6), np.zeros(6))

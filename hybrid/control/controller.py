@@ -194,7 +194,7 @@ class Controller:
         nothing, or disturb the task). Its numbers are run-time inputs of the compiled step (changing
         them never recompiles); without it the step is the law's own code, bit for bit.
     torque_limit : the largest ``|tau_j|`` [N m or N]: ``"urdf"`` (the default: the URDF's ``effort``
-        limits, none where it gives none and for the planar arm), None (no limit), one number for
+        limits, none where it gives none or 0, and for the planar arm), None (no limit), one number for
         every joint or one per joint.
     torque_step_limit : the largest change of ``tau_j`` from one sample to the next [N m or N per
         sample], one number or one per joint; None (the default): no limit. The first sample after a
@@ -436,7 +436,10 @@ class Controller:
             return np.full(n, np.inf)
         if isinstance(value, str) and value == "urdf" and name == "torque_limit":
             limits = self.robot.limits
-            return np.full(n, np.inf) if limits is None else np.array(limits.effort, float)
+            if limits is None:
+                return np.full(n, np.inf)
+            # an effort of 0 (or none) in a URDF states no limit: an actuated joint with no torque is not one
+            return np.where(np.array(limits.effort, float) > 0, np.array(limits.effort, float), np.inf)
         try:
             arr = np.broadcast_to(np.asarray(value, dtype=float), (n,)).copy()
         except (TypeError, ValueError):
@@ -538,9 +541,12 @@ class Controller:
         if type(t) is not float and (isinstance(t, (str, bytes, bool, np.bool_))
                                      or not isinstance(t, (int, np.integer, np.floating))):
             raise HybridError(f"t = {t!r:.40}; give the sample time in seconds (a number)")
-        self._t[0] = t
+        try:
+            self._t[0] = t
+        except OverflowError:  # an integer beyond any double
+            self._t[0] = np.inf
         if not _isfinite(self._t[0]):
-            raise HybridError(f"t = {t!r}; give a finite sample time")
+            raise HybridError(f"t = {t!r:.40}; give a finite sample time")
         t = self._t[0]
         timing = self._timing(t)
         if self._binding is None:
@@ -625,9 +631,6 @@ class Controller:
         """The general path: any array-like input, and the error that names the cause. A sample the
         law fails on (its inputs fine) still moves the sample clock, as the generated C's does."""
         t = self._t[0]
-        if not all(np.isfinite(v).all() for v in (self._t, self._extra, self._rate, self._target)):
-            raise HybridError(f"the references at t = {t} s are not finite; give references that return finite "
-                              f"numbers\n  values {self._extra}, rates {self._rate}, desired point {self._target}")
         for name, v in (("q", q), ("qdot", qdot)):
             try:
                 arr = np.asarray(v, dtype=float)
@@ -638,11 +641,16 @@ class Controller:
             if not np.isfinite(arr).all():
                 raise NonFiniteError(f"{name} = {arr.tolist()} is not finite; give finite joint positions and "
                                      "velocities [rad, rad/s or m, m/s]")
+        inputs_finite = bool(np.isfinite(Fc).all())
+        if inputs_finite and not all(np.isfinite(v).all() for v in (self._extra, self._rate, self._target)):
+            self._tick(t)  # the law failed on its references: the clock moves, as the generated C's
+            raise HybridError(f"the references at t = {t} s are not finite; give references that return finite "
+                              f"numbers\n  values {self._extra}, rates {self._rate}, desired point {self._target}")
         try:
             got = self._step(q, qdot, Fc, self._z, self._last, self._filter, self._estimate, self._t, self._extra,
                              self._rate, self._target, *self._params, singular_tol=self.singular_tol)
         except HybridError:
-            if np.isfinite(Fc).all():
+            if inputs_finite:
                 self._tick(t)
             raise
         for (name, _, _), o in zip(self._step.outputs, self._out):
