@@ -165,6 +165,16 @@ def _line(ax, t, y, scheme: str | None, name: str, markers: bool = True):
     return ax.plot(t, y, label=name, markevery=_markevery(len(t), scheme), ms=4, mfc="white", **style)
 
 
+def _finished(fig, axes, title: str | None):
+    """``fig`` with its axes in the project's style, the first one's legend and the title."""
+    for ax in axes:
+        _style(ax)
+    axes[0].legend(fontsize=FONT - 1, loc="lower right")
+    if title:
+        fig.suptitle(title, fontsize=FONT + 1)
+    return fig
+
+
 def _rows(res, every: int | None = None) -> slice:
     """Every k-th record row, enough for a smooth line (about 3,000 points)."""
     return slice(None, None, every or max(1, len(res.t) // 3000))
@@ -228,12 +238,7 @@ def plot_comparison(results: dict, title: str | None = None, path: bool = False)
         axes[2].set_ylabel("deviation across\nthe desired path [mm]", fontsize=FONT)
         axes[3].set_ylabel("penetration [mm]", fontsize=FONT)
     axes[-1].set_xlabel("time [s]", fontsize=FONT)
-    for ax in axes:
-        _style(ax)
-    axes[0].legend(fontsize=FONT - 1, loc="lower right")
-    if title:
-        fig.suptitle(title, fontsize=FONT + 1)
-    return fig
+    return _finished(fig, axes, title)
 
 
 def plot_path(results: dict, title: str | None = None):
@@ -471,12 +476,7 @@ def plot_first_touch(results: dict, title: str | None = None):
     axes[1].set_ylabel("surface's normal force\non the sensor tip [N]", fontsize=FONT)
     axes[1].set_xlabel("time from the first touch [s]", fontsize=FONT)
     axes[1].set_xlim(-0.02, 0.3)
-    for ax in axes:
-        _style(ax)
-    axes[0].legend(fontsize=FONT - 1, loc="lower right")
-    if title:
-        fig.suptitle(title, fontsize=FONT + 1)
-    return fig
+    return _finished(fig, axes, title)
 
 
 # ------------------------------------------------------------------ files

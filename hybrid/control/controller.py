@@ -439,7 +439,8 @@ class Controller:
             if limits is None:
                 return np.full(n, np.inf)
             # an effort of 0 (or none) in a URDF states no limit: an actuated joint with no torque is not one
-            return np.where(np.array(limits.effort, float) > 0, np.array(limits.effort, float), np.inf)
+            effort = np.array(limits.effort, float)
+            return np.where(effort > 0, effort, np.inf)
         try:
             arr = np.broadcast_to(np.asarray(value, dtype=float), (n,)).copy()
         except (TypeError, ValueError):
@@ -548,7 +549,7 @@ class Controller:
         if not _isfinite(self._t[0]):
             raise HybridError(f"t = {t!r:.40}; give a finite sample time")
         t = self._t[0]
-        timing = self._timing(t)
+        clock, timing = self._clock, self._timing(t)
         if self._binding is None:
             self._native()
         out, z = self._out, self._z
@@ -569,14 +570,13 @@ class Controller:
         self._estimate, out[j] = out[j], self._estimate
         self._sampled = True
         if timing is not None:  # the law's torque, the integrals as they were
-            raise SampleTimingError(timing, t, self._clock_before, self.sample_time, out[0].copy())
+            raise SampleTimingError(timing, t, clock, self.sample_time, out[0].copy())
         # the integrals' two buffers trade places: no copy
         self._z, out[1] = out[1], z
         return out[0].copy()
 
     def _timing(self, t: float) -> str | None:
         """The timing status of a sample at ``t`` (None: on time, or no check, or no last sample)."""
-        self._clock_before = self._clock
         if self._clock is None or self.timing_tolerance is None:
             return None
         dt, T, tol = t - self._clock, self.sample_time, self.timing_tolerance
