@@ -76,14 +76,16 @@ def signals_kernel(spec: LoopSpec) -> Kernel:
 
 
 def stepping_kernel(spec: LoopSpec) -> Kernel:
-    """The state derivative and the record columns the loop reads (:func:`signals_kernel`) at one state,
-    together: the first stage of an RK4 step gives the row's signals with what it shares with them (the
-    kinematics, the contact) computed once."""
+    """The state derivative, the record columns the loop reads (:func:`signals_kernel`) and the whole
+    output record at one state, together: the first stage of an RK4 step gives the row's signals and
+    record with what they share with it (the kinematics, the contact) computed once. (The record is
+    computed whether or not it is kept: every build then has the same arithmetic, a run alone and a
+    batch of lanes alike.)"""
     rhs, signals = spec.rhs, signals_kernel(spec)
     have = {a.name for a in rhs.inputs}
     extra = tuple(a for a in signals.inputs[1:] if a.name not in have)
-    return Kernel("plant_rhs_signals", rhs.inputs + extra, (rhs.outputs[0], signals.outputs[0]),
-                  "the plant's state derivative and the record columns the closed loop reads")
+    return Kernel("plant_rhs_signals", rhs.inputs + extra, (rhs.outputs[0], signals.outputs[0], spec.outputs.outputs[0]),
+                  "the plant's state derivative, the record columns the closed loop reads and the whole record")
 
 
 def blocks(spec: LoopSpec) -> list[tuple[str, int]]:
@@ -106,7 +108,12 @@ def blocks(spec: LoopSpec) -> list[tuple[str, int]]:
 def _signature(prefix: str) -> str:
     return (f"int {prefix}_closed_loop(int nruns, const double *runs, int n_samples, int steps_per_sample, "
             "double h, double sample_time, double singular_tol, double *metrics, int *status, "
-            "int *failed_sample, double *states, double *taus)")
+            "int *failed_sample, double *states, double *taus, double *outputs)")
+
+
+def _pick(target: str, source: str, index: list[int], indent: str = " " * 8) -> str:
+    """C statements copying the elements ``index`` of ``source`` into ``target``, in order."""
+    return "".join(f"{indent}{target}[{i}] = {source}[{j}];\n" for i, j in enumerate(index))
 
 
 def _driver(prefix: str, spec: LoopSpec, stepping: Kernel) -> str:
@@ -118,11 +125,14 @@ def _driver(prefix: str, spec: LoopSpec, stepping: Kernel) -> str:
         at += size
     nb, nf, m = at, len(spec.force_columns), step.inputs[3].size // 2
     ns, nm = nf + len(SIGNALS), len(METRICS) + nq
+    ny = stepping.outputs[2].size  # the output record, computed with each step's first stage
+    names = spec.outputs.outputs[0].names
+    force, signals = ([names.index(c) for c in cols] for cols in (spec.force_columns, stepping.outputs[1].names))
     iF, iv, ipen, iN = (nf + i for i in range(4))
     plant = {a.name: f"blk + {offset['plant.' + a.name]}" for a in (*rhs.inputs[2:], *spec.outputs.inputs[1:])}
     # the run's arrays each kernel holds fixed, then where its values computed once go
     held = ", ".join([*(plant[a.name] for a in rhs.inputs[2:]), "pre_rhs"])
-    shown = ", ".join([*(plant[a.name] for a in spec.outputs.inputs[1:]), "pre_sig"])
+    shown = ", ".join([*(plant[a.name] for a in spec.outputs.inputs[1:]), "pre_out"])
     both = ", ".join([*(plant[a.name] for a in stepping.inputs[2:]), "pre_both"])
     params = ", ".join([*(f"blk + {offset['controller.' + a.name]}" for a in step.inputs[len(_DRIVEN):]),
                         "pre_step"])
@@ -135,7 +145,7 @@ def _driver(prefix: str, spec: LoopSpec, stepping: Kernel) -> str:
     finite = " | ".join(f"hl_not_finite(o_{a.name}, {a.size})" for a in outs)
     def stage(state: str, k: str) -> str:  # the first stage also gives the row's signals
         if k == "k1":
-            return f"plant_rhs_signals_lanes({state}, {tau}, pre_both, {k}, s, base);"
+            return f"plant_rhs_signals_lanes({state}, {tau}, pre_both, {k}, s, y, base);"
         return f"plant_rhs_lanes({state}, {tau}, pre_rhs, {k}, base);"
 
     rk4 = rk4_step(stage, "x", nx, "x", " " * 12, "j")
@@ -265,14 +275,24 @@ static void record(double *states, double *taus, int g, int used, long row, long
     }}
 }}
 
+/* the output row of each lane still running (NaN for the others) */
+static void record_outputs(double *outputs, int g, int used, long row, long rows, const hl_v *y, hl_i alive) {{
+    int l, j;
+    if (!outputs) return;
+    for (l = 0; l < used; ++l) {{
+        const long at = (long)(g + l) * rows + row;
+        for (j = 0; j < {ny}; ++j) outputs[at * {ny} + j] = alive[l] ? y[j][l] : NAN;
+    }}
+}}
+
 /* the runs g .. g + used - 1 as one group of HL_W lanes (unused lanes repeat run g) */
 static void run_lanes(int g, int used, const double *runs, int n_samples, int steps_per_sample, double h,
                       double sample_time, double singular_tol, double *metrics, int *status, int *failed_sample,
-                      double *states, double *taus) {{
-    hl_v pre_rhs[PLANT_RHS_LANES_NPRE], pre_sig[LOOP_SIGNALS_LANES_NPRE], pre_both[PLANT_RHS_SIGNALS_LANES_NPRE],
+                      double *states, double *taus, double *outputs) {{
+    hl_v pre_rhs[PLANT_RHS_LANES_NPRE], pre_out[PLANT_OUTPUTS_LANES_NPRE], pre_both[PLANT_RHS_SIGNALS_LANES_NPRE],
         pre_step[{step.name.upper()}_LANES_NPRE];
     hl_v blk[{nb}], x[{nx}], xt[{nx}], k1[{nx}], k2[{nx}], k3[{nx}], k4[{nx}], s[{ns}], fc[6], z[{2 * m}], tv[1],
-        zero[13], base[{3 * nq}], last[{nq + 1}];
+        zero[13], base[{3 * nq}], last[{nq + 1}], y[{ny}];
     {out_decl}
     lanes_run run;
     lanes_metrics mt;
@@ -302,13 +322,13 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     for (j = 0; j <= {nq}; ++j) last[j] = hl_splat(0.0);
     for (j = 0; j < {nx}; ++j) x[j] = blk[{x0} + j];
     plant_rhs_lanes_pre({held});
-    loop_signals_lanes_pre({shown});
+    plant_outputs_lanes_pre({shown});
     plant_rhs_signals_lanes_pre({both});
     {step.name}_lanes_pre({params});
     for (k = 0; k < n_samples && hl_any(run.alive); ++k) {{
         /* the sensor's reading at the sample instant (a row's signals come with its step's first stage) */
-        loop_signals_lanes(x, pre_sig, s);
-        for (j = 0; j < {nf}; ++j) fc[j] = s[j];
+        plant_outputs_lanes(x, pre_out, y);
+{_pick("fc", "y", force)}
         tv[0] = hl_splat(k * sample_time);
         /* the plant's sensor gives the wrench on the robot itself and the surface is told: no filter, no estimate */
         {step.name}_lanes(x, x + {nq}, fc, z, last, zero, zero, tv, zero, zero, zero, pre_step, {out_args});
@@ -327,6 +347,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
 {rk4}
             /* the row the step started from (the peak torques read each sample's torque all the same) */
             metrics_row(&mt, blk, s, {tau}, row, h, end);
+            record_outputs(outputs, g, used, row, rows, y, run.alive);
             ++row;
             flag(&run, hl_not_finite(x, {nx}), HYBRID_NONFINITE, k);
             /* a stopped lane restarts from its initial state: its numbers no longer matter, and they stay
@@ -338,10 +359,14 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         }}
     }}
     if (k > 0) {{ /* the last row */
-        loop_signals_lanes(x, pre_sig, s);
-        metrics_row(&mt, blk, s, {tau}, row, h, end);
+        plant_outputs_lanes(x, pre_out, y);
+{_pick("s", "y", signals)}        metrics_row(&mt, blk, s, {tau}, row, h, end);
+        record_outputs(outputs, g, used, row, rows, y, run.alive);
     }}
-    while (++row < rows) record(states, taus, g, used, row, rows, x, {tau}, run.alive, run.alive); /* all stopped */
+    while (++row < rows) {{ /* all stopped */
+        record(states, taus, g, used, row, rows, x, {tau}, run.alive, run.alive);
+        record_outputs(outputs, g, used, row, rows, y, run.alive);
+    }}
     for (l = 0; l < used; ++l) {{
         status[g + l] = run.status[l];
         failed_sample[g + l] = run.sample[l];
@@ -353,7 +378,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     int g;
     for (g = 0; g < nruns; g += HL_W) {{
         run_lanes(g, nruns - g < HL_W ? nruns - g : HL_W, runs, n_samples, steps_per_sample, h, sample_time,
-                  singular_tol, metrics, status, failed_sample, states, taus);
+                  singular_tol, metrics, status, failed_sample, states, taus, outputs);
     }}
     return HYBRID_OK;
 }}
@@ -394,12 +419,13 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
             "#if !defined(__GNUC__)\n#error \"the compiled closed loop needs GCC or Clang (vector extensions)\"\n"
             f"#endif\n{f'#define HL_W {lanes}' if lanes else ''}\n{PRELUDE}\n{status_defines()}\n\n{libm_maps()}\n"
             f"{_STAGE.format(small=int(stages.count(chr(10)) <= _INLINE_LINES))}\n{stages}"
-            f"{lanes_function(signals_kernel(spec), 'loop_signals_lanes', shown)}\n"
+            f"{lanes_function(spec.outputs, 'plant_outputs_lanes', shown)}\n"
             f"{lanes_function(spec.step, spec.step.name + '_lanes', params)}\n{_driver(prefix, spec, stepping)}")
     doc = ("run nruns closed loops (rows of runs, blocks as the manifest's closed_loop.blocks), HL_W at a time: "
            "n_samples control samples of sample_time [s], steps_per_sample RK4 steps of h [s] each; writes "
            "metrics (nruns x closed_loop.metrics), status and failed_sample (-1, or the sample where a run "
-           "stopped) per run, and states and taus per step when not NULL (nruns x rows x size)")
+           "stopped) per run, and states, taus and the output record (closed_loop.outputs) per step when not NULL "
+           "(nruns x rows x size)")
     header = f"""#ifndef {prefix.upper()}_H
 #define {prefix.upper()}_H
 /* cdef-begin */
@@ -414,6 +440,7 @@ int {prefix}_lanes(void);
             "blocks": [{"name": n, "size": s} for n, s in blocks(spec)],
             "state": list(spec.rhs.inputs[0].names or ()), "nx": spec.rhs.inputs[0].size, "nq": nq,
             "metrics": [*METRICS, *(f"peak_torque_joint{j + 1}_Nm" for j in range(nq))],
-            "signals": [*spec.force_columns, *SIGNALS]}
+            "signals": [*spec.force_columns, *SIGNALS],
+            "outputs": list(stepping.outputs[2].names)}
     text = manifest(prefix, (), f"CasADi {ca.__version__}", {**info, "closed_loop": loop})
     return Unit(prefix, stamp(body), stamp(header), text)

@@ -6,8 +6,12 @@ import difflib
 import os
 from pathlib import Path
 
+from hybrid.control.schemes import SCHEMES
+from hybrid.experiments.paper import paper_experiment
 from hybrid.files import temporary
 from hybrid.native.stamp import is_hand_edited
+from hybrid.native.units import LOOPS, loop_files
+from hybrid.simulation.closed_loop import loop_of
 
 from .emit import BACKENDS, build_unit, generated_dir
 
@@ -18,11 +22,19 @@ def _hint(target: Path | None) -> str:
     return UPDATE_HINT if target is None else f"run `python -m hybrid regenerate --target {target}`"
 
 
+def committed_loops() -> list[tuple]:
+    """The closed loops committed with the paper's arm, ``(plant, variant, lanes)`` each: its experiment
+    under each scheme of the ``paper`` command, as a run alone (what ``simulate`` runs first)."""
+    return [(*loop_of(paper_experiment(controller=scheme)), 1) for scheme in SCHEMES]
+
+
 def expected_files(backends=BACKENDS) -> dict[str, str]:
-    """Every generated file's name and the text the generators produce now."""
+    """Every generated file's name (a path under ``generated/``) and the text the generators produce now."""
     files: dict[str, str] = {}
     for b in backends:
         files.update(build_unit(b).files)
+    files.update({f"{LOOPS}/{name}": text for name, text in loop_files(
+        [(plant, dict(variant), lanes) for plant, variant, lanes in committed_loops()]).items()})
     return files
 
 
@@ -59,8 +71,9 @@ def write(target: Path | None = None, force: bool = False) -> list[str]:
     permissions a plain ``open`` gives (the checkout's other users can read them).
     """
     target = target or generated_dir()
-    target.mkdir(parents=True, exist_ok=True)
     files = expected_files()
+    for name in files:
+        (target / name).parent.mkdir(parents=True, exist_ok=True)
     edited = [n for n in files if (target / n).is_file() and is_hand_edited((target / n).read_text())]
     if edited and not force:
         raise FileExistsError(

@@ -136,7 +136,7 @@ def law_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]) -> tu
         (Arg("F", F, ("N",) * 3 + ("N m",) * 3), Arg("tau", tau, rb.joint_units(chain, "tau"))),
         f"decoupling law F* [N, N m] (base axes) and tau = J^T F* + null-space tau0 [N m], task axes "
         f"{', '.join(AXIS_NAMES[i] for i in axes)} on a {spec.kind}",
-        batched=("q", "qd", "a", "Fc", "tau0"),
+        batched=("q", "qd", "a", "Fc", "tau0"), lanes=True,
         guards=(frame_guard(tf.sine), conditioning_guard(cond, CONDITIONING)))
     return frame_kernel(spec), law
 

@@ -54,8 +54,13 @@ def _run(args: list[str], cwd: Path, **env: str) -> subprocess.CompletedProcess:
                           text=True, timeout=300)
 
 
+def _tree(folder: Path) -> dict[str, bytes]:
+    """Every file under ``folder`` by its path there, with its bytes."""
+    return {p.relative_to(folder).as_posix(): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
+
+
 def _committed() -> dict[str, bytes]:
-    return {p.name: p.read_bytes() for p in sorted(GENERATED.iterdir()) if p.suffix in (".c", ".h", ".json")}
+    return {n: b for n, b in _tree(GENERATED).items() if n.endswith((".c", ".h", ".json"))}
 
 
 # ------------------------------------------------------------------ import hybrid
@@ -254,8 +259,8 @@ def test_regenerate_rebuilds_an_emptied_checkout_byte_for_byte(tmp_path):
     committed = _committed()
     assert {"hybrid_sympy.c", "hybrid_sympy.h", "hybrid_casadi.json"} <= set(committed)
     copy = _copy_checkout(tmp_path / "checkout")
-    for path in (copy / "generated").iterdir():
-        path.unlink()
+    shutil.rmtree(copy / "generated")
+    (copy / "generated").mkdir()
 
     def regenerate(*args):
         return _run(["-c", _IN_COPY, str(copy), "regenerate", *args], copy, PYTHONPATH=str(copy))
@@ -268,18 +273,18 @@ def test_regenerate_rebuilds_an_emptied_checkout_byte_for_byte(tmp_path):
 
     done = regenerate()
     assert done.returncode == 0, done.stderr
-    written = {p.name: p.read_bytes() for p in sorted((copy / "generated").iterdir())}
+    written = _tree(copy / "generated")
     assert written.keys() == committed.keys()
     assert [n for n in committed if written[n] != committed[n]] == []
     mask = os.umask(0)
     os.umask(mask)
-    modes = {p.name: stat.S_IMODE(p.stat().st_mode) for p in (copy / "generated").iterdir()}
+    modes = {p.name: stat.S_IMODE(p.stat().st_mode) for p in (copy / "generated").rglob("*") if p.is_file()}
     assert set(modes.values()) == {0o666 & ~mask}, modes  # readable as any file this user writes
 
     shutil.rmtree(copy / "generated")  # the folder itself may go too
     assert regenerate().returncode == 0
     assert regenerate("--check").returncode == 0
-    assert {p.name: p.read_bytes() for p in (copy / "generated").iterdir()} == committed
+    assert _tree(copy / "generated") == committed
 
 
 # ------------------------------------------------------------------ an installed package
@@ -316,6 +321,7 @@ def test_installed_package_refuses_regenerate_and_writes_nothing(tmp_path):
     assert installed.returncode == 0, installed.stderr
     assert (site / "hybrid" / "codegen" / "regenerate.py").is_file()
     assert (site / "hybrid" / "_generated" / "hybrid_sympy.c").is_file()
+    assert (site / "hybrid" / "_generated" / "loops" / "index.json").is_file()  # the committed closed loops
 
     elsewhere = tmp_path / "elsewhere"
     elsewhere.mkdir()
@@ -335,7 +341,7 @@ def test_installed_package_refuses_regenerate_and_writes_nothing(tmp_path):
     out = tmp_path / "out"
     run = _run(["-m", "hybrid", "regenerate", "--target", str(out)], elsewhere, **env)
     assert run.returncode == 0, run.stderr
-    assert {p.name: p.read_bytes() for p in out.iterdir()} == _committed()
+    assert _tree(out) == _committed()
     run = _run(["-m", "hybrid", "regenerate", "--check", "--target", str(out)], elsewhere, **env)
     assert run.returncode == 0, run.stderr
     assert _listing(site) == before
@@ -364,6 +370,24 @@ def test_a_warm_run_needs_neither_sympy_nor_casadi(tmp_path):
     again = _run(["-c", code], tmp_path)
     assert again.returncode == 0, again.stderr
     assert again.stdout.strip() == "[]", f"a warm run loaded {again.stdout.strip()}"
+
+
+def test_the_papers_runs_in_a_fresh_cache_need_no_generator_and_compile_only_their_loop(tmp_path):
+    """The paper's experiment, under each scheme, runs from the closed loops committed in
+    ``generated/loops``: a fresh cache generates nothing, and compiles the loop alone (its record comes
+    from the loop, not from the plant's unit)."""
+    code = ("import sys, hybrid\n"
+            "for c in ('task', 'khatib', 'raibert_craig'):\n"
+            "    hybrid.simulate(hybrid.paper_experiment(duration=0.02, controller=c))\n"
+            "print(sorted(m for m in ('sympy', 'casadi', 'hybrid.codegen') if m in sys.modules))")
+    cache = tmp_path / "cache"
+    run = _run(["-c", code], tmp_path, HYBRID_CACHE_DIR=str(cache))
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.strip() == "[]", f"a fresh cache loaded {run.stdout.strip()}"
+    assert not (cache / "units").exists() or not any((cache / "units").iterdir())  # nothing generated
+    built = sorted(p.name.rsplit("_", 1)[0] for p in cache.iterdir() if p.name.startswith("_hybrid"))
+    committed = json.loads((GENERATED / "loops" / "index.json").read_text())["loops"]
+    assert built == sorted(f"_{prefix}" for prefix in committed), built
 
 
 def test_the_version_has_one_source():

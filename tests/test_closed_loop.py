@@ -54,6 +54,22 @@ def test_compiled_runs_equal_the_python_runner(case):
             assert got.metrics[name] == pytest.approx(value, rel=1e-6, abs=1e-10), name
 
 
+@pytest.mark.parametrize("make", [lambda: _experiment("raibert_craig"),
+                                  lambda: hybrid.tracing_experiment(duration=0.3, controller="khatib")])
+def test_the_loops_output_record_is_the_plants_own(make):
+    """The output record the compiled loop writes (with each step's first stage) equals, state for
+    state, the record the plant's own unit computes from the recorded states (the committed SymPy
+    unit for the paper's arm; the plant unit of the 3-D experiment), within rounding of each column."""
+    exp = make()
+    res = hybrid.simulate(exp)
+    plant = exp.plant()
+    assert res.record["outputs"] == plant.record["outputs"]
+    want = plant.outputs(res.state)
+    assert res.outputs.shape == want.shape and np.isfinite(res.outputs).all()
+    scale = np.abs(want).max(axis=0) + 1e-12
+    assert np.abs((res.outputs - want) / scale).max() < 1e-11
+
+
 @pytest.mark.parametrize("overrides", [{}, {"controller": "khatib", "contact": hybrid.Contact(friction=0.3)}])
 def test_the_3d_experiment_in_c_equals_the_python_runner(overrides):
     """The UR5 on the sphere (conventions §10): the 6-joint plant and six-axis controller as lanes."""
@@ -86,17 +102,25 @@ def test_metrics_in_c_equal_the_numpy_definitions_on_the_same_record():
 
 
 def test_lanes_do_not_depend_on_their_neighbours_and_a_stopped_run_stops_alone():
-    """Nineteen runs (more than one group of lanes, the last one partly filled), one diverging:
-    each run's metrics equal its own run alone; the diverging one reports where it stopped."""
+    """Nineteen runs (more than one group of lanes, the last one partly filled), one diverging: each
+    run's numbers are bitwise the same beside other neighbours, and equal its own run alone (the
+    one-lane build) within rounding; the diverging one reports where it stopped."""
     exps = [hybrid.paper_experiment(duration=0.6, model_error=m, contact=hybrid.Contact(friction=f))
             for m in (0.0, 0.15, 0.3) for f in (0.0, 0.1, 0.2, 0.3, 0.35, 0.4)]
     exps.insert(7, hybrid.paper_experiment(duration=0.6, model_error=5.0))
     prepared = [closed_loop.prepare(e) for e in exps]
     together = closed_loop.run(prepared, record=True)
+    reordered = closed_loop.run(prepared[::-1], record=True)[::-1]  # other lanes, other neighbours
     for i, p in enumerate(prepared):
+        other = reordered[i]
+        assert (other.status, other.failed_sample) == (together[i].status, together[i].failed_sample)
+        np.testing.assert_array_equal(other.states, together[i].states)  # NaN where NaN
+        np.testing.assert_array_equal(other.taus, together[i].taus)
+        assert other.metrics == pytest.approx(together[i].metrics, rel=0, abs=0, nan_ok=True)
         alone = closed_loop.run([p], record=True)[0]  # the one-lane build
         assert alone.status == together[i].status and alone.failed_sample == together[i].failed_sample
         np.testing.assert_allclose(together[i].states, alone.states, rtol=1e-12, atol=1e-15)  # NaN where NaN
+        np.testing.assert_allclose(together[i].outputs, alone.outputs, rtol=1e-12, atol=1e-15)
         if alone.status == 0:
             assert np.isfinite(alone.states).all() and np.isfinite(alone.taus).all()
             for name, value in alone.metrics.items():

@@ -293,24 +293,33 @@ class Function:
 class Unit:
     """A compiled unit and its manifest: ``unit.function(name)`` binds one function.
 
+    ``module`` is the compiled module, or a function that compiles and loads it, called when a
+    function is first bound (what a manifest says is known before any compiling);
     ``labels`` renames arguments in messages (the manifest's ``qd`` is the API's ``qdot``);
     ``folder`` is where the unit's C lives, when known.
     """
 
     def __init__(self, module, manifest: dict, singular_hint: str = "", labels: dict | None = None,
                  folder=None):
-        self.module, self.manifest, self.folder = module, manifest, folder
+        self._module, self.manifest, self.folder = module, manifest, folder
+        self._load_lock = threading.Lock()
         self._fast = None
         self._entries = {f["name"]: f for f in manifest["functions"]}
         self._hint, self._labels = singular_hint, labels
         self._bound: dict[str, Function] = {}
 
+    @property
+    def module(self):
+        """The compiled module (``.ffi``, ``.lib``), compiled and loaded on first use."""
+        with self._load_lock:
+            if callable(self._module):
+                self._module = self._module()
+            return self._module
+
     def function(self, name: str) -> Function:
         if name not in self._bound:
-            if name not in self._entries:
-                raise HybridError(f"the unit {self.manifest['unit']} has no function {name!r}; "
-                                  f"it has {', '.join(self._entries)}")
-            self._bound[name] = Function(self.module, self._entries[name], self._hint, self._labels, self)
+            entry = self.manifest_entry(name)
+            self._bound[name] = Function(self.module, entry, self._hint, self._labels, self)
         return self._bound[name]
 
     def fast(self):
@@ -318,6 +327,13 @@ class Unit:
         if self._fast is None:
             self._fast = load_fastcall(Path(self.folder), self.manifest["unit"], self.manifest)
         return self._fast
+
+    def manifest_entry(self, name: str) -> dict:
+        """The manifest's entry of the function ``name`` (nothing compiled)."""
+        if name not in self._entries:
+            raise HybridError(f"the unit {self.manifest['unit']} has no function {name!r}; "
+                              f"it has {', '.join(self._entries)}")
+        return self._entries[name]
 
     def entry(self, name: str) -> dict:
         return self.function(name).entry

@@ -344,8 +344,8 @@ def manifest(backend: str = "sympy") -> dict:
 
 
 def load_generated(src_dir: Path, prefix: str):
-    """Compile (cached) and load the unit ``<prefix>`` written into ``src_dir``: ``(module, manifest)``."""
-    return _compile_unit(src_dir, prefix), read_manifest(src_dir, prefix)
+    """Compile (cached) and load the unit ``<prefix>`` written into ``src_dir`` (a cffi module)."""
+    return _compile_unit(src_dir, prefix)
 
 
 def write_unit_files(target: Path, files: dict[str, str]) -> None:

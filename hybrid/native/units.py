@@ -20,7 +20,7 @@ from functools import cache
 from pathlib import Path
 
 from hybrid.errors import HybridError
-from hybrid.native import build
+from hybrid.native import build, stamp
 from hybrid.native.binding import Unit
 from hybrid.validate import c_identifier
 
@@ -45,7 +45,7 @@ def planar_unit(backend: str) -> Unit:
 
 @cache
 def _planar_unit(backend: str) -> Unit:
-    return Unit(build.load(backend), build.manifest(backend), PLANAR_SINGULAR, {"qd": "qdot", "rd": "rdot"},
+    return Unit(lambda: build.load(backend), build.manifest(backend), PLANAR_SINGULAR, {"qd": "qdot", "rd": "rdot"},
                 folder=build.source_dir())
 
 
@@ -83,13 +83,37 @@ def _tool_versions() -> dict:
     return {tool: importlib.metadata.version(tool) for tool in ("casadi", "sympy")}
 
 
+#: the folder of ``generated/`` holding the committed closed loops, and its index of them
+LOOPS, LOOP_INDEX = "loops", "index.json"
+
+
+def committed_key(prefix: str, key: dict) -> str:
+    """The digest a committed unit is filed under: ``key`` and the generator's source (not the tools'
+    versions: C the pinned tools wrote is as good as C from others)."""
+    material = json.dumps({**key, "generator": fingerprint(), "prefix": prefix}, sort_keys=True)
+    return hashlib.sha256(material.encode()).hexdigest()
+
+
+def _committed_folder(prefix: str, key: dict) -> Path | None:
+    """``generated/loops`` when it holds the unit ``prefix`` for this very ``key``, else None."""
+    folder = build.source_dir() / LOOPS
+    try:
+        index = json.loads((folder / LOOP_INDEX).read_text())["loops"]
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+    return folder if isinstance(index, dict) and index.get(prefix) == committed_key(prefix, key) else None
+
+
 def compiled(prefix: str, key: dict, make) -> Unit:
-    """Generate (cached by ``key``, the generator's source and the versions of SymPy and CasADi),
-    compile (cached) and load the unit that ``make()`` builds."""
-    key = {**key, "generator": fingerprint(), **_tool_versions(), "prefix": prefix}
-    folder = build.generated_unit(prefix, key, lambda: make().files)
-    module, manifest = build.load_generated(folder, prefix)
-    return Unit(module, manifest, " (a wrist, elbow or shoulder singularity)",
+    """The unit that ``make()`` builds: committed in ``generated/`` for this key, else generated
+    (cached by ``key``, the generator's source and the versions of SymPy and CasADi); it is compiled
+    (cached) and loaded when first used."""
+    folder = _committed_folder(prefix, key)
+    if folder is None:
+        folder = build.generated_unit(prefix, {**key, "generator": fingerprint(), **_tool_versions(),
+                                               "prefix": prefix}, lambda: make().files)
+    return Unit(lambda: build.load_generated(folder, prefix), build.read_manifest(folder, prefix),
+                " (a wrist, elbow or shoulder singularity)",
                 {"qd": "qdot", "pd": "pdot"}, folder=folder)
 
 
@@ -144,11 +168,28 @@ def loop_unit(plant, variant: dict, lanes: int | None) -> Unit:
     """The whole closed loop of a generated plant (a :class:`hybrid.plants.interface.LoopPlant`) and a
     controller step (``variant``: its chain, name, surface spec, axes, variants and step function);
     ``lanes=1``: the build for one run at a time."""
-    v = variant
+    prefix, key = _loop_key(plant, variant, lanes)
+    return compiled(prefix, key, lambda: _build_loop(prefix, plant, variant, lanes))
+
+
+def _loop_key(plant, v: dict, lanes: int | None) -> tuple[str, dict]:
     prefix = c_identifier(f"hybrid_{v['name']}_{plant.name}_{v['step']}_loop{'_one' if lanes == 1 else ''}")
     key = {"chain": chain_key(v["chain"]), "surface": v["spec"].key(), "axes": list(v["axes"]), "plant": plant.key(),
            **{k: v[k] for k in ("desired_frame", "position_error", "wrench_sensor", "step")}, "lanes": lanes}
-    return compiled(prefix, key, lambda: _build_loop(prefix, plant, v, lanes))
+    return prefix, key
+
+
+def loop_files(loops) -> dict[str, str]:
+    """The files of ``generated/loops`` for the closed loops ``loops`` (``(plant, variant, lanes)`` each):
+    each unit's C, header and manifest, and the index that files each under its key."""
+    files, index = {}, {}
+    for plant, variant, lanes in loops:
+        prefix, key = _loop_key(plant, variant, lanes)
+        files.update(_build_loop(prefix, plant, variant, lanes).files)
+        index[prefix] = committed_key(prefix, key)
+    data = {"do_not_edit": stamp.MANIFEST_STAMP, "loops": index}
+    files[LOOP_INDEX] = json.dumps({**data, "body_sha256": stamp.json_body_hash(data)}, indent=1) + "\n"
+    return files
 
 
 def _build_loop(prefix: str, plant, v: dict, lanes: int | None):

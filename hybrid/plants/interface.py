@@ -13,6 +13,7 @@ names the plants a run can be given (``hybrid.simulate(exp, plant=name)``).
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import cached_property
 
 import numpy as np
 
@@ -88,32 +89,40 @@ class Plant:
 
 
 class GeneratedPlant(Plant):
-    """A plant whose state derivative ``plant_rhs`` (with its RK4 entry point) and output record
-    ``plant_outputs`` are generated C; ``held`` are the inputs after ``(x, tau)``, ``shown`` those
-    after ``x`` of the outputs."""
+    """A plant whose state derivative ``rhs`` (with its RK4 entry point) and output record ``outputs``
+    are functions of the generated ``unit``; ``held`` are the inputs after ``(x, tau)``, ``shown`` those
+    after ``x`` of the outputs. The unit is compiled when the plant is first advanced or read (a run of
+    the compiled loop needs only its record's names)."""
 
-    def __init__(self, rhs, outputs, held: tuple, shown: tuple, step: float, force_columns: tuple[str, ...]):
-        self._rhs, self._outputs, self._held, self._shown = rhs, outputs, held, shown
-        self.record = plant_record(rhs.entry, outputs.entry)
+    def __init__(self, unit, rhs: str, outputs: str, held: tuple, shown: tuple, step: float,
+                 force_columns: tuple[str, ...]):
+        self._unit, self._names, self._held, self._shown = unit, (rhs, outputs), held, shown
+        self.record = plant_record(unit.manifest_entry(rhs), unit.manifest_entry(outputs))
         self.nq, self.h, self.force_columns = self.record["nq"], step, force_columns
-        self._done = rhs.unit.module.ffi.new("int *")
+
+    @cached_property
+    def _bound(self) -> tuple:
+        """``(rhs, outputs, steps-done cell, fast entry, its binding)``, compiled on first use."""
+        rhs, outputs = (self._unit.function(n) for n in self._names)
         # one state through the one-state entry point (a sample's reading in about a microsecond)
-        self._fast, self._binding = outputs.fast_bind(1, *shown)
+        return (rhs, outputs, self._unit.module.ffi.new("int *"), *outputs.fast_bind(1, *self._shown))
 
     def advance(self, x: np.ndarray, tau: np.ndarray, nsteps: int, trajectory: np.ndarray) -> int:
         """Advance ``x`` in place, writing each step's state to ``trajectory``; steps done."""
-        self._rhs.integrate(x, tau, *self._held, h=self.h, nsteps=nsteps, trajectory=trajectory, done=self._done)
-        return self._done[0]
+        rhs, _, done, _, _ = self._bound
+        rhs.integrate(x, tau, *self._held, h=self.h, nsteps=nsteps, trajectory=trajectory, done=done)
+        return done[0]
 
     def outputs(self, states: np.ndarray) -> np.ndarray:
         """The output record of each state, in one native call."""
         states = np.ascontiguousarray(states)
         out = np.empty((len(states), len(self.record["outputs"])))
         # a partial run's last states may be non-finite: their records are kept as they come
-        self._outputs.batch_into(states, *self._shown, out, status=np.empty(len(states), dtype=np.intc))
+        self._bound[1].batch_into(states, *self._shown, out, status=np.empty(len(states), dtype=np.intc))
         return out
 
     def _record_row(self, x: np.ndarray) -> np.ndarray:
-        row = self._fast(self._binding, 0, x)
+        _, _, _, fast, binding = self._bound
+        row = fast(binding, 0, x)
         # off the fast path (a non-finite state): the record as the batch gives it
         return self.outputs(x[None, :])[0] if row is None else row

@@ -41,9 +41,8 @@ class RigidBodyPlant(GeneratedPlant):
     def __init__(self, exp):
         unit = units.plant_unit(exp.robot.chain, exp.robot.name, exp.surface.spec())
         given = self.inputs(exp)
-        super().__init__(unit.function("plant_rhs"), unit.function("plant_outputs"),
-                         tuple(given[k] for k in ("robot", "plant", "surface")), tuple(given.values()), exp.step,
-                         ("Fc_x", "Fc_y", "Fc_z"))
+        super().__init__(unit, "plant_rhs", "plant_outputs", tuple(given[k] for k in ("robot", "plant", "surface")),
+                         tuple(given.values()), exp.step, ("Fc_x", "Fc_y", "Fc_z"))
         self._robot = exp.robot
 
     @staticmethod

@@ -36,6 +36,7 @@ class Loop:
     metrics: tuple[str, ...]
     nx: int
     nq: int
+    outputs: tuple[str, ...]  # the output record's columns
 
     def row(self, values: dict[str, np.ndarray]) -> np.ndarray:
         """A run's row from its blocks by name (each of the manifest's size)."""
@@ -55,7 +56,8 @@ def _loop(plant, variant: tuple, lanes: int | None = None) -> Loop:
     module, loop = unit.module, unit.manifest["closed_loop"]
     return Loop(getattr(module.lib, loop["symbol"]), module.ffi, (plant, variant),
                 int(getattr(module.lib, loop["lanes_symbol"])()),
-                tuple((b["name"], b["size"]) for b in loop["blocks"]), tuple(loop["metrics"]), loop["nx"], loop["nq"])
+                tuple((b["name"], b["size"]) for b in loop["blocks"]), tuple(loop["metrics"]), loop["nx"], loop["nq"],
+                tuple(loop["outputs"]))
 
 
 @cache
@@ -80,6 +82,13 @@ class Prepared:
     row: np.ndarray
 
 
+def loop_of(exp, ctrl=None) -> tuple:
+    """``(plant, variant)``: what the compiled loop of ``exp`` is built from (its loop plant, and its
+    controller's step variant as sorted items); ``ctrl``: its controller, when built already."""
+    ctrl = ctrl or exp.build_controller()
+    return exp.plant_class.loop_plant(exp), tuple(sorted(ctrl.step_variant().items()))
+
+
 def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None) -> Prepared | None:
     """``exp`` (the paper's experiment or a 3-D one) as a row of the compiled loop, after the checks
     ``simulate`` makes of the settings (a refused experiment raises their HybridError; the record's
@@ -94,9 +103,9 @@ def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None) -> Prep
     if x0 is None:
         x0 = exp.initial_state()
         exp.check_path()
-    plant, given = exp.plant_class.loop_plant(exp), exp.plant_class.inputs(exp)
+    given = exp.plant_class.inputs(exp)
     # the build for the lanes it will run in (lanes=1: a run alone); :func:`run` takes the other if it must
-    loop = _available_loop(plant, tuple(sorted(ctrl.step_variant().items())), lanes)
+    loop = _available_loop(*loop_of(exp, ctrl), lanes)
     if loop is None:
         return None
     fs, vs = exp.force_reference, exp.speed_reference
@@ -110,14 +119,15 @@ def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None) -> Prep
 @dataclass
 class Outcome:
     """One compiled run: ``status`` (0 ok, else the C status code), the sample where it stopped
-    (-1), its metrics by name (NaN for a run that stopped), and with ``record`` its states and
-    torques per step (NaN after a stop)."""
+    (-1), its metrics by name (NaN for a run that stopped), and with ``record`` its states, torques
+    and output record per step (NaN after a stop)."""
 
     status: int
     failed_sample: int
     metrics: dict
     states: np.ndarray | None = None
     taus: np.ndarray | None = None
+    outputs: np.ndarray | None = None
 
 
 def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
@@ -141,16 +151,18 @@ def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
         # every row is written: NaN from where a run stopped
         states = np.empty((n, steps, loop.nx)) if record else None
         taus = np.empty((n, steps, loop.nq)) if record else None
+        outputs = np.empty((n, steps, len(loop.outputs))) if record else None
         ffi = loop.ffi
         loop.function(n, ffi.from_buffer("double[]", runs), n_samples, per_sample, h, sample_time, tol,
                       ffi.from_buffer("double[]", metrics), ffi.from_buffer("int[]", status),
                       ffi.from_buffer("int[]", failed),
                       ffi.from_buffer("double[]", states) if record else ffi.NULL,
-                      ffi.from_buffer("double[]", taus) if record else ffi.NULL)
+                      ffi.from_buffer("double[]", taus) if record else ffi.NULL,
+                      ffi.from_buffer("double[]", outputs) if record else ffi.NULL)
         for j, i in enumerate(members):
             m = dict(zip(loop.metrics, metrics[j].tolist() if status[j] == 0 else [math.nan] * len(loop.metrics)))
             if status[j] == 0:
                 m["contact_losses"] = int(m["contact_losses"])
             outcomes[i] = Outcome(int(status[j]), int(failed[j]), m, states[j] if record else None,
-                                  taus[j] if record else None)
+                                  taus[j] if record else None, outputs[j] if record else None)
     return outcomes

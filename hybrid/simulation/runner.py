@@ -81,7 +81,7 @@ def _compiled_or_run(exp, plant, x0: np.ndarray, compiled: bool = True) -> Simul
     if prepared is not None:
         done = closed_loop.run([prepared], record=True)[0]
         if done.status == 0:
-            return _result(exp, plant, done.states, done.taus, done.metrics)
+            return _result(exp, plant, done.states, done.taus, done.metrics, outputs=done.outputs)
     return run(exp, plant, exp.build_controller(), x0)
 
 
@@ -160,11 +160,13 @@ def _closest_singularity(res: SimulationResult, plant, near: float = 0.1) -> str
 
 
 def _result(exp, plant, states: np.ndarray, taus: np.ndarray, metrics: bool | dict,
-            normals: np.ndarray | None = None) -> SimulationResult:
+            normals: np.ndarray | None = None, outputs: np.ndarray | None = None) -> SimulationResult:
     """The result of a run; ``metrics``: computed from the series (True), none (False), or as given;
-    ``normals``: an estimated surface's normal at each sample."""
+    ``normals``: an estimated surface's normal at each sample; ``outputs``: the output record of each
+    state, when the compiled loop gave it (else the plant computes it)."""
     t = np.arange(len(states)) * exp.step
-    res = SimulationResult(exp, t, states, taus, plant.outputs(states), exp.force_reference.sampled(t),
+    outputs = plant.outputs(states) if outputs is None else outputs
+    res = SimulationResult(exp, t, states, taus, outputs, exp.force_reference.sampled(t),
                            exp.speed_reference.sampled(t), record=plant.record, normal_estimate=normals)
     if metrics is True:
         res.metrics = run_metrics(res)

@@ -1,0 +1,2144 @@
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 050c8e443cc9a80a4ae74af3626dfbca575f5d42e80dc689cd7cde8995c5e675 */
+/* hybrid_planar_arm_circle_controller_4b54e1a71151: the paper's closed loop on a circle: controller_step.
+   Emitted by hybrid's codegen/closed_loop.py. */
+#if !defined(__GNUC__)
+#error "the compiled closed loop needs GCC or Clang (vector extensions)"
+#endif
+#define HL_W 1
+#include <math.h>
+#include <string.h>
+
+#ifndef HL_W /* a build may fix it (1: one run at a time) */
+#if defined(__AVX512F__)
+#define HL_W 8
+#elif defined(__AVX__)
+#define HL_W 4
+#else
+#define HL_W 2
+#endif
+#endif
+typedef double hl_v __attribute__((vector_size(HL_W * 8)));
+typedef long long hl_i __attribute__((vector_size(HL_W * 8)));
+
+static inline hl_v hl_splat(double c) {
+    hl_v r = {0};
+    int l;
+    for (l = 0; l < HL_W; ++l) r[l] = c;
+    return r;
+}
+static inline hl_v hl_select(hl_i m, hl_v a, hl_v b) { return (hl_v)((m & (hl_i)a) | (~m & (hl_i)b)); }
+static inline hl_v hl_bool(hl_i m) { return hl_select(m, hl_splat(1.0), hl_splat(0.0)); }
+/* whether any lane of a mask is set: one instruction where the vector extension has it */
+#if defined(__AVX512F__) && HL_W == 8
+#include <immintrin.h>
+static inline int hl_any(hl_i m) { return _mm512_test_epi64_mask((__m512i)m, (__m512i)m) != 0; }
+#elif defined(__AVX__) && HL_W == 4
+#include <immintrin.h>
+static inline int hl_any(hl_i m) { return !_mm256_testz_si256((__m256i)m, (__m256i)m); }
+#else
+static inline int hl_any(hl_i m) {
+    long long acc = 0;
+    int l;
+    for (l = 0; l < HL_W; ++l) acc |= m[l];
+    return acc != 0;
+}
+#endif
+/* the lanes where any of v[0 .. n-1] is NaN or infinite */
+static inline hl_i hl_not_finite(const hl_v *v, int n) {
+    hl_i bad = hl_splat(0.0) != 0.0;
+    int i;
+    for (i = 0; i < n; ++i) bad |= (v[i] - v[i]) != 0.0;
+    return bad;
+}
+static inline hl_v hl_fabs(hl_v x) { return (hl_v)((hl_i)x & ~(hl_i)hl_splat(-0.0)); }
+static inline hl_v hl_copysign(hl_v x, hl_v y) {
+    hl_i s = (hl_i)hl_splat(-0.0);
+    return (hl_v)(((hl_i)x & ~s) | ((hl_i)y & s));
+}
+/* CasADi's sign: -1, 1, or x itself (0 and NaN) */
+static inline hl_v hl_sign(hl_v x) {
+    return hl_select(x < 0.0, hl_splat(-1.0), hl_select(x > 0.0, hl_splat(1.0), x));
+}
+/* C99 fmax/fmin: a NaN argument loses to a number */
+static inline hl_v hl_fmax(hl_v a, hl_v b) { return hl_select((a > b) | (b != b), a, b); }
+static inline hl_v hl_fmin(hl_v a, hl_v b) { return hl_select((a < b) | (b != b), a, b); }
+static inline hl_v hl_sqrt(hl_v x) {
+    hl_v r = x;
+    int l;
+    for (l = 0; l < HL_W; ++l) r[l] = __builtin_sqrt(x[l]);
+    return r;
+}
+#define HL_MAP1(name, f) static inline hl_v name(hl_v x) { \
+    hl_v r = x; int l; for (l = 0; l < HL_W; ++l) r[l] = f(x[l]); return r; }
+#define HL_MAP2(name, f) static inline hl_v name(hl_v x, hl_v y) { \
+    hl_v r = x; int l; for (l = 0; l < HL_W; ++l) r[l] = f(x[l], y[l]); return r; }
+
+/* Each of sincos, exp and tanh comes twice: hl_<f>_poly is the vector polynomial alone, which marks
+   in *odd the lanes it does not cover (a large or non-finite argument) and gives them meaningless
+   numbers; hl_<f> gives those lanes the C library's value, so no lane depends on its neighbours. A
+   kernel runs on the polynomials and, when a lane is odd, once again on the exact functions: its hot
+   path makes no call, and keeps its values in registers. */
+
+/* sin and cos: x = n pi/2 + r, |r| <= pi/4, in three parts of pi/2 (exact products for
+   |n| < 2^20), then fdlibm's kernels on r; odd: beyond |x| = 1e5, or not finite */
+static inline void hl_sincos_poly(hl_v x, hl_v *sine, hl_v *cosine, hl_i *odd) {
+    const double magic = 6755399441055744.0; /* 1.5 * 2^52: adding it rounds to an integer */
+    const hl_i big = ~(hl_fabs(x) <= 1e5), sign = (hl_i)hl_splat(-0.0);
+    hl_v t, n, r, z, s, c, p, hz, w, y = hl_select(big, hl_splat(0.0), x);
+    hl_i j;
+    t = y * 6.36619772367581382433e-01 + magic;
+    n = t - magic;
+    j = (hl_i)t & 3; /* the quadrant, from the integer's low bits */
+    r = ((y - n * 1.57079632673412561417e+00) - n * 6.07710050630396597660e-11) - n * 2.02226624879595063154e-21;
+    z = r * r;
+    s = r + r * z * (-1.66666666666666324348e-01 + z * (8.33333333332248946124e-03 + z * (-1.98412698298579493134e-04
+        + z * (2.75573137070700676789e-06 + z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)))));
+    s = hl_select(r == 0.0, r, s); /* sin(-0) = -0 */
+    p = z * (4.16666666666666019037e-02 + z * (-1.38888888888741095749e-03 + z * (2.48015872894767294178e-05
+        + z * (-2.75573143513906633035e-07 + z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
+    hz = 0.5 * z;
+    w = 1.0 - hz;
+    c = w + (((1.0 - w) - hz) + z * p);
+    /* quadrant j: sin = (s, c, -s, -c)[j], cos = (c, -s, -c, s)[j] */
+    *sine = (hl_v)((hl_i)hl_select((j & 1) != 0, c, s) ^ (((j & 2) != 0) & sign));
+    *cosine = (hl_v)((hl_i)hl_select((j & 1) != 0, s, c) ^ ((((j + 1) & 2) != 0) & sign));
+    *odd |= big;
+}
+static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
+    hl_i big = hl_splat(0.0) != 0.0;
+    int l;
+    hl_sincos_poly(x, sine, cosine, &big);
+    if (hl_any(big)) {
+        for (l = 0; l < HL_W; ++l) {
+            if (big[l]) {
+                (*sine)[l] = sin(x[l]);
+                (*cosine)[l] = cos(x[l]);
+            }
+        }
+    }
+}
+/* sin and cos of x near x0, from base = (x0, sin x0, cos x0): x0's rotated by d = x - x0 with Taylor
+   polynomials of sin d (to d^5) and cos d - 1 (to d^4), whose truncation is below 1e-19 for |d| <= 2^-9; a
+   lane farther from x0 (or not finite) takes the polynomials (_near_poly, odd as they say) or hl_sincos
+   (_near); within 2 * 2^-52 of sin x and cos x, absolute. The stages of an RK4 step are this near its
+   start, whose sin and cos are computed once. */
+static inline hl_i hl_rotate(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine) {
+    const hl_v d = x - base[0], d2 = d * d;
+    const hl_v sd = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120)), cm = d2 * (-0.5 + d2 * (1.0 / 24));
+    /* one product per sum: the compiler's fused multiply-adds are then the same for any lane count */
+    *sine = (base[1] + base[1] * cm) + base[2] * sd;
+    *cosine = (base[2] + base[2] * cm) - base[1] * sd;
+    return ~(hl_fabs(d) <= 0x1p-9);
+}
+static inline void hl_sincos_near_poly(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine, hl_i *odd) {
+    const hl_i far = hl_rotate(x, base, sine, cosine);
+    if (hl_any(far)) {
+        hl_v s, c;
+        hl_i o = hl_splat(0.0) != 0.0;
+        hl_sincos_poly(x, &s, &c, &o);
+        *odd |= o & far;
+        *sine = hl_select(far, s, *sine);
+        *cosine = hl_select(far, c, *cosine);
+    }
+}
+static inline void hl_sincos_near(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine) {
+    const hl_i far = hl_rotate(x, base, sine, cosine);
+    if (hl_any(far)) {
+        hl_v s, c;
+        hl_sincos(x, &s, &c);
+        *sine = hl_select(far, s, *sine);
+        *cosine = hl_select(far, c, *cosine);
+    }
+}
+
+/* exp: x = n ln2 + r (ln2 in two parts, |r| <= ln2 / 2), exp(r) by its Taylor polynomial of degree
+   13 (truncation below 5e-18; no division), times 2^n; odd: beyond |x| = 700, or not finite */
+/* 1/k!, k = 0 .. 12 */
+static const double hl_exp_taylor[13] = {1.0, 1.0, 0.5, 1.0 / 6, 1.0 / 24, 1.0 / 120, 1.0 / 720, 1.0 / 5040,
+    1.0 / 40320, 1.0 / 362880, 1.0 / 3628800, 1.0 / 39916800, 1.0 / 479001600};
+static inline hl_v hl_exp_poly(hl_v x, hl_i *odd) {
+    const double magic = 6755399441055744.0;
+    const hl_i big = ~(hl_fabs(x) <= 700.0);
+    hl_v t, n, r, y = hl_select(big, hl_splat(0.0), x);
+    hl_i k;
+    int l;
+    t = y * 1.44269504088896338700e+00 + magic;
+    n = t - magic;
+    k = ((hl_i)t - (hl_i)hl_splat(magic)) + 1023;
+    r = (y - n * 6.93147180369123816490e-01) - n * 1.90821492927058770002e-10;
+    y = hl_splat(1.0 / 6227020800.0); /* 1/13! */
+    for (l = 12; l >= 0; --l) y = hl_exp_taylor[l] + r * y;
+    *odd |= big;
+    return y * (hl_v)(k << 52);
+}
+/* the exact form of a one-argument polynomial hl_<f>_poly: its odd lanes take the C library's f */
+#define HL_EXACT1(name, f) static inline hl_v name(hl_v x) { \
+    hl_i odd = hl_splat(0.0) != 0.0; hl_v r = name##_poly(x, &odd); int l; \
+    if (hl_any(odd)) for (l = 0; l < HL_W; ++l) if (odd[l]) r[l] = f(x[l]); \
+    return r; }
+HL_EXACT1(hl_exp, exp)
+
+/* tanh: 1 - 2 / (exp(2|x|) + 1) with the sign of x, and Cephes' rational form where |x| < 0.625
+   (computed only when a lane needs it); from |x| = 20 on that is +-1 exactly, so where every lane is
+   there exp is not evaluated (a friction law sliding); odd: not a number */
+static inline hl_v hl_tanh_poly(hl_v x, hl_i *odd) {
+    const hl_i small = hl_fabs(x) < 0.625;
+    hl_v ax = hl_fabs(x), r;
+    ax = hl_select(ax > 20.0, hl_splat(20.0), ax); /* a NaN stays NaN */
+    if (hl_any(~(ax >= 20.0))) {
+        r = hl_copysign(1.0 - 2.0 / (hl_exp_poly(2.0 * ax, odd) + 1.0), x);
+    } else {
+        r = hl_copysign(hl_splat(1.0), x); /* 2 / (exp(40) + 1) < 2^-54: 1 - it rounds to 1 */
+    }
+    if (hl_any(small)) {
+        const hl_v z = x * x;
+        r = hl_select(small, x + x * z * ((-9.64399179425052238628e-01 * z - 9.92877231001918586564e+01) * z
+            - 1.61468768441708447952e+03) / (((z + 1.12811678491632931402e+02) * z + 2.23548839060100448583e+03) * z
+            + 4.84406305325125486048e+03), r);
+    }
+    return hl_select(x == 0.0, x, r); /* tanh(-0) = -0 */
+}
+HL_EXACT1(hl_tanh, tanh)
+
+#define HYBRID_OK 0
+#define HYBRID_SINGULAR 1
+#define HYBRID_NONFINITE 2
+#define HYBRID_FRAME_UNDEFINED 3
+#define HYBRID_EULER_SINGULAR 4
+
+HL_MAP1(hl_acos, acos)
+HL_MAP1(hl_acosh, acosh)
+HL_MAP1(hl_asin, asin)
+HL_MAP1(hl_asinh, asinh)
+HL_MAP1(hl_atan, atan)
+HL_MAP1(hl_atanh, atanh)
+HL_MAP1(hl_ceil, ceil)
+HL_MAP1(hl_cosh, cosh)
+HL_MAP1(hl_erf, erf)
+HL_MAP1(hl_expm1, expm1)
+HL_MAP1(hl_floor, floor)
+HL_MAP1(hl_log, log)
+HL_MAP1(hl_log1p, log1p)
+HL_MAP1(hl_sinh, sinh)
+HL_MAP1(hl_tan, tan)
+HL_MAP2(hl_atan2, atan2)
+HL_MAP2(hl_fmod, fmod)
+HL_MAP2(hl_hypot, hypot)
+HL_MAP2(hl_pow, pow)
+
+#if HL_W > 1 && 1
+#define HL_STAGE static inline __attribute__((always_inline))
+#else
+#define HL_STAGE static
+#endif
+#define PLANT_RHS_LANES_NPRE 27
+static void plant_rhs_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
+    const hl_v v2 = arm[7];
+    const hl_v v3 = arm[5];
+    const hl_v v4 = v3 * v3;
+    const hl_v v5 = arm[3];
+    const hl_v v6 = v4 * v5;
+    const hl_v v7 = v2 + v6;
+    const hl_v v18 = arm[1];
+    const hl_v v20 = arm[0];
+    const hl_v v23 = plant[1];
+    const hl_v v33 = plant[2];
+    const hl_v v55 = v20 * v3;
+    const hl_v v61 = arm[10];
+    const hl_v v62 = v61 * v5;
+    const hl_v v67 = arm[8];
+    const hl_v v75 = arm[2];
+    const hl_v v77 = arm[4];
+    const hl_v v80 = arm[6];
+    const hl_v v81 = v80 + v2;
+    const hl_v v82 = v77 * v77;
+    const hl_v v83 = v75 * v82;
+    const hl_v v84 = v81 + v83;
+    const hl_v v85 = v20 * v20;
+    const hl_v v86 = v4 + v85;
+    const hl_v v108 = arm[9];
+    const hl_v v120 = hl_splat(0.0);
+    const hl_v v121 = surface[2];
+    const hl_v v122 = surface[0];
+    const hl_v v125 = surface[1];
+    const hl_v v133 = plant[3];
+    const hl_v v135 = plant[4];
+    const hl_v v150 = plant[6];
+    const hl_v v170 = 1.0 / v150;
+    const hl_v v154 = plant[5];
+    const hl_v v158 = plant[0];
+    const hl_v v171 = 1.0 / v158;
+    pre[0] = v2;
+    pre[1] = v3;
+    pre[2] = v4;
+    pre[3] = v5;
+    pre[4] = v7;
+    pre[5] = v18;
+    pre[6] = v20;
+    pre[7] = v23;
+    pre[8] = v33;
+    pre[9] = v55;
+    pre[10] = v61;
+    pre[11] = v62;
+    pre[12] = v67;
+    pre[13] = v75;
+    pre[14] = v77;
+    pre[15] = v84;
+    pre[16] = v86;
+    pre[17] = v108;
+    pre[18] = v120;
+    pre[19] = v121;
+    pre[20] = v122;
+    pre[21] = v125;
+    pre[22] = v133;
+    pre[23] = v135;
+    pre[24] = v170;
+    pre[25] = v154;
+    pre[26] = v171;
+    (void)arm;
+    (void)plant;
+    (void)surface;
+    (void)pre;
+}
+
+static inline __attribute__((always_inline)) void plant_rhs_lanes_core(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, const hl_v *base, const int exact, hl_i *odd) {
+    (void)x;
+    (void)tau;
+    (void)pre;
+    (void)base;
+    (void)odd;
+    const hl_v v0 = x[2];
+    const hl_v v1 = x[3];
+    const hl_v v2 = pre[0];
+    const hl_v v3 = pre[1];
+    const hl_v v4 = pre[2];
+    const hl_v v5 = pre[3];
+    const hl_v v7 = pre[4];
+    const hl_v v8 = tau[0];
+    const hl_v v9 = x[1];
+    hl_v v15, v10;
+    if (exact) hl_sincos_near(v9, base + 3, &v15, &v10); else hl_sincos_near_poly(v9, base + 3, &v15, &v10, odd);
+    const hl_v v11 = x[0];
+    hl_v v14, v12;
+    if (exact) hl_sincos_near(v11, base + 0, &v14, &v12); else hl_sincos_near_poly(v11, base + 0, &v14, &v12, odd);
+    const hl_v v13 = v10 * v12;
+    const hl_v v16 = v14 * v15;
+    const hl_v v17 = v13 - v16;
+    const hl_v v18 = pre[5];
+    const hl_v v19 = v17 * v18;
+    const hl_v v20 = pre[6];
+    const hl_v v21 = v12 * v20;
+    const hl_v v22 = v19 + v21;
+    const hl_v v23 = pre[7];
+    const hl_v v24 = x[5];
+    const hl_v v25 = v14 * v10;
+    const hl_v v26 = v15 * v12;
+    const hl_v v27 = v25 + v26;
+    const hl_v v28 = v18 * v27;
+    const hl_v v29 = v14 * v20;
+    const hl_v v30 = v28 + v29;
+    const hl_v v31 = v24 - v30;
+    const hl_v v32 = v23 * v31;
+    const hl_v v33 = pre[8];
+    const hl_v v34 = x[7];
+    const hl_v v35 = v19 * v1;
+    const hl_v v36 = v34 - v35;
+    const hl_v v37 = v22 * v0;
+    const hl_v v38 = v36 - v37;
+    const hl_v v39 = v33 * v38;
+    const hl_v v40 = v32 + v39;
+    const hl_v v41 = v22 * v40;
+    const hl_v v42 = v8 + v41;
+    const hl_v v43 = x[4];
+    const hl_v v44 = v43 - v22;
+    const hl_v v45 = v23 * v44;
+    const hl_v v46 = x[6];
+    const hl_v v47 = v28 * v1;
+    const hl_v v48 = v46 + v47;
+    const hl_v v49 = v30 * v0;
+    const hl_v v50 = v48 + v49;
+    const hl_v v51 = v33 * v50;
+    const hl_v v52 = v45 + v51;
+    const hl_v v53 = v30 * v52;
+    const hl_v v54 = v42 - v53;
+    const hl_v v55 = pre[9];
+    const hl_v v56 = v15 * v55;
+    const hl_v v57 = v56 * v5;
+    const hl_v v58 = v1 * v1;
+    const hl_v v59 = v57 * v58;
+    const hl_v v60 = v54 + v59;
+    const hl_v v61 = pre[10];
+    const hl_v v62 = pre[11];
+    const hl_v v63 = v17 * v3;
+    const hl_v v64 = v63 + v21;
+    const hl_v v65 = v62 * v64;
+    const hl_v v66 = v60 - v65;
+    const hl_v v67 = pre[12];
+    const hl_v v68 = v67 * v0;
+    const hl_v v69 = v66 - v68;
+    const hl_v v70 = v57 + v57;
+    const hl_v v71 = v70 * v0;
+    const hl_v v72 = v71 * v1;
+    const hl_v v73 = v69 + v72;
+    const hl_v v74 = v12 * v61;
+    const hl_v v75 = pre[13];
+    const hl_v v76 = v74 * v75;
+    const hl_v v77 = pre[14];
+    const hl_v v78 = v76 * v77;
+    const hl_v v79 = v73 - v78;
+    const hl_v v84 = pre[15];
+    const hl_v v86 = pre[16];
+    const hl_v v87 = v10 * v55;
+    const hl_v v88 = v87 + v87;
+    const hl_v v89 = v86 + v88;
+    const hl_v v90 = v5 * v89;
+    const hl_v v91 = v84 + v90;
+    const hl_v v92 = v7 * v91;
+    const hl_v v93 = v4 + v87;
+    const hl_v v94 = v5 * v93;
+    const hl_v v95 = v2 + v94;
+    const hl_v v96 = v95 * v95;
+    const hl_v v97 = v92 - v96;
+    const hl_v v168 = 1.0 / v97;
+    const hl_v v98 = v79 * v168;
+    const hl_v v99 = v7 * v98;
+    const hl_v v100 = tau[1];
+    const hl_v v101 = v28 * v52;
+    const hl_v v102 = v100 - v101;
+    const hl_v v103 = v63 * v62;
+    const hl_v v104 = v102 - v103;
+    const hl_v v105 = v0 * v0;
+    const hl_v v106 = v57 * v105;
+    const hl_v v107 = v104 - v106;
+    const hl_v v108 = pre[17];
+    const hl_v v109 = v108 * v1;
+    const hl_v v110 = v107 - v109;
+    const hl_v v111 = v17 * v40;
+    const hl_v v112 = v111 * v18;
+    const hl_v v113 = v110 + v112;
+    const hl_v v114 = v113 * v168;
+    const hl_v v115 = v95 * v114;
+    const hl_v v116 = v99 - v115;
+    const hl_v v117 = v114 * v91;
+    const hl_v v118 = v98 * v95;
+    const hl_v v119 = v117 - v118;
+    const hl_v v120 = pre[18];
+    const hl_v v121 = pre[19];
+    const hl_v v122 = pre[20];
+    const hl_v v123 = v43 - v122;
+    const hl_v v124 = v123 * v123;
+    const hl_v v125 = pre[21];
+    const hl_v v126 = v24 - v125;
+    const hl_v v127 = v126 * v126;
+    const hl_v v128 = v124 + v127;
+    const hl_v v129 = hl_sqrt(v128);
+    const hl_v v130 = v121 - v129;
+    const hl_v v131 = hl_bool(v120 < v130);
+    const hl_v v169 = 1.0 / v129;
+    const hl_v v132 = v123 * v169;
+    const hl_v v133 = pre[22];
+    const hl_v v134 = v130 * v133;
+    const hl_v v135 = pre[23];
+    const hl_v v136 = v132 * v46;
+    const hl_v v137 = v126 * v169;
+    const hl_v v138 = v137 * v34;
+    const hl_v v139 = v136 + v138;
+    const hl_v v140 = v135 * v139;
+    const hl_v v141 = v134 - v140;
+    const hl_v v142 = hl_fmax(v120, v141);
+    const hl_v v143 = v132 * v142;
+    const hl_v v144 = hl_select(v131 != 0.0, v143, hl_splat(0.0));
+    const hl_v v145 = v144 - v52;
+    const hl_v v146 = v137 * v142;
+    const hl_v v147 = v132 * v34;
+    const hl_v v148 = v137 * v46;
+    const hl_v v149 = v147 - v148;
+    const hl_v v170 = pre[24];
+    const hl_v v151 = v149 * v170;
+    const hl_v v152 = (exact ? hl_tanh(v151) : hl_tanh_poly(v151, odd));
+    const hl_v v153 = v146 * v152;
+    const hl_v v154 = pre[25];
+    const hl_v v155 = v153 * v154;
+    const hl_v v156 = hl_select(v131 != 0.0, v155, hl_splat(0.0));
+    const hl_v v157 = v145 + v156;
+    const hl_v v171 = pre[26];
+    const hl_v v159 = v157 * v171;
+    const hl_v v160 = hl_select(v131 != 0.0, v146, hl_splat(0.0));
+    const hl_v v161 = v160 - v40;
+    const hl_v v162 = v143 * v152;
+    const hl_v v163 = v162 * v154;
+    const hl_v v164 = -v163;
+    const hl_v v165 = hl_select(v131 != 0.0, v164, hl_splat(0.0));
+    const hl_v v166 = v161 + v165;
+    const hl_v v167 = v166 * v171;
+    xdot[0] = v0;
+    xdot[1] = v1;
+    xdot[2] = v116;
+    xdot[3] = v119;
+    xdot[4] = v46;
+    xdot[5] = v34;
+    xdot[6] = v159;
+    xdot[7] = v167;
+}
+
+static __attribute__((noinline, cold)) void plant_rhs_lanes_exact(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, const hl_v *base) {
+    plant_rhs_lanes_core(x, tau, pre, xdot, base, 1, NULL);
+}
+
+HL_STAGE void plant_rhs_lanes(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, const hl_v *base) {
+    hl_i odd = hl_splat(0.0) != 0.0;
+    plant_rhs_lanes_core(x, tau, pre, xdot, base, 0, &odd);
+    if (hl_any(odd)) plant_rhs_lanes_exact(x, tau, pre, xdot, base);
+}
+
+#define PLANT_RHS_SIGNALS_LANES_NPRE 27
+static void plant_rhs_signals_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
+    const hl_v v2 = arm[7];
+    const hl_v v3 = arm[5];
+    const hl_v v4 = v3 * v3;
+    const hl_v v5 = arm[3];
+    const hl_v v6 = v4 * v5;
+    const hl_v v7 = v2 + v6;
+    const hl_v v18 = arm[1];
+    const hl_v v20 = arm[0];
+    const hl_v v23 = plant[1];
+    const hl_v v33 = plant[2];
+    const hl_v v55 = v20 * v3;
+    const hl_v v61 = arm[10];
+    const hl_v v62 = v61 * v5;
+    const hl_v v67 = arm[8];
+    const hl_v v75 = arm[2];
+    const hl_v v77 = arm[4];
+    const hl_v v80 = arm[6];
+    const hl_v v81 = v80 + v2;
+    const hl_v v82 = v77 * v77;
+    const hl_v v83 = v75 * v82;
+    const hl_v v84 = v81 + v83;
+    const hl_v v85 = v20 * v20;
+    const hl_v v86 = v4 + v85;
+    const hl_v v108 = arm[9];
+    const hl_v v120 = hl_splat(0.0);
+    const hl_v v121 = surface[2];
+    const hl_v v122 = surface[0];
+    const hl_v v125 = surface[1];
+    const hl_v v133 = plant[3];
+    const hl_v v135 = plant[4];
+    const hl_v v150 = plant[6];
+    const hl_v v194 = 1.0 / v150;
+    const hl_v v154 = plant[5];
+    const hl_v v158 = plant[0];
+    const hl_v v195 = 1.0 / v158;
+    pre[0] = v2;
+    pre[1] = v3;
+    pre[2] = v4;
+    pre[3] = v5;
+    pre[4] = v7;
+    pre[5] = v18;
+    pre[6] = v20;
+    pre[7] = v23;
+    pre[8] = v33;
+    pre[9] = v55;
+    pre[10] = v61;
+    pre[11] = v62;
+    pre[12] = v67;
+    pre[13] = v75;
+    pre[14] = v77;
+    pre[15] = v84;
+    pre[16] = v86;
+    pre[17] = v108;
+    pre[18] = v120;
+    pre[19] = v121;
+    pre[20] = v122;
+    pre[21] = v125;
+    pre[22] = v133;
+    pre[23] = v135;
+    pre[24] = v194;
+    pre[25] = v154;
+    pre[26] = v195;
+    (void)arm;
+    (void)plant;
+    (void)surface;
+    (void)pre;
+}
+
+static inline __attribute__((always_inline)) void plant_rhs_signals_lanes_core(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, hl_v *s, hl_v *y, const hl_v *base, const int exact, hl_i *odd) {
+    (void)x;
+    (void)tau;
+    (void)pre;
+    (void)base;
+    (void)odd;
+    const hl_v v0 = x[2];
+    const hl_v v1 = x[3];
+    const hl_v v2 = pre[0];
+    const hl_v v3 = pre[1];
+    const hl_v v4 = pre[2];
+    const hl_v v5 = pre[3];
+    const hl_v v7 = pre[4];
+    const hl_v v8 = tau[0];
+    const hl_v v9 = x[1];
+    hl_v v15, v10;
+    if (exact) hl_sincos_near(v9, base + 3, &v15, &v10); else hl_sincos_near_poly(v9, base + 3, &v15, &v10, odd);
+    const hl_v v11 = x[0];
+    hl_v v14, v12;
+    if (exact) hl_sincos_near(v11, base + 0, &v14, &v12); else hl_sincos_near_poly(v11, base + 0, &v14, &v12, odd);
+    const hl_v v13 = v10 * v12;
+    const hl_v v16 = v14 * v15;
+    const hl_v v17 = v13 - v16;
+    const hl_v v18 = pre[5];
+    const hl_v v19 = v17 * v18;
+    const hl_v v20 = pre[6];
+    const hl_v v21 = v12 * v20;
+    const hl_v v22 = v19 + v21;
+    const hl_v v23 = pre[7];
+    const hl_v v24 = x[5];
+    const hl_v v25 = v14 * v10;
+    const hl_v v26 = v15 * v12;
+    const hl_v v27 = v25 + v26;
+    const hl_v v28 = v18 * v27;
+    const hl_v v29 = v14 * v20;
+    const hl_v v30 = v28 + v29;
+    const hl_v v31 = v24 - v30;
+    const hl_v v32 = v23 * v31;
+    const hl_v v33 = pre[8];
+    const hl_v v34 = x[7];
+    const hl_v v35 = v19 * v1;
+    const hl_v v36 = v22 * v0;
+    const hl_v v37 = v35 + v36;
+    const hl_v v38 = v34 - v37;
+    const hl_v v39 = v33 * v38;
+    const hl_v v40 = v32 + v39;
+    const hl_v v41 = v22 * v40;
+    const hl_v v42 = v8 + v41;
+    const hl_v v43 = x[4];
+    const hl_v v44 = v43 - v22;
+    const hl_v v45 = v23 * v44;
+    const hl_v v46 = v28 * v1;
+    const hl_v v47 = v30 * v0;
+    const hl_v v48 = v46 + v47;
+    const hl_v v49 = x[6];
+    const hl_v v50 = v48 + v49;
+    const hl_v v51 = v33 * v50;
+    const hl_v v52 = v45 + v51;
+    const hl_v v53 = v30 * v52;
+    const hl_v v54 = v42 - v53;
+    const hl_v v55 = pre[9];
+    const hl_v v56 = v15 * v55;
+    const hl_v v57 = v56 * v5;
+    const hl_v v58 = v1 * v1;
+    const hl_v v59 = v57 * v58;
+    const hl_v v60 = v54 + v59;
+    const hl_v v61 = pre[10];
+    const hl_v v62 = pre[11];
+    const hl_v v63 = v17 * v3;
+    const hl_v v64 = v63 + v21;
+    const hl_v v65 = v62 * v64;
+    const hl_v v66 = v60 - v65;
+    const hl_v v67 = pre[12];
+    const hl_v v68 = v67 * v0;
+    const hl_v v69 = v66 - v68;
+    const hl_v v70 = v57 + v57;
+    const hl_v v71 = v70 * v0;
+    const hl_v v72 = v71 * v1;
+    const hl_v v73 = v69 + v72;
+    const hl_v v74 = v12 * v61;
+    const hl_v v75 = pre[13];
+    const hl_v v76 = v74 * v75;
+    const hl_v v77 = pre[14];
+    const hl_v v78 = v76 * v77;
+    const hl_v v79 = v73 - v78;
+    const hl_v v84 = pre[15];
+    const hl_v v86 = pre[16];
+    const hl_v v87 = v10 * v55;
+    const hl_v v88 = v87 + v87;
+    const hl_v v89 = v86 + v88;
+    const hl_v v90 = v5 * v89;
+    const hl_v v91 = v84 + v90;
+    const hl_v v92 = v7 * v91;
+    const hl_v v93 = v4 + v87;
+    const hl_v v94 = v5 * v93;
+    const hl_v v95 = v2 + v94;
+    const hl_v v96 = v95 * v95;
+    const hl_v v97 = v92 - v96;
+    const hl_v v192 = 1.0 / v97;
+    const hl_v v98 = v79 * v192;
+    const hl_v v99 = v7 * v98;
+    const hl_v v100 = tau[1];
+    const hl_v v101 = v28 * v52;
+    const hl_v v102 = v100 - v101;
+    const hl_v v103 = v63 * v62;
+    const hl_v v104 = v102 - v103;
+    const hl_v v105 = v0 * v0;
+    const hl_v v106 = v57 * v105;
+    const hl_v v107 = v104 - v106;
+    const hl_v v108 = pre[17];
+    const hl_v v109 = v108 * v1;
+    const hl_v v110 = v107 - v109;
+    const hl_v v111 = v17 * v40;
+    const hl_v v112 = v111 * v18;
+    const hl_v v113 = v110 + v112;
+    const hl_v v114 = v113 * v192;
+    const hl_v v115 = v95 * v114;
+    const hl_v v116 = v99 - v115;
+    const hl_v v117 = v114 * v91;
+    const hl_v v118 = v98 * v95;
+    const hl_v v119 = v117 - v118;
+    const hl_v v120 = pre[18];
+    const hl_v v121 = pre[19];
+    const hl_v v122 = pre[20];
+    const hl_v v123 = v43 - v122;
+    const hl_v v124 = v123 * v123;
+    const hl_v v125 = pre[21];
+    const hl_v v126 = v24 - v125;
+    const hl_v v127 = v126 * v126;
+    const hl_v v128 = v124 + v127;
+    const hl_v v129 = hl_sqrt(v128);
+    const hl_v v130 = v121 - v129;
+    const hl_v v131 = hl_bool(v120 < v130);
+    const hl_v v193 = 1.0 / v129;
+    const hl_v v132 = v123 * v193;
+    const hl_v v133 = pre[22];
+    const hl_v v134 = v130 * v133;
+    const hl_v v135 = pre[23];
+    const hl_v v136 = v132 * v49;
+    const hl_v v137 = v126 * v193;
+    const hl_v v138 = v137 * v34;
+    const hl_v v139 = v136 + v138;
+    const hl_v v140 = v135 * v139;
+    const hl_v v141 = v134 - v140;
+    const hl_v v142 = hl_fmax(v120, v141);
+    const hl_v v143 = v132 * v142;
+    const hl_v v144 = hl_select(v131 != 0.0, v143, hl_splat(0.0));
+    const hl_v v145 = v144 - v52;
+    const hl_v v146 = v137 * v142;
+    const hl_v v147 = v132 * v34;
+    const hl_v v148 = v137 * v49;
+    const hl_v v149 = v147 - v148;
+    const hl_v v194 = pre[24];
+    const hl_v v151 = v149 * v194;
+    const hl_v v152 = (exact ? hl_tanh(v151) : hl_tanh_poly(v151, odd));
+    const hl_v v153 = v146 * v152;
+    const hl_v v154 = pre[25];
+    const hl_v v155 = v153 * v154;
+    const hl_v v156 = hl_select(v131 != 0.0, v155, hl_splat(0.0));
+    const hl_v v157 = v145 + v156;
+    const hl_v v195 = pre[26];
+    const hl_v v159 = v157 * v195;
+    const hl_v v160 = hl_select(v131 != 0.0, v146, hl_splat(0.0));
+    const hl_v v161 = v160 - v40;
+    const hl_v v162 = v152 * v154;
+    const hl_v v163 = v143 * v162;
+    const hl_v v164 = -v163;
+    const hl_v v165 = hl_select(v131 != 0.0, v164, hl_splat(0.0));
+    const hl_v v166 = v161 + v165;
+    const hl_v v167 = v166 * v195;
+    const hl_v v168 = v30 - v125;
+    const hl_v v169 = v22 - v122;
+    const hl_v v170 = v169 * v169;
+    const hl_v v171 = v168 * v168;
+    const hl_v v172 = v170 + v171;
+    const hl_v v173 = hl_sqrt(v172);
+    const hl_v v196 = 1.0 / v173;
+    const hl_v v174 = v168 * v196;
+    const hl_v v175 = v40 * v174;
+    const hl_v v176 = v169 * v196;
+    const hl_v v177 = v52 * v176;
+    const hl_v v178 = v175 + v177;
+    const hl_v v179 = v37 * v176;
+    const hl_v v180 = v174 * v48;
+    const hl_v v181 = v179 + v180;
+    const hl_v v182 = hl_select(v131 != 0.0, v142, hl_splat(0.0));
+    const hl_v v183 = v37 * v174;
+    const hl_v v184 = v176 * v48;
+    const hl_v v185 = v183 - v184;
+    const hl_v v186 = v40 * v176;
+    const hl_v v187 = v52 * v174;
+    const hl_v v188 = v186 - v187;
+    const hl_v v189 = v142 * v162;
+    const hl_v v190 = -v189;
+    const hl_v v191 = hl_select(v131 != 0.0, v190, hl_splat(0.0));
+    xdot[0] = v0;
+    xdot[1] = v1;
+    xdot[2] = v116;
+    xdot[3] = v119;
+    xdot[4] = v49;
+    xdot[5] = v34;
+    xdot[6] = v159;
+    xdot[7] = v167;
+    s[0] = v52;
+    s[1] = v40;
+    s[2] = v178;
+    s[3] = v181;
+    s[4] = v130;
+    s[5] = v182;
+    y[0] = v22;
+    y[1] = v30;
+    y[2] = v181;
+    y[3] = v185;
+    y[4] = v52;
+    y[5] = v40;
+    y[6] = v188;
+    y[7] = v178;
+    y[8] = v43;
+    y[9] = v24;
+    y[10] = v130;
+    y[11] = v182;
+    y[12] = v191;
+    y[13] = v149;
+}
+
+static __attribute__((noinline, cold)) void plant_rhs_signals_lanes_exact(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, hl_v *s, hl_v *y, const hl_v *base) {
+    plant_rhs_signals_lanes_core(x, tau, pre, xdot, s, y, base, 1, NULL);
+}
+
+HL_STAGE void plant_rhs_signals_lanes(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, hl_v *s, hl_v *y, const hl_v *base) {
+    hl_i odd = hl_splat(0.0) != 0.0;
+    plant_rhs_signals_lanes_core(x, tau, pre, xdot, s, y, base, 0, &odd);
+    if (hl_any(odd)) plant_rhs_signals_lanes_exact(x, tau, pre, xdot, s, y, base);
+}
+
+#define PLANT_OUTPUTS_LANES_NPRE 12
+static void plant_outputs_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
+    const hl_v v0 = arm[1];
+    const hl_v v11 = arm[0];
+    const hl_v v25 = surface[0];
+    const hl_v v28 = surface[1];
+    const hl_v v44 = plant[1];
+    const hl_v v48 = plant[2];
+    const hl_v v68 = surface[2];
+    const hl_v v76 = hl_splat(0.0);
+    const hl_v v78 = plant[3];
+    const hl_v v80 = plant[4];
+    const hl_v v90 = plant[5];
+    const hl_v v95 = plant[6];
+    const hl_v v103 = 1.0 / v95;
+    pre[0] = v0;
+    pre[1] = v11;
+    pre[2] = v25;
+    pre[3] = v28;
+    pre[4] = v44;
+    pre[5] = v48;
+    pre[6] = v68;
+    pre[7] = v76;
+    pre[8] = v78;
+    pre[9] = v80;
+    pre[10] = v90;
+    pre[11] = v103;
+    (void)arm;
+    (void)plant;
+    (void)surface;
+    (void)pre;
+}
+
+static inline __attribute__((always_inline)) void plant_outputs_lanes_core(const hl_v *x, const hl_v *pre, hl_v *y, const int exact, hl_i *odd) {
+    (void)x;
+    (void)pre;
+    (void)odd;
+    const hl_v v0 = pre[0];
+    const hl_v v1 = x[0];
+    hl_v v6, v2;
+    if (exact) hl_sincos(v1, &v6, &v2); else hl_sincos_poly(v1, &v6, &v2, odd);
+    const hl_v v3 = x[1];
+    hl_v v7, v4;
+    if (exact) hl_sincos(v3, &v7, &v4); else hl_sincos_poly(v3, &v7, &v4, odd);
+    const hl_v v5 = v2 * v4;
+    const hl_v v8 = v6 * v7;
+    const hl_v v9 = v5 - v8;
+    const hl_v v10 = v0 * v9;
+    const hl_v v11 = pre[1];
+    const hl_v v12 = v2 * v11;
+    const hl_v v13 = v10 + v12;
+    const hl_v v14 = v2 * v7;
+    const hl_v v15 = v6 * v4;
+    const hl_v v16 = v14 + v15;
+    const hl_v v17 = v0 * v16;
+    const hl_v v18 = v6 * v11;
+    const hl_v v19 = v17 + v18;
+    const hl_v v20 = x[3];
+    const hl_v v21 = v10 * v20;
+    const hl_v v22 = x[2];
+    const hl_v v23 = v13 * v22;
+    const hl_v v24 = v21 + v23;
+    const hl_v v25 = pre[2];
+    const hl_v v26 = v13 - v25;
+    const hl_v v27 = v26 * v26;
+    const hl_v v28 = pre[3];
+    const hl_v v29 = v19 - v28;
+    const hl_v v30 = v29 * v29;
+    const hl_v v31 = v27 + v30;
+    const hl_v v32 = hl_sqrt(v31);
+    const hl_v v101 = 1.0 / v32;
+    const hl_v v33 = v24 * v101;
+    const hl_v v34 = v33 * v26;
+    const hl_v v35 = v17 * v20;
+    const hl_v v36 = v19 * v22;
+    const hl_v v37 = v35 + v36;
+    const hl_v v38 = v37 * v101;
+    const hl_v v39 = v38 * v29;
+    const hl_v v40 = v34 + v39;
+    const hl_v v41 = v33 * v29;
+    const hl_v v42 = v38 * v26;
+    const hl_v v43 = v41 - v42;
+    const hl_v v44 = pre[4];
+    const hl_v v45 = x[4];
+    const hl_v v46 = v45 - v13;
+    const hl_v v47 = v44 * v46;
+    const hl_v v48 = pre[5];
+    const hl_v v49 = x[6];
+    const hl_v v50 = v37 + v49;
+    const hl_v v51 = v48 * v50;
+    const hl_v v52 = v47 + v51;
+    const hl_v v53 = x[5];
+    const hl_v v54 = v53 - v19;
+    const hl_v v55 = v44 * v54;
+    const hl_v v56 = x[7];
+    const hl_v v57 = v56 - v24;
+    const hl_v v58 = v48 * v57;
+    const hl_v v59 = v55 + v58;
+    const hl_v v60 = v26 * v101;
+    const hl_v v61 = v59 * v60;
+    const hl_v v62 = v29 * v101;
+    const hl_v v63 = v52 * v62;
+    const hl_v v64 = v61 - v63;
+    const hl_v v65 = v52 * v60;
+    const hl_v v66 = v59 * v62;
+    const hl_v v67 = v65 + v66;
+    const hl_v v68 = pre[6];
+    const hl_v v69 = v45 - v25;
+    const hl_v v70 = v69 * v69;
+    const hl_v v71 = v53 - v28;
+    const hl_v v72 = v71 * v71;
+    const hl_v v73 = v70 + v72;
+    const hl_v v74 = hl_sqrt(v73);
+    const hl_v v75 = v68 - v74;
+    const hl_v v76 = pre[7];
+    const hl_v v77 = hl_bool(v76 < v75);
+    const hl_v v78 = pre[8];
+    const hl_v v79 = v75 * v78;
+    const hl_v v80 = pre[9];
+    const hl_v v102 = 1.0 / v74;
+    const hl_v v81 = v71 * v102;
+    const hl_v v82 = v81 * v56;
+    const hl_v v83 = v69 * v102;
+    const hl_v v84 = v83 * v49;
+    const hl_v v85 = v82 + v84;
+    const hl_v v86 = v80 * v85;
+    const hl_v v87 = v79 - v86;
+    const hl_v v88 = hl_fmax(v76, v87);
+    const hl_v v89 = hl_select(v77 != 0.0, v88, hl_splat(0.0));
+    const hl_v v90 = pre[10];
+    const hl_v v91 = v88 * v90;
+    const hl_v v92 = v83 * v56;
+    const hl_v v93 = v81 * v49;
+    const hl_v v94 = v92 - v93;
+    const hl_v v103 = pre[11];
+    const hl_v v96 = v94 * v103;
+    const hl_v v97 = (exact ? hl_tanh(v96) : hl_tanh_poly(v96, odd));
+    const hl_v v98 = v91 * v97;
+    const hl_v v99 = -v98;
+    const hl_v v100 = hl_select(v77 != 0.0, v99, hl_splat(0.0));
+    y[0] = v13;
+    y[1] = v19;
+    y[2] = v40;
+    y[3] = v43;
+    y[4] = v52;
+    y[5] = v59;
+    y[6] = v64;
+    y[7] = v67;
+    y[8] = v45;
+    y[9] = v53;
+    y[10] = v75;
+    y[11] = v89;
+    y[12] = v100;
+    y[13] = v94;
+}
+
+static __attribute__((noinline, cold)) void plant_outputs_lanes_exact(const hl_v *x, const hl_v *pre, hl_v *y) {
+    plant_outputs_lanes_core(x, pre, y, 1, NULL);
+}
+
+static void plant_outputs_lanes(const hl_v *x, const hl_v *pre, hl_v *y) {
+    hl_i odd = hl_splat(0.0) != 0.0;
+    plant_outputs_lanes_core(x, pre, y, 0, &odd);
+    if (hl_any(odd)) plant_outputs_lanes_exact(x, pre, y);
+}
+
+#define CONTROLLER_STEP_LANES_NPRE 68
+static void controller_step_lanes_pre(const hl_v *steps, const hl_v *gains, const hl_v *selection, const hl_v *robot, const hl_v *surface, const hl_v *e, const hl_v *options, const hl_v *posture, const hl_v *limits, const hl_v *sensor, hl_v *pre) {
+    const hl_v v0 = robot[19];
+    const hl_v v1 = e[1];
+    const hl_v v2 = e[0];
+    const hl_v v3 = v2 * v2;
+    const hl_v v4 = v1 * v1;
+    const hl_v v5 = v3 + v4;
+    const hl_v v6 = e[2];
+    const hl_v v7 = v6 * v6;
+    const hl_v v8 = v5 + v7;
+    const hl_v v9 = hl_sqrt(v8);
+    const hl_v v10 = 1.0 / v9;
+    const hl_v v11 = hl_copysign(v10, v9);
+    const hl_v v12 = v1 * v11;
+    const hl_v v13 = surface[2];
+    const hl_v v14 = surface[5];
+    const hl_v v15 = surface[3];
+    const hl_v v16 = v15 * v15;
+    const hl_v v17 = surface[4];
+    const hl_v v18 = v17 * v17;
+    const hl_v v19 = v16 + v18;
+    const hl_v v20 = v14 * v14;
+    const hl_v v21 = v19 + v20;
+    const hl_v v702 = 1.0 / v21;
+    const hl_v v22 = v14 * v702;
+    const hl_v v23 = hl_splat(0.45);
+    const hl_v v27 = hl_splat(0.32);
+    const hl_v v37 = surface[0];
+    const hl_v v46 = surface[1];
+    const hl_v v50 = v14 * v13;
+    const hl_v v54 = v15 * v702;
+    const hl_v v58 = v17 * v702;
+    const hl_v v90 = v6 * v11;
+    const hl_v v97 = v2 * v11;
+    const hl_v v125 = hl_splat(1.0);
+    const hl_v v126 = selection[0];
+    const hl_v v127 = v125 - v126;
+    const hl_v v129 = gains[0];
+    const hl_v v130 = steps[2];
+    const hl_v v133 = steps[1];
+    const hl_v v136 = steps[0];
+    const hl_v v168 = gains[1];
+    const hl_v v169 = options[4];
+    const hl_v v172 = hl_splat(0.0);
+    const hl_v v173 = hl_bool(v168 != v172);
+    const hl_v v175 = gains[3];
+    const hl_v v176 = options[5];
+    const hl_v v177 = v175 * v176;
+    const hl_v v179 = hl_select(v173 != 0.0, v168, hl_splat(0.0));
+    const hl_v v180 = hl_bool(v173 == 0.0);
+    const hl_v v181 = hl_select(v180 != 0.0, v125, hl_splat(0.0));
+    const hl_v v182 = v179 + v181;
+    const hl_v v704 = 1.0 / v182;
+    const hl_v v184 = options[1];
+    const hl_v v189 = options[3];
+    const hl_v v193 = gains[2];
+    const hl_v v229 = options[0];
+    const hl_v v379 = selection[1];
+    const hl_v v380 = v125 - v379;
+    const hl_v v382 = gains[4];
+    const hl_v v383 = steps[5];
+    const hl_v v385 = steps[4];
+    const hl_v v388 = steps[3];
+    const hl_v v408 = gains[5];
+    const hl_v v411 = hl_bool(v408 != v172);
+    const hl_v v413 = gains[7];
+    const hl_v v414 = v413 * v176;
+    const hl_v v416 = hl_select(v411 != 0.0, v408, hl_splat(0.0));
+    const hl_v v417 = hl_bool(v411 == 0.0);
+    const hl_v v418 = hl_select(v417 != 0.0, v125, hl_splat(0.0));
+    const hl_v v419 = v416 + v418;
+    const hl_v v705 = 1.0 / v419;
+    const hl_v v428 = gains[6];
+    const hl_v v484 = robot[11];
+    const hl_v v487 = robot[12];
+    const hl_v v491 = robot[10];
+    const hl_v v492 = robot[23];
+    const hl_v v509 = robot[22];
+    const hl_v v522 = robot[9];
+    const hl_v v524 = robot[1];
+    const hl_v v526 = robot[2];
+    const hl_v v529 = robot[0];
+    const hl_v v550 = robot[20];
+    const hl_v v553 = options[2];
+    const hl_v v560 = v125 - v553;
+    const hl_v v577 = hl_splat(1.7976931348623157e+308);
+    const hl_v v579 = limits[0];
+    const hl_v v582 = limits[2];
+    const hl_v v593 = -v579;
+    const hl_v v621 = robot[21];
+    const hl_v v631 = limits[1];
+    const hl_v v633 = limits[3];
+    const hl_v v643 = -v631;
+    const hl_v v686 = hl_splat(2.0);
+    pre[0] = v0;
+    pre[1] = v12;
+    pre[2] = v13;
+    pre[3] = v14;
+    pre[4] = v15;
+    pre[5] = v17;
+    pre[6] = v22;
+    pre[7] = v23;
+    pre[8] = v27;
+    pre[9] = v37;
+    pre[10] = v46;
+    pre[11] = v50;
+    pre[12] = v54;
+    pre[13] = v58;
+    pre[14] = v90;
+    pre[15] = v97;
+    pre[16] = v125;
+    pre[17] = v126;
+    pre[18] = v127;
+    pre[19] = v129;
+    pre[20] = v130;
+    pre[21] = v133;
+    pre[22] = v136;
+    pre[23] = v168;
+    pre[24] = v169;
+    pre[25] = v172;
+    pre[26] = v173;
+    pre[27] = v175;
+    pre[28] = v176;
+    pre[29] = v177;
+    pre[30] = v704;
+    pre[31] = v184;
+    pre[32] = v189;
+    pre[33] = v193;
+    pre[34] = v229;
+    pre[35] = v379;
+    pre[36] = v380;
+    pre[37] = v382;
+    pre[38] = v383;
+    pre[39] = v385;
+    pre[40] = v388;
+    pre[41] = v408;
+    pre[42] = v411;
+    pre[43] = v413;
+    pre[44] = v414;
+    pre[45] = v705;
+    pre[46] = v428;
+    pre[47] = v484;
+    pre[48] = v487;
+    pre[49] = v491;
+    pre[50] = v492;
+    pre[51] = v509;
+    pre[52] = v522;
+    pre[53] = v524;
+    pre[54] = v526;
+    pre[55] = v529;
+    pre[56] = v550;
+    pre[57] = v553;
+    pre[58] = v560;
+    pre[59] = v577;
+    pre[60] = v579;
+    pre[61] = v582;
+    pre[62] = v593;
+    pre[63] = v621;
+    pre[64] = v631;
+    pre[65] = v633;
+    pre[66] = v643;
+    pre[67] = v686;
+    (void)steps;
+    (void)gains;
+    (void)selection;
+    (void)robot;
+    (void)surface;
+    (void)e;
+    (void)options;
+    (void)posture;
+    (void)limits;
+    (void)sensor;
+    (void)pre;
+}
+
+static inline __attribute__((always_inline)) void controller_step_lanes_core(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond, const int exact, hl_i *odd) {
+    (void)q;
+    (void)qd;
+    (void)Fc;
+    (void)integrals;
+    (void)last_torque;
+    (void)filter;
+    (void)estimate;
+    (void)t;
+    (void)yd_extra;
+    (void)yd_rate;
+    (void)target;
+    (void)pre;
+    (void)odd;
+    const hl_v v0 = pre[0];
+    const hl_v v12 = pre[1];
+    const hl_v v13 = pre[2];
+    const hl_v v14 = pre[3];
+    const hl_v v15 = pre[4];
+    const hl_v v17 = pre[5];
+    const hl_v v22 = pre[6];
+    const hl_v v23 = pre[7];
+    const hl_v v24 = q[0];
+    hl_v v31, v25;
+    if (exact) hl_sincos(v24, &v31, &v25); else hl_sincos_poly(v24, &v31, &v25, odd);
+    const hl_v v26 = v23 * v25;
+    const hl_v v27 = pre[8];
+    const hl_v v28 = q[1];
+    hl_v v32, v29;
+    if (exact) hl_sincos(v28, &v32, &v29); else hl_sincos_poly(v28, &v32, &v29, odd);
+    const hl_v v30 = v25 * v29;
+    const hl_v v33 = v31 * v32;
+    const hl_v v34 = v30 - v33;
+    const hl_v v35 = v27 * v34;
+    const hl_v v36 = v26 + v35;
+    const hl_v v37 = pre[9];
+    const hl_v v38 = v36 - v37;
+    const hl_v v39 = v15 * v38;
+    const hl_v v40 = v23 * v31;
+    const hl_v v41 = v31 * v29;
+    const hl_v v42 = v25 * v32;
+    const hl_v v43 = v41 + v42;
+    const hl_v v44 = v27 * v43;
+    const hl_v v45 = v40 + v44;
+    const hl_v v46 = pre[10];
+    const hl_v v47 = v45 - v46;
+    const hl_v v48 = v17 * v47;
+    const hl_v v49 = v39 + v48;
+    const hl_v v50 = pre[11];
+    const hl_v v51 = v49 - v50;
+    const hl_v v52 = v22 * v51;
+    const hl_v v53 = v13 + v52;
+    const hl_v v54 = pre[12];
+    const hl_v v55 = v54 * v51;
+    const hl_v v56 = v38 - v55;
+    const hl_v v57 = v56 * v56;
+    const hl_v v58 = pre[13];
+    const hl_v v59 = v58 * v51;
+    const hl_v v60 = v47 - v59;
+    const hl_v v61 = v60 * v60;
+    const hl_v v62 = v57 + v61;
+    const hl_v v63 = v53 * v53;
+    const hl_v v64 = v62 + v63;
+    const hl_v v65 = hl_sqrt(v64);
+    const hl_v v703 = 1.0 / v65;
+    const hl_v v66 = v53 * v703;
+    const hl_v v67 = v60 * v703;
+    const hl_v v68 = v58 * v67;
+    const hl_v v69 = v22 * v66;
+    const hl_v v70 = v68 - v69;
+    const hl_v v71 = v56 * v703;
+    const hl_v v72 = v54 * v71;
+    const hl_v v73 = v70 + v72;
+    const hl_v v74 = v14 * v73;
+    const hl_v v75 = v66 + v74;
+    const hl_v v76 = v15 * v73;
+    const hl_v v77 = v71 - v76;
+    const hl_v v78 = v77 * v77;
+    const hl_v v79 = v17 * v73;
+    const hl_v v80 = v67 - v79;
+    const hl_v v81 = v80 * v80;
+    const hl_v v82 = v78 + v81;
+    const hl_v v83 = v75 * v75;
+    const hl_v v84 = v82 + v83;
+    const hl_v v85 = hl_sqrt(v84);
+    const hl_v v86 = 1.0 / v85;
+    const hl_v v87 = hl_copysign(v86, v85);
+    const hl_v v88 = v75 * v87;
+    const hl_v v89 = v12 * v88;
+    const hl_v v90 = pre[14];
+    const hl_v v91 = v80 * v87;
+    const hl_v v92 = v90 * v91;
+    const hl_v v93 = v89 + v92;
+    const hl_v v94 = v93 * v93;
+    const hl_v v95 = v77 * v87;
+    const hl_v v96 = v90 * v95;
+    const hl_v v97 = pre[15];
+    const hl_v v98 = v97 * v88;
+    const hl_v v99 = v96 + v98;
+    const hl_v v100 = v99 * v99;
+    const hl_v v101 = v94 + v100;
+    const hl_v v102 = v97 * v91;
+    const hl_v v103 = v12 * v95;
+    const hl_v v104 = v102 - v103;
+    const hl_v v105 = v104 * v104;
+    const hl_v v106 = v101 + v105;
+    const hl_v v107 = hl_sqrt(v106);
+    const hl_v v108 = 1.0 / v107;
+    const hl_v v109 = hl_copysign(v108, v107);
+    const hl_v v110 = v93 * v109;
+    const hl_v v111 = v110 * v45;
+    const hl_v v112 = v99 * v109;
+    const hl_v v113 = v112 * v36;
+    const hl_v v114 = v111 + v113;
+    const hl_v v115 = v114 * v114;
+    const hl_v v116 = v110 * v44;
+    const hl_v v117 = v112 * v35;
+    const hl_v v118 = v116 + v117;
+    const hl_v v119 = v118 * v118;
+    const hl_v v120 = v115 + v119;
+    const hl_v v121 = hl_sqrt(v120);
+    const hl_v v122 = 1.0 / v121;
+    const hl_v v123 = hl_copysign(v122, v121);
+    const hl_v v124 = v114 * v123;
+    const hl_v v125 = pre[16];
+    const hl_v v126 = pre[17];
+    const hl_v v127 = pre[18];
+    const hl_v v128 = yd_rate[0];
+    const hl_v v129 = pre[19];
+    const hl_v v130 = pre[20];
+    const hl_v v131 = t[0];
+    const hl_v v132 = hl_bool(v130 <= v131);
+    const hl_v v133 = pre[21];
+    const hl_v v134 = hl_select(v132 != 0.0, v133, hl_splat(0.0));
+    const hl_v v135 = hl_bool(v132 == 0.0);
+    const hl_v v136 = pre[22];
+    const hl_v v137 = hl_select(v135 != 0.0, v136, hl_splat(0.0));
+    const hl_v v138 = v134 + v137;
+    const hl_v v139 = yd_extra[0];
+    const hl_v v140 = v138 + v139;
+    const hl_v v141 = Fc[1];
+    const hl_v v142 = v112 * v141;
+    const hl_v v143 = Fc[0];
+    const hl_v v144 = v110 * v143;
+    const hl_v v145 = v142 - v144;
+    const hl_v v146 = v104 * v109;
+    const hl_v v147 = Fc[2];
+    const hl_v v148 = v146 * v147;
+    const hl_v v149 = v145 + v148;
+    const hl_v v150 = v140 - v149;
+    const hl_v v151 = v126 * v150;
+    const hl_v v152 = qd[0];
+    const hl_v v153 = v45 * v152;
+    const hl_v v154 = qd[1];
+    const hl_v v155 = v44 * v154;
+    const hl_v v156 = v153 + v155;
+    const hl_v v157 = v110 * v156;
+    const hl_v v158 = v36 * v152;
+    const hl_v v159 = v35 * v154;
+    const hl_v v160 = v158 + v159;
+    const hl_v v161 = v112 * v160;
+    const hl_v v162 = v157 + v161;
+    const hl_v v163 = v140 - v162;
+    const hl_v v164 = v127 * v163;
+    const hl_v v165 = v151 + v164;
+    const hl_v v166 = v129 * v165;
+    const hl_v v167 = v128 + v166;
+    const hl_v v168 = pre[23];
+    const hl_v v169 = pre[24];
+    const hl_v v170 = hl_bool(v149 < v169);
+    const hl_v v171 = v126 * v170;
+    const hl_v v172 = pre[25];
+    const hl_v v173 = pre[26];
+    const hl_v v174 = v171 * v173;
+    const hl_v v175 = pre[27];
+    const hl_v v176 = pre[28];
+    const hl_v v177 = pre[29];
+    const hl_v v178 = v177 - v166;
+    const hl_v v704 = pre[30];
+    const hl_v v183 = v178 * v704;
+    const hl_v v184 = pre[31];
+    const hl_v v185 = v184 * v165;
+    const hl_v v186 = v183 - v185;
+    const hl_v v187 = hl_select(v174 != 0.0, v186, hl_splat(0.0));
+    const hl_v v188 = hl_bool(v174 == 0.0);
+    const hl_v v189 = pre[32];
+    const hl_v v190 = integrals[0];
+    const hl_v v191 = v190 + v185;
+    const hl_v v192 = v168 * v191;
+    const hl_v v193 = pre[33];
+    const hl_v v194 = integrals[1];
+    const hl_v v195 = v184 * v191;
+    const hl_v v196 = v194 + v195;
+    const hl_v v197 = v127 * v196;
+    const hl_v v198 = v193 * v197;
+    const hl_v v199 = v192 + v198;
+    const hl_v v200 = hl_fabs(v199);
+    const hl_v v201 = hl_bool(v189 < v200);
+    const hl_v v202 = hl_fmax(v201, v171);
+    const hl_v v203 = v202 * v190;
+    const hl_v v204 = v125 - v202;
+    const hl_v v205 = v204 * v191;
+    const hl_v v206 = v203 + v205;
+    const hl_v v207 = hl_select(v188 != 0.0, v206, hl_splat(0.0));
+    const hl_v v208 = v187 + v207;
+    const hl_v v209 = v168 * v208;
+    const hl_v v210 = v167 + v209;
+    const hl_v v211 = v202 * v127;
+    const hl_v v212 = v211 * v194;
+    const hl_v v213 = v204 * v197;
+    const hl_v v214 = v212 + v213;
+    const hl_v v215 = v193 * v214;
+    const hl_v v216 = v210 + v215;
+    const hl_v v217 = v127 * v216;
+    const hl_v v218 = v125 - v171;
+    const hl_v v219 = v175 * v162;
+    const hl_v v220 = v166 + v219;
+    const hl_v v221 = v220 + v209;
+    const hl_v v222 = v218 * v221;
+    const hl_v v223 = v171 * v175;
+    const hl_v v224 = v162 + v176;
+    const hl_v v225 = v223 * v224;
+    const hl_v v226 = v222 + v225;
+    const hl_v v227 = v126 * v226;
+    const hl_v v228 = v217 - v227;
+    const hl_v v229 = pre[34];
+    const hl_v v230 = v66 * v703;
+    const hl_v v231 = v60 + v60;
+    const hl_v v232 = v17 * v160;
+    const hl_v v233 = v15 * v156;
+    const hl_v v234 = v232 - v233;
+    const hl_v v235 = v58 * v234;
+    const hl_v v236 = v160 - v235;
+    const hl_v v237 = v231 * v236;
+    const hl_v v238 = v56 + v56;
+    const hl_v v239 = v54 * v234;
+    const hl_v v240 = v156 + v239;
+    const hl_v v241 = v238 * v240;
+    const hl_v v242 = v237 - v241;
+    const hl_v v243 = -v53;
+    const hl_v v244 = v243 + v243;
+    const hl_v v245 = v22 * v234;
+    const hl_v v246 = v244 * v245;
+    const hl_v v247 = v242 - v246;
+    const hl_v v248 = v65 + v65;
+    const hl_v v249 = v247 / v248;
+    const hl_v v250 = v230 * v249;
+    const hl_v v251 = v245 * v703;
+    const hl_v v252 = v250 - v251;
+    const hl_v v253 = v22 * v252;
+    const hl_v v254 = v236 * v703;
+    const hl_v v255 = v67 * v703;
+    const hl_v v256 = v255 * v249;
+    const hl_v v257 = v254 - v256;
+    const hl_v v258 = v58 * v257;
+    const hl_v v259 = v253 + v258;
+    const hl_v v260 = v240 * v703;
+    const hl_v v261 = v71 * v703;
+    const hl_v v262 = v261 * v249;
+    const hl_v v263 = v260 + v262;
+    const hl_v v264 = v54 * v263;
+    const hl_v v265 = v259 - v264;
+    const hl_v v266 = v14 * v265;
+    const hl_v v267 = v252 - v266;
+    const hl_v v268 = v87 * v267;
+    const hl_v v269 = hl_copysign(v125, v85);
+    const hl_v v270 = hl_sign(v86);
+    const hl_v v271 = v269 * v270;
+    const hl_v v272 = v86 / v85;
+    const hl_v v273 = v80 + v80;
+    const hl_v v274 = v17 * v265;
+    const hl_v v275 = v257 - v274;
+    const hl_v v276 = v273 * v275;
+    const hl_v v277 = v77 + v77;
+    const hl_v v278 = v15 * v265;
+    const hl_v v279 = v263 + v278;
+    const hl_v v280 = v277 * v279;
+    const hl_v v281 = v276 - v280;
+    const hl_v v282 = -v75;
+    const hl_v v283 = v282 + v282;
+    const hl_v v284 = v283 * v267;
+    const hl_v v285 = v281 + v284;
+    const hl_v v286 = v85 + v85;
+    const hl_v v287 = v285 / v286;
+    const hl_v v288 = v272 * v287;
+    const hl_v v289 = v271 * v288;
+    const hl_v v290 = v75 * v289;
+    const hl_v v291 = v268 + v290;
+    const hl_v v292 = v12 * v291;
+    const hl_v v293 = v87 * v275;
+    const hl_v v294 = v80 * v289;
+    const hl_v v295 = v293 - v294;
+    const hl_v v296 = v90 * v295;
+    const hl_v v297 = v292 - v296;
+    const hl_v v298 = v109 * v297;
+    const hl_v v299 = hl_copysign(v125, v107);
+    const hl_v v300 = hl_sign(v108);
+    const hl_v v301 = v299 * v300;
+    const hl_v v302 = v108 / v107;
+    const hl_v v303 = -v93;
+    const hl_v v304 = v303 + v303;
+    const hl_v v305 = v304 * v297;
+    const hl_v v306 = v99 + v99;
+    const hl_v v307 = v87 * v279;
+    const hl_v v308 = v77 * v289;
+    const hl_v v309 = v307 + v308;
+    const hl_v v310 = v90 * v309;
+    const hl_v v311 = v97 * v291;
+    const hl_v v312 = v310 + v311;
+    const hl_v v313 = v306 * v312;
+    const hl_v v314 = v305 - v313;
+    const hl_v v315 = v104 + v104;
+    const hl_v v316 = v97 * v295;
+    const hl_v v317 = v12 * v309;
+    const hl_v v318 = v316 + v317;
+    const hl_v v319 = v315 * v318;
+    const hl_v v320 = v314 + v319;
+    const hl_v v321 = v107 + v107;
+    const hl_v v322 = v320 / v321;
+    const hl_v v323 = v302 * v322;
+    const hl_v v324 = v301 * v323;
+    const hl_v v325 = v93 * v324;
+    const hl_v v326 = v298 + v325;
+    const hl_v v327 = v326 * v156;
+    const hl_v v328 = v109 * v312;
+    const hl_v v329 = v99 * v324;
+    const hl_v v330 = v328 + v329;
+    const hl_v v331 = v330 * v160;
+    const hl_v v332 = v327 + v331;
+    const hl_v v333 = v229 * v332;
+    const hl_v v334 = v228 + v333;
+    const hl_v v335 = v152 + v154;
+    const hl_v v336 = v40 * v154;
+    const hl_v v337 = v335 * v336;
+    const hl_v v338 = v336 * v154;
+    const hl_v v339 = v337 - v338;
+    const hl_v v340 = v335 * v45;
+    const hl_v v341 = v336 - v340;
+    const hl_v v342 = v335 * v341;
+    const hl_v v343 = v339 + v342;
+    const hl_v v344 = v112 * v343;
+    const hl_v v345 = v26 * v154;
+    const hl_v v346 = v335 * v345;
+    const hl_v v347 = v345 * v154;
+    const hl_v v348 = v346 - v347;
+    const hl_v v349 = v335 * v36;
+    const hl_v v350 = v349 - v345;
+    const hl_v v351 = v335 * v350;
+    const hl_v v352 = v348 - v351;
+    const hl_v v353 = v110 * v352;
+    const hl_v v354 = v344 - v353;
+    const hl_v v355 = v334 - v354;
+    const hl_v v356 = v355 * v123;
+    const hl_v v357 = v124 * v356;
+    const hl_v v358 = v91 * v36;
+    const hl_v v359 = v95 * v45;
+    const hl_v v360 = v358 - v359;
+    const hl_v v361 = v124 * v360;
+    const hl_v v362 = v118 * v123;
+    const hl_v v363 = v91 * v35;
+    const hl_v v364 = v95 * v44;
+    const hl_v v365 = v363 - v364;
+    const hl_v v366 = v362 * v365;
+    const hl_v v367 = v361 + v366;
+    const hl_v v368 = v367 * v124;
+    const hl_v v369 = v360 - v368;
+    const hl_v v370 = v369 * v369;
+    const hl_v v371 = v367 * v362;
+    const hl_v v372 = v365 - v371;
+    const hl_v v373 = v372 * v372;
+    const hl_v v374 = v370 + v373;
+    const hl_v v375 = hl_sqrt(v374);
+    const hl_v v376 = 1.0 / v375;
+    const hl_v v377 = hl_copysign(v376, v375);
+    const hl_v v378 = v369 * v377;
+    const hl_v v379 = pre[35];
+    const hl_v v380 = pre[36];
+    const hl_v v381 = yd_rate[1];
+    const hl_v v382 = pre[37];
+    const hl_v v383 = pre[38];
+    const hl_v v384 = hl_bool(v383 <= v131);
+    const hl_v v385 = pre[39];
+    const hl_v v386 = hl_select(v384 != 0.0, v385, hl_splat(0.0));
+    const hl_v v387 = hl_bool(v384 == 0.0);
+    const hl_v v388 = pre[40];
+    const hl_v v389 = hl_select(v387 != 0.0, v388, hl_splat(0.0));
+    const hl_v v390 = v386 + v389;
+    const hl_v v391 = yd_extra[1];
+    const hl_v v392 = v390 + v391;
+    const hl_v v393 = v95 * v143;
+    const hl_v v394 = v91 * v141;
+    const hl_v v395 = v393 + v394;
+    const hl_v v396 = v88 * v147;
+    const hl_v v397 = v395 - v396;
+    const hl_v v398 = v392 - v397;
+    const hl_v v399 = v379 * v398;
+    const hl_v v400 = v91 * v160;
+    const hl_v v401 = v95 * v156;
+    const hl_v v402 = v400 - v401;
+    const hl_v v403 = v392 - v402;
+    const hl_v v404 = v380 * v403;
+    const hl_v v405 = v399 + v404;
+    const hl_v v406 = v382 * v405;
+    const hl_v v407 = v381 + v406;
+    const hl_v v408 = pre[41];
+    const hl_v v409 = hl_bool(v397 < v169);
+    const hl_v v410 = v379 * v409;
+    const hl_v v411 = pre[42];
+    const hl_v v412 = v410 * v411;
+    const hl_v v413 = pre[43];
+    const hl_v v414 = pre[44];
+    const hl_v v415 = v414 - v406;
+    const hl_v v705 = pre[45];
+    const hl_v v420 = v415 * v705;
+    const hl_v v421 = v184 * v405;
+    const hl_v v422 = v420 - v421;
+    const hl_v v423 = hl_select(v412 != 0.0, v422, hl_splat(0.0));
+    const hl_v v424 = hl_bool(v412 == 0.0);
+    const hl_v v425 = integrals[2];
+    const hl_v v426 = v425 + v421;
+    const hl_v v427 = v408 * v426;
+    const hl_v v428 = pre[46];
+    const hl_v v429 = integrals[3];
+    const hl_v v430 = v184 * v426;
+    const hl_v v431 = v429 + v430;
+    const hl_v v432 = v380 * v431;
+    const hl_v v433 = v428 * v432;
+    const hl_v v434 = v427 + v433;
+    const hl_v v435 = hl_fabs(v434);
+    const hl_v v436 = hl_bool(v189 < v435);
+    const hl_v v437 = hl_fmax(v436, v410);
+    const hl_v v438 = v437 * v425;
+    const hl_v v439 = v125 - v437;
+    const hl_v v440 = v439 * v426;
+    const hl_v v441 = v438 + v440;
+    const hl_v v442 = hl_select(v424 != 0.0, v441, hl_splat(0.0));
+    const hl_v v443 = v423 + v442;
+    const hl_v v444 = v408 * v443;
+    const hl_v v445 = v407 + v444;
+    const hl_v v446 = v437 * v380;
+    const hl_v v447 = v446 * v429;
+    const hl_v v448 = v439 * v432;
+    const hl_v v449 = v447 + v448;
+    const hl_v v450 = v428 * v449;
+    const hl_v v451 = v445 + v450;
+    const hl_v v452 = v380 * v451;
+    const hl_v v453 = v125 - v410;
+    const hl_v v454 = v413 * v402;
+    const hl_v v455 = v406 + v454;
+    const hl_v v456 = v455 + v444;
+    const hl_v v457 = v453 * v456;
+    const hl_v v458 = v410 * v413;
+    const hl_v v459 = v402 + v176;
+    const hl_v v460 = v458 * v459;
+    const hl_v v461 = v457 + v460;
+    const hl_v v462 = v379 * v461;
+    const hl_v v463 = v452 - v462;
+    const hl_v v464 = v309 * v156;
+    const hl_v v465 = v295 * v160;
+    const hl_v v466 = v464 + v465;
+    const hl_v v467 = v229 * v466;
+    const hl_v v468 = v463 - v467;
+    const hl_v v469 = v95 * v352;
+    const hl_v v470 = v91 * v343;
+    const hl_v v471 = v469 + v470;
+    const hl_v v472 = v468 - v471;
+    const hl_v v473 = v367 * v356;
+    const hl_v v474 = v472 - v473;
+    const hl_v v475 = v474 * v377;
+    const hl_v v476 = v378 * v475;
+    const hl_v v477 = v357 + v476;
+    const hl_v v478 = v362 * v356;
+    const hl_v v479 = v372 * v377;
+    const hl_v v480 = v479 * v475;
+    const hl_v v481 = v478 + v480;
+    const hl_v v482 = v477 + v481;
+    const hl_v v483 = v0 * v482;
+    const hl_v v484 = pre[47];
+    const hl_v v485 = v34 * v484;
+    const hl_v v486 = v42 + v41;
+    const hl_v v487 = pre[48];
+    const hl_v v488 = v486 * v487;
+    const hl_v v489 = v485 - v488;
+    const hl_v v490 = v26 + v489;
+    const hl_v v491 = pre[49];
+    const hl_v v492 = pre[50];
+    const hl_v v493 = v26 * v481;
+    const hl_v v494 = v492 + v493;
+    const hl_v v495 = v339 - v494;
+    const hl_v v496 = v482 * v490;
+    const hl_v v497 = v495 + v496;
+    const hl_v v498 = v43 * v484;
+    const hl_v v499 = v34 * v487;
+    const hl_v v500 = v498 + v499;
+    const hl_v v501 = v40 + v500;
+    const hl_v v502 = v335 * v501;
+    const hl_v v503 = v336 - v502;
+    const hl_v v504 = v335 * v503;
+    const hl_v v505 = v497 + v504;
+    const hl_v v506 = v491 * v505;
+    const hl_v v507 = v490 * v506;
+    const hl_v v508 = v40 * v481;
+    const hl_v v509 = pre[51];
+    const hl_v v510 = v508 - v509;
+    const hl_v v511 = v348 + v510;
+    const hl_v v512 = v482 * v501;
+    const hl_v v513 = v511 - v512;
+    const hl_v v514 = v335 * v490;
+    const hl_v v515 = v514 - v345;
+    const hl_v v516 = v335 * v515;
+    const hl_v v517 = v513 - v516;
+    const hl_v v518 = v491 * v517;
+    const hl_v v519 = v501 * v518;
+    const hl_v v520 = v507 - v519;
+    const hl_v v521 = v483 + v520;
+    const hl_v v522 = pre[52];
+    const hl_v v523 = v522 * v477;
+    const hl_v v524 = pre[53];
+    const hl_v v525 = v25 * v524;
+    const hl_v v526 = pre[54];
+    const hl_v v527 = v31 * v526;
+    const hl_v v528 = v525 - v527;
+    const hl_v v529 = pre[55];
+    const hl_v v530 = v477 * v528;
+    const hl_v v531 = v530 - v492;
+    const hl_v v532 = v31 * v524;
+    const hl_v v533 = v25 * v526;
+    const hl_v v534 = v532 + v533;
+    const hl_v v535 = v152 * v534;
+    const hl_v v536 = v152 * v535;
+    const hl_v v537 = v531 - v536;
+    const hl_v v538 = v529 * v537;
+    const hl_v v539 = v528 * v538;
+    const hl_v v540 = v477 * v534;
+    const hl_v v541 = v509 + v540;
+    const hl_v v542 = v152 * v528;
+    const hl_v v543 = v152 * v542;
+    const hl_v v544 = v541 + v543;
+    const hl_v v545 = v529 * v544;
+    const hl_v v546 = v534 * v545;
+    const hl_v v547 = v539 + v546;
+    const hl_v v548 = v523 + v547;
+    const hl_v v549 = v521 + v548;
+    const hl_v v550 = pre[56];
+    const hl_v v551 = v550 * v152;
+    const hl_v v552 = v549 + v551;
+    const hl_v v553 = pre[57];
+    const hl_v v554 = v126 * v140;
+    const hl_v v555 = v112 * v554;
+    const hl_v v556 = v379 * v392;
+    const hl_v v557 = v91 * v556;
+    const hl_v v558 = v555 + v557;
+    const hl_v v559 = v553 * v558;
+    const hl_v v560 = pre[58];
+    const hl_v v561 = v560 * v141;
+    const hl_v v562 = v559 + v561;
+    const hl_v v563 = v36 * v562;
+    const hl_v v564 = v95 * v556;
+    const hl_v v565 = v110 * v554;
+    const hl_v v566 = v564 - v565;
+    const hl_v v567 = v553 * v566;
+    const hl_v v568 = v560 * v143;
+    const hl_v v569 = v567 + v568;
+    const hl_v v570 = v45 * v569;
+    const hl_v v571 = v563 - v570;
+    const hl_v v572 = Fc[5];
+    const hl_v v573 = v560 * v572;
+    const hl_v v574 = v571 + v573;
+    const hl_v v575 = v552 - v574;
+    const hl_v v576 = hl_fabs(v575);
+    const hl_v v577 = pre[59];
+    const hl_v v578 = hl_bool(v576 <= v577);
+    const hl_v v579 = pre[60];
+    const hl_v v580 = last_torque[2];
+    const hl_v v581 = last_torque[0];
+    const hl_v v582 = pre[61];
+    const hl_v v583 = v581 + v582;
+    const hl_v v584 = hl_select(v580 != 0.0, v583, hl_splat(0.0));
+    const hl_v v585 = hl_bool(v580 == 0.0);
+    const hl_v v586 = hl_select(v585 != 0.0, v579, hl_splat(0.0));
+    const hl_v v587 = v584 + v586;
+    const hl_v v588 = hl_bool(v587 < v575);
+    const hl_v v589 = hl_select(v588 != 0.0, v587, hl_splat(0.0));
+    const hl_v v590 = hl_bool(v588 == 0.0);
+    const hl_v v591 = v581 - v582;
+    const hl_v v592 = hl_select(v580 != 0.0, v591, hl_splat(0.0));
+    const hl_v v593 = pre[62];
+    const hl_v v594 = hl_select(v585 != 0.0, v593, hl_splat(0.0));
+    const hl_v v595 = v592 + v594;
+    const hl_v v596 = hl_bool(v575 < v595);
+    const hl_v v597 = hl_select(v596 != 0.0, v595, hl_splat(0.0));
+    const hl_v v598 = hl_bool(v596 == 0.0);
+    const hl_v v599 = hl_select(v598 != 0.0, v575, hl_splat(0.0));
+    const hl_v v600 = v597 + v599;
+    const hl_v v601 = hl_select(v590 != 0.0, v600, hl_splat(0.0));
+    const hl_v v602 = v589 + v601;
+    const hl_v v603 = hl_bool(v579 < v602);
+    const hl_v v604 = hl_select(v603 != 0.0, v579, hl_splat(0.0));
+    const hl_v v605 = hl_bool(v603 == 0.0);
+    const hl_v v606 = hl_bool(v602 < v593);
+    const hl_v v607 = hl_select(v606 != 0.0, v593, hl_splat(0.0));
+    const hl_v v608 = hl_bool(v606 == 0.0);
+    const hl_v v609 = hl_select(v608 != 0.0, v602, hl_splat(0.0));
+    const hl_v v610 = v607 + v609;
+    const hl_v v611 = hl_select(v605 != 0.0, v610, hl_splat(0.0));
+    const hl_v v612 = v604 + v611;
+    const hl_v v613 = hl_select(v578 != 0.0, v612, hl_splat(0.0));
+    const hl_v v614 = hl_bool(v578 == 0.0);
+    const hl_v v615 = hl_select(v614 != 0.0, v575, hl_splat(0.0));
+    const hl_v v616 = v613 + v615;
+    const hl_v v617 = v40 * v518;
+    const hl_v v618 = v26 * v506;
+    const hl_v v619 = v617 - v618;
+    const hl_v v620 = v521 + v619;
+    const hl_v v621 = pre[63];
+    const hl_v v622 = v621 * v154;
+    const hl_v v623 = v620 + v622;
+    const hl_v v624 = v35 * v562;
+    const hl_v v625 = v44 * v569;
+    const hl_v v626 = v624 - v625;
+    const hl_v v627 = v626 + v573;
+    const hl_v v628 = v623 - v627;
+    const hl_v v629 = hl_fabs(v628);
+    const hl_v v630 = hl_bool(v629 <= v577);
+    const hl_v v631 = pre[64];
+    const hl_v v632 = last_torque[1];
+    const hl_v v633 = pre[65];
+    const hl_v v634 = v632 + v633;
+    const hl_v v635 = hl_select(v580 != 0.0, v634, hl_splat(0.0));
+    const hl_v v636 = hl_select(v585 != 0.0, v631, hl_splat(0.0));
+    const hl_v v637 = v635 + v636;
+    const hl_v v638 = hl_bool(v637 < v628);
+    const hl_v v639 = hl_select(v638 != 0.0, v637, hl_splat(0.0));
+    const hl_v v640 = hl_bool(v638 == 0.0);
+    const hl_v v641 = v632 - v633;
+    const hl_v v642 = hl_select(v580 != 0.0, v641, hl_splat(0.0));
+    const hl_v v643 = pre[66];
+    const hl_v v644 = hl_select(v585 != 0.0, v643, hl_splat(0.0));
+    const hl_v v645 = v642 + v644;
+    const hl_v v646 = hl_bool(v628 < v645);
+    const hl_v v647 = hl_select(v646 != 0.0, v645, hl_splat(0.0));
+    const hl_v v648 = hl_bool(v646 == 0.0);
+    const hl_v v649 = hl_select(v648 != 0.0, v628, hl_splat(0.0));
+    const hl_v v650 = v647 + v649;
+    const hl_v v651 = hl_select(v640 != 0.0, v650, hl_splat(0.0));
+    const hl_v v652 = v639 + v651;
+    const hl_v v653 = hl_bool(v631 < v652);
+    const hl_v v654 = hl_select(v653 != 0.0, v631, hl_splat(0.0));
+    const hl_v v655 = hl_bool(v653 == 0.0);
+    const hl_v v656 = hl_bool(v652 < v643);
+    const hl_v v657 = hl_select(v656 != 0.0, v643, hl_splat(0.0));
+    const hl_v v658 = hl_bool(v656 == 0.0);
+    const hl_v v659 = hl_select(v658 != 0.0, v652, hl_splat(0.0));
+    const hl_v v660 = v657 + v659;
+    const hl_v v661 = hl_select(v655 != 0.0, v660, hl_splat(0.0));
+    const hl_v v662 = v654 + v661;
+    const hl_v v663 = hl_select(v630 != 0.0, v662, hl_splat(0.0));
+    const hl_v v664 = hl_bool(v630 == 0.0);
+    const hl_v v665 = hl_select(v664 != 0.0, v628, hl_splat(0.0));
+    const hl_v v666 = v663 + v665;
+    const hl_v v667 = hl_bool(v616 != v575);
+    const hl_v v668 = hl_bool(v666 != v628);
+    const hl_v v669 = v667 + v668;
+    const hl_v v670 = hl_bool(v172 < v669);
+    const hl_v v671 = hl_select(v670 != 0.0, v190, hl_splat(0.0));
+    const hl_v v672 = hl_bool(v670 == 0.0);
+    const hl_v v673 = hl_select(v672 != 0.0, v208, hl_splat(0.0));
+    const hl_v v674 = v671 + v673;
+    const hl_v v675 = hl_select(v670 != 0.0, v194, hl_splat(0.0));
+    const hl_v v676 = hl_select(v672 != 0.0, v214, hl_splat(0.0));
+    const hl_v v677 = v675 + v676;
+    const hl_v v678 = hl_select(v670 != 0.0, v425, hl_splat(0.0));
+    const hl_v v679 = hl_select(v672 != 0.0, v443, hl_splat(0.0));
+    const hl_v v680 = v678 + v679;
+    const hl_v v681 = hl_select(v670 != 0.0, v429, hl_splat(0.0));
+    const hl_v v682 = hl_select(v672 != 0.0, v449, hl_splat(0.0));
+    const hl_v v683 = v681 + v682;
+    const hl_v v684 = Fc[3];
+    const hl_v v685 = Fc[4];
+    const hl_v v686 = pre[67];
+    const hl_v v687 = v360 * v360;
+    const hl_v v688 = v115 + v687;
+    const hl_v v689 = v688 + v119;
+    const hl_v v690 = v365 * v365;
+    const hl_v v691 = v689 + v690;
+    const hl_v v692 = v123 * v123;
+    const hl_v v693 = v367 * v377;
+    const hl_v v694 = v693 * v123;
+    const hl_v v695 = v694 * v694;
+    const hl_v v696 = v377 * v377;
+    const hl_v v697 = v695 + v696;
+    const hl_v v698 = v692 + v697;
+    const hl_v v699 = v691 * v698;
+    const hl_v v700 = hl_sqrt(v699);
+    const hl_v v701 = v686 / v700;
+    tau[0] = v616;
+    tau[1] = v666;
+    integrals_next[0] = v674;
+    integrals_next[1] = v677;
+    integrals_next[2] = v680;
+    integrals_next[3] = v683;
+    a[0] = v228;
+    a[1] = v463;
+    y[0] = v162;
+    y[1] = v402;
+    f[0] = v149;
+    f[1] = v397;
+    saturated[0] = v670;
+    filter_next[0] = v172;
+    filter_next[1] = v172;
+    filter_next[2] = v172;
+    filter_next[3] = v172;
+    filter_next[4] = v172;
+    filter_next[5] = v172;
+    filter_next[6] = v172;
+    filter_next[7] = v172;
+    filter_next[8] = v172;
+    filter_next[9] = v172;
+    filter_next[10] = v172;
+    filter_next[11] = v172;
+    filter_next[12] = v172;
+    estimate_next[0] = v172;
+    estimate_next[1] = v172;
+    estimate_next[2] = v172;
+    estimate_next[3] = v172;
+    estimate_next[4] = v172;
+    estimate_next[5] = v172;
+    estimate_next[6] = v172;
+    estimate_next[7] = v172;
+    estimate_next[8] = v172;
+    estimate_next[9] = v172;
+    contact_wrench[0] = v143;
+    contact_wrench[1] = v141;
+    contact_wrench[2] = v147;
+    contact_wrench[3] = v684;
+    contact_wrench[4] = v685;
+    contact_wrench[5] = v572;
+    frame[0] = v107;
+    cond[0] = v701;
+}
+
+static __attribute__((noinline, cold)) void controller_step_lanes_exact(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond) {
+    controller_step_lanes_core(q, qd, Fc, integrals, last_torque, filter, estimate, t, yd_extra, yd_rate, target, pre, tau, integrals_next, a, y, f, saturated, filter_next, estimate_next, contact_wrench, frame, cond, 1, NULL);
+}
+
+static void controller_step_lanes(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond) {
+    hl_i odd = hl_splat(0.0) != 0.0;
+    controller_step_lanes_core(q, qd, Fc, integrals, last_torque, filter, estimate, t, yd_extra, yd_rate, target, pre, tau, integrals_next, a, y, f, saturated, filter_next, estimate_next, contact_wrench, frame, cond, 0, &odd);
+    if (hl_any(odd)) controller_step_lanes_exact(q, qd, Fc, integrals, last_torque, filter, estimate, t, yd_extra, yd_rate, target, pre, tau, integrals_next, a, y, f, saturated, filter_next, estimate_next, contact_wrench, frame, cond);
+}
+
+
+typedef struct {
+    int status[HL_W], sample[HL_W];
+    hl_i alive;
+} lanes_run;
+
+/* a lane still running that meets `bad` stops with `status` at sample k */
+static void flag(lanes_run *run, hl_i bad, int status, int k) {
+    int l;
+    bad &= run->alive;
+    for (l = 0; l < HL_W; ++l) {
+        if (bad[l]) {
+            run->status[l] = status;
+            run->sample[l] = k;
+        }
+    }
+    run->alive &= ~bad;
+}
+
+/* the metrics' running sums and extremes (hybrid.metrics' definitions, updated row by row) */
+typedef struct {
+    hl_v peak, n_f, first_f, last_out_f, last_f, drop, n_v, dev, v_max, sum_fe, sum_ve, n_last, sum_f2, sum_v2,
+        pen, in_prev, losses, t_out, touch, fd0, band, w_end, t_peak, t_last_out, t_last, tau[2];
+} lanes_metrics;
+
+static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, long i, double h,
+                        double end) {
+    const hl_v fb = blk[122], fa = blk[123], fat = blk[124];
+    const hl_v vb = blk[125], va = blk[126], vat = blk[127];
+    const double ti = (double)i * h;
+    const hl_v t = hl_splat(ti), idx = hl_splat((double)i);
+    const hl_v F = s[2], v = s[3], pen = s[4];
+    const hl_v Fd = hl_select(t < fat, fb, fa), vd = hl_select(t < vat, vb, va);
+    const hl_v step = fa - fb, sgn = hl_select(step >= 0.0, hl_splat(1.0), hl_splat(-1.0));
+    const hl_v f_end = hl_select(vat > fat, vat, hl_splat(end));
+    const hl_v band = 0.02 * hl_select(fa != 0.0, hl_fabs(fa), hl_fabs(step));
+    const hl_i in_f = (t >= fat) & (t < f_end), in_v = t >= vat, last = t >= end - 0.2;
+    const hl_i contact = s[5] > 0.0;
+    int j;
+    mt->peak = hl_select(in_f & (sgn * F > mt->peak), sgn * F, mt->peak);
+    mt->n_f += hl_select(in_f, hl_splat(1.0), hl_splat(0.0));
+    mt->first_f = hl_select(in_f & (mt->first_f < 0.0), idx, mt->first_f);
+    mt->last_out_f = hl_select(in_f & (hl_fabs(F - fa) > band), idx, mt->last_out_f);
+    mt->last_f = hl_select(in_f, idx, mt->last_f);
+    mt->drop = hl_select(in_f & (vd - v > mt->drop), vd - v, mt->drop);
+    mt->n_v += hl_select(in_v, hl_splat(1.0), hl_splat(0.0));
+    mt->dev = hl_select(in_v & (hl_fabs(F - Fd) > mt->dev), hl_fabs(F - Fd), mt->dev);
+    mt->v_max = hl_select(in_v & (v > mt->v_max), v, mt->v_max);
+    mt->sum_fe += hl_select(last, Fd - F, hl_splat(0.0));
+    mt->sum_ve += hl_select(last, vd - v, hl_splat(0.0));
+    mt->n_last += hl_select(last, hl_splat(1.0), hl_splat(0.0));
+    mt->sum_f2 += (Fd - F) * (Fd - F);
+    mt->sum_v2 += (vd - v) * (vd - v);
+    mt->pen = hl_select(pen > mt->pen, pen, mt->pen);
+    if (i > 0) {
+        mt->losses += hl_select((mt->in_prev != 0.0) & ~contact, hl_splat(1.0), hl_splat(0.0));
+        mt->t_out += hl_select(contact, hl_splat(0.0), hl_splat(ti - (double)(i - 1) * h));
+    }
+    mt->in_prev = hl_bool(contact);
+    { /* the first touch: the first row in contact, then the window until the force reference next changes */
+        const hl_i first = contact & (mt->touch < 0.0);
+        hl_i in_t;
+        if (hl_any(first)) {
+            mt->touch = hl_select(first, idx, mt->touch);
+            mt->fd0 = hl_select(first, Fd, mt->fd0);
+            mt->band = hl_select(first, 0.05 * hl_fabs(Fd), mt->band);
+            mt->w_end = hl_select(first, hl_select((fa != fb) & (fat > t), fat, hl_splat(INFINITY)), mt->w_end);
+        }
+        in_t = (mt->touch >= 0.0) & (t < mt->w_end);
+        mt->t_peak = hl_select(in_t & (F > mt->t_peak), F, mt->t_peak);
+        mt->t_last_out = hl_select(in_t & (hl_fabs(F - mt->fd0) > mt->band), idx, mt->t_last_out);
+        mt->t_last = hl_select(in_t, idx, mt->t_last);
+    }
+    for (j = 0; j < 2; ++j) {
+        const hl_v a = hl_fabs(tau[j]);
+        mt->tau[j] = hl_select(a > mt->tau[j], a, mt->tau[j]);
+    }
+}
+
+static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int l, long rows, double h, double *out) {
+    const double fb = blk[122][l], fa = blk[123][l], vb = blk[125][l], va = blk[126][l];
+    int j;
+    for (j = 0; j < 6; ++j) out[j] = NAN;
+    if (mt->n_f[l] > 0 && fa != fb) {
+        const double step = fa - fb, sgn = step >= 0 ? 1.0 : -1.0;
+        const double lo = mt->last_out_f[l], lf = mt->last_f[l], first = mt->first_f[l];
+        out[0] = (sgn * mt->peak[l] - fa) * sgn;
+        out[1] = 100 * out[0] / fabs(step);
+        out[2] = lo < 0 ? 0.0 : lo == lf ? NAN : (lo + 1) * h - first * h;
+        out[3] = mt->drop[l];
+    }
+    if (mt->n_v[l] > 0 && va != vb) {
+        out[4] = mt->dev[l];
+        out[5] = mt->v_max[l] - va;
+    }
+    out[6] = mt->sum_fe[l] / mt->n_last[l];
+    out[7] = mt->sum_ve[l] / mt->n_last[l];
+    out[8] = sqrt(mt->sum_f2[l] / (double)rows);
+    out[9] = sqrt(mt->sum_v2[l] / (double)rows);
+    out[10] = mt->pen[l];
+    out[11] = mt->losses[l];
+    out[12] = mt->t_out[l];
+    out[13] = out[14] = out[15] = NAN;
+    if (mt->touch[l] >= 0) {
+        const double lo = mt->t_last_out[l], lt = mt->t_last[l], first = mt->touch[l];
+        out[13] = first * h;
+        out[14] = mt->t_peak[l] - mt->fd0[l];
+        out[15] = lo < 0 ? 0.0 : lo == lt ? NAN : (lo + 1) * h - first * h;
+    }
+    for (j = 0; j < 2; ++j) out[16 + j] = mt->tau[j][l];
+}
+
+/* the row's state of each lane in `state` and torque of each lane in `torque`; NaN for the others (a lane
+   that stopped) */
+static void record(double *states, double *taus, int g, int used, long row, long rows, const hl_v *x,
+                   const hl_v *tau, hl_i state, hl_i torque) {
+    int l, j;
+    if (!states && !taus) return;
+    for (l = 0; l < used; ++l) {
+        const long at = (long)(g + l) * rows + row;
+        if (states) for (j = 0; j < 8; ++j) states[at * 8 + j] = state[l] ? x[j][l] : NAN;
+        if (taus) for (j = 0; j < 2; ++j) taus[at * 2 + j] = torque[l] ? tau[j][l] : NAN;
+    }
+}
+
+/* the output row of each lane still running (NaN for the others) */
+static void record_outputs(double *outputs, int g, int used, long row, long rows, const hl_v *y, hl_i alive) {
+    int l, j;
+    if (!outputs) return;
+    for (l = 0; l < used; ++l) {
+        const long at = (long)(g + l) * rows + row;
+        for (j = 0; j < 14; ++j) outputs[at * 14 + j] = alive[l] ? y[j][l] : NAN;
+    }
+}
+
+/* the runs g .. g + used - 1 as one group of HL_W lanes (unused lanes repeat run g) */
+static void run_lanes(int g, int used, const double *runs, int n_samples, int steps_per_sample, double h,
+                      double sample_time, double singular_tol, double *metrics, int *status, int *failed_sample,
+                      double *states, double *taus, double *outputs) {
+    hl_v pre_rhs[PLANT_RHS_LANES_NPRE], pre_out[PLANT_OUTPUTS_LANES_NPRE], pre_both[PLANT_RHS_SIGNALS_LANES_NPRE],
+        pre_step[CONTROLLER_STEP_LANES_NPRE];
+    hl_v blk[128], x[8], xt[8], k1[8], k2[8], k3[8], k4[8], s[6], fc[6], z[4], tv[1],
+        zero[13], base[6], last[3], y[14];
+    hl_v o_tau[2]; hl_v o_integrals_next[4]; hl_v o_a[2]; hl_v o_y[2]; hl_v o_f[2]; hl_v o_saturated[1]; hl_v o_filter_next[13]; hl_v o_estimate_next[10]; hl_v o_contact_wrench[6]; hl_v o_frame[1]; hl_v o_cond[1];
+    lanes_run run;
+    lanes_metrics mt;
+    const long rows = (long)n_samples * steps_per_sample + 1;
+    const double end = (double)(rows - 1) * h;
+    long row = 0;
+    int i, j, l, k;
+    (void)singular_tol;
+    for (l = 0; l < HL_W; ++l) {
+        for (j = 0; j < 128; ++j) blk[j][l] = runs[(long)(g + (l < used ? l : 0)) * 128 + j];
+        run.status[l] = HYBRID_OK;
+        run.sample[l] = -1;
+    }
+    run.alive = hl_splat(0.0) == 0.0;
+    mt.peak = mt.drop = mt.dev = mt.v_max = mt.pen = hl_splat(-INFINITY);
+    mt.first_f = mt.last_out_f = mt.last_f = hl_splat(-1.0);
+    mt.n_f = mt.n_v = mt.sum_fe = mt.sum_ve = mt.n_last = mt.sum_f2 = mt.sum_v2 = mt.in_prev = mt.losses = mt.t_out
+        = hl_splat(0.0);
+    mt.touch = mt.t_last_out = mt.t_last = hl_splat(-1.0);
+    mt.fd0 = mt.band = hl_splat(0.0);
+    mt.w_end = hl_splat(INFINITY);
+    mt.t_peak = hl_splat(-INFINITY);
+    for (j = 0; j < 2; ++j) mt.tau[j] = hl_splat(0.0);
+    for (j = 0; j < 13; ++j) zero[j] = hl_splat(0.0);
+    for (j = 0; j < 6; ++j) fc[j] = hl_splat(0.0);
+    for (j = 0; j < 4; ++j) z[j] = hl_splat(0.0);
+    for (j = 0; j <= 2; ++j) last[j] = hl_splat(0.0);
+    for (j = 0; j < 8; ++j) x[j] = blk[0 + j];
+    plant_rhs_lanes_pre(blk + 8, blk + 19, blk + 26, pre_rhs);
+    plant_outputs_lanes_pre(blk + 8, blk + 19, blk + 26, pre_out);
+    plant_rhs_signals_lanes_pre(blk + 8, blk + 19, blk + 26, pre_both);
+    controller_step_lanes_pre(blk + 29, blk + 35, blk + 43, blk + 45, blk + 70, blk + 77, blk + 80, blk + 87, blk + 93, blk + 97, pre_step);
+    for (k = 0; k < n_samples && hl_any(run.alive); ++k) {
+        /* the sensor's reading at the sample instant (a row's signals come with its step's first stage) */
+        plant_outputs_lanes(x, pre_out, y);
+        fc[0] = y[4];
+        fc[1] = y[5];
+
+        tv[0] = hl_splat(k * sample_time);
+        /* the plant's sensor gives the wrench on the robot itself and the surface is told: no filter, no estimate */
+        controller_step_lanes(x, x + 2, fc, z, last, zero, zero, tv, zero, zero, zero, pre_step, o_tau, o_integrals_next, o_a, o_y, o_f, o_saturated, o_filter_next, o_estimate_next, o_contact_wrench, o_frame, o_cond);
+        flag(&run, hl_fabs(o_frame[0]) < 1e-06, HYBRID_FRAME_UNDEFINED, k);
+        flag(&run, hl_fabs(o_cond[0]) < singular_tol, HYBRID_SINGULAR, k);
+        flag(&run, hl_not_finite(o_tau, 2) | hl_not_finite(o_integrals_next, 4) | hl_not_finite(o_a, 2) | hl_not_finite(o_y, 2) | hl_not_finite(o_f, 2) | hl_not_finite(o_saturated, 1) | hl_not_finite(o_filter_next, 13) | hl_not_finite(o_estimate_next, 10) | hl_not_finite(o_contact_wrench, 6) | hl_not_finite(o_frame, 1) | hl_not_finite(o_cond, 1), HYBRID_NONFINITE, k);
+        for (j = 0; j < 4; ++j) z[j] = o_integrals_next[j];
+        /* the torque the rate limit starts from at the next sample */
+        for (j = 0; j < 2; ++j) last[j] = o_tau[j];
+        last[2] = hl_splat(1.0);
+        if (k == 0) record(states, taus, g, used, 0, rows, x, o_tau, hl_splat(0.0) == 0.0, run.alive);
+        for (i = 0; i < steps_per_sample; ++i) {
+            /* the joints' sin and cos at the step's start: its stages rotate from there */
+            for (j = 0; j < 2; ++j) {
+                base[3 * j] = x[j];
+                hl_sincos(x[j], base + 3 * j + 1, base + 3 * j + 2);
+            }
+            plant_rhs_signals_lanes(x, o_tau, pre_both, k1, s, y, base);
+            for (j = 0; j < 8; ++j) xt[j] = x[j] + 0.5 * h * k1[j];
+            plant_rhs_lanes(xt, o_tau, pre_rhs, k2, base);
+            for (j = 0; j < 8; ++j) xt[j] = x[j] + 0.5 * h * k2[j];
+            plant_rhs_lanes(xt, o_tau, pre_rhs, k3, base);
+            for (j = 0; j < 8; ++j) xt[j] = x[j] + h * k3[j];
+            plant_rhs_lanes(xt, o_tau, pre_rhs, k4, base);
+            for (j = 0; j < 8; ++j) x[j] = x[j] + h / 6.0 * (k1[j] + 2.0 * (k2[j] + k3[j]) + k4[j]);
+            /* the row the step started from (the peak torques read each sample's torque all the same) */
+            metrics_row(&mt, blk, s, o_tau, row, h, end);
+            record_outputs(outputs, g, used, row, rows, y, run.alive);
+            ++row;
+            flag(&run, hl_not_finite(x, 8), HYBRID_NONFINITE, k);
+            /* a stopped lane restarts from its initial state: its numbers no longer matter, and they stay
+               finite */
+            if (hl_any(~run.alive)) {
+                for (j = 0; j < 8; ++j) x[j] = hl_select(run.alive, x[j], blk[0 + j]);
+            }
+            record(states, taus, g, used, row, rows, x, o_tau, run.alive, run.alive);
+        }
+    }
+    if (k > 0) { /* the last row */
+        plant_outputs_lanes(x, pre_out, y);
+        s[0] = y[4];
+        s[1] = y[5];
+        s[2] = y[7];
+        s[3] = y[2];
+        s[4] = y[10];
+        s[5] = y[11];
+        metrics_row(&mt, blk, s, o_tau, row, h, end);
+        record_outputs(outputs, g, used, row, rows, y, run.alive);
+    }
+    while (++row < rows) { /* all stopped */
+        record(states, taus, g, used, row, rows, x, o_tau, run.alive, run.alive);
+        record_outputs(outputs, g, used, row, rows, y, run.alive);
+    }
+    for (l = 0; l < used; ++l) {
+        status[g + l] = run.status[l];
+        failed_sample[g + l] = run.sample[l];
+        metrics_of_lane(&mt, blk, l, rows, h, metrics + (long)(g + l) * 18);
+    }
+}
+
+int hybrid_planar_arm_circle_controller_4b54e1a71151_closed_loop(int nruns, const double *runs, int n_samples, int steps_per_sample, double h, double sample_time, double singular_tol, double *metrics, int *status, int *failed_sample, double *states, double *taus, double *outputs) {
+    int g;
+    for (g = 0; g < nruns; g += HL_W) {
+        run_lanes(g, nruns - g < HL_W ? nruns - g : HL_W, runs, n_samples, steps_per_sample, h, sample_time,
+                  singular_tol, metrics, status, failed_sample, states, taus, outputs);
+    }
+    return HYBRID_OK;
+}
+
+int hybrid_planar_arm_circle_controller_4b54e1a71151_lanes(void) {
+    return HL_W;
+}

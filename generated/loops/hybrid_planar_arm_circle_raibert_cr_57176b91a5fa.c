@@ -1,0 +1,2044 @@
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: be8c4cfbc403335b78eb47137745c7b095b893bf33fb52030b673bf6754245e6 */
+/* hybrid_planar_arm_circle_raibert_cr_57176b91a5fa: the paper's closed loop on a circle: raibert_craig_step.
+   Emitted by hybrid's codegen/closed_loop.py. */
+#if !defined(__GNUC__)
+#error "the compiled closed loop needs GCC or Clang (vector extensions)"
+#endif
+#define HL_W 1
+#include <math.h>
+#include <string.h>
+
+#ifndef HL_W /* a build may fix it (1: one run at a time) */
+#if defined(__AVX512F__)
+#define HL_W 8
+#elif defined(__AVX__)
+#define HL_W 4
+#else
+#define HL_W 2
+#endif
+#endif
+typedef double hl_v __attribute__((vector_size(HL_W * 8)));
+typedef long long hl_i __attribute__((vector_size(HL_W * 8)));
+
+static inline hl_v hl_splat(double c) {
+    hl_v r = {0};
+    int l;
+    for (l = 0; l < HL_W; ++l) r[l] = c;
+    return r;
+}
+static inline hl_v hl_select(hl_i m, hl_v a, hl_v b) { return (hl_v)((m & (hl_i)a) | (~m & (hl_i)b)); }
+static inline hl_v hl_bool(hl_i m) { return hl_select(m, hl_splat(1.0), hl_splat(0.0)); }
+/* whether any lane of a mask is set: one instruction where the vector extension has it */
+#if defined(__AVX512F__) && HL_W == 8
+#include <immintrin.h>
+static inline int hl_any(hl_i m) { return _mm512_test_epi64_mask((__m512i)m, (__m512i)m) != 0; }
+#elif defined(__AVX__) && HL_W == 4
+#include <immintrin.h>
+static inline int hl_any(hl_i m) { return !_mm256_testz_si256((__m256i)m, (__m256i)m); }
+#else
+static inline int hl_any(hl_i m) {
+    long long acc = 0;
+    int l;
+    for (l = 0; l < HL_W; ++l) acc |= m[l];
+    return acc != 0;
+}
+#endif
+/* the lanes where any of v[0 .. n-1] is NaN or infinite */
+static inline hl_i hl_not_finite(const hl_v *v, int n) {
+    hl_i bad = hl_splat(0.0) != 0.0;
+    int i;
+    for (i = 0; i < n; ++i) bad |= (v[i] - v[i]) != 0.0;
+    return bad;
+}
+static inline hl_v hl_fabs(hl_v x) { return (hl_v)((hl_i)x & ~(hl_i)hl_splat(-0.0)); }
+static inline hl_v hl_copysign(hl_v x, hl_v y) {
+    hl_i s = (hl_i)hl_splat(-0.0);
+    return (hl_v)(((hl_i)x & ~s) | ((hl_i)y & s));
+}
+/* CasADi's sign: -1, 1, or x itself (0 and NaN) */
+static inline hl_v hl_sign(hl_v x) {
+    return hl_select(x < 0.0, hl_splat(-1.0), hl_select(x > 0.0, hl_splat(1.0), x));
+}
+/* C99 fmax/fmin: a NaN argument loses to a number */
+static inline hl_v hl_fmax(hl_v a, hl_v b) { return hl_select((a > b) | (b != b), a, b); }
+static inline hl_v hl_fmin(hl_v a, hl_v b) { return hl_select((a < b) | (b != b), a, b); }
+static inline hl_v hl_sqrt(hl_v x) {
+    hl_v r = x;
+    int l;
+    for (l = 0; l < HL_W; ++l) r[l] = __builtin_sqrt(x[l]);
+    return r;
+}
+#define HL_MAP1(name, f) static inline hl_v name(hl_v x) { \
+    hl_v r = x; int l; for (l = 0; l < HL_W; ++l) r[l] = f(x[l]); return r; }
+#define HL_MAP2(name, f) static inline hl_v name(hl_v x, hl_v y) { \
+    hl_v r = x; int l; for (l = 0; l < HL_W; ++l) r[l] = f(x[l], y[l]); return r; }
+
+/* Each of sincos, exp and tanh comes twice: hl_<f>_poly is the vector polynomial alone, which marks
+   in *odd the lanes it does not cover (a large or non-finite argument) and gives them meaningless
+   numbers; hl_<f> gives those lanes the C library's value, so no lane depends on its neighbours. A
+   kernel runs on the polynomials and, when a lane is odd, once again on the exact functions: its hot
+   path makes no call, and keeps its values in registers. */
+
+/* sin and cos: x = n pi/2 + r, |r| <= pi/4, in three parts of pi/2 (exact products for
+   |n| < 2^20), then fdlibm's kernels on r; odd: beyond |x| = 1e5, or not finite */
+static inline void hl_sincos_poly(hl_v x, hl_v *sine, hl_v *cosine, hl_i *odd) {
+    const double magic = 6755399441055744.0; /* 1.5 * 2^52: adding it rounds to an integer */
+    const hl_i big = ~(hl_fabs(x) <= 1e5), sign = (hl_i)hl_splat(-0.0);
+    hl_v t, n, r, z, s, c, p, hz, w, y = hl_select(big, hl_splat(0.0), x);
+    hl_i j;
+    t = y * 6.36619772367581382433e-01 + magic;
+    n = t - magic;
+    j = (hl_i)t & 3; /* the quadrant, from the integer's low bits */
+    r = ((y - n * 1.57079632673412561417e+00) - n * 6.07710050630396597660e-11) - n * 2.02226624879595063154e-21;
+    z = r * r;
+    s = r + r * z * (-1.66666666666666324348e-01 + z * (8.33333333332248946124e-03 + z * (-1.98412698298579493134e-04
+        + z * (2.75573137070700676789e-06 + z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)))));
+    s = hl_select(r == 0.0, r, s); /* sin(-0) = -0 */
+    p = z * (4.16666666666666019037e-02 + z * (-1.38888888888741095749e-03 + z * (2.48015872894767294178e-05
+        + z * (-2.75573143513906633035e-07 + z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
+    hz = 0.5 * z;
+    w = 1.0 - hz;
+    c = w + (((1.0 - w) - hz) + z * p);
+    /* quadrant j: sin = (s, c, -s, -c)[j], cos = (c, -s, -c, s)[j] */
+    *sine = (hl_v)((hl_i)hl_select((j & 1) != 0, c, s) ^ (((j & 2) != 0) & sign));
+    *cosine = (hl_v)((hl_i)hl_select((j & 1) != 0, s, c) ^ ((((j + 1) & 2) != 0) & sign));
+    *odd |= big;
+}
+static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
+    hl_i big = hl_splat(0.0) != 0.0;
+    int l;
+    hl_sincos_poly(x, sine, cosine, &big);
+    if (hl_any(big)) {
+        for (l = 0; l < HL_W; ++l) {
+            if (big[l]) {
+                (*sine)[l] = sin(x[l]);
+                (*cosine)[l] = cos(x[l]);
+            }
+        }
+    }
+}
+/* sin and cos of x near x0, from base = (x0, sin x0, cos x0): x0's rotated by d = x - x0 with Taylor
+   polynomials of sin d (to d^5) and cos d - 1 (to d^4), whose truncation is below 1e-19 for |d| <= 2^-9; a
+   lane farther from x0 (or not finite) takes the polynomials (_near_poly, odd as they say) or hl_sincos
+   (_near); within 2 * 2^-52 of sin x and cos x, absolute. The stages of an RK4 step are this near its
+   start, whose sin and cos are computed once. */
+static inline hl_i hl_rotate(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine) {
+    const hl_v d = x - base[0], d2 = d * d;
+    const hl_v sd = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120)), cm = d2 * (-0.5 + d2 * (1.0 / 24));
+    /* one product per sum: the compiler's fused multiply-adds are then the same for any lane count */
+    *sine = (base[1] + base[1] * cm) + base[2] * sd;
+    *cosine = (base[2] + base[2] * cm) - base[1] * sd;
+    return ~(hl_fabs(d) <= 0x1p-9);
+}
+static inline void hl_sincos_near_poly(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine, hl_i *odd) {
+    const hl_i far = hl_rotate(x, base, sine, cosine);
+    if (hl_any(far)) {
+        hl_v s, c;
+        hl_i o = hl_splat(0.0) != 0.0;
+        hl_sincos_poly(x, &s, &c, &o);
+        *odd |= o & far;
+        *sine = hl_select(far, s, *sine);
+        *cosine = hl_select(far, c, *cosine);
+    }
+}
+static inline void hl_sincos_near(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine) {
+    const hl_i far = hl_rotate(x, base, sine, cosine);
+    if (hl_any(far)) {
+        hl_v s, c;
+        hl_sincos(x, &s, &c);
+        *sine = hl_select(far, s, *sine);
+        *cosine = hl_select(far, c, *cosine);
+    }
+}
+
+/* exp: x = n ln2 + r (ln2 in two parts, |r| <= ln2 / 2), exp(r) by its Taylor polynomial of degree
+   13 (truncation below 5e-18; no division), times 2^n; odd: beyond |x| = 700, or not finite */
+/* 1/k!, k = 0 .. 12 */
+static const double hl_exp_taylor[13] = {1.0, 1.0, 0.5, 1.0 / 6, 1.0 / 24, 1.0 / 120, 1.0 / 720, 1.0 / 5040,
+    1.0 / 40320, 1.0 / 362880, 1.0 / 3628800, 1.0 / 39916800, 1.0 / 479001600};
+static inline hl_v hl_exp_poly(hl_v x, hl_i *odd) {
+    const double magic = 6755399441055744.0;
+    const hl_i big = ~(hl_fabs(x) <= 700.0);
+    hl_v t, n, r, y = hl_select(big, hl_splat(0.0), x);
+    hl_i k;
+    int l;
+    t = y * 1.44269504088896338700e+00 + magic;
+    n = t - magic;
+    k = ((hl_i)t - (hl_i)hl_splat(magic)) + 1023;
+    r = (y - n * 6.93147180369123816490e-01) - n * 1.90821492927058770002e-10;
+    y = hl_splat(1.0 / 6227020800.0); /* 1/13! */
+    for (l = 12; l >= 0; --l) y = hl_exp_taylor[l] + r * y;
+    *odd |= big;
+    return y * (hl_v)(k << 52);
+}
+/* the exact form of a one-argument polynomial hl_<f>_poly: its odd lanes take the C library's f */
+#define HL_EXACT1(name, f) static inline hl_v name(hl_v x) { \
+    hl_i odd = hl_splat(0.0) != 0.0; hl_v r = name##_poly(x, &odd); int l; \
+    if (hl_any(odd)) for (l = 0; l < HL_W; ++l) if (odd[l]) r[l] = f(x[l]); \
+    return r; }
+HL_EXACT1(hl_exp, exp)
+
+/* tanh: 1 - 2 / (exp(2|x|) + 1) with the sign of x, and Cephes' rational form where |x| < 0.625
+   (computed only when a lane needs it); from |x| = 20 on that is +-1 exactly, so where every lane is
+   there exp is not evaluated (a friction law sliding); odd: not a number */
+static inline hl_v hl_tanh_poly(hl_v x, hl_i *odd) {
+    const hl_i small = hl_fabs(x) < 0.625;
+    hl_v ax = hl_fabs(x), r;
+    ax = hl_select(ax > 20.0, hl_splat(20.0), ax); /* a NaN stays NaN */
+    if (hl_any(~(ax >= 20.0))) {
+        r = hl_copysign(1.0 - 2.0 / (hl_exp_poly(2.0 * ax, odd) + 1.0), x);
+    } else {
+        r = hl_copysign(hl_splat(1.0), x); /* 2 / (exp(40) + 1) < 2^-54: 1 - it rounds to 1 */
+    }
+    if (hl_any(small)) {
+        const hl_v z = x * x;
+        r = hl_select(small, x + x * z * ((-9.64399179425052238628e-01 * z - 9.92877231001918586564e+01) * z
+            - 1.61468768441708447952e+03) / (((z + 1.12811678491632931402e+02) * z + 2.23548839060100448583e+03) * z
+            + 4.84406305325125486048e+03), r);
+    }
+    return hl_select(x == 0.0, x, r); /* tanh(-0) = -0 */
+}
+HL_EXACT1(hl_tanh, tanh)
+
+#define HYBRID_OK 0
+#define HYBRID_SINGULAR 1
+#define HYBRID_NONFINITE 2
+#define HYBRID_FRAME_UNDEFINED 3
+#define HYBRID_EULER_SINGULAR 4
+
+HL_MAP1(hl_acos, acos)
+HL_MAP1(hl_acosh, acosh)
+HL_MAP1(hl_asin, asin)
+HL_MAP1(hl_asinh, asinh)
+HL_MAP1(hl_atan, atan)
+HL_MAP1(hl_atanh, atanh)
+HL_MAP1(hl_ceil, ceil)
+HL_MAP1(hl_cosh, cosh)
+HL_MAP1(hl_erf, erf)
+HL_MAP1(hl_expm1, expm1)
+HL_MAP1(hl_floor, floor)
+HL_MAP1(hl_log, log)
+HL_MAP1(hl_log1p, log1p)
+HL_MAP1(hl_sinh, sinh)
+HL_MAP1(hl_tan, tan)
+HL_MAP2(hl_atan2, atan2)
+HL_MAP2(hl_fmod, fmod)
+HL_MAP2(hl_hypot, hypot)
+HL_MAP2(hl_pow, pow)
+
+#if HL_W > 1 && 1
+#define HL_STAGE static inline __attribute__((always_inline))
+#else
+#define HL_STAGE static
+#endif
+#define PLANT_RHS_LANES_NPRE 27
+static void plant_rhs_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
+    const hl_v v2 = arm[7];
+    const hl_v v3 = arm[5];
+    const hl_v v4 = v3 * v3;
+    const hl_v v5 = arm[3];
+    const hl_v v6 = v4 * v5;
+    const hl_v v7 = v2 + v6;
+    const hl_v v18 = arm[1];
+    const hl_v v20 = arm[0];
+    const hl_v v23 = plant[1];
+    const hl_v v33 = plant[2];
+    const hl_v v55 = v20 * v3;
+    const hl_v v61 = arm[10];
+    const hl_v v62 = v61 * v5;
+    const hl_v v67 = arm[8];
+    const hl_v v75 = arm[2];
+    const hl_v v77 = arm[4];
+    const hl_v v80 = arm[6];
+    const hl_v v81 = v80 + v2;
+    const hl_v v82 = v77 * v77;
+    const hl_v v83 = v75 * v82;
+    const hl_v v84 = v81 + v83;
+    const hl_v v85 = v20 * v20;
+    const hl_v v86 = v4 + v85;
+    const hl_v v108 = arm[9];
+    const hl_v v120 = hl_splat(0.0);
+    const hl_v v121 = surface[2];
+    const hl_v v122 = surface[0];
+    const hl_v v125 = surface[1];
+    const hl_v v133 = plant[3];
+    const hl_v v135 = plant[4];
+    const hl_v v150 = plant[6];
+    const hl_v v170 = 1.0 / v150;
+    const hl_v v154 = plant[5];
+    const hl_v v158 = plant[0];
+    const hl_v v171 = 1.0 / v158;
+    pre[0] = v2;
+    pre[1] = v3;
+    pre[2] = v4;
+    pre[3] = v5;
+    pre[4] = v7;
+    pre[5] = v18;
+    pre[6] = v20;
+    pre[7] = v23;
+    pre[8] = v33;
+    pre[9] = v55;
+    pre[10] = v61;
+    pre[11] = v62;
+    pre[12] = v67;
+    pre[13] = v75;
+    pre[14] = v77;
+    pre[15] = v84;
+    pre[16] = v86;
+    pre[17] = v108;
+    pre[18] = v120;
+    pre[19] = v121;
+    pre[20] = v122;
+    pre[21] = v125;
+    pre[22] = v133;
+    pre[23] = v135;
+    pre[24] = v170;
+    pre[25] = v154;
+    pre[26] = v171;
+    (void)arm;
+    (void)plant;
+    (void)surface;
+    (void)pre;
+}
+
+static inline __attribute__((always_inline)) void plant_rhs_lanes_core(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, const hl_v *base, const int exact, hl_i *odd) {
+    (void)x;
+    (void)tau;
+    (void)pre;
+    (void)base;
+    (void)odd;
+    const hl_v v0 = x[2];
+    const hl_v v1 = x[3];
+    const hl_v v2 = pre[0];
+    const hl_v v3 = pre[1];
+    const hl_v v4 = pre[2];
+    const hl_v v5 = pre[3];
+    const hl_v v7 = pre[4];
+    const hl_v v8 = tau[0];
+    const hl_v v9 = x[1];
+    hl_v v15, v10;
+    if (exact) hl_sincos_near(v9, base + 3, &v15, &v10); else hl_sincos_near_poly(v9, base + 3, &v15, &v10, odd);
+    const hl_v v11 = x[0];
+    hl_v v14, v12;
+    if (exact) hl_sincos_near(v11, base + 0, &v14, &v12); else hl_sincos_near_poly(v11, base + 0, &v14, &v12, odd);
+    const hl_v v13 = v10 * v12;
+    const hl_v v16 = v14 * v15;
+    const hl_v v17 = v13 - v16;
+    const hl_v v18 = pre[5];
+    const hl_v v19 = v17 * v18;
+    const hl_v v20 = pre[6];
+    const hl_v v21 = v12 * v20;
+    const hl_v v22 = v19 + v21;
+    const hl_v v23 = pre[7];
+    const hl_v v24 = x[5];
+    const hl_v v25 = v14 * v10;
+    const hl_v v26 = v15 * v12;
+    const hl_v v27 = v25 + v26;
+    const hl_v v28 = v18 * v27;
+    const hl_v v29 = v14 * v20;
+    const hl_v v30 = v28 + v29;
+    const hl_v v31 = v24 - v30;
+    const hl_v v32 = v23 * v31;
+    const hl_v v33 = pre[8];
+    const hl_v v34 = x[7];
+    const hl_v v35 = v19 * v1;
+    const hl_v v36 = v34 - v35;
+    const hl_v v37 = v22 * v0;
+    const hl_v v38 = v36 - v37;
+    const hl_v v39 = v33 * v38;
+    const hl_v v40 = v32 + v39;
+    const hl_v v41 = v22 * v40;
+    const hl_v v42 = v8 + v41;
+    const hl_v v43 = x[4];
+    const hl_v v44 = v43 - v22;
+    const hl_v v45 = v23 * v44;
+    const hl_v v46 = x[6];
+    const hl_v v47 = v28 * v1;
+    const hl_v v48 = v46 + v47;
+    const hl_v v49 = v30 * v0;
+    const hl_v v50 = v48 + v49;
+    const hl_v v51 = v33 * v50;
+    const hl_v v52 = v45 + v51;
+    const hl_v v53 = v30 * v52;
+    const hl_v v54 = v42 - v53;
+    const hl_v v55 = pre[9];
+    const hl_v v56 = v15 * v55;
+    const hl_v v57 = v56 * v5;
+    const hl_v v58 = v1 * v1;
+    const hl_v v59 = v57 * v58;
+    const hl_v v60 = v54 + v59;
+    const hl_v v61 = pre[10];
+    const hl_v v62 = pre[11];
+    const hl_v v63 = v17 * v3;
+    const hl_v v64 = v63 + v21;
+    const hl_v v65 = v62 * v64;
+    const hl_v v66 = v60 - v65;
+    const hl_v v67 = pre[12];
+    const hl_v v68 = v67 * v0;
+    const hl_v v69 = v66 - v68;
+    const hl_v v70 = v57 + v57;
+    const hl_v v71 = v70 * v0;
+    const hl_v v72 = v71 * v1;
+    const hl_v v73 = v69 + v72;
+    const hl_v v74 = v12 * v61;
+    const hl_v v75 = pre[13];
+    const hl_v v76 = v74 * v75;
+    const hl_v v77 = pre[14];
+    const hl_v v78 = v76 * v77;
+    const hl_v v79 = v73 - v78;
+    const hl_v v84 = pre[15];
+    const hl_v v86 = pre[16];
+    const hl_v v87 = v10 * v55;
+    const hl_v v88 = v87 + v87;
+    const hl_v v89 = v86 + v88;
+    const hl_v v90 = v5 * v89;
+    const hl_v v91 = v84 + v90;
+    const hl_v v92 = v7 * v91;
+    const hl_v v93 = v4 + v87;
+    const hl_v v94 = v5 * v93;
+    const hl_v v95 = v2 + v94;
+    const hl_v v96 = v95 * v95;
+    const hl_v v97 = v92 - v96;
+    const hl_v v168 = 1.0 / v97;
+    const hl_v v98 = v79 * v168;
+    const hl_v v99 = v7 * v98;
+    const hl_v v100 = tau[1];
+    const hl_v v101 = v28 * v52;
+    const hl_v v102 = v100 - v101;
+    const hl_v v103 = v63 * v62;
+    const hl_v v104 = v102 - v103;
+    const hl_v v105 = v0 * v0;
+    const hl_v v106 = v57 * v105;
+    const hl_v v107 = v104 - v106;
+    const hl_v v108 = pre[17];
+    const hl_v v109 = v108 * v1;
+    const hl_v v110 = v107 - v109;
+    const hl_v v111 = v17 * v40;
+    const hl_v v112 = v111 * v18;
+    const hl_v v113 = v110 + v112;
+    const hl_v v114 = v113 * v168;
+    const hl_v v115 = v95 * v114;
+    const hl_v v116 = v99 - v115;
+    const hl_v v117 = v114 * v91;
+    const hl_v v118 = v98 * v95;
+    const hl_v v119 = v117 - v118;
+    const hl_v v120 = pre[18];
+    const hl_v v121 = pre[19];
+    const hl_v v122 = pre[20];
+    const hl_v v123 = v43 - v122;
+    const hl_v v124 = v123 * v123;
+    const hl_v v125 = pre[21];
+    const hl_v v126 = v24 - v125;
+    const hl_v v127 = v126 * v126;
+    const hl_v v128 = v124 + v127;
+    const hl_v v129 = hl_sqrt(v128);
+    const hl_v v130 = v121 - v129;
+    const hl_v v131 = hl_bool(v120 < v130);
+    const hl_v v169 = 1.0 / v129;
+    const hl_v v132 = v123 * v169;
+    const hl_v v133 = pre[22];
+    const hl_v v134 = v130 * v133;
+    const hl_v v135 = pre[23];
+    const hl_v v136 = v132 * v46;
+    const hl_v v137 = v126 * v169;
+    const hl_v v138 = v137 * v34;
+    const hl_v v139 = v136 + v138;
+    const hl_v v140 = v135 * v139;
+    const hl_v v141 = v134 - v140;
+    const hl_v v142 = hl_fmax(v120, v141);
+    const hl_v v143 = v132 * v142;
+    const hl_v v144 = hl_select(v131 != 0.0, v143, hl_splat(0.0));
+    const hl_v v145 = v144 - v52;
+    const hl_v v146 = v137 * v142;
+    const hl_v v147 = v132 * v34;
+    const hl_v v148 = v137 * v46;
+    const hl_v v149 = v147 - v148;
+    const hl_v v170 = pre[24];
+    const hl_v v151 = v149 * v170;
+    const hl_v v152 = (exact ? hl_tanh(v151) : hl_tanh_poly(v151, odd));
+    const hl_v v153 = v146 * v152;
+    const hl_v v154 = pre[25];
+    const hl_v v155 = v153 * v154;
+    const hl_v v156 = hl_select(v131 != 0.0, v155, hl_splat(0.0));
+    const hl_v v157 = v145 + v156;
+    const hl_v v171 = pre[26];
+    const hl_v v159 = v157 * v171;
+    const hl_v v160 = hl_select(v131 != 0.0, v146, hl_splat(0.0));
+    const hl_v v161 = v160 - v40;
+    const hl_v v162 = v143 * v152;
+    const hl_v v163 = v162 * v154;
+    const hl_v v164 = -v163;
+    const hl_v v165 = hl_select(v131 != 0.0, v164, hl_splat(0.0));
+    const hl_v v166 = v161 + v165;
+    const hl_v v167 = v166 * v171;
+    xdot[0] = v0;
+    xdot[1] = v1;
+    xdot[2] = v116;
+    xdot[3] = v119;
+    xdot[4] = v46;
+    xdot[5] = v34;
+    xdot[6] = v159;
+    xdot[7] = v167;
+}
+
+static __attribute__((noinline, cold)) void plant_rhs_lanes_exact(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, const hl_v *base) {
+    plant_rhs_lanes_core(x, tau, pre, xdot, base, 1, NULL);
+}
+
+HL_STAGE void plant_rhs_lanes(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, const hl_v *base) {
+    hl_i odd = hl_splat(0.0) != 0.0;
+    plant_rhs_lanes_core(x, tau, pre, xdot, base, 0, &odd);
+    if (hl_any(odd)) plant_rhs_lanes_exact(x, tau, pre, xdot, base);
+}
+
+#define PLANT_RHS_SIGNALS_LANES_NPRE 27
+static void plant_rhs_signals_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
+    const hl_v v2 = arm[7];
+    const hl_v v3 = arm[5];
+    const hl_v v4 = v3 * v3;
+    const hl_v v5 = arm[3];
+    const hl_v v6 = v4 * v5;
+    const hl_v v7 = v2 + v6;
+    const hl_v v18 = arm[1];
+    const hl_v v20 = arm[0];
+    const hl_v v23 = plant[1];
+    const hl_v v33 = plant[2];
+    const hl_v v55 = v20 * v3;
+    const hl_v v61 = arm[10];
+    const hl_v v62 = v61 * v5;
+    const hl_v v67 = arm[8];
+    const hl_v v75 = arm[2];
+    const hl_v v77 = arm[4];
+    const hl_v v80 = arm[6];
+    const hl_v v81 = v80 + v2;
+    const hl_v v82 = v77 * v77;
+    const hl_v v83 = v75 * v82;
+    const hl_v v84 = v81 + v83;
+    const hl_v v85 = v20 * v20;
+    const hl_v v86 = v4 + v85;
+    const hl_v v108 = arm[9];
+    const hl_v v120 = hl_splat(0.0);
+    const hl_v v121 = surface[2];
+    const hl_v v122 = surface[0];
+    const hl_v v125 = surface[1];
+    const hl_v v133 = plant[3];
+    const hl_v v135 = plant[4];
+    const hl_v v150 = plant[6];
+    const hl_v v194 = 1.0 / v150;
+    const hl_v v154 = plant[5];
+    const hl_v v158 = plant[0];
+    const hl_v v195 = 1.0 / v158;
+    pre[0] = v2;
+    pre[1] = v3;
+    pre[2] = v4;
+    pre[3] = v5;
+    pre[4] = v7;
+    pre[5] = v18;
+    pre[6] = v20;
+    pre[7] = v23;
+    pre[8] = v33;
+    pre[9] = v55;
+    pre[10] = v61;
+    pre[11] = v62;
+    pre[12] = v67;
+    pre[13] = v75;
+    pre[14] = v77;
+    pre[15] = v84;
+    pre[16] = v86;
+    pre[17] = v108;
+    pre[18] = v120;
+    pre[19] = v121;
+    pre[20] = v122;
+    pre[21] = v125;
+    pre[22] = v133;
+    pre[23] = v135;
+    pre[24] = v194;
+    pre[25] = v154;
+    pre[26] = v195;
+    (void)arm;
+    (void)plant;
+    (void)surface;
+    (void)pre;
+}
+
+static inline __attribute__((always_inline)) void plant_rhs_signals_lanes_core(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, hl_v *s, hl_v *y, const hl_v *base, const int exact, hl_i *odd) {
+    (void)x;
+    (void)tau;
+    (void)pre;
+    (void)base;
+    (void)odd;
+    const hl_v v0 = x[2];
+    const hl_v v1 = x[3];
+    const hl_v v2 = pre[0];
+    const hl_v v3 = pre[1];
+    const hl_v v4 = pre[2];
+    const hl_v v5 = pre[3];
+    const hl_v v7 = pre[4];
+    const hl_v v8 = tau[0];
+    const hl_v v9 = x[1];
+    hl_v v15, v10;
+    if (exact) hl_sincos_near(v9, base + 3, &v15, &v10); else hl_sincos_near_poly(v9, base + 3, &v15, &v10, odd);
+    const hl_v v11 = x[0];
+    hl_v v14, v12;
+    if (exact) hl_sincos_near(v11, base + 0, &v14, &v12); else hl_sincos_near_poly(v11, base + 0, &v14, &v12, odd);
+    const hl_v v13 = v10 * v12;
+    const hl_v v16 = v14 * v15;
+    const hl_v v17 = v13 - v16;
+    const hl_v v18 = pre[5];
+    const hl_v v19 = v17 * v18;
+    const hl_v v20 = pre[6];
+    const hl_v v21 = v12 * v20;
+    const hl_v v22 = v19 + v21;
+    const hl_v v23 = pre[7];
+    const hl_v v24 = x[5];
+    const hl_v v25 = v14 * v10;
+    const hl_v v26 = v15 * v12;
+    const hl_v v27 = v25 + v26;
+    const hl_v v28 = v18 * v27;
+    const hl_v v29 = v14 * v20;
+    const hl_v v30 = v28 + v29;
+    const hl_v v31 = v24 - v30;
+    const hl_v v32 = v23 * v31;
+    const hl_v v33 = pre[8];
+    const hl_v v34 = x[7];
+    const hl_v v35 = v19 * v1;
+    const hl_v v36 = v22 * v0;
+    const hl_v v37 = v35 + v36;
+    const hl_v v38 = v34 - v37;
+    const hl_v v39 = v33 * v38;
+    const hl_v v40 = v32 + v39;
+    const hl_v v41 = v22 * v40;
+    const hl_v v42 = v8 + v41;
+    const hl_v v43 = x[4];
+    const hl_v v44 = v43 - v22;
+    const hl_v v45 = v23 * v44;
+    const hl_v v46 = v28 * v1;
+    const hl_v v47 = v30 * v0;
+    const hl_v v48 = v46 + v47;
+    const hl_v v49 = x[6];
+    const hl_v v50 = v48 + v49;
+    const hl_v v51 = v33 * v50;
+    const hl_v v52 = v45 + v51;
+    const hl_v v53 = v30 * v52;
+    const hl_v v54 = v42 - v53;
+    const hl_v v55 = pre[9];
+    const hl_v v56 = v15 * v55;
+    const hl_v v57 = v56 * v5;
+    const hl_v v58 = v1 * v1;
+    const hl_v v59 = v57 * v58;
+    const hl_v v60 = v54 + v59;
+    const hl_v v61 = pre[10];
+    const hl_v v62 = pre[11];
+    const hl_v v63 = v17 * v3;
+    const hl_v v64 = v63 + v21;
+    const hl_v v65 = v62 * v64;
+    const hl_v v66 = v60 - v65;
+    const hl_v v67 = pre[12];
+    const hl_v v68 = v67 * v0;
+    const hl_v v69 = v66 - v68;
+    const hl_v v70 = v57 + v57;
+    const hl_v v71 = v70 * v0;
+    const hl_v v72 = v71 * v1;
+    const hl_v v73 = v69 + v72;
+    const hl_v v74 = v12 * v61;
+    const hl_v v75 = pre[13];
+    const hl_v v76 = v74 * v75;
+    const hl_v v77 = pre[14];
+    const hl_v v78 = v76 * v77;
+    const hl_v v79 = v73 - v78;
+    const hl_v v84 = pre[15];
+    const hl_v v86 = pre[16];
+    const hl_v v87 = v10 * v55;
+    const hl_v v88 = v87 + v87;
+    const hl_v v89 = v86 + v88;
+    const hl_v v90 = v5 * v89;
+    const hl_v v91 = v84 + v90;
+    const hl_v v92 = v7 * v91;
+    const hl_v v93 = v4 + v87;
+    const hl_v v94 = v5 * v93;
+    const hl_v v95 = v2 + v94;
+    const hl_v v96 = v95 * v95;
+    const hl_v v97 = v92 - v96;
+    const hl_v v192 = 1.0 / v97;
+    const hl_v v98 = v79 * v192;
+    const hl_v v99 = v7 * v98;
+    const hl_v v100 = tau[1];
+    const hl_v v101 = v28 * v52;
+    const hl_v v102 = v100 - v101;
+    const hl_v v103 = v63 * v62;
+    const hl_v v104 = v102 - v103;
+    const hl_v v105 = v0 * v0;
+    const hl_v v106 = v57 * v105;
+    const hl_v v107 = v104 - v106;
+    const hl_v v108 = pre[17];
+    const hl_v v109 = v108 * v1;
+    const hl_v v110 = v107 - v109;
+    const hl_v v111 = v17 * v40;
+    const hl_v v112 = v111 * v18;
+    const hl_v v113 = v110 + v112;
+    const hl_v v114 = v113 * v192;
+    const hl_v v115 = v95 * v114;
+    const hl_v v116 = v99 - v115;
+    const hl_v v117 = v114 * v91;
+    const hl_v v118 = v98 * v95;
+    const hl_v v119 = v117 - v118;
+    const hl_v v120 = pre[18];
+    const hl_v v121 = pre[19];
+    const hl_v v122 = pre[20];
+    const hl_v v123 = v43 - v122;
+    const hl_v v124 = v123 * v123;
+    const hl_v v125 = pre[21];
+    const hl_v v126 = v24 - v125;
+    const hl_v v127 = v126 * v126;
+    const hl_v v128 = v124 + v127;
+    const hl_v v129 = hl_sqrt(v128);
+    const hl_v v130 = v121 - v129;
+    const hl_v v131 = hl_bool(v120 < v130);
+    const hl_v v193 = 1.0 / v129;
+    const hl_v v132 = v123 * v193;
+    const hl_v v133 = pre[22];
+    const hl_v v134 = v130 * v133;
+    const hl_v v135 = pre[23];
+    const hl_v v136 = v132 * v49;
+    const hl_v v137 = v126 * v193;
+    const hl_v v138 = v137 * v34;
+    const hl_v v139 = v136 + v138;
+    const hl_v v140 = v135 * v139;
+    const hl_v v141 = v134 - v140;
+    const hl_v v142 = hl_fmax(v120, v141);
+    const hl_v v143 = v132 * v142;
+    const hl_v v144 = hl_select(v131 != 0.0, v143, hl_splat(0.0));
+    const hl_v v145 = v144 - v52;
+    const hl_v v146 = v137 * v142;
+    const hl_v v147 = v132 * v34;
+    const hl_v v148 = v137 * v49;
+    const hl_v v149 = v147 - v148;
+    const hl_v v194 = pre[24];
+    const hl_v v151 = v149 * v194;
+    const hl_v v152 = (exact ? hl_tanh(v151) : hl_tanh_poly(v151, odd));
+    const hl_v v153 = v146 * v152;
+    const hl_v v154 = pre[25];
+    const hl_v v155 = v153 * v154;
+    const hl_v v156 = hl_select(v131 != 0.0, v155, hl_splat(0.0));
+    const hl_v v157 = v145 + v156;
+    const hl_v v195 = pre[26];
+    const hl_v v159 = v157 * v195;
+    const hl_v v160 = hl_select(v131 != 0.0, v146, hl_splat(0.0));
+    const hl_v v161 = v160 - v40;
+    const hl_v v162 = v152 * v154;
+    const hl_v v163 = v143 * v162;
+    const hl_v v164 = -v163;
+    const hl_v v165 = hl_select(v131 != 0.0, v164, hl_splat(0.0));
+    const hl_v v166 = v161 + v165;
+    const hl_v v167 = v166 * v195;
+    const hl_v v168 = v30 - v125;
+    const hl_v v169 = v22 - v122;
+    const hl_v v170 = v169 * v169;
+    const hl_v v171 = v168 * v168;
+    const hl_v v172 = v170 + v171;
+    const hl_v v173 = hl_sqrt(v172);
+    const hl_v v196 = 1.0 / v173;
+    const hl_v v174 = v168 * v196;
+    const hl_v v175 = v40 * v174;
+    const hl_v v176 = v169 * v196;
+    const hl_v v177 = v52 * v176;
+    const hl_v v178 = v175 + v177;
+    const hl_v v179 = v37 * v176;
+    const hl_v v180 = v174 * v48;
+    const hl_v v181 = v179 + v180;
+    const hl_v v182 = hl_select(v131 != 0.0, v142, hl_splat(0.0));
+    const hl_v v183 = v37 * v174;
+    const hl_v v184 = v176 * v48;
+    const hl_v v185 = v183 - v184;
+    const hl_v v186 = v40 * v176;
+    const hl_v v187 = v52 * v174;
+    const hl_v v188 = v186 - v187;
+    const hl_v v189 = v142 * v162;
+    const hl_v v190 = -v189;
+    const hl_v v191 = hl_select(v131 != 0.0, v190, hl_splat(0.0));
+    xdot[0] = v0;
+    xdot[1] = v1;
+    xdot[2] = v116;
+    xdot[3] = v119;
+    xdot[4] = v49;
+    xdot[5] = v34;
+    xdot[6] = v159;
+    xdot[7] = v167;
+    s[0] = v52;
+    s[1] = v40;
+    s[2] = v178;
+    s[3] = v181;
+    s[4] = v130;
+    s[5] = v182;
+    y[0] = v22;
+    y[1] = v30;
+    y[2] = v181;
+    y[3] = v185;
+    y[4] = v52;
+    y[5] = v40;
+    y[6] = v188;
+    y[7] = v178;
+    y[8] = v43;
+    y[9] = v24;
+    y[10] = v130;
+    y[11] = v182;
+    y[12] = v191;
+    y[13] = v149;
+}
+
+static __attribute__((noinline, cold)) void plant_rhs_signals_lanes_exact(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, hl_v *s, hl_v *y, const hl_v *base) {
+    plant_rhs_signals_lanes_core(x, tau, pre, xdot, s, y, base, 1, NULL);
+}
+
+HL_STAGE void plant_rhs_signals_lanes(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, hl_v *s, hl_v *y, const hl_v *base) {
+    hl_i odd = hl_splat(0.0) != 0.0;
+    plant_rhs_signals_lanes_core(x, tau, pre, xdot, s, y, base, 0, &odd);
+    if (hl_any(odd)) plant_rhs_signals_lanes_exact(x, tau, pre, xdot, s, y, base);
+}
+
+#define PLANT_OUTPUTS_LANES_NPRE 12
+static void plant_outputs_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
+    const hl_v v0 = arm[1];
+    const hl_v v11 = arm[0];
+    const hl_v v25 = surface[0];
+    const hl_v v28 = surface[1];
+    const hl_v v44 = plant[1];
+    const hl_v v48 = plant[2];
+    const hl_v v68 = surface[2];
+    const hl_v v76 = hl_splat(0.0);
+    const hl_v v78 = plant[3];
+    const hl_v v80 = plant[4];
+    const hl_v v90 = plant[5];
+    const hl_v v95 = plant[6];
+    const hl_v v103 = 1.0 / v95;
+    pre[0] = v0;
+    pre[1] = v11;
+    pre[2] = v25;
+    pre[3] = v28;
+    pre[4] = v44;
+    pre[5] = v48;
+    pre[6] = v68;
+    pre[7] = v76;
+    pre[8] = v78;
+    pre[9] = v80;
+    pre[10] = v90;
+    pre[11] = v103;
+    (void)arm;
+    (void)plant;
+    (void)surface;
+    (void)pre;
+}
+
+static inline __attribute__((always_inline)) void plant_outputs_lanes_core(const hl_v *x, const hl_v *pre, hl_v *y, const int exact, hl_i *odd) {
+    (void)x;
+    (void)pre;
+    (void)odd;
+    const hl_v v0 = pre[0];
+    const hl_v v1 = x[0];
+    hl_v v6, v2;
+    if (exact) hl_sincos(v1, &v6, &v2); else hl_sincos_poly(v1, &v6, &v2, odd);
+    const hl_v v3 = x[1];
+    hl_v v7, v4;
+    if (exact) hl_sincos(v3, &v7, &v4); else hl_sincos_poly(v3, &v7, &v4, odd);
+    const hl_v v5 = v2 * v4;
+    const hl_v v8 = v6 * v7;
+    const hl_v v9 = v5 - v8;
+    const hl_v v10 = v0 * v9;
+    const hl_v v11 = pre[1];
+    const hl_v v12 = v2 * v11;
+    const hl_v v13 = v10 + v12;
+    const hl_v v14 = v2 * v7;
+    const hl_v v15 = v6 * v4;
+    const hl_v v16 = v14 + v15;
+    const hl_v v17 = v0 * v16;
+    const hl_v v18 = v6 * v11;
+    const hl_v v19 = v17 + v18;
+    const hl_v v20 = x[3];
+    const hl_v v21 = v10 * v20;
+    const hl_v v22 = x[2];
+    const hl_v v23 = v13 * v22;
+    const hl_v v24 = v21 + v23;
+    const hl_v v25 = pre[2];
+    const hl_v v26 = v13 - v25;
+    const hl_v v27 = v26 * v26;
+    const hl_v v28 = pre[3];
+    const hl_v v29 = v19 - v28;
+    const hl_v v30 = v29 * v29;
+    const hl_v v31 = v27 + v30;
+    const hl_v v32 = hl_sqrt(v31);
+    const hl_v v101 = 1.0 / v32;
+    const hl_v v33 = v24 * v101;
+    const hl_v v34 = v33 * v26;
+    const hl_v v35 = v17 * v20;
+    const hl_v v36 = v19 * v22;
+    const hl_v v37 = v35 + v36;
+    const hl_v v38 = v37 * v101;
+    const hl_v v39 = v38 * v29;
+    const hl_v v40 = v34 + v39;
+    const hl_v v41 = v33 * v29;
+    const hl_v v42 = v38 * v26;
+    const hl_v v43 = v41 - v42;
+    const hl_v v44 = pre[4];
+    const hl_v v45 = x[4];
+    const hl_v v46 = v45 - v13;
+    const hl_v v47 = v44 * v46;
+    const hl_v v48 = pre[5];
+    const hl_v v49 = x[6];
+    const hl_v v50 = v37 + v49;
+    const hl_v v51 = v48 * v50;
+    const hl_v v52 = v47 + v51;
+    const hl_v v53 = x[5];
+    const hl_v v54 = v53 - v19;
+    const hl_v v55 = v44 * v54;
+    const hl_v v56 = x[7];
+    const hl_v v57 = v56 - v24;
+    const hl_v v58 = v48 * v57;
+    const hl_v v59 = v55 + v58;
+    const hl_v v60 = v26 * v101;
+    const hl_v v61 = v59 * v60;
+    const hl_v v62 = v29 * v101;
+    const hl_v v63 = v52 * v62;
+    const hl_v v64 = v61 - v63;
+    const hl_v v65 = v52 * v60;
+    const hl_v v66 = v59 * v62;
+    const hl_v v67 = v65 + v66;
+    const hl_v v68 = pre[6];
+    const hl_v v69 = v45 - v25;
+    const hl_v v70 = v69 * v69;
+    const hl_v v71 = v53 - v28;
+    const hl_v v72 = v71 * v71;
+    const hl_v v73 = v70 + v72;
+    const hl_v v74 = hl_sqrt(v73);
+    const hl_v v75 = v68 - v74;
+    const hl_v v76 = pre[7];
+    const hl_v v77 = hl_bool(v76 < v75);
+    const hl_v v78 = pre[8];
+    const hl_v v79 = v75 * v78;
+    const hl_v v80 = pre[9];
+    const hl_v v102 = 1.0 / v74;
+    const hl_v v81 = v71 * v102;
+    const hl_v v82 = v81 * v56;
+    const hl_v v83 = v69 * v102;
+    const hl_v v84 = v83 * v49;
+    const hl_v v85 = v82 + v84;
+    const hl_v v86 = v80 * v85;
+    const hl_v v87 = v79 - v86;
+    const hl_v v88 = hl_fmax(v76, v87);
+    const hl_v v89 = hl_select(v77 != 0.0, v88, hl_splat(0.0));
+    const hl_v v90 = pre[10];
+    const hl_v v91 = v88 * v90;
+    const hl_v v92 = v83 * v56;
+    const hl_v v93 = v81 * v49;
+    const hl_v v94 = v92 - v93;
+    const hl_v v103 = pre[11];
+    const hl_v v96 = v94 * v103;
+    const hl_v v97 = (exact ? hl_tanh(v96) : hl_tanh_poly(v96, odd));
+    const hl_v v98 = v91 * v97;
+    const hl_v v99 = -v98;
+    const hl_v v100 = hl_select(v77 != 0.0, v99, hl_splat(0.0));
+    y[0] = v13;
+    y[1] = v19;
+    y[2] = v40;
+    y[3] = v43;
+    y[4] = v52;
+    y[5] = v59;
+    y[6] = v64;
+    y[7] = v67;
+    y[8] = v45;
+    y[9] = v53;
+    y[10] = v75;
+    y[11] = v89;
+    y[12] = v100;
+    y[13] = v94;
+}
+
+static __attribute__((noinline, cold)) void plant_outputs_lanes_exact(const hl_v *x, const hl_v *pre, hl_v *y) {
+    plant_outputs_lanes_core(x, pre, y, 1, NULL);
+}
+
+static void plant_outputs_lanes(const hl_v *x, const hl_v *pre, hl_v *y) {
+    hl_i odd = hl_splat(0.0) != 0.0;
+    plant_outputs_lanes_core(x, pre, y, 0, &odd);
+    if (hl_any(odd)) plant_outputs_lanes_exact(x, pre, y);
+}
+
+#define RAIBERT_CRAIG_STEP_LANES_NPRE 72
+static void raibert_craig_step_lanes_pre(const hl_v *steps, const hl_v *gains, const hl_v *selection, const hl_v *robot, const hl_v *surface, const hl_v *e, const hl_v *options, const hl_v *posture, const hl_v *limits, const hl_v *sensor, hl_v *pre) {
+    const hl_v v0 = robot[19];
+    const hl_v v1 = robot[10];
+    const hl_v v2 = hl_splat(0.45);
+    const hl_v v13 = robot[11];
+    const hl_v v18 = robot[12];
+    const hl_v v33 = robot[9];
+    const hl_v v34 = robot[0];
+    const hl_v v35 = robot[1];
+    const hl_v v37 = robot[2];
+    const hl_v v49 = options[6];
+    const hl_v v50 = e[1];
+    const hl_v v51 = e[0];
+    const hl_v v52 = v51 * v51;
+    const hl_v v53 = v50 * v50;
+    const hl_v v54 = v52 + v53;
+    const hl_v v55 = e[2];
+    const hl_v v56 = v55 * v55;
+    const hl_v v57 = v54 + v56;
+    const hl_v v58 = hl_sqrt(v57);
+    const hl_v v59 = 1.0 / v58;
+    const hl_v v60 = hl_copysign(v59, v58);
+    const hl_v v61 = v50 * v60;
+    const hl_v v62 = surface[2];
+    const hl_v v63 = surface[5];
+    const hl_v v64 = surface[3];
+    const hl_v v65 = v64 * v64;
+    const hl_v v66 = surface[4];
+    const hl_v v67 = v66 * v66;
+    const hl_v v68 = v65 + v67;
+    const hl_v v69 = v63 * v63;
+    const hl_v v70 = v68 + v69;
+    const hl_v v592 = 1.0 / v70;
+    const hl_v v71 = v63 * v592;
+    const hl_v v72 = hl_splat(0.32);
+    const hl_v v75 = surface[0];
+    const hl_v v80 = surface[1];
+    const hl_v v84 = v63 * v62;
+    const hl_v v88 = v64 * v592;
+    const hl_v v92 = v66 * v592;
+    const hl_v v124 = v55 * v60;
+    const hl_v v131 = v51 * v60;
+    const hl_v v149 = hl_splat(1.0);
+    const hl_v v150 = selection[0];
+    const hl_v v151 = v149 - v150;
+    const hl_v v153 = gains[0];
+    const hl_v v154 = steps[2];
+    const hl_v v157 = steps[1];
+    const hl_v v160 = steps[0];
+    const hl_v v192 = gains[1];
+    const hl_v v193 = options[4];
+    const hl_v v196 = hl_splat(0.0);
+    const hl_v v197 = hl_bool(v192 != v196);
+    const hl_v v199 = gains[3];
+    const hl_v v200 = options[5];
+    const hl_v v201 = v199 * v200;
+    const hl_v v203 = hl_select(v197 != 0.0, v192, hl_splat(0.0));
+    const hl_v v204 = hl_bool(v197 == 0.0);
+    const hl_v v205 = hl_select(v204 != 0.0, v149, hl_splat(0.0));
+    const hl_v v206 = v203 + v205;
+    const hl_v v594 = 1.0 / v206;
+    const hl_v v208 = options[1];
+    const hl_v v213 = options[3];
+    const hl_v v217 = gains[2];
+    const hl_v v254 = v151 * v151;
+    const hl_v v267 = selection[1];
+    const hl_v v268 = v149 - v267;
+    const hl_v v269 = v268 * v151;
+    const hl_v v282 = gains[4];
+    const hl_v v283 = steps[5];
+    const hl_v v285 = steps[4];
+    const hl_v v288 = steps[3];
+    const hl_v v308 = gains[5];
+    const hl_v v311 = hl_bool(v308 != v196);
+    const hl_v v313 = gains[7];
+    const hl_v v314 = v313 * v200;
+    const hl_v v316 = hl_select(v311 != 0.0, v308, hl_splat(0.0));
+    const hl_v v317 = hl_bool(v311 == 0.0);
+    const hl_v v318 = hl_select(v317 != 0.0, v149, hl_splat(0.0));
+    const hl_v v319 = v316 + v318;
+    const hl_v v595 = 1.0 / v319;
+    const hl_v v328 = gains[6];
+    const hl_v v367 = v268 * v268;
+    const hl_v v389 = v149 - v49;
+    const hl_v v596 = 1.0 / v153;
+    const hl_v v597 = 1.0 / v282;
+    const hl_v v429 = robot[22];
+    const hl_v v430 = v1 * v429;
+    const hl_v v432 = robot[23];
+    const hl_v v433 = v1 * v432;
+    const hl_v v436 = v34 * v429;
+    const hl_v v438 = v34 * v432;
+    const hl_v v444 = hl_splat(1.7976931348623157e+308);
+    const hl_v v446 = limits[0];
+    const hl_v v449 = limits[2];
+    const hl_v v460 = -v446;
+    const hl_v v522 = limits[1];
+    const hl_v v524 = limits[3];
+    const hl_v v534 = -v522;
+    const hl_v v578 = hl_splat(2.0);
+    pre[0] = v0;
+    pre[1] = v1;
+    pre[2] = v2;
+    pre[3] = v13;
+    pre[4] = v18;
+    pre[5] = v33;
+    pre[6] = v34;
+    pre[7] = v35;
+    pre[8] = v37;
+    pre[9] = v49;
+    pre[10] = v61;
+    pre[11] = v62;
+    pre[12] = v63;
+    pre[13] = v64;
+    pre[14] = v66;
+    pre[15] = v71;
+    pre[16] = v72;
+    pre[17] = v75;
+    pre[18] = v80;
+    pre[19] = v84;
+    pre[20] = v88;
+    pre[21] = v92;
+    pre[22] = v124;
+    pre[23] = v131;
+    pre[24] = v149;
+    pre[25] = v150;
+    pre[26] = v151;
+    pre[27] = v153;
+    pre[28] = v154;
+    pre[29] = v157;
+    pre[30] = v160;
+    pre[31] = v192;
+    pre[32] = v193;
+    pre[33] = v196;
+    pre[34] = v197;
+    pre[35] = v199;
+    pre[36] = v200;
+    pre[37] = v201;
+    pre[38] = v594;
+    pre[39] = v208;
+    pre[40] = v213;
+    pre[41] = v217;
+    pre[42] = v254;
+    pre[43] = v267;
+    pre[44] = v268;
+    pre[45] = v269;
+    pre[46] = v282;
+    pre[47] = v283;
+    pre[48] = v285;
+    pre[49] = v288;
+    pre[50] = v308;
+    pre[51] = v311;
+    pre[52] = v313;
+    pre[53] = v314;
+    pre[54] = v595;
+    pre[55] = v328;
+    pre[56] = v367;
+    pre[57] = v389;
+    pre[58] = v596;
+    pre[59] = v597;
+    pre[60] = v430;
+    pre[61] = v433;
+    pre[62] = v436;
+    pre[63] = v438;
+    pre[64] = v444;
+    pre[65] = v446;
+    pre[66] = v449;
+    pre[67] = v460;
+    pre[68] = v522;
+    pre[69] = v524;
+    pre[70] = v534;
+    pre[71] = v578;
+    (void)steps;
+    (void)gains;
+    (void)selection;
+    (void)robot;
+    (void)surface;
+    (void)e;
+    (void)options;
+    (void)posture;
+    (void)limits;
+    (void)sensor;
+    (void)pre;
+}
+
+static inline __attribute__((always_inline)) void raibert_craig_step_lanes_core(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond, const int exact, hl_i *odd) {
+    (void)q;
+    (void)qd;
+    (void)Fc;
+    (void)integrals;
+    (void)last_torque;
+    (void)filter;
+    (void)estimate;
+    (void)t;
+    (void)yd_extra;
+    (void)yd_rate;
+    (void)target;
+    (void)pre;
+    (void)odd;
+    const hl_v v0 = pre[0];
+    const hl_v v1 = pre[1];
+    const hl_v v2 = pre[2];
+    const hl_v v3 = q[0];
+    hl_v v9, v4;
+    if (exact) hl_sincos(v3, &v9, &v4); else hl_sincos_poly(v3, &v9, &v4, odd);
+    const hl_v v5 = v2 * v4;
+    const hl_v v6 = q[1];
+    hl_v v10, v7;
+    if (exact) hl_sincos(v6, &v10, &v7); else hl_sincos_poly(v6, &v10, &v7, odd);
+    const hl_v v8 = v4 * v7;
+    const hl_v v11 = v9 * v10;
+    const hl_v v12 = v8 - v11;
+    const hl_v v13 = pre[3];
+    const hl_v v14 = v12 * v13;
+    const hl_v v15 = v4 * v10;
+    const hl_v v16 = v9 * v7;
+    const hl_v v17 = v15 + v16;
+    const hl_v v18 = pre[4];
+    const hl_v v19 = v17 * v18;
+    const hl_v v20 = v14 - v19;
+    const hl_v v21 = v5 + v20;
+    const hl_v v22 = v21 * v21;
+    const hl_v v23 = v2 * v9;
+    const hl_v v24 = v16 + v15;
+    const hl_v v25 = v24 * v13;
+    const hl_v v26 = v12 * v18;
+    const hl_v v27 = v25 + v26;
+    const hl_v v28 = v23 + v27;
+    const hl_v v29 = v28 * v28;
+    const hl_v v30 = v22 + v29;
+    const hl_v v31 = v1 * v30;
+    const hl_v v32 = v0 + v31;
+    const hl_v v33 = pre[5];
+    const hl_v v34 = pre[6];
+    const hl_v v35 = pre[7];
+    const hl_v v36 = v4 * v35;
+    const hl_v v37 = pre[8];
+    const hl_v v38 = v9 * v37;
+    const hl_v v39 = v36 - v38;
+    const hl_v v40 = v39 * v39;
+    const hl_v v41 = v9 * v35;
+    const hl_v v42 = v4 * v37;
+    const hl_v v43 = v41 + v42;
+    const hl_v v44 = v43 * v43;
+    const hl_v v45 = v40 + v44;
+    const hl_v v46 = v34 * v45;
+    const hl_v v47 = v33 + v46;
+    const hl_v v48 = v32 + v47;
+    const hl_v v49 = pre[9];
+    const hl_v v61 = pre[10];
+    const hl_v v62 = pre[11];
+    const hl_v v63 = pre[12];
+    const hl_v v64 = pre[13];
+    const hl_v v66 = pre[14];
+    const hl_v v71 = pre[15];
+    const hl_v v72 = pre[16];
+    const hl_v v73 = v72 * v12;
+    const hl_v v74 = v5 + v73;
+    const hl_v v75 = pre[17];
+    const hl_v v76 = v74 - v75;
+    const hl_v v77 = v64 * v76;
+    const hl_v v78 = v72 * v24;
+    const hl_v v79 = v23 + v78;
+    const hl_v v80 = pre[18];
+    const hl_v v81 = v79 - v80;
+    const hl_v v82 = v66 * v81;
+    const hl_v v83 = v77 + v82;
+    const hl_v v84 = pre[19];
+    const hl_v v85 = v83 - v84;
+    const hl_v v86 = v71 * v85;
+    const hl_v v87 = v62 + v86;
+    const hl_v v88 = pre[20];
+    const hl_v v89 = v88 * v85;
+    const hl_v v90 = v76 - v89;
+    const hl_v v91 = v90 * v90;
+    const hl_v v92 = pre[21];
+    const hl_v v93 = v92 * v85;
+    const hl_v v94 = v81 - v93;
+    const hl_v v95 = v94 * v94;
+    const hl_v v96 = v91 + v95;
+    const hl_v v97 = v87 * v87;
+    const hl_v v98 = v96 + v97;
+    const hl_v v99 = hl_sqrt(v98);
+    const hl_v v593 = 1.0 / v99;
+    const hl_v v100 = v87 * v593;
+    const hl_v v101 = v94 * v593;
+    const hl_v v102 = v92 * v101;
+    const hl_v v103 = v71 * v100;
+    const hl_v v104 = v102 - v103;
+    const hl_v v105 = v90 * v593;
+    const hl_v v106 = v88 * v105;
+    const hl_v v107 = v104 + v106;
+    const hl_v v108 = v63 * v107;
+    const hl_v v109 = v100 + v108;
+    const hl_v v110 = v64 * v107;
+    const hl_v v111 = v105 - v110;
+    const hl_v v112 = v111 * v111;
+    const hl_v v113 = v66 * v107;
+    const hl_v v114 = v101 - v113;
+    const hl_v v115 = v114 * v114;
+    const hl_v v116 = v112 + v115;
+    const hl_v v117 = v109 * v109;
+    const hl_v v118 = v116 + v117;
+    const hl_v v119 = hl_sqrt(v118);
+    const hl_v v120 = 1.0 / v119;
+    const hl_v v121 = hl_copysign(v120, v119);
+    const hl_v v122 = v109 * v121;
+    const hl_v v123 = v61 * v122;
+    const hl_v v124 = pre[22];
+    const hl_v v125 = v114 * v121;
+    const hl_v v126 = v124 * v125;
+    const hl_v v127 = v123 + v126;
+    const hl_v v128 = v127 * v127;
+    const hl_v v129 = v111 * v121;
+    const hl_v v130 = v124 * v129;
+    const hl_v v131 = pre[23];
+    const hl_v v132 = v131 * v122;
+    const hl_v v133 = v130 + v132;
+    const hl_v v134 = v133 * v133;
+    const hl_v v135 = v128 + v134;
+    const hl_v v136 = v131 * v125;
+    const hl_v v137 = v61 * v129;
+    const hl_v v138 = v136 - v137;
+    const hl_v v139 = v138 * v138;
+    const hl_v v140 = v135 + v139;
+    const hl_v v141 = hl_sqrt(v140);
+    const hl_v v142 = 1.0 / v141;
+    const hl_v v143 = hl_copysign(v142, v141);
+    const hl_v v144 = v127 * v143;
+    const hl_v v145 = v144 * v79;
+    const hl_v v146 = v133 * v143;
+    const hl_v v147 = v146 * v74;
+    const hl_v v148 = v145 + v147;
+    const hl_v v149 = pre[24];
+    const hl_v v150 = pre[25];
+    const hl_v v151 = pre[26];
+    const hl_v v152 = yd_rate[0];
+    const hl_v v153 = pre[27];
+    const hl_v v154 = pre[28];
+    const hl_v v155 = t[0];
+    const hl_v v156 = hl_bool(v154 <= v155);
+    const hl_v v157 = pre[29];
+    const hl_v v158 = hl_select(v156 != 0.0, v157, hl_splat(0.0));
+    const hl_v v159 = hl_bool(v156 == 0.0);
+    const hl_v v160 = pre[30];
+    const hl_v v161 = hl_select(v159 != 0.0, v160, hl_splat(0.0));
+    const hl_v v162 = v158 + v161;
+    const hl_v v163 = yd_extra[0];
+    const hl_v v164 = v162 + v163;
+    const hl_v v165 = Fc[1];
+    const hl_v v166 = v146 * v165;
+    const hl_v v167 = Fc[0];
+    const hl_v v168 = v144 * v167;
+    const hl_v v169 = v166 - v168;
+    const hl_v v170 = v138 * v143;
+    const hl_v v171 = Fc[2];
+    const hl_v v172 = v170 * v171;
+    const hl_v v173 = v169 + v172;
+    const hl_v v174 = v164 - v173;
+    const hl_v v175 = v150 * v174;
+    const hl_v v176 = qd[0];
+    const hl_v v177 = v79 * v176;
+    const hl_v v178 = qd[1];
+    const hl_v v179 = v78 * v178;
+    const hl_v v180 = v177 + v179;
+    const hl_v v181 = v144 * v180;
+    const hl_v v182 = v74 * v176;
+    const hl_v v183 = v73 * v178;
+    const hl_v v184 = v182 + v183;
+    const hl_v v185 = v146 * v184;
+    const hl_v v186 = v181 + v185;
+    const hl_v v187 = v164 - v186;
+    const hl_v v188 = v151 * v187;
+    const hl_v v189 = v175 + v188;
+    const hl_v v190 = v153 * v189;
+    const hl_v v191 = v152 + v190;
+    const hl_v v192 = pre[31];
+    const hl_v v193 = pre[32];
+    const hl_v v194 = hl_bool(v173 < v193);
+    const hl_v v195 = v150 * v194;
+    const hl_v v196 = pre[33];
+    const hl_v v197 = pre[34];
+    const hl_v v198 = v195 * v197;
+    const hl_v v199 = pre[35];
+    const hl_v v200 = pre[36];
+    const hl_v v201 = pre[37];
+    const hl_v v202 = v201 - v190;
+    const hl_v v594 = pre[38];
+    const hl_v v207 = v202 * v594;
+    const hl_v v208 = pre[39];
+    const hl_v v209 = v208 * v189;
+    const hl_v v210 = v207 - v209;
+    const hl_v v211 = hl_select(v198 != 0.0, v210, hl_splat(0.0));
+    const hl_v v212 = hl_bool(v198 == 0.0);
+    const hl_v v213 = pre[40];
+    const hl_v v214 = integrals[0];
+    const hl_v v215 = v214 + v209;
+    const hl_v v216 = v192 * v215;
+    const hl_v v217 = pre[41];
+    const hl_v v218 = integrals[1];
+    const hl_v v219 = v208 * v215;
+    const hl_v v220 = v218 + v219;
+    const hl_v v221 = v151 * v220;
+    const hl_v v222 = v217 * v221;
+    const hl_v v223 = v216 + v222;
+    const hl_v v224 = hl_fabs(v223);
+    const hl_v v225 = hl_bool(v213 < v224);
+    const hl_v v226 = hl_fmax(v225, v195);
+    const hl_v v227 = v226 * v214;
+    const hl_v v228 = v149 - v226;
+    const hl_v v229 = v228 * v215;
+    const hl_v v230 = v227 + v229;
+    const hl_v v231 = hl_select(v212 != 0.0, v230, hl_splat(0.0));
+    const hl_v v232 = v211 + v231;
+    const hl_v v233 = v192 * v232;
+    const hl_v v234 = v191 + v233;
+    const hl_v v235 = v226 * v151;
+    const hl_v v236 = v235 * v218;
+    const hl_v v237 = v228 * v221;
+    const hl_v v238 = v236 + v237;
+    const hl_v v239 = v217 * v238;
+    const hl_v v240 = v234 + v239;
+    const hl_v v241 = v151 * v240;
+    const hl_v v242 = v149 - v195;
+    const hl_v v243 = v199 * v186;
+    const hl_v v244 = v190 + v243;
+    const hl_v v245 = v244 + v233;
+    const hl_v v246 = v242 * v245;
+    const hl_v v247 = v195 * v199;
+    const hl_v v248 = v186 + v200;
+    const hl_v v249 = v247 * v248;
+    const hl_v v250 = v246 + v249;
+    const hl_v v251 = v150 * v250;
+    const hl_v v252 = v241 - v251;
+    const hl_v v253 = v151 * v252;
+    const hl_v v254 = pre[42];
+    const hl_v v255 = v148 * v148;
+    const hl_v v256 = v144 * v78;
+    const hl_v v257 = v146 * v73;
+    const hl_v v258 = v256 + v257;
+    const hl_v v259 = v258 * v258;
+    const hl_v v260 = v255 + v259;
+    const hl_v v261 = v254 * v260;
+    const hl_v v262 = v261 + v150;
+    const hl_v v263 = hl_sqrt(v262);
+    const hl_v v264 = 1.0 / v263;
+    const hl_v v265 = hl_copysign(v264, v263);
+    const hl_v v266 = v253 * v265;
+    const hl_v v267 = pre[43];
+    const hl_v v268 = pre[44];
+    const hl_v v269 = pre[45];
+    const hl_v v270 = v125 * v74;
+    const hl_v v271 = v129 * v79;
+    const hl_v v272 = v270 - v271;
+    const hl_v v273 = v272 * v148;
+    const hl_v v274 = v125 * v73;
+    const hl_v v275 = v129 * v78;
+    const hl_v v276 = v274 - v275;
+    const hl_v v277 = v276 * v258;
+    const hl_v v278 = v273 + v277;
+    const hl_v v279 = v269 * v278;
+    const hl_v v280 = v279 * v265;
+    const hl_v v281 = yd_rate[1];
+    const hl_v v282 = pre[46];
+    const hl_v v283 = pre[47];
+    const hl_v v284 = hl_bool(v283 <= v155);
+    const hl_v v285 = pre[48];
+    const hl_v v286 = hl_select(v284 != 0.0, v285, hl_splat(0.0));
+    const hl_v v287 = hl_bool(v284 == 0.0);
+    const hl_v v288 = pre[49];
+    const hl_v v289 = hl_select(v287 != 0.0, v288, hl_splat(0.0));
+    const hl_v v290 = v286 + v289;
+    const hl_v v291 = yd_extra[1];
+    const hl_v v292 = v290 + v291;
+    const hl_v v293 = v129 * v167;
+    const hl_v v294 = v125 * v165;
+    const hl_v v295 = v293 + v294;
+    const hl_v v296 = v122 * v171;
+    const hl_v v297 = v295 - v296;
+    const hl_v v298 = v292 - v297;
+    const hl_v v299 = v267 * v298;
+    const hl_v v300 = v125 * v184;
+    const hl_v v301 = v129 * v180;
+    const hl_v v302 = v300 - v301;
+    const hl_v v303 = v292 - v302;
+    const hl_v v304 = v268 * v303;
+    const hl_v v305 = v299 + v304;
+    const hl_v v306 = v282 * v305;
+    const hl_v v307 = v281 + v306;
+    const hl_v v308 = pre[50];
+    const hl_v v309 = hl_bool(v297 < v193);
+    const hl_v v310 = v267 * v309;
+    const hl_v v311 = pre[51];
+    const hl_v v312 = v310 * v311;
+    const hl_v v313 = pre[52];
+    const hl_v v314 = pre[53];
+    const hl_v v315 = v314 - v306;
+    const hl_v v595 = pre[54];
+    const hl_v v320 = v315 * v595;
+    const hl_v v321 = v208 * v305;
+    const hl_v v322 = v320 - v321;
+    const hl_v v323 = hl_select(v312 != 0.0, v322, hl_splat(0.0));
+    const hl_v v324 = hl_bool(v312 == 0.0);
+    const hl_v v325 = integrals[2];
+    const hl_v v326 = v325 + v321;
+    const hl_v v327 = v308 * v326;
+    const hl_v v328 = pre[55];
+    const hl_v v329 = integrals[3];
+    const hl_v v330 = v208 * v326;
+    const hl_v v331 = v329 + v330;
+    const hl_v v332 = v268 * v331;
+    const hl_v v333 = v328 * v332;
+    const hl_v v334 = v327 + v333;
+    const hl_v v335 = hl_fabs(v334);
+    const hl_v v336 = hl_bool(v213 < v335);
+    const hl_v v337 = hl_fmax(v336, v310);
+    const hl_v v338 = v337 * v325;
+    const hl_v v339 = v149 - v337;
+    const hl_v v340 = v339 * v326;
+    const hl_v v341 = v338 + v340;
+    const hl_v v342 = hl_select(v324 != 0.0, v341, hl_splat(0.0));
+    const hl_v v343 = v323 + v342;
+    const hl_v v344 = v308 * v343;
+    const hl_v v345 = v307 + v344;
+    const hl_v v346 = v337 * v268;
+    const hl_v v347 = v346 * v329;
+    const hl_v v348 = v339 * v332;
+    const hl_v v349 = v347 + v348;
+    const hl_v v350 = v328 * v349;
+    const hl_v v351 = v345 + v350;
+    const hl_v v352 = v268 * v351;
+    const hl_v v353 = v149 - v310;
+    const hl_v v354 = v313 * v302;
+    const hl_v v355 = v306 + v354;
+    const hl_v v356 = v355 + v344;
+    const hl_v v357 = v353 * v356;
+    const hl_v v358 = v310 * v313;
+    const hl_v v359 = v302 + v200;
+    const hl_v v360 = v358 * v359;
+    const hl_v v361 = v357 + v360;
+    const hl_v v362 = v267 * v361;
+    const hl_v v363 = v352 - v362;
+    const hl_v v364 = v268 * v363;
+    const hl_v v365 = v280 * v266;
+    const hl_v v366 = v364 - v365;
+    const hl_v v367 = pre[56];
+    const hl_v v368 = v272 * v272;
+    const hl_v v369 = v276 * v276;
+    const hl_v v370 = v368 + v369;
+    const hl_v v371 = v367 * v370;
+    const hl_v v372 = v371 + v267;
+    const hl_v v373 = v280 * v280;
+    const hl_v v374 = v372 - v373;
+    const hl_v v375 = hl_sqrt(v374);
+    const hl_v v376 = 1.0 / v375;
+    const hl_v v377 = hl_copysign(v376, v375);
+    const hl_v v378 = v366 * v377;
+    const hl_v v379 = v378 * v377;
+    const hl_v v380 = v280 * v379;
+    const hl_v v381 = v266 - v380;
+    const hl_v v382 = v381 * v265;
+    const hl_v v383 = v151 * v382;
+    const hl_v v384 = v148 * v383;
+    const hl_v v385 = v268 * v379;
+    const hl_v v386 = v272 * v385;
+    const hl_v v387 = v384 + v386;
+    const hl_v v388 = v49 * v387;
+    const hl_v v389 = pre[57];
+    const hl_v v390 = hl_sqrt(v260);
+    const hl_v v391 = 1.0 / v390;
+    const hl_v v392 = hl_copysign(v391, v390);
+    const hl_v v393 = v148 * v392;
+    const hl_v v394 = v253 * v392;
+    const hl_v v395 = v393 * v394;
+    const hl_v v396 = v393 * v272;
+    const hl_v v397 = v258 * v392;
+    const hl_v v398 = v397 * v276;
+    const hl_v v399 = v396 + v398;
+    const hl_v v400 = v399 * v393;
+    const hl_v v401 = v272 - v400;
+    const hl_v v402 = v401 * v401;
+    const hl_v v403 = v399 * v397;
+    const hl_v v404 = v276 - v403;
+    const hl_v v405 = v404 * v404;
+    const hl_v v406 = v402 + v405;
+    const hl_v v407 = hl_sqrt(v406);
+    const hl_v v408 = 1.0 / v407;
+    const hl_v v409 = hl_copysign(v408, v407);
+    const hl_v v410 = v401 * v409;
+    const hl_v v411 = v399 * v394;
+    const hl_v v412 = v364 - v411;
+    const hl_v v413 = v412 * v409;
+    const hl_v v414 = v410 * v413;
+    const hl_v v415 = v395 + v414;
+    const hl_v v416 = v389 * v415;
+    const hl_v v417 = v388 + v416;
+    const hl_v v418 = v48 * v417;
+    const hl_v v596 = pre[58];
+    const hl_v v419 = v252 * v596;
+    const hl_v v420 = v419 - v164;
+    const hl_v v421 = v148 * v420;
+    const hl_v v422 = hl_select(v150 != 0.0, v421, hl_splat(0.0));
+    const hl_v v597 = pre[59];
+    const hl_v v423 = v363 * v597;
+    const hl_v v424 = v423 - v292;
+    const hl_v v425 = v272 * v424;
+    const hl_v v426 = hl_select(v267 != 0.0, v425, hl_splat(0.0));
+    const hl_v v427 = v422 + v426;
+    const hl_v v428 = v418 + v427;
+    const hl_v v430 = pre[60];
+    const hl_v v431 = v28 * v430;
+    const hl_v v433 = pre[61];
+    const hl_v v434 = v21 * v433;
+    const hl_v v435 = v431 - v434;
+    const hl_v v436 = pre[62];
+    const hl_v v437 = v43 * v436;
+    const hl_v v438 = pre[63];
+    const hl_v v439 = v39 * v438;
+    const hl_v v440 = v437 - v439;
+    const hl_v v441 = v435 + v440;
+    const hl_v v442 = v428 + v441;
+    const hl_v v443 = hl_fabs(v442);
+    const hl_v v444 = pre[64];
+    const hl_v v445 = hl_bool(v443 <= v444);
+    const hl_v v446 = pre[65];
+    const hl_v v447 = last_torque[2];
+    const hl_v v448 = last_torque[0];
+    const hl_v v449 = pre[66];
+    const hl_v v450 = v448 + v449;
+    const hl_v v451 = hl_select(v447 != 0.0, v450, hl_splat(0.0));
+    const hl_v v452 = hl_bool(v447 == 0.0);
+    const hl_v v453 = hl_select(v452 != 0.0, v446, hl_splat(0.0));
+    const hl_v v454 = v451 + v453;
+    const hl_v v455 = hl_bool(v454 < v442);
+    const hl_v v456 = hl_select(v455 != 0.0, v454, hl_splat(0.0));
+    const hl_v v457 = hl_bool(v455 == 0.0);
+    const hl_v v458 = v448 - v449;
+    const hl_v v459 = hl_select(v447 != 0.0, v458, hl_splat(0.0));
+    const hl_v v460 = pre[67];
+    const hl_v v461 = hl_select(v452 != 0.0, v460, hl_splat(0.0));
+    const hl_v v462 = v459 + v461;
+    const hl_v v463 = hl_bool(v442 < v462);
+    const hl_v v464 = hl_select(v463 != 0.0, v462, hl_splat(0.0));
+    const hl_v v465 = hl_bool(v463 == 0.0);
+    const hl_v v466 = hl_select(v465 != 0.0, v442, hl_splat(0.0));
+    const hl_v v467 = v464 + v466;
+    const hl_v v468 = hl_select(v457 != 0.0, v467, hl_splat(0.0));
+    const hl_v v469 = v456 + v468;
+    const hl_v v470 = hl_bool(v446 < v469);
+    const hl_v v471 = hl_select(v470 != 0.0, v446, hl_splat(0.0));
+    const hl_v v472 = hl_bool(v470 == 0.0);
+    const hl_v v473 = hl_bool(v469 < v460);
+    const hl_v v474 = hl_select(v473 != 0.0, v460, hl_splat(0.0));
+    const hl_v v475 = hl_bool(v473 == 0.0);
+    const hl_v v476 = hl_select(v475 != 0.0, v469, hl_splat(0.0));
+    const hl_v v477 = v474 + v476;
+    const hl_v v478 = hl_select(v472 != 0.0, v477, hl_splat(0.0));
+    const hl_v v479 = v471 + v478;
+    const hl_v v480 = hl_select(v445 != 0.0, v479, hl_splat(0.0));
+    const hl_v v481 = hl_bool(v445 == 0.0);
+    const hl_v v482 = hl_select(v481 != 0.0, v442, hl_splat(0.0));
+    const hl_v v483 = v480 + v482;
+    const hl_v v484 = v1 * v21;
+    const hl_v v485 = v484 * v5;
+    const hl_v v486 = v1 * v28;
+    const hl_v v487 = v486 * v23;
+    const hl_v v488 = v485 + v487;
+    const hl_v v489 = v32 - v488;
+    const hl_v v490 = v1 * v23;
+    const hl_v v491 = v490 - v486;
+    const hl_v v492 = v23 * v491;
+    const hl_v v493 = v1 * v5;
+    const hl_v v494 = v484 - v493;
+    const hl_v v495 = v5 * v494;
+    const hl_v v496 = v492 - v495;
+    const hl_v v497 = v489 + v496;
+    const hl_v v498 = v258 * v383;
+    const hl_v v499 = v276 * v385;
+    const hl_v v500 = v498 + v499;
+    const hl_v v501 = v49 * v500;
+    const hl_v v502 = v397 * v394;
+    const hl_v v503 = v404 * v409;
+    const hl_v v504 = v503 * v413;
+    const hl_v v505 = v502 + v504;
+    const hl_v v506 = v389 * v505;
+    const hl_v v507 = v501 + v506;
+    const hl_v v508 = v497 * v507;
+    const hl_v v509 = v258 * v420;
+    const hl_v v510 = hl_select(v150 != 0.0, v509, hl_splat(0.0));
+    const hl_v v511 = v276 * v424;
+    const hl_v v512 = hl_select(v267 != 0.0, v511, hl_splat(0.0));
+    const hl_v v513 = v510 + v512;
+    const hl_v v514 = v508 + v513;
+    const hl_v v515 = v5 * v433;
+    const hl_v v516 = v23 * v430;
+    const hl_v v517 = v515 - v516;
+    const hl_v v518 = v435 + v517;
+    const hl_v v519 = v514 + v518;
+    const hl_v v520 = hl_fabs(v519);
+    const hl_v v521 = hl_bool(v520 <= v444);
+    const hl_v v522 = pre[68];
+    const hl_v v523 = last_torque[1];
+    const hl_v v524 = pre[69];
+    const hl_v v525 = v523 + v524;
+    const hl_v v526 = hl_select(v447 != 0.0, v525, hl_splat(0.0));
+    const hl_v v527 = hl_select(v452 != 0.0, v522, hl_splat(0.0));
+    const hl_v v528 = v526 + v527;
+    const hl_v v529 = hl_bool(v528 < v519);
+    const hl_v v530 = hl_select(v529 != 0.0, v528, hl_splat(0.0));
+    const hl_v v531 = hl_bool(v529 == 0.0);
+    const hl_v v532 = v523 - v524;
+    const hl_v v533 = hl_select(v447 != 0.0, v532, hl_splat(0.0));
+    const hl_v v534 = pre[70];
+    const hl_v v535 = hl_select(v452 != 0.0, v534, hl_splat(0.0));
+    const hl_v v536 = v533 + v535;
+    const hl_v v537 = hl_bool(v519 < v536);
+    const hl_v v538 = hl_select(v537 != 0.0, v536, hl_splat(0.0));
+    const hl_v v539 = hl_bool(v537 == 0.0);
+    const hl_v v540 = hl_select(v539 != 0.0, v519, hl_splat(0.0));
+    const hl_v v541 = v538 + v540;
+    const hl_v v542 = hl_select(v531 != 0.0, v541, hl_splat(0.0));
+    const hl_v v543 = v530 + v542;
+    const hl_v v544 = hl_bool(v522 < v543);
+    const hl_v v545 = hl_select(v544 != 0.0, v522, hl_splat(0.0));
+    const hl_v v546 = hl_bool(v544 == 0.0);
+    const hl_v v547 = hl_bool(v543 < v534);
+    const hl_v v548 = hl_select(v547 != 0.0, v534, hl_splat(0.0));
+    const hl_v v549 = hl_bool(v547 == 0.0);
+    const hl_v v550 = hl_select(v549 != 0.0, v543, hl_splat(0.0));
+    const hl_v v551 = v548 + v550;
+    const hl_v v552 = hl_select(v546 != 0.0, v551, hl_splat(0.0));
+    const hl_v v553 = v545 + v552;
+    const hl_v v554 = hl_select(v521 != 0.0, v553, hl_splat(0.0));
+    const hl_v v555 = hl_bool(v521 == 0.0);
+    const hl_v v556 = hl_select(v555 != 0.0, v519, hl_splat(0.0));
+    const hl_v v557 = v554 + v556;
+    const hl_v v558 = hl_bool(v483 != v442);
+    const hl_v v559 = hl_bool(v557 != v519);
+    const hl_v v560 = v558 + v559;
+    const hl_v v561 = hl_bool(v196 < v560);
+    const hl_v v562 = hl_select(v561 != 0.0, v214, hl_splat(0.0));
+    const hl_v v563 = hl_bool(v561 == 0.0);
+    const hl_v v564 = hl_select(v563 != 0.0, v232, hl_splat(0.0));
+    const hl_v v565 = v562 + v564;
+    const hl_v v566 = hl_select(v561 != 0.0, v218, hl_splat(0.0));
+    const hl_v v567 = hl_select(v563 != 0.0, v238, hl_splat(0.0));
+    const hl_v v568 = v566 + v567;
+    const hl_v v569 = hl_select(v561 != 0.0, v325, hl_splat(0.0));
+    const hl_v v570 = hl_select(v563 != 0.0, v343, hl_splat(0.0));
+    const hl_v v571 = v569 + v570;
+    const hl_v v572 = hl_select(v561 != 0.0, v329, hl_splat(0.0));
+    const hl_v v573 = hl_select(v563 != 0.0, v349, hl_splat(0.0));
+    const hl_v v574 = v572 + v573;
+    const hl_v v575 = Fc[3];
+    const hl_v v576 = Fc[4];
+    const hl_v v577 = Fc[5];
+    const hl_v v578 = pre[71];
+    const hl_v v579 = v255 + v368;
+    const hl_v v580 = v579 + v259;
+    const hl_v v581 = v580 + v369;
+    const hl_v v582 = v392 * v392;
+    const hl_v v583 = v399 * v409;
+    const hl_v v584 = v583 * v392;
+    const hl_v v585 = v584 * v584;
+    const hl_v v586 = v409 * v409;
+    const hl_v v587 = v585 + v586;
+    const hl_v v588 = v582 + v587;
+    const hl_v v589 = v581 * v588;
+    const hl_v v590 = hl_sqrt(v589);
+    const hl_v v591 = v578 / v590;
+    tau[0] = v483;
+    tau[1] = v557;
+    integrals_next[0] = v565;
+    integrals_next[1] = v568;
+    integrals_next[2] = v571;
+    integrals_next[3] = v574;
+    a[0] = v252;
+    a[1] = v363;
+    y[0] = v186;
+    y[1] = v302;
+    f[0] = v173;
+    f[1] = v297;
+    saturated[0] = v561;
+    filter_next[0] = v196;
+    filter_next[1] = v196;
+    filter_next[2] = v196;
+    filter_next[3] = v196;
+    filter_next[4] = v196;
+    filter_next[5] = v196;
+    filter_next[6] = v196;
+    filter_next[7] = v196;
+    filter_next[8] = v196;
+    filter_next[9] = v196;
+    filter_next[10] = v196;
+    filter_next[11] = v196;
+    filter_next[12] = v196;
+    estimate_next[0] = v196;
+    estimate_next[1] = v196;
+    estimate_next[2] = v196;
+    estimate_next[3] = v196;
+    estimate_next[4] = v196;
+    estimate_next[5] = v196;
+    estimate_next[6] = v196;
+    estimate_next[7] = v196;
+    estimate_next[8] = v196;
+    estimate_next[9] = v196;
+    contact_wrench[0] = v167;
+    contact_wrench[1] = v165;
+    contact_wrench[2] = v171;
+    contact_wrench[3] = v575;
+    contact_wrench[4] = v576;
+    contact_wrench[5] = v577;
+    frame[0] = v141;
+    cond[0] = v591;
+}
+
+static __attribute__((noinline, cold)) void raibert_craig_step_lanes_exact(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond) {
+    raibert_craig_step_lanes_core(q, qd, Fc, integrals, last_torque, filter, estimate, t, yd_extra, yd_rate, target, pre, tau, integrals_next, a, y, f, saturated, filter_next, estimate_next, contact_wrench, frame, cond, 1, NULL);
+}
+
+static void raibert_craig_step_lanes(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond) {
+    hl_i odd = hl_splat(0.0) != 0.0;
+    raibert_craig_step_lanes_core(q, qd, Fc, integrals, last_torque, filter, estimate, t, yd_extra, yd_rate, target, pre, tau, integrals_next, a, y, f, saturated, filter_next, estimate_next, contact_wrench, frame, cond, 0, &odd);
+    if (hl_any(odd)) raibert_craig_step_lanes_exact(q, qd, Fc, integrals, last_torque, filter, estimate, t, yd_extra, yd_rate, target, pre, tau, integrals_next, a, y, f, saturated, filter_next, estimate_next, contact_wrench, frame, cond);
+}
+
+
+typedef struct {
+    int status[HL_W], sample[HL_W];
+    hl_i alive;
+} lanes_run;
+
+/* a lane still running that meets `bad` stops with `status` at sample k */
+static void flag(lanes_run *run, hl_i bad, int status, int k) {
+    int l;
+    bad &= run->alive;
+    for (l = 0; l < HL_W; ++l) {
+        if (bad[l]) {
+            run->status[l] = status;
+            run->sample[l] = k;
+        }
+    }
+    run->alive &= ~bad;
+}
+
+/* the metrics' running sums and extremes (hybrid.metrics' definitions, updated row by row) */
+typedef struct {
+    hl_v peak, n_f, first_f, last_out_f, last_f, drop, n_v, dev, v_max, sum_fe, sum_ve, n_last, sum_f2, sum_v2,
+        pen, in_prev, losses, t_out, touch, fd0, band, w_end, t_peak, t_last_out, t_last, tau[2];
+} lanes_metrics;
+
+static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, long i, double h,
+                        double end) {
+    const hl_v fb = blk[122], fa = blk[123], fat = blk[124];
+    const hl_v vb = blk[125], va = blk[126], vat = blk[127];
+    const double ti = (double)i * h;
+    const hl_v t = hl_splat(ti), idx = hl_splat((double)i);
+    const hl_v F = s[2], v = s[3], pen = s[4];
+    const hl_v Fd = hl_select(t < fat, fb, fa), vd = hl_select(t < vat, vb, va);
+    const hl_v step = fa - fb, sgn = hl_select(step >= 0.0, hl_splat(1.0), hl_splat(-1.0));
+    const hl_v f_end = hl_select(vat > fat, vat, hl_splat(end));
+    const hl_v band = 0.02 * hl_select(fa != 0.0, hl_fabs(fa), hl_fabs(step));
+    const hl_i in_f = (t >= fat) & (t < f_end), in_v = t >= vat, last = t >= end - 0.2;
+    const hl_i contact = s[5] > 0.0;
+    int j;
+    mt->peak = hl_select(in_f & (sgn * F > mt->peak), sgn * F, mt->peak);
+    mt->n_f += hl_select(in_f, hl_splat(1.0), hl_splat(0.0));
+    mt->first_f = hl_select(in_f & (mt->first_f < 0.0), idx, mt->first_f);
+    mt->last_out_f = hl_select(in_f & (hl_fabs(F - fa) > band), idx, mt->last_out_f);
+    mt->last_f = hl_select(in_f, idx, mt->last_f);
+    mt->drop = hl_select(in_f & (vd - v > mt->drop), vd - v, mt->drop);
+    mt->n_v += hl_select(in_v, hl_splat(1.0), hl_splat(0.0));
+    mt->dev = hl_select(in_v & (hl_fabs(F - Fd) > mt->dev), hl_fabs(F - Fd), mt->dev);
+    mt->v_max = hl_select(in_v & (v > mt->v_max), v, mt->v_max);
+    mt->sum_fe += hl_select(last, Fd - F, hl_splat(0.0));
+    mt->sum_ve += hl_select(last, vd - v, hl_splat(0.0));
+    mt->n_last += hl_select(last, hl_splat(1.0), hl_splat(0.0));
+    mt->sum_f2 += (Fd - F) * (Fd - F);
+    mt->sum_v2 += (vd - v) * (vd - v);
+    mt->pen = hl_select(pen > mt->pen, pen, mt->pen);
+    if (i > 0) {
+        mt->losses += hl_select((mt->in_prev != 0.0) & ~contact, hl_splat(1.0), hl_splat(0.0));
+        mt->t_out += hl_select(contact, hl_splat(0.0), hl_splat(ti - (double)(i - 1) * h));
+    }
+    mt->in_prev = hl_bool(contact);
+    { /* the first touch: the first row in contact, then the window until the force reference next changes */
+        const hl_i first = contact & (mt->touch < 0.0);
+        hl_i in_t;
+        if (hl_any(first)) {
+            mt->touch = hl_select(first, idx, mt->touch);
+            mt->fd0 = hl_select(first, Fd, mt->fd0);
+            mt->band = hl_select(first, 0.05 * hl_fabs(Fd), mt->band);
+            mt->w_end = hl_select(first, hl_select((fa != fb) & (fat > t), fat, hl_splat(INFINITY)), mt->w_end);
+        }
+        in_t = (mt->touch >= 0.0) & (t < mt->w_end);
+        mt->t_peak = hl_select(in_t & (F > mt->t_peak), F, mt->t_peak);
+        mt->t_last_out = hl_select(in_t & (hl_fabs(F - mt->fd0) > mt->band), idx, mt->t_last_out);
+        mt->t_last = hl_select(in_t, idx, mt->t_last);
+    }
+    for (j = 0; j < 2; ++j) {
+        const hl_v a = hl_fabs(tau[j]);
+        mt->tau[j] = hl_select(a > mt->tau[j], a, mt->tau[j]);
+    }
+}
+
+static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int l, long rows, double h, double *out) {
+    const double fb = blk[122][l], fa = blk[123][l], vb = blk[125][l], va = blk[126][l];
+    int j;
+    for (j = 0; j < 6; ++j) out[j] = NAN;
+    if (mt->n_f[l] > 0 && fa != fb) {
+        const double step = fa - fb, sgn = step >= 0 ? 1.0 : -1.0;
+        const double lo = mt->last_out_f[l], lf = mt->last_f[l], first = mt->first_f[l];
+        out[0] = (sgn * mt->peak[l] - fa) * sgn;
+        out[1] = 100 * out[0] / fabs(step);
+        out[2] = lo < 0 ? 0.0 : lo == lf ? NAN : (lo + 1) * h - first * h;
+        out[3] = mt->drop[l];
+    }
+    if (mt->n_v[l] > 0 && va != vb) {
+        out[4] = mt->dev[l];
+        out[5] = mt->v_max[l] - va;
+    }
+    out[6] = mt->sum_fe[l] / mt->n_last[l];
+    out[7] = mt->sum_ve[l] / mt->n_last[l];
+    out[8] = sqrt(mt->sum_f2[l] / (double)rows);
+    out[9] = sqrt(mt->sum_v2[l] / (double)rows);
+    out[10] = mt->pen[l];
+    out[11] = mt->losses[l];
+    out[12] = mt->t_out[l];
+    out[13] = out[14] = out[15] = NAN;
+    if (mt->touch[l] >= 0) {
+        const double lo = mt->t_last_out[l], lt = mt->t_last[l], first = mt->touch[l];
+        out[13] = first * h;
+        out[14] = mt->t_peak[l] - mt->fd0[l];
+        out[15] = lo < 0 ? 0.0 : lo == lt ? NAN : (lo + 1) * h - first * h;
+    }
+    for (j = 0; j < 2; ++j) out[16 + j] = mt->tau[j][l];
+}
+
+/* the row's state of each lane in `state` and torque of each lane in `torque`; NaN for the others (a lane
+   that stopped) */
+static void record(double *states, double *taus, int g, int used, long row, long rows, const hl_v *x,
+                   const hl_v *tau, hl_i state, hl_i torque) {
+    int l, j;
+    if (!states && !taus) return;
+    for (l = 0; l < used; ++l) {
+        const long at = (long)(g + l) * rows + row;
+        if (states) for (j = 0; j < 8; ++j) states[at * 8 + j] = state[l] ? x[j][l] : NAN;
+        if (taus) for (j = 0; j < 2; ++j) taus[at * 2 + j] = torque[l] ? tau[j][l] : NAN;
+    }
+}
+
+/* the output row of each lane still running (NaN for the others) */
+static void record_outputs(double *outputs, int g, int used, long row, long rows, const hl_v *y, hl_i alive) {
+    int l, j;
+    if (!outputs) return;
+    for (l = 0; l < used; ++l) {
+        const long at = (long)(g + l) * rows + row;
+        for (j = 0; j < 14; ++j) outputs[at * 14 + j] = alive[l] ? y[j][l] : NAN;
+    }
+}
+
+/* the runs g .. g + used - 1 as one group of HL_W lanes (unused lanes repeat run g) */
+static void run_lanes(int g, int used, const double *runs, int n_samples, int steps_per_sample, double h,
+                      double sample_time, double singular_tol, double *metrics, int *status, int *failed_sample,
+                      double *states, double *taus, double *outputs) {
+    hl_v pre_rhs[PLANT_RHS_LANES_NPRE], pre_out[PLANT_OUTPUTS_LANES_NPRE], pre_both[PLANT_RHS_SIGNALS_LANES_NPRE],
+        pre_step[RAIBERT_CRAIG_STEP_LANES_NPRE];
+    hl_v blk[128], x[8], xt[8], k1[8], k2[8], k3[8], k4[8], s[6], fc[6], z[4], tv[1],
+        zero[13], base[6], last[3], y[14];
+    hl_v o_tau[2]; hl_v o_integrals_next[4]; hl_v o_a[2]; hl_v o_y[2]; hl_v o_f[2]; hl_v o_saturated[1]; hl_v o_filter_next[13]; hl_v o_estimate_next[10]; hl_v o_contact_wrench[6]; hl_v o_frame[1]; hl_v o_cond[1];
+    lanes_run run;
+    lanes_metrics mt;
+    const long rows = (long)n_samples * steps_per_sample + 1;
+    const double end = (double)(rows - 1) * h;
+    long row = 0;
+    int i, j, l, k;
+    (void)singular_tol;
+    for (l = 0; l < HL_W; ++l) {
+        for (j = 0; j < 128; ++j) blk[j][l] = runs[(long)(g + (l < used ? l : 0)) * 128 + j];
+        run.status[l] = HYBRID_OK;
+        run.sample[l] = -1;
+    }
+    run.alive = hl_splat(0.0) == 0.0;
+    mt.peak = mt.drop = mt.dev = mt.v_max = mt.pen = hl_splat(-INFINITY);
+    mt.first_f = mt.last_out_f = mt.last_f = hl_splat(-1.0);
+    mt.n_f = mt.n_v = mt.sum_fe = mt.sum_ve = mt.n_last = mt.sum_f2 = mt.sum_v2 = mt.in_prev = mt.losses = mt.t_out
+        = hl_splat(0.0);
+    mt.touch = mt.t_last_out = mt.t_last = hl_splat(-1.0);
+    mt.fd0 = mt.band = hl_splat(0.0);
+    mt.w_end = hl_splat(INFINITY);
+    mt.t_peak = hl_splat(-INFINITY);
+    for (j = 0; j < 2; ++j) mt.tau[j] = hl_splat(0.0);
+    for (j = 0; j < 13; ++j) zero[j] = hl_splat(0.0);
+    for (j = 0; j < 6; ++j) fc[j] = hl_splat(0.0);
+    for (j = 0; j < 4; ++j) z[j] = hl_splat(0.0);
+    for (j = 0; j <= 2; ++j) last[j] = hl_splat(0.0);
+    for (j = 0; j < 8; ++j) x[j] = blk[0 + j];
+    plant_rhs_lanes_pre(blk + 8, blk + 19, blk + 26, pre_rhs);
+    plant_outputs_lanes_pre(blk + 8, blk + 19, blk + 26, pre_out);
+    plant_rhs_signals_lanes_pre(blk + 8, blk + 19, blk + 26, pre_both);
+    raibert_craig_step_lanes_pre(blk + 29, blk + 35, blk + 43, blk + 45, blk + 70, blk + 77, blk + 80, blk + 87, blk + 93, blk + 97, pre_step);
+    for (k = 0; k < n_samples && hl_any(run.alive); ++k) {
+        /* the sensor's reading at the sample instant (a row's signals come with its step's first stage) */
+        plant_outputs_lanes(x, pre_out, y);
+        fc[0] = y[4];
+        fc[1] = y[5];
+
+        tv[0] = hl_splat(k * sample_time);
+        /* the plant's sensor gives the wrench on the robot itself and the surface is told: no filter, no estimate */
+        raibert_craig_step_lanes(x, x + 2, fc, z, last, zero, zero, tv, zero, zero, zero, pre_step, o_tau, o_integrals_next, o_a, o_y, o_f, o_saturated, o_filter_next, o_estimate_next, o_contact_wrench, o_frame, o_cond);
+        flag(&run, hl_fabs(o_frame[0]) < 1e-06, HYBRID_FRAME_UNDEFINED, k);
+        flag(&run, hl_fabs(o_cond[0]) < singular_tol, HYBRID_SINGULAR, k);
+        flag(&run, hl_not_finite(o_tau, 2) | hl_not_finite(o_integrals_next, 4) | hl_not_finite(o_a, 2) | hl_not_finite(o_y, 2) | hl_not_finite(o_f, 2) | hl_not_finite(o_saturated, 1) | hl_not_finite(o_filter_next, 13) | hl_not_finite(o_estimate_next, 10) | hl_not_finite(o_contact_wrench, 6) | hl_not_finite(o_frame, 1) | hl_not_finite(o_cond, 1), HYBRID_NONFINITE, k);
+        for (j = 0; j < 4; ++j) z[j] = o_integrals_next[j];
+        /* the torque the rate limit starts from at the next sample */
+        for (j = 0; j < 2; ++j) last[j] = o_tau[j];
+        last[2] = hl_splat(1.0);
+        if (k == 0) record(states, taus, g, used, 0, rows, x, o_tau, hl_splat(0.0) == 0.0, run.alive);
+        for (i = 0; i < steps_per_sample; ++i) {
+            /* the joints' sin and cos at the step's start: its stages rotate from there */
+            for (j = 0; j < 2; ++j) {
+                base[3 * j] = x[j];
+                hl_sincos(x[j], base + 3 * j + 1, base + 3 * j + 2);
+            }
+            plant_rhs_signals_lanes(x, o_tau, pre_both, k1, s, y, base);
+            for (j = 0; j < 8; ++j) xt[j] = x[j] + 0.5 * h * k1[j];
+            plant_rhs_lanes(xt, o_tau, pre_rhs, k2, base);
+            for (j = 0; j < 8; ++j) xt[j] = x[j] + 0.5 * h * k2[j];
+            plant_rhs_lanes(xt, o_tau, pre_rhs, k3, base);
+            for (j = 0; j < 8; ++j) xt[j] = x[j] + h * k3[j];
+            plant_rhs_lanes(xt, o_tau, pre_rhs, k4, base);
+            for (j = 0; j < 8; ++j) x[j] = x[j] + h / 6.0 * (k1[j] + 2.0 * (k2[j] + k3[j]) + k4[j]);
+            /* the row the step started from (the peak torques read each sample's torque all the same) */
+            metrics_row(&mt, blk, s, o_tau, row, h, end);
+            record_outputs(outputs, g, used, row, rows, y, run.alive);
+            ++row;
+            flag(&run, hl_not_finite(x, 8), HYBRID_NONFINITE, k);
+            /* a stopped lane restarts from its initial state: its numbers no longer matter, and they stay
+               finite */
+            if (hl_any(~run.alive)) {
+                for (j = 0; j < 8; ++j) x[j] = hl_select(run.alive, x[j], blk[0 + j]);
+            }
+            record(states, taus, g, used, row, rows, x, o_tau, run.alive, run.alive);
+        }
+    }
+    if (k > 0) { /* the last row */
+        plant_outputs_lanes(x, pre_out, y);
+        s[0] = y[4];
+        s[1] = y[5];
+        s[2] = y[7];
+        s[3] = y[2];
+        s[4] = y[10];
+        s[5] = y[11];
+        metrics_row(&mt, blk, s, o_tau, row, h, end);
+        record_outputs(outputs, g, used, row, rows, y, run.alive);
+    }
+    while (++row < rows) { /* all stopped */
+        record(states, taus, g, used, row, rows, x, o_tau, run.alive, run.alive);
+        record_outputs(outputs, g, used, row, rows, y, run.alive);
+    }
+    for (l = 0; l < used; ++l) {
+        status[g + l] = run.status[l];
+        failed_sample[g + l] = run.sample[l];
+        metrics_of_lane(&mt, blk, l, rows, h, metrics + (long)(g + l) * 18);
+    }
+}
+
+int hybrid_planar_arm_circle_raibert_cr_57176b91a5fa_closed_loop(int nruns, const double *runs, int n_samples, int steps_per_sample, double h, double sample_time, double singular_tol, double *metrics, int *status, int *failed_sample, double *states, double *taus, double *outputs) {
+    int g;
+    for (g = 0; g < nruns; g += HL_W) {
+        run_lanes(g, nruns - g < HL_W ? nruns - g : HL_W, runs, n_samples, steps_per_sample, h, sample_time,
+                  singular_tol, metrics, status, failed_sample, states, taus, outputs);
+    }
+    return HYBRID_OK;
+}
+
+int hybrid_planar_arm_circle_raibert_cr_57176b91a5fa_lanes(void) {
+    return HL_W;
+}
