@@ -15,8 +15,11 @@ import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Callable
+from functools import cache, partial
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -162,116 +165,218 @@ def import_benchmarks(rep: int, add) -> None:
     add(IMPORT, hybrid_s * 1e3, "ms", ratio=f"{ratio:.2f}x import numpy ({numpy_s * 1e3:.0f} ms)", ratio_value=ratio)
 
 
-def run_benchmarks(quick: bool = False) -> dict:
-    """Every benchmark; returns ``{"machine": ..., "results": [{name, median, unit, ...}]}``."""
-    arm, circle = paper_arm(), Circle((0.5, 0.0), 0.2)
-    law = decoupling_law(arm, circle, curvature=True)
-    q, qd, a, Fc = (np.array(v) for v in ([2.2, 1.9], [0.3, -0.4], [0.1, 1.0], [-8.0, 3.0]))
-    p, s = arm.as_array(), circle.cross_section().as_array()
+FIRST_SIMULATE = "first paper simulate (hybrid.simulate(hybrid.paper_experiment())), fresh process and cache"
+COLD_PAPER = "python -m hybrid paper --out DIR, fresh process and cache (wall time)"
+#: a fresh process's import of hybrid and its first paper run, each timed inside it (one JSON line)
+FIRST_RUN = ("import json, time; t0 = time.perf_counter(); import hybrid; t1 = time.perf_counter(); "
+             "hybrid.simulate(hybrid.paper_experiment()); t2 = time.perf_counter(); "
+             "print(json.dumps({'import_s': t1 - t0, 'simulate_s': t2 - t1}))")
+
+
+def _fresh(args: list[str]) -> tuple[float, str, list[str]]:
+    """``python ARGS`` in a fresh process with an empty cache, in an empty temporary folder: its wall
+    time [s], its stdout, and the names of what it left in the folder's ``out``."""
+    with tempfile.TemporaryDirectory() as tmp:
+        cache = Path(tmp) / "cache"
+        cache.mkdir()
+        t0 = time.perf_counter()
+        proc = subprocess.run([sys.executable, *args], check=True, capture_output=True, text=True, cwd=tmp,
+                              env={**os.environ, "HYBRID_CACHE_DIR": str(cache)})
+        wall = time.perf_counter() - t0
+        out = Path(tmp) / "out"
+        return wall, proc.stdout, sorted(p.name for p in out.iterdir()) if out.is_dir() else []
+
+
+def cold_benchmarks(quick: bool, add) -> None:
+    """What a first use costs, each in a fresh process with an empty cache (the median of 3; with
+    ``quick``, one): the first paper ``simulate`` (timed inside the process, its import apart), and
+    the ``paper`` command's wall time."""
+    first, imports, paper = [], [], []
+    for _ in range(1 if quick else 3):
+        times = json.loads(_fresh(["-c", FIRST_RUN])[1].strip().splitlines()[-1])
+        first.append(times["simulate_s"])
+        imports.append(times["import_s"])
+        wall, _, written = _fresh(["-m", "hybrid", "paper", "--out", "out"])
+        paper.append(wall)
+    imported = statistics.median(imports)
+    add(FIRST_SIMULATE, statistics.median(first), "s", ratio=f"the same process's import hybrid: {imported * 1e3:.0f} ms",
+        import_s=imported)
+    add(COLD_PAPER, statistics.median(paper), "s", ratio=f"{len(written)} files written (figures, metrics, time series)")
+
+
+def experiment_row(duration: float, how: str) -> str:
+    """The name of the paper experiment's end-to-end row (``how``: compiled, NumPy)."""
+    return f"paper experiment end to end ({duration:g} s simulated), {how}"
+
+
+def select_groups(groups: list, only: str | None) -> list:
+    """The ``(label, run)`` groups whose label contains ``only`` (any case); all of them for None."""
+    if only is None:
+        return list(groups)
+    if not only.strip():
+        raise HybridError("--only needs part of a benchmark group's label, e.g. --only sweep")
+    chosen = [g for g in groups if only.casefold() in g[0].casefold()]
+    if not chosen:
+        raise HybridError(f"--only {only!r}: no benchmark group's label contains it; the groups: "
+                          + "; ".join(label for label, _ in groups))
+    return chosen
+
+
+def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[], None]]]:
+    """Every benchmark as ``(progress label, run)`` groups in the order they run; ``run()`` adds the
+    group's rows through ``add``."""
+
+    @cache
+    def planar():  # the paper's arm, its law and one state: built by the first group that needs them
+        arm, circle = paper_arm(), Circle((0.5, 0.0), 0.2)
+        q, qd, a, Fc = (np.array(v) for v in ([2.2, 1.9], [0.3, -0.4], [0.1, 1.0], [-8.0, 3.0]))
+        return SimpleNamespace(arm=arm, law=decoupling_law(arm, circle, curvature=True), q=q, qd=qd, a=a, Fc=Fc,
+                               p=arm.as_array(), s=circle.cross_section().as_array())
+
+    @cache
+    def kernel():  # the planar law's generated kernel (SymPy)
+        return {kk.name: kk for kk in units.generator("model").kernels(2)}["decoupling_law_circle"]
+
+    def law_in_c(b: str) -> None:
+        P = planar()
+        values = {"q": P.q, "qd": P.qd, "a": P.a, "Fc": P.Fc, "arm": P.p, "surface": P.s, "opts": [1.0]}
+        entry = planar_unit(b).entry("decoupling_law_circle")
+        add(in_c(b), c_harness_ns(native.source_dir(), f"hybrid_{b}", entry, values,
+                                  200_000 if quick else 2_000_000, rep))
+
+    def one_state() -> None:
+        P = planar()
+        add(ONE_STATE, _median_ns(lambda: P.law(P.q, P.qd, P.a, P.Fc), 20000, rep))
+
+    def batched() -> None:
+        law, N = planar().law, 100_000
+        rng = np.random.default_rng(0)
+        Q = np.column_stack([rng.uniform(-3, 3, N), rng.uniform(0.3, 2.8, N)])
+        QD, A, FC = rng.normal(size=(N, 2)), rng.normal(size=(N, 2)), rng.normal(size=(N, 2))
+        add(BATCHED, _median_ns(lambda: law(Q, QD, A, FC), 1, rep) / N)
+
+    def numpy_law() -> None:
+        P = planar()
+        add(NUMPY_LAW, _median_ns(
+            lambda: reference.decoupling_law("circle", P.q, P.qd, P.a, P.Fc, P.p, P.s, True), 2000, rep))
+
+    def lambdified() -> None:
+        import sympy as sp
+
+        P, kern = planar(), kernel()
+        fn = sp.lambdify([a.expr for a in kern.inputs], kern.outputs[0].expr, modules="numpy", cse=True)
+        col = [v.reshape(-1, 1) for v in (P.q, P.qd, P.a, P.Fc, P.p, P.s, np.array([1.0]))]
+        add("F* by SymPy lambdify (NumPy, CSE)", _median_ns(lambda: fn(*col), 2000, rep))
+
+    def casadi_call() -> None:
+        P = planar()
+        cf = units.generator("casadi_backend").kernel_function(kernel())
+        add("F* by a CasADi Function call", _median_ns(lambda: cf(P.q, P.qd, P.a, P.Fc, P.p, P.s, 1.0), 2000, rep))
+
+    def pinocchio() -> None:
+        P = planar()
+        pin_ns = _pinocchio_ns(P.arm, P.q, P.qd, P.a, P.Fc, P.s, rep)
+        if pin_ns is not None:
+            add("F* by Pinocchio (crba, nle) + NumPy", pin_ns)
+
+    dur = 0.2 if quick else 2.0
+
+    def experiment(how: str) -> None:
+        exp = paper_experiment(duration=dur)
+        if how == "compiled":
+            add(experiment_row(dur, how), _median_ns(lambda: simulate(exp), 1, 3 if quick else 9) / 1e6, "ms")
+        else:
+            add(experiment_row(dur, how), _median_ns(lambda: reference.simulate(exp), 1, 1 if quick else 3) / 1e6,
+                "ms")
+
+    def regenerate() -> None:
+        t0 = time.perf_counter()
+        subprocess.run([sys.executable, "-c", "from hybrid.codegen.regenerate import expected_files; expected_files()"],
+                       check=True, cwd=Path(__file__).resolve().parent.parent)
+        add("regenerate from scratch (both backends, fresh process)", (time.perf_counter() - t0) * 1e3, "ms")
+
+    def spatial(name: str, path: str, tip: str) -> None:
+        spatial_law_benchmarks(name, path, tip, rep, quick, add)
+        controller_benchmarks(name, path, tip, rep, quick, add)
+
+    groups = [("import hybrid against import numpy, fresh processes",
+               partial(import_benchmarks, 5 if quick else 21, add)),
+              ("first use: the paper's simulate and paper command, fresh process and cache",
+               partial(cold_benchmarks, quick, add)),
+              *((f"F* in C ({b} backend)", partial(law_in_c, b)) for b in ("sympy", "casadi")),
+              ("F* from Python, single state", one_state),
+              ("F* from Python, batched", batched),
+              ("F* in plain NumPy", numpy_law),
+              ("F* by SymPy lambdify", lambdified),
+              ("F* by a CasADi Function call", casadi_call),
+              ("F* by Pinocchio + NumPy", pinocchio),
+              ("paper experiment, compiled", partial(experiment, "compiled")),
+              ("paper experiment, NumPy plant and controller", partial(experiment, "NumPy")),
+              ("regenerate from scratch", regenerate)]
+    groups += [(f"{name}: generation, compilation, terms in C, from Python and by Pinocchio",
+                partial(robot_benchmarks, name, path, tip, rep, quick, add)) for name, (path, tip) in ROBOTS.items()]
+    groups += [(f"{name}: the 6-D decoupling law in C, from Python, batched (both cores, one core), "
+                "by Pinocchio + NumPy; the controller step", partial(spatial, name, path, tip))
+               for name, (path, tip) in ROBOTS.items()]
+    groups += [("paper runs: one through simulate, in the compiled loop, sweeps on every core",
+                partial(sweep_benchmarks, quick, add)),
+               ("3-D runs (UR5 on the sphere): one through simulate, in the compiled loop, a sweep on every core",
+                partial(trace_benchmarks, quick, add)),
+               ("the 3-D closed loop's generated operations per RK4 step", partial(loop_operation_benchmarks, add)),
+               ("the standalone controller (generated C): each step call timed, code size, compile time",
+                partial(standalone_benchmarks, quick, add))]
+    return groups
+
+
+def run_benchmarks(quick: bool = False, only: str | None = None) -> dict:
+    """Every benchmark, or with ``only`` those of the groups whose progress label contains it (any
+    case); returns ``{"machine": ..., "results": [{name, median, unit, ...}]}``."""
     rep = 3 if quick else 7
     results = []
-    steps = 13 + 3 * len(ROBOTS)
-    k = 0
 
     def add(name, ns, unit="ns", **extra):
         results.append({"name": name, "median": ns, "unit": unit, **extra})
 
-    import_benchmarks(5 if quick else 21, add)
-    values = {"q": q, "qd": qd, "a": a, "Fc": Fc, "arm": p, "surface": s, "opts": [1.0]}
-    for b in ("sympy", "casadi"):
-        k += 1
-        _progress(k, steps, f"F* in C ({b} backend)")
-        entry = planar_unit(b).entry("decoupling_law_circle")
-        add(in_c(b), c_harness_ns(native.source_dir(), f"hybrid_{b}", entry, values,
-                                  200_000 if quick else 2_000_000, rep))
-    k += 1
-    _progress(k, steps, "F* from Python, single state")
-    add(ONE_STATE, _median_ns(lambda: law(q, qd, a, Fc), 20000, rep))
-    k += 1
-    _progress(k, steps, "F* from Python, batched")
-    N = 100_000
-    rng = np.random.default_rng(0)
-    Q = np.column_stack([rng.uniform(-3, 3, N), rng.uniform(0.3, 2.8, N)])
-    QD, A, FC = rng.normal(size=(N, 2)), rng.normal(size=(N, 2)), rng.normal(size=(N, 2))
-    add(BATCHED, _median_ns(lambda: law(Q, QD, A, FC), 1, rep) / N)
-    k += 1
-    _progress(k, steps, "F* in plain NumPy")
-    add(NUMPY_LAW, _median_ns(
-        lambda: reference.decoupling_law("circle", q, qd, a, Fc, p, s, True), 2000, rep))
-    k += 1
-    _progress(k, steps, "F* by SymPy lambdify")
-    model = units.generator("model")
+    chosen = select_groups(benchmark_groups(quick, rep, add), only)
+    for k, (label, run) in enumerate(chosen, 1):
+        _progress(k, len(chosen), label)
+        run()
+    relative_ratios(results)
+    mark_targets(results)
+    return {"machine": _versions(), "quick": quick, "results": results}
 
-    kern = {kk.name: kk for kk in model.kernels(2)}["decoupling_law_circle"]
-    import sympy as sp
 
-    args = [a.expr for a in kern.inputs]
-    fn = sp.lambdify(args, kern.outputs[0].expr, modules="numpy", cse=True)
-    col = [v.reshape(-1, 1) for v in (q, qd, a, Fc, p, s, np.array([1.0]))]
-    add("F* by SymPy lambdify (NumPy, CSE)", _median_ns(lambda: fn(*col), 2000, rep))
-    k += 1
-    _progress(k, steps, "F* by a CasADi Function call")
-    kernel_function = units.generator("casadi_backend").kernel_function
-
-    cf = kernel_function(kern)
-    add("F* by a CasADi Function call", _median_ns(lambda: cf(q, qd, a, Fc, p, s, 1.0), 2000, rep))
-    k += 1
-    _progress(k, steps, "F* by Pinocchio + NumPy")
-    pin_ns = _pinocchio_ns(arm, q, qd, a, Fc, s, rep)
-    if pin_ns is not None:
-        add("F* by Pinocchio (crba, nle) + NumPy", pin_ns)
-    k += 1
-    _progress(k, steps, "paper experiment, compiled")
-    dur = 0.2 if quick else 2.0
-    exp = paper_experiment(duration=dur)
-    add(f"paper experiment end to end ({dur:g} s simulated), compiled", _median_ns(
-        lambda: simulate(exp), 1, 3 if quick else 9) / 1e6, "ms")
-    k += 1
-    _progress(k, steps, "paper experiment, NumPy plant and controller")
-    add(f"paper experiment end to end ({dur:g} s simulated), NumPy", _median_ns(
-        lambda: reference.simulate(exp), 1, 1 if quick else 3) / 1e6, "ms")
-    k += 1
-    _progress(k, steps, "regenerate from scratch")
-    t0 = time.perf_counter()
-    subprocess.run([sys.executable, "-c", "from hybrid.codegen.regenerate import expected_files; expected_files()"],
-                   check=True, cwd=Path(__file__).resolve().parent.parent)
-    add("regenerate from scratch (both backends, fresh process)", (time.perf_counter() - t0) * 1e3, "ms")
-
+def relative_ratios(results: list[dict]) -> None:
+    """The ratio columns that compare rows of different groups (those of rows that ran)."""
     by = {r["name"]: r for r in results}
-    ours_py = by[ONE_STATE]["median"]
-    for r in results:
-        if r["name"].startswith("F* in plain") or r["name"].startswith("F* by"):
-            r["ratio"] = f"{r['median'] / ours_py:.0f}x slower than one compiled call"
-    comp = next(r for r in results if r["name"].endswith("compiled"))
-    slow = next(r for r in results if r["name"].endswith("NumPy") and "experiment" in r["name"])
-    slow["ratio"] = f"{slow['median'] / comp['median']:.0f}x slower than compiled"
-    targets = [(in_c(b), "<= 60 ns", by[in_c(b)]["median"] <= 60) for b in ("sympy", "casadi")] + [
-        (ONE_STATE, "<= 1 us, >= 70x NumPy", ours_py <= 1000 and by[NUMPY_LAW]["median"] / ours_py >= 70),
-        (BATCHED, "<= 10 ns", by[BATCHED]["median"] <= 10),
-    ]
-    if not quick:  # the experiment's target is for the full 2 s run
-        targets.append((comp["name"], "<= 25 ms, >= 100x NumPy",
-                        comp["median"] <= 25 and slow["median"] / comp["median"] >= 100))
-    targets.append((IMPORT, "<= 2.5x import numpy", by[IMPORT]["ratio_value"] <= 2.5))
-    for name, target, met in targets:
-        by[name].update(target=target, met=bool(met))
-    for name, (path, tip) in ROBOTS.items():
-        k += 2
-        _progress(k, steps, f"{name}: generation, compilation, terms in C, from Python and by Pinocchio")
-        robot_benchmarks(name, path, tip, rep, quick, add)
+    if ONE_STATE in by:
+        ours_py = by[ONE_STATE]["median"]
+        for r in results:
+            if r["name"].startswith("F* in plain") or r["name"].startswith("F* by"):
+                r["ratio"] = f"{r['median'] / ours_py:.0f}x slower than one compiled call"
+    comp = next((r for r in results if r["name"].startswith("paper experiment") and r["name"].endswith("compiled")),
+                None)
+    slow = next((r for r in results if r["name"].startswith("paper experiment") and r["name"].endswith("NumPy")), None)
+    if comp and slow:
+        slow["ratio"] = f"{slow['median'] / comp['median']:.0f}x slower than compiled"
+
+
+def mark_targets(results: list[dict]) -> None:
+    """Give each row that has a target the target and whether it is ``met``. A row that did not run has
+    none, and neither has one whose target compares it with a row that did not run. The experiment's
+    target is for the full run (2 s simulated): a quick run has no such row."""
     by = {r["name"]: r for r in results}
-    for name, (path, tip) in ROBOTS.items():
-        k += 1
-        _progress(k, steps, f"{name}: the 6-D decoupling law in C, from Python, batched, by Pinocchio + NumPy")
-        spatial_law_benchmarks(name, path, tip, rep, quick, add)
-        controller_benchmarks(name, path, tip, rep, quick, add)
-    k += 1
-    _progress(k, steps, "a sweep of paper runs on every core")
-    sweep_benchmarks(quick, add)
-    k += 1
-    _progress(k, steps, "the standalone controller (generated C): each step call timed, code size, compile time")
-    standalone_benchmarks(quick, add)
-    by = {r["name"]: r for r in results}
+    comp, slow = experiment_row(2.0, "compiled"), experiment_row(2.0, "NumPy")
+    # (row, target, met(row), the other rows it reads)
+    targets = [*((in_c(b), "<= 60 ns", lambda r: r["median"] <= 60) for b in ("sympy", "casadi")),
+               (ONE_STATE, "<= 1 us, >= 70x NumPy",
+                lambda r: r["median"] <= 1000 and by[NUMPY_LAW]["median"] / r["median"] >= 70, NUMPY_LAW),
+               (BATCHED, "<= 10 ns", lambda r: r["median"] <= 10),
+               (comp, "<= 25 ms, >= 100x NumPy",
+                lambda r: r["median"] <= 25 and by[slow]["median"] / r["median"] >= 100, slow),
+               (IMPORT, "<= 2.5x import numpy", lambda r: r["ratio_value"] <= 2.5),
+               (FIRST_SIMULATE, "<= 1.5 s", lambda r: r["median"] <= 1.5),
+               (COLD_PAPER, "<= 8 s", lambda r: r["median"] <= 8)]
     robot_targets = [(f"panda: {TERMS_IN_C}", "<= 1 us", lambda r: r["median"] <= 1000),
                      (f"panda: {GEN_COMPILE}", "<= 30 s", lambda r: r["median"] <= 30),
                      (f"ur5: {LAW_IN_C}", "<= 0.6 us", lambda r: r["median"] <= 600),
@@ -279,16 +384,20 @@ def run_benchmarks(quick: bool = False) -> dict:
                      (f"ur5: {LAW_ONE}", "<= 1.5 us, >= 20x Pinocchio + NumPy",
                       lambda r: r["median"] <= 1500 and r.get("speedup", 0) >= 20),
                      (f"ur5: {LAW_BATCHED}", "<= 0.5 us", lambda r: r["median"] <= 500),
+                     (f"ur5: {LAW_BATCHED_ONE_CORE}", "<= 120 ns", lambda r: r["median"] <= 120),
                      (f"ur5: {STEP_ONE}", "<= 2 us", lambda r: r["median"] <= 2000),
                      (f"ur5: {STANDALONE_STEP}", "<= 0.6 us", lambda r: r["median"] <= 600),
                      (f"ur5: {STANDALONE_P999}", "<= 2x the median", lambda r: r["of_median"] <= 2),
-                     (ONE_RUN, "<= 5 ms", lambda r: r["median"] <= 5),
+                     (ONE_RUN, "<= 2.3 ms", lambda r: r["median"] <= 2.3),
                      (SWEEP_1000, "<= 1 s", lambda r: r["median"] <= 1),
-                     (SWEEP_10000, "<= 6 s", lambda r: r["median"] <= 6)]
-    for name, target, ok in robot_targets:
-        if name in by:
+                     (SWEEP_10000, "<= 2.8 s", lambda r: r["median"] <= 2.8),
+                     (TRACE_ONE, "<= 25 ms", lambda r: r["median"] <= 25),
+                     (SWEEP_3D, "<= 3 s", lambda r: r["median"] <= 3),
+                     (LOOP_OPS, f"<= 2/3 of {LOOP_OPS_REFERENCE:,}",
+                      lambda r: r["median"] <= 2 / 3 * LOOP_OPS_REFERENCE)]
+    for name, target, ok, *reads in targets + robot_targets:
+        if name in by and all(other in by for other in reads):
             by[name].update(target=target, met=bool(ok(by[name])))
-    return {"machine": _versions(), "quick": quick, "results": results}
 
 
 #: the URDF arms of the robot benchmarks (files of the example-robot-data package) and their tips
@@ -297,11 +406,19 @@ TERMS_IN_C = "r, rotation, J, J'q', B, n in C, per call (robot_terms)"
 LAW_IN_C = "6-D F* on a sphere in C, per call (curvature on)"
 LAW_ONE = "6-D F* from Python, one state (law(q, qdot, a, Fc))"
 LAW_BATCHED = "6-D F* from Python, batched, per state (N = 1e5, both cores)"
+LAW_BATCHED_ONE_CORE = "6-D F* from Python, batched, per state (N = 1e5, one core)"
 ONE_RUN = "paper run through hybrid.simulate (2 s simulated)"
 SWEEP_1000 = "1,000 paper runs by hybrid.sweep (both cores)"
 SWEEP_10000 = "10,000 paper runs by hybrid.sweep (both cores)"
 LOOP_RUN = "paper run in the compiled closed loop, as SIMD lanes, one core, per run"
+TRACE_ONE = "3-D run (UR5 on the sphere, 3 s simulated) through hybrid.simulate"
 TRACE_RUN = "3-D run (UR5 on the sphere, 3 s simulated) in the compiled loop, as SIMD lanes, one core, per run"
+SWEEP_3D = "1,000 3-D runs (UR5 on the sphere) by hybrid.sweep (both cores)"
+LOOP_OPS = "3-D closed loop (UR5 on the sphere), generated operations per RK4 step"
+#: LOOP_OPS before the body-frame algorithms: 4 x 2,593 (the plant's right-hand side) + 3,488 / 100 (the
+#: controller step, once a sample of 100 steps) = 10,406.9. A reference count, like a baseline: the target
+#: is a share of it
+LOOP_OPS_REFERENCE = 10_407
 STEP_IN_C = "controller step in C (measurement, six loops, law), per sample"
 STEP_ONE = "controller step from Python, per sample (ctrl(t, q, qdot, Fc))"
 SPHERE = (0.45, 0.1, 0.3, 0.15)
@@ -411,14 +528,20 @@ def _pinocchio_ns(arm, q, qd, a, Fc, s, rep):
     return _median_ns(law, 2000, rep)
 
 
+def _number(v: float) -> str:
+    """A median as the table shows it: four significant digits, a count of 10,000 or more in full."""
+    return f"{v:.0f}" if 1e4 <= abs(v) < 1e9 else f"{v:.4g}"
+
+
 def format_table(report: dict) -> str:
     rows = report["results"]
-    w = max(len(r["name"]) for r in rows)
-    t = max(len(r.get("target", "")) for r in rows) + 6
-    lines = [f"{'benchmark':<{w}}  {'median':>12}  {'target':<{t}}  ratio"]
+    w = max((len(r["name"]) for r in rows), default=len("benchmark"))
+    t = max((len(r.get("target", "")) for r in rows), default=0) + 6
+    lines = [f"{'benchmark':<{w}}  {'median':>13}  {'target':<{t}}  ratio"]
     for r in rows:
         target = f"{r['target']}: {'met' if r['met'] else 'MISSED'}" if "target" in r else ""
-        lines.append(f"{r['name']:<{w}}  {r['median']:>9.4g} {r['unit']:<2}  {target:<{t}}  {r.get('ratio', '')}")
+        lines.append(f"{r['name']:<{w}}  {_number(r['median']):>9} {r['unit']:<3}  {target:<{t}}  "
+                     f"{r.get('ratio', '')}")
     m = report["machine"]
     lines.append(f"\n{m.get('cpu')}, {m.get('cores')} cores, {m.get('simd') or 'no'} SIMD | Python {m['python']} | "
                  f"numpy {m.get('numpy')} | {m['cc']}")
@@ -433,6 +556,8 @@ DESCRIPTION = ("Time the generated law, the runner and alternatives. Medians ove
 def add_parser(sub) -> None:
     p = common.command(sub, "bench", DESCRIPTION, _run)
     p.add_argument("--quick", action="store_true", help="fewer repeats, a shorter experiment")
+    p.add_argument("--only", metavar="SUBSTRING",
+                   help="run only the benchmark groups whose progress label contains SUBSTRING (any case)")
     p.add_argument("--json", metavar="FILE", help="also write the results as JSON to this file")
     p.add_argument("--force", action="store_true", help="let --json replace an existing file")
     common.add_verbose(p)
@@ -446,12 +571,39 @@ def _run(args) -> int:
         raise HybridError(f"--json {args.json} is a folder; give a file name")
     if args.json and Path(args.json).exists() and not args.force:
         raise HybridError(f"--json {args.json} exists; choose another name or add --force to replace it")
-    report = run_benchmarks(args.quick)
+    report = run_benchmarks(args.quick, args.only)
     print(format_table(report))
     if args.json:
 
         files.write_text(Path(args.json), json.dumps(report, indent=2) + "\n", overwrite=True)
     return 0
+
+
+def on_one_core(measure: Callable[[], float]) -> float | None:
+    """``measure()`` with the calling thread pinned to one of its CPUs, its CPUs given back after (a
+    batch splits over the CPUs the caller may run on: here it runs on the caller's thread alone); None
+    where the system cannot pin a thread."""
+    if not hasattr(os, "sched_setaffinity"):
+        return None
+    cpus = os.sched_getaffinity(0)
+    os.sched_setaffinity(0, {min(cpus)})
+    try:
+        return measure()
+    finally:
+        os.sched_setaffinity(0, cpus)
+
+
+def alone_is_bitwise(law, batch: tuple[np.ndarray, ...], rows: tuple[int, ...] | None = None) -> bool:
+    """Whether ``law`` gives each of ``rows`` of the per-state arrays ``batch`` alone (a batch of one)
+    the same bits as inside the whole batch (default rows: the first, second, middle (where two cores
+    split it) and last)."""
+    N = len(batch[0])
+    whole = law(*batch)
+    for i in sorted(set(rows if rows is not None else (0, 1, N // 2, N - 1))):
+        alone = law(*(x[i:i + 1] for x in batch))
+        if alone.shape[0] != 1 or alone[0].tobytes() != whole[i].tobytes():
+            return False
+    return True
 
 
 def spatial_law_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool, add) -> None:
@@ -480,11 +632,21 @@ def spatial_law_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool
     Q, QD = np.tile(q, (N, 1)) + rng.normal(0, 0.05, (N, robot.n)), rng.normal(0, 0.5, (N, robot.n))
     A, FC = rng.normal(size=(N, 6)), rng.normal(0, 5, (N, 6))
     batched = _median_ns(lambda: law(Q, QD, A, FC), 1, rep) / N
+    one_core = on_one_core(lambda: _median_ns(lambda: law(Q, QD, A, FC), 1, rep) / N)
+    bitwise = alone_is_bitwise(law, (Q, QD, A, FC))
+
+    def batched_rows():
+        add(f"{name}: {LAW_BATCHED}", batched, bitwise=bitwise,
+            ratio=f"bitwise: {'yes' if bitwise else 'no'} (a state alone in a batch of one, against the same state "
+                  "inside this batch)")
+        if one_core is not None:
+            add(f"{name}: {LAW_BATCHED_ONE_CORE}", one_core, ratio=f"{one_core / batched:.2f}x the time on both cores")
+
     try:
         import pinocchio as pin
     except ImportError:
         add(f"{name}: {LAW_ONE}", ours)
-        add(f"{name}: {LAW_BATCHED}", batched)
+        batched_rows()
         return
     pinocchio_terms = _pinocchio_terms(pin, path, robot, tip)
 
@@ -495,7 +657,7 @@ def spatial_law_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool
 
     theirs = _median_ns(pinocchio_law, 300 if quick else 3000, rep)
     add(f"{name}: {LAW_ONE}", ours, speedup=theirs / ours, ratio=f"{theirs / ours:.0f}x faster than Pinocchio + NumPy")
-    add(f"{name}: {LAW_BATCHED}", batched)
+    batched_rows()
     add(f"{name}: 6-D F* by Pinocchio (crba, nle, frame terms) + NumPy", theirs)
 
 
@@ -529,21 +691,19 @@ def controller_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool,
 
 
 def sweep_benchmarks(quick: bool, add) -> None:
-    """One paper run through ``simulate``; the compiled loop per run on one core; sweeps of 1,000
-    and 10,000 paper runs over every core (with ``quick``: 100 runs, the totals scaled)."""
+    """One paper run through ``simulate``, against its share of a lanes batch; the compiled loop per
+    run on one core; sweeps of 1,000 and 10,000 paper runs over every core (with ``quick``: 100 runs,
+    the totals scaled)."""
 
     exp = paper_experiment()
     simulate(exp)
-    add(ONE_RUN, _median_ns(lambda: simulate(exp), 1, 5 if quick else 15) / 1e6, "ms")
+    one = _median_ns(lambda: simulate(exp), 1, 5 if quick else 15) / 1e6
     prepared = [closed_loop.prepare(apply(exp, {"model_error": m})) for m in np.linspace(0.0, 0.5, 128)]
+    closed_loop.run(prepared)  # the lanes build, loaded before it is timed
     lanes = prepared[0].loop.lanes
-    add(LOOP_RUN, _median_ns(lambda: closed_loop.run(prepared), 1, 3 if quick else 7) / 1e6 / len(prepared), "ms",
-        ratio=f"{lanes} runs a group of lanes")
-
-    trace = [closed_loop.prepare(tracing_experiment(model_error=m)) for m in np.linspace(0.0, 0.3, 16)]
-    one = _median_ns(lambda: simulate(trace[0].experiment), 1, 3) / 1e6
-    add(TRACE_RUN, _median_ns(lambda: closed_loop.run(trace), 1, 3) / 1e6 / len(trace), "ms",
-        ratio=f"one alone through simulate: {one:.0f} ms")
+    share = _median_ns(lambda: closed_loop.run(prepared), 1, 3 if quick else 7) / 1e6 / len(prepared)
+    add(ONE_RUN, one, "ms", ratio=f"{one / share:.1f}x the per-run share of a lanes batch", of_share=one / share)
+    add(LOOP_RUN, share, "ms", ratio=f"{lanes} runs a group of lanes")
     for total, name in ((1000, SWEEP_1000), (10000, SWEEP_10000)):
         n = 100 if quick else total
         grid = {"model_error": list(np.linspace(0.0, 0.5, n // 4)), "controller": ["task", "khatib"],
@@ -552,6 +712,48 @@ def sweep_benchmarks(quick: bool, add) -> None:
         table = sweep(exp, grid)
         per_run = (time.perf_counter() - t0) / len(table)
         add(name, per_run * total, "s", ratio=f"{per_run * 1e3:.2f} ms a run, measured on {len(table)} runs")
+
+
+def trace_benchmarks(quick: bool, add) -> None:
+    """The 3-D experiment (UR5 on the sphere): one run through ``simulate``, against its share of a
+    lanes batch; the compiled loop per run on one core; a sweep of 1,000 runs over every core (with
+    ``quick``: 100, the total scaled)."""
+    trace = [closed_loop.prepare(tracing_experiment(model_error=m)) for m in np.linspace(0.0, 0.3, 16)]
+    closed_loop.run(trace)  # the lanes build, loaded before it is timed
+    exp = trace[0].experiment
+    simulate(exp)  # the one-lane build, likewise
+    one = _median_ns(lambda: simulate(exp), 1, 3 if quick else 7) / 1e6
+    share = _median_ns(lambda: closed_loop.run(trace), 1, 3) / 1e6 / len(trace)
+    add(TRACE_ONE, one, "ms", ratio=f"{one / share:.1f}x the per-run share of a lanes batch", of_share=one / share)
+    add(TRACE_RUN, share, "ms", ratio=f"{trace[0].loop.lanes} runs a group of lanes")
+    n = 100 if quick else 1000
+    grid = {"model_error": list(np.linspace(0.0, 0.3, n // 4)), "contact.friction": [0.1, 0.2], "F_d": [15.0, 20.0]}
+    t0 = time.perf_counter()
+    table = sweep(tracing_experiment(), grid)
+    per_run = (time.perf_counter() - t0) / len(table)
+    add(SWEEP_3D, per_run * 1000, "s", ratio=f"{per_run * 1e3:.2f} ms a run, measured on {len(table)} runs")
+
+
+def loop_operations(exp) -> dict:
+    """The generated operations (CasADi's ``n_instructions``) of ``exp``'s compiled closed loop
+    (:func:`hybrid.native.units.loop_unit`'s kernels): ``rhs``, the plant's state derivative (4
+    evaluations an RK4 step); ``step``, the controller step (one a sample); ``steps_per_sample``; and
+    ``per_step``, an RK4 step's count with its share of the sample's step: 4 rhs + step / steps_per_sample."""
+    kernel_function = units.generator("casadi_backend").kernel_function
+    spec = units.loop_spec(exp.plant_class.loop_plant(exp), exp.build_controller().step_variant())
+    rhs, step = (kernel_function(k).n_instructions() for k in (spec.rhs, spec.step))
+    per = exp.steps_per_sample
+    return {"rhs": rhs, "step": step, "steps_per_sample": per, "per_step": 4 * rhs + step / per}
+
+
+def loop_operation_benchmarks(add) -> None:
+    """The 3-D experiment's closed loop (UR5 on the sphere): its generated operations per RK4 step,
+    against the count before the body-frame algorithms (:data:`LOOP_OPS_REFERENCE`)."""
+    ops = loop_operations(tracing_experiment())
+    add(LOOP_OPS, ops["per_step"], "ops",
+        ratio=(f"rhs {ops['rhs']:,} ops x 4 + step {ops['step']:,} ops / {ops['steps_per_sample']} steps a sample; "
+               f"{ops['per_step'] / LOOP_OPS_REFERENCE:.2f}x the count before the body-frame algorithms"),
+        **{k: ops[k] for k in ("rhs", "step", "steps_per_sample")})
 
 
 # --------------------------------------------------------------------------- the standalone controller

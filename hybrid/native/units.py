@@ -192,11 +192,17 @@ def loop_files(loops) -> dict[str, str]:
     return files
 
 
-def _build_loop(prefix: str, plant, v: dict, lanes: int | None):
+def loop_spec(plant, variant: dict):
+    """What the closed loop of ``plant`` and the controller step ``variant`` (as :func:`loop_unit`'s) is
+    made of: a :class:`codegen.closed_loop.LoopSpec` (the plant's kernels, the step's kernel)."""
+    v = variant
     steps = {k.name: k for k in generator("controller_step").controller_kernels(
         v["chain"], v["spec"], v["axes"], v["desired_frame"], v["position_error"], v["wrench_sensor"])}
     rhs, outputs, force = plant.kernels(generator)
+    return generator("closed_loop").LoopSpec(rhs, outputs, steps[v["step"]], force)
+
+
+def _build_loop(prefix: str, plant, v: dict, lanes: int | None):
     info = {"plant": plant.key()[0], "surface": plant.name, "step": v["step"], "robot": v["name"]}
-    loop = generator("closed_loop")
-    return loop.build_closed_loop_unit(loop.LoopSpec(rhs, outputs, steps[v["step"]], force), prefix,
-                                       f"{plant.what}: {v['step']}", info, lanes)
+    return generator("closed_loop").build_closed_loop_unit(loop_spec(plant, v), prefix, f"{plant.what}: {v['step']}",
+                                                           info, lanes)
