@@ -38,7 +38,9 @@ def status_error(status: int, where: str, singular_hint: str = "", **inputs) -> 
             f"{where}: the ZYX Euler angles are singular (beta = +-pi/2, cos beta = 0); use coordinates='twist' "
             f"there, or keep the tool away from that orientation{shown}")
     bad = [k for k, v in inputs.items() if not np.isfinite(np.asarray(v, float)).all()]
-    hint = f"non-finite input {', '.join(bad)}" if bad else "the inputs are finite but extreme"
+    # finite inputs and no finite result: an exactly singular pose leaves the conditioning itself undefined
+    hint = (f"non-finite input {', '.join(bad)}" if bad else
+            f"the inputs are finite: the arm may be exactly at a singular pose{singular_hint}, or the numbers extreme")
     return NonFiniteError(f"{where}: result is NaN or infinite ({hint}){shown}")
 
 
