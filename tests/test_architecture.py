@@ -390,6 +390,27 @@ def test_the_papers_runs_in_a_fresh_cache_need_no_generator_and_compile_only_the
     assert built == sorted(f"_{prefix}" for prefix in committed), built
 
 
+def test_the_paper_command_builds_its_loops_side_by_side_once_each(tmp_path):
+    """``build_side_by_side`` compiles each distinct loop of the experiments once (the task law and
+    Khatib's scheme share theirs), and the runs after it compile nothing more."""
+    code = """if True:
+        import os, hybrid
+        from hybrid.simulation import closed_loop
+        def built():
+            return len([p for p in os.listdir(os.environ["HYBRID_CACHE_DIR"]) if p.startswith("_hybrid")])
+        exps = [hybrid.paper_experiment(duration=0.02, controller=c) for c in ("task", "khatib", "raibert_craig")]
+        closed_loop.build_side_by_side(exps)
+        print(built())
+        for e in exps:
+            hybrid.simulate(e)
+        print(built())
+    """
+    run = _run(["-c", code], tmp_path, HYBRID_CACHE_DIR=str(tmp_path / "cache"))
+    assert run.returncode == 0, run.stderr
+    loops = len(json.loads((GENERATED / "loops" / "index.json").read_text())["loops"])
+    assert run.stdout.split() == [str(loops), str(loops)]
+
+
 def test_the_version_has_one_source():
     """``hybrid.__version__`` is the installed distribution's version (the build reads the same file)."""
     from importlib.metadata import version

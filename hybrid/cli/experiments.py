@@ -22,6 +22,7 @@ from hybrid.experiments import FACTORIES
 from hybrid.experiments.experiment import BACKENDS
 from hybrid.experiments.paper import paper_experiment
 from hybrid.experiments.tracing import tracing_experiment
+from hybrid.simulation import closed_loop
 from hybrid.simulation.runner import simulate
 from hybrid.sweeps import apply
 from hybrid.validate import shown
@@ -86,8 +87,10 @@ def run_schemes(what: str, make, report) -> dict:
     """``{scheme: simulate(make(scheme))}`` for every scheme of :data:`SCHEMES`, told as one step."""
     results = {}
     with report.step(f"running {what}: {', '.join(SCHEMES)}"):
-        for scheme in SCHEMES:
-            results[scheme] = simulate(make(scheme))
+        experiments = {scheme: make(scheme) for scheme in SCHEMES}
+        closed_loop.build_side_by_side(list(experiments.values()))
+        for scheme, exp in experiments.items():
+            results[scheme] = simulate(exp)
             report.detail(f"  {scheme}: {len(results[scheme].t):,} integration steps")
     return results
 

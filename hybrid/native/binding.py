@@ -102,6 +102,11 @@ _POOL: tuple | None = None  # (process id, executor): a forked child builds its 
 _POOL_LOCK = threading.Lock()
 
 
+def workers() -> int:
+    """The cores this process may run on."""
+    return _workers()
+
+
 def _workers() -> int:
     try:
         return len(os.sched_getaffinity(0))

@@ -18,8 +18,9 @@ from functools import cache
 
 import numpy as np
 
-from hybrid.errors import NativeBuildError
-from hybrid.native import units
+from hybrid.errors import HybridError, NativeBuildError
+from hybrid.native import build, units
+from hybrid.native.binding import workers
 
 log = logging.getLogger("hybrid")
 
@@ -114,6 +115,32 @@ def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None) -> Prep
               **{f"controller.{k}": v for k, v in ctrl.step_inputs().items()}}
     settings = (exp.n_samples, exp.steps_per_sample, exp.step, exp.sample_time, exp.singular_tol)
     return Prepared(exp, loop, settings, loop.row(values))
+
+
+def build_side_by_side(experiments, lanes: int | None = 1) -> None:
+    """Build the compiled loops of ``experiments`` at once, one compiler per core (the compiler runs
+    outside the GIL): a command that runs several experiments waits for the slowest build, not for
+    their sum. An experiment that cannot be prepared is left to its run to report."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    def one(exp) -> None:
+        try:
+            prepare(exp, lanes=lanes)
+        except HybridError:
+            pass
+
+    try:
+        build.compiler()  # found once, before the threads
+    except NativeBuildError:
+        return  # each run says why it takes the Python runner
+    distinct = {}  # one experiment per loop: two threads never build the same one
+    for exp in experiments:
+        try:
+            distinct.setdefault(loop_of(exp), exp)
+        except HybridError:
+            pass
+    with ThreadPoolExecutor(max_workers=max(1, min(len(distinct), workers()))) as pool:
+        list(pool.map(one, distinct.values()))
 
 
 @dataclass
