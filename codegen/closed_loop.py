@@ -84,7 +84,8 @@ def stepping_kernel(spec: LoopSpec) -> Kernel:
     rhs, signals = spec.rhs, signals_kernel(spec)
     have = {a.name for a in rhs.inputs}
     extra = tuple(a for a in signals.inputs[1:] if a.name not in have)
-    return Kernel("plant_rhs_signals", rhs.inputs + extra, (rhs.outputs[0], signals.outputs[0], spec.outputs.outputs[0]),
+    return Kernel("plant_rhs_signals", rhs.inputs + extra,
+                  (rhs.outputs[0], signals.outputs[0], spec.outputs.outputs[0]),
                   "the plant's state derivative, the record columns the closed loop reads and the whole record")
 
 

@@ -29,7 +29,8 @@ def test_regeneration_is_repeatable_across_processes(tmp_path):
         env = {**os.environ, "PYTHONHASHSEED": seed}
         subprocess.run([sys.executable, "-m", "hybrid", "regenerate", "--target", str(target)],
                        check=True, cwd=ROOT, env=env, capture_output=True)
-        outs.append({p.name: p.read_bytes() for p in sorted(target.iterdir())})
+        outs.append({p.relative_to(target).as_posix(): p.read_bytes() for p in sorted(target.rglob("*"))
+                     if p.is_file()})
     assert outs[0] == outs[1]
     assert all(b"/work" not in text and b"/home" not in text for text in outs[0].values())
 
