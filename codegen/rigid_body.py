@@ -14,6 +14,8 @@ a force vector ``(n_O, f)``. Joint ``i``'s motion subspace is then ``S_i = (z_i,
 - :func:`rnea`: inverse dynamics ``tau = B q'' + n(q, q')`` by recursive Newton-Euler,
   gravity and joint viscosity included;
 
+:mod:`.body_frame` has the same algorithms in body coordinates (fewer operations: the 3-D plant's).
+
 The kinematic structure (joint origins, axes, types) is numbers compiled into the
 expressions; the inertial parameters, joint viscosities and gravity are symbols, so one
 build serves every model error and parameter sweep.
@@ -62,7 +64,11 @@ def _vec(v) -> ca.SX:
 
 def _axis_rotation(axis, angle) -> ca.SX:
     """Rotation by ``angle`` about the unit ``axis`` (Rodrigues), zeros kept exact."""
-    c, s = ca.cos(angle), ca.sin(angle)
+    return axis_rotation(axis, ca.cos(angle), ca.sin(angle))
+
+
+def axis_rotation(axis, c, s) -> ca.SX:
+    """Rotation about the unit ``axis`` by the angle of cosine ``c`` and sine ``s``, zeros kept exact."""
     x, y, z = (_snap(a) for a in axis)
     rows = []
     for i, (ai, row_k) in enumerate(((x, (0.0, -z, y)), (y, (z, 0.0, -x)), (z, (-y, x, 0.0)))):
@@ -168,8 +174,9 @@ def frame_classical_acceleration(frames: Frames, qd) -> ca.SX:
 
 @dataclass
 class Inertia:
-    """A (composite) rigid-body inertia about the base origin, in base axes: mass ``m``,
-    first moment ``h = m c`` and rotational inertia ``I_O`` about the origin (3x3)."""
+    """A (composite) rigid-body inertia about a frame's origin, in its axes (the base's here, a
+    link's in :mod:`.body_frame`): mass ``m``, first moment ``h = m c`` and rotational inertia
+    ``I_O`` about the origin (3x3)."""
 
     m: object
     h: ca.SX
