@@ -28,7 +28,6 @@ symbolic zeros remove most of the products the base-frame algorithms of :mod:`.r
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from functools import cache
 
@@ -36,7 +35,18 @@ import casadi as ca
 import numpy as np
 
 from .factor import reciprocal
-from .rigid_body import INERTIAL, Chain, Inertia, _snap, _vec, axis_rotation, cross, gravity_and_damping
+from .rigid_body import (
+    INERTIAL,
+    Chain,
+    Inertia,
+    _snapped,
+    _unit_axis,
+    _vec,
+    cross,
+    gravity_and_damping,
+    split_rotation,
+    turned_rotation,
+)
 
 
 @dataclass(frozen=True)
@@ -186,55 +196,6 @@ def _motion_subspace(joint) -> tuple:
     return (a, zero) if joint.kind == "revolute" else (zero, a)
 
 
-#: how far from a signed permutation a joint origin's rotation, its turn about the joint axis taken
-#: out, may be (rounding) for the turn to be taken into the joint's rotation
-_PERMUTATION_TOL = 1e-13
-
-
-def _snapped(M) -> np.ndarray:
-    return np.vectorize(_snap)(np.asarray(M, float))
-
-
-def _unit_axis(axis) -> int | None:
-    """``k`` when ``axis`` is exactly +-``e_k``."""
-    a = _snapped(axis)
-    nonzero = np.flatnonzero(a)
-    return int(nonzero[0]) if len(nonzero) == 1 and abs(a[nonzero[0]]) == 1.0 else None
-
-
-def _turn(axis, angle: float) -> np.ndarray:
-    """The rotation by ``angle`` about the unit ``axis`` +-``e_k``."""
-    k = _unit_axis(axis)
-    c, s = math.cos(angle), math.sin(angle)
-    i, j = (k + 1) % 3, (k + 2) % 3
-    R = np.eye(3)
-    R[i, i], R[i, j], R[j, i], R[j, j] = c, -s, s, c
-    return R if axis[k] > 0 else R.T
-
-
-def split_rotation(rotation, axis) -> tuple[np.ndarray, float]:
-    """``R_T = P Rot(axis, theta)``: a joint origin's rotation as a signed permutation ``P`` (exact
-    0 and +-1) after a turn ``theta`` about the joint's own unit axis, which the joint's rotation
-    takes in (``R_T R_J(q) = P R_J(q + theta)``: ``P`` costs no product). A URDF's ``rpy`` of a
-    rounded pi/2 about the axis (the UR5's) leaves entries of 5e-12 that would otherwise be
-    multiplied out. ``theta = 0`` and ``P = R_T`` (snapped) when there is no such split."""
-    M, snapped = np.asarray(rotation, float), _snapped(rotation)
-    k = _unit_axis(axis)
-    if np.isin(snapped, (0.0, 1.0, -1.0)).all() or k is None:
-        return snapped, 0.0
-    a = _snapped(axis)
-    k1, k2 = (k + 1) % 3, (k + 2) % 3
-    best = None
-    for r in range(3):  # the turn phi about e_k that takes R_T's column k1 onto base axis r
-        phi = math.atan2(M[r, k2], M[r, k1])
-        theta = -phi if a[k] > 0 else phi
-        P = M @ _turn(a, -theta)
-        exact = _snapped(np.round(P))
-        if np.abs(P - exact).max() < _PERMUTATION_TOL and (best is None or abs(theta) < abs(best[1])):
-            best = exact, theta
-    return best if best is not None else (snapped, 0.0)
-
-
 @dataclass(frozen=True)
 class BodyFrames:
     """Where the algorithms put each link's frame, as numbers of the chain alone.
@@ -311,11 +272,7 @@ def link_transforms(chain: Chain, q) -> Tree:
     for i, j in enumerate(chain.joints):
         R_T, p = ca.SX(ca.DM(frames.rotation[i])), ca.SX(ca.DM(frames.translation[i]))
         if j.kind == "revolute":
-            c, s = ca.cos(q[i]), ca.sin(q[i])
-            if frames.turn[i]:  # cos(q + theta), sin(q + theta): the sine and cosine of q stay the ones used
-                ct, st = math.cos(frames.turn[i]), math.sin(frames.turn[i])
-                c, s = c * ct - s * st, s * ct + c * st
-            R_J = axis_rotation(j.axis, c, s)
+            R_J = turned_rotation(j.axis, q[i], frames.turn[i])
         else:
             R_J, p = ca.SX.eye(3), p + R_T @ (_vec(j.axis) * q[i])
         X.append(LinkTransform(R_T, R_J, p))
@@ -503,8 +460,10 @@ def tip_velocity(tree: Tree, velocities) -> ca.SX:
     return to_base(tree, v + cross(w, tree.tip))
 
 
-def tip_force(tree: Tree, force) -> dict:
-    """A force (base axes) on the last link at the tip frame's origin as ``f_ext`` of :func:`rnea`
-    and :func:`aba`: ``{n - 1: (tip x f, f)}`` in the last link's coordinates."""
+def tip_force(tree: Tree, force, moment=None) -> dict:
+    """A force (base axes) on the last link at the tip frame's origin, and a moment (base axes), as
+    ``f_ext`` of :func:`rnea` and :func:`aba`: ``{n - 1: (m + tip x f, f)}`` in the last link's
+    coordinates."""
     f = from_base(tree, force)
-    return {tree.n - 1: (cross(tree.tip, f), f)}
+    n = cross(tree.tip, f)
+    return {tree.n - 1: (n if moment is None else from_base(tree, moment) + n, f)}

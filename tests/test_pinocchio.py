@@ -47,9 +47,11 @@ def _relative(got, want) -> float:
 def test_body_frame_algorithms_against_pinocchio(rng, robots):
     """Featherstone's algorithms in body coordinates (codegen.body_frame: RNEA with q'' and a force on
     the tip, CRBA, ABA) on the UR5 and the Panda with their real inertial parameters, against
-    Pinocchio's rnea, crba and aba on the same URDF."""
+    Pinocchio's rnea, crba and aba on the same URDF; the base-axes RNEA and CRBA (codegen.rigid_body)
+    too."""
     ca = pytest.importorskip("casadi")
     from hybrid.codegen import body_frame as bf
+    from hybrid.codegen import rigid_body as rb
 
     for robot, model, fid in robots.values():
         n, data = robot.n, model.createData()
@@ -58,24 +60,29 @@ def test_body_frame_algorithms_against_pinocchio(rng, robots):
         params = ca.SX.sym("robot", len(robot.as_array()))
         tree = bf.link_transforms(robot.chain, q)
         f_ext = bf.tip_force(tree, F)
+        frames = rb.forward_kinematics(robot.chain, q)
         f = ca.Function("f", [q, qd, qdd, tau, F, params],
                         [bf.rnea(tree, params, qd, qdd, f_ext), bf.crba(tree, params),
                          bf.aba(tree, params, qd, tau, f_ext), bf.tip_position(tree),
-                         bf.tip_velocity(tree, bf.link_velocities(tree, qd))])
+                         bf.tip_velocity(tree, bf.link_velocities(tree, qd)),
+                         rb.rnea(robot.chain, frames, params, qd, qdd), rb.crba(robot.chain, frames, params)])
         damping = np.array(robot.damping)
         for _ in range(50):
             x = (rng.uniform(robot.limits.lower, robot.limits.upper), rng.normal(0, 1, n), rng.normal(0, 3, n),
                  rng.normal(0, 20, n), rng.normal(0, 20, 3))
-            inverse, B, forward, r, rd = (np.array(v).squeeze() for v in f(*x, robot.as_array()))
+            inverse, B, forward, r, rd, inverse_base, B_base = (np.array(v).squeeze() for v in f(*x, robot.as_array()))
             pin.forwardKinematics(model, data, x[0], x[1])
             pin.updateFramePlacements(model, data)
             J = pin.computeFrameJacobian(model, data, x[0], fid, pin.LOCAL_WORLD_ALIGNED)[:3]
             assert _relative(r, data.oMf[fid].translation) < 1e-14
             assert _relative(rd, J @ x[1]) < 1e-13
-            want = pin.rnea(model, data, x[0], x[1], x[2]) + damping * x[1] - J.T @ x[4]
-            assert _relative(inverse, want) < 1e-13
+            want = pin.rnea(model, data, x[0], x[1], x[2]) + damping * x[1]
+            assert _relative(inverse, want - J.T @ x[4]) < 1e-13
+            assert _relative(inverse_base, want) < 1e-13
             want = pin.crba(model, data, x[0])
-            assert _relative(B, np.triu(want) + np.triu(want, 1).T) < 1e-13
+            want = np.triu(want) + np.triu(want, 1).T
+            assert _relative(B, want) < 1e-13
+            assert _relative(B_base, want) < 1e-13
             want = pin.aba(model, data, x[0], x[1], x[3] + J.T @ x[4] - damping * x[1])
             assert _relative(forward, want) < 1e-12
 
