@@ -116,8 +116,9 @@ def split_rotation(rotation, axis) -> tuple[np.ndarray, float]:
     a = _snapped(axis)
     k1, k2 = (k + 1) % 3, (k + 2) % 3
     best = None
-    for r in range(3):  # the turn phi about e_k that takes R_T's column k1 onto base axis r
-        phi = math.atan2(M[r, k2], M[r, k1])
+    for r, sign in ((r, sign) for r in range(3) for sign in (1.0, -1.0)):
+        # the turn phi about e_k that takes R_T's column k1 onto the base axis +-e_r
+        phi = math.atan2(sign * M[r, k2], sign * M[r, k1])
         theta = -phi if a[k] > 0 else phi
         P = M @ _turn(a, -theta)
         exact = _snapped(np.round(P))
