@@ -61,6 +61,7 @@ from dataclasses import dataclass
 
 import casadi as ca
 
+from . import body_frame as bf
 from . import factor
 from . import rigid_body as rb
 from .kernel import Arg, Guard, Kernel, conditioning_guard
@@ -158,9 +159,8 @@ def posture_torque(chain: rb.Chain, arm, params, q, qd, posture):
     common subexpressions)."""
     n = chain.n
     q_rest, kp, kd = posture[:n], posture[n:2 * n], posture[2 * n:]
-    inertias = rb.link_inertias(chain, arm.frames, params)
     w = kp * (q_rest - q) - kd * qd
-    return rb.crba(chain, arm.frames, params, inertias) @ w + rb.rnea(chain, arm.frames, params, qd, bodies=inertias)
+    return bf.crba(arm.tree, params) @ w + bf.rnea(arm.tree, params, qd)
 
 
 #: the largest finite double (|x| <= it is false for infinities and NaN)
@@ -485,8 +485,8 @@ def _raibert_craig(chain: rb.Chain, arm, params, Rm, a, yd, gains, sigma, pseudo
     M = (keep @ keep.T) * (Jy @ Jy.T) + ca.diag(sigma)
     qdd_selected = Jy.T @ (keep * factor.cholesky_solve(M, motion))
     qdd = pseudoinverse * qdd_selected + (1 - pseudoinverse) * qdd_inverse
-    B = rb.crba(chain, arm.frames, params)
-    gravity = rb.rnea(chain, arm.frames, params, ca.SX.zeros(n, 1))
+    B = bf.crba(arm.tree, params)
+    gravity = bf.rnea(arm.tree, params, ca.SX.zeros(n, 1))
     KP = ca.vertcat(*(gains[len(LOOP_GAINS) * i] for i in range(m)))
     w = ca.vertcat(*(ca.if_else(sigma[i], -yd[i] + a[i] / KP[i], 0) for i in range(m)))  # m_d a = a / KP
     tau = ca.diag(B) * qdd + Jy.T @ w + gravity

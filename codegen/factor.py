@@ -66,6 +66,35 @@ def cholesky_solve(A, b) -> ca.SX:
     return ca.vertcat(*back_substitution_transposed(L, forward_substitution(L, b)))
 
 
+def ldl(A) -> tuple[list[list], list]:
+    """``A = L D L^T`` (square-root-free Cholesky) of a symmetric positive definite ``A``: the
+    unit lower-triangular ``L`` (a list of rows, its unit diagonal implied) and the reciprocals
+    of ``D``'s diagonal. ``W_ij = L_ij D_j = A_ij - sum_{k<j} L_ik W_jk``, ``D_j = W_jj``."""
+    n = A.shape[0]
+    L, W, inv = [[None] * n for _ in range(n)], [[None] * n for _ in range(n)], [None] * n
+    for j in range(n):
+        for i in range(j, n):
+            W[i][j] = A[i, j] - sum((L[i][k] * W[j][k] for k in range(j)), _zero())
+        inv[j] = reciprocal(W[j][j])
+        for i in range(j + 1, n):
+            L[i][j] = W[i][j] * inv[j]
+    return L, inv
+
+
+def ldl_solve(A, b) -> ca.SX:
+    """``x = A^-1 b`` for symmetric positive definite ``A`` by :func:`ldl` and two unit-triangular
+    substitutions (no square roots; a diagonal entry's reciprocal once)."""
+    L, inv = ldl(A)
+    n = len(L)
+    y = [None] * n
+    for i in range(n):
+        y[i] = b[i] - sum((L[i][k] * y[k] for k in range(i)), _zero())
+    x = [None] * n
+    for i in reversed(range(n)):
+        x[i] = y[i] * inv[i] - sum((L[k][i] * x[k] for k in range(i + 1, n)), _zero())
+    return ca.vertcat(*x)
+
+
 def factor_solve(L, b) -> ca.SX:
     """``(L L^T)^-1 b`` with ``L`` already computed."""
     return ca.vertcat(*back_substitution_transposed(L, forward_substitution(L, b)))

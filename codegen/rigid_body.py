@@ -14,6 +14,8 @@ a force vector ``(n_O, f)``. Joint ``i``'s motion subspace is then ``S_i = (z_i,
 - :func:`rnea`: inverse dynamics ``tau = B q'' + n(q, q')`` by recursive Newton-Euler,
   gravity and joint viscosity included;
 
+:mod:`.body_frame` has the same algorithms in body coordinates (fewer operations: the 3-D plant's).
+
 The kinematic structure (joint origins, axes, types) is numbers compiled into the
 expressions; the inertial parameters, joint viscosities and gravity are symbols, so one
 build serves every model error and parameter sweep.
@@ -21,9 +23,11 @@ build serves every model error and parameter sweep.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import casadi as ca
+import numpy as np
 
 from hybrid.models.chain import (  # noqa: F401  (the chain's data, re-exported for the generator)
     INERTIAL,
@@ -60,9 +64,8 @@ def _vec(v) -> ca.SX:
     return ca.SX(ca.DM([_snap(x) for x in v]))
 
 
-def _axis_rotation(axis, angle) -> ca.SX:
-    """Rotation by ``angle`` about the unit ``axis`` (Rodrigues), zeros kept exact."""
-    c, s = ca.cos(angle), ca.sin(angle)
+def axis_rotation(axis, c, s) -> ca.SX:
+    """Rotation about the unit ``axis`` by the angle of cosine ``c`` and sine ``s``, zeros kept exact."""
     x, y, z = (_snap(a) for a in axis)
     rows = []
     for i, (ai, row_k) in enumerate(((x, (0.0, -z, y)), (y, (z, 0.0, -x)), (z, (-y, x, 0.0)))):
@@ -72,6 +75,65 @@ def _axis_rotation(axis, angle) -> ca.SX:
             row.append(e)
         rows.append(ca.horzcat(*row))
     return ca.vertcat(*rows)
+
+
+#: how far from a signed permutation a joint origin's rotation, its turn about the joint axis taken
+#: out, may be (rounding) for the turn to be taken into the joint's rotation
+_PERMUTATION_TOL = 1e-13
+
+
+def _snapped(M) -> np.ndarray:
+    return np.vectorize(_snap)(np.asarray(M, float))
+
+
+def _unit_axis(axis) -> int | None:
+    """``k`` when ``axis`` is exactly +-``e_k``."""
+    a = _snapped(axis)
+    nonzero = np.flatnonzero(a)
+    return int(nonzero[0]) if len(nonzero) == 1 and abs(a[nonzero[0]]) == 1.0 else None
+
+
+def _turn(axis, angle: float) -> np.ndarray:
+    """The rotation by ``angle`` about the unit ``axis`` +-``e_k``."""
+    k = _unit_axis(axis)
+    c, s = math.cos(angle), math.sin(angle)
+    i, j = (k + 1) % 3, (k + 2) % 3
+    R = np.eye(3)
+    R[i, i], R[i, j], R[j, i], R[j, j] = c, -s, s, c
+    return R if axis[k] > 0 else R.T
+
+
+def split_rotation(rotation, axis) -> tuple[np.ndarray, float]:
+    """``R_T = P Rot(axis, theta)``: a joint origin's rotation as a signed permutation ``P`` (exact
+    0 and +-1) after a turn ``theta`` about the joint's own unit axis, which the joint's rotation
+    takes in (``R_T R_J(q) = P R_J(q + theta)``: ``P`` costs no product). A URDF's ``rpy`` of a
+    rounded pi/2 about the axis (the UR5's) leaves entries of 5e-12 that would otherwise be
+    multiplied out. ``theta = 0`` and ``P = R_T`` (snapped) when there is no such split."""
+    M, snapped = np.asarray(rotation, float), _snapped(rotation)
+    k = _unit_axis(axis)
+    if np.isin(snapped, (0.0, 1.0, -1.0)).all() or k is None:
+        return snapped, 0.0
+    a = _snapped(axis)
+    k1, k2 = (k + 1) % 3, (k + 2) % 3
+    best = None
+    for r, sign in ((r, sign) for r in range(3) for sign in (1.0, -1.0)):
+        # the turn phi about e_k that takes R_T's column k1 onto the base axis +-e_r
+        phi = math.atan2(sign * M[r, k2], sign * M[r, k1])
+        theta = -phi if a[k] > 0 else phi
+        P = M @ _turn(a, -theta)
+        exact = _snapped(np.round(P))
+        if np.abs(P - exact).max() < _PERMUTATION_TOL and (best is None or abs(theta) < abs(best[1])):
+            best = exact, theta
+    return best if best is not None else (snapped, 0.0)
+
+
+def turned_rotation(axis, q, theta: float = 0.0) -> ca.SX:
+    """``Rot(axis, q + theta)`` by the sine and cosine of ``q`` (the ones an RK4 stage rotates from)."""
+    c, s = ca.cos(q), ca.sin(q)
+    if theta:
+        ct, st = math.cos(theta), math.sin(theta)
+        c, s = c * ct - s * st, s * ct + c * st
+    return axis_rotation(axis, c, s)
 
 
 def cross(a, b) -> ca.SX:
@@ -97,12 +159,15 @@ def forward_kinematics(chain: Chain, q) -> Frames:
     out = Frames([], [], [], [], None, None)
     for i, j in enumerate(chain.joints):
         p = p + R @ _vec(j.translation)
-        R = R @ _const(j.rotation)
-        z = R @ _vec(j.axis)
-        if j.kind == "revolute":
-            R = R @ _axis_rotation(j.axis, q[i])
+        if j.kind == "revolute":  # the joint origin's turn about the axis joins the joint's
+            P, theta = split_rotation(j.rotation, j.axis)
+            R = R @ ca.SX(ca.DM(P))
+            z = R @ _vec(j.axis)
+            R = R @ turned_rotation(j.axis, q[i], theta)
             S = (z, cross(p, z))
         else:
+            R = R @ _const(j.rotation)
+            z = R @ _vec(j.axis)
             p = p + z * q[i]
             S = (ca.SX.zeros(3, 1), z)
         out.R.append(R)
@@ -168,8 +233,9 @@ def frame_classical_acceleration(frames: Frames, qd) -> ca.SX:
 
 @dataclass
 class Inertia:
-    """A (composite) rigid-body inertia about the base origin, in base axes: mass ``m``,
-    first moment ``h = m c`` and rotational inertia ``I_O`` about the origin (3x3)."""
+    """A (composite) rigid-body inertia about a frame's origin, in its axes (the base's here, a
+    link's in :mod:`.body_frame`): mass ``m``, first moment ``h = m c`` and rotational inertia
+    ``I_O`` about the origin (3x3)."""
 
     m: object
     h: ca.SX

@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import casadi as ca
 
+from . import body_frame as bf
 from . import rigid_body as rb
 from .controller_step import controller_kernels
 from .emit import Unit, assemble
-from .factor import cholesky_solve
+from .factor import ldl_solve
 from .kernel import Arg, Kernel
 from .spatial_plant import plant_kernels
 from .surfaces import phi_of
@@ -21,16 +22,17 @@ from .task_law import AXIS_NAMES, frame_kernel, law_kernels, operational_space_k
 
 def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
     """``robot_terms`` (tip pose, ``J``, ``J' q'``, ``B``, ``n``), ``inverse_dynamics`` (RNEA) and
-    ``forward_dynamics`` (``B^-1 (tau - n)`` by Cholesky), each batched over states; with
+    ``forward_dynamics`` (``B^-1 (tau - n)`` by ``L D L^T``), each batched over states (the kinematics
+    in base axes, the dynamics in body coordinates: :mod:`.body_frame`); with
     ``defaults`` (the URDF's ``robot`` array) also ``urdf_parameters``, which writes them."""
     n = chain.n
     names = tuple(j.name for j in chain.joints)
     q, qd, qdd, tau = (ca.SX.sym(s, n) for s in ("q", "qd", "qdd", "tau"))
     params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
     fr = rb.forward_kinematics(chain, q)
-    inertias = rb.link_inertias(chain, fr, params)  # one set for B and n
-    B = rb.crba(chain, fr, params, inertias)
-    bias = rb.rnea(chain, fr, params, qd, bodies=inertias)
+    tree = bf.link_transforms(chain, q)  # the dynamics in body coordinates
+    B = bf.crba(tree, params)
+    bias = bf.rnea(tree, params, qd)
     a_q = Arg("q", q, rb.joint_units(chain, "q"), names=names)
     a_qd = Arg("qd", qd, rb.joint_units(chain, "qd"), names=names)
     a_p = Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain))
@@ -45,12 +47,13 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
         "Coriolis/centrifugal, gravity, viscosity)", batched=("q", "qd"))
     inverse = Kernel(
         "inverse_dynamics", (a_q, a_qd, Arg("qdd", qdd, rb.joint_units(chain, "qdd"), names=names), a_p),
-        (Arg("tau", rb.rnea(chain, fr, params, qd, qdd), rb.joint_units(chain, "tau")),),
+        (Arg("tau", bf.rnea(tree, params, qd, qdd), rb.joint_units(chain, "tau")),),
         "inverse dynamics tau = B(q) q'' + n(q, q') by recursive Newton-Euler", batched=("q", "qd", "qdd"))
     forward = Kernel(
         "forward_dynamics", (a_q, a_qd, Arg("tau", tau, rb.joint_units(chain, "tau"), names=names), a_p),
-        (Arg("qdd", cholesky_solve(B, tau - bias), rb.joint_units(chain, "qdd")),),
-        "forward dynamics q'' = B(q)^-1 (tau - n(q, q')) by a Cholesky factorisation of B",
+        (Arg("qdd", ldl_solve(B, tau - bias), rb.joint_units(chain, "qdd")),),
+        "forward dynamics q'' = B(q)^-1 (tau - n(q, q')) by a square-root-free Cholesky factorisation of B "
+        "(L D L^T)",
         batched=("q", "qd", "tau"))
     kernels = (terms, inverse, forward)
     if chain.n >= 6:  # a full-rank 6 x n Jacobian is possible: the operational space exists

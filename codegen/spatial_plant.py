@@ -9,15 +9,19 @@ pushes the sensor tip along its normal ``n = grad phi / |grad phi|`` with
 signed distance for the built-in surfaces, its first-order estimate for others), and friction
 ``-gamma N tanh(|v_s| / v_eps) v_s / |v_s|`` opposes the sliding velocity ``v_s = (I - n n^T) s'``.
 Gravity (the robot array's) acts on the arm and on the sensor mass. ``B q'' = tau + J_p^T F_c - n``
-is solved by a Cholesky factorisation of ``B``; the emitter adds the RK4 entry point.
+is solved by a square-root-free Cholesky factorisation of ``B``; ``B`` and ``n - J_p^T F_c`` come
+from Featherstone's algorithms in body coordinates (:mod:`.body_frame`: the composite-rigid-body
+algorithm, and Newton-Euler with the sensor's force on the last link), the tip's position and
+velocity from the same link transforms. The emitter adds the RK4 entry point.
 """
 
 from __future__ import annotations
 
 import casadi as ca
 
+from . import body_frame as bf
 from . import rigid_body as rb
-from .factor import cholesky_solve
+from .factor import ldl_solve
 from .kernel import Arg, Kernel
 from .surfaces import SurfaceSpec, phi_sx, task_frame
 
@@ -42,9 +46,9 @@ def plant_kernels(chain: rb.Chain, spec: SurfaceSpec) -> tuple[Kernel, ...]:
     m_s, K_s, D_s, k_e, d_e, gamma, v_eps = (pp[i] for i in range(len(PLANT_PARAMETERS)))
     q, qd, s, sd = x[:n], x[n:2 * n], x[2 * n:2 * n + 3], x[2 * n + 3:]
 
-    fr = rb.forward_kinematics(chain, q)
-    Jp = rb.frame_jacobian(fr)[:3, :]
-    r, rd = fr.tip_p, Jp @ qd
+    tree = bf.link_transforms(chain, q)
+    vs = bf.link_velocities(tree, qd)
+    r, rd = bf.tip_position(tree), bf.tip_velocity(tree, vs)
     Fc = K_s * (s - r) + D_s * (sd - rd)
     grad = ca.gradient(phi_sx(spec, s, theta), s)
     norm = ca.norm_2(grad)
@@ -57,10 +61,10 @@ def plant_kernels(chain: rb.Chain, spec: SurfaceSpec) -> tuple[Kernel, ...]:
     friction = gamma * N * ca.tanh(w / v_eps)
     _, g = rb.gravity_and_damping(chain, params)
     sdd = (N * n_s - friction / w * slide - Fc) / m_s + g
-    inertias = rb.link_inertias(chain, fr, params)
-    B = rb.crba(chain, fr, params, inertias)
-    bias = rb.rnea(chain, fr, params, qd, bodies=inertias)
-    qdd = cholesky_solve(B, tau + Jp.T @ Fc - bias)
+    B = bf.crba(tree, params)
+    # n(q, q') - J_p^T F_c: the sensor's force on the arm enters the Newton-Euler pass
+    bias = bf.rnea(tree, params, qd, f_ext=bf.tip_force(tree, Fc), velocities=vs)
+    qdd = ldl_solve(B, tau - bias)
     xdot = ca.vertcat(qd, qdd, sd, sdd)
 
     tf = task_frame(spec, r, rd, theta, e)

@@ -26,6 +26,7 @@ import casadi as ca
 
 from hybrid.geometry.task_axes import AXIS_NAMES
 
+from . import body_frame as bf
 from . import factor
 from . import rigid_body as rb
 from .kernel import Arg, Guard, Kernel, conditioning_guard
@@ -52,18 +53,20 @@ def _rows(M, axes):
 
 @dataclass(frozen=True)
 class ArmMotion:
-    """The arm's symbolic kinematics at ``(q, q')``: frames, ``J`` (6 x n), ``J' q'`` and ``v = J q'``."""
+    """The arm's symbolic kinematics at ``(q, q')``: base-axes frames, ``J`` (6 x n), ``J' q'`` and
+    ``v = J q'``; the link transforms of the body-frame dynamics (:mod:`.body_frame`)."""
 
     frames: rb.Frames
     J: ca.SX
     Jdqd: ca.SX
     v: ca.SX
+    tree: bf.Tree
 
 
 def arm_motion(chain: rb.Chain, q, qd) -> ArmMotion:
     fr = rb.forward_kinematics(chain, q)
     J = rb.frame_jacobian(fr)
-    return ArmMotion(fr, J, rb.frame_classical_acceleration(fr, qd), J @ qd)
+    return ArmMotion(fr, J, rb.frame_classical_acceleration(fr, qd), J @ qd, bf.link_transforms(chain, q))
 
 
 def task_rows(tf, axes) -> tuple[ca.SX, ca.SX]:
@@ -74,7 +77,7 @@ def task_rows(tf, axes) -> tuple[ca.SX, ca.SX]:
 def decoupling(chain: rb.Chain, arm: ArmMotion, params, qd, Rm, Rdm, a, Fc, tau0, curvature):
     """``(F*, tau, conditioning)`` of the law (module docstring) for the task rows ``Rm`` (m x 6)."""
     n, m = chain.n, Rm.shape[0]
-    J, fr = arm.J, arm.frames
+    J, tree = arm.J, arm.tree
     b = a - curvature * (Rdm @ arm.v) - Rm @ arm.Jdqd
     full = m == 6  # R_m = R is a rotation: work with J itself (same conditioning) and rotate b and f
     Jy = J if full else Rm @ J
@@ -83,17 +86,17 @@ def decoupling(chain: rb.Chain, arm: ArmMotion, params, qd, Rm, Rdm, a, Fc, tau0
     Q, Rq = factor.thin_qr(Jy.T)
     cond = factor.frobenius_conditioning(Jy, Rq)
     if m == n:
-        # J_y square: q''* = J_y^-1 b = Q R^-T b; tau = B q''* + n - J^T F_c is one RNEA pass (no B);
-        # f_y = J_y^-T tau
+        # J_y square: q''* = J_y^-1 b = Q R^-T b; tau = B q''* + n - J^T F_c is one RNEA pass (no B),
+        # the wrench on the tip in it; f_y = J_y^-T tau
         z = factor.forward_substitution([[Rq[j][i] for j in range(m)] for i in range(m)], b)  # R^T z = b
         qdd = sum((Q[i] * z[i] for i in range(m)), ca.SX.zeros(n, 1))
-        tau = rb.rnea(chain, fr, params, qd, qdd) - J.T @ Fc
+        tau = bf.rnea(tree, params, qd, qdd, f_ext=bf.tip_force(tree, Fc[:3], Fc[3:]))
         y = ca.vertcat(*(ca.dot(Q[i], tau) for i in range(m)))
         f_y = ca.vertcat(*factor.back_substitution_upper(Rq, y))
     else:
-        inertias = rb.link_inertias(chain, fr, params)  # one set for B and n
-        B = rb.crba(chain, fr, params, inertias)
-        h = rb.rnea(chain, fr, params, qd, bodies=inertias) - J.T @ Fc
+        # n(q, q') alone, as the posture torque has it too (the kernels' common subexpressions)
+        B = bf.crba(tree, params)
+        h = bf.rnea(tree, params, qd) - J.T @ Fc
         L = factor.cholesky(B)
         Y = factor.lower_columns_solve(L, Jy.T)           # L^-1 J_y^T, n x m
         K = factor.cholesky(Y.T @ Y)                      # Lambda_y^-1 = K K^T
@@ -202,9 +205,9 @@ def operational_space_kernels(chain: rb.Chain) -> tuple[Kernel, ...]:
     fr = rb.forward_kinematics(chain, q)
     J = rb.frame_jacobian(fr)
     Jdqd = rb.frame_classical_acceleration(fr, qd)
-    inertias = rb.link_inertias(chain, fr, params)
-    B = rb.crba(chain, fr, params, inertias)
-    bias = rb.rnea(chain, fr, params, qd, bodies=inertias)
+    tree = bf.link_transforms(chain, q)
+    B = bf.crba(tree, params)
+    bias = bf.rnea(tree, params, qd)
     L = factor.cholesky(B)
     Y = factor.lower_columns_solve(L, J.T)
     K = factor.cholesky(Y.T @ Y)
