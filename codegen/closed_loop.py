@@ -403,11 +403,18 @@ _STAGE = """#if HL_W > 1 && {small}
 _INLINE_LINES = 3000
 
 
+#: the lanes of the build for one run at a time, each the same run: two (the 128-bit vectors of every
+#: x86-64 and ARM processor). One lane alone is slower by about a tenth (the paper's run and the 3-D
+#: one): GCC turns a vector of one into scalar and integer code (the masks, selects and absolute values
+#: go through integer registers, the selects become branches), where two stay in vector registers.
+ONE_RUN_LANES = 2
+
+
 def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
                            lanes: int | None = None) -> Unit:
     """C source, header and manifest of the closed loop ``spec``, deterministic in its inputs; ``lanes``
-    fixes the lane count (1: one run at a time, as fast as one run goes) instead of the instruction
-    set's."""
+    fixes the lane count instead of the instruction set's, and 1 is the build for one run at a time (as
+    fast as one run goes: :data:`ONE_RUN_LANES` lanes, each the same run)."""
     nq = spec.rhs.inputs[1].size
     rhs = Kernel("plant_rhs", spec.rhs.inputs, spec.rhs.outputs, spec.rhs.doc)
     held = tuple(a.name for a in spec.rhs.inputs[2:])
@@ -416,9 +423,10 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
     stepping = stepping_kernel(spec)
     stages = "".join(lanes_function(k, name, fixed, "HL_STAGE", near=nq) + "\n" for k, name, fixed in (
         (rhs, "plant_rhs_lanes", held), (stepping, "plant_rhs_signals_lanes", held + shown)))
+    width = f"#define HL_W {ONE_RUN_LANES if lanes == 1 else lanes}" if lanes else ""
     body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py. */\n"
             "#if !defined(__GNUC__)\n#error \"the compiled closed loop needs GCC or Clang (vector extensions)\"\n"
-            f"#endif\n{f'#define HL_W {lanes}' if lanes else ''}\n{PRELUDE}\n{status_defines()}\n\n{libm_maps()}\n"
+            f"#endif\n{width}\n{PRELUDE}\n{status_defines()}\n\n{libm_maps()}\n"
             f"{_STAGE.format(small=int(stages.count(chr(10)) <= _INLINE_LINES))}\n{stages}"
             f"{lanes_function(spec.outputs, 'plant_outputs_lanes', shown)}\n"
             f"{lanes_function(spec.step, spec.step.name + '_lanes', params)}\n{_driver(prefix, spec, stepping)}")

@@ -721,7 +721,7 @@ def trace_benchmarks(quick: bool, add) -> None:
     trace = [closed_loop.prepare(tracing_experiment(model_error=m)) for m in np.linspace(0.0, 0.3, 16)]
     closed_loop.run(trace)  # the lanes build, loaded before it is timed
     exp = trace[0].experiment
-    simulate(exp)  # the one-lane build, likewise
+    simulate(exp)  # the build for one run at a time, likewise
     one = _median_ns(lambda: simulate(exp), 1, 3 if quick else 7) / 1e6
     share = _median_ns(lambda: closed_loop.run(trace), 1, 3) / 1e6 / len(trace)
     add(TRACE_ONE, one, "ms", ratio=f"{one / share:.1f}x the per-run share of a lanes batch", of_share=one / share)

@@ -104,7 +104,7 @@ def test_metrics_in_c_equal_the_numpy_definitions_on_the_same_record():
 def test_lanes_do_not_depend_on_their_neighbours_and_a_stopped_run_stops_alone():
     """Nineteen runs (more than one group of lanes, the last one partly filled), one diverging: each
     run's numbers are bitwise the same beside other neighbours, and equal its own run alone (the
-    one-lane build) within rounding; the diverging one reports where it stopped."""
+    build for one run at a time) within rounding; the diverging one reports where it stopped."""
     exps = [hybrid.paper_experiment(duration=0.6, model_error=m, contact=hybrid.Contact(friction=f))
             for m in (0.0, 0.15, 0.3) for f in (0.0, 0.1, 0.2, 0.3, 0.35, 0.4)]
     exps.insert(7, hybrid.paper_experiment(duration=0.6, model_error=5.0))
@@ -117,7 +117,7 @@ def test_lanes_do_not_depend_on_their_neighbours_and_a_stopped_run_stops_alone()
         np.testing.assert_array_equal(other.states, together[i].states)  # NaN where NaN
         np.testing.assert_array_equal(other.taus, together[i].taus)
         assert other.metrics == pytest.approx(together[i].metrics, rel=0, abs=0, nan_ok=True)
-        alone = closed_loop.run([p], record=True)[0]  # the one-lane build
+        alone = closed_loop.run([p], record=True)[0]  # the build for one run at a time
         assert alone.status == together[i].status and alone.failed_sample == together[i].failed_sample
         np.testing.assert_allclose(together[i].states, alone.states, rtol=1e-12, atol=1e-15)  # NaN where NaN
         np.testing.assert_allclose(together[i].outputs, alone.outputs, rtol=1e-12, atol=1e-15)

@@ -1,10 +1,10 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: bd72d5b16f4aafa9d286a815af85f66db6cb2caabde091019eb7b023b6b866a0 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: d4b94f467a8829d0423afe2c3e6b9ff06959ee9f8bd0b35338c9883f65ecbc8a */
 /* hybrid_planar_arm_circle_controller_4b54e1a71151: the paper's closed loop on a circle: controller_step.
    Emitted by hybrid's codegen/closed_loop.py. */
 #if !defined(__GNUC__)
 #error "the compiled closed loop needs GCC or Clang (vector extensions)"
 #endif
-#define HL_W 1
+#define HL_W 2
 #include <math.h>
 #include <string.h>
 

@@ -1,10 +1,10 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: deb4c8431d3dc72589372f273ade50220d85ca648b97867db3bc0f3fbca98195 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: da688aac60e51feddb2da3290a582fe2a790ca96f854922fc6a0ff98c5615505 */
 /* hybrid_planar_arm_circle_raibert_cr_57176b91a5fa: the paper's closed loop on a circle: raibert_craig_step.
    Emitted by hybrid's codegen/closed_loop.py. */
 #if !defined(__GNUC__)
 #error "the compiled closed loop needs GCC or Clang (vector extensions)"
 #endif
-#define HL_W 1
+#define HL_W 2
 #include <math.h>
 #include <string.h>
 

@@ -32,7 +32,8 @@ class Loop:
     function: object
     ffi: object
     key: tuple  # (plant, variant): what it was built from
-    lanes: int
+    lanes: int  # the runs it computes at once
+    alone: bool  # the build for one run at a time
     blocks: tuple[tuple[str, int], ...]
     metrics: tuple[str, ...]
     nx: int
@@ -56,7 +57,7 @@ def _loop(plant, variant: tuple, lanes: int | None = None) -> Loop:
     unit = units.loop_unit(plant, dict(variant), lanes)
     module, loop = unit.module, unit.manifest["closed_loop"]
     return Loop(getattr(module.lib, loop["symbol"]), module.ffi, (plant, variant),
-                int(getattr(module.lib, loop["lanes_symbol"])()),
+                int(getattr(module.lib, loop["lanes_symbol"])()), lanes == 1,
                 tuple((b["name"], b["size"]) for b in loop["blocks"]), tuple(loop["metrics"]), loop["nx"], loop["nq"],
                 tuple(loop["outputs"]))
 
@@ -96,8 +97,8 @@ def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None) -> Prep
     memory is ``simulate``'s to check: a sweep keeps none); None when it cannot run there: part of its
     controller runs in Python, or its sensor's signal is not the sensor's force itself (noise, bias, lag,
     delay: :mod:`hybrid.simulation.sensing`). A given start state ``x0`` is the caller's, checked
-    (``simulate`` passes its own). ``lanes=1`` prepares the one-lane build (a run alone; only what it
-    needs is compiled), else the lanes build."""
+    (``simulate`` passes its own). ``lanes=1`` prepares the build for one run at a time (a run alone;
+    only what it needs is compiled), else the lanes build."""
     ctrl = exp.build_controller()
     if not ctrl.runs_in_c or not exp.sensor.ideal:
         return None
@@ -167,9 +168,9 @@ def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
         first = prepared[members[0]]
         loop, (n_samples, per_sample, h, sample_time, tol) = first.loop, first.settings
         n = len(members)
-        if n == 1:  # one run alone: the one-lane build (same row, same arithmetic), built on first use
+        if n == 1:  # one run alone: its own build (same row, same arithmetic), built on first use
             loop = _available_loop(*loop.key, lanes=1) or loop
-        elif loop.lanes == 1:  # runs prepared one by one, run together: the lanes build
+        elif loop.alone:  # runs prepared one by one, run together: the lanes build
             loop = _available_loop(*loop.key) or loop
         runs = np.ascontiguousarray(np.stack([prepared[i].row for i in members]))
         metrics = np.empty((n, len(loop.metrics)))
