@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import dataclasses
 import importlib
+import itertools
 import json
 import math
 import os
@@ -176,8 +177,8 @@ def points(parameters: Mapping, samples: int | None = None, seed: int = 0) -> li
             raise HybridError("a distribution needs samples=N (the number of random draws)")
         sizes = [len(v) for v in lists]
         check_runs(product(sizes), len(names), f"the grid of {' x '.join(map(str, sizes))} values is")
-        grid = np.array(np.meshgrid(*[np.arange(len(v)) for v in lists], indexing="ij")).reshape(len(names), -1).T
-        return [{n: _plain(lists[k][i]) for k, (n, i) in enumerate(zip(names, row))} for row in grid]
+        # the last parameter varies fastest
+        return [dict(zip(names, values)) for values in itertools.product(*[[_plain(v) for v in vs] for vs in lists])]
     samples = _whole("samples", samples, 1)
     check_runs(samples, len(names), "samples =")
     rng = np.random.default_rng(seed)
@@ -386,7 +387,8 @@ def _kind(base, settings, kinds: dict) -> _Kind:
     if names in kinds:
         return kinds[names]
     paths = _paths(base, settings)
-    reach = {name: closed_loop.ROW_SETTINGS.get(".".join(path)) if path[0] in PHYSICS else None
+    alike = callable(getattr(type(base), "with_physics", None))  # an experiment that can change its physics alone
+    reach = {name: closed_loop.ROW_SETTINGS.get(".".join(path)) if alike and path[0] in PHYSICS else None
              for name, path in paths.items()}
     kind = _Kind(paths, tuple(n for n, parts in reach.items() if parts is None),
                  frozenset(p for parts in reach.values() if parts for p in parts),
@@ -401,10 +403,10 @@ def _physics(base, changes: dict, made: dict) -> dict:
     :func:`apply` makes them; each kept in ``made`` by its changes (a grid's runs share a few)."""
     fields = {}
     for name, change in changes.items():
-        key = ("physics", name, _exact(change))
-        if not isinstance(change, dict):
+        key = ("physics", name, _exact(change)) if isinstance(change, dict) else None
+        if key is None:  # the field's value itself (the model error, the viscous compensation)
             fields[name] = change
-        elif key[-1] is None:
+        elif key[-1] is None:  # a value of no key: made for this run alone
             fields[name] = _built(getattr(base, name), change)
         else:
             if key not in made:
@@ -447,8 +449,22 @@ def _failure_row(index: int, settings: dict, exc: Exception) -> dict:
     return {"run": index, **settings, "status": status, "error": cause.splitlines()[0]}
 
 
-def _chunks(todo: list[tuple[int, dict]], size: int) -> list[list[tuple[int, dict]]]:
-    return [todo[i:i + size] for i in range(0, len(todo), size)]
+#: a chunk's runs: pairs of whole groups of SIMD lanes (8 runs fill AVX-512's, and twice or four times
+#: narrower ones; the runs of two schemes alternating fill theirs), 16 pairs at the most
+LANES, MOST_PAIRS = 8, 16
+
+
+def _chunks(todo: list[tuple[int, dict]], workers: int, size: int | None = None) -> list[list[tuple[int, dict]]]:
+    """``todo`` in chunks of ``size`` runs, or by default of about a quarter of each worker's share of
+    the runs left: large while many are left (few hand-overs), small at the end, so that the workers
+    finish together."""
+    chunks, start = [], 0
+    while start < len(todo):
+        pairs = math.ceil((len(todo) - start) / (4 * workers * 2 * LANES))
+        end = start + (size or 2 * LANES * min(MOST_PAIRS, pairs))
+        chunks.append(todo[start:end])
+        start = end
+    return chunks
 
 
 def _local(base, chunks, workers: int):
@@ -840,9 +856,7 @@ def _run(base, todo, todo_all, names, done_rows, engine, client, out, workers, c
          timeout=CONNECT_TIMEOUT):
     cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
     workers = max(1, min(workers or cores, len(todo) or 1))
-    # whole groups of lanes (8 runs fill AVX-512's, and twice or four times narrower ones)
-    size = chunk_size or 8 * max(1, min(8, math.ceil(len(todo) / (32 * workers))))
-    chunks = _chunks(todo, size)
+    chunks = _chunks(todo, workers, chunk_size)
     results = _local(base, chunks, workers) if engine == "local" else _dask(base, chunks, client, workers, timeout)
     rows, t0, failed = list(done_rows), time.perf_counter(), 0
     for k, chunk_rows in enumerate(results):
