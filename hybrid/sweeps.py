@@ -387,7 +387,8 @@ def _kind(base, settings, kinds: dict) -> _Kind:
     if names in kinds:
         return kinds[names]
     paths = _paths(base, settings)
-    alike = callable(getattr(type(base), "with_physics", None))  # an experiment that can change its physics alone
+    # an experiment whose physics its checks check alone: made from an earlier run's as apply makes it
+    alike = getattr(type(base), "physics_alone", lambda: False)()
     reach = {name: closed_loop.ROW_SETTINGS.get(".".join(path)) if alike and path[0] in PHYSICS else None
              for name, path in paths.items()}
     kind = _Kind(paths, tuple(n for n, parts in reach.items() if parts is None),

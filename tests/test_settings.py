@@ -160,3 +160,22 @@ def test_with_physics_makes_what_replace_makes_or_raises_what_it_raises(base, ch
     assert all(type(got.__dict__[k]) is type(v) for k, v in want.__dict__.items())
     with pytest.raises(ValueError, match="not PHYSICS"):
         base.with_physics(gains=hybrid.Gains())
+
+
+def test_a_subclass_that_checks_its_physics_itself_is_made_whole():
+    import dataclasses
+
+    @dataclasses.dataclass(frozen=True, kw_only=True)
+    class Careful(hybrid.Experiment):
+        def __post_init__(self):
+            super().__post_init__()
+            if self.model_error > 0.2:
+                raise hybrid.HybridError("Careful: model_error > 0.2")
+
+    careful = Careful(**{f.name: getattr(hybrid.paper_experiment(duration=0.02), f.name)
+                         for f in dataclasses.fields(hybrid.Experiment)})
+    assert not Careful.physics_alone() and hybrid.Experiment.physics_alone()
+    with pytest.raises(hybrid.HybridError, match="Careful"):
+        careful.with_physics(model_error=0.3)
+    table = hybrid.sweep(careful, {"model_error": [0.1, 0.3]}, workers=1)
+    assert list(table["status"]) == ["ok", "invalid"] and table["error"][1] == "Careful: model_error > 0.2"

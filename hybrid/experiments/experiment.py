@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import hashlib
 import json
-from dataclasses import asdict, dataclass, field, fields
+from dataclasses import asdict, dataclass, field, fields, replace
 from functools import lru_cache
 
 import numpy as np
@@ -198,6 +198,8 @@ class Experiment(RunSettings):
         unknown = set(changes) - PHYSICS
         if unknown:
             raise ValueError(f"with_physics changes {', '.join(sorted(unknown))}, which are not PHYSICS")
+        if not self.physics_alone():
+            return replace(self, **changes)
         exp = object.__new__(type(self))
         exp.__dict__.update(self.__dict__)
         exp.__dict__.update(changes)
@@ -205,6 +207,12 @@ class Experiment(RunSettings):
         check_sensing(exp)
         check_timing(exp)
         return exp
+
+    @classmethod
+    def physics_alone(cls) -> bool:
+        """Whether :meth:`with_physics` checks this class's physics alone: its checks are the
+        experiment's (a subclass's own checks may read the physics too; it is then made whole)."""
+        return cls.__post_init__ is Experiment.__post_init__
 
     # ------------------------------------------------------------------ derived
 
