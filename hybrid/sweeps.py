@@ -16,10 +16,12 @@ from __future__ import annotations
 
 import dataclasses
 import importlib
+import itertools
 import json
 import math
 import os
 import re
+import struct
 import sys
 import threading
 import time
@@ -31,6 +33,7 @@ import numpy as np
 
 from hybrid import files
 from hybrid.errors import HybridError
+from hybrid.experiments.experiment import PHYSICS
 from hybrid.experiments.settings import RunSettings, setting_aliases, setting_path
 from hybrid.simulation import closed_loop
 from hybrid.simulation.metrics import metrics
@@ -174,8 +177,8 @@ def points(parameters: Mapping, samples: int | None = None, seed: int = 0) -> li
             raise HybridError("a distribution needs samples=N (the number of random draws)")
         sizes = [len(v) for v in lists]
         check_runs(product(sizes), len(names), f"the grid of {' x '.join(map(str, sizes))} values is")
-        grid = np.array(np.meshgrid(*[np.arange(len(v)) for v in lists], indexing="ij")).reshape(len(names), -1).T
-        return [{n: _plain(lists[k][i]) for k, (n, i) in enumerate(zip(names, row))} for row in grid]
+        # the last parameter varies fastest
+        return [dict(zip(names, values)) for values in itertools.product(*[[_plain(v) for v in vs] for vs in lists])]
     samples = _whole("samples", samples, 1)
     check_runs(samples, len(names), "samples =")
     rng = np.random.default_rng(seed)
@@ -260,27 +263,47 @@ def check_names(base, names) -> None:
 def apply(base, settings: Mapping):
     """``base`` with ``settings`` (field names, gain names, ``F_d``/``v_d``, or dotted paths) applied;
     the experiment checks the result as it would any other."""
+    return _built(base, _nested(_paths(base, settings), settings))
+
+
+def _paths(base, settings) -> dict[str, list[str]]:
+    """The dotted path of each setting of ``settings``, split, after checking them and ``base``."""
     check_base(base)
     if not isinstance(settings, Mapping):
         raise HybridError(f"settings must be a mapping {{setting name: value}}, e.g. {{'model_error': 0.1}}, got "
                           f"{type(settings).__name__}")
     check_names(base, settings)
+    return {name: setting_path(name).split(".") for name in settings}
+
+
+def _nested(paths: Mapping[str, list[str]], settings: Mapping) -> dict:
+    """``settings`` as nested changes ``{field: value or {field: ...}}`` along their ``paths``."""
     nested: dict = {}
     for name, value in settings.items():
-        path = setting_path(name).split(".")
+        path = paths[name]
         node = nested
         for part in path[:-1]:
             node = node.setdefault(part, {})
         node[path[-1]] = value
+    return nested
 
-    def build(obj, changes: dict):
-        kwargs = {k: build(getattr(obj, k), v) if isinstance(v, dict) else v for k, v in changes.items()}
-        try:
-            return dataclasses.replace(obj, **kwargs)
-        except TypeError as exc:  # a wrong type reaching a dataclass's own checks
-            raise HybridError(f"{type(obj).__name__}: {exc}") from None
 
-    return build(base, nested)
+def _built(obj, changes: dict):
+    """``obj`` with the nested ``changes``, each dataclass checking itself as it is made."""
+    return _made(obj, _parts(obj, changes), dataclasses.replace)
+
+
+def _parts(obj, changes: dict) -> dict:
+    """The fields of ``obj`` that the nested ``changes`` change, made (:func:`_built`)."""
+    return {k: _built(getattr(obj, k), v) if isinstance(v, dict) else v for k, v in changes.items()}
+
+
+def _made(obj, fields: dict, make):
+    """``make(obj, **fields)``: ``obj`` with other ``fields``, checked as it is made."""
+    try:
+        return make(obj, **fields)
+    except TypeError as exc:  # a wrong type reaching a dataclass's own checks
+        raise HybridError(f"{type(obj).__name__}: {exc}") from None
 
 
 # -------------------------------------------------------------------------- runs
@@ -292,24 +315,118 @@ def run_points(base, chunk: list[tuple[int, dict]]) -> list[dict]:
     (:mod:`hybrid.closed_loop`); the others, and any run that stopped (for the cause in words),
     through :func:`hybrid.simulate`."""
 
-    rows: dict[int, dict] = {}
-    compiled = []
-    for index, settings in chunk:
-        try:
-            exp = apply(base, settings)
-            prepared = closed_loop.prepare(exp)
-        except Exception as exc:  # noqa: BLE001 - refused before it started: the row says why
-            rows[index] = _failure_row(index, settings, exc)
-            continue
-        if prepared is None:  # not for the compiled loop: the Python runner
-            rows[index] = _simulated_row(index, settings, exp)
-        else:
-            compiled.append((index, settings, exp, prepared))
+    rows, compiled = _prepared(base, chunk)
     for (index, settings, exp, _), outcome in zip(compiled, closed_loop.run([c[3] for c in compiled])):
         # a run that stopped: the Python runner says where and why
         rows[index] = ({"run": index, **settings, **outcome.metrics, "status": "ok", "error": ""}
                        if outcome.status == 0 else _simulated_row(index, settings, exp))
     return [rows[index] for index, _ in chunk]
+
+
+def _prepared(base, chunk: list[tuple[int, dict]]) -> tuple[dict[int, dict], list[tuple]]:
+    """Each run of ``chunk`` applied to ``base`` (checked as :func:`apply` checks it) and prepared: the
+    rows of those refused or for the Python runner, by index, and ``(index, settings, exp, prepared)``
+    of those for the compiled loop. A run whose settings differ from an earlier one's only in those of
+    :data:`~hybrid.simulation.closed_loop.ROW_SETTINGS` (the experiment's physics) is checked and
+    prepared from it (:meth:`~hybrid.Experiment.with_physics`,
+    :func:`~hybrid.simulation.closed_loop.prepare_alike`): the same experiment and row, or the same
+    refusal, at a fraction of the cost."""
+
+    rows: dict[int, dict] = {}
+    compiled: list[tuple] = []
+    kinds: dict = {}  # by the names of a run's settings: their paths and what tells runs alike
+    templates: dict = {}  # by the settings that are not row settings: the first run prepared whole
+    made: dict = {}  # the physics and the parts of rows made, by what they are made of (runs share them)
+    for index, settings in chunk:
+        try:
+            kind = _kind(base, settings, kinds)
+            changes, key = _nested(kind.paths, settings), kind.key(settings)
+            template = templates.get(key)
+            if template is None:
+                exp = _built(base, changes)
+                prepared = closed_loop.prepare(exp)
+            else:  # the template's experiment with this run's physics
+                # in the settings' order, as apply makes them: of two refused, the first is the run's refusal
+                physics = _physics(base, {k: v for k, v in changes.items() if k in kind.physics}, made)
+                exp = _made(template.experiment, physics, type(template.experiment).with_physics)
+                prepared = closed_loop.prepare_alike(template, exp, kind.parts, made)
+        except Exception as exc:  # noqa: BLE001 - refused before it started: the row says why
+            rows[index] = _failure_row(index, settings, exc)
+            continue
+        if prepared is None:  # not for the compiled loop: the Python runner
+            rows[index] = _simulated_row(index, settings, exp)
+            continue
+        if template is None and key is not None:
+            templates[key] = prepared
+        compiled.append((index, settings, exp, prepared))
+    return rows, compiled
+
+
+@dataclass(frozen=True)
+class _Kind:
+    """What runs of the same setting names share: each name's path, the names that are not row settings
+    (:data:`~hybrid.simulation.closed_loop.ROW_SETTINGS`), the parts of the row and the fields of the
+    experiment's physics those reach."""
+
+    paths: dict
+    others: tuple[str, ...]
+    parts: frozenset
+    physics: frozenset
+
+    def key(self, settings: Mapping) -> tuple | None:
+        """What two runs alike share: the names, and the others' values (:func:`_exact`); None for a
+        value of another kind (a run prepared whole)."""
+        values = [_exact(settings[name]) for name in self.others]
+        return None if None in values else (tuple(self.paths), *values)
+
+
+def _kind(base, settings, kinds: dict) -> _Kind:
+    """The :class:`_Kind` of runs with the names of ``settings``, made once (it checks them: a refusal is
+    raised for each run)."""
+    names = tuple(settings) if isinstance(settings, dict) else None
+    if names in kinds:
+        return kinds[names]
+    paths = _paths(base, settings)
+    # an experiment whose physics its checks check alone: made from an earlier run's as apply makes it
+    alike = getattr(type(base), "physics_alone", lambda: False)()
+    reach = {name: closed_loop.ROW_SETTINGS.get(".".join(path)) if alike and path[0] in PHYSICS else None
+             for name, path in paths.items()}
+    kind = _Kind(paths, tuple(n for n, parts in reach.items() if parts is None),
+                 frozenset(p for parts in reach.values() if parts for p in parts),
+                 frozenset(paths[n][0] for n, parts in reach.items() if parts))
+    if names is not None:
+        kinds[names] = kind
+    return kind
+
+
+def _physics(base, changes: dict, made: dict) -> dict:
+    """The fields of an experiment's physics that the nested ``changes`` change, made from ``base``'s as
+    :func:`apply` makes them; each kept in ``made`` by its changes (a grid's runs share a few)."""
+    fields = {}
+    for name, change in changes.items():
+        key = ("physics", name, _exact(change)) if isinstance(change, dict) else None
+        if key is None:  # the field's value itself (the model error, the viscous compensation)
+            fields[name] = change
+        elif key[-1] is None:  # a value of no key: made for this run alone
+            fields[name] = _built(getattr(base, name), change)
+        else:
+            if key not in made:
+                made[key] = _built(getattr(base, name), change)
+            fields[name] = made[key]
+    return fields
+
+
+def _exact(value) -> tuple | None:
+    """A parameter's value, or nested changes, as a key that tells apart what a run could tell apart
+    (types and bits: ``0`` is not ``0.0`` nor ``-0.0`` here); None for a value of another kind."""
+    if type(value) is dict:
+        items = tuple((k, _exact(v)) for k, v in value.items())
+        return None if any(v is None for _, v in items) else items
+    if type(value) in (bool, int, str):
+        return type(value), value
+    if type(value) is float:
+        return float, struct.pack("<d", value)
+    return None
 
 
 def _simulated_row(index: int, settings: dict, exp) -> dict:
@@ -333,8 +450,22 @@ def _failure_row(index: int, settings: dict, exc: Exception) -> dict:
     return {"run": index, **settings, "status": status, "error": cause.splitlines()[0]}
 
 
-def _chunks(todo: list[tuple[int, dict]], size: int) -> list[list[tuple[int, dict]]]:
-    return [todo[i:i + size] for i in range(0, len(todo), size)]
+#: a chunk's runs: pairs of whole groups of SIMD lanes (8 runs fill AVX-512's, and twice or four times
+#: narrower ones; the runs of two schemes alternating fill theirs), 16 pairs at the most
+LANES, MOST_PAIRS = 8, 16
+
+
+def _chunks(todo: list[tuple[int, dict]], workers: int, size: int | None = None) -> list[list[tuple[int, dict]]]:
+    """``todo`` in chunks of ``size`` runs, or by default of about a quarter of each worker's share of
+    the runs left: large while many are left (few hand-overs), small at the end, so that the workers
+    finish together."""
+    chunks, start = [], 0
+    while start < len(todo):
+        pairs = math.ceil((len(todo) - start) / (4 * workers * 2 * LANES))
+        end = start + (size or 2 * LANES * min(MOST_PAIRS, pairs))
+        chunks.append(todo[start:end])
+        start = end
+    return chunks
 
 
 def _local(base, chunks, workers: int):
@@ -726,9 +857,7 @@ def _run(base, todo, todo_all, names, done_rows, engine, client, out, workers, c
          timeout=CONNECT_TIMEOUT):
     cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
     workers = max(1, min(workers or cores, len(todo) or 1))
-    # whole groups of lanes (8 runs fill AVX-512's, and twice or four times narrower ones)
-    size = chunk_size or 8 * max(1, min(8, math.ceil(len(todo) / (32 * workers))))
-    chunks = _chunks(todo, size)
+    chunks = _chunks(todo, workers, chunk_size)
     results = _local(base, chunks, workers) if engine == "local" else _dask(base, chunks, client, workers, timeout)
     rows, t0, failed = list(done_rows), time.perf_counter(), 0
     for k, chunk_rows in enumerate(results):

@@ -104,3 +104,78 @@ def test_first_lines_of_messages_are_short(overrides):
         hybrid.simulate(hybrid.paper_experiment(**overrides))
     first = str(info.value).splitlines()[0]
     assert 20 < len(first) <= 250, first
+
+
+class _Untouched:
+    """A setting that fails whatever reads it (its attributes, comparisons, conversions)."""
+
+    def __getattribute__(self, name):
+        raise AssertionError(f"a check read .{name} of a physics setting")
+
+    def _read(self, *args):
+        raise AssertionError("a check used a physics setting")
+
+    __eq__ = __ne__ = __lt__ = __le__ = __gt__ = __ge__ = __bool__ = __float__ = __int__ = __index__ = _read
+    __hash__ = __format__ = __repr__ = __str__ = __add__ = __radd__ = __mul__ = __rmul__ = __neg__ = _read
+
+
+WITH_PHYSICS_BASES = [hybrid.paper_experiment(), hybrid.tracing_experiment(frame="desired"), hybrid.panda_experiment(),
+                      hybrid.tracing_experiment(start_gap=0.002, approach_speed=0.05,
+                                                wrench_sensor=hybrid.WrenchSensor())]
+
+
+@pytest.mark.parametrize("base", WITH_PHYSICS_BASES)
+def test_only_three_checks_read_an_experiments_physics(base, monkeypatch):
+    """What Experiment.with_physics rests on: of the checks, only these three read PHYSICS."""
+    import dataclasses
+
+    from hybrid.experiments import experiment
+
+    for name in ("check_common_types", "check_sensing", "check_timing"):
+        monkeypatch.setattr(experiment, name, lambda exp: None)
+    dataclasses.replace(base, **{name: _Untouched() for name in experiment.PHYSICS})
+
+
+@pytest.mark.parametrize("changes", [
+    {"model_error": 0.3}, {"model_error": -0.0, "viscous_compensation": 0}, {"model_error": -1.0},
+    {"model_error": "10%"}, {"viscous_compensation": -0.5}, {"model_error": float("nan")},
+    {"contact": hybrid.Contact(friction=0.3)}, {"contact": hybrid.Contact(stiffness=1e12)},
+    {"sensor": hybrid.Sensor(stiffness=500.0, mass=0.05)}, {"sensor": hybrid.Sensor(delay_samples=2)},
+    {"sensor": hybrid.Sensor(bias=(0.1, 0, 0, 0, 0, 0))}, {"sensor": "sensor"}, {"contact": None},
+    {"model_error": 5.0, "contact": hybrid.Contact(stiffness=1e12)},
+])
+@pytest.mark.parametrize("base", WITH_PHYSICS_BASES)
+def test_with_physics_makes_what_replace_makes_or_raises_what_it_raises(base, changes):
+    import dataclasses
+
+    try:
+        want = dataclasses.replace(base, **changes)
+    except hybrid.HybridError as exc:
+        with pytest.raises(hybrid.HybridError) as info:
+            base.with_physics(**changes)
+        assert str(info.value) == str(exc)
+        return
+    got = base.with_physics(**changes)
+    assert got == want and got.__dict__.keys() == want.__dict__.keys()
+    assert all(type(got.__dict__[k]) is type(v) for k, v in want.__dict__.items())
+    with pytest.raises(ValueError, match="not PHYSICS"):
+        base.with_physics(gains=hybrid.Gains())
+
+
+def test_a_subclass_that_checks_its_physics_itself_is_made_whole():
+    import dataclasses
+
+    @dataclasses.dataclass(frozen=True, kw_only=True)
+    class Careful(hybrid.Experiment):
+        def __post_init__(self):
+            super().__post_init__()
+            if self.model_error > 0.2:
+                raise hybrid.HybridError("Careful: model_error > 0.2")
+
+    careful = Careful(**{f.name: getattr(hybrid.paper_experiment(duration=0.02), f.name)
+                         for f in dataclasses.fields(hybrid.Experiment)})
+    assert not Careful.physics_alone() and hybrid.Experiment.physics_alone()
+    with pytest.raises(hybrid.HybridError, match="Careful"):
+        careful.with_physics(model_error=0.3)
+    table = hybrid.sweep(careful, {"model_error": [0.1, 0.3]}, workers=1)
+    assert list(table["status"]) == ["ok", "invalid"] and table["error"][1] == "Careful: model_error > 0.2"

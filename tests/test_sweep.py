@@ -41,6 +41,58 @@ def test_rows_equal_individual_runs():
         assert_same_metrics(row, hybrid.simulate(exp).metrics)
 
 
+def test_a_sweep_is_its_runs_simulated_one_by_one_to_the_bit():
+    """Runs prepared from others alike (the model error, the contact differ) and in lanes beside others."""
+    grid = {"model_error": [0.0, 0.25, -0.0, 0.25], "contact.friction": [0.1, 0], "controller": ["task", "khatib"]}
+    table = sweep(BASE, grid, workers=2, chunk_size=8)
+    assert (table["status"] == "ok").all()
+    for (_, row), point in zip(table.iterrows(), points(grid)):
+        for name, value in hybrid.simulate(apply(BASE, point)).metrics.items():
+            assert row[name] == value or (math.isnan(value) and math.isnan(row[name])), (point, name)
+
+
+#: every setting a run can be prepared alike in (closed_loop.ROW_SETTINGS): repeated values, a whole number, -0.0,
+#: refused values
+ALIKE = {"model_error": [0.2, 0, -0.0, -1.5, 0.2], "viscous_compensation": [0.5, -0.0],
+         "contact.stiffness": [1e5, 5e4, 1e12], "contact.damping": [50.0, 0.0], "contact.friction": [0.1, -0.0, -0.1],
+         "contact.friction_smoothing": [1e-3, 2e-3], "sensor.mass": [0.025, 0.05, 0.0],
+         "sensor.stiffness": [1000.0, 800], "sensor.damping": [7.0, 5.0]}
+
+
+@pytest.mark.parametrize("names", [(name,) for name in ALIKE] + [tuple(ALIKE)], ids=[*ALIKE, "all"])
+@pytest.mark.parametrize("base", [
+    hybrid.paper_experiment(duration=0.02),
+    hybrid.tracing_experiment(duration=0.02, start_gap=0.002, approach_speed=0.05),  # the sensor's mass sags it
+], ids=["paper", "tracing"])
+def test_runs_prepared_alike_are_the_runs_prepared_alone(base, names, monkeypatch):
+    """Each run of a chunk that sweeps settings of ALIKE (each alone: the parts of the row it reaches; all at
+    once) and settings that do not make runs alike (a scheme; a sensor's noise, whose runs the Python runner
+    runs), is refused as it is alone, or its prepared row is the row it has alone, to the bit."""
+    from hybrid import sweeps
+    from hybrid.simulation import closed_loop
+
+    assert set(ALIKE) == set(closed_loop.ROW_SETTINGS)
+    real, alike = closed_loop.prepare_alike, []
+    monkeypatch.setattr(closed_loop, "prepare_alike", lambda *args: alike.append(args) or real(*args))
+    grid = {**{name: ALIKE[name] for name in names}, "controller": ["task", "khatib"], "sensor.force_noise": [0.0, 0.5]}
+    chunk = list(enumerate(points(grid, samples=300, seed=2) if len(names) > 1 else points(grid)))
+    rows, compiled = sweeps._prepared(base, chunk)
+    prepared = {index: p for index, _, _, p in compiled}
+    for index, settings in chunk:
+        try:
+            alone = closed_loop.prepare(apply(base, settings))
+        except hybrid.HybridError as exc:
+            assert rows[index]["status"] == "invalid" and rows[index]["error"] == str(exc).splitlines()[0]
+            continue
+        if alone is None:
+            assert rows[index]["status"] == "ok" and index not in prepared
+            continue
+        got = prepared[index]
+        assert got.loop is alone.loop and got.settings == alone.settings and got.experiment == alone.experiment
+        assert got.row.tobytes() == alone.row.tobytes(), settings
+    assert len(alike) >= len(compiled) - 2  # all but the first run of each scheme, in the compiled loop
+
+
 def test_grid_is_the_product_and_names_are_kept():
     grid = points(GRID)
     assert len(grid) == 8 and len({json.dumps(p, sort_keys=True) for p in grid}) == 8
@@ -273,15 +325,18 @@ def test_bad_distributions_and_bases_are_named(tmp_path):
 def test_a_run_that_breaks_unexpectedly_is_a_row(monkeypatch):
     import hybrid.simulation.closed_loop as closed_loop
 
-    def broken(exp, x0=None):
-        if exp.model_error > 0.2:
-            raise ZeroDivisionError("a defect")
-        return real(exp, x0)
+    def broken(real, at: int):
+        def prepare(*args, **kwargs):
+            if args[at].model_error > 0.2:
+                raise ZeroDivisionError("a defect")
+            return real(*args, **kwargs)
+        return prepare
 
-    real = closed_loop.prepare
-    monkeypatch.setattr(closed_loop, "prepare", broken)
-    table = sweep(BASE, {"model_error": [0.0, 0.3]}, workers=1)
-    assert list(table["status"]) == ["ok", "error"] and "ZeroDivisionError" in table["error"][1]
+    # a run prepared whole (the first that starts), and one prepared from it (its model error differs only)
+    monkeypatch.setattr(closed_loop, "prepare", broken(closed_loop.prepare, 0))
+    monkeypatch.setattr(closed_loop, "prepare_alike", broken(closed_loop.prepare_alike, 1))
+    table = sweep(BASE, {"model_error": [0.3, 0.0, 0.3]}, workers=1)
+    assert list(table["status"]) == ["error", "ok", "error"] and "ZeroDivisionError" in table["error"][2]
 
 
 DEEP = 2000

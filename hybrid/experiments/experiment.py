@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import hashlib
 import json
-from dataclasses import asdict, dataclass, field, fields
+from dataclasses import asdict, dataclass, field, fields, replace
 from functools import lru_cache
 
 import numpy as np
@@ -50,6 +50,11 @@ from hybrid.validate import SINGULAR_TOL, _point
 
 #: the committed units that can run the closed-form plant and law (the same equations, two printers)
 BACKENDS = ("sympy", "casadi")
+
+#: an experiment's physics: the controller's model error, the plant's sensor and contact. Of the
+#: experiment's checks only ``check_common_types``, ``check_sensing`` and ``check_timing`` read them
+#: (:meth:`Experiment.with_physics` runs those alone)
+PHYSICS = frozenset({"model_error", "viscous_compensation", "sensor", "contact"})
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -130,6 +135,8 @@ class Experiment(RunSettings):
     singular_tol: float = SINGULAR_TOL
 
     def __post_init__(self):
+        # the checks that read PHYSICS are check_common_types, check_sensing and check_timing: keep it so
+        # (with_physics runs them alone)
         check_common_types(self)
         if self.controller not in SCHEMES:
             raise HybridError(f"unknown controller {self.controller!r}; choose one of {', '.join(SCHEMES)}")
@@ -182,6 +189,30 @@ class Experiment(RunSettings):
             raise HybridError("frame='desired' follows the experiment's path: give a path (hybrid.CirclePath or "
                               "hybrid.LinePath), or use frame='actual'")
         check_timing(self)
+
+    def with_physics(self, **changes) -> Experiment:
+        """This experiment with other settings of :data:`PHYSICS`: what ``dataclasses.replace(self,
+        **changes)`` makes, or the refusal it raises, by the checks that read them alone (the others
+        passed for this experiment and read none of them; a sweep's runs that differ in their physics
+        only are checked at a fraction of the cost)."""
+        unknown = set(changes) - PHYSICS
+        if unknown:
+            raise ValueError(f"with_physics changes {', '.join(sorted(unknown))}, which are not PHYSICS")
+        if not self.physics_alone():
+            return replace(self, **changes)
+        exp = object.__new__(type(self))
+        exp.__dict__.update(self.__dict__)
+        exp.__dict__.update(changes)
+        check_common_types(exp)  # in __post_init__'s order: the first refusal is the one it would raise
+        check_sensing(exp)
+        check_timing(exp)
+        return exp
+
+    @classmethod
+    def physics_alone(cls) -> bool:
+        """Whether :meth:`with_physics` checks this class's physics alone: its checks are the
+        experiment's (a subclass's own checks may read the physics too; it is then made whole)."""
+        return cls.__post_init__ is Experiment.__post_init__
 
     # ------------------------------------------------------------------ derived
 

@@ -4,15 +4,18 @@
 (:mod:`hybrid.codegen.closed_loop`), or None when part of its controller runs in Python
 (references given as code, a desired path, a force/torque sensor's reading) or the plant's sensor
 has noise, a bias, a lag or a delay (the Python runner gives those); :func:`run` runs prepared
-experiments, grouped by the loop they share, one native call per group. ``simulate`` and ``sweep``
-use it; the Python runner (:func:`hybrid.simulation.runner.run`) is the reference it is tested
-against and the path that explains a run that stopped.
+experiments, grouped by the loop they share, one native call per group; :func:`prepare_alike`
+prepares a run from another that differs from it only in settings of :data:`ROW_SETTINGS` (a
+sweep's runs, mostly). ``simulate`` and ``sweep`` use it; the Python runner
+(:func:`hybrid.simulation.runner.run`) is the reference it is tested against and the path that
+explains a run that stopped.
 """
 
 from __future__ import annotations
 
 import logging
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cache
 
@@ -48,6 +51,24 @@ class Loop:
         if wrong:
             raise ValueError(f"a compiled loop's row: {'; '.join(wrong)}")
         return np.concatenate(parts)
+
+    def replaced(self, row: np.ndarray, values: dict[str, np.ndarray]) -> np.ndarray:
+        """A copy of the run's ``row`` with the blocks named in ``values`` replaced (each of its size)."""
+        row = row.copy()
+        for name, value in values.items():
+            start, size = _spans(self.blocks)[name]
+            part = np.asarray(value, float).ravel()
+            if len(part) != size:
+                raise ValueError(f"a compiled loop's row: {name} has {len(part)} numbers, not {size}")
+            row[start:start + size] = part
+        return row
+
+
+@cache
+def _spans(blocks: tuple[tuple[str, int], ...]) -> dict[str, tuple[int, int]]:
+    """Where each block of a row starts, and its size, by name."""
+    starts = np.cumsum([0] + [size for _, size in blocks]).tolist()
+    return {name: (start, size) for (name, size), start in zip(blocks, starts)}
 
 
 @cache
@@ -105,15 +126,14 @@ def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None) -> Prep
     if x0 is None:
         x0 = exp.initial_state()
         exp.check_path()
-    given = exp.plant_class.inputs(exp)
+    given = _plant_blocks(exp)
     # the build for the lanes it will run in (lanes=1: a run alone); :func:`run` takes the other if it must
     loop = _available_loop(*loop_of(exp, ctrl), lanes)
     if loop is None:
         return None
     fs, vs = exp.force_reference, exp.speed_reference
     values = {"x0": x0, "force_step": (fs.before, fs.after, fs.at), "speed_step": (vs.before, vs.after, vs.at),
-              **{f"plant.{k}": v for k, v in given.items()},
-              **{f"controller.{k}": v for k, v in ctrl.step_inputs().items()}}
+              **given, **{f"controller.{k}": v for k, v in ctrl.step_inputs().items()}}
     settings = (exp.n_samples, exp.steps_per_sample, exp.step, exp.sample_time, exp.singular_tol)
     return Prepared(exp, loop, settings, loop.row(values))
 
@@ -142,6 +162,61 @@ def build_side_by_side(experiments, lanes: int | None = 1) -> None:
             pass
     with ThreadPoolExecutor(max_workers=max(1, min(len(distinct), workers()))) as pool:
         list(pool.map(one, distinct.values()))
+
+
+def _plant_blocks(exp) -> dict[str, np.ndarray]:
+    """The plant's parameter blocks of a run's row."""
+    return {f"plant.{k}": v for k, v in exp.plant_class.inputs(exp).items()}
+
+
+#: the settings in which runs may differ and still share a prepared run (:func:`prepare_alike`), and
+#: the parts of its row each reaches: ``"model"`` the controller's model of the arm, ``"plant"`` the
+#: plant's parameters, ``"start"`` the start state. None of them reaches the rest: the loop (the
+#: controller's step, the plant's structure), its integration settings, the references, the
+#: controller's other inputs; nor whether the run is for the compiled loop at all (the sensor's
+#: noise, bias, lag and delay are not here). Any other setting makes a run prepared whole.
+ROW_SETTINGS = {
+    "model_error": ("model",), "viscous_compensation": ("model",),
+    # the start presses into the contact's and the sensor's springs, and the sensor's mass hangs on its
+    # spring in a start from free space; damping and friction act only once the arm moves
+    "contact.stiffness": ("plant", "start"), "contact.damping": ("plant",), "contact.friction": ("plant",),
+    "contact.friction_smoothing": ("plant",),
+    "sensor.mass": ("plant", "start"), "sensor.stiffness": ("plant", "start"), "sensor.damping": ("plant",),
+}
+
+
+def prepare_alike(template: Prepared, exp, parts: Iterable[str], kept: dict | None = None) -> Prepared:
+    """``exp`` prepared as :func:`prepare` prepares it, from ``template``: a prepared run (by
+    :func:`prepare`, without a given start state) whose experiment differs from ``exp`` only in
+    settings of :data:`ROW_SETTINGS` that reach ``parts``. Only those parts of the row are made again,
+    by the functions ``prepare`` calls (the same numbers), in its order (a part that raises raises what
+    ``prepare`` would). ``kept``, a dict kept between calls, holds the parts made, by what they are
+    made of, for runs that share them (a grid's runs share their values)."""
+    parts = frozenset(parts)
+    kept = {} if kept is None else kept
+    values = {}
+    if "model" in parts:  # the controller's ``robot`` input is its model's array (Controller.step_inputs)
+        # by the arm and the settings the model is made of, their types and bits (-0.0 is not 0.0 there)
+        key = ("model", id(exp.robot), *((type(v), np.float64(v).tobytes())
+                                         for v in (exp.model_error, exp.viscous_compensation)))
+        values.update(_kept(kept, key, lambda: {"controller.robot": exp.controller_robot().as_array()}, exp.robot))
+    if parts & {"start", "plant"}:  # made of the template's settings, the sensor and the contact
+        key = ("plant", parts, id(template), id(exp.sensor), id(exp.contact))
+        values.update(_kept(kept, key, lambda: _plant_values(exp, parts), template, exp.sensor, exp.contact))
+    return Prepared(exp, template.loop, template.settings, template.loop.replaced(template.row, values))
+
+
+def _plant_values(exp, parts: frozenset) -> dict[str, np.ndarray]:
+    """The start state and the plant's blocks of a run's row, as ``parts`` asks."""
+    values = {"x0": exp.initial_state()} if "start" in parts else {}
+    return {**values, **(_plant_blocks(exp) if "plant" in parts else {})}
+
+
+def _kept(kept: dict, key: tuple, make, *objects):
+    """``make()``, kept in ``kept`` by ``key`` (with the ``objects`` whose ids it holds: no id is reused)."""
+    if key not in kept:
+        kept[key] = make(), objects
+    return kept[key][0]
 
 
 @dataclass
