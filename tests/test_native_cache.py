@@ -72,6 +72,25 @@ def test_hand_edited_generated_code_is_used_with_a_warning(tmp_path, monkeypatch
         native.load.cache_clear()
 
 
+def test_a_hand_edited_committed_loop_is_used_with_a_warning(tmp_path, monkeypatch):
+    """A closed loop of ``generated/loops`` edited by hand is compiled as it is, with a warning saying so."""
+    from hybrid.native import units
+    from hybrid.simulation import closed_loop
+
+    src = tmp_path / "generated"
+    shutil.copytree(ROOT / "generated", src)
+    plant, variant = closed_loop.loop_of(hybrid.paper_experiment(controller="raibert_craig"))
+    prefix, _ = units._loop_key(plant, dict(variant), 1)
+    c = src / "loops" / f"{prefix}.c"
+    c.write_text(c.read_text() + "\n/* my tuning */\n")
+    monkeypatch.setattr(native, "source_dir", lambda: src)
+    monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
+    unit = units.loop_unit(plant, dict(variant), 1)
+    assert unit.folder == src / "loops"
+    with pytest.warns(native.HandEditedWarning, match=f"{prefix}.c in .* were edited by hand"):
+        assert unit.module.lib is not None  # compiled from the edited C
+
+
 def test_the_compiler_is_probed_once_per_process():
     native._compiler.cache_clear()
     native.compiler()

@@ -320,16 +320,20 @@ def load(backend: str = "sympy"):
     A unit edited by hand (its body no longer matches the hash in its first line) is used as it
     is, with a :class:`HandEditedWarning` saying so.
     """
+    src_dir, c_source, header = _unit(backend)
+    warn_if_hand_edited(src_dir, {f"hybrid_{backend}.c": c_source, f"hybrid_{backend}.h": header})
+    return _compile_unit(src_dir, f"hybrid_{backend}")
+
+
+def warn_if_hand_edited(src_dir: Path, texts: dict[str, str]) -> None:
+    """A :class:`HandEditedWarning` naming the committed files of ``texts`` (name: text) edited by hand."""
     import warnings
 
-    src_dir, c_source, header = _unit(backend)
-    edited = [n for n, text in ((f"hybrid_{backend}.c", c_source), (f"hybrid_{backend}.h", header))
-              if is_hand_edited(text)]
+    edited = [n for n, text in texts.items() if is_hand_edited(text)]
     if edited:
         warnings.warn(f"{', '.join(edited)} in {src_dir} were edited by hand; using them as they are "
                       "(`python -m hybrid regenerate --force` restores the generated code)",
-                      HandEditedWarning, stacklevel=3)
-    return _compile_unit(src_dir, f"hybrid_{backend}")
+                      HandEditedWarning, stacklevel=4)
 
 
 class HandEditedWarning(UserWarning):

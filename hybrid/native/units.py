@@ -19,7 +19,7 @@ import json
 from functools import cache
 from pathlib import Path
 
-from hybrid.errors import HybridError
+from hybrid.errors import HybridError, NativeBuildError
 from hybrid.native import build, stamp
 from hybrid.native.binding import Unit
 from hybrid.validate import c_identifier
@@ -96,10 +96,10 @@ def committed_key(prefix: str, key: dict) -> str:
 
 def _committed_folder(prefix: str, key: dict) -> Path | None:
     """``generated/loops`` when it holds the unit ``prefix`` for this very ``key``, else None."""
-    folder = build.source_dir() / LOOPS
     try:
+        folder = build.source_dir() / LOOPS
         index = json.loads((folder / LOOP_INDEX).read_text())["loops"]
-    except (OSError, ValueError, KeyError, TypeError):
+    except (NativeBuildError, OSError, ValueError, KeyError, TypeError):  # none committed here: generate it
         return None
     return folder if isinstance(index, dict) and index.get(prefix) == committed_key(prefix, key) else None
 
@@ -108,11 +108,16 @@ def compiled(prefix: str, key: dict, make) -> Unit:
     """The unit that ``make()`` builds: committed in ``generated/`` for this key, else generated
     (cached by ``key``, the generator's source and the versions of SymPy and CasADi); it is compiled
     (cached) and loaded when first used."""
-    folder = _committed_folder(prefix, key)
-    if folder is None:
-        folder = build.generated_unit(prefix, {**key, "generator": fingerprint(), **_tool_versions(),
-                                               "prefix": prefix}, lambda: make().files)
-    return Unit(lambda: build.load_generated(folder, prefix), build.read_manifest(folder, prefix),
+    committed = _committed_folder(prefix, key)
+    folder = committed or build.generated_unit(prefix, {**key, "generator": fingerprint(), **_tool_versions(),
+                                                        "prefix": prefix}, lambda: make().files)
+
+    def load():
+        if committed:  # C in generated/ a user may have edited: said, and used as it is
+            build.warn_if_hand_edited(folder, {n: (folder / n).read_text() for n in (f"{prefix}.c", f"{prefix}.h")})
+        return build.load_generated(folder, prefix)
+
+    return Unit(load, build.read_manifest(folder, prefix),
                 " (a wrist, elbow or shoulder singularity)",
                 {"qd": "qdot", "pd": "pdot"}, folder=folder)
 
