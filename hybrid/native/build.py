@@ -10,11 +10,9 @@ partial library; a cache entry whose checksum does not match is rebuilt, not loa
 
 from __future__ import annotations
 
-import contextlib
 import fcntl
 import hashlib
 import importlib.util
-import io
 import json
 import logging
 import os
@@ -74,6 +72,14 @@ def cache_dir() -> Path:
     root = os.environ.get("HYBRID_CACHE_DIR") or os.path.join(
         os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "hybrid")
     return Path(root)
+
+
+def ready_for_threads() -> tuple[str, str]:
+    """Read what every build reads once per process before threads build side by side: Python's build
+    variables (``sysconfig`` fills them on first use, and two threads doing it at once can read them
+    half-filled) and the compiler (returned, as :func:`compiler` gives it)."""
+    sysconfig.get_config_vars()
+    return compiler()
 
 
 def compiler() -> tuple[str, str]:
@@ -290,9 +296,9 @@ def _compile_unit(src_dir: Path, prefix: str):
         _copy_unit(path.parent, prefix, c_source, header)
         ffi = cffi.FFI()
         ffi.cdef(cdef)
-        ffi.set_source(name, f'#include "{prefix}.c"')
-        with contextlib.redirect_stdout(io.StringIO()):  # cffi announces what it writes
-            ffi.emit_c_code(str(path))
+        # quiet (cffi would announce the file on stdout; redirecting stdout is not safe beside other threads)
+        ffi.set_source(name, f'#include "{prefix}.c"', compiler_verbose=0)
+        ffi.emit_c_code(str(path))
 
     return _cached_module(f"_{prefix}", {"c": c_source, "h": header, "cffi": cffi.__version__}, write_source, [])
 

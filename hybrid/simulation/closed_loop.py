@@ -151,7 +151,7 @@ def build_side_by_side(experiments, lanes: int | None = 1) -> None:
             pass
 
     try:
-        build.compiler()  # found once, before the threads
+        build.ready_for_threads()
     except NativeBuildError:
         return  # each run says why it takes the Python runner
     distinct = {}  # one experiment per loop: two threads never build the same one
