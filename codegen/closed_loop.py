@@ -297,6 +297,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     {out_decl}
     lanes_run run;
     lanes_metrics mt;
+    hl_i at_sample;
     const long rows = (long)n_samples * steps_per_sample + 1;
     const double end = (double)(rows - 1) * h;
     long row = 0;
@@ -333,6 +334,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         tv[0] = hl_splat(k * sample_time);
         /* the plant's sensor gives the wrench on the robot itself and the surface is told: no filter, no estimate */
         {step.name}_lanes(x, x + {nq}, fc, z, last, zero, zero, tv, zero, zero, zero, pre_step, {out_args});
+        at_sample = run.alive;  /* the lanes whose state this sample starts from is recorded */
 {guards}        flag(&run, {finite}, HYBRID_NONFINITE, k);
         for (j = 0; j < {2 * m}; ++j) z[j] = {z_next}[j];
         /* the torque the rate limit starts from at the next sample */
@@ -348,7 +350,8 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
 {rk4}
             /* the row the step started from (the peak torques read each sample's torque all the same) */
             metrics_row(&mt, blk, s, {tau}, row, h, end);
-            record_outputs(outputs, g, used, row, rows, y, run.alive);
+            /* the row's output where its state is recorded (a sample's first row: before its controller's stop) */
+            record_outputs(outputs, g, used, row, rows, y, i == 0 ? at_sample : run.alive);
             ++row;
             flag(&run, hl_not_finite(x, {nx}), HYBRID_NONFINITE, k);
             /* a stopped lane restarts from its initial state: its numbers no longer matter, and they stay

@@ -70,6 +70,23 @@ def test_the_loops_output_record_is_the_plants_own(make):
     assert np.abs((res.outputs - want) / scale).max() < 1e-11
 
 
+def test_a_stopped_runs_output_record_is_there_wherever_its_state_is():
+    """A run its controller stops (a pose below a high singular_tol) records its output wherever it
+    records its state, alone and in lanes, as the plant computes it there; NaN after."""
+    from hybrid import sweeps
+
+    exp = sweeps.apply(hybrid.paper_experiment(duration=2.0), {"singular_tol": 0.5})
+    prepared = closed_loop.prepare(exp)
+    for got in (closed_loop.run([prepared], record=True)[0], closed_loop.run([prepared] * 3, record=True)[1]):
+        assert got.status != 0
+        kept = np.isfinite(got.states).all(axis=1)
+        assert 0 < kept.sum() < len(kept)
+        np.testing.assert_array_equal(np.isfinite(got.outputs).all(axis=1), kept)
+        want = exp.plant().outputs(got.states[kept])
+        scale = np.abs(want).max(axis=0) + 1e-12
+        assert np.abs((got.outputs[kept] - want) / scale).max() < 1e-11
+
+
 @pytest.mark.parametrize("overrides", [{}, {"controller": "khatib", "contact": hybrid.Contact(friction=0.3)}])
 def test_the_3d_experiment_in_c_equals_the_python_runner(overrides):
     """The UR5 on the sphere (conventions §10): the 6-joint plant and six-axis controller as lanes."""

@@ -91,6 +91,22 @@ def test_a_hand_edited_committed_loop_is_used_with_a_warning(tmp_path, monkeypat
         assert unit.module.lib is not None  # compiled from the edited C
 
 
+def test_a_committed_loop_with_a_file_missing_is_generated_instead(tmp_path, monkeypatch):
+    from hybrid.native import units
+    from hybrid.simulation import closed_loop
+
+    src = tmp_path / "generated"
+    shutil.copytree(ROOT / "generated", src)
+    plant, variant = closed_loop.loop_of(hybrid.paper_experiment(controller="raibert_craig"))
+    prefix, _ = units._loop_key(plant, dict(variant), 1)
+    (src / "loops" / f"{prefix}.c").unlink()
+    monkeypatch.setattr(native, "source_dir", lambda: src)
+    monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
+    unit = units.loop_unit(plant, dict(variant), 1)
+    assert unit.folder.parent == tmp_path / "cache" / "units"  # generated into the cache
+    assert unit.module.lib is not None
+
+
 def test_the_compiler_is_probed_once_per_process():
     native._compiler.cache_clear()
     native.compiler()

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: d4b94f467a8829d0423afe2c3e6b9ff06959ee9f8bd0b35338c9883f65ecbc8a */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 724f568fff5eadc8d2a195511b53cd99ecb1c6be088762c606896f2b6eebc1d2 */
 /* hybrid_planar_arm_circle_controller_4b54e1a71151: the paper's closed loop on a circle: controller_step.
    Emitted by hybrid's codegen/closed_loop.py. */
 #if !defined(__GNUC__)
@@ -2043,6 +2043,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     hl_v o_tau[2]; hl_v o_integrals_next[4]; hl_v o_a[2]; hl_v o_y[2]; hl_v o_f[2]; hl_v o_saturated[1]; hl_v o_filter_next[13]; hl_v o_estimate_next[10]; hl_v o_contact_wrench[6]; hl_v o_frame[1]; hl_v o_cond[1];
     lanes_run run;
     lanes_metrics mt;
+    hl_i at_sample;
     const long rows = (long)n_samples * steps_per_sample + 1;
     const double end = (double)(rows - 1) * h;
     long row = 0;
@@ -2081,6 +2082,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         tv[0] = hl_splat(k * sample_time);
         /* the plant's sensor gives the wrench on the robot itself and the surface is told: no filter, no estimate */
         controller_step_lanes(x, x + 2, fc, z, last, zero, zero, tv, zero, zero, zero, pre_step, o_tau, o_integrals_next, o_a, o_y, o_f, o_saturated, o_filter_next, o_estimate_next, o_contact_wrench, o_frame, o_cond);
+        at_sample = run.alive;  /* the lanes whose state this sample starts from is recorded */
         flag(&run, hl_fabs(o_frame[0]) < 1e-06, HYBRID_FRAME_UNDEFINED, k);
         flag(&run, hl_fabs(o_cond[0]) < singular_tol, HYBRID_SINGULAR, k);
         flag(&run, hl_not_finite(o_tau, 2) | hl_not_finite(o_integrals_next, 4) | hl_not_finite(o_a, 2) | hl_not_finite(o_y, 2) | hl_not_finite(o_f, 2) | hl_not_finite(o_saturated, 1) | hl_not_finite(o_filter_next, 13) | hl_not_finite(o_estimate_next, 10) | hl_not_finite(o_contact_wrench, 6) | hl_not_finite(o_frame, 1) | hl_not_finite(o_cond, 1), HYBRID_NONFINITE, k);
@@ -2105,7 +2107,8 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
             for (j = 0; j < 8; ++j) x[j] = x[j] + h / 6.0 * (k1[j] + 2.0 * (k2[j] + k3[j]) + k4[j]);
             /* the row the step started from (the peak torques read each sample's torque all the same) */
             metrics_row(&mt, blk, s, o_tau, row, h, end);
-            record_outputs(outputs, g, used, row, rows, y, run.alive);
+            /* the row's output where its state is recorded (a sample's first row: before its controller's stop) */
+            record_outputs(outputs, g, used, row, rows, y, i == 0 ? at_sample : run.alive);
             ++row;
             flag(&run, hl_not_finite(x, 8), HYBRID_NONFINITE, k);
             /* a stopped lane restarts from its initial state: its numbers no longer matter, and they stay

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: da688aac60e51feddb2da3290a582fe2a790ca96f854922fc6a0ff98c5615505 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 1655e8c7dd16bba0c425ae05e8dc91b26706ec0d3aa28c9fc1cb40002d62951a */
 /* hybrid_planar_arm_circle_raibert_cr_57176b91a5fa: the paper's closed loop on a circle: raibert_craig_step.
    Emitted by hybrid's codegen/closed_loop.py. */
 #if !defined(__GNUC__)
@@ -1934,6 +1934,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     hl_v o_tau[2]; hl_v o_integrals_next[4]; hl_v o_a[2]; hl_v o_y[2]; hl_v o_f[2]; hl_v o_saturated[1]; hl_v o_filter_next[13]; hl_v o_estimate_next[10]; hl_v o_contact_wrench[6]; hl_v o_frame[1]; hl_v o_cond[1];
     lanes_run run;
     lanes_metrics mt;
+    hl_i at_sample;
     const long rows = (long)n_samples * steps_per_sample + 1;
     const double end = (double)(rows - 1) * h;
     long row = 0;
@@ -1972,6 +1973,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         tv[0] = hl_splat(k * sample_time);
         /* the plant's sensor gives the wrench on the robot itself and the surface is told: no filter, no estimate */
         raibert_craig_step_lanes(x, x + 2, fc, z, last, zero, zero, tv, zero, zero, zero, pre_step, o_tau, o_integrals_next, o_a, o_y, o_f, o_saturated, o_filter_next, o_estimate_next, o_contact_wrench, o_frame, o_cond);
+        at_sample = run.alive;  /* the lanes whose state this sample starts from is recorded */
         flag(&run, hl_fabs(o_frame[0]) < 1e-06, HYBRID_FRAME_UNDEFINED, k);
         flag(&run, hl_fabs(o_cond[0]) < singular_tol, HYBRID_SINGULAR, k);
         flag(&run, hl_not_finite(o_tau, 2) | hl_not_finite(o_integrals_next, 4) | hl_not_finite(o_a, 2) | hl_not_finite(o_y, 2) | hl_not_finite(o_f, 2) | hl_not_finite(o_saturated, 1) | hl_not_finite(o_filter_next, 13) | hl_not_finite(o_estimate_next, 10) | hl_not_finite(o_contact_wrench, 6) | hl_not_finite(o_frame, 1) | hl_not_finite(o_cond, 1), HYBRID_NONFINITE, k);
@@ -1996,7 +1998,8 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
             for (j = 0; j < 8; ++j) x[j] = x[j] + h / 6.0 * (k1[j] + 2.0 * (k2[j] + k3[j]) + k4[j]);
             /* the row the step started from (the peak torques read each sample's torque all the same) */
             metrics_row(&mt, blk, s, o_tau, row, h, end);
-            record_outputs(outputs, g, used, row, rows, y, run.alive);
+            /* the row's output where its state is recorded (a sample's first row: before its controller's stop) */
+            record_outputs(outputs, g, used, row, rows, y, i == 0 ? at_sample : run.alive);
             ++row;
             flag(&run, hl_not_finite(x, 8), HYBRID_NONFINITE, k);
             /* a stopped lane restarts from its initial state: its numbers no longer matter, and they stay

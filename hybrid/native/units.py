@@ -101,7 +101,10 @@ def _committed_folder(prefix: str, key: dict) -> Path | None:
         index = json.loads((folder / LOOP_INDEX).read_text())["loops"]
     except (NativeBuildError, OSError, ValueError, KeyError, TypeError):  # none committed here: generate it
         return None
-    return folder if isinstance(index, dict) and index.get(prefix) == committed_key(prefix, key) else None
+    if not isinstance(index, dict) or index.get(prefix) != committed_key(prefix, key):
+        return None
+    # a unit whose files are not all there is generated instead
+    return folder if all((folder / f"{prefix}{ext}").is_file() for ext in (".c", ".h", ".json")) else None
 
 
 def compiled(prefix: str, key: dict, make) -> Unit:
