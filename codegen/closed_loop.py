@@ -424,8 +424,10 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
     shown = tuple(a.name for a in spec.outputs.inputs[1:])
     params = tuple(a.name for a in spec.step.inputs[len(_DRIVEN):])
     stepping = stepping_kernel(spec)
-    stages = "".join(lanes_function(k, name, fixed, "HL_STAGE", near=nq) + "\n" for k, name, fixed in (
-        (rhs, "plant_rhs_lanes", held), (stepping, "plant_rhs_signals_lanes", held + shown)))
+    # the stepping kernel is the first stage, at the step's start: the base's angles themselves
+    stages = "".join(lanes_function(k, name, fixed, "HL_STAGE", near=nq, at_base=first) + "\n"
+                     for k, name, fixed, first in ((rhs, "plant_rhs_lanes", held, False),
+                                                   (stepping, "plant_rhs_signals_lanes", held + shown, True)))
     width = f"#define HL_W {ONE_RUN_LANES if lanes == 1 else lanes}" if lanes else ""
     body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py. */\n"
             "#if !defined(__GNUC__)\n#error \"the compiled closed loop needs GCC or Clang (vector extensions)\"\n"

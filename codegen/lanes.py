@@ -20,6 +20,7 @@ import math
 
 import casadi as ca
 
+from .balance import balance
 from .casadi_backend import kernel_function
 from .kernel import Kernel
 
@@ -304,8 +305,8 @@ def _program(kernel: Kernel, fixed: tuple[str, ...] | None):
                 invariant.append(invariant[d])
                 reciprocal[d] = len(ops) - 1
             ops[v] = ("OP_MUL", (args[0], reciprocal[d]), None)
-    order = _schedule(ops)
-    return ops, order, outputs, invariant
+    balance(ops, invariant, outputs, _schedule(ops))
+    return ops, _schedule(ops), outputs, invariant
 
 
 def _schedule(ops) -> list[int]:
@@ -329,7 +330,7 @@ def _schedule(ops) -> list[int]:
 
 
 def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ...] | None = None,
-                   storage: str = "static", near: int = 0) -> str:
+                   storage: str = "static", near: int = 0, at_base: bool = False) -> str:
     """``static void <name>(const hl_v *input..., hl_v *output...)``: the kernel on ``HL_W`` lanes.
 
     Arguments are the kernel's inputs, then its core outputs (outputs, then each guard's measure),
@@ -340,7 +341,9 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
     ``<NAME>_NPRE`` vectors, and ``<name>(other inputs..., const hl_v *pre, outputs...)`` reads it.
     ``storage`` declares ``<name>`` (a caller may have it inlined). With ``near = n`` the functions take a
     last argument ``const hl_v *base``, ``(x0, sin x0, cos x0)`` for each of the first ``n`` elements of the
-    first input, and take sin and cos of those elements by rotating from there (``hl_sincos_near``).
+    first input, and take sin and cos of those elements by rotating from there (``hl_sincos_near``);
+    with ``at_base`` those elements are the base's angles themselves (an RK4 step's first stage), so
+    their sin and cos are the base's: what the rotation by zero gives, without its latency.
     """
     ops, order, outputs, invariant = _program(kernel, fixed)
     outs = kernel.core_outputs()
@@ -381,6 +384,9 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
                 fused.update(x for x in pair if x is not None)
                 s_, c_ = (f"v{x}" if x is not None else f"t{v}" for x in (pair if op == "OP_SIN" else pair[::-1]))
                 k = near_slot(v)
+                if k is not None and at_base:  # the base is this very angle: its sin and cos as they are
+                    lines.append(f"    const hl_v {s_} = base[{3 * k + 1}], {c_} = base[{3 * k + 2}];")
+                    continue
                 f, at = ("hl_sincos_near", f", base + {3 * k}") if k is not None else ("hl_sincos", "")
                 where = f"v{args[0]}{at}, &{s_}, &{c_}"
                 lines.append(f"    hl_v {s_}, {c_};")
