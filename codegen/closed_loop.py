@@ -6,8 +6,8 @@ sensor's reading, one controller step (measurement, loops, law, its guards), the
 ``steps_per_sample`` classical RK4 steps of the plant with the torque held (zero-order hold). The
 metrics of conventions §8 are updated on the fly, row by row (the definitions of
 :func:`hybrid.metrics`): a row's with its step's first stage, which gives the signals they read, the
-last row's after the last step. The joints' sin and cos are computed once a step, at its start; the
-stages rotate from there. Per-step states and torques are written only when asked.
+last row's after the last step. The joints' sin and cos are computed at a step's start only when its joints
+have moved more than 2^-5 rad since they last were; the stages rotate from there. Per-step states and torques are written only when asked.
 
 Everything a run may vary is a run-time number in its row of ``runs`` (the initial state, the
 plant's parameter arrays, the controller's, the reference steps the metrics read); the manifest
@@ -323,6 +323,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     for (j = 0; j < {2 * m}; ++j) z[j] = hl_splat(0.0);
     for (j = 0; j <= {nq}; ++j) last[j] = hl_splat(0.0);
     for (j = 0; j < {nx}; ++j) x[j] = blk[{x0} + j];
+    for (j = 0; j < {3 * nq}; ++j) base[j] = hl_splat(NAN);  /* none yet: the first step computes it */
     plant_rhs_lanes_pre({held});
     plant_outputs_lanes_pre({shown});
     plant_rhs_signals_lanes_pre({both});
@@ -342,11 +343,8 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         last[{nq}] = hl_splat(1.0);
         if (k == 0) record(states, taus, g, used, 0, rows, x, {tau}, hl_splat(0.0) == 0.0, run.alive);
         for (i = 0; i < steps_per_sample; ++i) {{
-            /* the joints' sin and cos at the step's start: its stages rotate from there */
-            for (j = 0; j < {nq}; ++j) {{
-                base[3 * j] = x[j];
-                hl_sincos(x[j], base + 3 * j + 1, base + 3 * j + 2);
-            }}
+            /* the joints' sin and cos the step's stages rotate from: its start's, or an earlier step's */
+            hl_rebase(x, base, {nq});
 {rk4}
             /* the row the step started from (the peak torques read each sample's torque all the same) */
             metrics_row(&mt, blk, s, {tau}, row, h, end);
@@ -424,10 +422,8 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
     shown = tuple(a.name for a in spec.outputs.inputs[1:])
     params = tuple(a.name for a in spec.step.inputs[len(_DRIVEN):])
     stepping = stepping_kernel(spec)
-    # the stepping kernel is the first stage, at the step's start: the base's angles themselves
-    stages = "".join(lanes_function(k, name, fixed, "HL_STAGE", near=nq, at_base=first) + "\n"
-                     for k, name, fixed, first in ((rhs, "plant_rhs_lanes", held, False),
-                                                   (stepping, "plant_rhs_signals_lanes", held + shown, True)))
+    stages = "".join(lanes_function(k, name, fixed, "HL_STAGE", near=nq) + "\n" for k, name, fixed in (
+        (rhs, "plant_rhs_lanes", held), (stepping, "plant_rhs_signals_lanes", held + shown)))
     width = f"#define HL_W {ONE_RUN_LANES if lanes == 1 else lanes}" if lanes else ""
     body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py. */\n"
             "#if !defined(__GNUC__)\n#error \"the compiled closed loop needs GCC or Clang (vector extensions)\"\n"

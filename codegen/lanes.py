@@ -137,17 +137,35 @@ static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
     }
 }
 /* sin and cos of x near x0, from base = (x0, sin x0, cos x0): x0's rotated by d = x - x0 with Taylor
-   polynomials of sin d (to d^5) and cos d - 1 (to d^4), whose truncation is below 1e-19 for |d| <= 2^-9; a
+   polynomials of sin d (to d^9) and cos d - 1 (to d^8), whose truncation is below 3e-19 for |d| <= 2^-4; a
    lane farther from x0 (or not finite) takes the polynomials (_near_poly, odd as they say) or hl_sincos
-   (_near); within 2 * 2^-52 of sin x and cos x, absolute. The stages of an RK4 step are this near its
-   start, whose sin and cos are computed once. */
+   (_near); within 2 * 2^-52 of sin x and cos x, absolute. The stages of RK4 steps are this near a base
+   that hl_rebase keeps within 2^-5 of their start. */
 static inline hl_i hl_rotate(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine) {
     const hl_v d = x - base[0], d2 = d * d;
-    const hl_v sd = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120)), cm = d2 * (-0.5 + d2 * (1.0 / 24));
+    const hl_v sd = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 * (1.0 / 362880))));
+    const hl_v cm = d2 * (-0.5 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320))));
     /* one product per sum: the compiler's fused multiply-adds are then the same for any lane count */
     *sine = (base[1] + base[1] * cm) + base[2] * sd;
     *cosine = (base[2] + base[2] * cm) - base[1] * sd;
-    return ~(hl_fabs(d) <= 0x1p-9);
+    return ~(hl_fabs(d) <= 0x1p-4);
+}
+/* base[3 j .. 3 j + 2] = (x0, sin x0, cos x0) for x[j], j < n: a lane whose angles have moved more than 2^-5
+   from its base (or whose base is not a number yet) takes its angles as its new base, computed once for the
+   steps that follow; a lane's base depends on its own angles alone */
+static inline void hl_rebase(const hl_v *x, hl_v *base, int n) {
+    hl_i far = hl_splat(0.0) != 0.0;
+    int j;
+    for (j = 0; j < n; ++j) far |= ~(hl_fabs(x[j] - base[3 * j]) <= 0x1p-5);
+    if (hl_any(far)) {
+        for (j = 0; j < n; ++j) {
+            hl_v sine, cosine;
+            hl_sincos(x[j], &sine, &cosine);
+            base[3 * j] = hl_select(far, x[j], base[3 * j]);
+            base[3 * j + 1] = hl_select(far, sine, base[3 * j + 1]);
+            base[3 * j + 2] = hl_select(far, cosine, base[3 * j + 2]);
+        }
+    }
 }
 static inline void hl_sincos_near_poly(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine, hl_i *odd) {
     const hl_i far = hl_rotate(x, base, sine, cosine);
@@ -330,7 +348,7 @@ def _schedule(ops) -> list[int]:
 
 
 def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ...] | None = None,
-                   storage: str = "static", near: int = 0, at_base: bool = False) -> str:
+                   storage: str = "static", near: int = 0) -> str:
     """``static void <name>(const hl_v *input..., hl_v *output...)``: the kernel on ``HL_W`` lanes.
 
     Arguments are the kernel's inputs, then its core outputs (outputs, then each guard's measure),
@@ -341,9 +359,7 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
     ``<NAME>_NPRE`` vectors, and ``<name>(other inputs..., const hl_v *pre, outputs...)`` reads it.
     ``storage`` declares ``<name>`` (a caller may have it inlined). With ``near = n`` the functions take a
     last argument ``const hl_v *base``, ``(x0, sin x0, cos x0)`` for each of the first ``n`` elements of the
-    first input, and take sin and cos of those elements by rotating from there (``hl_sincos_near``);
-    with ``at_base`` those elements are the base's angles themselves (an RK4 step's first stage), so
-    their sin and cos are the base's: what the rotation by zero gives, without its latency.
+    first input, and take sin and cos of those elements by rotating from there (``hl_sincos_near``).
     """
     ops, order, outputs, invariant = _program(kernel, fixed)
     outs = kernel.core_outputs()
@@ -384,9 +400,6 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
                 fused.update(x for x in pair if x is not None)
                 s_, c_ = (f"v{x}" if x is not None else f"t{v}" for x in (pair if op == "OP_SIN" else pair[::-1]))
                 k = near_slot(v)
-                if k is not None and at_base:  # the base is this very angle: its sin and cos as they are
-                    lines.append(f"    const hl_v {s_} = base[{3 * k + 1}], {c_} = base[{3 * k + 2}];")
-                    continue
                 f, at = ("hl_sincos_near", f", base + {3 * k}") if k is not None else ("hl_sincos", "")
                 where = f"v{args[0]}{at}, &{s_}, &{c_}"
                 lines.append(f"    hl_v {s_}, {c_};")

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 6c09739af190329417afb1868abce197c78a7eaea90f496115987cef2b40ab85 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: c10c62c724c8e361e4e6554829cc006be4841550497e7fe466ae492d7bc50296 */
 /* hybrid_casadi: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
    Emitted by the casadi backend of hybrid's codegen (SymPy 1.14.0, CasADi 3.8.2), generator version 5.
    Compile: cc -std=c99 -O2 -c hybrid_casadi.c (link with -lm). */
@@ -1899,17 +1899,35 @@ static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
     }
 }
 /* sin and cos of x near x0, from base = (x0, sin x0, cos x0): x0's rotated by d = x - x0 with Taylor
-   polynomials of sin d (to d^5) and cos d - 1 (to d^4), whose truncation is below 1e-19 for |d| <= 2^-9; a
+   polynomials of sin d (to d^9) and cos d - 1 (to d^8), whose truncation is below 3e-19 for |d| <= 2^-4; a
    lane farther from x0 (or not finite) takes the polynomials (_near_poly, odd as they say) or hl_sincos
-   (_near); within 2 * 2^-52 of sin x and cos x, absolute. The stages of an RK4 step are this near its
-   start, whose sin and cos are computed once. */
+   (_near); within 2 * 2^-52 of sin x and cos x, absolute. The stages of RK4 steps are this near a base
+   that hl_rebase keeps within 2^-5 of their start. */
 static inline hl_i hl_rotate(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine) {
     const hl_v d = x - base[0], d2 = d * d;
-    const hl_v sd = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120)), cm = d2 * (-0.5 + d2 * (1.0 / 24));
+    const hl_v sd = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 * (1.0 / 362880))));
+    const hl_v cm = d2 * (-0.5 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320))));
     /* one product per sum: the compiler's fused multiply-adds are then the same for any lane count */
     *sine = (base[1] + base[1] * cm) + base[2] * sd;
     *cosine = (base[2] + base[2] * cm) - base[1] * sd;
-    return ~(hl_fabs(d) <= 0x1p-9);
+    return ~(hl_fabs(d) <= 0x1p-4);
+}
+/* base[3 j .. 3 j + 2] = (x0, sin x0, cos x0) for x[j], j < n: a lane whose angles have moved more than 2^-5
+   from its base (or whose base is not a number yet) takes its angles as its new base, computed once for the
+   steps that follow; a lane's base depends on its own angles alone */
+static inline void hl_rebase(const hl_v *x, hl_v *base, int n) {
+    hl_i far = hl_splat(0.0) != 0.0;
+    int j;
+    for (j = 0; j < n; ++j) far |= ~(hl_fabs(x[j] - base[3 * j]) <= 0x1p-5);
+    if (hl_any(far)) {
+        for (j = 0; j < n; ++j) {
+            hl_v sine, cosine;
+            hl_sincos(x[j], &sine, &cosine);
+            base[3 * j] = hl_select(far, x[j], base[3 * j]);
+            base[3 * j + 1] = hl_select(far, sine, base[3 * j + 1]);
+            base[3 * j + 2] = hl_select(far, cosine, base[3 * j + 2]);
+        }
+    }
 }
 static inline void hl_sincos_near_poly(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine, hl_i *odd) {
     const hl_i far = hl_rotate(x, base, sine, cosine);

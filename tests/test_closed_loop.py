@@ -259,9 +259,9 @@ void g_many(int n, const double *x, const double *x0, double *y) {
     rng = np.random.default_rng(9)
     n = 8 * 1500
     x0 = np.concatenate([rng.uniform(-4, 4, n // 2), rng.uniform(-1e5, 1e5, n // 4), rng.uniform(-1e7, 1e7, n // 4)])
-    d = rng.uniform(-2.0**-9, 2.0**-9, n) * rng.choice([1.0, 1e-6, 0.0, 3.0], n)  # near, very near, at, far
+    d = rng.uniform(-2.0**-4, 2.0**-4, n) * rng.choice([1.0, 1e-6, 0.0, 3.0], n)  # near, very near, at, far
     x = x0 + d
-    x[:8] = [np.nan, np.inf, -np.inf, 1e300, x0[4] + 2.0**-9, x0[5] - 2.0**-9, 0.0, -0.0]
+    x[:8] = [np.nan, np.inf, -np.inf, 1e300, x0[4] + 2.0**-4, x0[5] - 2.0**-4, 0.0, -0.0]
     y = np.empty((2, n))
     module.lib.g_many(n, *(module.ffi.from_buffer("double[]", a) for a in (np.ascontiguousarray(x),
                                                                            np.ascontiguousarray(x0), y)))

@@ -89,8 +89,9 @@ def test_the_metrics_in_c_equal_their_numpy_definitions_on_the_same_record(overr
     got = closed_loop.run([closed_loop.prepare(exp)], record=True)[0]
     assert got.status == 0
     plant = PlanarPlant(exp)
-    record = plant.outputs(got.states)
-    col = {name: record[:, i] for i, name in enumerate(plant.record["outputs"])}
+    # the loop's own output record (its rows within rounding of the plant's outputs of its states)
+    np.testing.assert_allclose(got.outputs, plant.outputs(got.states), rtol=1e-12, atol=1e-9)
+    col = {name: got.outputs[:, i] for i, name in enumerate(plant.record["outputs"])}
     t = np.arange(len(got.states)) * exp.step
     ref = hybrid.metrics(t, col["Fc_n"], col["v_t"], exp.force_reference.sampled(t), exp.speed_reference.sampled(t),
                          force_step=exp.force_reference, speed_step=exp.speed_reference,

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 9c4c54c4f033a9f713be87e4939229faa2ee549a9c12939b66447fbd4510bb4c */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: bdd931b8e5c64b6468ac76dbbaa84185a6a8907f07e674f242e38acf6898643e */
 /* hybrid_planar_arm_circle_raibert_cr_57176b91a5fa: the paper's closed loop on a circle: raibert_craig_step.
    Emitted by hybrid's codegen/closed_loop.py. */
 #if !defined(__GNUC__)
@@ -118,17 +118,35 @@ static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
     }
 }
 /* sin and cos of x near x0, from base = (x0, sin x0, cos x0): x0's rotated by d = x - x0 with Taylor
-   polynomials of sin d (to d^5) and cos d - 1 (to d^4), whose truncation is below 1e-19 for |d| <= 2^-9; a
+   polynomials of sin d (to d^9) and cos d - 1 (to d^8), whose truncation is below 3e-19 for |d| <= 2^-4; a
    lane farther from x0 (or not finite) takes the polynomials (_near_poly, odd as they say) or hl_sincos
-   (_near); within 2 * 2^-52 of sin x and cos x, absolute. The stages of an RK4 step are this near its
-   start, whose sin and cos are computed once. */
+   (_near); within 2 * 2^-52 of sin x and cos x, absolute. The stages of RK4 steps are this near a base
+   that hl_rebase keeps within 2^-5 of their start. */
 static inline hl_i hl_rotate(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine) {
     const hl_v d = x - base[0], d2 = d * d;
-    const hl_v sd = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120)), cm = d2 * (-0.5 + d2 * (1.0 / 24));
+    const hl_v sd = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 * (1.0 / 362880))));
+    const hl_v cm = d2 * (-0.5 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320))));
     /* one product per sum: the compiler's fused multiply-adds are then the same for any lane count */
     *sine = (base[1] + base[1] * cm) + base[2] * sd;
     *cosine = (base[2] + base[2] * cm) - base[1] * sd;
-    return ~(hl_fabs(d) <= 0x1p-9);
+    return ~(hl_fabs(d) <= 0x1p-4);
+}
+/* base[3 j .. 3 j + 2] = (x0, sin x0, cos x0) for x[j], j < n: a lane whose angles have moved more than 2^-5
+   from its base (or whose base is not a number yet) takes its angles as its new base, computed once for the
+   steps that follow; a lane's base depends on its own angles alone */
+static inline void hl_rebase(const hl_v *x, hl_v *base, int n) {
+    hl_i far = hl_splat(0.0) != 0.0;
+    int j;
+    for (j = 0; j < n; ++j) far |= ~(hl_fabs(x[j] - base[3 * j]) <= 0x1p-5);
+    if (hl_any(far)) {
+        for (j = 0; j < n; ++j) {
+            hl_v sine, cosine;
+            hl_sincos(x[j], &sine, &cosine);
+            base[3 * j] = hl_select(far, x[j], base[3 * j]);
+            base[3 * j + 1] = hl_select(far, sine, base[3 * j + 1]);
+            base[3 * j + 2] = hl_select(far, cosine, base[3 * j + 2]);
+        }
+    }
 }
 static inline void hl_sincos_near_poly(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine, hl_i *odd) {
     const hl_i far = hl_rotate(x, base, sine, cosine);
@@ -580,9 +598,11 @@ static inline __attribute__((always_inline)) void plant_rhs_signals_lanes_core(c
     const hl_v v7 = pre[4];
     const hl_v v8 = tau[0];
     const hl_v v9 = x[1];
-    const hl_v v15 = base[4], v10 = base[5];
+    hl_v v15, v10;
+    if (exact) hl_sincos_near(v9, base + 3, &v15, &v10); else hl_sincos_near_poly(v9, base + 3, &v15, &v10, odd);
     const hl_v v11 = x[0];
-    const hl_v v14 = base[1], v12 = base[2];
+    hl_v v14, v12;
+    if (exact) hl_sincos_near(v11, base + 0, &v14, &v12); else hl_sincos_near_poly(v11, base + 0, &v14, &v12, odd);
     const hl_v v13 = v10 * v12;
     const hl_v v16 = v14 * v15;
     const hl_v v17 = v13 - v16;
@@ -1956,6 +1976,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     for (j = 0; j < 4; ++j) z[j] = hl_splat(0.0);
     for (j = 0; j <= 2; ++j) last[j] = hl_splat(0.0);
     for (j = 0; j < 8; ++j) x[j] = blk[0 + j];
+    for (j = 0; j < 6; ++j) base[j] = hl_splat(NAN);  /* none yet: the first step computes it */
     plant_rhs_lanes_pre(blk + 8, blk + 19, blk + 26, pre_rhs);
     plant_outputs_lanes_pre(blk + 8, blk + 19, blk + 26, pre_out);
     plant_rhs_signals_lanes_pre(blk + 8, blk + 19, blk + 26, pre_both);
@@ -1979,11 +2000,8 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         last[2] = hl_splat(1.0);
         if (k == 0) record(states, taus, g, used, 0, rows, x, o_tau, hl_splat(0.0) == 0.0, run.alive);
         for (i = 0; i < steps_per_sample; ++i) {
-            /* the joints' sin and cos at the step's start: its stages rotate from there */
-            for (j = 0; j < 2; ++j) {
-                base[3 * j] = x[j];
-                hl_sincos(x[j], base + 3 * j + 1, base + 3 * j + 2);
-            }
+            /* the joints' sin and cos the step's stages rotate from: its start's, or an earlier step's */
+            hl_rebase(x, base, 2);
             plant_rhs_signals_lanes(x, o_tau, pre_both, k1, s, y, base);
             for (j = 0; j < 8; ++j) xt[j] = x[j] + 0.5 * h * k1[j];
             plant_rhs_lanes(xt, o_tau, pre_rhs, k2, base);
