@@ -6,8 +6,9 @@ sensor's reading, one controller step (measurement, loops, law, its guards), the
 ``steps_per_sample`` classical RK4 steps of the plant with the torque held (zero-order hold). The
 metrics of conventions §8 are updated on the fly, row by row (the definitions of
 :func:`hybrid.metrics`): a row's with its step's first stage, which gives the signals they read, the
-last row's after the last step. The joints' sin and cos are computed at a step's start only when its joints
-have moved more than 2^-5 rad since they last were; the stages rotate from there. Per-step states and torques are written only when asked.
+last row's after the last step. The joints' sin and cos are computed at a step's start only when
+its joints have moved more than 2^-5 rad since they last were; the stages rotate from there.
+Per-step states and torques are written only when asked.
 
 Everything a run may vary is a run-time number in its row of ``runs`` (the initial state, the
 plant's parameter arrays, the controller's, the reference steps the metrics read); the manifest
