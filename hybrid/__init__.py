@@ -24,13 +24,13 @@ The public API, by subpackage:
 
 Importing the package loads neither SymPy nor CasADi and reads no file: the code generator
 runs only when a unit must be built, and :class:`ImplicitSurface` (a SymPy expression) and
-:func:`sweep` (pandas) load what they need on first use.
+:func:`sweep` (pandas) and :func:`read_controller_config` (a TOML parser) load what they need on
+first use.
 """
 
 from __future__ import annotations
 
 from hybrid._version import __version__
-from hybrid.control.config import read_controller_config
 from hybrid.control.controller import ContactLoss, Controller, Measurement, Posture, Reference
 from hybrid.control.estimation import EstimatedSurface
 from hybrid.control.identification import ToolIdentification, identify_tool, tare
@@ -65,8 +65,9 @@ from hybrid.simulation.metrics import metrics
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.runner import SimulationError, simulate
 
-#: public names loaded on first use (what they need is heavy: SymPy, pandas)
-_LAZY = {"ImplicitSurface": "hybrid.geometry.implicit", "sweep": "hybrid.sweeps"}
+#: public names loaded on first use (what they need is heavy: SymPy, pandas; a TOML parser and its schema)
+_LAZY = {"ImplicitSurface": "hybrid.geometry.implicit", "sweep": "hybrid.sweeps",
+         "read_controller_config": "hybrid.control.config"}
 
 
 def __getattr__(name: str):
