@@ -324,26 +324,37 @@ def _program(kernel: Kernel, fixed: tuple[str, ...] | None):
                 reciprocal[d] = len(ops) - 1
             ops[v] = ("OP_MUL", (args[0], reciprocal[d]), None)
     balance(ops, invariant, outputs, _schedule(ops))
-    return ops, _schedule(ops), outputs, invariant
+    return ops, _schedule(ops, [v for _, _, v in outputs]), outputs, invariant
 
 
-def _schedule(ops) -> list[int]:
-    """An order of the values in which every value follows its arguments."""
+def _schedule(ops, roots=()) -> list[int]:
+    """An order of the values in which every value follows its arguments: depth first from ``roots``
+    (then from the other values, in order), each argument just before its first user, the one on the
+    longer path first (as Sethi and Ullman order a tree). A value then lives briefly: the compiler
+    keeps the order of straight-line code, so this is what decides how many registers it needs and
+    how much it spills."""
+    height = [0] * len(ops)
+    for v in _postorder(ops, range(len(ops)), lambda v: ops[v][1]):
+        height[v] = 1 + max((height[a] for a in ops[v][1]), default=-1)
+    return _postorder(ops, [*roots, *range(len(ops))],
+                      lambda v: sorted(ops[v][1], key=lambda a: (-height[a], a)))
+
+
+def _postorder(ops, roots, arguments) -> list[int]:
+    """Every value reachable from ``roots`` after the values ``arguments(v)`` lists for it."""
     done, order = set(), []
-    for v in range(len(ops)):
-        stack = [v]
+    for root in roots:
+        stack = [(root, iter(arguments(root)))] if root not in done else []
         while stack:
-            top = stack[-1]
-            if top in done:
-                stack.pop()
+            v, pending = stack[-1]
+            a = next((a for a in pending if a not in done), None)
+            if a is not None:
+                stack.append((a, iter(arguments(a))))
                 continue
-            waiting = [a for a in ops[top][1] if a not in done]
-            if waiting:
-                stack.extend(waiting)
-            else:
-                done.add(top)
-                order.append(top)
-                stack.pop()
+            stack.pop()
+            if v not in done:
+                done.add(v)
+                order.append(v)
     return order
 
 
@@ -382,9 +393,10 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
         arg = ops[ops[v][1][0]]
         return arg[2][1] if arg[0] == "OP_INPUT" and arg[2][0] == 0 and arg[2][1] < near else None
 
-    def body(values, read_cached: bool, either: bool = False) -> list[str]:
+    def body(values, read_cached: bool, either: bool = False, stores: dict | None = None) -> list[str]:
         """C statements of ``values``: the exact functions, or with ``either`` the exact ones or the
-        polynomials as the core's ``exact`` says."""
+        polynomials as the core's ``exact`` says; ``stores[v]``, the statements storing ``v``, follow it
+        (an output written as soon as it is known is not held in a register to the end)."""
         def pick(exact: str, poly: str) -> str:
             return f"(exact ? {exact} : {poly})" if either else exact
 
@@ -405,6 +417,7 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
                 lines.append(f"    hl_v {s_}, {c_};")
                 lines.append(f"    if (exact) {f}({where}); else {f}_poly({where}, odd);" if either
                              else f"    {f}({where});")
+                lines += [line for x in pair if x is not None for line in (stores or {}).get(x, ())]
                 continue
             if read_cached and v in slot:
                 rhs = f"pre[{slot[v]}]"
@@ -418,6 +431,7 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
                 if op in _POLY:
                     rhs = pick(rhs, _POLY[op].format(a=a_))
             lines.append(f"    const hl_v v{v} = {rhs};")
+            lines += (stores or {}).get(v, ())
         return lines
 
     text = []
@@ -436,16 +450,18 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
     hot = [v for v in order if v in needed]
     unused = [*(f"    (void){a.name};" for a in hot_inputs), *(["    (void)pre;"] if split else []),
               *(["    (void)base;"] if near else [])]
-    store = [f"    {outs[o].name}[{i}] = v{v};" for o, i, v in outputs]
+    store: dict[int, list[str]] = {}
+    for o, i, v in outputs:
+        store.setdefault(v, []).append(f"    {outs[o].name}[{i}] = v{v};")
     if not any(ops[v][0] in (*_POLY, *_TRIG) and v not in slot for v in hot):
-        return "\n".join([*text, f"{storage} void {name}({', '.join(params)}) {{", *unused, *body(hot, True), *store,
-                           "}", ""])
+        return "\n".join([*text, f"{storage} void {name}({', '.join(params)}) {{", *unused,
+                           *body(hot, True, stores=store), "}", ""])
     # one core, twice: on the polynomials, and where a lane is odd everything again on the exact functions
     # (the outputs, written first, do not alias the inputs)
     args = ", ".join([*(a.name for a in hot_inputs), *(["pre"] if split else []), *(a.name for a in outs),
                       *(["base"] if near else [])])
     text += [f"static inline __attribute__((always_inline)) void {name}_core({', '.join(params)}, const int exact, "
-             "hl_i *odd) {", *unused, "    (void)odd;", *body(hot, True, either=True), *store, "}", "",
+             "hl_i *odd) {", *unused, "    (void)odd;", *body(hot, True, either=True, stores=store), "}", "",
              f"static __attribute__((noinline, cold)) void {name}_exact({', '.join(params)}) {{",
              f"    {name}_core({args}, 1, NULL);", "}", "",
              f"{storage} void {name}({', '.join(params)}) {{", "    hl_i odd = hl_splat(0.0) != 0.0;",

@@ -97,12 +97,12 @@ def harness_source(prefix: str, entry: dict, values: dict, singular_tol: float =
 
 def c_harness_ns(src_dir: Path, prefix: str, entry: dict, values: dict, calls: int, repeat: int) -> float:
     """Per-call time of a generated function inside C, by a compiled loop (the runtime's flags)."""
-    cc, _ = native.compiler()
+    cc, ident = native.compiler()
     with tempfile.TemporaryDirectory() as tmp:
         main = Path(tmp) / "bench.c"
         main.write_text(harness_source(prefix, entry, values))
         exe = Path(tmp) / "bench"
-        flags = [f for f in native.CFLAGS if f != "-fPIC"]
+        flags = [f for f in native.flags(ident) if f != "-fPIC"]
         subprocess.run([cc, *flags, f"-I{src_dir}", str(main), str(src_dir / f"{prefix}.c"),
                         "-o", str(exe), "-lm"], check=True, capture_output=True)
         out = subprocess.run([str(exe), str(calls), str(repeat)], check=True, capture_output=True, text=True)
@@ -923,7 +923,7 @@ def standalone_benchmarks(quick: bool, add) -> None:
     its step's per-call times replaying a recorded run (median, p99, p99.9, maximum), its code size and
     compile time, with the runtime's flags and with plain ``-O2``. With ``quick``: the paper's arm, 1e4 calls."""
     calls = 10_000 if quick else 1_000_000
-    bench_flags = [f for f in native.CFLAGS if f != "-fPIC"]
+    bench_flags = [f for f in native.flags(native.compiler()[1]) if f != "-fPIC"]
     builds = {" ".join(bench_flags): bench_flags, "-O2": ["-O2"]}
     for name, factory in STANDALONE.items():
         if quick and name != "paper":

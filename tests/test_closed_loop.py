@@ -15,7 +15,7 @@ from hybrid.codegen.lanes import PRELUDE, lanes_function, libm_maps
 import hybrid
 from hybrid import metrics
 from hybrid.control.controller import Controller
-from hybrid.native.build import CFLAGS, compiler
+from hybrid.native.build import compiler, flags
 from hybrid.plants.planar import PlanarPlant
 from hybrid.simulation import closed_loop
 from hybrid.simulation.runner import run
@@ -191,7 +191,7 @@ def _build(source: str, cdef: str, name: str, folder):
 
     ffi = cffi.FFI()
     ffi.cdef(cdef)
-    ffi.set_source(name, source, extra_compile_args=list(CFLAGS), libraries=["m"])
+    ffi.set_source(name, source, extra_compile_args=list(flags(compiler()[1])), libraries=["m"])
     os.environ.setdefault("CC", compiler()[0])
     so = ffi.compile(tmpdir=str(folder))
     spec = importlib.util.spec_from_file_location(name, so)
@@ -284,7 +284,8 @@ def test_vector_math_is_within_an_ulp_or_two_of_the_c_library(vector_math):
         # sin, cos: within an ulp of 1 (their own ulp near a zero, after the reduction); tanh, exp: 2 ulps
         limit = np.spacing(1.0) if absolute else 2 * np.spacing(np.abs(want))
         assert (got == want).sum() > 0.5 * len(xs)
-        assert ((np.abs(got - want) <= limit) | (got == want)).all()
+        with np.errstate(invalid="ignore"):  # inf - inf where exp overflows on both sides
+            assert ((np.abs(got - want) <= limit) | (got == want)).all()
     assert (y[4] == np.sqrt(np.abs(xs))).all()
     assert np.signbit(y[0][xs == 0]).tolist() == np.signbit(xs[xs == 0]).tolist()
 

@@ -158,3 +158,31 @@ def test_robot_names_become_ascii_c_identifiers(tmp_path):
     path.write_text(text)
     robot = hybrid.Robot.from_urdf(path, tip="tool")
     assert hybrid.arm_terms(robot, [0.0, 0.1, 0.2], [0.0, 0.0, 0.0])["B"].shape == (3, 3)
+
+
+@pytest.mark.parametrize("ident, gcc", [
+    ("cc (Debian 12.2.0-14+deb12u1) 12.2.0", True), ("gcc (GCC) 13.2.1 20231011 (Red Hat 13.2.1-4)", True),
+    ("x86_64-linux-gnu-gcc-12 (Debian 12.2.0-14) 12.2.0", True), ("gcc-13 (Homebrew GCC 13.2.0) 13.2.0", True),
+    ("clang version 16.0.6", False), ("Debian clang version 14.0.6", False),
+    ("Apple clang version 15.0.0 (clang-1500.1.0.2.5)", False), ("Ubuntu clang version 18.1.3 (1ubuntu1)", False),
+    ("Intel(R) oneAPI DPC++/C++ Compiler 2023.0.0 (2023.0.0.20221201)", False),
+])
+def test_gccs_scheduling_flags_go_to_gcc_alone(ident, gcc):
+    """GCC takes its pre-allocation scheduling flags; Clang and others (which may refuse them) do not."""
+    got = native.flags(ident)
+    assert got[:len(native.CFLAGS)] == native.CFLAGS
+    assert (set(native.GCC_FLAGS) <= set(got)) is gcc and (len(got) > len(native.CFLAGS)) is gcc
+
+
+def test_this_compiler_takes_the_flags_it_is_given(tmp_path):
+    """The flags chosen for the compiler found here compile a unit with it (and GCC's are among them
+    when it is GCC)."""
+    cc, ident = native.compiler()
+    src = tmp_path / "t.c"
+    src.write_text("double f(double x) { return x * x + 1.0; }\n")
+    proc = subprocess.run([cc, *native.flags(ident), "-shared", str(src), "-o", str(tmp_path / "t.so")],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    version = subprocess.run([cc, "-dM", "-E", "-"], input="", capture_output=True, text=True).stdout
+    is_gcc = "__GNUC__" in version and "__clang__" not in version
+    assert (set(native.GCC_FLAGS) <= set(native.flags(ident))) is is_gcc

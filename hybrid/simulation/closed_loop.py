@@ -233,6 +233,15 @@ class Outcome:
     outputs: np.ndarray | None = None
 
 
+def _records(n: int, steps: int, widths: tuple[int, ...]) -> list[np.ndarray]:
+    """``n x steps x width`` arrays for each of ``widths``, views of one block: one allocation a run,
+    which the C library's allocator then keeps for the next (three apart, freed together, can exceed
+    the size it keeps and go back to the system, to be faulted in page by page again)."""
+    block = np.empty(n * steps * sum(widths))
+    ends = np.cumsum([0, *(n * steps * w for w in widths)])
+    return [block[a:b].reshape(n, steps, w) for a, b, w in zip(ends[:-1], ends[1:], widths)]
+
+
 def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
     """Run every prepared experiment; outcomes in the same order."""
     groups: dict = {}
@@ -252,9 +261,7 @@ def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
         status, failed = np.empty(n, np.intc), np.empty(n, np.intc)
         steps = n_samples * per_sample + 1
         # every row is written: NaN from where a run stopped
-        states = np.empty((n, steps, loop.nx)) if record else None
-        taus = np.empty((n, steps, loop.nq)) if record else None
-        outputs = np.empty((n, steps, len(loop.outputs))) if record else None
+        states, taus, outputs = _records(n, steps, (loop.nx, loop.nq, len(loop.outputs))) if record else (None,) * 3
         ffi = loop.ffi
         loop.function(n, ffi.from_buffer("double[]", runs), n_samples, per_sample, h, sample_time, tol,
                       ffi.from_buffer("double[]", metrics), ffi.from_buffer("int[]", status),
