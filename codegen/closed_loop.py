@@ -177,8 +177,10 @@ typedef struct {{
         pen, in_prev, losses, t_out, touch, fd0, band, w_end, t_peak, t_last_out, t_last, tau[{nq}];
 }} lanes_metrics;
 
-static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, long i, double h,
-                        double end) {{
+/* inline: the running sums stay in registers; a window's updates are skipped on the rows where no lane is
+   in it (they would leave each value as it is: a sum there only adds +0 to a sum that is never -0) */
+static inline __attribute__((always_inline)) void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s,
+                                                              const hl_v *tau, long i, double h, double end) {{
     const hl_v fb = blk[{fs}], fa = blk[{fs + 1}], fat = blk[{fs + 2}];
     const hl_v vb = blk[{vs}], va = blk[{vs + 1}], vat = blk[{vs + 2}];
     const double ti = (double)i * h;
@@ -191,18 +193,24 @@ static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const
     const hl_i in_f = (t >= fat) & (t < f_end), in_v = t >= vat, last = t >= end - 0.2;
     const hl_i contact = s[{iN}] > 0.0;
     int j;
-    mt->peak = hl_select(in_f & (sgn * F > mt->peak), sgn * F, mt->peak);
-    mt->n_f += hl_select(in_f, hl_splat(1.0), hl_splat(0.0));
-    mt->first_f = hl_select(in_f & (mt->first_f < 0.0), idx, mt->first_f);
-    mt->last_out_f = hl_select(in_f & (hl_fabs(F - fa) > band), idx, mt->last_out_f);
-    mt->last_f = hl_select(in_f, idx, mt->last_f);
-    mt->drop = hl_select(in_f & (vd - v > mt->drop), vd - v, mt->drop);
-    mt->n_v += hl_select(in_v, hl_splat(1.0), hl_splat(0.0));
-    mt->dev = hl_select(in_v & (hl_fabs(F - Fd) > mt->dev), hl_fabs(F - Fd), mt->dev);
-    mt->v_max = hl_select(in_v & (v > mt->v_max), v, mt->v_max);
-    mt->sum_fe += hl_select(last, Fd - F, hl_splat(0.0));
-    mt->sum_ve += hl_select(last, vd - v, hl_splat(0.0));
-    mt->n_last += hl_select(last, hl_splat(1.0), hl_splat(0.0));
+    if (hl_any(in_f)) {{
+        mt->peak = hl_select(in_f & (sgn * F > mt->peak), sgn * F, mt->peak);
+        mt->n_f += hl_select(in_f, hl_splat(1.0), hl_splat(0.0));
+        mt->first_f = hl_select(in_f & (mt->first_f < 0.0), idx, mt->first_f);
+        mt->last_out_f = hl_select(in_f & (hl_fabs(F - fa) > band), idx, mt->last_out_f);
+        mt->last_f = hl_select(in_f, idx, mt->last_f);
+        mt->drop = hl_select(in_f & (vd - v > mt->drop), vd - v, mt->drop);
+    }}
+    if (hl_any(in_v)) {{
+        mt->n_v += hl_select(in_v, hl_splat(1.0), hl_splat(0.0));
+        mt->dev = hl_select(in_v & (hl_fabs(F - Fd) > mt->dev), hl_fabs(F - Fd), mt->dev);
+        mt->v_max = hl_select(in_v & (v > mt->v_max), v, mt->v_max);
+    }}
+    if (hl_any(last)) {{
+        mt->sum_fe += hl_select(last, Fd - F, hl_splat(0.0));
+        mt->sum_ve += hl_select(last, vd - v, hl_splat(0.0));
+        mt->n_last += hl_select(last, hl_splat(1.0), hl_splat(0.0));
+    }}
     mt->sum_f2 += (Fd - F) * (Fd - F);
     mt->sum_v2 += (vd - v) * (vd - v);
     mt->pen = hl_select(pen > mt->pen, pen, mt->pen);
@@ -221,9 +229,11 @@ static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const
             mt->w_end = hl_select(first, hl_select((fa != fb) & (fat > t), fat, hl_splat(INFINITY)), mt->w_end);
         }}
         in_t = (mt->touch >= 0.0) & (t < mt->w_end);
-        mt->t_peak = hl_select(in_t & (F > mt->t_peak), F, mt->t_peak);
-        mt->t_last_out = hl_select(in_t & (hl_fabs(F - mt->fd0) > mt->band), idx, mt->t_last_out);
-        mt->t_last = hl_select(in_t, idx, mt->t_last);
+        if (hl_any(in_t)) {{
+            mt->t_peak = hl_select(in_t & (F > mt->t_peak), F, mt->t_peak);
+            mt->t_last_out = hl_select(in_t & (hl_fabs(F - mt->fd0) > mt->band), idx, mt->t_last_out);
+            mt->t_last = hl_select(in_t, idx, mt->t_last);
+        }}
     }}
     for (j = 0; j < {nq}; ++j) {{
         const hl_v a = hl_fabs(tau[j]);
@@ -266,10 +276,9 @@ static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int l, lon
 
 /* the row's state of each lane in `state` and torque of each lane in `torque`; NaN for the others (a lane
    that stopped) */
-static void record(double *states, double *taus, int g, int used, long row, long rows, const hl_v *x,
-                   const hl_v *tau, hl_i state, hl_i torque) {{
+static void record_row(double *states, double *taus, int g, int used, long row, long rows, const hl_v *x,
+                       const hl_v *tau, hl_i state, hl_i torque) {{
     int l, j;
-    if (!states && !taus) return;
     for (l = 0; l < used; ++l) {{
         const long at = (long)(g + l) * rows + row;
         if (states) for (j = 0; j < {nx}; ++j) states[at * {nx} + j] = state[l] ? x[j][l] : NAN;
@@ -278,13 +287,22 @@ static void record(double *states, double *taus, int g, int used, long row, long
 }}
 
 /* the output row of each lane still running (NaN for the others) */
-static void record_outputs(double *outputs, int g, int used, long row, long rows, const hl_v *y, hl_i alive) {{
+static void record_outputs_row(double *outputs, int g, int used, long row, long rows, const hl_v *y, hl_i alive) {{
     int l, j;
-    if (!outputs) return;
     for (l = 0; l < used; ++l) {{
         const long at = (long)(g + l) * rows + row;
         for (j = 0; j < {ny}; ++j) outputs[at * {ny} + j] = alive[l] ? y[j][l] : NAN;
     }}
+}}
+
+/* what a run keeps, where it keeps it: the test inline, the copy out of line (a call spills every vector
+   register the loop holds, so a run that keeps nothing makes none) */
+static inline void record(double *states, double *taus, int g, int used, long row, long rows, const hl_v *x,
+                          const hl_v *tau, hl_i state, hl_i torque) {{
+    if (states || taus) record_row(states, taus, g, used, row, rows, x, tau, state, torque);
+}}
+static inline void record_outputs(double *outputs, int g, int used, long row, long rows, const hl_v *y, hl_i alive) {{
+    if (outputs) record_outputs_row(outputs, g, used, row, rows, y, alive);
 }}
 
 /* the runs g .. g + used - 1 as one group of HL_W lanes (unused lanes repeat run g) */

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: e73ef5a29733ab1f429e1550461cae7e0d23b2b848c756a4707a335b934c6aaf */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: fe65e0cae719aeb6869ef70907312015a148d9ce5e6d009f3154121d65521b91 */
 /* hybrid_casadi: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
    Emitted by the casadi backend of hybrid's codegen (SymPy 1.14.0, CasADi 3.8.2), generator version 5.
    Compile: cc -std=c99 -O2 -c hybrid_casadi.c (link with -lm). */
@@ -1816,6 +1816,9 @@ static inline int hl_any(hl_i m) { return _mm512_test_epi64_mask((__m512i)m, (__
 #elif defined(__AVX__) && HL_W == 4
 #include <immintrin.h>
 static inline int hl_any(hl_i m) { return !_mm256_testz_si256((__m256i)m, (__m256i)m); }
+#elif defined(__SSE4_1__) && HL_W == 2
+#include <immintrin.h>
+static inline int hl_any(hl_i m) { return !_mm_testz_si128((__m128i)m, (__m128i)m); }
 #else
 static inline int hl_any(hl_i m) {
     long long acc = 0;
@@ -1979,8 +1982,9 @@ HL_EXACT1(hl_exp, exp)
 
 /* tanh: 1 - 2 / (exp(2|x|) + 1) with the sign of x, and Cephes' rational form where |x| < 0.625
    (computed only when a lane needs it); from |x| = 20 on that is +-1 exactly, so where every lane is
-   there exp is not evaluated (a friction law sliding); odd: not a number */
-static inline hl_v hl_tanh_poly(hl_v x, hl_i *odd) {
+   there (a friction law sliding) hl_tanh_poly gives it inline, and only a lane below calls the rest
+   (a call in a kernel's middle spills every vector register it holds); odd: not a number */
+static __attribute__((noinline)) hl_v hl_tanh_below(hl_v x, hl_i *odd) {
     const hl_i small = hl_fabs(x) < 0.625;
     hl_v ax = hl_fabs(x), r;
     ax = hl_select(ax > 20.0, hl_splat(20.0), ax); /* a NaN stays NaN */
@@ -1996,6 +2000,10 @@ static inline hl_v hl_tanh_poly(hl_v x, hl_i *odd) {
             + 4.84406305325125486048e+03), r);
     }
     return hl_select(x == 0.0, x, r); /* tanh(-0) = -0 */
+}
+static inline hl_v hl_tanh_poly(hl_v x, hl_i *odd) {
+    if (hl_any(~(hl_fabs(x) >= 20.0))) return hl_tanh_below(x, odd); /* a NaN is below */
+    return hl_copysign(hl_splat(1.0), x);
 }
 HL_EXACT1(hl_tanh, tanh)
 

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 8a01afa37a9ed4493a686292e18e04544195daff225c2a1b770fd2c683486b56 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 8407095de9230d692058ddcf43eaac60c67cca082b0997201f8b4cce15974fff */
 /* hybrid_planar_arm_circle_raibert_cr_57176b91a5fa: the paper's closed loop on a circle: raibert_craig_step.
    Emitted by hybrid's codegen/closed_loop.py. */
 #if !defined(__GNUC__)
@@ -35,6 +35,9 @@ static inline int hl_any(hl_i m) { return _mm512_test_epi64_mask((__m512i)m, (__
 #elif defined(__AVX__) && HL_W == 4
 #include <immintrin.h>
 static inline int hl_any(hl_i m) { return !_mm256_testz_si256((__m256i)m, (__m256i)m); }
+#elif defined(__SSE4_1__) && HL_W == 2
+#include <immintrin.h>
+static inline int hl_any(hl_i m) { return !_mm_testz_si128((__m128i)m, (__m128i)m); }
 #else
 static inline int hl_any(hl_i m) {
     long long acc = 0;
@@ -198,8 +201,9 @@ HL_EXACT1(hl_exp, exp)
 
 /* tanh: 1 - 2 / (exp(2|x|) + 1) with the sign of x, and Cephes' rational form where |x| < 0.625
    (computed only when a lane needs it); from |x| = 20 on that is +-1 exactly, so where every lane is
-   there exp is not evaluated (a friction law sliding); odd: not a number */
-static inline hl_v hl_tanh_poly(hl_v x, hl_i *odd) {
+   there (a friction law sliding) hl_tanh_poly gives it inline, and only a lane below calls the rest
+   (a call in a kernel's middle spills every vector register it holds); odd: not a number */
+static __attribute__((noinline)) hl_v hl_tanh_below(hl_v x, hl_i *odd) {
     const hl_i small = hl_fabs(x) < 0.625;
     hl_v ax = hl_fabs(x), r;
     ax = hl_select(ax > 20.0, hl_splat(20.0), ax); /* a NaN stays NaN */
@@ -215,6 +219,10 @@ static inline hl_v hl_tanh_poly(hl_v x, hl_i *odd) {
             + 4.84406305325125486048e+03), r);
     }
     return hl_select(x == 0.0, x, r); /* tanh(-0) = -0 */
+}
+static inline hl_v hl_tanh_poly(hl_v x, hl_i *odd) {
+    if (hl_any(~(hl_fabs(x) >= 20.0))) return hl_tanh_below(x, odd); /* a NaN is below */
+    return hl_copysign(hl_splat(1.0), x);
 }
 HL_EXACT1(hl_tanh, tanh)
 
@@ -1829,8 +1837,10 @@ typedef struct {
         pen, in_prev, losses, t_out, touch, fd0, band, w_end, t_peak, t_last_out, t_last, tau[2];
 } lanes_metrics;
 
-static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, long i, double h,
-                        double end) {
+/* inline: the running sums stay in registers; a window's updates are skipped on the rows where no lane is
+   in it (they would leave each value as it is: a sum there only adds +0 to a sum that is never -0) */
+static inline __attribute__((always_inline)) void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s,
+                                                              const hl_v *tau, long i, double h, double end) {
     const hl_v fb = blk[122], fa = blk[123], fat = blk[124];
     const hl_v vb = blk[125], va = blk[126], vat = blk[127];
     const double ti = (double)i * h;
@@ -1843,18 +1853,24 @@ static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const
     const hl_i in_f = (t >= fat) & (t < f_end), in_v = t >= vat, last = t >= end - 0.2;
     const hl_i contact = s[5] > 0.0;
     int j;
-    mt->peak = hl_select(in_f & (sgn * F > mt->peak), sgn * F, mt->peak);
-    mt->n_f += hl_select(in_f, hl_splat(1.0), hl_splat(0.0));
-    mt->first_f = hl_select(in_f & (mt->first_f < 0.0), idx, mt->first_f);
-    mt->last_out_f = hl_select(in_f & (hl_fabs(F - fa) > band), idx, mt->last_out_f);
-    mt->last_f = hl_select(in_f, idx, mt->last_f);
-    mt->drop = hl_select(in_f & (vd - v > mt->drop), vd - v, mt->drop);
-    mt->n_v += hl_select(in_v, hl_splat(1.0), hl_splat(0.0));
-    mt->dev = hl_select(in_v & (hl_fabs(F - Fd) > mt->dev), hl_fabs(F - Fd), mt->dev);
-    mt->v_max = hl_select(in_v & (v > mt->v_max), v, mt->v_max);
-    mt->sum_fe += hl_select(last, Fd - F, hl_splat(0.0));
-    mt->sum_ve += hl_select(last, vd - v, hl_splat(0.0));
-    mt->n_last += hl_select(last, hl_splat(1.0), hl_splat(0.0));
+    if (hl_any(in_f)) {
+        mt->peak = hl_select(in_f & (sgn * F > mt->peak), sgn * F, mt->peak);
+        mt->n_f += hl_select(in_f, hl_splat(1.0), hl_splat(0.0));
+        mt->first_f = hl_select(in_f & (mt->first_f < 0.0), idx, mt->first_f);
+        mt->last_out_f = hl_select(in_f & (hl_fabs(F - fa) > band), idx, mt->last_out_f);
+        mt->last_f = hl_select(in_f, idx, mt->last_f);
+        mt->drop = hl_select(in_f & (vd - v > mt->drop), vd - v, mt->drop);
+    }
+    if (hl_any(in_v)) {
+        mt->n_v += hl_select(in_v, hl_splat(1.0), hl_splat(0.0));
+        mt->dev = hl_select(in_v & (hl_fabs(F - Fd) > mt->dev), hl_fabs(F - Fd), mt->dev);
+        mt->v_max = hl_select(in_v & (v > mt->v_max), v, mt->v_max);
+    }
+    if (hl_any(last)) {
+        mt->sum_fe += hl_select(last, Fd - F, hl_splat(0.0));
+        mt->sum_ve += hl_select(last, vd - v, hl_splat(0.0));
+        mt->n_last += hl_select(last, hl_splat(1.0), hl_splat(0.0));
+    }
     mt->sum_f2 += (Fd - F) * (Fd - F);
     mt->sum_v2 += (vd - v) * (vd - v);
     mt->pen = hl_select(pen > mt->pen, pen, mt->pen);
@@ -1873,9 +1889,11 @@ static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const
             mt->w_end = hl_select(first, hl_select((fa != fb) & (fat > t), fat, hl_splat(INFINITY)), mt->w_end);
         }
         in_t = (mt->touch >= 0.0) & (t < mt->w_end);
-        mt->t_peak = hl_select(in_t & (F > mt->t_peak), F, mt->t_peak);
-        mt->t_last_out = hl_select(in_t & (hl_fabs(F - mt->fd0) > mt->band), idx, mt->t_last_out);
-        mt->t_last = hl_select(in_t, idx, mt->t_last);
+        if (hl_any(in_t)) {
+            mt->t_peak = hl_select(in_t & (F > mt->t_peak), F, mt->t_peak);
+            mt->t_last_out = hl_select(in_t & (hl_fabs(F - mt->fd0) > mt->band), idx, mt->t_last_out);
+            mt->t_last = hl_select(in_t, idx, mt->t_last);
+        }
     }
     for (j = 0; j < 2; ++j) {
         const hl_v a = hl_fabs(tau[j]);
@@ -1918,10 +1936,9 @@ static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int l, lon
 
 /* the row's state of each lane in `state` and torque of each lane in `torque`; NaN for the others (a lane
    that stopped) */
-static void record(double *states, double *taus, int g, int used, long row, long rows, const hl_v *x,
-                   const hl_v *tau, hl_i state, hl_i torque) {
+static void record_row(double *states, double *taus, int g, int used, long row, long rows, const hl_v *x,
+                       const hl_v *tau, hl_i state, hl_i torque) {
     int l, j;
-    if (!states && !taus) return;
     for (l = 0; l < used; ++l) {
         const long at = (long)(g + l) * rows + row;
         if (states) for (j = 0; j < 8; ++j) states[at * 8 + j] = state[l] ? x[j][l] : NAN;
@@ -1930,13 +1947,22 @@ static void record(double *states, double *taus, int g, int used, long row, long
 }
 
 /* the output row of each lane still running (NaN for the others) */
-static void record_outputs(double *outputs, int g, int used, long row, long rows, const hl_v *y, hl_i alive) {
+static void record_outputs_row(double *outputs, int g, int used, long row, long rows, const hl_v *y, hl_i alive) {
     int l, j;
-    if (!outputs) return;
     for (l = 0; l < used; ++l) {
         const long at = (long)(g + l) * rows + row;
         for (j = 0; j < 14; ++j) outputs[at * 14 + j] = alive[l] ? y[j][l] : NAN;
     }
+}
+
+/* what a run keeps, where it keeps it: the test inline, the copy out of line (a call spills every vector
+   register the loop holds, so a run that keeps nothing makes none) */
+static inline void record(double *states, double *taus, int g, int used, long row, long rows, const hl_v *x,
+                          const hl_v *tau, hl_i state, hl_i torque) {
+    if (states || taus) record_row(states, taus, g, used, row, rows, x, tau, state, torque);
+}
+static inline void record_outputs(double *outputs, int g, int used, long row, long rows, const hl_v *y, hl_i alive) {
+    if (outputs) record_outputs_row(outputs, g, used, row, rows, y, alive);
 }
 
 /* the runs g .. g + used - 1 as one group of HL_W lanes (unused lanes repeat run g) */
