@@ -174,6 +174,28 @@ def test_gccs_scheduling_flags_go_to_gcc_alone(ident, gcc):
     assert (set(native.GCC_FLAGS) <= set(got)) is gcc and (len(got) > len(native.CFLAGS)) is gcc
 
 
+def test_a_gcc_that_fails_on_its_scheduling_flags_builds_without_them(tmp_path):
+    """A GCC that cannot take -fschedule-insns -fsched-pressure (some have failed on them) still builds,
+    without them, with a warning; the numbers are those of the build with them."""
+    real = shutil.which("gcc") or shutil.which("cc")
+    wrapper = tmp_path / "oldgcc"
+    wrapper.write_text(f"""#!/bin/sh
+[ "$1" = --version ] && {{ echo 'gcc (Old GCC) 5.4.0'; exit 0; }}
+for a in "$@"; do
+    [ "$a" = -fsched-pressure ] && {{ echo 'internal compiler error: unable to find a register' >&2; exit 1; }}
+done
+exec {real} "$@"
+""")
+    wrapper.chmod(0o755)
+    law = LAW.replace("import hybrid; ", "import hybrid, logging; logging.basicConfig(); ")
+    old = run(law, CC=str(wrapper), HYBRID_CACHE_DIR=str(tmp_path / "old"))
+    assert old.returncode == 0, old.stderr
+    assert "failed on" in old.stderr and "compiling without them" in old.stderr
+    new = run(LAW, HYBRID_CACHE_DIR=str(tmp_path / "new"))
+    assert new.returncode == 0, new.stderr
+    assert old.stdout == new.stdout
+
+
 def test_this_compiler_takes_the_flags_it_is_given(tmp_path):
     """The flags chosen for the compiler found here compile a unit with it (and GCC's are among them
     when it is GCC)."""

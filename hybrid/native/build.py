@@ -204,8 +204,16 @@ def _compile(c_file: Path, target: Path, cc: str, ident: str, includes: list[str
     so = c_file.with_name(target.name)
     paths = [str(c_file.parent), *sorted({sysconfig.get_paths()["include"], sysconfig.get_paths()["platinclude"]}),
              *includes]
-    cmd = [cc, *flags(ident), "-shared", *(f"-I{p}" for p in paths), str(c_file), "-o", str(so), "-lm"]
-    proc = subprocess.run(cmd, capture_output=True, text=True)
+    def attempt(chosen: tuple[str, ...]):
+        cmd = [cc, *chosen, "-shared", *(f"-I{p}" for p in paths), str(c_file), "-o", str(so), "-lm"]
+        return cmd, subprocess.run(cmd, capture_output=True, text=True)
+
+    cmd, proc = attempt(flags(ident))
+    if proc.returncode != 0 and flags(ident) != CFLAGS:
+        # a GCC that fails on its scheduling flags (some have, spilling): they change no number, so
+        # the build without them is the same build
+        log.warning("hybrid: %s failed on %s with %s; compiling without them", cc, c_file.name, " ".join(GCC_FLAGS))
+        cmd, proc = attempt(CFLAGS)
     if proc.returncode != 0:
         hint = ("install the Python headers (apt-get install python3-dev)" if "Python.h" in proc.stderr
                 else "the compiler's messages follow")
