@@ -11,8 +11,11 @@ the fixed inputs alone are combined first, among themselves, so their sum or pro
 value computed once, outside the hot code.
 
 The operations are the same kind and about as many; the grouping differs, so results change within
-rounding (a sum of n terms: n - 1 roundings either way). The pass is deterministic: ties break on the
-values' order, so the same program gives the same C.
+rounding (a sum of n terms: n - 1 roundings either way), NaN, infinities and signed zeros come out as
+in any grouping, and an intermediate product may overflow where the backend's order did not (factors
+beyond about 1e154 on both sides of one below 1e-154: not the magnitudes of a robot's numbers). Every
+lane runs the same program, so a state gives the same bits wherever it sits in a batch. The pass is
+deterministic: ties break on the values' order, so the same program gives the same C.
 
 A program here is :func:`codegen.lanes._program`'s: ``ops[v] = (operation, argument values, extra)``
 in single assignment, ``invariant[v]`` whether ``v`` depends on the fixed inputs alone, and the

@@ -30,6 +30,8 @@ first use.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from hybrid._version import __version__
 from hybrid.control.controller import ContactLoss, Controller, Measurement, Posture, Reference
 from hybrid.control.estimation import EstimatedSurface
@@ -64,6 +66,11 @@ from hybrid.plants.contact import Contact, Sensor
 from hybrid.simulation.metrics import metrics
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.runner import SimulationError, simulate
+
+if TYPE_CHECKING:  # type checkers see the lazy names' real signatures
+    from hybrid.control.config import read_controller_config
+    from hybrid.geometry.implicit import ImplicitSurface
+    from hybrid.sweeps import sweep
 
 #: public names loaded on first use (what they need is heavy: SymPy, pandas; a TOML parser and its schema)
 _LAZY = {"ImplicitSurface": "hybrid.geometry.implicit", "sweep": "hybrid.sweeps",

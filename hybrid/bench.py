@@ -38,6 +38,7 @@ from hybrid.models.robot import Robot
 from hybrid.models.terms import arm_terms
 from hybrid.native import build as native
 from hybrid.native import units
+from hybrid.native.binding import workers
 from hybrid.native.units import planar_unit
 from hybrid.simulation import closed_loop
 from hybrid.simulation.runner import simulate
@@ -632,8 +633,9 @@ def spatial_law_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool
     ops = kernel_function(law_kernels(robot.chain, sphere.spec(), law.axes)[1]).n_instructions()
     values = {"q": q, "qd": qd, "a": a, "Fc": Fc, "tau0": np.zeros(robot.n), "robot": robot.as_array(),
               "surface": sphere.as_array(), "e": [0.0, 0.0, 1.0], "opts": [1.0]}
-    add(f"{name}: {LAW_IN_C}", c_harness_ns(unit.folder, unit.manifest["unit"], unit.entry("decoupling_law"), values,
-                                            50_000 if quick else 500_000, rep), ratio=f"{ops} generated operations")
+    in_c = c_harness_ns(unit.folder, unit.manifest["unit"], unit.entry("decoupling_law"), values,
+                        50_000 if quick else 500_000, rep)
+    add(f"{name}: {LAW_IN_C}", in_c, ratio=f"{ops} generated operations")
     ours = _median_ns(lambda: law(q, qd, a, Fc), 2000 if quick else 20000, rep)
     N = 10_000 if quick else 100_000
     Q, QD = np.tile(q, (N, 1)) + rng.normal(0, 0.05, (N, robot.n)), rng.normal(0, 0.5, (N, robot.n))
@@ -647,7 +649,8 @@ def spatial_law_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool
             ratio=f"bitwise: {'yes' if bitwise else 'no'} (a state alone in a batch of one, against the same state "
                   "inside this batch)")
         if one_core is not None:
-            add(f"{name}: {LAW_BATCHED_ONE_CORE}", one_core, ratio=f"{one_core / batched:.2f}x the time on both cores")
+            add(f"{name}: {LAW_BATCHED_ONE_CORE}", one_core,
+                ratio=f"{one_core / in_c:.2f}x a call in C, {one_core / batched:.2f}x the time on both cores")
 
     try:
         import pinocchio as pin
@@ -718,7 +721,7 @@ def sweep_benchmarks(quick: bool, add) -> None:
         t0 = time.perf_counter()
         table = sweep(exp, grid)
         per_run = (time.perf_counter() - t0) / len(table)
-        add(name, per_run * total, "s", ratio=f"{per_run * 1e3:.2f} ms a run, measured on {len(table)} runs")
+        _add_sweep(add, name, total, per_run, len(table), share / 1e3)
 
 
 def trace_benchmarks(quick: bool, add) -> None:
@@ -738,7 +741,17 @@ def trace_benchmarks(quick: bool, add) -> None:
     t0 = time.perf_counter()
     table = sweep(tracing_experiment(), grid)
     per_run = (time.perf_counter() - t0) / len(table)
-    add(SWEEP_3D, per_run * 1000, "s", ratio=f"{per_run * 1e3:.2f} ms a run, measured on {len(table)} runs")
+    _add_sweep(add, SWEEP_3D, 1000, per_run, len(table), share / 1e3)
+
+
+def _add_sweep(add, name: str, total: int, per_run: float, measured: int, share: float) -> None:
+    """A sweep's row: ``total`` runs at ``per_run`` [s] each (``measured`` timed), against the bound
+    of its lanes, a run's ``share`` [s] of a group of lanes on one core over the cores a sweep runs on
+    (what is left is Python, forking, the table)."""
+    of_bound = per_run / (share / workers())
+    add(name, per_run * total, "s", of_bound=of_bound,
+        ratio=f"{per_run * 1e3:.2f} ms a run, measured on {measured} runs; {of_bound:.2f}x the lanes bound "
+              f"({share * 1e3:.2f} ms a run over {workers()} cores)")
 
 
 def loop_operations(exp) -> dict:
