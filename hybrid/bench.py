@@ -714,6 +714,11 @@ def sweep_benchmarks(quick: bool, add) -> None:
     share = _median_ns(lambda: closed_loop.run(prepared), 1, 3 if quick else 7) / 1e6 / len(prepared)
     add(ONE_RUN, one, "ms", ratio=f"{one / share:.1f}x the per-run share of a lanes batch", of_share=one / share)
     add(LOOP_RUN, share, "ms", ratio=f"{lanes} runs a group of lanes")
+    # the sweeps' own mix of runs in lanes (both schemes, both frictions): their bound
+    mix = [closed_loop.prepare(apply(exp, {"model_error": m, "controller": c, "contact.friction": f}))
+           for m in np.linspace(0.0, 0.5, 32) for c in ("task", "khatib") for f in (0.1, 0.2)]
+    closed_loop.run(mix)
+    mix_share = _median_ns(lambda: closed_loop.run(mix), 1, 3 if quick else 5) / 1e6 / len(mix)
     for total, name in ((1000, SWEEP_1000), (10000, SWEEP_10000)):
         n = 100 if quick else total
         grid = {"model_error": list(np.linspace(0.0, 0.5, n // 4)), "controller": ["task", "khatib"],
@@ -721,7 +726,7 @@ def sweep_benchmarks(quick: bool, add) -> None:
         t0 = time.perf_counter()
         table = sweep(exp, grid)
         per_run = (time.perf_counter() - t0) / len(table)
-        _add_sweep(add, name, total, per_run, len(table), share / 1e3)
+        _add_sweep(add, name, total, per_run, len(table), mix_share / 1e3)
 
 
 def trace_benchmarks(quick: bool, add) -> None:
