@@ -177,10 +177,10 @@ typedef struct {{
         pen, in_prev, losses, t_out, touch, fd0, band, w_end, t_peak, t_last_out, t_last, tau[{nq}];
 }} lanes_metrics;
 
-/* inline: the running sums stay in registers; a window's updates are skipped on the rows where no lane is
-   in it (they would leave each value as it is: a sum there only adds +0 to a sum that is never -0) */
-static inline __attribute__((always_inline)) void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s,
-                                                              const hl_v *tau, long i, double h, double end) {{
+/* a window's updates are skipped on the rows where no lane is in it (they would leave each value as it
+   is: a sum there only adds +0 to a sum that is never -0) */
+HL_ROW void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, long i, double h,
+                        double end) {{
     const hl_v fb = blk[{fs}], fa = blk[{fs + 1}], fat = blk[{fs + 2}];
     const hl_v vb = blk[{vs}], va = blk[{vs + 1}], vat = blk[{vs + 2}];
     const double ti = (double)i * h;
@@ -413,10 +413,17 @@ int {prefix}_lanes(void) {{
 #: a small RK4 stage is inlined into the loop where lanes are many (measured on the paper's plant: 10 %
 #: faster with 8 lanes, 8 % slower with one, where the loop is bound by latency, not throughput); a large
 #: one is not (the UR5's: the same speed, twice the compile time)
+#: and the metrics' row likewise (the paper's: 4 % faster with 8 lanes; with the two of a run alone the
+#: same speed, and a tenth of a second longer to compile on a first run)
 _STAGE = """#if HL_W > 1 && {small}
 #define HL_STAGE static inline __attribute__((always_inline))
 #else
 #define HL_STAGE static
+#endif
+#if HL_W > 2
+#define HL_ROW static inline __attribute__((always_inline))
+#else
+#define HL_ROW static
 #endif"""
 #: the most lines of C the two stage functions may have to be inlined (the paper's plant: about 900; the
 #: UR5's: about 11,000)

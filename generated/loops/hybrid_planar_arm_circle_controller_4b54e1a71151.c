@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 032a3ed371240f5b5e03f390084878d41acf06d39483a9c2a9de961bd447af57 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 4e921b31c5f2fed239de21dc09a236de3bb1ef4e3539cc71e5396bd2d939bb95 */
 /* hybrid_planar_arm_circle_controller_4b54e1a71151: the paper's closed loop on a circle: controller_step.
    Emitted by hybrid's codegen/closed_loop.py. */
 #if !defined(__GNUC__)
@@ -36,7 +36,7 @@ static inline int hl_any(hl_i m) { return _mm512_test_epi64_mask((__m512i)m, (__
 #include <immintrin.h>
 static inline int hl_any(hl_i m) { return !_mm256_testz_si256((__m256i)m, (__m256i)m); }
 #elif defined(__SSE4_1__) && HL_W == 2
-#include <immintrin.h>
+#include <smmintrin.h> /* not immintrin.h: that one takes a sixth of a second to compile */
 static inline int hl_any(hl_i m) { return !_mm_testz_si128((__m128i)m, (__m128i)m); }
 #else
 static inline int hl_any(hl_i m) {
@@ -256,6 +256,11 @@ HL_MAP2(hl_pow, pow)
 #define HL_STAGE static inline __attribute__((always_inline))
 #else
 #define HL_STAGE static
+#endif
+#if HL_W > 2
+#define HL_ROW static inline __attribute__((always_inline))
+#else
+#define HL_ROW static
 #endif
 #define PLANT_RHS_LANES_NPRE 28
 static void plant_rhs_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
@@ -1951,10 +1956,10 @@ typedef struct {
         pen, in_prev, losses, t_out, touch, fd0, band, w_end, t_peak, t_last_out, t_last, tau[2];
 } lanes_metrics;
 
-/* inline: the running sums stay in registers; a window's updates are skipped on the rows where no lane is
-   in it (they would leave each value as it is: a sum there only adds +0 to a sum that is never -0) */
-static inline __attribute__((always_inline)) void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s,
-                                                              const hl_v *tau, long i, double h, double end) {
+/* a window's updates are skipped on the rows where no lane is in it (they would leave each value as it
+   is: a sum there only adds +0 to a sum that is never -0) */
+HL_ROW void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, long i, double h,
+                        double end) {
     const hl_v fb = blk[122], fa = blk[123], fat = blk[124];
     const hl_v vb = blk[125], va = blk[126], vat = blk[127];
     const double ti = (double)i * h;
