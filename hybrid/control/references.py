@@ -25,7 +25,7 @@ class Step:
 
     def sampled(self, t: np.ndarray) -> np.ndarray:
         """The reference at each time of ``t`` [s] (one array operation)."""
-        return np.where(np.asarray(t) < self.at, self.before, self.after).astype(float)
+        return np.where(np.asarray(t) < self.at, np.float64(self.before), np.float64(self.after))
 
     def integral(self, t):
         """``int_0^t`` of the reference (arc length for a speed) [unit s]; ``t`` a time or an array."""
