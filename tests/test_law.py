@@ -182,6 +182,26 @@ def test_batched_law_writes_into_the_callers_arrays(rng):
         law(s["q"][0], s["qdot"][0], s["a"][0], s["Fc"][0], out=np.empty((1, 2)))
 
 
+def test_a_batchs_own_arrays_are_apart(rng):
+    """The outputs a batch allocates (one block between them) are each its own C-contiguous, writable
+    array: writing one changes no other, and a partly given ``out`` leaves the rest as computed."""
+    law = hybrid.decoupling_law(hybrid.paper_arm(), hybrid.Circle((0.5, 0.0), 0.2), curvature=True)
+    s = random_states(rng, 3000)
+    F, tau = law.evaluate(s["q"], s["qdot"], s["a"], s["Fc"])
+    want_F, want_tau = F.copy(), tau.copy()
+    for a in (F, tau):
+        assert a.flags.c_contiguous and a.flags.writeable and a.shape == (3000, 2)
+    F[:] = np.nan
+    np.testing.assert_array_equal(tau, want_tau)
+    tau[:] = np.inf
+    assert np.isnan(F).all()
+    mine = np.empty((3000, 2))
+    F2, tau2 = law.evaluate(s["q"], s["qdot"], s["a"], s["Fc"], out=(mine, None))
+    assert F2 is mine
+    np.testing.assert_array_equal(F2, want_F)
+    np.testing.assert_array_equal(tau2, want_tau)
+
+
 @pytest.mark.parametrize("backend", BACKENDS)
 def test_batched_lanes_do_not_depend_on_position_or_split(rng, backend):
     """A batch runs as SIMD lanes (a partly filled last group, a split over the cores): every state

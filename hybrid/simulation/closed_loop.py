@@ -23,7 +23,7 @@ import numpy as np
 
 from hybrid.errors import HybridError, NativeBuildError
 from hybrid.native import build, units
-from hybrid.native.binding import workers
+from hybrid.native.binding import one_block, workers
 
 log = logging.getLogger("hybrid")
 
@@ -234,13 +234,9 @@ class Outcome:
 
 
 def _records(n: int, steps: int, widths: tuple[int, ...]) -> list[np.ndarray]:
-    """``n x steps x width`` arrays for each of ``widths``, views of one block: one allocation a run,
-    which the C library's allocator then keeps for the next (three apart, freed together, can exceed
-    the size it keeps and go back to the system, to be faulted in page by page again). One array kept
-    keeps the block (a run's torques alone hold its states and outputs too)."""
-    block = np.empty(n * steps * sum(widths))
-    ends = np.cumsum([0, *(n * steps * w for w in widths)])
-    return [block[a:b].reshape(n, steps, w) for a, b, w in zip(ends[:-1], ends[1:], widths)]
+    """``n x steps x width`` arrays for each of ``widths``, views of one block (:func:`one_block`: a
+    run's torques alone hold its states and outputs too)."""
+    return [a.reshape(n, steps, w) for a, w in zip(one_block(n * steps, widths), widths)]
 
 
 def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
