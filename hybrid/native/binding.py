@@ -250,6 +250,10 @@ class Function:
         if out is not None and not isinstance(out, dict):
             raise HybridError(f"out must map output names to arrays, got {type(out).__name__}")
         given = out or {}
+        unknown = set(given) - {n for n, _, _ in self.outputs}
+        if unknown:  # before the outputs' block is allocated
+            raise HybridError(f"out names {', '.join(sorted(unknown))}; {self.name} writes "
+                              f"{', '.join(n for n, _, _ in self.outputs)}")
         fresh = [(n, size) for n, size, _ in self.outputs if given.get(n) is None]
         made = dict(zip((n for n, _ in fresh), one_block(N, [size for _, size in fresh])))
         outs = {n: made[n] if n in made else self._out_buffer(n, N, size, shape, given[n])
@@ -261,9 +265,6 @@ class Function:
             return self.batch_into(*rows, *(v[lo:hi] for v in outs.values()), status=status[lo:hi],
                                    singular_tol=singular_tol)
 
-        unknown = set(out or {}) - set(outs)
-        if unknown:
-            raise HybridError(f"out names {', '.join(sorted(unknown))}; {self.name} writes {', '.join(outs)}")
         failed = sum(parallel_chunks(run, N))
         if failed:
             i = int(np.flatnonzero(status)[0])
