@@ -430,6 +430,22 @@ _STAGE = """#if HL_W > 1 && {small}
 _INLINE_LINES = 3000
 
 
+#: a unit compiled in two parts at once, one compiler each (``-DHL_PART=1`` and ``-DHL_PART=2``, linked
+#: together, with a binding compiled as ``-DHL_PART=0``, which only declares: :mod:`hybrid.native.build`):
+#: the second holds the functions the loop calls out of line (the plant's output record, the controller
+#: step, what a run computes once, the exact functions' pass), the first the loop with its stages inlined.
+#: A first run waits for the longer part, not for the whole. Without ``HL_PART`` it is one unit as any other.
+PARTS = """#ifdef HL_PART
+#define HL_APART __attribute__((visibility("hidden")))
+#define HL_IN_PART(n) (HL_PART == (n))
+#else
+#define HL_APART static
+#define HL_IN_PART(n) 1
+#endif"""
+#: the parts the manifest's ``parts`` names
+N_PARTS = 2
+
+
 #: the lanes of the build for one run at a time, each the same run: two (the 128-bit vectors of every
 #: x86-64 and ARM processor). One lane alone is slower by about a tenth (the paper's run and the 3-D
 #: one): GCC turns a vector of one into scalar and integer code (the masks, selects and absolute values
@@ -448,15 +464,17 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
     shown = tuple(a.name for a in spec.outputs.inputs[1:])
     params = tuple(a.name for a in spec.step.inputs[len(_DRIVEN):])
     stepping = stepping_kernel(spec)
-    stages = "".join(lanes_function(k, name, fixed, "HL_STAGE", near=nq) + "\n" for k, name, fixed in (
+    stages = "".join(lanes_function(k, name, fixed, "HL_STAGE", near=nq, apart=True) + "\n" for k, name, fixed in (
         (rhs, "plant_rhs_lanes", held), (stepping, "plant_rhs_signals_lanes", held + shown)))
     width = f"#define HL_W {ONE_RUN_LANES if lanes == 1 else lanes}" if lanes else ""
     body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py. */\n"
             "#if !defined(__GNUC__)\n#error \"the compiled closed loop needs GCC or Clang (vector extensions)\"\n"
             f"#endif\n{width}\n{PRELUDE}\n{status_defines()}\n\n{libm_maps()}\n"
-            f"{_STAGE.format(small=int(stages.count(chr(10)) <= _INLINE_LINES))}\n{stages}"
-            f"{lanes_function(spec.outputs, 'plant_outputs_lanes', shown)}\n"
-            f"{lanes_function(spec.step, spec.step.name + '_lanes', params)}\n{_driver(prefix, spec, stepping)}")
+            f"{PARTS}\n{_STAGE.format(small=int(stages.count(chr(10)) <= _INLINE_LINES))}\n{stages}"
+            f"{lanes_function(spec.outputs, 'plant_outputs_lanes', shown, 'HL_APART', apart=True)}\n"
+            f"{lanes_function(spec.step, spec.step.name + '_lanes', params, 'HL_APART', apart=True)}\n"
+            f"#if HL_IN_PART(1)\n{_driver(prefix, spec, stepping)}#else\n{_signature(prefix)};\n"
+            f"int {prefix}_lanes(void);\n#endif\n")
     doc = ("run nruns closed loops (rows of runs, blocks as the manifest's closed_loop.blocks), HL_W at a time: "
            "n_samples control samples of sample_time [s], steps_per_sample RK4 steps of h [s] each; writes "
            "metrics (nruns x closed_loop.metrics), status and failed_sample (-1, or the sample where a run "
@@ -478,5 +496,5 @@ int {prefix}_lanes(void);
             "metrics": [*METRICS, *(f"peak_torque_joint{j + 1}_Nm" for j in range(nq))],
             "signals": [*spec.force_columns, *SIGNALS],
             "outputs": list(stepping.outputs[2].names)}
-    text = manifest(prefix, (), f"CasADi {ca.__version__}", {**info, "closed_loop": loop})
+    text = manifest(prefix, (), f"CasADi {ca.__version__}", {**info, "parts": N_PARTS, "closed_loop": loop})
     return Unit(prefix, stamp(body), stamp(header), text)

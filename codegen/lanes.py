@@ -367,7 +367,7 @@ def _postorder(ops, roots, arguments) -> list[int]:
 
 
 def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ...] | None = None,
-                   storage: str = "static", near: int = 0) -> str:
+                   storage: str = "static", near: int = 0, apart: bool = False) -> str:
     """``static void <name>(const hl_v *input..., hl_v *output...)``: the kernel on ``HL_W`` lanes.
 
     Arguments are the kernel's inputs, then its core outputs (outputs, then each guard's measure),
@@ -379,6 +379,11 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
     ``storage`` declares ``<name>`` (a caller may have it inlined). With ``near = n`` the functions take a
     last argument ``const hl_v *base``, ``(x0, sin x0, cos x0)`` for each of the first ``n`` elements of the
     first input, and take sin and cos of those elements by rotating from there (``hl_sincos_near``).
+
+    With ``apart`` the functions called out of line (``<name>_pre`` and the exact functions' pass, and
+    ``<name>`` itself where ``storage`` is ``HL_APART``) are defined in a unit's second part, for a
+    build that compiles a unit in two parts at once (:data:`codegen.closed_loop.PARTS` defines the
+    macros); elsewhere they are declared.
     """
     ops, order, outputs, invariant = _program(kernel, fixed)
     outs = kernel.core_outputs()
@@ -442,16 +447,24 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
             lines += (stores or {}).get(v, ())
         return lines
 
+    def define(signature: str, lines: list[str], there: bool | None = None) -> list[str]:
+        """A function's definition; where it is compiled apart (``there``, by default ``apart``), in the
+        unit's second part only, declared in the first."""
+        whole = [f"{signature} {{", *lines, "}"]
+        return ["#if HL_IN_PART(2)", *whole, "#else", f"{signature};", "#endif"] if (
+            apart if there is None else there) else whole
+
     text = []
     hot_inputs = [a for a in kernel.inputs if a.name not in fixed]
     if split:
         pre_inputs = [a for a in kernel.inputs if a.name in fixed]
         pre_params = ", ".join([*(f"const hl_v *{a.name}" for a in pre_inputs), "hl_v *pre"])
         needed = _closure(ops, cached)
-        text += [f"#define {name.upper()}_NPRE {max(len(cached), 1)}", f"static void {name}_pre({pre_params}) {{",
-                 *body([v for v in order if v in needed], False),
-                 *(f"    pre[{slot[v]}] = v{v};" for v in cached),
-                 *(f"    (void){a.name};" for a in pre_inputs), "    (void)pre;", "}", ""]
+        text += [f"#define {name.upper()}_NPRE {max(len(cached), 1)}",
+                 *define(f"{'HL_APART' if apart else 'static'} void {name}_pre({pre_params})",
+                         [*body([v for v in order if v in needed], False),
+                          *(f"    pre[{slot[v]}] = v{v};" for v in cached),
+                          *(f"    (void){a.name};" for a in pre_inputs), "    (void)pre;"]), ""]
     params = ([f"const hl_v *{a.name}" for a in hot_inputs] + (["const hl_v *pre"] if split else [])
               + [f"hl_v *{a.name}" for a in outs] + (["const hl_v *base"] if near else []))
     needed = _closure(ops, [v for _, _, v in outputs], stop=set(slot))
@@ -462,18 +475,19 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
     for o, i, v in outputs:
         store.setdefault(v, []).append(f"    {outs[o].name}[{i}] = v{v};")
     if not any(ops[v][0] in (*_POLY, *_TRIG) and v not in slot for v in hot):
-        return "\n".join([*text, f"{storage} void {name}({', '.join(params)}) {{", *unused,
-                           *body(hot, True, stores=store), "}", ""])
+        return "\n".join([*text, *define(f"{storage} void {name}({', '.join(params)})",
+                                          [*unused, *body(hot, True, stores=store)], storage == "HL_APART"), ""])
     # one core, twice: on the polynomials, and where a lane is odd everything again on the exact functions
     # (the outputs, written first, do not alias the inputs)
     args = ", ".join([*(a.name for a in hot_inputs), *(["pre"] if split else []), *(a.name for a in outs),
                       *(["base"] if near else [])])
     text += [f"static inline __attribute__((always_inline)) void {name}_core({', '.join(params)}, const int exact, "
              "hl_i *odd) {", *unused, "    (void)odd;", *body(hot, True, either=True, stores=store), "}", "",
-             f"static __attribute__((noinline, cold)) void {name}_exact({', '.join(params)}) {{",
-             f"    {name}_core({args}, 1, NULL);", "}", "",
-             f"{storage} void {name}({', '.join(params)}) {{", "    hl_i odd = hl_splat(0.0) != 0.0;",
-             f"    {name}_core({args}, 0, &odd);", f"    if (hl_any(odd)) {name}_exact({args});", "}", ""]
+             *define(f"{'HL_APART' if apart else 'static'} __attribute__((noinline, cold)) void "
+                     f"{name}_exact({', '.join(params)})", [f"    {name}_core({args}, 1, NULL);"]), "",
+             *define(f"{storage} void {name}({', '.join(params)})",
+                     ["    hl_i odd = hl_splat(0.0) != 0.0;", f"    {name}_core({args}, 0, &odd);",
+                      f"    if (hl_any(odd)) {name}_exact({args});"], storage == "HL_APART"), ""]
     return "\n".join(text)
 
 

@@ -10,6 +10,7 @@ import sys
 import warnings
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import hybrid
@@ -208,3 +209,83 @@ def test_this_compiler_takes_the_flags_it_is_given(tmp_path):
     version = subprocess.run([cc, "-dM", "-E", "-"], input="", capture_output=True, text=True).stdout
     is_gcc = "__GNUC__" in version and "__clang__" not in version
     assert (set(native.GCC_FLAGS) <= set(native.flags(ident))) is is_gcc
+
+
+def _paper_loop(tmp_path: Path, parts: int | None):
+    """The committed loop of the paper's run alone, compiled from a copy whose manifest says ``parts``
+    (None: says nothing), and the prefix of its unit."""
+    index = json.loads((ROOT / "generated" / "loops" / "index.json").read_text())["loops"]
+    prefix = next(p for p in index if "controller" in p)
+    src = tmp_path / f"src{parts}"
+    src.mkdir()
+    for ext in ("c", "h", "json"):
+        shutil.copy(ROOT / "generated" / "loops" / f"{prefix}.{ext}", src)
+    data = json.loads((src / f"{prefix}.json").read_text())
+    data.pop("parts", None)
+    if parts is not None:
+        data["parts"] = parts
+    (src / f"{prefix}.json").write_text(json.dumps(data))
+    return native.load_generated(src, prefix), prefix
+
+
+def test_a_loop_compiled_in_parts_computes_what_it_computes_whole(tmp_path, monkeypatch):
+    """The closed loop's unit is compiled in the parts its manifest names, at once, and linked: the same
+    run gives the same bits, states and metrics, as the unit compiled whole."""
+    from hybrid.simulation import closed_loop
+
+    monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
+    manifest = json.loads(next((ROOT / "generated" / "loops").glob("*controller*.json")).read_text())
+    assert manifest["parts"] == 2
+    together = []
+    real = native._run_together
+    monkeypatch.setattr(native, "_run_together", lambda cmds: together.append(cmds) or real(cmds))
+    runs = {}
+    exp = hybrid.paper_experiment(duration=0.3)
+    row = closed_loop.prepare(exp, lanes=1).row
+    for parts in (2, None):
+        module, prefix = _paper_loop(tmp_path, parts)
+        ffi, lib = module.ffi, module.lib
+        steps = exp.n_samples * exp.steps_per_sample + 1
+        metrics, states = np.empty(18), np.empty((steps, 8))
+        status, failed = np.empty(1, np.intc), np.empty(1, np.intc)
+        getattr(lib, f"{prefix}_closed_loop")(1, ffi.from_buffer("double[]", row), exp.n_samples, exp.steps_per_sample,
+                                              exp.step, exp.sample_time, exp.singular_tol,
+                                              ffi.from_buffer("double[]", metrics), ffi.from_buffer("int[]", status),
+                                              ffi.from_buffer("int[]", failed), ffi.from_buffer("double[]", states),
+                                              ffi.NULL, ffi.NULL)
+        assert status[0] == 0
+        runs[parts] = metrics, states
+    # the binding and both parts, each by its own compiler, once (the whole unit is one command)
+    compiled = [[c[c.index("-c") + 1] for c in cmds] for cmds in together]
+    assert compiled == [["-DHL_PART=0", "-DHL_PART=1", "-DHL_PART=2"]]
+    assert np.array_equal(runs[2][0], runs[None][0], equal_nan=True)
+    assert np.array_equal(runs[2][1], runs[None][1])
+    assert np.isfinite(runs[2][1]).all()
+
+
+@pytest.mark.parametrize("parts", [0, 9, "2", True, 1.5])
+def test_a_manifest_naming_impossible_parts_is_a_native_build_error(tmp_path, monkeypatch, parts):
+    monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
+    with pytest.raises(hybrid.NativeBuildError, match="parts; regenerate the unit"):
+        _paper_loop(tmp_path, parts)
+    assert not list(tmp_path.rglob("*.so"))
+
+
+def test_a_part_that_fails_to_compile_is_reported_with_its_messages(tmp_path, monkeypatch):
+    """A compiler failing on one part: the error names that part's command and shows its messages, and
+    no library is cached (the next build with a working compiler succeeds)."""
+    real = shutil.which("gcc") or shutil.which("cc")
+    wrapper = tmp_path / "badgcc"
+    wrapper.write_text(f"""#!/bin/sh
+for a in "$@"; do
+    [ "$a" = -DHL_PART=2 ] && {{ echo 'part two: internal compiler error' >&2; exit 1; }}
+done
+exec {real} "$@"
+""")
+    wrapper.chmod(0o755)
+    monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setenv("CC", str(wrapper))
+    with pytest.raises(hybrid.NativeBuildError) as err:
+        _paper_loop(tmp_path, 2)
+    assert "-DHL_PART=2" in str(err.value) and "part two: internal compiler error" in str(err.value)
+    assert not list((tmp_path / "cache").rglob("*.so"))

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 303d59f98dc418c982b62cca7f0b21f7eb330ef3fe064a552e43ccc36d193b39 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 4f34e244358d929040547db692ae52076971ca254ece2665845774b106932c1e */
 /* hybrid_planar_arm_circle_raibert_cr_57176b91a5fa: the paper's closed loop on a circle: raibert_craig_step.
    Emitted by hybrid's codegen/closed_loop.py. */
 #if !defined(__GNUC__)
@@ -252,6 +252,13 @@ HL_MAP2(hl_fmod, fmod)
 HL_MAP2(hl_hypot, hypot)
 HL_MAP2(hl_pow, pow)
 
+#ifdef HL_PART
+#define HL_APART __attribute__((visibility("hidden")))
+#define HL_IN_PART(n) (HL_PART == (n))
+#else
+#define HL_APART static
+#define HL_IN_PART(n) 1
+#endif
 #if HL_W > 1 && 1
 #define HL_STAGE static inline __attribute__((always_inline))
 #else
@@ -263,7 +270,8 @@ HL_MAP2(hl_pow, pow)
 #define HL_ROW static
 #endif
 #define PLANT_RHS_LANES_NPRE 28
-static void plant_rhs_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
+#if HL_IN_PART(2)
+HL_APART void plant_rhs_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
     const hl_v v18 = arm[1];
     const hl_v v20 = arm[0];
     const hl_v v33 = plant[2];
@@ -335,6 +343,9 @@ static void plant_rhs_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *
     (void)surface;
     (void)pre;
 }
+#else
+HL_APART void plant_rhs_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre);
+#endif
 
 static inline __attribute__((always_inline)) void plant_rhs_lanes_core(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, const hl_v *base, const int exact, hl_i *odd) {
     (void)x;
@@ -512,9 +523,13 @@ static inline __attribute__((always_inline)) void plant_rhs_lanes_core(const hl_
     xdot[7] = v167;
 }
 
-static __attribute__((noinline, cold)) void plant_rhs_lanes_exact(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, const hl_v *base) {
+#if HL_IN_PART(2)
+HL_APART __attribute__((noinline, cold)) void plant_rhs_lanes_exact(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, const hl_v *base) {
     plant_rhs_lanes_core(x, tau, pre, xdot, base, 1, NULL);
 }
+#else
+HL_APART __attribute__((noinline, cold)) void plant_rhs_lanes_exact(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, const hl_v *base);
+#endif
 
 HL_STAGE void plant_rhs_lanes(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, const hl_v *base) {
     hl_i odd = hl_splat(0.0) != 0.0;
@@ -523,7 +538,8 @@ HL_STAGE void plant_rhs_lanes(const hl_v *x, const hl_v *tau, const hl_v *pre, h
 }
 
 #define PLANT_RHS_SIGNALS_LANES_NPRE 28
-static void plant_rhs_signals_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
+#if HL_IN_PART(2)
+HL_APART void plant_rhs_signals_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
     const hl_v v18 = arm[1];
     const hl_v v20 = arm[0];
     const hl_v v33 = plant[2];
@@ -595,6 +611,9 @@ static void plant_rhs_signals_lanes_pre(const hl_v *arm, const hl_v *plant, cons
     (void)surface;
     (void)pre;
 }
+#else
+HL_APART void plant_rhs_signals_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre);
+#endif
 
 static inline __attribute__((always_inline)) void plant_rhs_signals_lanes_core(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, hl_v *s, hl_v *y, const hl_v *base, const int exact, hl_i *odd) {
     (void)x;
@@ -817,9 +836,13 @@ static inline __attribute__((always_inline)) void plant_rhs_signals_lanes_core(c
     y[12] = v191;
 }
 
-static __attribute__((noinline, cold)) void plant_rhs_signals_lanes_exact(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, hl_v *s, hl_v *y, const hl_v *base) {
+#if HL_IN_PART(2)
+HL_APART __attribute__((noinline, cold)) void plant_rhs_signals_lanes_exact(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, hl_v *s, hl_v *y, const hl_v *base) {
     plant_rhs_signals_lanes_core(x, tau, pre, xdot, s, y, base, 1, NULL);
 }
+#else
+HL_APART __attribute__((noinline, cold)) void plant_rhs_signals_lanes_exact(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, hl_v *s, hl_v *y, const hl_v *base);
+#endif
 
 HL_STAGE void plant_rhs_signals_lanes(const hl_v *x, const hl_v *tau, const hl_v *pre, hl_v *xdot, hl_v *s, hl_v *y, const hl_v *base) {
     hl_i odd = hl_splat(0.0) != 0.0;
@@ -828,7 +851,8 @@ HL_STAGE void plant_rhs_signals_lanes(const hl_v *x, const hl_v *tau, const hl_v
 }
 
 #define PLANT_OUTPUTS_LANES_NPRE 12
-static void plant_outputs_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
+#if HL_IN_PART(2)
+HL_APART void plant_outputs_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre) {
     const hl_v v0 = arm[1];
     const hl_v v11 = arm[0];
     const hl_v v25 = surface[0];
@@ -859,6 +883,9 @@ static void plant_outputs_lanes_pre(const hl_v *arm, const hl_v *plant, const hl
     (void)surface;
     (void)pre;
 }
+#else
+HL_APART void plant_outputs_lanes_pre(const hl_v *arm, const hl_v *plant, const hl_v *surface, hl_v *pre);
+#endif
 
 static inline __attribute__((always_inline)) void plant_outputs_lanes_core(const hl_v *x, const hl_v *pre, hl_v *y, const int exact, hl_i *odd) {
     (void)x;
@@ -983,18 +1010,27 @@ static inline __attribute__((always_inline)) void plant_outputs_lanes_core(const
     y[12] = v100;
 }
 
-static __attribute__((noinline, cold)) void plant_outputs_lanes_exact(const hl_v *x, const hl_v *pre, hl_v *y) {
+#if HL_IN_PART(2)
+HL_APART __attribute__((noinline, cold)) void plant_outputs_lanes_exact(const hl_v *x, const hl_v *pre, hl_v *y) {
     plant_outputs_lanes_core(x, pre, y, 1, NULL);
 }
+#else
+HL_APART __attribute__((noinline, cold)) void plant_outputs_lanes_exact(const hl_v *x, const hl_v *pre, hl_v *y);
+#endif
 
-static void plant_outputs_lanes(const hl_v *x, const hl_v *pre, hl_v *y) {
+#if HL_IN_PART(2)
+HL_APART void plant_outputs_lanes(const hl_v *x, const hl_v *pre, hl_v *y) {
     hl_i odd = hl_splat(0.0) != 0.0;
     plant_outputs_lanes_core(x, pre, y, 0, &odd);
     if (hl_any(odd)) plant_outputs_lanes_exact(x, pre, y);
 }
+#else
+HL_APART void plant_outputs_lanes(const hl_v *x, const hl_v *pre, hl_v *y);
+#endif
 
 #define RAIBERT_CRAIG_STEP_LANES_NPRE 74
-static void raibert_craig_step_lanes_pre(const hl_v *steps, const hl_v *gains, const hl_v *selection, const hl_v *robot, const hl_v *surface, const hl_v *e, const hl_v *options, const hl_v *posture, const hl_v *limits, const hl_v *sensor, hl_v *pre) {
+#if HL_IN_PART(2)
+HL_APART void raibert_craig_step_lanes_pre(const hl_v *steps, const hl_v *gains, const hl_v *selection, const hl_v *robot, const hl_v *surface, const hl_v *e, const hl_v *options, const hl_v *posture, const hl_v *limits, const hl_v *sensor, hl_v *pre) {
     const hl_v v60 = hl_splat(0.32);
     const hl_v v56 = hl_splat(0.45);
     const hl_v v67 = surface[0];
@@ -1195,6 +1231,9 @@ static void raibert_craig_step_lanes_pre(const hl_v *steps, const hl_v *gains, c
     (void)sensor;
     (void)pre;
 }
+#else
+HL_APART void raibert_craig_step_lanes_pre(const hl_v *steps, const hl_v *gains, const hl_v *selection, const hl_v *robot, const hl_v *surface, const hl_v *e, const hl_v *options, const hl_v *posture, const hl_v *limits, const hl_v *sensor, hl_v *pre);
+#endif
 
 static inline __attribute__((always_inline)) void raibert_craig_step_lanes_core(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond, const int exact, hl_i *odd) {
     (void)q;
@@ -1807,16 +1846,25 @@ static inline __attribute__((always_inline)) void raibert_craig_step_lanes_core(
     cond[0] = v586;
 }
 
-static __attribute__((noinline, cold)) void raibert_craig_step_lanes_exact(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond) {
+#if HL_IN_PART(2)
+HL_APART __attribute__((noinline, cold)) void raibert_craig_step_lanes_exact(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond) {
     raibert_craig_step_lanes_core(q, qd, Fc, integrals, last_torque, filter, estimate, t, yd_extra, yd_rate, target, pre, tau, integrals_next, a, y, f, saturated, filter_next, estimate_next, contact_wrench, frame, cond, 1, NULL);
 }
+#else
+HL_APART __attribute__((noinline, cold)) void raibert_craig_step_lanes_exact(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond);
+#endif
 
-static void raibert_craig_step_lanes(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond) {
+#if HL_IN_PART(2)
+HL_APART void raibert_craig_step_lanes(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond) {
     hl_i odd = hl_splat(0.0) != 0.0;
     raibert_craig_step_lanes_core(q, qd, Fc, integrals, last_torque, filter, estimate, t, yd_extra, yd_rate, target, pre, tau, integrals_next, a, y, f, saturated, filter_next, estimate_next, contact_wrench, frame, cond, 0, &odd);
     if (hl_any(odd)) raibert_craig_step_lanes_exact(q, qd, Fc, integrals, last_torque, filter, estimate, t, yd_extra, yd_rate, target, pre, tau, integrals_next, a, y, f, saturated, filter_next, estimate_next, contact_wrench, frame, cond);
 }
+#else
+HL_APART void raibert_craig_step_lanes(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond);
+#endif
 
+#if HL_IN_PART(1)
 
 typedef struct {
     int status[HL_W], sample[HL_W];
@@ -2089,3 +2137,7 @@ int hybrid_planar_arm_circle_raibert_cr_57176b91a5fa_closed_loop(int nruns, cons
 int hybrid_planar_arm_circle_raibert_cr_57176b91a5fa_lanes(void) {
     return HL_W;
 }
+#else
+int hybrid_planar_arm_circle_raibert_cr_57176b91a5fa_closed_loop(int nruns, const double *runs, int n_samples, int steps_per_sample, double h, double sample_time, double singular_tol, double *metrics, int *status, int *failed_sample, double *states, double *taus, double *outputs);
+int hybrid_planar_arm_circle_raibert_cr_57176b91a5fa_lanes(void);
+#endif

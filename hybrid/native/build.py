@@ -198,36 +198,75 @@ def _atomic_write(path: Path, data: bytes) -> None:
         raise
 
 
-def _compile(c_file: Path, target: Path, cc: str, ident: str, includes: list[str]) -> None:
+def _compile(c_file: Path, target: Path, cc: str, ident: str, includes: list[str],
+             parts: tuple[Path, ...] = ()) -> None:
     """Compile ``c_file`` into the extension ``target`` (written atomically) with the compiler ``cc``
-    whose identity is ``ident``."""
+    whose identity is ``ident``; with ``parts``, the unit's parts: ``c_file`` (the binding, which then
+    declares what it calls) is compiled with ``-DHL_PART=0`` and part ``n`` with ``-DHL_PART=n``, all at
+    once (one compiler each), then linked."""
     so = c_file.with_name(target.name)
     paths = [str(c_file.parent), *sorted({sysconfig.get_paths()["include"], sysconfig.get_paths()["platinclude"]}),
              *includes]
-    def attempt(chosen: tuple[str, ...]):
-        cmd = [cc, *chosen, "-shared", *(f"-I{p}" for p in paths), str(c_file), "-o", str(so), "-lm"]
-        return cmd, subprocess.run(cmd, capture_output=True, text=True)
 
-    cmd, proc = attempt(flags(ident))
-    if proc.returncode != 0 and flags(ident) != CFLAGS:
+    def attempt(chosen: tuple[str, ...]) -> tuple[list[str], int, str]:
+        head = [cc, *chosen, *(f"-I{p}" for p in paths)]
+        if not parts:
+            return _run([*head, "-shared", str(c_file), "-o", str(so), "-lm"])
+        sources = (c_file, *parts)
+        objects = [c_file.with_name(f"part{n}.o") for n in range(len(sources))]
+        failed = _run_together([[*head, "-c", f"-DHL_PART={n}", str(src), "-o", str(obj)]
+                                for n, (src, obj) in enumerate(zip(sources, objects))])
+        return failed or _run([cc, *chosen, "-shared", *map(str, objects), "-o", str(so), "-lm"])
+
+    cmd, code, stderr = attempt(flags(ident))
+    if code != 0 and flags(ident) != CFLAGS:
         # a GCC that fails on its scheduling flags (some have, spilling): they change no number, so
         # the build without them is the same build
         log.warning("hybrid: %s failed on %s with %s; compiling without them", cc, c_file.name, " ".join(GCC_FLAGS))
-        cmd, proc = attempt(CFLAGS)
-    if proc.returncode != 0:
-        hint = ("install the Python headers (apt-get install python3-dev)" if "Python.h" in proc.stderr
+        cmd, code, stderr = attempt(CFLAGS)
+    if code != 0:
+        hint = ("install the Python headers (apt-get install python3-dev)" if "Python.h" in stderr
                 else "the compiler's messages follow")
         raise NativeBuildError(f"compiling {c_file.name} with {cc} failed: {hint}\n"
-                               f"$ {' '.join(cmd)}\n{proc.stderr[-4000:]}")
+                               f"$ {' '.join(cmd)}\n{stderr[-4000:]}")
     if not so.is_file() or so.stat().st_size == 0:
         raise NativeBuildError(f"the compiler {cc} exited 0 but wrote no library for {c_file.name}; "
                                "set CC to a working C compiler")
     _atomic_write(target, so.read_bytes())
 
 
+def _run(cmd: list[str]) -> tuple[list[str], int, str]:
+    """``(cmd, exit status, stderr)`` of running ``cmd``."""
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    return cmd, proc.returncode, proc.stderr
+
+
+def _run_together(cmds: list[list[str]]) -> tuple[list[str], int, str] | None:
+    """Run ``cmds`` at once; the first that failed (as :func:`_run` says), or None. Their messages go
+    to files (a pipe left unread would stall a compiler); an interrupted wait ends them all."""
+    with tempfile.TemporaryDirectory() as tmp:
+        logs = [open(Path(tmp) / f"{n}.log", "w+") for n in range(len(cmds))]
+        procs = []
+        try:
+            procs = [subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=log_) for cmd, log_ in zip(cmds, logs)]
+            codes = [p.wait() for p in procs]
+        finally:
+            for p in procs:
+                if p.poll() is None:
+                    p.kill()
+                    p.wait()
+            for log_ in logs:
+                log_.seek(0)
+            messages = [log_.read() for log_ in logs]
+            for log_ in logs:
+                log_.close()
+    return next(((cmd, code, text) for cmd, code, text in zip(cmds, codes, messages) if code != 0), None)
+
+
 def _cached_module(stem: str, key_material: dict, write_source: Callable[[str, Path], None],
-                   includes: list[str]):
-    """Build (once per key) and import the extension whose C ``write_source(name, path)`` writes.
+                   includes: list[str], parts: tuple[str, ...] = ()):
+    """Build (once per key) and import the extension whose C ``write_source(name, path)`` writes
+    (with ``parts``, the files beside it holding the unit's further parts: :func:`_compile`).
 
     The name carries a hash of ``key_material`` plus the compiler, flags and ABI, so a change
     to any of them builds a new entry instead of loading a stale one.
@@ -257,7 +296,7 @@ def _cached_module(stem: str, key_material: dict, write_source: Callable[[str, P
         with tempfile.TemporaryDirectory(dir=entry) as tmp:
             c_file = Path(tmp) / f"{name}.c"
             write_source(name, c_file)
-            _compile(c_file, so, cc, ident, includes)
+            _compile(c_file, so, cc, ident, includes, tuple(Path(tmp) / part for part in parts))
         log.info("hybrid: compiled %s in %.1f s", name, time.perf_counter() - t0)
         _atomic_write(manifest, json.dumps({"sha256": _sha256(so), "compiler": ident, "flags": flags(ident)}).encode())
 
@@ -321,7 +360,23 @@ def _compile_unit(src_dir: Path, prefix: str):
         ffi.set_source(name, f'#include "{prefix}.c"', compiler_verbose=0)
         ffi.emit_c_code(str(path))
 
-    return _cached_module(f"_{prefix}", {"c": c_source, "h": header, "cffi": cffi.__version__}, write_source, [])
+    # a unit whose manifest says it has parts: its own file once for each
+    n = _manifest_parts(src_dir, prefix)
+    parts = (f"{prefix}.c",) * n if n > 1 else ()
+    return _cached_module(f"_{prefix}", {"c": c_source, "h": header, "cffi": cffi.__version__,
+                                         **({"parts": n} if parts else {})}, write_source, [], parts)
+
+
+def _manifest_parts(src_dir: Path, prefix: str) -> int:
+    """How many parts the unit's manifest says it is compiled in (``parts``; 1 where it says none)."""
+    try:
+        parts = json.loads((src_dir / f"{prefix}.json").read_text()).get("parts", 1)
+    except (OSError, ValueError, AttributeError):
+        return 1  # a unit read without its manifest is compiled whole, as any unit can be
+    if not isinstance(parts, int) or isinstance(parts, bool) or not 1 <= parts <= 8:
+        raise NativeBuildError(f"the manifest {prefix}.json in {src_dir} says the unit has {parts!r:.40} parts; "
+                               "regenerate the unit")
+    return parts
 
 
 def _copy_unit(folder: Path, prefix: str, c_source: str, header: str) -> None:
