@@ -447,12 +447,14 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
             lines += (stores or {}).get(v, ())
         return lines
 
-    def define(signature: str, lines: list[str], there: bool | None = None) -> list[str]:
-        """A function's definition; where it is compiled apart (``there``, by default ``apart``), in the
-        unit's second part only, declared in the first."""
+    def define(signature: str, lines: list[str], there: bool) -> list[str]:
+        """A function's definition; one compiled apart (``there``) is defined in the unit's second part
+        only and declared elsewhere."""
         whole = [f"{signature} {{", *lines, "}"]
-        return ["#if HL_IN_PART(2)", *whole, "#else", f"{signature};", "#endif"] if (
-            apart if there is None else there) else whole
+        return ["#if HL_IN_PART(2)", *whole, "#else", f"{signature};", "#endif"] if there else whole
+
+    # the storage of what the loop calls out of line, and whether the function itself is one of them
+    out_of_line, main_apart = ("HL_APART" if apart else "static"), storage == "HL_APART"
 
     text = []
     hot_inputs = [a for a in kernel.inputs if a.name not in fixed]
@@ -461,10 +463,10 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
         pre_params = ", ".join([*(f"const hl_v *{a.name}" for a in pre_inputs), "hl_v *pre"])
         needed = _closure(ops, cached)
         text += [f"#define {name.upper()}_NPRE {max(len(cached), 1)}",
-                 *define(f"{'HL_APART' if apart else 'static'} void {name}_pre({pre_params})",
+                 *define(f"{out_of_line} void {name}_pre({pre_params})",
                          [*body([v for v in order if v in needed], False),
                           *(f"    pre[{slot[v]}] = v{v};" for v in cached),
-                          *(f"    (void){a.name};" for a in pre_inputs), "    (void)pre;"]), ""]
+                          *(f"    (void){a.name};" for a in pre_inputs), "    (void)pre;"], apart), ""]
     params = ([f"const hl_v *{a.name}" for a in hot_inputs] + (["const hl_v *pre"] if split else [])
               + [f"hl_v *{a.name}" for a in outs] + (["const hl_v *base"] if near else []))
     needed = _closure(ops, [v for _, _, v in outputs], stop=set(slot))
@@ -476,18 +478,18 @@ def lanes_function(kernel: Kernel, name: str | None = None, fixed: tuple[str, ..
         store.setdefault(v, []).append(f"    {outs[o].name}[{i}] = v{v};")
     if not any(ops[v][0] in (*_POLY, *_TRIG) and v not in slot for v in hot):
         return "\n".join([*text, *define(f"{storage} void {name}({', '.join(params)})",
-                                          [*unused, *body(hot, True, stores=store)], storage == "HL_APART"), ""])
+                                          [*unused, *body(hot, True, stores=store)], main_apart), ""])
     # one core, twice: on the polynomials, and where a lane is odd everything again on the exact functions
     # (the outputs, written first, do not alias the inputs)
     args = ", ".join([*(a.name for a in hot_inputs), *(["pre"] if split else []), *(a.name for a in outs),
                       *(["base"] if near else [])])
     text += [f"static inline __attribute__((always_inline)) void {name}_core({', '.join(params)}, const int exact, "
              "hl_i *odd) {", *unused, "    (void)odd;", *body(hot, True, either=True, stores=store), "}", "",
-             *define(f"{'HL_APART' if apart else 'static'} __attribute__((noinline, cold)) void "
-                     f"{name}_exact({', '.join(params)})", [f"    {name}_core({args}, 1, NULL);"]), "",
+             *define(f"{out_of_line} __attribute__((noinline, cold)) void {name}_exact({', '.join(params)})",
+                     [f"    {name}_core({args}, 1, NULL);"], apart), "",
              *define(f"{storage} void {name}({', '.join(params)})",
                      ["    hl_i odd = hl_splat(0.0) != 0.0;", f"    {name}_core({args}, 0, &odd);",
-                      f"    if (hl_any(odd)) {name}_exact({args});"], storage == "HL_APART"), ""]
+                      f"    if (hl_any(odd)) {name}_exact({args});"], main_apart), ""]
     return "\n".join(text)
 
 

@@ -10,6 +10,7 @@ partial library; a cache entry whose checksum does not match is rebuilt, not loa
 
 from __future__ import annotations
 
+import contextlib
 import fcntl
 import hashlib
 import importlib.util
@@ -244,23 +245,23 @@ def _run(cmd: list[str]) -> tuple[list[str], int, str]:
 def _run_together(cmds: list[list[str]]) -> tuple[list[str], int, str] | None:
     """Run ``cmds`` at once; the first that failed (as :func:`_run` says), or None. Their messages go
     to files (a pipe left unread would stall a compiler); an interrupted wait ends them all."""
-    with tempfile.TemporaryDirectory() as tmp:
-        logs = [open(Path(tmp) / f"{n}.log", "w+") for n in range(len(cmds))]
+    with contextlib.ExitStack() as stack:
+        logs = [stack.enter_context(tempfile.TemporaryFile("w+")) for _ in cmds]
         procs = []
         try:
-            procs = [subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=log_) for cmd, log_ in zip(cmds, logs)]
+            for cmd, messages in zip(cmds, logs):
+                procs.append(subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=messages))
             codes = [p.wait() for p in procs]
         finally:
             for p in procs:
                 if p.poll() is None:
                     p.kill()
                     p.wait()
-            for log_ in logs:
-                log_.seek(0)
-            messages = [log_.read() for log_ in logs]
-            for log_ in logs:
-                log_.close()
-    return next(((cmd, code, text) for cmd, code, text in zip(cmds, codes, messages) if code != 0), None)
+        for cmd, code, messages in zip(cmds, codes, logs):
+            if code != 0:
+                messages.seek(0)
+                return cmd, code, messages.read()
+    return None
 
 
 def _cached_module(stem: str, key_material: dict, write_source: Callable[[str, Path], None],
@@ -370,8 +371,8 @@ def _compile_unit(src_dir: Path, prefix: str):
 def _manifest_parts(src_dir: Path, prefix: str) -> int:
     """How many parts the unit's manifest says it is compiled in (``parts``; 1 where it says none)."""
     try:
-        parts = json.loads((src_dir / f"{prefix}.json").read_text()).get("parts", 1)
-    except (OSError, ValueError, AttributeError):
+        parts = read_manifest(src_dir, prefix).get("parts", 1)
+    except (NativeBuildError, AttributeError):
         return 1  # a unit read without its manifest is compiled whole, as any unit can be
     if not isinstance(parts, int) or isinstance(parts, bool) or not 1 <= parts <= 8:
         raise NativeBuildError(f"the manifest {prefix}.json in {src_dir} says the unit has {parts!r:.40} parts; "
