@@ -6,8 +6,11 @@ sensor's reading, one controller step (measurement, loops, law, its guards), the
 ``steps_per_sample`` classical RK4 steps of the plant with the torque held (zero-order hold). The
 metrics of conventions §8 are updated on the fly, row by row (the definitions of
 :func:`hybrid.metrics`): a row's with its step's first stage, which gives the signals they read, the
-last row's after the last step. The joints' sin and cos are computed at a step's start only when
-its joints have moved more than 2^-5 rad since they last were; the stages rotate from there.
+last row's after the last step. A sample among whose rows no edge of a metric's window falls (the
+steps of the references, the end's last 0.2 s, the first touch's window) has its windows, counts and
+peak torques taken once; its rows update only what their signals change. The joints' sin and cos are
+computed at a step's start only when its joints have moved more than 2^-8 rad since they last were;
+the stages rotate from there.
 Per-step states and torques are written only when asked.
 
 Everything a run may vary is a run-time number in its row of ``runs`` (the initial state, the
@@ -162,6 +165,7 @@ typedef struct {{
 static void flag(lanes_run *run, hl_i bad, int status, int k) {{
     int l;
     bad &= run->alive;
+    if (!hl_any(bad)) return;
     for (l = 0; l < HL_W; ++l) {{
         if (bad[l]) {{
             run->status[l] = status;
@@ -177,39 +181,65 @@ typedef struct {{
         pen, in_prev, losses, t_out, touch, fd0, band, w_end, t_peak, t_last_out, t_last, tau[{nq}];
 }} lanes_metrics;
 
-/* a window's updates are skipped on the rows where no lane is in it (they would leave each value as it
-   is: a sum there only adds +0 to a sum that is never -0) */
-HL_ROW void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, long i, double h,
-                        double end) {{
+/* the metrics' windows at a row (hybrid.metrics'): after the force step and before the next step or the
+   end (in_f), after the speed step (in_v), the last 0.2 s (last), the first touch's (in_t, which the first
+   touch itself opens); each window's edges as masks apart, and the references there */
+typedef struct {{
+    hl_v Fd, vd, sgn, f_band;
+    hl_i after_f, before_f_end, in_f, in_v, last, before_w_end, in_t;
+    int any_f, any_v, any_last;
+}} lanes_window;
+
+static inline void window_at(lanes_window *w, const lanes_metrics *mt, const hl_v *blk, long i, double h,
+                             double end) {{
     const hl_v fb = blk[{fs}], fa = blk[{fs + 1}], fat = blk[{fs + 2}];
     const hl_v vb = blk[{vs}], va = blk[{vs + 1}], vat = blk[{vs + 2}];
+    const hl_v t = hl_splat((double)i * h), step = fa - fb;
+    w->Fd = hl_select(t < fat, fb, fa);
+    w->vd = hl_select(t < vat, vb, va);
+    w->sgn = hl_select(step >= 0.0, hl_splat(1.0), hl_splat(-1.0));
+    w->f_band = 0.02 * hl_select(fa != 0.0, hl_fabs(fa), hl_fabs(step));
+    w->after_f = t >= fat;
+    w->before_f_end = t < hl_select(vat > fat, vat, hl_splat(end));
+    w->in_f = w->after_f & w->before_f_end;
+    w->in_v = t >= vat;
+    w->last = t >= end - 0.2;
+    w->before_w_end = t < mt->w_end;
+    w->in_t = (mt->touch >= 0.0) & w->before_w_end;
+    w->any_f = hl_any(w->in_f);
+    w->any_v = hl_any(w->in_v);
+    w->any_last = hl_any(w->last);
+}}
+
+/* the rows from `a`'s to `b`'s lie in the same windows, every lane: no window's edge falls between them (the
+   edges are fixed but for the first touch's, which the touch itself opens) */
+static inline int same_windows(const lanes_window *a, const lanes_window *b) {{
+    return !hl_any((a->after_f ^ b->after_f) | (a->before_f_end ^ b->before_f_end) | (a->in_v ^ b->in_v)
+                   | (a->last ^ b->last) | (a->before_w_end ^ b->before_w_end));
+}}
+
+/* what row i's signals change: extremes, sums, the rows out of a band, the contact's changes, the first
+   touch. A window's updates are skipped on the rows where no lane is in it (they would leave each value as
+   it is: a sum there only adds +0 to a sum that is never -0) */
+HL_ROW void metrics_signals(lanes_metrics *mt, lanes_window *w, const hl_v *blk, const hl_v *s, long i,
+                            double h) {{
+    const hl_v fb = blk[{fs}], fa = blk[{fs + 1}], fat = blk[{fs + 2}];
     const double ti = (double)i * h;
-    const hl_v t = hl_splat(ti), idx = hl_splat((double)i);
+    const hl_v t = hl_splat(ti), idx = hl_splat((double)i), Fd = w->Fd, vd = w->vd;
     const hl_v F = s[{iF}], v = s[{iv}], pen = s[{ipen}];
-    const hl_v Fd = hl_select(t < fat, fb, fa), vd = hl_select(t < vat, vb, va);
-    const hl_v step = fa - fb, sgn = hl_select(step >= 0.0, hl_splat(1.0), hl_splat(-1.0));
-    const hl_v f_end = hl_select(vat > fat, vat, hl_splat(end));
-    const hl_v band = 0.02 * hl_select(fa != 0.0, hl_fabs(fa), hl_fabs(step));
-    const hl_i in_f = (t >= fat) & (t < f_end), in_v = t >= vat, last = t >= end - 0.2;
-    const hl_i contact = s[{iN}] > 0.0;
-    int j;
-    if (hl_any(in_f)) {{
-        mt->peak = hl_select(in_f & (sgn * F > mt->peak), sgn * F, mt->peak);
-        mt->n_f += hl_select(in_f, hl_splat(1.0), hl_splat(0.0));
-        mt->first_f = hl_select(in_f & (mt->first_f < 0.0), idx, mt->first_f);
-        mt->last_out_f = hl_select(in_f & (hl_fabs(F - fa) > band), idx, mt->last_out_f);
-        mt->last_f = hl_select(in_f, idx, mt->last_f);
-        mt->drop = hl_select(in_f & (vd - v > mt->drop), vd - v, mt->drop);
+    const hl_i contact = s[{iN}] > 0.0, first = contact & (mt->touch < 0.0);
+    if (w->any_f) {{
+        mt->peak = hl_select(w->in_f & (w->sgn * F > mt->peak), w->sgn * F, mt->peak);
+        mt->last_out_f = hl_select(w->in_f & (hl_fabs(F - fa) > w->f_band), idx, mt->last_out_f);
+        mt->drop = hl_select(w->in_f & (vd - v > mt->drop), vd - v, mt->drop);
     }}
-    if (hl_any(in_v)) {{
-        mt->n_v += hl_select(in_v, hl_splat(1.0), hl_splat(0.0));
-        mt->dev = hl_select(in_v & (hl_fabs(F - Fd) > mt->dev), hl_fabs(F - Fd), mt->dev);
-        mt->v_max = hl_select(in_v & (v > mt->v_max), v, mt->v_max);
+    if (w->any_v) {{
+        mt->dev = hl_select(w->in_v & (hl_fabs(F - Fd) > mt->dev), hl_fabs(F - Fd), mt->dev);
+        mt->v_max = hl_select(w->in_v & (v > mt->v_max), v, mt->v_max);
     }}
-    if (hl_any(last)) {{
-        mt->sum_fe += hl_select(last, Fd - F, hl_splat(0.0));
-        mt->sum_ve += hl_select(last, vd - v, hl_splat(0.0));
-        mt->n_last += hl_select(last, hl_splat(1.0), hl_splat(0.0));
+    if (w->any_last) {{
+        mt->sum_fe += hl_select(w->last, Fd - F, hl_splat(0.0));
+        mt->sum_ve += hl_select(w->last, vd - v, hl_splat(0.0));
     }}
     mt->sum_f2 += (Fd - F) * (Fd - F);
     mt->sum_v2 += (vd - v) * (vd - v);
@@ -219,26 +249,47 @@ HL_ROW void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const
         mt->t_out += hl_select(contact, hl_splat(0.0), hl_splat(ti - (double)(i - 1) * h));
     }}
     mt->in_prev = hl_bool(contact);
-    {{ /* the first touch: the first row in contact, then the window until the force reference next changes */
-        const hl_i first = contact & (mt->touch < 0.0);
-        hl_i in_t;
-        if (hl_any(first)) {{
-            mt->touch = hl_select(first, idx, mt->touch);
-            mt->fd0 = hl_select(first, Fd, mt->fd0);
-            mt->band = hl_select(first, {TOUCH_BAND!r} * hl_fabs(Fd), mt->band);
-            mt->w_end = hl_select(first, hl_select((fa != fb) & (fat > t), fat, hl_splat(INFINITY)), mt->w_end);
-        }}
-        in_t = (mt->touch >= 0.0) & (t < mt->w_end);
-        if (hl_any(in_t)) {{
-            mt->t_peak = hl_select(in_t & (F > mt->t_peak), F, mt->t_peak);
-            mt->t_last_out = hl_select(in_t & (hl_fabs(F - mt->fd0) > mt->band), idx, mt->t_last_out);
-            mt->t_last = hl_select(in_t, idx, mt->t_last);
-        }}
+    if (hl_any(first)) {{ /* its window lasts until the force reference next changes: past this row */
+        mt->touch = hl_select(first, idx, mt->touch);
+        mt->fd0 = hl_select(first, Fd, mt->fd0);
+        mt->band = hl_select(first, {TOUCH_BAND!r} * hl_fabs(Fd), mt->band);
+        mt->w_end = hl_select(first, hl_select((fa != fb) & (fat > t), fat, hl_splat(INFINITY)), mt->w_end);
+        w->in_t |= first;
     }}
+    if (hl_any(w->in_t)) {{
+        mt->t_peak = hl_select(w->in_t & (F > mt->t_peak), F, mt->t_peak);
+        mt->t_last_out = hl_select(w->in_t & (hl_fabs(F - mt->fd0) > mt->band), idx, mt->t_last_out);
+    }}
+}}
+
+/* what the rows i0 .. i1, all in the windows of `w`, add up to: the counts, a window's first and last row */
+static inline void metrics_rows(lanes_metrics *mt, const lanes_window *w, long i0, long i1) {{
+    const hl_v n = hl_splat((double)(i1 - i0 + 1)), zero = hl_splat(0.0);
+    mt->n_f += hl_select(w->in_f, n, zero);
+    mt->first_f = hl_select(w->in_f & (mt->first_f < 0.0), hl_splat((double)i0), mt->first_f);
+    mt->last_f = hl_select(w->in_f, hl_splat((double)i1), mt->last_f);
+    mt->n_v += hl_select(w->in_v, n, zero);
+    mt->n_last += hl_select(w->last, n, zero);
+    mt->t_last = hl_select(w->in_t, hl_splat((double)i1), mt->t_last);
+}}
+
+/* the joints' peak torques (a torque held for a sample: once per sample) */
+static inline void metrics_torque(lanes_metrics *mt, const hl_v *tau) {{
+    int j;
     for (j = 0; j < {nq}; ++j) {{
         const hl_v a = hl_fabs(tau[j]);
         mt->tau[j] = hl_select(a > mt->tau[j], a, mt->tau[j]);
     }}
+}}
+
+/* one row's metrics, its windows its own */
+static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, long i, double h,
+                        double end) {{
+    lanes_window w;
+    window_at(&w, mt, blk, i, h, end);
+    metrics_signals(mt, &w, blk, s, i, h);
+    metrics_rows(mt, &w, i, i);
+    metrics_torque(mt, tau);
 }}
 
 static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int l, long rows, double h, double *out) {{
@@ -316,11 +367,12 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     {out_decl}
     lanes_run run;
     lanes_metrics mt;
+    lanes_window win, win_end;
     hl_i at_sample;
     const long rows = (long)n_samples * steps_per_sample + 1;
     const double end = (double)(rows - 1) * h;
     long row = 0;
-    int i, j, l, k;
+    int i, j, l, k, steady;
     (void)singular_tol;
     for (l = 0; l < HL_W; ++l) {{
         for (j = 0; j < {nb}; ++j) blk[j][l] = runs[(long)(g + (l < used ? l : 0)) * {nb} + j];
@@ -361,12 +413,20 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         for (j = 0; j < {nq}; ++j) last[j] = {tau}[j];
         last[{nq}] = hl_splat(1.0);
         if (k == 0) record(states, taus, g, used, 0, rows, x, {tau}, hl_splat(0.0) == 0.0, run.alive);
+        /* the metrics' windows: where no edge of theirs falls among the sample's rows, each row updates only
+           what its signals change, and the counts are the sample's */
+        window_at(&win, &mt, blk, row, h, end);
+        window_at(&win_end, &mt, blk, row + steps_per_sample - 1, h, end);
+        steady = same_windows(&win, &win_end);
+        metrics_torque(&mt, {tau});
         for (i = 0; i < steps_per_sample; ++i) {{
             /* the joints' sin and cos the step's stages rotate from: its start's, or an earlier step's */
             hl_rebase(x, base, {nq});
 {rk4}
-            /* the row the step started from (the peak torques read each sample's torque all the same) */
-            metrics_row(&mt, blk, s, {tau}, row, h, end);
+            /* the row the step started from */
+            if (!steady) window_at(&win, &mt, blk, row, h, end);
+            metrics_signals(&mt, &win, blk, s, row, h);
+            if (!steady) metrics_rows(&mt, &win, row, row);
             /* the row's output where its state is recorded (a sample's first row: before its controller's stop) */
             record_outputs(outputs, g, used, row, rows, y, i == 0 ? at_sample : run.alive);
             ++row;
@@ -378,6 +438,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
             }}
             record(states, taus, g, used, row, rows, x, {tau}, run.alive, run.alive);
         }}
+        if (steady) metrics_rows(&mt, &win, row - steps_per_sample, row - 1);
     }}
     if (k > 0) {{ /* the last row */
         plant_outputs_lanes(x, pre_out, y);
@@ -413,7 +474,7 @@ int {prefix}_lanes(void) {{
 #: a small RK4 stage is inlined into the loop where lanes are many (measured on the paper's plant: 10 %
 #: faster with 8 lanes, 8 % slower with one, where the loop is bound by latency, not throughput); a large
 #: one is not (the UR5's: the same speed, twice the compile time)
-#: and the metrics' row likewise (the paper's: 4 % faster with 8 lanes; with the two of a run alone the
+#: and a row's metrics likewise (the paper's: 4 % faster with 8 lanes; with the two of a run alone the
 #: same speed, and a tenth of a second longer to compile on a first run)
 _STAGE = """#if HL_W > 1 && {small}
 #define HL_STAGE static inline __attribute__((always_inline))

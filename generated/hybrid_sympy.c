@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 79522b58094ade6ca5b850789097a3d47412c08c1bea7d8738183a4193681aa6 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 942975918d054f2f2f9941404ccad6226a9ce50c20ebc954c458b7016ef45c53 */
 /* hybrid_sympy: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
    Emitted by the sympy backend of hybrid's codegen (SymPy 1.14.0), generator version 5.
    Compile: cc -std=c99 -O2 -c hybrid_sympy.c (link with -lm). */
@@ -749,12 +749,13 @@ static inline int hl_any(hl_i m) {
     return acc != 0;
 }
 #endif
-/* the lanes where any of v[0 .. n-1] is NaN or infinite */
+/* the lanes where any of v[0 .. n-1] is NaN or infinite: a sum of v[i] - v[i], 0 where all are finite and
+   NaN where one is not, then one comparison */
 static inline hl_i hl_not_finite(const hl_v *v, int n) {
-    hl_i bad = hl_splat(0.0) != 0.0;
+    hl_v sum = hl_splat(0.0);
     int i;
-    for (i = 0; i < n; ++i) bad |= (v[i] - v[i]) != 0.0;
-    return bad;
+    for (i = 0; i < n; ++i) sum += v[i] - v[i];
+    return sum != 0.0;
 }
 static inline hl_v hl_fabs(hl_v x) { return (hl_v)((hl_i)x & ~(hl_i)hl_splat(-0.0)); }
 static inline hl_v hl_copysign(hl_v x, hl_v y) {
@@ -824,26 +825,28 @@ static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
     }
 }
 /* sin and cos of x near x0, from base = (x0, sin x0, cos x0): x0's rotated by d = x - x0 with Taylor
-   polynomials of sin d (to d^9) and cos d - 1 (to d^8), whose truncation is below 3e-19 for |d| <= 2^-4; a
+   polynomials of sin d (to d^5) and cos d - 1 (to d^6), whose truncation is below 4e-19 for |d| <= 2^-7; a
    lane farther from x0 (or not finite) takes the polynomials (_near_poly, odd as they say) or hl_sincos
    (_near); within 2 * 2^-52 of sin x and cos x, absolute. The stages of RK4 steps are this near a base
-   that hl_rebase keeps within 2^-5 of their start. */
+   that hl_rebase keeps within 2^-8 of their start. (The span trades the polynomials' length, which every
+   stage pays and waits on, against how often a base is computed: 2^-8 rad is tens of steps at a joint
+   speed of 1 rad/s.) */
 static inline hl_i hl_rotate(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine) {
     const hl_v d = x - base[0], d2 = d * d;
-    const hl_v sd = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 * (1.0 / 362880))));
-    const hl_v cm = d2 * (-0.5 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320))));
+    const hl_v sd = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120));
+    const hl_v cm = d2 * (-0.5 + d2 * (1.0 / 24 + d2 * (-1.0 / 720)));
     /* one product per sum: the compiler's fused multiply-adds are then the same for any lane count */
     *sine = (base[1] + base[1] * cm) + base[2] * sd;
     *cosine = (base[2] + base[2] * cm) - base[1] * sd;
-    return ~(hl_fabs(d) <= 0x1p-4);
+    return ~(hl_fabs(d) <= 0x1p-7);
 }
-/* base[3 j .. 3 j + 2] = (x0, sin x0, cos x0) for x[j], j < n: a lane whose angles have moved more than 2^-5
+/* base[3 j .. 3 j + 2] = (x0, sin x0, cos x0) for x[j], j < n: a lane whose angles have moved more than 2^-8
    from its base (or whose base is not a number yet) takes its angles as its new base, computed once for the
    steps that follow; a lane's base depends on its own angles alone */
 static inline void hl_rebase(const hl_v *x, hl_v *base, int n) {
     hl_i far = hl_splat(0.0) != 0.0;
     int j;
-    for (j = 0; j < n; ++j) far |= ~(hl_fabs(x[j] - base[3 * j]) <= 0x1p-5);
+    for (j = 0; j < n; ++j) far |= ~(hl_fabs(x[j] - base[3 * j]) <= 0x1p-8);
     if (hl_any(far)) {
         for (j = 0; j < n; ++j) {
             hl_v sine, cosine;

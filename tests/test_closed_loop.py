@@ -102,8 +102,22 @@ def test_the_3d_experiment_in_c_equals_the_python_runner(overrides):
         assert got.metrics[name] == pytest.approx(value, rel=1e-6, abs=1e-10, nan_ok=True), name
 
 
-def test_metrics_in_c_equal_the_numpy_definitions_on_the_same_record():
-    exp = _experiment("steps_down")
+#: runs whose metrics' windows open and close at every kind of place: between samples, among a sample's
+#: rows, at a first touch before the force step and after it, a force step after the speed step
+WINDOWS = {
+    "steps_down": {"F_d": hybrid.Step(12.0, 6.0, 0.4), "v_d": hybrid.Step(0.15, 0.05, 0.9)},
+    "steps_among_rows": {"F_d": hybrid.Step(10.0, 20.0, 0.40037), "v_d": hybrid.Step(0.3, 0.6, 1.00513)},
+    "touch_before_the_step": {"start_gap": 0.003, "approach_speed": 0.05},
+    "touch_unsettled": {"start_gap": 0.003, "approach_speed": 0.05, "F_d": hybrid.Step(10.0, 20.0, 0.09)},
+    "touch_after_the_step": {"start_gap": 0.01, "approach_speed": 0.02, "F_d": hybrid.Step(5.0, 12.0, 0.30011),
+                             "duration": 1.5},
+    "force_step_last": {"F_d": hybrid.Step(10.0, 15.0, 0.90123), "v_d": hybrid.Step(0.3, 0.5, 0.5)},
+}
+
+
+@pytest.mark.parametrize("case", sorted(WINDOWS))
+def test_metrics_in_c_equal_the_numpy_definitions_on_the_same_record(case):
+    exp = hybrid.paper_experiment(**{"duration": 1.2, **WINDOWS[case]})
     got = closed_loop.run([closed_loop.prepare(exp)], record=True)[0]
     plant = PlanarPlant(exp)
     record = plant.outputs(got.states)
@@ -259,9 +273,11 @@ void g_many(int n, const double *x, const double *x0, double *y) {
     rng = np.random.default_rng(9)
     n = 8 * 1500
     x0 = np.concatenate([rng.uniform(-4, 4, n // 2), rng.uniform(-1e5, 1e5, n // 4), rng.uniform(-1e7, 1e7, n // 4)])
-    d = rng.uniform(-2.0**-4, 2.0**-4, n) * rng.choice([1.0, 1e-6, 0.0, 3.0], n)  # near, very near, at, far
+    # within the rotation's span (2^-7), very near, at, beyond it, far
+    d = rng.uniform(-2.0**-7, 2.0**-7, n) * rng.choice([1.0, 1e-6, 0.0, 8.0, 24.0], n)
     x = x0 + d
-    x[:8] = [np.nan, np.inf, -np.inf, 1e300, x0[4] + 2.0**-4, x0[5] - 2.0**-4, 0.0, -0.0]
+    x[:10] = [np.nan, np.inf, -np.inf, 1e300, x0[4] + 2.0**-7, x0[5] - 2.0**-7, 0.0, -0.0,
+              x0[8] + 2.0**-7 * (1 + 2.0**-40), x0[9] - 2.0**-4]
     y = np.empty((2, n))
     module.lib.g_many(n, *(module.ffi.from_buffer("double[]", a) for a in (np.ascontiguousarray(x),
                                                                            np.ascontiguousarray(x0), y)))

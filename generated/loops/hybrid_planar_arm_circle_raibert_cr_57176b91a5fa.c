@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 4f34e244358d929040547db692ae52076971ca254ece2665845774b106932c1e */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 08a3aade143e10ab55edb1581f6bf409227d16bf66258f786fa0d4e752cdbc82 */
 /* hybrid_planar_arm_circle_raibert_cr_57176b91a5fa: the paper's closed loop on a circle: raibert_craig_step.
    Emitted by hybrid's codegen/closed_loop.py. */
 #if !defined(__GNUC__)
@@ -46,12 +46,13 @@ static inline int hl_any(hl_i m) {
     return acc != 0;
 }
 #endif
-/* the lanes where any of v[0 .. n-1] is NaN or infinite */
+/* the lanes where any of v[0 .. n-1] is NaN or infinite: a sum of v[i] - v[i], 0 where all are finite and
+   NaN where one is not, then one comparison */
 static inline hl_i hl_not_finite(const hl_v *v, int n) {
-    hl_i bad = hl_splat(0.0) != 0.0;
+    hl_v sum = hl_splat(0.0);
     int i;
-    for (i = 0; i < n; ++i) bad |= (v[i] - v[i]) != 0.0;
-    return bad;
+    for (i = 0; i < n; ++i) sum += v[i] - v[i];
+    return sum != 0.0;
 }
 static inline hl_v hl_fabs(hl_v x) { return (hl_v)((hl_i)x & ~(hl_i)hl_splat(-0.0)); }
 static inline hl_v hl_copysign(hl_v x, hl_v y) {
@@ -121,26 +122,28 @@ static inline void hl_sincos(hl_v x, hl_v *sine, hl_v *cosine) {
     }
 }
 /* sin and cos of x near x0, from base = (x0, sin x0, cos x0): x0's rotated by d = x - x0 with Taylor
-   polynomials of sin d (to d^9) and cos d - 1 (to d^8), whose truncation is below 3e-19 for |d| <= 2^-4; a
+   polynomials of sin d (to d^5) and cos d - 1 (to d^6), whose truncation is below 4e-19 for |d| <= 2^-7; a
    lane farther from x0 (or not finite) takes the polynomials (_near_poly, odd as they say) or hl_sincos
    (_near); within 2 * 2^-52 of sin x and cos x, absolute. The stages of RK4 steps are this near a base
-   that hl_rebase keeps within 2^-5 of their start. */
+   that hl_rebase keeps within 2^-8 of their start. (The span trades the polynomials' length, which every
+   stage pays and waits on, against how often a base is computed: 2^-8 rad is tens of steps at a joint
+   speed of 1 rad/s.) */
 static inline hl_i hl_rotate(hl_v x, const hl_v *base, hl_v *sine, hl_v *cosine) {
     const hl_v d = x - base[0], d2 = d * d;
-    const hl_v sd = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 * (1.0 / 362880))));
-    const hl_v cm = d2 * (-0.5 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320))));
+    const hl_v sd = d + d * d2 * (-1.0 / 6 + d2 * (1.0 / 120));
+    const hl_v cm = d2 * (-0.5 + d2 * (1.0 / 24 + d2 * (-1.0 / 720)));
     /* one product per sum: the compiler's fused multiply-adds are then the same for any lane count */
     *sine = (base[1] + base[1] * cm) + base[2] * sd;
     *cosine = (base[2] + base[2] * cm) - base[1] * sd;
-    return ~(hl_fabs(d) <= 0x1p-4);
+    return ~(hl_fabs(d) <= 0x1p-7);
 }
-/* base[3 j .. 3 j + 2] = (x0, sin x0, cos x0) for x[j], j < n: a lane whose angles have moved more than 2^-5
+/* base[3 j .. 3 j + 2] = (x0, sin x0, cos x0) for x[j], j < n: a lane whose angles have moved more than 2^-8
    from its base (or whose base is not a number yet) takes its angles as its new base, computed once for the
    steps that follow; a lane's base depends on its own angles alone */
 static inline void hl_rebase(const hl_v *x, hl_v *base, int n) {
     hl_i far = hl_splat(0.0) != 0.0;
     int j;
-    for (j = 0; j < n; ++j) far |= ~(hl_fabs(x[j] - base[3 * j]) <= 0x1p-5);
+    for (j = 0; j < n; ++j) far |= ~(hl_fabs(x[j] - base[3 * j]) <= 0x1p-8);
     if (hl_any(far)) {
         for (j = 0; j < n; ++j) {
             hl_v sine, cosine;
@@ -1875,6 +1878,7 @@ typedef struct {
 static void flag(lanes_run *run, hl_i bad, int status, int k) {
     int l;
     bad &= run->alive;
+    if (!hl_any(bad)) return;
     for (l = 0; l < HL_W; ++l) {
         if (bad[l]) {
             run->status[l] = status;
@@ -1890,39 +1894,65 @@ typedef struct {
         pen, in_prev, losses, t_out, touch, fd0, band, w_end, t_peak, t_last_out, t_last, tau[2];
 } lanes_metrics;
 
-/* a window's updates are skipped on the rows where no lane is in it (they would leave each value as it
-   is: a sum there only adds +0 to a sum that is never -0) */
-HL_ROW void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, long i, double h,
-                        double end) {
+/* the metrics' windows at a row (hybrid.metrics'): after the force step and before the next step or the
+   end (in_f), after the speed step (in_v), the last 0.2 s (last), the first touch's (in_t, which the first
+   touch itself opens); each window's edges as masks apart, and the references there */
+typedef struct {
+    hl_v Fd, vd, sgn, f_band;
+    hl_i after_f, before_f_end, in_f, in_v, last, before_w_end, in_t;
+    int any_f, any_v, any_last;
+} lanes_window;
+
+static inline void window_at(lanes_window *w, const lanes_metrics *mt, const hl_v *blk, long i, double h,
+                             double end) {
     const hl_v fb = blk[122], fa = blk[123], fat = blk[124];
     const hl_v vb = blk[125], va = blk[126], vat = blk[127];
+    const hl_v t = hl_splat((double)i * h), step = fa - fb;
+    w->Fd = hl_select(t < fat, fb, fa);
+    w->vd = hl_select(t < vat, vb, va);
+    w->sgn = hl_select(step >= 0.0, hl_splat(1.0), hl_splat(-1.0));
+    w->f_band = 0.02 * hl_select(fa != 0.0, hl_fabs(fa), hl_fabs(step));
+    w->after_f = t >= fat;
+    w->before_f_end = t < hl_select(vat > fat, vat, hl_splat(end));
+    w->in_f = w->after_f & w->before_f_end;
+    w->in_v = t >= vat;
+    w->last = t >= end - 0.2;
+    w->before_w_end = t < mt->w_end;
+    w->in_t = (mt->touch >= 0.0) & w->before_w_end;
+    w->any_f = hl_any(w->in_f);
+    w->any_v = hl_any(w->in_v);
+    w->any_last = hl_any(w->last);
+}
+
+/* the rows from `a`'s to `b`'s lie in the same windows, every lane: no window's edge falls between them (the
+   edges are fixed but for the first touch's, which the touch itself opens) */
+static inline int same_windows(const lanes_window *a, const lanes_window *b) {
+    return !hl_any((a->after_f ^ b->after_f) | (a->before_f_end ^ b->before_f_end) | (a->in_v ^ b->in_v)
+                   | (a->last ^ b->last) | (a->before_w_end ^ b->before_w_end));
+}
+
+/* what row i's signals change: extremes, sums, the rows out of a band, the contact's changes, the first
+   touch. A window's updates are skipped on the rows where no lane is in it (they would leave each value as
+   it is: a sum there only adds +0 to a sum that is never -0) */
+HL_ROW void metrics_signals(lanes_metrics *mt, lanes_window *w, const hl_v *blk, const hl_v *s, long i,
+                            double h) {
+    const hl_v fb = blk[122], fa = blk[123], fat = blk[124];
     const double ti = (double)i * h;
-    const hl_v t = hl_splat(ti), idx = hl_splat((double)i);
+    const hl_v t = hl_splat(ti), idx = hl_splat((double)i), Fd = w->Fd, vd = w->vd;
     const hl_v F = s[2], v = s[3], pen = s[4];
-    const hl_v Fd = hl_select(t < fat, fb, fa), vd = hl_select(t < vat, vb, va);
-    const hl_v step = fa - fb, sgn = hl_select(step >= 0.0, hl_splat(1.0), hl_splat(-1.0));
-    const hl_v f_end = hl_select(vat > fat, vat, hl_splat(end));
-    const hl_v band = 0.02 * hl_select(fa != 0.0, hl_fabs(fa), hl_fabs(step));
-    const hl_i in_f = (t >= fat) & (t < f_end), in_v = t >= vat, last = t >= end - 0.2;
-    const hl_i contact = s[5] > 0.0;
-    int j;
-    if (hl_any(in_f)) {
-        mt->peak = hl_select(in_f & (sgn * F > mt->peak), sgn * F, mt->peak);
-        mt->n_f += hl_select(in_f, hl_splat(1.0), hl_splat(0.0));
-        mt->first_f = hl_select(in_f & (mt->first_f < 0.0), idx, mt->first_f);
-        mt->last_out_f = hl_select(in_f & (hl_fabs(F - fa) > band), idx, mt->last_out_f);
-        mt->last_f = hl_select(in_f, idx, mt->last_f);
-        mt->drop = hl_select(in_f & (vd - v > mt->drop), vd - v, mt->drop);
+    const hl_i contact = s[5] > 0.0, first = contact & (mt->touch < 0.0);
+    if (w->any_f) {
+        mt->peak = hl_select(w->in_f & (w->sgn * F > mt->peak), w->sgn * F, mt->peak);
+        mt->last_out_f = hl_select(w->in_f & (hl_fabs(F - fa) > w->f_band), idx, mt->last_out_f);
+        mt->drop = hl_select(w->in_f & (vd - v > mt->drop), vd - v, mt->drop);
     }
-    if (hl_any(in_v)) {
-        mt->n_v += hl_select(in_v, hl_splat(1.0), hl_splat(0.0));
-        mt->dev = hl_select(in_v & (hl_fabs(F - Fd) > mt->dev), hl_fabs(F - Fd), mt->dev);
-        mt->v_max = hl_select(in_v & (v > mt->v_max), v, mt->v_max);
+    if (w->any_v) {
+        mt->dev = hl_select(w->in_v & (hl_fabs(F - Fd) > mt->dev), hl_fabs(F - Fd), mt->dev);
+        mt->v_max = hl_select(w->in_v & (v > mt->v_max), v, mt->v_max);
     }
-    if (hl_any(last)) {
-        mt->sum_fe += hl_select(last, Fd - F, hl_splat(0.0));
-        mt->sum_ve += hl_select(last, vd - v, hl_splat(0.0));
-        mt->n_last += hl_select(last, hl_splat(1.0), hl_splat(0.0));
+    if (w->any_last) {
+        mt->sum_fe += hl_select(w->last, Fd - F, hl_splat(0.0));
+        mt->sum_ve += hl_select(w->last, vd - v, hl_splat(0.0));
     }
     mt->sum_f2 += (Fd - F) * (Fd - F);
     mt->sum_v2 += (vd - v) * (vd - v);
@@ -1932,26 +1962,47 @@ HL_ROW void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const
         mt->t_out += hl_select(contact, hl_splat(0.0), hl_splat(ti - (double)(i - 1) * h));
     }
     mt->in_prev = hl_bool(contact);
-    { /* the first touch: the first row in contact, then the window until the force reference next changes */
-        const hl_i first = contact & (mt->touch < 0.0);
-        hl_i in_t;
-        if (hl_any(first)) {
-            mt->touch = hl_select(first, idx, mt->touch);
-            mt->fd0 = hl_select(first, Fd, mt->fd0);
-            mt->band = hl_select(first, 0.05 * hl_fabs(Fd), mt->band);
-            mt->w_end = hl_select(first, hl_select((fa != fb) & (fat > t), fat, hl_splat(INFINITY)), mt->w_end);
-        }
-        in_t = (mt->touch >= 0.0) & (t < mt->w_end);
-        if (hl_any(in_t)) {
-            mt->t_peak = hl_select(in_t & (F > mt->t_peak), F, mt->t_peak);
-            mt->t_last_out = hl_select(in_t & (hl_fabs(F - mt->fd0) > mt->band), idx, mt->t_last_out);
-            mt->t_last = hl_select(in_t, idx, mt->t_last);
-        }
+    if (hl_any(first)) { /* its window lasts until the force reference next changes: past this row */
+        mt->touch = hl_select(first, idx, mt->touch);
+        mt->fd0 = hl_select(first, Fd, mt->fd0);
+        mt->band = hl_select(first, 0.05 * hl_fabs(Fd), mt->band);
+        mt->w_end = hl_select(first, hl_select((fa != fb) & (fat > t), fat, hl_splat(INFINITY)), mt->w_end);
+        w->in_t |= first;
     }
+    if (hl_any(w->in_t)) {
+        mt->t_peak = hl_select(w->in_t & (F > mt->t_peak), F, mt->t_peak);
+        mt->t_last_out = hl_select(w->in_t & (hl_fabs(F - mt->fd0) > mt->band), idx, mt->t_last_out);
+    }
+}
+
+/* what the rows i0 .. i1, all in the windows of `w`, add up to: the counts, a window's first and last row */
+static inline void metrics_rows(lanes_metrics *mt, const lanes_window *w, long i0, long i1) {
+    const hl_v n = hl_splat((double)(i1 - i0 + 1)), zero = hl_splat(0.0);
+    mt->n_f += hl_select(w->in_f, n, zero);
+    mt->first_f = hl_select(w->in_f & (mt->first_f < 0.0), hl_splat((double)i0), mt->first_f);
+    mt->last_f = hl_select(w->in_f, hl_splat((double)i1), mt->last_f);
+    mt->n_v += hl_select(w->in_v, n, zero);
+    mt->n_last += hl_select(w->last, n, zero);
+    mt->t_last = hl_select(w->in_t, hl_splat((double)i1), mt->t_last);
+}
+
+/* the joints' peak torques (a torque held for a sample: once per sample) */
+static inline void metrics_torque(lanes_metrics *mt, const hl_v *tau) {
+    int j;
     for (j = 0; j < 2; ++j) {
         const hl_v a = hl_fabs(tau[j]);
         mt->tau[j] = hl_select(a > mt->tau[j], a, mt->tau[j]);
     }
+}
+
+/* one row's metrics, its windows its own */
+static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const hl_v *tau, long i, double h,
+                        double end) {
+    lanes_window w;
+    window_at(&w, mt, blk, i, h, end);
+    metrics_signals(mt, &w, blk, s, i, h);
+    metrics_rows(mt, &w, i, i);
+    metrics_torque(mt, tau);
 }
 
 static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int l, long rows, double h, double *out) {
@@ -2029,11 +2080,12 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     hl_v o_tau[2]; hl_v o_integrals_next[4]; hl_v o_a[2]; hl_v o_y[2]; hl_v o_f[2]; hl_v o_saturated[1]; hl_v o_filter_next[13]; hl_v o_estimate_next[10]; hl_v o_contact_wrench[6]; hl_v o_frame[1]; hl_v o_cond[1];
     lanes_run run;
     lanes_metrics mt;
+    lanes_window win, win_end;
     hl_i at_sample;
     const long rows = (long)n_samples * steps_per_sample + 1;
     const double end = (double)(rows - 1) * h;
     long row = 0;
-    int i, j, l, k;
+    int i, j, l, k, steady;
     (void)singular_tol;
     for (l = 0; l < HL_W; ++l) {
         for (j = 0; j < 128; ++j) blk[j][l] = runs[(long)(g + (l < used ? l : 0)) * 128 + j];
@@ -2078,6 +2130,12 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         for (j = 0; j < 2; ++j) last[j] = o_tau[j];
         last[2] = hl_splat(1.0);
         if (k == 0) record(states, taus, g, used, 0, rows, x, o_tau, hl_splat(0.0) == 0.0, run.alive);
+        /* the metrics' windows: where no edge of theirs falls among the sample's rows, each row updates only
+           what its signals change, and the counts are the sample's */
+        window_at(&win, &mt, blk, row, h, end);
+        window_at(&win_end, &mt, blk, row + steps_per_sample - 1, h, end);
+        steady = same_windows(&win, &win_end);
+        metrics_torque(&mt, o_tau);
         for (i = 0; i < steps_per_sample; ++i) {
             /* the joints' sin and cos the step's stages rotate from: its start's, or an earlier step's */
             hl_rebase(x, base, 2);
@@ -2089,8 +2147,10 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
             for (j = 0; j < 8; ++j) xt[j] = x[j] + h * k3[j];
             plant_rhs_lanes(xt, o_tau, pre_rhs, k4, base);
             for (j = 0; j < 8; ++j) x[j] = x[j] + h / 6.0 * (k1[j] + 2.0 * (k2[j] + k3[j]) + k4[j]);
-            /* the row the step started from (the peak torques read each sample's torque all the same) */
-            metrics_row(&mt, blk, s, o_tau, row, h, end);
+            /* the row the step started from */
+            if (!steady) window_at(&win, &mt, blk, row, h, end);
+            metrics_signals(&mt, &win, blk, s, row, h);
+            if (!steady) metrics_rows(&mt, &win, row, row);
             /* the row's output where its state is recorded (a sample's first row: before its controller's stop) */
             record_outputs(outputs, g, used, row, rows, y, i == 0 ? at_sample : run.alive);
             ++row;
@@ -2102,6 +2162,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
             }
             record(states, taus, g, used, row, rows, x, o_tau, run.alive, run.alive);
         }
+        if (steady) metrics_rows(&mt, &win, row - steps_per_sample, row - 1);
     }
     if (k > 0) { /* the last row */
         plant_outputs_lanes(x, pre_out, y);
