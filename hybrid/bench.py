@@ -114,6 +114,12 @@ def _progress(i: int, total: int, what: str) -> None:
     print(f"[{i}/{total}] {what} ...", file=sys.stderr, flush=True)
 
 
+#: calls of a run through ``simulate`` before it is timed: in a fresh process the first is about twice
+#: as slow (the C library's allocator maps the record's memory afresh, page by page) and the next ten a
+#: tenth slower
+WARM_UP = 5
+
+
 def _median_ns(fn, number: int, repeat: int) -> float:
     times = []
     for _ in range(repeat):
@@ -706,8 +712,9 @@ def sweep_benchmarks(quick: bool, add) -> None:
     the totals scaled)."""
 
     exp = paper_experiment()
-    simulate(exp)
-    one = _median_ns(lambda: simulate(exp), 1, 5 if quick else 15) / 1e6
+    for _ in range(WARM_UP):
+        simulate(exp)
+    one = _median_ns(lambda: simulate(exp), 1, 15 if quick else 61) / 1e6
     prepared = [closed_loop.prepare(apply(exp, {"model_error": m})) for m in np.linspace(0.0, 0.5, 128)]
     closed_loop.run(prepared)  # the lanes build, loaded before it is timed
     lanes = prepared[0].loop.lanes
@@ -736,8 +743,9 @@ def trace_benchmarks(quick: bool, add) -> None:
     trace = [closed_loop.prepare(tracing_experiment(model_error=m)) for m in np.linspace(0.0, 0.3, 16)]
     closed_loop.run(trace)  # the lanes build, loaded before it is timed
     exp = trace[0].experiment
-    simulate(exp)  # the build for one run at a time, likewise
-    one = _median_ns(lambda: simulate(exp), 1, 3 if quick else 7) / 1e6
+    for _ in range(WARM_UP):  # the build for one run at a time, likewise
+        simulate(exp)
+    one = _median_ns(lambda: simulate(exp), 1, 3 if quick else 15) / 1e6
     share = _median_ns(lambda: closed_loop.run(trace), 1, 3) / 1e6 / len(trace)
     add(TRACE_ONE, one, "ms", ratio=f"{one / share:.1f}x the per-run share of a lanes batch", of_share=one / share)
     add(TRACE_RUN, share, "ms", ratio=f"{trace[0].loop.lanes} runs a group of lanes")
