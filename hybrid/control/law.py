@@ -51,7 +51,7 @@ class DecouplingLaw:
     """
 
     __slots__ = ("robot", "surface", "curvature", "reference", "axes", "backend", "singular_tol", "_fn",
-                 "_params", "_tail", "_fast", "_binding")
+                 "_params", "_tail", "_fast", "_binding", "_force")
 
     def __init__(self, robot: Robot | Arm, surface: Surface, curvature: bool = False,
                  reference=(0.0, 0.0, 1.0), axes=None, backend: str | None = None,
@@ -96,6 +96,8 @@ class DecouplingLaw:
         fast, handle = fn.fast_bind(4 + len(tail), *self._params, singular_tol=self.singular_tol)
         init("_fast", fast)
         init("_binding", handle)
+        # F* alone, a call of the four states' arrays: tau0 (which F* does not read) fixed with the parameters
+        init("_force", partial(fast, fn.fast_bind(4, *tail, *self._params, singular_tol=self.singular_tol)[1], 0))
 
     def __setattr__(self, name, value):
         raise AttributeError(f"a DecouplingLaw's settings are read-only; build another law to change {name}")
@@ -143,10 +145,12 @@ class DecouplingLaw:
 
     def __call__(self, q, qdot, a, Fc, out: np.ndarray | None = None) -> np.ndarray:
         """``F*`` in base axes (for N states, into ``out`` when given)."""
-        if out is not None:
-            return self._checked(q, qdot, a, Fc, None, {"F": out})[0]
-        got = self._fast(self._binding, 0, q, qdot, a, Fc, *self._tail)
-        return self._checked(q, qdot, a, Fc, None)[0] if got is None else got
+        if out is None:
+            got = self._force(q, qdot, a, Fc)
+            if got is not None:
+                return got
+            return self._checked(q, qdot, a, Fc, None)[0]
+        return self._checked(q, qdot, a, Fc, None, {"F": out})[0]
 
     def torque(self, q, qdot, a, Fc, tau0=None, out: np.ndarray | None = None) -> np.ndarray:
         """``tau = J^T F* + (I - J^T Jbar^T) tau0`` (for N states, into ``out`` when given)."""
