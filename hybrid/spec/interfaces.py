@@ -1,0 +1,1 @@
+"""Each interface between generated C and Python, declared once (filled in below)."""
