@@ -27,6 +27,9 @@ from dataclasses import dataclass
 import casadi as ca
 import sympy as sp
 
+from hybrid.spec.controller_step import CONTROLLER_STEP
+from hybrid.spec.metrics import METRIC_NAMES, SETTLING_BAND, STEADY_WINDOW_S, TOUCH_BAND, metric_names
+
 from .emit import Unit, comment_safe, manifest, rk4_step, stamp, status_defines
 from .kernel import Arg, Kernel
 from .lanes import PRELUDE, lanes_function, libm_maps
@@ -35,19 +38,6 @@ from .lanes import PRELUDE, lanes_function, libm_maps
 #: the surface's normal force (``hybrid.metrics``' force_normal, velocity_tangential, penetration,
 #: contact_force)
 SIGNALS = ("Fc_n", "v_t", "penetration", "N")
-#: the metrics, in the order of ``hybrid.metrics`` (then one peak torque per joint)
-METRICS = ("force_overshoot_N", "force_overshoot_percent", "force_settling_time_2pct_s",
-           "speed_drop_after_force_step_m_per_s", "force_deviation_after_speed_step_N",
-           "speed_overshoot_after_speed_step_m_per_s", "steady_state_force_error_N",
-           "steady_state_speed_error_m_per_s", "rms_force_error_N", "rms_speed_error_m_per_s", "max_penetration_m",
-           "contact_losses", "time_out_of_contact_s", "first_touch_time_s", "first_touch_overshoot_N",
-           "first_touch_settling_s")
-#: the first touch's settling band, a fraction of the force reference at the touch (``hybrid.metrics``')
-TOUCH_BAND = 0.05
-#: controller-step inputs the loop drives itself (the rest are the run's parameters)
-_DRIVEN = ("q", "qd", "Fc", "integrals", "last_torque", "filter", "estimate", "t", "yd_extra", "yd_rate", "target")
-
-
 @dataclass(frozen=True)
 class LoopSpec:
     """What one closed loop is made of: the plant's state derivative ``rhs(x, tau, ...)`` and output
@@ -103,11 +93,22 @@ def blocks(spec: LoopSpec) -> list[tuple[str, int]]:
         if sizes.setdefault(a.name, a.size) != a.size:
             raise ValueError(f"plant input {a.name} has two sizes")
     out += [(f"plant.{n}", s) for n, s in sizes.items()]
-    names = [a.name for a in spec.step.inputs]
-    if tuple(names[:len(_DRIVEN)]) != _DRIVEN:
-        raise ValueError(f"a controller step's inputs start {_DRIVEN}, got {names[:len(_DRIVEN)]}")
-    out += [(f"controller.{a.name}", a.size) for a in spec.step.inputs[len(_DRIVEN):]]
+    out += [(f"controller.{a.name}", a.size) for a in _parameters(spec.step)]
     return out + [("force_step", 3), ("speed_step", 3)]
+
+
+def _parameters(step: Kernel) -> list[Arg]:
+    """The step's parameters (:data:`hybrid.spec.controller_step.CONTROLLER_STEP`'s), in order: a run's row holds
+    them; the loop itself drives the inputs that change at every sample."""
+    if [a.name for a in step.inputs] != [p.name for p in CONTROLLER_STEP.inputs]:
+        raise ValueError(f"the controller step's inputs {[a.name for a in step.inputs]} are not its declaration's")
+    return [a for a in step.inputs if a.name in CONTROLLER_STEP.parameters]
+
+
+#: what the loop gives the step's inputs that change at every sample (the others are zero: the plant's sensor
+#: gives the wrench on the robot itself and the surface is told, so no filter and no estimate run, and every
+#: reference is a step)
+_DRIVEN = {"q": "x", "qd": "x + {nq}", "Fc": "fc", "integrals": "z", "last_torque": "last", "t": "tv"}
 
 
 def _signature(prefix: str) -> str:
@@ -129,7 +130,7 @@ def _driver(prefix: str, spec: LoopSpec, stepping: Kernel) -> str:
         offset[name] = at
         at += size
     nb, nf, m = at, len(spec.force_columns), step.inputs[3].size // 2
-    ns, nm = nf + len(SIGNALS), len(METRICS) + nq
+    ns, nm = nf + len(SIGNALS), len(metric_names(nq))
     ny = stepping.outputs[2].size  # the output record, computed with each step's first stage
     names = spec.outputs.outputs[0].names
     force, signals = ([names.index(c) for c in cols] for cols in (spec.force_columns, stepping.outputs[1].names))
@@ -139,8 +140,11 @@ def _driver(prefix: str, spec: LoopSpec, stepping: Kernel) -> str:
     held = ", ".join([*(plant[a.name] for a in rhs.inputs[2:]), "pre_rhs"])
     shown = ", ".join([*(plant[a.name] for a in spec.outputs.inputs[1:]), "pre_out"])
     both = ", ".join([*(plant[a.name] for a in stepping.inputs[2:]), "pre_both"])
-    params = ", ".join([*(f"blk + {offset['controller.' + a.name]}" for a in step.inputs[len(_DRIVEN):]),
-                        "pre_step"])
+    params = ", ".join([*(f"blk + {offset['controller.' + a.name]}" for a in _parameters(step)), "pre_step"])
+    per_sample = [a for a in step.inputs if a.name in CONTROLLER_STEP.per_sample]
+    nzero = max(a.size for a in per_sample if a.name not in _DRIVEN)
+    driven = ", ".join(_DRIVEN.get(a.name, "zero").format(nq=nq) for a in per_sample)
+    M = {name: i for i, name in enumerate(METRIC_NAMES)}
     outs = step.core_outputs()
     out_decl = " ".join(f"hl_v o_{a.name}[{a.size}];" for a in outs)
     out_args = ", ".join(f"o_{a.name}" for a in outs)
@@ -198,12 +202,12 @@ static inline void window_at(lanes_window *w, const lanes_metrics *mt, const hl_
     w->Fd = hl_select(t < fat, fb, fa);
     w->vd = hl_select(t < vat, vb, va);
     w->sgn = hl_select(step >= 0.0, hl_splat(1.0), hl_splat(-1.0));
-    w->f_band = 0.02 * hl_select(fa != 0.0, hl_fabs(fa), hl_fabs(step));
+    w->f_band = {SETTLING_BAND!r} * hl_select(fa != 0.0, hl_fabs(fa), hl_fabs(step));
     w->after_f = t >= fat;
     w->before_f_end = t < hl_select(vat > fat, vat, hl_splat(end));
     w->in_f = w->after_f & w->before_f_end;
     w->in_v = t >= vat;
-    w->last = t >= end - 0.2;
+    w->last = t >= end - {STEADY_WINDOW_S!r};
     w->before_w_end = t < mt->w_end;
     w->in_t = (mt->touch >= 0.0) & w->before_w_end;
     w->any_f = hl_any(w->in_f);
@@ -299,30 +303,30 @@ static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int l, lon
     if (mt->n_f[l] > 0 && fa != fb) {{
         const double step = fa - fb, sgn = step >= 0 ? 1.0 : -1.0;
         const double lo = mt->last_out_f[l], lf = mt->last_f[l], first = mt->first_f[l];
-        out[0] = (sgn * mt->peak[l] - fa) * sgn;
-        out[1] = 100 * out[0] / fabs(step);
-        out[2] = lo < 0 ? 0.0 : lo == lf ? NAN : (lo + 1) * h - first * h;
-        out[3] = mt->drop[l];
+        out[{M['force_overshoot_N']}] = (sgn * mt->peak[l] - fa) * sgn;
+        out[{M['force_overshoot_percent']}] = 100 * out[{M['force_overshoot_N']}] / fabs(step);
+        out[{M['force_settling_time_2pct_s']}] = lo < 0 ? 0.0 : lo == lf ? NAN : (lo + 1) * h - first * h;
+        out[{M['speed_drop_after_force_step_m_per_s']}] = mt->drop[l];
     }}
     if (mt->n_v[l] > 0 && va != vb) {{
-        out[4] = mt->dev[l];
-        out[5] = mt->v_max[l] - va;
+        out[{M['force_deviation_after_speed_step_N']}] = mt->dev[l];
+        out[{M['speed_overshoot_after_speed_step_m_per_s']}] = mt->v_max[l] - va;
     }}
-    out[6] = mt->sum_fe[l] / mt->n_last[l];
-    out[7] = mt->sum_ve[l] / mt->n_last[l];
-    out[8] = sqrt(mt->sum_f2[l] / (double)rows);
-    out[9] = sqrt(mt->sum_v2[l] / (double)rows);
-    out[10] = mt->pen[l];
-    out[11] = mt->losses[l];
-    out[12] = mt->t_out[l];
-    out[13] = out[14] = out[15] = NAN;
+    out[{M['steady_state_force_error_N']}] = mt->sum_fe[l] / mt->n_last[l];
+    out[{M['steady_state_speed_error_m_per_s']}] = mt->sum_ve[l] / mt->n_last[l];
+    out[{M['rms_force_error_N']}] = sqrt(mt->sum_f2[l] / (double)rows);
+    out[{M['rms_speed_error_m_per_s']}] = sqrt(mt->sum_v2[l] / (double)rows);
+    out[{M['max_penetration_m']}] = mt->pen[l];
+    out[{M['contact_losses']}] = mt->losses[l];
+    out[{M['time_out_of_contact_s']}] = mt->t_out[l];
+    out[{M['first_touch_time_s']}] = out[{M['first_touch_overshoot_N']}] = out[{M['first_touch_settling_s']}] = NAN;
     if (mt->touch[l] >= 0) {{
         const double lo = mt->t_last_out[l], lt = mt->t_last[l], first = mt->touch[l];
-        out[13] = first * h;
-        out[14] = mt->t_peak[l] - mt->fd0[l];
-        out[15] = lo < 0 ? 0.0 : lo == lt ? NAN : (lo + 1) * h - first * h;
+        out[{M['first_touch_time_s']}] = first * h;
+        out[{M['first_touch_overshoot_N']}] = mt->t_peak[l] - mt->fd0[l];
+        out[{M['first_touch_settling_s']}] = lo < 0 ? 0.0 : lo == lt ? NAN : (lo + 1) * h - first * h;
     }}
-    for (j = 0; j < {nq}; ++j) out[{len(METRICS)} + j] = mt->tau[j][l];
+    for (j = 0; j < {nq}; ++j) out[{len(METRIC_NAMES)} + j] = mt->tau[j][l];
 }}
 
 /* the row's state of each lane in `state` and torque of each lane in `torque`; NaN for the others (a lane
@@ -363,7 +367,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     hl_v pre_rhs[PLANT_RHS_LANES_NPRE], pre_out[PLANT_OUTPUTS_LANES_NPRE], pre_both[PLANT_RHS_SIGNALS_LANES_NPRE],
         pre_step[{step.name.upper()}_LANES_NPRE];
     hl_v blk[{nb}], x[{nx}], xt[{nx}], k1[{nx}], k2[{nx}], k3[{nx}], k4[{nx}], s[{ns}], fc[6], z[{2 * m}], tv[1],
-        zero[13], base[{3 * nq}], last[{nq + 1}], y[{ny}];
+        zero[{nzero}], base[{3 * nq}], last[{nq + 1}], y[{ny}];
     {out_decl}
     lanes_run run;
     lanes_metrics mt;
@@ -389,7 +393,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     mt.w_end = hl_splat(INFINITY);
     mt.t_peak = hl_splat(-INFINITY);
     for (j = 0; j < {nq}; ++j) mt.tau[j] = hl_splat(0.0);
-    for (j = 0; j < 13; ++j) zero[j] = hl_splat(0.0);
+    for (j = 0; j < {nzero}; ++j) zero[j] = hl_splat(0.0);
     for (j = 0; j < 6; ++j) fc[j] = hl_splat(0.0);
     for (j = 0; j < {2 * m}; ++j) z[j] = hl_splat(0.0);
     for (j = 0; j <= {nq}; ++j) last[j] = hl_splat(0.0);
@@ -405,7 +409,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
 {_pick("fc", "y", force)}
         tv[0] = hl_splat(k * sample_time);
         /* the plant's sensor gives the wrench on the robot itself and the surface is told: no filter, no estimate */
-        {step.name}_lanes(x, x + {nq}, fc, z, last, zero, zero, tv, zero, zero, zero, pre_step, {out_args});
+        {step.name}_lanes({driven}, pre_step, {out_args});
         at_sample = run.alive;  /* the lanes whose state this sample starts from is recorded */
 {guards}        flag(&run, {finite}, HYBRID_NONFINITE, k);
         for (j = 0; j < {2 * m}; ++j) z[j] = {z_next}[j];
@@ -523,7 +527,7 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
     rhs = Kernel("plant_rhs", spec.rhs.inputs, spec.rhs.outputs, spec.rhs.doc)
     held = tuple(a.name for a in spec.rhs.inputs[2:])
     shown = tuple(a.name for a in spec.outputs.inputs[1:])
-    params = tuple(a.name for a in spec.step.inputs[len(_DRIVEN):])
+    params = tuple(a.name for a in _parameters(spec.step))
     stepping = stepping_kernel(spec)
     stages = "".join(lanes_function(k, name, fixed, "HL_STAGE", near=nq, apart=True) + "\n" for k, name, fixed in (
         (rhs, "plant_rhs_lanes", held), (stepping, "plant_rhs_signals_lanes", held + shown)))
@@ -554,7 +558,7 @@ int {prefix}_lanes(void);
     loop = {"symbol": f"{prefix}_closed_loop", "lanes_symbol": f"{prefix}_lanes",
             "blocks": [{"name": n, "size": s} for n, s in blocks(spec)],
             "state": list(spec.rhs.inputs[0].names or ()), "nx": spec.rhs.inputs[0].size, "nq": nq,
-            "metrics": [*METRICS, *(f"peak_torque_joint{j + 1}_Nm" for j in range(nq))],
+            "metrics": list(metric_names(nq)),
             "signals": [*spec.force_columns, *SIGNALS],
             "outputs": list(stepping.outputs[2].names)}
     text = manifest(prefix, (), f"CasADi {ca.__version__}", {**info, "parts": N_PARTS, "closed_loop": loop})

@@ -61,10 +61,13 @@ from dataclasses import dataclass
 
 import casadi as ca
 
+from hybrid.spec.controller_step import CONTROLLER_STEP, ESTIMATE, LOOP_GAINS, NO_LIMIT, OPTIONS, WRENCH
+from hybrid.spec.interfaces import Dims
+
 from . import body_frame as bf
 from . import factor
 from . import rigid_body as rb
-from .kernel import Arg, Guard, Kernel, conditioning_guard
+from .kernel import Arg, Guard, Kernel, conditioning_guard, declared
 from .rigid_body import cross
 from .surfaces import SurfaceSpec, TaskFrame, task_frame
 from .task_law import (
@@ -78,31 +81,6 @@ from .task_law import (
     frame_guard,
     task_rows,
 )
-
-#: per-axis loop gains, in this order in the ``gains`` array
-LOOP_GAINS = ("KP", "KI", "KI2", "KD")
-#: the ``options`` array: switches (0/1) and numbers
-OPTIONS = ("curvature", "sample_time", "khatib", "integral_limit", "loss_threshold", "approach_speed",
-           "pseudoinverse")
-#: what each option means (the standalone controller's header documents its fields with these)
-OPTION_DOCS = {
-    "curvature": "1: the law feeds the task frame's rate R' forward (the curvature term), 0: not [1]",
-    "sample_time": "the sample period T at which the integrals advance [s]",
-    "khatib": "1: the law takes the desired force R^T Sigma F_d (Khatib's scheme), 0: the measured wrench [1]",
-    "integral_limit": "anti-windup: the largest integral action per axis [m/s^2 or rad/s^2]; 1e300: off",
-    "loss_threshold": "a force axis whose force falls below this has lost contact [N or N m]; -1e300: off",
-    "approach_speed": "the speed at which a force axis that lost contact approaches the surface [m/s or rad/s]",
-    "pseudoinverse": "Raibert & Craig's scheme: 1: the selected rows' pseudo-inverse (Fisher & Mujtaba), 0: J_y^-1",
-}
-#: the posture task's per-joint numbers, in this order (n each) in the ``posture`` array
-POSTURE = ("q_rest", "Kp", "Kd")
-#: the torque limits' per-joint numbers, in this order (n each) in the ``limits`` array
-LIMITS = ("tau_max", "rate_max")
-#: the force/torque sensor's numbers (``hybrid.control.wrench_sensor``): the mount (position, rotation in
-#: tip axes, row-major), the sign, the tool (mass, centre of mass in sensor axes), the bias, the filter
-SENSOR = ("r_x", "r_y", "r_z", *(f"R_{i}{j}" for i in range(3) for j in range(3)), "sign", "tool_mass",
-          "tool_cx", "tool_cy", "tool_cz", "bias_fx", "bias_fy", "bias_fz", "bias_mx", "bias_my", "bias_mz",
-          "cutoff_hz", "order")
 
 
 @dataclass(frozen=True)
@@ -163,10 +141,6 @@ def posture_torque(chain: rb.Chain, arm, params, q, qd, posture):
     return bf.crba(arm.tree, params) @ w + bf.rnea(arm.tree, params, qd)
 
 
-#: the largest finite double (|x| <= it is false for infinities and NaN)
-_DBL_MAX = 1.7976931348623157e308
-
-
 def _clamped(x, lo, hi):
     """``x`` within ``[lo, hi]`` by comparisons (``fmin``/``fmax`` would make a NaN a number)."""
     return ca.if_else(x > hi, hi, ca.if_else(x < lo, lo, x))
@@ -187,7 +161,7 @@ def limited(tau, z, z_next, last, limits):
         lo, hi = ca.if_else(started, prev[j] - rate_max[j], -tau_max[j]), ca.if_else(started, prev[j] + rate_max[j],
                                                                                           tau_max[j])
         # a torque that is not finite stays as it is, and is reported so
-        finite = ca.fabs(tau[j]) <= _DBL_MAX
+        finite = ca.fabs(tau[j]) <= NO_LIMIT  # the largest double: false for infinities and NaN
         out.append(ca.if_else(finite, _clamped(_clamped(tau[j], lo, hi), -tau_max[j], tau_max[j]), tau[j]))
     out = ca.vertcat(*out)
     saturated = ca.sum1(out != tau) > 0
@@ -231,10 +205,6 @@ def low_pass(x, state, sensor, sample_time):
         ys.append(ca.if_else(on, y, x[i]))
         nxt += [ca.if_else(on, b1 * x[i] - a1 * y + s2, 0), ca.if_else(on, b2 * x[i] - a2 * y, 0)]
     return ca.vertcat(*ys), ca.vertcat(*nxt, 1)
-
-
-#: the estimator's state: the normal estimate, its rate, 1 once started
-ESTIMATE = ("n_x", "n_y", "n_z", "ndot_x", "ndot_y", "ndot_z", "F_x", "F_y", "F_z", "started")
 
 
 def estimated_frame(state, s, F, v, e, T):
@@ -326,16 +296,15 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
     sensor's raw reading, turned into ``F_c`` by :func:`sensor_wrench` and :func:`low_pass`) change what
     is computed, so they are compiled in (a variant each); the other options are run-time numbers."""
     n, m = chain.n, len(axes)
-    q, qd = ca.SX.sym("q", n), ca.SX.sym("qd", n)
-    Fc, z, last = ca.SX.sym("Fc", 6), ca.SX.sym("integrals", 2 * m), ca.SX.sym("last_torque", n + 1)
-    filt, sensor = ca.SX.sym("filter", 13), ca.SX.sym("sensor", len(SENSOR))
-    est = ca.SX.sym("estimate", len(ESTIMATE))
-    t, steps = ca.SX.sym("t"), ca.SX.sym("steps", 3 * m)
-    yd_extra, yd_rate, target = ca.SX.sym("yd_extra", m), ca.SX.sym("yd_rate", m), ca.SX.sym("target", 9)
-    gains, sigma = ca.SX.sym("gains", len(LOOP_GAINS) * m), ca.SX.sym("selection", m)
-    params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
-    theta, e, opts = ca.SX.sym("surface", len(spec.parameters)), ca.SX.sym("e", 3), ca.SX.sym("options", len(OPTIONS))
-    posture, limits = ca.SX.sym("posture", len(POSTURE) * n), ca.SX.sym("limits", len(LIMITS) * n)
+    names = tuple(j.name for j in chain.joints)
+    axis_names = tuple(AXIS_NAMES[i] for i in axes)
+    dims = Dims(names, axis_names, rb.parameter_names(chain), spec.parameters)
+    sym = {p.name: ca.SX.sym(p.name, p.size_of(dims)) for p in CONTROLLER_STEP.inputs}
+    q, qd, Fc, z, last, filt, est, t = (sym[k] for k in ("q", "qd", "Fc", "integrals", "last_torque", "filter",
+                                                         "estimate", "t"))
+    yd_extra, yd_rate, target = sym["yd_extra"], sym["yd_rate"], sym["target"]
+    steps, gains, sigma, params, theta = (sym[k] for k in ("steps", "gains", "selection", "robot", "surface"))
+    e, opts, posture, limits, sensor = (sym[k] for k in ("e", "options", "posture", "limits", "sensor"))
     o = {name: opts[i] for i, name in enumerate(OPTIONS)}
     o["position_error"] = float(position_error)
     curvature = o["curvature"]
@@ -347,7 +316,7 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
         _, raw_Fc = sensor_wrench(arm.frames.tip_R, reading, sensor, params[-3:])
         Fc, filt_next = low_pass(raw_Fc, filt, sensor, o["sample_time"])
     else:
-        filt_next = ca.SX.zeros(13, 1)
+        filt_next = ca.SX.zeros(filt.shape[0], 1)
     if spec.estimated:  # the frame from the estimate of the normal (the surface's parameters are the tuning)
         if desired_frame or position_error:
             raise ValueError("an estimated surface has no desired point's frame or position error")
@@ -374,20 +343,12 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
     _, tau, cond = decoupling(chain, arm, params, qd, Rm, Rdm, a, contact, ca.SX.zeros(n, 1), law_curvature)
     tau_rc, cond_rc = _raibert_craig(chain, arm, params, Rm, a, yd, gains, sigma, o["pseudoinverse"])
 
-    names = tuple(j.name for j in chain.joints)
-    axis_names = tuple(AXIS_NAMES[i] for i in axes)
-    velocity_units = tuple("m/s" if i < 3 else "rad/s" for i in axes)
-    force_units = tuple("N" if i < 3 else "N m" for i in axes)
-    a_q = Arg("q", q, rb.joint_units(chain, "q"), names=names)
-    a_qd = Arg("qd", qd, rb.joint_units(chain, "qd"), names=names)
-    wrench_names = ("f_x", "f_y", "f_z", "m_x", "m_y", "m_z")
-    a_fc = Arg("Fc", reading, ("N",) * 3 + ("N m",) * 3, names=wrench_names)
-    a_robot = Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain))
-    a_sensor = Arg("sensor", sensor, "m, 1, 1, kg, m, N and N m, Hz, 1 (see hybrid/control/wrench_sensor.py)",
-                   names=SENSOR)
-    a_s = Arg("surface", theta, "m (lengths), 1 (directions)", names=spec.parameters)
-    a_e = Arg("e", e, "1", names=("e_x", "e_y", "e_z"))
-    integral_names = tuple(f"{k}_{ax}" for ax in axis_names for k in ("z1", "z2"))
+    wrench_units = ("N",) * 3 + ("N m",) * 3
+    inputs = declared(CONTROLLER_STEP.inputs, dims, {**sym, "Fc": reading}, {
+        "q": rb.joint_units(chain, "q"), "qd": rb.joint_units(chain, "qd"), "Fc": wrench_units,
+        "last_torque": (*rb.joint_units(chain, "tau"), "1"), "robot": rb.parameter_units(chain)})
+    a_q, a_qd, a_fc, a_robot, a_s, a_e, a_sensor = (next(a for a in inputs if a.name == k) for k in (
+        "q", "qd", "Fc", "robot", "surface", "e", "sensor"))
     guards = (frame_guard(tf.sine),)
     if desired_frame:
         guards += (Guard("loop_frame", tf_f.sine, "HYBRID_FRAME_UNDEFINED", frame_guard(tf.sine).tolerance,
@@ -395,46 +356,18 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
     if position_error and max(axes) >= 3:  # T(r) enters the position error of an angular axis
         guards += (Guard("euler", cos_beta, "HYBRID_EULER_SINGULAR", EULER_TOL,
                          "|cos beta| of the tip's ZYX Euler angles (the position error's T(r))"),)
-    inputs = (
-        a_q, a_qd, a_fc,
-        Arg("integrals", z, "per axis: unit of e times s, then times s^2", names=integral_names),
-        Arg("last_torque", last, (*rb.joint_units(chain, "tau"), "1"),
-            names=(*(f"tau_{j}" for j in names), "started")),
-        Arg("filter", filt, "as the wrench (the sensor filter's state, two per component), then 1 once started"),
-        Arg("estimate", est, "1, 1/s, N, 1 (the normal's estimate, its rate, the last force, 1 once started)",
-            names=ESTIMATE),
-        Arg("t", t, "s"),
-        Arg("yd_extra", yd_extra, "m/s, rad/s (velocity axes); N, N m (force axes)", names=axis_names),
-        Arg("yd_rate", yd_rate, "m/s^2, rad/s^2 (velocity axes; unused on force axes)", names=axis_names),
-        Arg("target", target, "m, m/s, rad",
-            names=("p_x", "p_y", "p_z", "pd_x", "pd_y", "pd_z", "alpha", "beta", "gamma")),
-        Arg("steps", steps, "as yd_extra, then s", names=tuple(f"{k}_{ax}" for ax in axis_names
-                                                                for k in ("before", "after", "at"))),
-        Arg("gains", gains, "per axis KP, KI, KI2, KD (see codegen/controller_step.py)",
-            names=tuple(f"{g}_{ax}" for ax in axis_names for g in LOOP_GAINS)),
-        Arg("selection", sigma, "1 (1: force-controlled axis)", names=axis_names),
-        a_robot, a_s, a_e,
-        Arg("options", opts, "1, s, 1, unit of a, N or N m, m/s or rad/s, 1", names=OPTIONS),
-        Arg("posture", posture, "per joint: rad or m (q_rest), then 1/s^2 (Kp), then 1/s (Kd)",
-            names=tuple(f"{k}_{j}" for k in POSTURE for j in names)),
-        Arg("limits", limits, "per joint: N m or N (tau_max), then N m or N per sample (rate_max); DBL_MAX: none",
-            names=tuple(f"{k}_{j}" for k in LIMITS for j in names)), a_sensor)
-
     def outputs(torque):
         torque, z_kept, saturated = limited(torque, z, z_next, last, limits)
-        return (Arg("tau", torque, rb.joint_units(chain, "tau")),
-                Arg("integrals_next", z_kept, "as integrals"),
-                Arg("a", a_f, tuple("m/s^2" if i < 3 else "rad/s^2" for i in axes), names=axis_names),
-                Arg("y", y, velocity_units, names=axis_names), Arg("f", f, force_units, names=axis_names),
-                Arg("saturated", saturated, "1 (1: a limit bounded the torque; the integrals were kept)"),
-                Arg("filter_next", filt_next, "as filter"),
-                Arg("estimate_next", est_next, "as estimate", names=ESTIMATE),
-                Arg("contact_wrench", Fc, ("N",) * 3 + ("N m",) * 3, names=wrench_names))
+        return declared(CONTROLLER_STEP.outputs, dims, {
+            "tau": torque, "integrals_next": z_kept, "a": a_f, "y": y, "f": f, "saturated": saturated,
+            "filter_next": filt_next, "estimate_next": est_next, "contact_wrench": Fc}, {
+            "tau": rb.joint_units(chain, "tau"), "a": tuple("m/s^2" if i < 3 else "rad/s^2" for i in axes),
+            "y": tuple("m/s" if i < 3 else "rad/s" for i in axes), "f": tuple("N" if i < 3 else "N m" for i in axes),
+            "contact_wrench": wrench_units})
 
     what = (f"one control sample on a {spec.kind}: task velocity y = R_f v and wrench f = R_f F_c in the loop "
             "frame, the loops' task acceleration a and integrals after the sample, and the torque tau of ")
-    per_state = ("q", "qd", "Fc", "integrals", "last_torque", "filter", "estimate", "t", "yd_extra", "yd_rate",
-                 "target")
+    per_state = CONTROLLER_STEP.per_sample
     step = Kernel("controller_step", inputs, outputs(tau),
                   what + f"the decoupling law (task axes {', '.join(axis_names)})", batched=per_state,
                   guards=(*guards, conditioning_guard(cond, CONDITIONING)))
@@ -461,8 +394,8 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
         (Arg("p", p, "m"), Arg("v", v, "m/s, rad/s", names=("vx", "vy", "vz", "wx", "wy", "wz")),
          Arg("task_velocity", R6 @ v, "m/s, rad/s", names=AXIS_NAMES),
          Arg("task_wrench", R6 @ at_tip, "N, N m", names=AXIS_NAMES),
-         Arg("compensated", compensated, ("N",) * 3 + ("N m",) * 3, names=wrench_names),
-         Arg("contact_wrench", at_tip, ("N",) * 3 + ("N m",) * 3, names=wrench_names)),
+         Arg("compensated", compensated, ("N",) * 3 + ("N m",) * 3, names=WRENCH),
+         Arg("contact_wrench", at_tip, ("N",) * 3 + ("N m",) * 3, names=WRENCH)),
         "what the controller measures: tip position p and twist v = (p', w) in base axes; the sensor's "
         "reading less its bias and the tool's weight (sensor axes) and the wrench on the robot at the tip F_c "
         "(base axes, before the filter); on all six task axes at the tip the task velocity R v and the task "

@@ -27,6 +27,7 @@ from pathlib import Path
 
 from hybrid.native import checkout
 from hybrid.native.stamp import MANIFEST_STAMP, json_body_hash, stamp
+from hybrid.spec.interfaces import KERNEL_STATUSES, STATUS_CODES
 
 from . import model
 from .casadi_backend import kernel_sources
@@ -37,8 +38,8 @@ from .sympy_backend import kernel_body
 BACKENDS = ("sympy", "casadi")
 #: bumped whenever the emitted interface changes; recorded in every manifest and cache key
 GENERATOR_VERSION = "5"
-STATUS = {"HYBRID_OK": 0, "HYBRID_SINGULAR": 1, "HYBRID_NONFINITE": 2, "HYBRID_FRAME_UNDEFINED": 3,
-          "HYBRID_EULER_SINGULAR": 4}
+#: a unit's statuses as its C names them (the numbers of :data:`hybrid.spec.interfaces.STATUSES`)
+STATUS = {f"HYBRID_{name}": STATUS_CODES[name] for name in KERNEL_STATUSES}
 
 
 @dataclass(frozen=True)

@@ -101,3 +101,20 @@ class Kernel:
     def core_outputs(self) -> tuple[Arg, ...]:
         """What the backend computes: the outputs, then each guard's measure (a 1-column)."""
         return self.outputs + tuple(Arg(g.name, g.expr) for g in self.guards)
+
+
+def declared(ports, dims, exprs: dict, units: dict | None = None) -> tuple[Arg, ...]:
+    """The arguments of the declared ``ports`` (:mod:`hybrid.spec.interfaces`) for ``dims``, in their
+    order, from their expressions by name: the declaration's names, element names and units (``units``
+    states an argument's units element by element where the kernel knows more, e.g. a joint's kind). An
+    expression of another size than the declared is refused: the kernel and its declaration disagree."""
+    units = units or {}
+    args = []
+    for p in ports:
+        expr = exprs[p.name]
+        size = p.size_of(dims)
+        if int(expr.shape[0]) != size:
+            raise ValueError(f"{p.name}: the kernel computes {int(expr.shape[0])} numbers, the declaration says "
+                             f"{p.size} = {size}")
+        args.append(Arg(p.name, expr, units.get(p.name, p.unit), names=p.element_names(dims)))
+    return tuple(args)

@@ -27,42 +27,31 @@ import re
 import casadi as ca
 
 from hybrid.native.stamp import MANIFEST_STAMP, json_body_hash, stamp
+from hybrid.spec.controller_step import CONTROLLER_STEP, OPTION_DOCS, STATE_NEXT
+from hybrid.spec.interfaces import REFERENCE, STATE, STATUS_CODES, STATUSES
 
-from .controller_step import OPTION_DOCS
-from .emit import GENERATOR_VERSION, STATUS, Unit, _casadi_cores, comment_safe
+from .emit import GENERATOR_VERSION, Unit, _casadi_cores, comment_safe
 from .kernel import Kernel
 
-#: statuses of the call beyond the kernels' (HYBRID_OK .. HYBRID_EULER_SINGULAR), in this order
-CALL_STATUS = ("INPUT_NONFINITE", "SAMPLE_LATE", "SAMPLE_EARLY", "SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
-#: the step's inputs the call fills from its own arguments and the struct's state
-_CALL = {"q": "q", "qd": "qd", "Fc": "wrench", "integrals": "c->integrals", "last_torque": "last",
-         "filter": "c->filter", "estimate": "c->estimate", "t": "tv"}
-#: the step's inputs the caller computes per sample (references given as code), zero after init
-_CALLER = ("yd_extra", "yd_rate", "target")
-#: the inputs held as named scalar fields (their elements' names), not an array
-_SCALARS = ("options",)
 #: what the step's wrench argument is, unless the unit's info says otherwise
 _WRENCH = "the force and moment on the robot at the tip frame's origin, base axes [N, N m]"
-#: what each status means, for the header and the manifest
-_MEANING = {
-    "OK": "a sample on time; tau is the law's, the integrals advanced",
-    "SINGULAR": "the task Jacobian's conditioning is below singular_tol; tau is the torque last written",
-    "NONFINITE": "the law's output is not finite; tau is the torque last written",
-    "FRAME_UNDEFINED": "the task frame's reference direction is parallel to the normal; tau is the torque last "
-                       "written",
-    "EULER_SINGULAR": "cos(beta) of the tip's ZYX Euler angles is near 0; tau is the torque last written",
-    "INPUT_NONFINITE": "t, q, qd or wrench is not finite; tau is the torque last written, nothing changed",
-    "SAMPLE_LATE": "t advanced by more than (1 + timing_tolerance) sample_time",
-    "SAMPLE_EARLY": "t advanced by less than (1 - timing_tolerance) sample_time",
-    "SAMPLE_REPEATED": "t equals the last sample's",
-    "SAMPLE_BACKWARDS": "t is before the last sample's",
-}
+#: the C expression of each per-sample input the call fills from its own arguments and the struct's state
+_CALL = {"q": "q", "qd": "qd", "Fc": "wrench", "last_torque": "last", "t": "tv"}
+#: the inputs held as named scalar fields (their elements' names), not an array
+_SCALARS = ("options",)
 
 
 def statuses() -> dict[str, int]:
-    """Every status of the standalone step by its short name."""
-    codes = {k.removeprefix("HYBRID_"): v for k, v in STATUS.items()}
-    return codes | {name: len(STATUS) + i for i, name in enumerate(CALL_STATUS)}
+    """Every status of the standalone step by its short name (:data:`hybrid.spec.interfaces.STATUSES`)."""
+    return {s.name: s.code for s in STATUSES}
+
+
+def status_name_source(prefix: str, names) -> str:
+    """The C function ``<prefix>_status_name`` naming each of the statuses ``names`` (their numbers are
+    :data:`hybrid.spec.interfaces.STATUSES`'), ``"UNKNOWN"`` another number."""
+    cases = "".join(f'    case {STATUS_CODES[n]}: return "{n}";\n' for n in names)
+    return (f"const char *{prefix}_status_name(int status) {{\n    switch (status) {{\n{cases}"
+            '    default: return "UNKNOWN";\n    }\n}\n')
 
 
 def _number(v: float) -> str:
@@ -114,15 +103,20 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     ``values`` holds the configuration ``_init`` writes: every parameter input of ``step`` by name
     (a sequence of numbers), ``timing_tolerance`` and ``singular_tol``.
     """
+    declared = [p.name for p in (*CONTROLLER_STEP.inputs, *CONTROLLER_STEP.outputs)]
+    if [a.name for a in (*step.inputs, *step.outputs)] != declared:
+        raise ValueError(f"a controller step's arguments are not its declaration's {declared}")
     inputs = {a.name: a for a in step.inputs}
-    driven = (*_CALL, *_CALLER)
-    if tuple(inputs)[:len(driven)] != driven:
-        raise ValueError(f"a controller step's inputs start {driven}, got {tuple(inputs)[:len(driven)]}")
-    params = [a for a in step.inputs[len(driven):]]
+    params = [inputs[n] for n in CONTROLLER_STEP.parameters]
+    caller = CONTROLLER_STEP.named(REFERENCE)
+    # the state the struct keeps as it is (the last torque is the struct's tau and has_torque; the integrals
+    # advance only on a sample on time)
+    kept = [inputs[n] for n in CONTROLLER_STEP.named(STATE) if n not in ("last_torque", "integrals")]
     nq, m = inputs["q"].size, inputs["yd_extra"].size
     out = {a.name: a for a in step.outputs}
-    tau, z_next, saturated, filter_next = out["tau"], out["integrals_next"], out["saturated"], out["filter_next"]
-    loop_out = [out[k] for k in ("a", "y", "f", "contact_wrench")]
+    tau, z_next, saturated = out["tau"], out["integrals_next"], out["saturated"]
+    loop_out = [out[n] for n in out if n not in (*STATE_NEXT.values(), "saturated")]
+    doc = {p.name: p.doc for p in (*CONTROLLER_STEP.inputs, *CONTROLLER_STEP.outputs)}
     P = prefix.upper()
     stem = stem or prefix
     codes = statuses()
@@ -142,21 +136,17 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
         if a.name in _SCALARS:
             fields += [f"    double {n}; /* {comment_safe(OPTION_DOCS.get(n, n))} */" for n in a.names]
         else:
-            array_field(a, f"{a.name}")
+            array_field(a, doc[a.name])
     fields.append("    double timing_tolerance; /* a sample is on time when t advanced by sample_time within this "
                   "fraction of it [1]; < 0: no timing check */")
     fields.append("    double singular_tol; /* the task Jacobian's least conditioning [1] */")
     fields.append("    /* ---- references the caller computes each sample (0 after init): added to the steps' "
                   "values */")
-    for name in _CALLER:
-        array_field(inputs[name], {"yd_extra": "reference added per axis",
-                                   "yd_rate": "reference rate per axis (velocity axes' feedforward)",
-                                   "target": "the desired point, its velocity and ZYX angles (desired frame, "
-                                             "position error)"}[name])
+    for name in caller:
+        array_field(inputs[name], doc[name])
     fields.append("    /* ---- state kept between samples (zero after init and reset) */")
-    array_field(inputs["integrals"], "the loops' integrals")
-    array_field(inputs["filter"], "the wrench filter's state")
-    array_field(inputs["estimate"], "an estimated surface's state")
+    for a in (inputs["integrals"], *kept):
+        array_field(a, doc[a.name])
     tau_unit = ", ".join(dict.fromkeys(tau.unit if isinstance(tau.unit, tuple) else (tau.unit,)))
     fields.append(f"    double tau[{nq}]; /* the torque last written [{comment_safe(tau_unit)}] */")
     fields.append("    int has_torque; /* 1: tau is the arm's torque, the next sample is rate-limited from it "
@@ -165,13 +155,11 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     fields.append("    int has_clock; /* 1: t_last is set (the next sample's timing is checked) */")
     fields.append("    /* ---- the last sample's loop outputs (loop frame) */")
     for a in loop_out:
-        array_field(a, {"a": "task acceleration", "y": "task velocity", "f": "task wrench",
-                        "contact_wrench": "the wrench on the robot at the tip the law used (base axes)"}[a.name])
+        array_field(a, doc[a.name])
     fields.append("    int saturated; /* 1: a torque limit bounded the last sample's torque (integrals kept) */")
     struct = "typedef struct {\n" + "\n".join(fields) + f"\n}} {prefix}_controller;"
 
-    status_lines = "\n".join(f"#define {P}_{name} {code} /* {comment_safe(_MEANING[name])} */"
-                             for name, code in codes.items())
+    status_lines = "\n".join(f"#define {P}_{s.name} {s.code} /* {comment_safe(s.meaning)} */" for s in STATUSES)
     defines = [f"#define {P}_NQ {nq} /* joints */", f"#define {P}_M {m} /* task axes */"]
     header = f"""#ifndef {stem.upper()}_H
 #define {stem.upper()}_H
@@ -209,13 +197,12 @@ const char *{prefix}_status_name(int status);
     init = init_statements("c", params, values, _SCALARS)
     init.append(f"    c->timing_tolerance = {_number(values['timing_tolerance'])};")
     init.append(f"    c->singular_tol = {_number(values['singular_tol'])};")
-    for name in _CALLER:
+    for name in caller:
         init.append(f"    for (i = 0; i < {inputs[name].size}; ++i) c->{name}[i] = 0.0;")
     scalars = {a.name: a for a in params if a.name in _SCALARS}
     packs = "".join(f"    double {name}[{a.size}];\n" for name, a in scalars.items())
     pack = "".join(f"    {name}[{i}] = c->{n};\n" for name, a in scalars.items() for i, n in enumerate(a.names))
-    call = ", ".join([*_CALL.values(), *(f"c->{n}" for n in _CALLER),
-                      *(a.name if a.name in _SCALARS else f"c->{a.name}" for a in params),
+    call = ", ".join([*(_CALL.get(a.name, a.name if a.name in _SCALARS else f"c->{a.name}") for a in step.inputs),
                       *(f"o_{a.name}" for a in step.core_outputs())])
     outs = "".join(f"    double o_{a.name}[{a.size}];\n" for a in step.core_outputs())
     guards = "".join(
@@ -223,10 +210,16 @@ const char *{prefix}_status_name(int status);
         f"{'c->singular_tol' if g.tolerance == 'singular_tol' else g.c_tolerance}) "
         f"status = {P}_{g.status.removeprefix('HYBRID_')};\n" for g in step.guards)
     finite = " || ".join(f"!all_finite(o_{a.name}, {a.size})" for a in step.core_outputs())
-    keep = "".join(f"    for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = o_{a.name}[i];\n" for a in loop_out)
+
+    def zeroed(arrays) -> str:
+        return "".join(f"    for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = 0.0;\n" for a in arrays)
+
+    def copied(pairs) -> str:  # (field, the output it takes)
+        return "".join(f"    for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = o_{o}[i];\n" for a, o in pairs)
+
+    keep, advance = copied((a, a.name) for a in loop_out), copied((a, STATE_NEXT[a.name]) for a in kept)
     if "sample_time" not in scalars["options"].names:
         raise ValueError("the controller step's options have no sample_time")
-    names = ", ".join(f'"{n}"' for n in codes)
     source = f"""/* {prefix}: {comment_safe(what)}.
    Emitted by hybrid's codegen (generator version {GENERATOR_VERSION}, CasADi {ca.__version__}).
    Compile: cc -std=c99 -O2 -c {stem}.c (link with -lm). */
@@ -245,10 +238,8 @@ static int all_finite(const double *v, int n) {{
 void {prefix}_controller_reset({prefix}_controller *c) {{
     int i;
     for (i = 0; i < {2 * m}; ++i) c->integrals[i] = 0.0;
-    for (i = 0; i < {inputs["filter"].size}; ++i) c->filter[i] = 0.0;
-    for (i = 0; i < {inputs["estimate"].size}; ++i) c->estimate[i] = 0.0;
-    for (i = 0; i < {nq}; ++i) c->tau[i] = 0.0;
-{"".join(f"    for (i = 0; i < {a.size}; ++i) c->{a.name}[i] = 0.0;{chr(10)}" for a in loop_out)}    c->has_torque = 0;
+{zeroed(kept)}    for (i = 0; i < {nq}; ++i) c->tau[i] = 0.0;
+{zeroed(loop_out)}    c->has_torque = 0;
     c->t_last = 0.0;
     c->has_clock = 0;
     c->saturated = 0;
@@ -301,26 +292,20 @@ int {prefix}_controller_step({prefix}_controller *c, double t, const double *q, 
     for (i = 0; i < {nq}; ++i) tau[i] = c->tau[i] = o_{tau.name}[i];
     c->has_torque = 1;
     c->saturated = o_{saturated.name}[0] != 0.0;
-    for (i = 0; i < {filter_next.size}; ++i) c->filter[i] = o_{filter_next.name}[i];
-    for (i = 0; i < {inputs["estimate"].size}; ++i) c->estimate[i] = o_estimate_next[i];
-{keep}    if (on_time != {P}_OK) return on_time;
+{advance}{keep}    if (on_time != {P}_OK) return on_time;
     for (i = 0; i < {2 * m}; ++i) c->integrals[i] = o_{z_next.name}[i];
     return {P}_OK;
 }}
 
-const char *{prefix}_status_name(int status) {{
-    static const char *const names[] = {{{names}}};
-    return status >= 0 && status < {len(codes)} ? names[status] : "UNKNOWN";
-}}
-"""
+{status_name_source(prefix, codes)}"""
     fields_doc = [{"name": a.name, "size": a.size, **({"names": list(a.names)} if a.names else {}),
                    "unit": a.unit if isinstance(a.unit, str) else list(a.unit)}
-                  for a in (*params, *(inputs[n] for n in _CALLER))]
+                  for a in (*params, *(inputs[n] for n in caller))]
     data = {"do_not_edit": MANIFEST_STAMP, "unit": stem, **({"prefix": prefix} if stem != prefix else {}),
             "generator": GENERATOR_VERSION,
             "tools": f"CasADi {ca.__version__}", **info, "nq": nq, "m": m,
             "status": {f"{P}_{k}": v for k, v in codes.items()},
-            "status_meaning": {f"{P}_{k}": _MEANING[k] for k in codes},
+            "status_meaning": {f"{P}_{s.name}": s.meaning for s in STATUSES},
             "struct": f"{prefix}_controller", "fields": fields_doc,
             "scalars": {a.name: list(a.names) for a in params if a.name in _SCALARS},
             "functions": [f"{prefix}_controller_init", f"{prefix}_controller_reset", f"{prefix}_controller_step",

@@ -26,14 +26,15 @@ import json
 import casadi as ca
 
 from hybrid.native.stamp import MANIFEST_STAMP, json_body_hash, stamp
+from hybrid.spec.interfaces import STATUS_CODES
 
 from .closed_loop import SIGNALS
 from .emit import GENERATOR_VERSION, Unit, _casadi_cores, _sympy_cores, comment_safe, rk4_step
 from .kernel import Kernel
-from .standalone_controller import _index_macros, _number, array_statement, init_statements
+from .standalone_controller import _index_macros, _number, array_statement, init_statements, status_name_source
 
-#: the plant's statuses
-STATUS = {"OK": 0, "NONFINITE": 1, "INPUT_NONFINITE": 2}
+#: the plant's statuses (their numbers are :data:`hybrid.spec.interfaces.STATUSES`', as every unit's) and what
+#: each means for a plant
 _MEANING = {
     "OK": "done",
     "NONFINITE": "the state would stop being finite: x is the last finite state, steps counts the steps done",
@@ -119,8 +120,8 @@ def build_standalone_plant(rhs: Kernel, outputs: Kernel, force_columns: tuple[st
     macros += _index_macros(prefix, "signals", wanted[len(force_columns):])
     macros += _index_macros(prefix, "y", y.names)
 
-    status_lines = "\n".join(f"#define {P}_{name} {code} /* {comment_safe(_MEANING[name])} */"
-                             for name, code in STATUS.items())
+    status_lines = "\n".join(f"#define {P}_{name} {STATUS_CODES[name]} /* {comment_safe(meaning)} */"
+                             for name, meaning in _MEANING.items())
     defines = [f"#define {P}_NX {nx} /* state */", f"#define {P}_NQ {nq} /* joints */",
                f"#define {P}_NSIGNALS {len(SIGNALS)} /* signals */", f"#define {P}_NY {ny} /* output record */"]
     header = f"""#ifndef {P}_H
@@ -187,7 +188,6 @@ const char *{prefix}_status_name(int status);
         cores, tools = _casadi_cores(prefix, (rhs, outputs)), f"CasADi {ca.__version__}"
     else:
         cores, tools = _sympy_cores((rhs, outputs)), "SymPy"
-    names = ", ".join(f'"{n}"' for n in STATUS)
     source = f"""/* {prefix}: {comment_safe(what)}.
    Emitted by hybrid's codegen (generator version {GENERATOR_VERSION}, {tools}).
    Compile: cc -std=c99 -O2 -c {prefix}.c (link with -lm). */
@@ -251,11 +251,7 @@ int {prefix}_advance({prefix} *p, const double *tau, int nsteps) {{
     return {P}_OK;
 }}
 
-const char *{prefix}_status_name(int status) {{
-    static const char *const names[] = {{{names}}};
-    return status >= 0 && status < {len(STATUS)} ? names[status] : "UNKNOWN";
-}}
-"""
+{status_name_source(prefix, _MEANING)}"""
     fields_doc = [{"name": a.name, "size": a.size, **({"names": list(a.names)} if a.names else {}),
                    "unit": a.unit if isinstance(a.unit, str) else list(a.unit)} for a in params]
     data = {"do_not_edit": MANIFEST_STAMP, "unit": prefix, "generator": GENERATOR_VERSION, "tools": tools,
@@ -263,7 +259,7 @@ const char *{prefix}_status_name(int status) {{
             "state_units": [x.unit] * nx if isinstance(x.unit, str) else list(x.unit),
             "outputs": list(y.names), "output_units": [y.unit] * ny if isinstance(y.unit, str) else list(y.unit),
             "signals": list(SIGNALS), "wrench": [*force_columns, *(["0"] * (6 - len(force_columns)))],
-            "status": {f"{P}_{k}": v for k, v in STATUS.items()},
+            "status": {f"{P}_{k}": STATUS_CODES[k] for k in _MEANING},
             "status_meaning": {f"{P}_{k}": m for k, m in _MEANING.items()},
             "struct": prefix, "fields": fields_doc, "scalars": {a.name: list(a.names) for a in scalars},
             "functions": [f"{prefix}_{f}" for f in ("init", "reset", "wrench", "advance", "signals", "outputs",

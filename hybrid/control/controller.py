@@ -17,21 +17,28 @@ import numpy as np
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.control.schemes import Scheme, scheme_of
-from hybrid.control.wrench_sensor import SENSOR, WrenchSensor
+from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.errors import HybridError, NonFiniteError, SampleTimingError
 from hybrid.geometry.task_axes import AXIS_NAMES, check_axes, reference_direction, spatial_surface
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
 from hybrid.native.standalone import generate_controller
+from hybrid.spec.controller_step import CONTROLLER_STEP, NO_LIMIT, SENSOR, STATE_NEXT
+from hybrid.spec.interfaces import REFERENCE, TIMING_STATUSES, Dims
 from hybrid.validate import _finite, check_singular_tol
 
 #: "no limit" for the options that are off (the generated step takes finite numbers only)
 _OFF = 1e300
 #: the compiled step's inputs a controller fixes, in the step's order (after the per-sample ones)
-PARAMETERS = ("steps", "gains", "selection", "robot", "surface", "e", "options", "posture", "limits", "sensor")
+PARAMETERS = CONTROLLER_STEP.parameters
 #: the sample-timing statuses, by the interval since the last sample (see Controller's timing_tolerance)
-TIMING = ("SAMPLE_LATE", "SAMPLE_EARLY", "SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
+TIMING = TIMING_STATUSES
+#: the step's per-sample inputs a call gives (its q, qdot and Fc); the others the controller holds
+_CALLED = ("q", "qd", "Fc")
+#: the states a sample the law served advances whether or not it was on time (the integrals only on time;
+#: the last torque is the torque written), and the outputs they advance to
+_ADVANCED = {k: v for k, v in STATE_NEXT.items() if k not in ("integrals", "last_torque")}
 
 
 @dataclass(frozen=True)
@@ -212,6 +219,9 @@ class Controller:
         None (the default): the wrench given is ``F_c`` itself.
     """
 
+    #: the step's per-sample inputs computed here when references are given as code (else bound to zeros)
+    _reference_inputs = CONTROLLER_STEP.named(REFERENCE)
+
     def __init__(self, robot: Robot | Arm, surface, scheme: str | Scheme = "task", *, axes=None, selection=None,
                  gains: Gains | Mapping | None = None, force_reference=None, velocity_reference=None,
                  sample_time: float = 0.01, integral: bool = True, curvature: bool = False,
@@ -272,7 +282,6 @@ class Controller:
         # a posture has its own generated step (the law plus tau0), so the law without one stays the very code
         # it was, bit for bit; both are in the same unit, and the posture's numbers are run-time inputs of both
         self._step_name = self.scheme.step if self.posture is None else "controller_posture_step"
-        m = len(self.axes)
         loss = contact_loss or ContactLoss(-_OFF, 0.0)
         options = np.array([float(curvature), self.sample_time, float(self.scheme.feeds_desired_force),
                             _OFF if integral_limit is None else float(integral_limit), loss.threshold,
@@ -281,16 +290,30 @@ class Controller:
         # every step takes the posture's numbers (zeros when off: the step without a posture ignores them)
         posture_array = np.zeros(3 * robot.n) if posture is None else self.posture.as_array()
         # no limit is the largest double: bounding a finite torque by it changes nothing, bit for bit
-        limits = np.minimum(np.concatenate([self.torque_limit, self.torque_step_limit]), np.finfo(float).max)
+        limits = np.minimum(np.concatenate([self.torque_limit, self.torque_step_limit]), NO_LIMIT)
         sensor = np.zeros(len(SENSOR)) if wrench_sensor is None else wrench_sensor.as_array(robot, self.sample_time)
-        self._params = (steps, self._gain_array(), np.array(self.selection, float), robot.as_array(),
-                        self._spatial.as_array(), np.array(self.reference), options, posture_array, limits, sensor)
-        self._t, self._extra, self._rate, self._target = np.zeros(1), np.zeros(m), np.zeros(m), np.zeros(9)
-        # the torque last given to the arm and 1 once there is one (the rate limit's start), the last sample time
-        self._last, self._clock = np.zeros(robot.n + 1), None
-        self._filter = np.zeros(13)  # the sensor filter's state
-        self._estimate = np.zeros(10)  # an estimated surface's state: the normal, its rate, the last force, started
-        self._fc = np.zeros(6)
+        robot_array, surface_array = robot.as_array(), self._spatial.as_array()
+        self._dims = Dims.sized(robot.joint_names, self.axis_names, len(robot_array), len(surface_array))
+        self._params = CONTROLLER_STEP.pack({
+            "steps": steps, "gains": self._gain_array(), "selection": self.selection, "robot": robot_array,
+            "surface": surface_array, "e": self.reference, "options": options, "posture": posture_array,
+            "limits": limits, "sensor": sensor}, self._dims)
+        # the step's other per-sample inputs, in its order: the states it keeps (the loops' integrals, the torque
+        # last given to the arm and 1 once there is one, the sensor filter's, an estimated surface's), the sample
+        # time, the references computed here; the integrals, filter and estimate trade buffers with the outputs
+        sizes = CONTROLLER_STEP.sizes(self._dims)
+        per_sample = CONTROLLER_STEP.per_sample
+        if per_sample[:len(_CALLED)] != _CALLED or per_sample[-len(self._reference_inputs):] != \
+                self._reference_inputs:
+            raise RuntimeError(f"the step's per-sample inputs {per_sample} do not start {_CALLED} and end with the "
+                               "references: hybrid/spec/controller_step.py and the Controller disagree")
+        held = per_sample[len(_CALLED):]
+        self._held = [np.zeros(sizes[n]) for n in held]
+        self._at = {n: i for i, n in enumerate(held)}
+        self._t, self._last = self._held[self._at["t"]], self._held[self._at["last_torque"]]
+        self._extra, self._rate, self._target = (self._held[self._at[n]] for n in self._reference_inputs)
+        self._clock = None  # the last sample's time
+        self._fc = np.zeros(sizes["Fc"])
         # a force without moments: the planar arm's in its plane (2), any other arm's in space (3); a sensor's
         # reading is always six numbers
         self._force_size = 6 if wrench_sensor else 2 if robot.closed_form is not None else 3
@@ -301,23 +324,20 @@ class Controller:
         self._short = not (self._varying or self._rates or path)
         # the compiled step is built at the first sample (a run of the compiled closed loop never needs it)
         self._binding = None
-        self._z, self._sampled = np.zeros(2 * m), False
+        self._sampled = False
 
     def _native(self) -> None:
         """The compiled step and measurement, bound to this controller's numbers (built once, cached)."""
         unit = units.controller_unit(self.robot.chain, self.robot.name, self._spatial.spec(), self.axes,
                                      self.frame == "desired", self.position_error, self.wrench_sensor is not None)
         self._step, self._measure = unit.function(self._step_name), unit.function("task_measurement")
-        names = [name for name, _ in self._step.inputs]
-        if tuple(names[len(names) - len(PARAMETERS):]) != PARAMETERS:
-            raise RuntimeError(f"the compiled step's inputs end {names[-len(PARAMETERS):]}, not {PARAMETERS}: "
-                               "the generator and hybrid/control/controller.py disagree")
+        CONTROLLER_STEP.check_manifest(self._step.entry, self._dims)
         self._into = self._step.unit.fast().call_into
-        # outputs written in place (the manifest's order: tau, the integrals' next buffer, a, y, f, saturated, the
-        # filter's next state, the estimate's next state, the contact wrench)
+        # outputs written in place, in the declaration's order
         self._out = [np.empty(size) for _, size, _ in self._step.outputs]
         names = [name for name, _, _ in self._step.outputs]
-        self._filter_out = names.index("filter_next"), names.index("estimate_next")
+        self._advance = [(self._at[k], names.index(v)) for k, v in _ADVANCED.items()]
+        self._integrals = self._at["integrals"], names.index(STATE_NEXT["integrals"])
         self._bind()
 
     # ----------------------------------------------------------------- settings
@@ -333,8 +353,10 @@ class Controller:
         step is built)."""
         if not hasattr(self, "_step"):
             return
-        held = (self._extra, self._rate, self._target) if self._short else ()
-        _, self._binding = self._step.fast_bind(8 if self._short else 11, *held, *self._params,
+        refs = len(self._reference_inputs) if self._short else 0
+        n_state = len(CONTROLLER_STEP.per_sample) - refs
+        self._n_held = len(self._held) - refs  # what a call passes: the references are bound when short
+        _, self._binding = self._step.fast_bind(n_state, *self._held[len(self._held) - refs:], *self._params,
                                                 singular_tol=self.singular_tol)
 
     def set_wrench_sensor(self, sensor: WrenchSensor) -> None:
@@ -345,7 +367,9 @@ class Controller:
                               "with wrench_sensor=hybrid.WrenchSensor(...) to give it one")
         if not isinstance(sensor, WrenchSensor):
             raise HybridError(f"sensor = {sensor!r:.60}; give a hybrid.WrenchSensor(...)")
-        self._params = (*self._params[:-1], sensor.as_array(self.robot, self.sample_time))
+        self._params = CONTROLLER_STEP.pack({**self.step_inputs(), "sensor": sensor.as_array(self.robot,
+                                                                                               self.sample_time)},
+                                            self._dims)
         self.wrench_sensor = sensor
         self._bind()
 
@@ -486,11 +510,9 @@ class Controller:
         """A new run: the loops' integrals zero, no last sample (the next one is on time whenever it
         comes). ``torque`` [N m or N, one per joint], when given, is the torque the arm has now: the
         first sample's torque is then rate-limited from it (``torque_step_limit``)."""
-        self._z[:] = 0.0
+        for name in ("integrals", "last_torque", *_ADVANCED):
+            self._held[self._at[name]][:] = 0.0
         self._sampled = False
-        self._last[:] = 0.0
-        self._filter[:] = 0.0
-        self._estimate[:] = 0.0
         self._clock = None
         if torque is not None:
             try:
@@ -501,6 +523,16 @@ class Controller:
                 raise HybridError(f"reset(torque={torque!r:.60}); give the arm's present torque, {self.robot.n} "
                                   "finite numbers [N m or N], or None")
             self._last[:-1], self._last[-1] = tau, 1.0
+
+    @property
+    def _z(self) -> np.ndarray:
+        """The loops' integrals (the buffer the next sample reads)."""
+        return self._held[self._at["integrals"]]
+
+    @property
+    def _estimate(self) -> np.ndarray:
+        """An estimated surface's state (the buffer the next sample reads)."""
+        return self._held[self._at["estimate"]]
 
     @property
     def state(self) -> np.ndarray:
@@ -552,27 +584,24 @@ class Controller:
         clock, timing = self._clock, self._timing(t)
         if self._binding is None:
             self._native()
-        out, z = self._out, self._z
-        if self._short:
-            done = self._into(self._binding, out, q, qdot, Fc, z, self._last, self._filter, self._estimate, self._t)
-        else:
+        out, held = self._out, self._held
+        if not self._short:
             self._python_references(t)
             if self.path is not None:
                 self._target[:] = self._desired(t)
-            done = self._into(self._binding, out, q, qdot, Fc, z, self._last, self._filter, self._estimate, self._t,
-                              self._extra, self._rate, self._target)
+        done = self._into(self._binding, out, q, qdot, Fc, *held[:self._n_held])
         if done is None:
             self._checked(q, qdot, Fc)
         self._tick(t)
         self._last[:-1], self._last[-1] = out[0], 1.0
-        k, j = self._filter_out  # the filter and the estimate advance on every sample the law served
-        self._filter, out[k] = out[k], self._filter
-        self._estimate, out[j] = out[j], self._estimate
+        for i, k in self._advance:  # the filter and the estimate advance on every sample the law served
+            held[i], out[k] = out[k], held[i]
         self._sampled = True
         if timing is not None:  # the law's torque, the integrals as they were
             raise SampleTimingError(timing, t, clock, self.sample_time, out[0].copy())
         # the integrals' two buffers trade places: no copy
-        self._z, out[1] = out[1], z
+        i, k = self._integrals
+        held[i], out[k] = out[k], held[i]
         return out[0].copy()
 
     def _timing(self, t: float) -> str | None:
@@ -647,8 +676,7 @@ class Controller:
             raise HybridError(f"the references at t = {t} s are not finite; give references that return finite "
                               f"numbers\n  values {self._extra}, rates {self._rate}, desired point {self._target}")
         try:
-            got = self._step(q, qdot, Fc, self._z, self._last, self._filter, self._estimate, self._t, self._extra,
-                             self._rate, self._target, *self._params, singular_tol=self.singular_tol)
+            got = self._step(q, qdot, Fc, *self._held, *self._params, singular_tol=self.singular_tol)
         except HybridError:
             if inputs_finite:
                 self._tick(t)
@@ -661,8 +689,8 @@ class Controller:
         if self._binding is None:
             self._native()
         reading = _wrench(Fc, self._force_size)
-        out = self._measure(q, qdot, reading, self._params[4], self._params[5], self._params[3], self._params[-1],
-                            self._estimate)
+        p = self.step_inputs()
+        out = self._measure(q, qdot, reading, p["surface"], p["e"], p["robot"], p["sensor"], self._estimate)
         return Measurement(out["p"], out["v"], out["task_velocity"], out["task_wrench"], reading, out["compensated"],
                            out["contact_wrench"])
 

@@ -138,7 +138,7 @@ class WrenchSensor:
         return r.copy(), R.copy()
 
     def as_array(self, robot, sample_time: float) -> np.ndarray:
-        """The generated step's ``sensor`` array (see :data:`SENSOR`)."""
+        """The generated step's ``sensor`` array (its layout: :data:`hybrid.spec.controller_step.SENSOR`)."""
         self.check_sampling(sample_time)
         r, Rm = self.mount(robot)
         return np.concatenate([r, Rm.ravel(), [float(self.sign), self.tool.mass], self.tool.com, self.bias,
@@ -150,12 +150,6 @@ def _mounted(path: str, tip: str, frame: str, locked: tuple) -> tuple[np.ndarray
     """:func:`rigid_offset`, read once per file, tip, frame and locked joints (a sensor's chain runs at
     every sample)."""
     return rigid_offset(path, tip, frame, dict(locked))
-
-
-#: the ``sensor`` array of the generated step, in order
-SENSOR = ("r_x", "r_y", "r_z", *(f"R_{i}{j}" for i in range(3) for j in range(3)), "sign", "tool_mass",
-          "tool_cx", "tool_cy", "tool_cz", "bias_fx", "bias_fy", "bias_fz", "bias_mx", "bias_my", "bias_mz",
-          "cutoff_hz", "order")
 
 
 def tool_wrench(tool: Tool, R_s: np.ndarray, gravity) -> np.ndarray:

@@ -17,6 +17,7 @@ import numpy as np
 
 from hybrid.errors import HybridError, NonFiniteError, SingularConfigurationError, TaskFrameError
 from hybrid.native.build import load_fastcall
+from hybrid.spec.interfaces import STATUS_NAMES
 from hybrid.validate import check_size
 
 
@@ -25,15 +26,16 @@ def status_error(status: int, where: str, singular_hint: str = "", **inputs) -> 
     inputs that caused it (the states, not the parameter arrays) on the next."""
     shown = "\n  at " + ", ".join(f"{k}={np.array2string(np.asarray(v), precision=6)}" for k, v in inputs.items()
                                   if np.size(v) <= 12)
-    if status == 1:
+    name = STATUS_NAMES.get(status)
+    if name == "SINGULAR":
         return SingularConfigurationError(
             f"{where}: the Jacobian is singular or nearly so{singular_hint}; keep the arm away from the singular "
             f"pose, or lower singular_tol{shown}")
-    if status == 3:
+    if name == "FRAME_UNDEFINED":
         return TaskFrameError(
             f"{where}: the task frame is undefined: the reference direction e is parallel to the surface normal "
             f"there; choose another reference direction (decoupling_law(..., reference=...)){shown}")
-    if status == 4:
+    if name == "EULER_SINGULAR":
         return SingularConfigurationError(
             f"{where}: the ZYX Euler angles are singular (beta = +-pi/2, cos beta = 0); use coordinates='twist' "
             f"there, or keep the tool away from that orientation{shown}")

@@ -6,6 +6,7 @@ import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.experiments.paper import Step
+from hybrid.spec.metrics import FIRST_TOUCH, METRIC_NAMES, PEAK_TORQUE, SETTLING_BAND, STEADY_WINDOW_S, TOUCH_BAND
 
 
 def settling_time(t: np.ndarray, y: np.ndarray, target: float, band: float) -> float:
@@ -83,18 +84,16 @@ def metrics(t, force_normal, velocity_tangential, force_reference, speed_referen
     f_end = vs.at if vs.at > fs.at else end
     after_f = (t >= fs.at) & (t < f_end)
     after_v = t >= vs.at
-    last = t >= end - 0.2
+    last = t >= end - STEADY_WINDOW_S
     nan = float("nan")
-    m = dict.fromkeys(("force_overshoot_N", "force_overshoot_percent", "force_settling_time_2pct_s",
-                       "speed_drop_after_force_step_m_per_s", "force_deviation_after_speed_step_N",
-                       "speed_overshoot_after_speed_step_m_per_s"), nan)
+    m = dict.fromkeys(METRIC_NAMES, nan)  # in the declared order
     if after_f.any() and fs.after != fs.before:
         step = fs.after - fs.before
         peak = F[after_f].max() if step >= 0 else F[after_f].min()
         m["force_overshoot_N"] = float((peak - fs.after) * np.sign(step))
         m["force_overshoot_percent"] = float(100 * m["force_overshoot_N"] / abs(step))
         # 2 % of the final value (of the step's size when the force steps to 0)
-        band = 0.02 * (abs(fs.after) or abs(step))
+        band = SETTLING_BAND * (abs(fs.after) or abs(step))
         m["force_settling_time_2pct_s"] = settling_time(t[after_f], F[after_f], fs.after, band)
         m["speed_drop_after_force_step_m_per_s"] = float(np.max(vd[after_f] - v[after_f]))
     if after_v.any() and vs.after != vs.before:
@@ -105,14 +104,11 @@ def metrics(t, force_normal, velocity_tangential, force_reference, speed_referen
     m["rms_force_error_N"] = float(np.sqrt(np.mean((Fd - F) ** 2)))
     m["rms_speed_error_m_per_s"] = float(np.sqrt(np.mean((vd - v) ** 2)))
     m["max_penetration_m"] = nan if penetration is None else float(_series("penetration", penetration, len(t)).max())
-    m["contact_losses"] = m["time_out_of_contact_s"] = nan
     if contact_force is not None:
         in_contact = _series("contact_force", contact_force, len(t)) > 0
         m["contact_losses"] = int(np.count_nonzero(in_contact[:-1] & ~in_contact[1:]))
         m["time_out_of_contact_s"] = float(np.sum(np.diff(t)[~in_contact[1:]]))
         m.update(first_touch(t, F, Fd, in_contact, fs))
-    else:
-        m.update(dict.fromkeys(FIRST_TOUCH, nan))
     if tau is not None:
         try:
             torques = np.asarray(tau, dtype=float)
@@ -123,14 +119,8 @@ def metrics(t, force_normal, velocity_tangential, force_reference, speed_referen
                               f"got shape {torques.shape}")
         torques = _finite_series("tau", torques.reshape(len(t), -1))
         for j in range(torques.shape[1]):
-            m[f"peak_torque_joint{j + 1}_Nm"] = float(np.max(np.abs(torques[:, j])))
+            m[PEAK_TORQUE.format(j=j + 1)] = float(np.max(np.abs(torques[:, j])))
     return m
-
-
-#: the first touch's metrics (:func:`first_touch`), in the order ``hybrid.metrics`` reports them
-FIRST_TOUCH = ("first_touch_time_s", "first_touch_overshoot_N", "first_touch_settling_s")
-#: the first touch's settling band, a fraction of the force reference at the touch (conventions §8)
-TOUCH_BAND = 0.05
 
 
 def first_touch(t: np.ndarray, F: np.ndarray, Fd: np.ndarray, in_contact: np.ndarray, force_step: Step) -> dict:

@@ -1,1 +1,237 @@
-"""Each interface between generated C and Python, declared once (filled in below)."""
+"""Each interface between generated C and Python, declared once.
+
+A :class:`Port` is one array argument of a generated function: its name, its size in the
+interface's dimensions (:class:`Dims`: joints ``nq``, task axes ``m``, the robot's and the
+surface's parameter counts), its unit, its meaning, the names of its elements and its role. An
+:class:`Interface` is a function's ports in argument order and the statuses it returns.
+
+From these declarations the generator writes the C (the kernel's argument list, the standalone
+struct's fields and index macros, the status macros and the manifest), and the runtime binds the C
+(the :class:`~hybrid.Controller`'s packing, the closed loop's rows, the status names of its errors):
+a port added here reaches every one of them, and a unit whose manifest disagrees with its
+declaration is refused when it is bound (:meth:`Interface.check_manifest`).
+
+The statuses (:data:`STATUSES`) and the metrics (:data:`METRICS`) are declared here too: one
+number has one name in Python and in C.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from hybrid.errors import HybridError
+
+# ------------------------------------------------------------------ the vocabulary
+
+
+@dataclass(frozen=True)
+class Dims:
+    """The dimensions an interface's ports are sized in, and the names they index.
+
+    ``joints``: the joints' names (``nq`` of them); ``axes``: the task axes' names (``m``);
+    ``robot``: the names of the robot's run-time parameters; ``surface``: the surface's."""
+
+    joints: tuple[str, ...]
+    axes: tuple[str, ...]
+    robot: tuple[str, ...] = ()
+    surface: tuple[str, ...] = ()
+
+    @classmethod
+    def sized(cls, joints, axes, n_robot: int, n_surface: int) -> Dims:
+        """Dimensions whose parameters are known by their count only (their elements unnamed)."""
+        return cls(tuple(joints), tuple(axes), ("",) * n_robot, ("",) * n_surface)
+
+    @property
+    def sizes(self) -> dict[str, int]:
+        return {"nq": len(self.joints), "m": len(self.axes), "robot": len(self.robot),
+                "surface": len(self.surface)}
+
+
+@dataclass(frozen=True)
+class PerAxis:
+    """Element names ``<item>_<axis>``: for each task axis, each of ``items`` (axis by axis)."""
+
+    items: tuple[str, ...]
+
+    def names(self, dims: Dims) -> tuple[str, ...]:
+        return tuple(f"{k}_{ax}" for ax in dims.axes for k in self.items)
+
+
+@dataclass(frozen=True)
+class PerJoint:
+    """Element names ``<item>_<joint>``: for each of ``items``, every joint (item by item), then ``tail``."""
+
+    items: tuple[str, ...]
+    tail: tuple[str, ...] = ()
+
+    def names(self, dims: Dims) -> tuple[str, ...]:
+        return (*(f"{k}_{j}" for k in self.items for j in dims.joints), *self.tail)
+
+
+@dataclass(frozen=True)
+class Named:
+    """Element names taken from the dimensions: ``"joints"``, ``"axes"``, ``"robot"`` or ``"surface"``."""
+
+    of: str
+
+    def names(self, dims: Dims) -> tuple[str, ...]:
+        return getattr(dims, self.of)
+
+
+#: the roles of a function's inputs: what gives each its numbers at a sample
+ARGUMENT = "argument"    # the caller's measurement of this sample (t, q, q', the wrench)
+STATE = "state"          # kept between samples: zero at a start, written back from the outputs
+REFERENCE = "reference"  # computed by the caller at each sample (references given as code); zero when not
+PARAMETER = "parameter"  # the configuration: fixed between samples unless the caller changes it
+ROLES = (ARGUMENT, STATE, REFERENCE, PARAMETER)
+
+_TERM = re.compile(r"^(?:(\d+)\*)?([a-z]+|\d+)$")
+
+
+@dataclass(frozen=True)
+class Port:
+    """One array argument of a generated function.
+
+    ``size`` is stated in the dimensions of :class:`Dims` (``"nq"``, ``"2*m"``, ``"nq+1"``, ``"13"``);
+    ``names`` gives the elements' names (a tuple, or :class:`PerAxis`, :class:`PerJoint`,
+    :class:`Named`); ``role`` says what fills an input (:data:`ROLES`; outputs have none);
+    ``default`` is the value of every element of a parameter that its owner does not set (the
+    value at which it changes nothing)."""
+
+    name: str
+    size: str
+    unit: str
+    doc: str
+    role: str = ""
+    names: tuple[str, ...] | PerAxis | PerJoint | Named | None = None
+    default: float | tuple[float, ...] = 0.0
+
+    def size_of(self, dims: Dims) -> int:
+        """The number of elements for ``dims``."""
+        sizes, total = dims.sizes, 0
+        for term in self.size.replace(" ", "").split("+"):
+            match = _TERM.match(term)
+            if match is None:
+                raise ValueError(f"port {self.name}: size {self.size!r} is not a sum of [k*]dimension terms")
+            k, what = int(match[1] or 1), match[2]
+            total += k * (int(what) if what.isdigit() else sizes[what])
+        return total
+
+    def element_names(self, dims: Dims) -> tuple[str, ...] | None:
+        """The elements' names for ``dims`` (None: they have none)."""
+        if self.names is None or isinstance(self.names, tuple):
+            return self.names
+        return tuple(self.names.names(dims))
+
+
+@dataclass(frozen=True)
+class Status:
+    """A status a generated function returns: its name (``HYBRID_<name>`` in a unit's C, ``<PREFIX>_<name>``
+    in a standalone one) and its number, the same everywhere."""
+
+    name: str
+    code: int
+    meaning: str
+
+
+#: every status of the generated code, numbered once: the kernels' (their guards and outputs), then the
+#: standalone step's checks of its call
+STATUSES = (
+    Status("OK", 0, "a sample on time; tau is the law's, the integrals advanced"),
+    Status("SINGULAR", 1, "the task Jacobian's conditioning is below singular_tol; tau is the torque last written"),
+    Status("NONFINITE", 2, "the law's output is not finite; tau is the torque last written"),
+    Status("FRAME_UNDEFINED", 3, "the task frame's reference direction is parallel to the normal; tau is the "
+                                 "torque last written"),
+    Status("EULER_SINGULAR", 4, "cos(beta) of the tip's ZYX Euler angles is near 0; tau is the torque last written"),
+    Status("INPUT_NONFINITE", 5, "t, q, qd or wrench is not finite; tau is the torque last written, nothing "
+                                 "changed"),
+    Status("SAMPLE_LATE", 6, "t advanced by more than (1 + timing_tolerance) sample_time"),
+    Status("SAMPLE_EARLY", 7, "t advanced by less than (1 - timing_tolerance) sample_time"),
+    Status("SAMPLE_REPEATED", 8, "t equals the last sample's"),
+    Status("SAMPLE_BACKWARDS", 9, "t is before the last sample's"),
+)
+STATUS_CODES = {s.name: s.code for s in STATUSES}
+STATUS_NAMES = {s.code: s.name for s in STATUSES}
+#: the statuses a generated kernel returns (``HYBRID_<name>``): its guards' and a non-finite output's
+KERNEL_STATUSES = ("OK", "SINGULAR", "NONFINITE", "FRAME_UNDEFINED", "EULER_SINGULAR")
+#: the sample-timing statuses, by the interval since the last sample
+TIMING_STATUSES = ("SAMPLE_LATE", "SAMPLE_EARLY", "SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
+
+
+@dataclass(frozen=True)
+class Interface:
+    """A generated function's boundary: its inputs and outputs in argument order."""
+
+    name: str
+    inputs: tuple[Port, ...]
+    outputs: tuple[Port, ...]
+    doc: str
+
+    def __post_init__(self):
+        for p in self.inputs:
+            if p.role not in ROLES:
+                raise ValueError(f"{self.name}: input {p.name} has role {p.role!r}, not one of {ROLES}")
+        names = [p.name for p in (*self.inputs, *self.outputs)]
+        if len(set(names)) != len(names):
+            raise ValueError(f"{self.name}: a port name is used twice in {names}")
+
+    def port(self, name: str) -> Port:
+        for p in (*self.inputs, *self.outputs):
+            if p.name == name:
+                return p
+        raise KeyError(f"{self.name} has no port {name!r}")
+
+    def named(self, role: str) -> tuple[str, ...]:
+        """The names of the inputs of ``role``, in argument order."""
+        return tuple(p.name for p in self.inputs if p.role == role)
+
+    @property
+    def per_sample(self) -> tuple[str, ...]:
+        """The inputs that change at every sample (all but the parameters), in argument order; they come first."""
+        return tuple(p.name for p in self.inputs if p.role != PARAMETER)
+
+    @property
+    def parameters(self) -> tuple[str, ...]:
+        return self.named(PARAMETER)
+
+    def sizes(self, dims: Dims) -> dict[str, int]:
+        """Every port's size for ``dims``, by name."""
+        return {p.name: p.size_of(dims) for p in (*self.inputs, *self.outputs)}
+
+    def pack(self, values: dict, dims: Dims) -> tuple:
+        """The parameters in argument order from ``values`` (arrays by port name): a parameter not in
+        ``values`` takes its ``default``; a value of the wrong size, or a name that is no parameter, is
+        refused (the caller and the declaration disagree)."""
+        import numpy as np  # only the runtime packs
+
+        unknown = set(values) - set(self.parameters)
+        if unknown:
+            raise HybridError(f"{self.name} has no parameter {', '.join(sorted(unknown))}; its parameters are "
+                              f"{', '.join(self.parameters)}")
+        out = []
+        for p in self.inputs:
+            if p.role != PARAMETER:
+                continue
+            size = p.size_of(dims)
+            given = values.get(p.name)
+            arr = np.broadcast_to(np.asarray(p.default, float), (size,)) if given is None else \
+                np.asarray(given, float).ravel()
+            if arr.size != size:
+                raise HybridError(f"{self.name}'s {p.name} takes {size} numbers, got {arr.size}")
+            out.append(arr)
+        return tuple(out)
+
+    def check_manifest(self, entry: dict, dims: Dims) -> None:
+        """Refuse a unit's manifest entry whose arguments are not this declaration's (names, order,
+        sizes), naming the first difference: a unit built from other code is never called with
+        arrays packed for this one."""
+        for what, ports, got in (("inputs", self.inputs, entry["inputs"]), ("outputs", self.outputs,
+                                                                             entry["outputs"])):
+            want = [(p.name, p.size_of(dims)) for p in ports]
+            have = [(a["name"], a["size"]) for a in got]
+            if want != have:
+                diff = next((f"argument {i}: declared {w}, compiled {h}" for i, (w, h) in enumerate(zip(want, have))
+                             if w != h), f"declared {len(want)} {what}, compiled {len(have)}")
+                raise HybridError(f"the compiled {entry['name']} does not match its declaration ({what}, {diff}); "
+                                  "regenerate the unit (python -m hybrid regenerate) or clear the cache")

@@ -1,0 +1,61 @@
+"""The metrics of a run (conventions §8), declared once: their names, units and meanings, in order.
+
+:func:`hybrid.metrics` computes them from a run's time series in NumPy, the compiled closed loop
+(``codegen.closed_loop``) on the fly in C, and both report them in this order under these names
+(then one peak torque per joint, :func:`metric_names`). The windows they are taken over: after the
+force step until the speed step (or the end), after the speed step, the last
+:data:`STEADY_WINDOW_S` seconds, and from the first touch until the force reference next changes.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Metric:
+    """One number a run is judged by: its name (which carries its unit), its unit and its meaning."""
+
+    name: str
+    unit: str
+    doc: str
+
+
+METRICS = (
+    Metric("force_overshoot_N", "N", "the normal force's peak past the force step's value, signed by the step"),
+    Metric("force_overshoot_percent", "%", "the overshoot as a percentage of the force step"),
+    Metric("force_settling_time_2pct_s", "s", "the time after the force step until the force stays within 2 % "
+           "of its value (of the step's size when it steps to 0)"),
+    Metric("speed_drop_after_force_step_m_per_s", "m/s", "the largest speed error after the force step"),
+    Metric("force_deviation_after_speed_step_N", "N", "the largest force error after the speed step"),
+    Metric("speed_overshoot_after_speed_step_m_per_s", "m/s", "the speed's peak past the speed step's value"),
+    Metric("steady_state_force_error_N", "N", "the mean force error over the last 0.2 s"),
+    Metric("steady_state_speed_error_m_per_s", "m/s", "the mean speed error over the last 0.2 s"),
+    Metric("rms_force_error_N", "N", "the RMS force error over the run"),
+    Metric("rms_speed_error_m_per_s", "m/s", "the RMS speed error over the run"),
+    Metric("max_penetration_m", "m", "the sensor tip's largest penetration into the surface"),
+    Metric("contact_losses", "1", "how often the surface's normal force dropped to 0"),
+    Metric("time_out_of_contact_s", "s", "the time the surface's normal force was 0"),
+    Metric("first_touch_time_s", "s", "the time of the first sample in contact"),
+    Metric("first_touch_overshoot_N", "N", "the force's peak past its reference after the first touch, until "
+           "the force reference next changes"),
+    Metric("first_touch_settling_s", "s", "the time after the first touch until the force stays within "
+           "5 % of its reference there"),
+)
+#: the metrics' names, in order
+METRIC_NAMES = tuple(m.name for m in METRICS)
+#: a joint's peak torque, after the metrics (``j`` counts from 1)
+PEAK_TORQUE = "peak_torque_joint{j}_Nm"
+#: the first touch's metrics
+FIRST_TOUCH = ("first_touch_time_s", "first_touch_overshoot_N", "first_touch_settling_s")
+#: the first touch's settling band, a fraction of the force reference at the touch
+TOUCH_BAND = 0.05
+#: the settling band after the force step, a fraction of the force's value
+SETTLING_BAND = 0.02
+#: the steady state's window: the run's last this many seconds
+STEADY_WINDOW_S = 0.2
+
+
+def metric_names(nq: int) -> tuple[str, ...]:
+    """Every metric of a run of an arm of ``nq`` joints, in order: :data:`METRICS`, then the peak torques."""
+    return (*METRIC_NAMES, *(PEAK_TORQUE.format(j=j + 1) for j in range(nq)))
