@@ -20,7 +20,6 @@ from __future__ import annotations
 import json
 import re
 import unicodedata
-from collections.abc import Callable
 from dataclasses import dataclass
 from importlib.metadata import version
 from pathlib import Path
@@ -34,6 +33,7 @@ from .casadi_backend import kernel_sources
 from .lanes import PRELUDE, lanes_function, libm_maps
 from .model import Kernel
 from .sympy_backend import kernel_body
+from .templates import macro
 
 BACKENDS = ("sympy", "casadi")
 #: bumped whenever the emitted interface changes; recorded in every manifest and cache key
@@ -132,16 +132,12 @@ def status_defines() -> str:
     return "\n".join(f"#define {k} {v}" for k, v in STATUS.items())
 
 
-def rk4_step(rhs: Callable[..., str], x: str, n: int, out: str, indent: str, i: str = "i") -> str:
-    """C statements of one classical RK4 step of ``x`` (``n`` elements, index ``i``): ``rhs(state=, k=)``
-    is the call writing the derivative at ``state`` into ``k``; the stages go to ``k1 .. k4`` and ``xt``, the new
-    state to ``out``. Every integrator we emit takes this one formula (so they agree to the bit)."""
-    loop = f"for ({i} = 0; {i} < {n}; ++{i})"
-    lines = [rhs(state=x, k="k1"), f"{loop} xt[{i}] = {x}[{i}] + 0.5 * h * k1[{i}];",
-             rhs(state="xt", k="k2"), f"{loop} xt[{i}] = {x}[{i}] + 0.5 * h * k2[{i}];",
-             rhs(state="xt", k="k3"), f"{loop} xt[{i}] = {x}[{i}] + h * k3[{i}];",
-             rhs(state="xt", k="k4"), f"{loop} {out}[{i}] = {x}[{i}] + h / 6.0 * (k1[{i}] + 2.0 * (k2[{i}] + k3[{i}]) + k4[{i}]);"]
-    return "\n".join(indent + line for line in lines)
+def rk4_step(rhs: str, x: str, n: int, out: str, indent: str, i: str = "i") -> str:
+    """C statements of one classical RK4 step of ``x`` (``n`` elements, index ``i``): ``rhs`` is the call
+    writing the derivative at ``{state}`` into ``{k}`` (a format string); the stages go to ``k1 .. k4`` and
+    ``xt``, the new state to ``out``. Every integrator we emit takes this one formula, the macro of
+    ``templates/rk4.c.j2`` (so they agree to the bit)."""
+    return str(macro("rk4.c.j2", "rk4_step")(rhs, x, n, out, indent, i))
 
 
 def header(prefix: str, kernels: tuple[Kernel, ...], defines: dict | None = None) -> str:
@@ -224,7 +220,7 @@ static int all_finite(const double *v, int n) {{
     double k1[{nx}], k2[{nx}], k3[{nx}], k4[{nx}], xt[{nx}];
     int i, step;
     for (step = 0; step < nsteps; ++step) {{
-{rk4_step(f"{rhs}({{state}}, {held}, {{k}});".format, x, nx, "xt", " " * 8)}
+{rk4_step(f"{rhs}({{state}}, {held}, {{k}});", x, nx, "xt", " " * 8)}
         if (!all_finite(xt, {nx})) {{
             if (steps_done) *steps_done = step;
             return HYBRID_NONFINITE;

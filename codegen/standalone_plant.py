@@ -183,7 +183,7 @@ const char *{prefix}_status_name(int status);
     force = "".join(f"    wrench[{i}] = y[{y.names.index(c)}];\n" for i, c in enumerate(force_columns))
     force += "".join(f"    wrench[{i}] = 0.0;\n" for i in range(len(force_columns), 6))
     signals = "".join(f"    signals[{i}] = y[{y.names.index(c)}];\n" for i, c in enumerate(SIGNALS))
-    rk4 = rk4_step(lambda state, k: f"{rhs.name}_core({state}, tau, {held}, {k});", "p->x", nx, "xt", " " * 8)
+    rk4 = rk4_step(f"{rhs.name}_core({{state}}, tau, {held}, {{k}});", "p->x", nx, "xt", " " * 8)
     if backend == "casadi" or any(isinstance(a.expr, ca.SX) for a in (*rhs.inputs, *rhs.outputs)):
         cores, tools = _casadi_cores(prefix, (rhs, outputs)), f"CasADi {ca.__version__}"
     else:

@@ -1,0 +1,33 @@
+"""The C templates (``codegen/templates/``) and the one environment that renders them.
+
+The hand-written C the generator emits around the kernels (the closed loop's driver, the RK4 step every
+integrator takes) lives in template files, as C with Jinja placeholders; Python builds only their context.
+Blocks' tags take their line with them (``trim_blocks``, ``lstrip_blocks``), so a template reads as the C it
+renders; an undefined name is an error, never an empty string.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+from pathlib import Path
+
+import jinja2
+
+#: the folder of the templates
+FOLDER = Path(__file__).resolve().parent / "templates"
+
+
+@cache
+def environment() -> jinja2.Environment:
+    return jinja2.Environment(loader=jinja2.FileSystemLoader(FOLDER), undefined=jinja2.StrictUndefined,
+                              trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)
+
+
+def render(name: str, **context) -> str:
+    """The template ``name`` rendered with ``context``."""
+    return environment().get_template(name).render(**context)
+
+
+def macro(template: str, name: str):
+    """The macro ``name`` of ``template``, callable from Python."""
+    return getattr(environment().get_template(template).module, name)
