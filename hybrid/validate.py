@@ -61,6 +61,17 @@ def _point(owner: str, name: str, p, dims: tuple[int, ...] = (2,)) -> tuple[floa
     return tuple(float(v) + 0.0 for v in arr)
 
 
+def finite_array(name: str, v, shape) -> np.ndarray:
+    """``v`` as finite numbers of ``shape``, else a HybridError naming ``name``."""
+    try:
+        arr = np.asarray(v, dtype=float)
+    except (TypeError, ValueError):
+        arr = np.array([])
+    if arr.shape != shape or not np.isfinite(arr).all():
+        raise HybridError(f"{name} must be finite numbers of shape {shape}, got {v!r:.80}")
+    return arr
+
+
 def check_model_error(inertial, viscous_compensation) -> float:
     """The factor ``1 + inertial`` of a controller's model, after checking both settings."""
     _finite("model error", inertial=inertial, viscous_compensation=viscous_compensation)

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import hybrid
-from hybrid.models.robot import robot_terms
+from hybrid.models.chain_terms import robot_terms
 from hybrid.plants import mujoco as mujoco_plant
 
 mujoco = pytest.importorskip("mujoco")

@@ -18,7 +18,7 @@ from conftest import (
 from hybrid.codegen import controller_step, robot_unit
 
 import hybrid
-from hybrid.models.robot import robot_terms
+from hybrid.models.chain_terms import robot_terms
 from hybrid.models.shipped import PANDA_URDF, UR5_URDF
 from hybrid.native import units
 from hybrid.plants.rigid_body import RigidBodyPlant

@@ -11,7 +11,7 @@ import pytest
 from conftest import pinocchio_panda, task_acceleration_gap
 
 import hybrid
-from hybrid.models.robot import robot_terms
+from hybrid.models.chain_terms import robot_terms
 from hybrid.plants.rigid_body import RigidBodyPlant
 from hybrid.simulation import closed_loop
 from hybrid.simulation.runner import run

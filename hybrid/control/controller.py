@@ -316,7 +316,7 @@ class Controller:
         self._fc = np.zeros(sizes["Fc"])
         # a force without moments: the planar arm's in its plane (2), any other arm's in space (3); a sensor's
         # reading is always six numbers
-        self._force_size = 6 if wrench_sensor else 2 if robot.closed_form is not None else 3
+        self._force_size = 6 if wrench_sensor else robot.kind.force_size
         self._fc_head = self._fc[:self._force_size]
         self._varying = [(i, ref.value) for i, ref in enumerate(self._references) if ref.value is not None]
         self._rates = [(i, ref.rate) for i, ref in enumerate(self._references) if ref.rate is not None]

@@ -28,7 +28,7 @@ import numpy as np
 from hybrid.errors import HybridError, NonFiniteError
 from hybrid.geometry.frames import task_frame
 from hybrid.geometry.surfaces import Surface
-from hybrid.geometry.task_axes import AXES, check_axes, reference_direction, spatial_surface
+from hybrid.geometry.task_axes import check_axes, reference_direction, spatial_surface
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
@@ -71,7 +71,8 @@ class DecouplingLaw:
         init("singular_tol", float(singular_tol))
         init("reference", tuple(reference_direction(reference)))
         init("axes", check_axes(robot, axes))
-        closed = self._closed_form_applies()
+        section = robot.kind.closed_form_section(surface, self.axes, self.reference)
+        closed = section is not None
         backend = backend if backend is not None else ("sympy" if closed else "rigid_body")
         if backend not in BACKENDS:
             raise HybridError(f"backend must be one of {', '.join(BACKENDS)}, got {backend!r:.40}")
@@ -86,9 +87,8 @@ class DecouplingLaw:
             params = (robot.as_array(), spatial.as_array(), np.array(self.reference))
             tail = (np.zeros(robot.n),)  # tau0
         else:
-            section = surface.cross_section()
             fn = units.planar_unit(backend).function(f"decoupling_law_{section.kind}")
-            params, tail = (robot.closed_form.as_array(), section.as_array()), ()
+            params, tail = (robot.kind.arm.as_array(), section.as_array()), ()
         init("_fn", fn)
         init("_params", (*params, np.array([1.0 if curvature else 0.0])))
         init("_tail", tail)
@@ -106,11 +106,6 @@ class DecouplingLaw:
         return (f"DecouplingLaw(robot={self.robot.name!r}, surface={self.surface!r}, curvature={self.curvature}, "
                 f"reference={self.reference}, axes={self.axes}, backend={self.backend!r}, "
                 f"singular_tol={self.singular_tol})")
-
-    def _closed_form_applies(self) -> bool:
-        return (self.robot.closed_form is not None and isinstance(self.surface, Surface)
-                and self.surface.cross_section() is not None
-                and self.axes == AXES["planar"] and self.reference == (0.0, 0.0, 1.0))
 
     def __reduce__(self):
         # the compiled handles do not pickle: a copy is built again from the settings

@@ -19,11 +19,12 @@ import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.models import chain as rb
+from hybrid.models.kinds import SERIAL_CHAIN, ClosedFormArm
 from hybrid.models.planar_arm import Arm
 from hybrid.models.urdf import JointLimits, LinkInertia, read_chain
 from hybrid.native import units
-from hybrid.native.binding import Unit, is_batch
-from hybrid.validate import _finite, check_model_error, inertia_problem
+from hybrid.native.binding import Unit
+from hybrid.validate import _finite, check_model_error, finite_array, inertia_problem
 
 
 def _gravity(g) -> tuple[float, float, float]:
@@ -67,6 +68,8 @@ class Robot:
                 object.__setattr__(self, name, value)
         else:  # a closed form's parts come from an Arm, which checked the same (B(q) positive definite)
             self._check_parts()
+        # the one place that tells the kinds apart: what depends on it, the kind does (hybrid.models.kinds)
+        object.__setattr__(self, "kind", SERIAL_CHAIN if self.closed_form is None else ClosedFormArm(self.closed_form))
         params = np.concatenate([*(link.as_array() for link in self.links), self.damping, self.gravity])
         params.setflags(write=False)  # frozen: built once, read-only like the fields it comes from
         object.__setattr__(self, "_params", params)
@@ -139,8 +142,9 @@ class Robot:
     def with_model_error(self, inertial: float = 0.1, viscous_compensation: float = 0.5) -> Robot:
         """The controller's model of this arm: masses and inertias ``(1 + inertial)`` times the
         true ones (centres of mass unchanged), viscosities ``viscous_compensation`` times."""
-        if self.closed_form is not None:  # the closed form's own model error: the same numbers, its parameters kept
-            return Robot.planar(self.closed_form.with_model_error(inertial, viscous_compensation))
+        changed = self.kind.with_model_error(self, inertial, viscous_compensation)
+        if changed is not None:
+            return changed
         k = check_model_error(inertial, viscous_compensation)
         links = tuple(LinkInertia(lk.mass * k, lk.com, tuple(tuple(v * k for v in r) for r in lk.inertia))
                       for lk in self.links)
@@ -152,15 +156,15 @@ class Robot:
         ``mass`` [kg], ``com`` (3) [m] and ``inertia`` (3x3 about the centre of mass) [kg m^2],
         both in the joint's frame, ``damping`` its viscosity. The planar arm's parameters are its
         ``closed_form``'s: change them there (``Robot.planar(dataclasses.replace(arm, m2=...))``)."""
-        if self.closed_form is not None:
-            raise HybridError("the planar arm's links are its closed form's parameters; change them there: "
-                              "Robot.planar(dataclasses.replace(arm, m2=...)), or sweep 'arm.m2'")
+        self.kind.check_link_change()
         if joint not in self.joint_names:
             raise HybridError(f"no joint named {joint!r}; the joints are {', '.join(self.joint_names)}")
         i = self.joint_names.index(joint)
         old = self.links[i]
-        com = old.com if com is None else tuple(_vector(f"com of {joint}", com, (3,)))
-        inertia = old.inertia if inertia is None else tuple(map(tuple, _vector(f"inertia of {joint}", inertia, (3, 3))))
+        com = old.com if com is None else tuple(finite_array(f"com of {joint}", com, (3,)))
+        if inertia is not None:
+            inertia = tuple(map(tuple, finite_array(f"inertia of {joint}", inertia, (3, 3))))
+        inertia = old.inertia if inertia is None else inertia
         new = LinkInertia(old.mass if mass is None else mass, com, inertia)
         links = self.links[:i] + (new,) + self.links[i + 1:]
         damp = self.damping if damping is None else self.damping[:i] + (damping,) + self.damping[i + 1:]
@@ -172,28 +176,22 @@ class Robot:
     def default_axes(self) -> str:
         """The task axes a controller of this robot uses unless told: the planar arm's ``(t1, n)``,
         else all six."""
-        return "planar" if self.closed_form is not None else "all"
+        return self.kind.default_axes
 
     @property
     def conditioning_name(self) -> str:
         """The measure :meth:`conditioning` computes."""
-        return "2|det J|/|J|_F^2" if self.closed_form is not None else "m/(|J|_F |J^+|_F)"
+        return self.kind.conditioning_name
 
     def conditioning(self, q) -> np.ndarray:
         """The Jacobian's distance from singularity at ``q`` (one state, or one per row), in (0, 1]:
         ``m / (|J|_F |J^+|_F)`` (``m = min(6, n)``) of the tip's frame Jacobian, about
         ``sigma_min / sigma_max``; the planar arm's ``2 |det J| / |J|_F^2`` (about ``|sin q2|``)."""
-        if self.closed_form is not None:
-            return self.closed_form.conditioning(np.asarray(q, float).T)
-        rows = np.atleast_2d(np.asarray(q, float))
-        J = robot_terms(self, rows, np.zeros_like(rows))["J"]
-        s = np.linalg.svd(J, compute_uv=False)
-        cond = min(J.shape[1:]) / np.sqrt(np.sum(s**2, axis=-1) * np.sum(1.0 / s**2, axis=-1))
-        return cond if np.ndim(q) == 2 else cond[0]
+        return self.kind.conditioning(self, q)
 
     def reach(self) -> tuple[float, float] | None:
         """Smallest and largest distance of the tip from the base [m], when known in closed form."""
-        return None if self.closed_form is None else self.closed_form.reach()
+        return self.kind.reach()
 
     def inverse_kinematics(self, position, rotation=None, q0=None, tol: float = 1e-10, elbow: int = 1) -> np.ndarray:
         """Joint positions putting the tip frame at ``position`` [m] (and ``rotation``, a 3x3 matrix in
@@ -201,30 +199,7 @@ class Robot:
         The planar arm solves in closed form (``elbow`` +1 for ``q2 > 0``, -1 for ``q2 < 0``; its
         orientation follows from the position). Raises :class:`HybridError` when the pose is not
         reached (out of reach, or a poor ``q0``)."""
-        if self.closed_form is not None:
-            return self.closed_form.inverse_kinematics(np.asarray(position, float)[:2], elbow)
-        p_goal = _vector("position", position, (3,))
-        R_goal = None if rotation is None else _vector("rotation", rotation, (3, 3))
-        q = np.array(self._start_guess() if q0 is None else _vector("q0", q0, (self.n,)))
-        zeros = np.zeros(self.n)
-        for _ in range(200):
-            terms = robot_terms(self, q, zeros)
-            err = p_goal - terms["r"]
-            J = terms["J"] if R_goal is not None else terms["J"][:3]
-            if R_goal is not None:
-                R = terms["rotation"]
-                # orientation error: 1/2 sum of column cross products (small-angle rotation vector)
-                err = np.concatenate([err, 0.5 * sum(np.cross(R[:, i], R_goal[:, i]) for i in range(3))])
-            if np.abs(err).max() < tol:
-                return q
-            lam = 1e-4 + np.dot(err, err)
-            q = q + J.T @ np.linalg.solve(J @ J.T + lam * np.eye(len(err)), err)
-        raise HybridError(f"inverse kinematics did not reach the pose (position {np.round(p_goal, 4).tolist()} m, "
-                          f"error {np.abs(err).max():.2g}): it may be out of reach; move it or give q0 near a solution")
-
-    def _start_guess(self) -> np.ndarray:
-        lo, hi = np.maximum(self.limits.lower, -np.pi), np.minimum(self.limits.upper, np.pi)
-        return 0.5 * (lo + hi)
+        return self.kind.inverse_kinematics(self, position, rotation, q0, tol, elbow)
 
     @property
     def unit(self) -> Unit:
@@ -267,50 +242,16 @@ def _planar_parts(arm: Arm) -> tuple:
     return chain, links, (float(arm.V1), float(arm.V2)), (0.0, -float(arm.gravity), 0.0)
 
 
-def _vector(name: str, v, shape) -> np.ndarray:
-    try:
-        arr = np.asarray(v, dtype=float)
-    except (TypeError, ValueError):
-        arr = np.array([])
-    if arr.shape != shape or not np.isfinite(arr).all():
-        raise HybridError(f"{name} must be finite numbers of shape {shape}, got {v!r:.80}")
-    return arr
-
-
 def _check_link(joint: str, link: LinkInertia) -> None:
     if not isinstance(link, LinkInertia):
         raise HybridError(f"link of joint '{joint}' must be a LinkInertia, got {type(link).__name__}")
     _finite(f"link of joint '{joint}'", mass=link.mass)
     if link.mass < 0:
         raise HybridError(f"mass of the link moved by '{joint}' is {link.mass} kg; give a mass >= 0")
-    I = _vector(f"inertia of the link moved by '{joint}'", link.inertia, (3, 3))  # noqa: E741
-    _vector(f"centre of mass of the link moved by '{joint}'", link.com, (3,))
+    I = finite_array(f"inertia of the link moved by '{joint}'", link.inertia, (3, 3))  # noqa: E741
+    finite_array(f"centre of mass of the link moved by '{joint}'", link.com, (3,))
     if np.abs(I - I.T).max() > 1e-12 * max(1.0, np.abs(I).max()):
         raise HybridError(f"inertia of the link moved by '{joint}' is not symmetric; give a symmetric 3x3 tensor")
     problem = inertia_problem(I)
     if problem:
         raise HybridError(f"inertia of the link moved by '{joint}' {problem}; give a rigid body's inertia")
-
-
-_ROBOT_KEYS = {"p": "r", "rotation": "rotation", "J": "J", "Jdqd": "Jdot_qdot", "B": "B", "n": "n"}
-
-
-@lru_cache(maxsize=256)
-def _fast_terms(robot: Robot):
-    """``(call, binding, output names)`` of ``robot_terms`` bound to ``robot``'s parameters (the
-    one-state entry point); robots are immutable, so a binding serves every call."""
-    fn = robot.unit.function("robot_terms")
-    return (*fn.fast_bind(2, robot.as_array()), tuple(n for n, _, _ in fn.outputs))
-
-
-def robot_terms(robot: Robot, q, qdot) -> dict[str, np.ndarray]:
-    """``r``, ``rotation``, ``J``, ``Jdot_qdot``, ``B``, ``n`` of ``robot`` (see :func:`hybrid.arm_terms`):
-    one state, or N states in one native call."""
-    fast, handle, names = _fast_terms(robot)
-    out = fast(handle, -1, q, qdot)
-    if out is not None:
-        return {_ROBOT_KEYS[n]: v for n, v in zip(names, out)}
-    terms = robot.unit.function("robot_terms")
-    call = terms.batch if is_batch(q) else terms
-    out = call(q, qdot, robot.as_array())
-    return {_ROBOT_KEYS[k]: v for k, v in out.items()}

@@ -11,8 +11,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from hybrid.errors import HybridError
+from hybrid.models.chain_terms import robot_terms
 from hybrid.models.planar_arm import Arm, check_arm
-from hybrid.models.robot import Robot, robot_terms
+from hybrid.models.robot import Robot
 from hybrid.native.binding import one_state
 from hybrid.native.units import planar_unit
 from hybrid.validate import SINGULAR_TOL, check_singular_tol

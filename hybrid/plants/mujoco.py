@@ -34,7 +34,8 @@ from html import escape
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.models.robot import Robot, robot_terms
+from hybrid.models.chain_terms import robot_terms
+from hybrid.models.robot import Robot
 from hybrid.models.urdf import read_chain
 from hybrid.plants.interface import Plant
 

@@ -28,7 +28,7 @@ from collections import deque
 import numpy as np
 
 from hybrid.control.wrench_sensor import reading_of
-from hybrid.models.robot import robot_terms
+from hybrid.models.chain_terms import robot_terms
 from hybrid.plants.contact import Sensor
 
 
