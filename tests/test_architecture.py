@@ -2,8 +2,10 @@
 
 - ``import hybrid`` loads neither the generator (SymPy, CasADi) nor the optional heavy libraries,
   and opens no file of the project's other than the sources of the modules it imports;
-- module-level imports among ``hybrid.*`` (``hybrid.codegen`` included) form no cycle, and an
-  import inside a function is one of a short list, each with its reason;
+- the imports among ``hybrid.*`` (``hybrid.codegen`` included) form no cycle, counting those at module
+  level, those inside functions (each one of a short list, with its reason) and those by name
+  (``importlib.import_module``, ``hybrid._LAZY``, ``generator("model")``); nor do the generator and the
+  runtime import each other (but for :data:`KNOWN_GENERATOR_EDGES`);
 - ``regenerate`` rebuilds a checkout's emptied ``generated/`` byte for byte, and an installed
   package refuses it (unless given a folder) without writing anything.
 """
@@ -42,11 +44,23 @@ LAZY_IMPORTS = {
     ("hybrid.cli.experiments", "hybrid.plots"): "matplotlib loads only for the commands that draw",
     ("hybrid.cli.sweep", "hybrid.plots"): "matplotlib loads only when a sweep draws its heatmaps",
     ("hybrid.simulation.results", "hybrid.plots"): "matplotlib loads only when a result is drawn (res.plot())",
-    ("hybrid.plants.interface", "hybrid.plants.mujoco"): "MuJoCo is an optional extra: it loads when a run asks",
+    ("hybrid.plants.registry", "hybrid.plants.mujoco"): "MuJoCo is an optional extra: it loads when a run asks",
     ("hybrid.experiments.experiment", "hybrid.geometry.implicit"):
         "SymPy loads only when a file names a surface a user wrote down",
     ("hybrid.control.config", "hybrid.geometry.implicit"):
         "SymPy loads only when a controller file writes its surface as a formula",
+}
+
+#: the generator's package
+GENERATOR = "hybrid.codegen"
+#: The generator's imports of runtime modules that lead back into the generator, each with what it is for:
+#: ``regenerate`` writes the paper's closed loops, and the runtime builds those with the generator. These
+#: three close every cycle between the two today; the check leaves them out and fails on any other. An
+#: import that is gone must leave the list (it empties once ``regenerate`` imports no runtime that builds).
+KNOWN_GENERATOR_EDGES = {
+    ("hybrid.codegen.regenerate", "hybrid.experiments.paper"): "the paper's experiment, whose loops are committed",
+    ("hybrid.codegen.regenerate", "hybrid.native.units"): "the committed loops' names and files",
+    ("hybrid.codegen.regenerate", "hybrid.simulation.closed_loop"): "the loop of each of the paper's schemes",
 }
 
 
@@ -143,34 +157,107 @@ def _targets(node: ast.Import | ast.ImportFrom, module: str, is_package: bool, m
     return found, ours - set(modules)
 
 
-def _import_graph() -> tuple[dict[str, set], dict[tuple[str, str], int], list[str]]:
-    """``(module-level imports, function-level imports with their line, unresolved names)``.
+def _ours(name: str) -> bool:
+    return name.split(".")[0] in ("hybrid", "codegen")
 
-    Module level is whatever runs when the module is imported: top-level statements and those nested in
-    ``if`` (``TYPE_CHECKING`` too), ``try``, ``with`` and class bodies, but not in functions.
+
+def _called(node: ast.AST, names) -> str | None:
+    """The name of the function ``node`` calls (``f(...)`` or ``obj.f(...)``) when it is one of ``names``."""
+    if not isinstance(node, ast.Call):
+        return None
+    name = node.func.id if isinstance(node.func, ast.Name) else getattr(node.func, "attr", None)
+    return name if name in names else None
+
+
+#: the calls that import a module named by a string
+_IMPORT_CALLS = ("import_module", "__import__")
+
+
+def _import_graph(modules: dict[str, Path] | None = None) -> dict:
+    """The imports among ``modules`` (the project's by default), by kind, each ``{(importer, imported):
+    line}``, and ``"unresolved"``: the imports of project names the graph cannot follow.
+
+    - ``"module"``: run when the importer is imported: top-level statements and those nested in ``if``
+      (``TYPE_CHECKING`` too), ``try``, ``with`` and class bodies, but not in functions;
+    - ``"deferred"``: import statements inside functions, run when the function is called;
+    - ``"by_name"``: a module named by a string, imported when the code runs: ``import_module("name")``;
+      the module names of a table that a computed ``import_module(table[key])`` reads (``hybrid._LAZY``),
+      all of a module's strings that name a project module; and ``f("name")`` anywhere, where ``f`` is
+      a function that imports a fixed prefix followed by its argument (``generator("model")`` imports
+      ``hybrid.codegen.model``).
     """
-    modules = _modules()
-    graph, lazy, unresolved = {}, {}, []
-    for module, path in modules.items():
-        graph[module] = set()
+    modules = _modules() if modules is None else modules
+    kinds: dict = {"module": {}, "deferred": {}, "by_name": {}}
+    unresolved: list[str] = []
+    importers: dict[str, str] = {}  # a function that imports prefix + its argument, by name: the prefix
+    trees = {m: ast.parse(path.read_text(), str(path)) for m, path in modules.items()}
 
-        def visit(node, in_function, module=module, path=path):
+    def where(module, node):
+        return f"{module}:{node.lineno}"
+
+    def computed(module, call, arg, function):
+        if isinstance(arg, ast.Constant) and isinstance(arg.value, str):
+            if arg.value in modules:
+                kinds["by_name"].setdefault((module, arg.value), call.lineno)
+            elif _ours(arg.value):
+                unresolved.append(f"{where(module, call)}: {arg.value}")
+            return
+        parameters = [a.arg for a in function.args.args] if function is not None else []
+        if (isinstance(arg, ast.JoinedStr) and len(arg.values) == 2 and isinstance(arg.values[0], ast.Constant)
+                and isinstance(arg.values[1], ast.FormattedValue)
+                and isinstance(arg.values[1].value, ast.Name) and arg.values[1].value.id in parameters
+                and not isinstance(function, ast.Lambda)):
+            importers[function.name] = arg.values[0].value
+            return
+        strings = [(n.value, n.lineno) for n in ast.walk(trees[module])
+                   if isinstance(n, ast.Constant) and isinstance(n.value, str) and n.value in modules]
+        if not strings:
+            unresolved.append(f"{where(module, call)}: an import of a computed name ({ast.unparse(arg)}) that "
+                              "names no project module the graph can see")
+        for name, line in strings:
+            if name != module:
+                kinds["by_name"].setdefault((module, name), line)
+
+    for module, tree in trees.items():
+        is_package = modules[module].name == "__init__.py"
+
+        def visit(node, function, module=module, is_package=is_package):
             for child in ast.iter_child_nodes(node):
-                if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef)):
-                    visit(child, True)
-                elif isinstance(child, (ast.Import, ast.ImportFrom)):
-                    found, missing = _targets(child, module, path.name == "__init__.py", modules)
-                    unresolved.extend(f"{path.relative_to(ROOT)}:{child.lineno}: {n}" for n in sorted(missing))
-                    if in_function:
-                        for t in found:
-                            lazy.setdefault((module, t), child.lineno)
-                    else:
-                        graph[module] |= found
-                else:
-                    visit(child, in_function)
+                inner = child if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)) else function
+                if isinstance(child, (ast.Import, ast.ImportFrom)):
+                    found, missing = _targets(child, module, is_package, modules)
+                    unresolved.extend(f"{where(module, child)}: {n}" for n in sorted(missing))
+                    for t in found:
+                        kinds["deferred" if function else "module"].setdefault((module, t), child.lineno)
+                elif _called(child, _IMPORT_CALLS) and child.args:
+                    computed(module, child, child.args[0], function)
+                visit(child, inner)
 
-        visit(ast.parse(path.read_text(), str(path)), False)
-    return graph, lazy, unresolved
+        visit(tree, None)
+
+    for module, tree in trees.items():
+        for node in ast.walk(tree):
+            name = _called(node, importers)
+            if name is None:
+                continue
+            arg = node.args[0] if node.args else None
+            if not (isinstance(arg, ast.Constant) and isinstance(arg.value, str)):
+                unresolved.append(f"{where(module, node)}: {name}() of a computed name")
+            elif (target := importers[name] + arg.value) not in modules:
+                unresolved.append(f"{where(module, node)}: {target}")
+            elif target != module:
+                kinds["by_name"].setdefault((module, target), node.lineno)
+    return {**kinds, "unresolved": unresolved}
+
+
+def _graph(*edges: dict) -> dict[str, set]:
+    """The graph ``{module: the modules it imports}`` of some kinds of edges."""
+    graph: dict[str, set] = {}
+    for kind in edges:
+        for a, b in kind:
+            graph.setdefault(a, set()).add(b)
+            graph.setdefault(b, set())
+    return graph
 
 
 def _cycle(graph: dict[str, set]) -> list[str] | None:
@@ -196,26 +283,114 @@ def _cycle(graph: dict[str, set]) -> list[str] | None:
     return None
 
 
+def _shown(cycle: list[str], imports: dict) -> str:
+    """A cycle with the kind of each of its imports."""
+    steps = [cycle[0]]
+    for a, b in zip(cycle, cycle[1:]):
+        kind = next((k for k in ("module", "deferred", "by_name") if (a, b) in imports[k]), "import")
+        steps.append(f"-({kind})-> {b}")
+    return " ".join(steps)
+
+
+def _collapsed(graph: dict[str, set], package: str) -> dict[str, set]:
+    """``graph`` with the modules of ``package`` taken as one node."""
+    def node(m):
+        return package if m == package or m.startswith(package + ".") else m
+    out: dict[str, set] = {}
+    for a, targets in graph.items():
+        out.setdefault(node(a), set()).update(node(b) for b in targets if node(b) != node(a))
+    return out
+
+
+def _toy(tmp_path: Path, files: dict[str, str]) -> dict[str, Path]:
+    """A set of modules written under ``tmp_path``, by their import name (``toy/a.py``: ``toy.a``)."""
+    modules = {}
+    for name, text in files.items():
+        path = tmp_path / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+        parts = Path(name).with_suffix("").parts
+        modules[".".join(parts[:-1] if parts[-1] == "__init__" else parts)] = path
+    return modules
+
+
 def test_cycle_finder_finds_a_cycle():
     assert _cycle({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == ["a", "b", "c", "a"]
     assert _cycle({"a": {"b", "c"}, "b": {"c"}, "c": set()}) is None
+    assert _cycle(_collapsed({"g.x": {"r"}, "r": {"g.y"}, "g.y": set()}, "g")) == ["g", "r", "g"]
 
 
-def test_module_level_imports_form_no_cycle():
+#: modules that import each other each in one of the ways the graph counts, and the cycle it must find
+TOY_CYCLES = {
+    "deferred": ({"toy/a.py": "import toy.b\n", "toy/b.py": "def f():\n    from toy import a\n"},
+                 ["toy.a", "toy.b", "toy.a"]),
+    "by a literal name": ({"toy/a.py": "import importlib\nimportlib.import_module('toy.b')\n",
+                           "toy/b.py": "from . import a\n"}, ["toy.a", "toy.b", "toy.a"]),
+    "by a table's names": ({"toy/__init__.py": "import importlib\n_LAZY = {'T': 'toy.b'}\n\n"
+                                               "def __getattr__(name):\n"
+                                               "    return getattr(importlib.import_module(_LAZY[name]), name)\n",
+                            "toy/b.py": "import toy\n"}, ["toy", "toy.b", "toy"]),
+    "through a function of the name": (
+        {"toy/units.py": "import importlib\n\ndef generator(m):\n"
+                         "    return importlib.import_module(f'toy.gen.{m}')\n",
+         "toy/run.py": "from toy import units\n\ndef go():\n    return units.generator('law')\n",
+         "toy/gen/law.py": "from toy.run import go\n"}, ["toy.gen.law", "toy.run", "toy.gen.law"]),
+}
+
+
+@pytest.mark.parametrize("case", TOY_CYCLES)
+def test_the_graph_finds_a_cycle_of_every_kind_of_import(case, tmp_path):
+    files, expected = TOY_CYCLES[case]
+    imports = _import_graph(_toy(tmp_path, files))
+    assert imports["unresolved"] == []
+    assert _cycle(_graph(imports["module"], imports["deferred"], imports["by_name"])) == expected
+
+
+def test_an_import_the_graph_cannot_follow_is_reported(tmp_path):
+    files = {"toy/a.py": "import importlib\n\ndef load(name):\n    return importlib.import_module(name.upper())\n",
+             "toy/units.py": "import importlib\n\ndef generator(m):\n    return importlib.import_module(f'toy.{m}')\n",
+             "toy/b.py": "from toy.units import generator\n\nx = generator('nowhere')\n"}
+    assert sorted(_import_graph(_toy(tmp_path, files))["unresolved"]) == [
+        "toy.a:4: an import of a computed name (name.upper()) that names no project module the graph can see",
+        "toy.b:3: toy.nowhere"]
+
+
+def test_imports_form_a_dag():
+    """Every import among the project's modules counts: at module level, inside functions, and by name."""
     folders = {p.parent for top in ("hybrid", "codegen") for p in (ROOT / top).rglob("__init__.py")}
     unlisted = sorted(str(f.relative_to(ROOT)) for f in folders - set(_packages().values()))
     assert not unlisted, f"packages missing from pyproject's [tool.setuptools] packages: {unlisted}"
-    graph, _, unresolved = _import_graph()
-    assert not unresolved, f"imports of project modules that do not exist: {unresolved}"
-    # the graph is the project's: both packages, relative imports resolved
+    imports = _import_graph()
+    assert not imports["unresolved"], f"imports of project modules the graph cannot follow: {imports['unresolved']}"
+    graph = _graph(imports["module"], imports["deferred"], imports["by_name"])
+    # the graph is the project's: both packages, relative imports resolved, imports of every kind seen
     assert {"hybrid", "hybrid.cli.main", "hybrid.codegen.emit", "hybrid.codegen.regenerate"} <= set(graph)
     assert {"hybrid.codegen.emit", "hybrid.native.stamp"} <= graph["hybrid.codegen.regenerate"]
+    assert ("hybrid.plants.registry", "hybrid.plants.mujoco") in imports["deferred"]
+    assert {("hybrid", "hybrid.sweeps"), ("hybrid.native.units", "hybrid.codegen.robot_unit"),
+            ("hybrid.cli.main", "hybrid.codegen.regenerate")} <= set(imports["by_name"])
     cycle = _cycle(graph)
-    assert cycle is None, "module-level import cycle: " + " -> ".join(cycle)
+    assert cycle is None, "import cycle: " + _shown(cycle, imports)
+
+
+def test_the_generator_and_the_runtime_do_not_import_each_other():
+    """With the generator's modules taken as one, the imports still form a DAG: a runtime module the
+    generator imports never leads back into the generator (but for :data:`KNOWN_GENERATOR_EDGES`)."""
+    imports = _import_graph()
+    edges = {**imports["module"], **imports["deferred"], **imports["by_name"]}
+    stale = sorted(f"{a} -> {b}" for a, b in set(KNOWN_GENERATOR_EDGES) - set(edges))
+    assert not stale, f"KNOWN_GENERATOR_EDGES lists imports that are gone, remove them: {stale}"
+    crossing = [(a, b) for a, b in KNOWN_GENERATOR_EDGES if a.startswith(GENERATOR) == b.startswith(GENERATOR)]
+    assert not crossing, f"KNOWN_GENERATOR_EDGES lists imports within one side: {crossing}"
+    graph = _collapsed(_graph({e: line for e, line in edges.items() if e not in KNOWN_GENERATOR_EDGES}), GENERATOR)
+    cycle = _cycle(graph)
+    assert cycle is None, "the generator and the runtime import each other: " + " -> ".join(cycle)
+    # the check sees the cycles the listed imports close
+    assert _cycle(_collapsed(_graph(edges), GENERATOR)) is not None
 
 
 def test_imports_inside_functions_are_the_listed_ones():
-    _, lazy, _ = _import_graph()
+    lazy = _import_graph()["deferred"]
     unlisted = sorted(f"{m} imports {t} in a function (line {line})" for (m, t), line in lazy.items()
                       if (m, t) not in LAZY_IMPORTS)
     assert not unlisted, ("move these imports to module level, or add them to LAZY_IMPORTS with the reason: "

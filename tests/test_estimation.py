@@ -223,13 +223,11 @@ def test_closed_loop_on_a_surface_the_controller_is_not_told(surface):
     assert res.metrics["rms_force_error_N"] <= 1.5 * told.metrics["rms_force_error_N"]
     assert res.metrics["contact_losses"] == 0
     assert res.metrics["max_normal_angle_error_deg"] == pytest.approx(err[res.sample_t >= 0.5].max())
-    # a controller told a flat plane through the start does far worse
+    # a controller told a flat plane through the start does far worse (it runs to the end, the tip
+    # leaving the surface on the way: a run that stops is a failure of its own)
     flat = hybrid.Plane(tuple(start), tuple(exact.surface.normal_at(start)))
-    try:
-        wrong = hybrid.simulate(hybrid.tracing_experiment(v_d=0.15, controller_surface=flat, duration=1.0, **kw))
-        assert wrong.metrics["rms_force_error_N"] > 3 * res.metrics["rms_force_error_N"]
-    except hybrid.SimulationError:
-        pass  # or it loses the surface altogether
+    wrong = hybrid.simulate(hybrid.tracing_experiment(v_d=0.15, controller_surface=flat, duration=1.0, **kw))
+    assert wrong.metrics["rms_force_error_N"] > 3 * res.metrics["rms_force_error_N"]
 
 
 def _estimated_run(exact: hybrid.Experiment, off_degrees: float = 8.0):

@@ -208,3 +208,78 @@ def test_the_plant_module_imports_mujoco_only_when_used():
     code = "import sys, hybrid, hybrid.plants.mujoco; print('mujoco' in sys.modules)"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "False"
+
+
+# ------------------------------------------------------------------ the surface, through its methods
+
+
+class CountedSphere(hybrid.Sphere):
+    """A sphere of a class the plant never heard of, that counts the plant's reads of its ``phi``."""
+
+    def phi_function(self):
+        sphere = super().phi_function()
+
+        def counted(p):
+            self.reads.append(1)
+            return sphere(p)
+        return counted
+
+    @property
+    def reads(self) -> list:
+        return self.__dict__.setdefault("_reads", [])
+
+
+def test_the_plant_reads_the_surface_through_its_methods():
+    """A surface's own ``phi_function`` is all the plant knows of it: a subclass's is called, and gives
+    what its base gives, to the bit."""
+    runs = []
+    for surface_class in (hybrid.Sphere, CountedSphere):
+        base = hybrid.tracing_experiment()
+        exp = hybrid.tracing_experiment(surface=surface_class(base.surface.center, base.surface.radius))
+        plant, x = mujoco_plant.mujoco_plant(exp), exp.initial_state()
+        trajectory = np.empty((50, len(x)))
+        tau = robot_terms(exp.robot, x[:exp.robot.n], np.zeros(exp.robot.n))["n"]
+        assert plant.advance(x, tau, 50, trajectory) == 50
+        runs.append(trajectory)
+    assert len(exp.surface.reads) == 4 * 50  # once per RK4 stage
+    np.testing.assert_array_equal(runs[0], runs[1])
+
+
+def numeric_formula(surface):
+    """``phi`` at a point from the surface's ``formula`` alone, in floats."""
+    theta = surface.as_array()
+    return lambda p: float(surface.formula(p, theta, np.sqrt))
+
+
+@pytest.mark.parametrize("key", ["plane", "cylinder", "sphere", "implicit", "user"])
+def test_phi_function_is_the_formula_and_its_gradient(key, rng):
+    """What the plant reads of every surface, a user's too, against its ``formula`` (or ``phi``) at random
+    points, the gradient against central differences."""
+    base = hybrid.tracing_experiment()
+    shapes = {**surfaces(base), "sphere": base.surface, "user": CountedSphere((0.1, -0.2, 0.3), 0.25)}
+    surface = shapes[key]
+    if key == "implicit":
+        import sympy as sp
+
+        values = {sp.Symbol(k, real=True): v for k, v in surface.parameters.items()}
+        phi = sp.lambdify(sp.symbols("x y z", real=True), surface.phi.xreplace(values))
+        formula = lambda p: float(phi(*p))  # noqa: E731
+    else:
+        formula = numeric_formula(surface)
+    read, h = surface.phi_function(), 1e-6
+    for p in rng.uniform(-0.6, 0.6, (20, 3)):
+        value, grad = read(p)
+        assert value == pytest.approx(formula(p), rel=1e-12, abs=1e-14)
+        differences = [(formula(p + h * e) - formula(p - h * e)) / (2 * h) for e in np.eye(3)]
+        np.testing.assert_allclose(grad, differences, rtol=1e-6, atol=1e-7)
+
+
+def test_a_surface_without_phi_is_refused():
+    """A subclass that gives no formula (nor a ``phi_function`` of its own) cannot be read: it says what to add."""
+
+    class Bare(hybrid.geometry.surfaces.Surface):
+        def as_array(self):
+            return np.zeros(0)
+
+    with pytest.raises(hybrid.HybridError, match=r"^a Bare gives no phi: define its formula\(p, theta, sqrt\)"):
+        Bare().phi_function()

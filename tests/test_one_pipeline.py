@@ -175,7 +175,7 @@ def test_a_new_scheme_is_one_class():
 def test_a_new_plant_is_one_implementation():
     """A plant that implements the interface and registers a name runs every experiment: here the
     generated plant behind a plant of one's own (the Python runner's numbers, to the bit)."""
-    from hybrid.plants import interface
+    from hybrid.plants import interface, registry
 
     class Wrapped(interface.Plant):
         def __init__(self, exp):
@@ -189,13 +189,13 @@ def test_a_new_plant_is_one_implementation():
         def outputs(self, states):
             return self.inner.outputs(states)
 
-    interface.register_plant("test_wrapped")(Wrapped)
+    registry.register_plant("test_wrapped")(Wrapped)
     try:
         exp = hybrid.tracing_experiment(duration=0.05)
         ours = hybrid.simulate(exp, plant="test_wrapped")
         np.testing.assert_array_equal(ours.state, hybrid.simulate(exp, compiled=False).state)
     finally:
-        del interface.PLANTS["test_wrapped"]
+        del registry.PLANTS["test_wrapped"]
 
 
 def test_paper_settings_saved_before_experiments_were_one_type_still_load():

@@ -19,7 +19,7 @@ import sympy as sp
 
 from hybrid.codegen import surfaces as cs
 from hybrid.errors import HybridError
-from hybrid.geometry.surfaces import Surface, SurfaceSpec, _unit_normal
+from hybrid.geometry.surfaces import Surface, SurfaceSpec, _unit_normal, numpy_phi
 from hybrid.validate import _finite, check_identifier, shown
 
 
@@ -88,6 +88,11 @@ class ImplicitSurface(Surface):
         subs = {x: p[0], y: p[1], z: p[2], **{sp.Symbol(k, real=True): v for k, v in self.parameters.items()}}
         g = np.array([float(gi.subs(subs)) for gi in grad])
         return _unit_normal(g, f"grad phi vanishes at {p}")
+
+    def phi_function(self):
+        """``p -> (phi(p), grad phi(p))`` in NumPy, ``phi``'s parameters bound."""
+        values = {sp.Symbol(k, real=True): float(v) for k, v in self.parameters.items()}
+        return numpy_phi(self.phi.xreplace(values), sp.symbols("x y z", real=True))
 
 
 #: what a surface written as text may call, with the least and most arguments of each (None: any)

@@ -13,6 +13,7 @@ surface it uses the surface's :meth:`~Surface.cross_section` (a :class:`CircleSe
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -58,9 +59,10 @@ def _once(cls, *args):
 
 class Surface:
     """The base of every surface (3-D): ``kind``, ``as_array()`` (the generated code's run-time
-    parameters), ``normal_at(p)``, ``project(p)`` (the nearest surface point, where it has a closed
-    form, else None), ``path()`` (where a run goes on it unless told) and ``cross_section()`` (where
-    the paper's planar arm can run on it)."""
+    parameters), ``normal_at(p)``, ``phi_function()`` (``phi`` and its gradient in NumPy),
+    ``project(p)`` (the nearest surface point, where it has a closed form, else None), ``path()``
+    (where a run goes on it unless told) and ``cross_section()`` (where the paper's planar arm can run
+    on it)."""
 
     kind: str
     dim = 3
@@ -82,6 +84,18 @@ class Surface:
         """What the code generator needs of this surface (see :class:`SurfaceSpec`)."""
         return SurfaceSpec(self.kind, self.parameters_named, formula=self.formula)
 
+    def phi_function(self) -> Callable[[np.ndarray], tuple[float, np.ndarray]]:
+        """``p -> (phi(p), grad phi(p))`` in NumPy, the parameters bound: what a plant that evaluates
+        the contact itself needs (MuJoCo's). Here :meth:`formula` differentiated by SymPy; a surface
+        with a closed-form gradient gives its own."""
+        import sympy as sp  # only a surface without a gradient of its own needs SymPy
+
+        if type(self).formula is Surface.formula:
+            raise HybridError(f"a {type(self).__name__} gives no phi: define its formula(p, theta, sqrt) and "
+                              "as_array() (as hybrid.Plane does), or write it as a hybrid.ImplicitSurface")
+        xyz = sp.symbols("x y z", real=True)
+        return numpy_phi(self.formula(xyz, [sp.Float(v) for v in self.as_array()], sp.sqrt), xyz)
+
     def project(self, p) -> np.ndarray | None:
         return None
 
@@ -98,6 +112,19 @@ class Surface:
         """The path a run starting at the surface point ``p`` follows unless told (along ``t1`` for
         ``e = z``); None where the surface has none."""
         return None
+
+
+def numpy_phi(phi, xyz) -> Callable[[np.ndarray], tuple[float, np.ndarray]]:
+    """``p -> (phi(p), grad phi(p))`` in NumPy of the SymPy expression ``phi`` of the symbols ``xyz``
+    alone (its parameters' values substituted)."""
+    import sympy as sp
+
+    f = sp.lambdify(xyz, [phi, *(sp.diff(phi, v) for v in xyz)], modules="math")
+
+    def evaluate(p):
+        value, *grad = f(*p)
+        return float(value), np.array(grad, float)
+    return evaluate
 
 
 def _unit_normal(g: np.ndarray, where: str) -> np.ndarray:
@@ -241,6 +268,13 @@ class Plane(Surface):
         """Unit normal towards the robot (the same everywhere)."""
         return np.array(self.normal)
 
+    def phi_function(self):
+        """``p -> (phi(p), grad phi(p))``: ``n^T (p - point)`` and the unit normal ``n``."""
+        theta = self.as_array()
+        point, normal = theta[:3], theta[3:]
+        unit = normal / math.sqrt(normal @ normal)
+        return lambda p: (float(unit @ (p - point)), unit)
+
     def path_through(self, p) -> LinePath:
         """The line through ``p`` along ``t1 = z x n`` (base x on a horizontal plane)."""
         n = np.asarray(self.normal)
@@ -283,6 +317,17 @@ class Sphere(Surface):
     def normal_at(self, p) -> np.ndarray:
         d = np.asarray(p, float) - self.center
         return _unit_normal(d, f"the point {p} is the sphere's centre")
+
+    def phi_function(self):
+        """``p -> (phi(p), grad phi(p))``: ``|p - c| - radius`` and ``(p - c) / |p - c|``."""
+        theta = self.as_array()
+        center, rho = theta[:3], theta[3]
+
+        def sphere(p):
+            d = p - center
+            dist = math.sqrt(d @ d)
+            return dist - rho, d / dist
+        return sphere
 
     def project(self, p) -> np.ndarray:
         """The surface point nearest ``p`` (radially)."""
@@ -343,6 +388,20 @@ class Cylinder(Surface):
         d = np.asarray(p, float) - self.point
         radial = d - np.dot(d, self.axis) * np.asarray(self.axis)
         return _unit_normal(radial, f"the point {p} is on the cylinder's axis")
+
+    def phi_function(self):
+        """``p -> (phi(p), grad phi(p))``: the distance from the axis less the radius, and the radial
+        unit vector."""
+        theta = self.as_array()
+        point, axis, rho = theta[:3], theta[3:6], theta[6]
+        uu = axis @ axis
+
+        def cylinder(p):
+            d = p - point
+            radial = d - axis * ((axis @ d) / uu)
+            dist = math.sqrt(radial @ radial)
+            return dist - rho, radial / dist
+        return cylinder
 
     def project(self, p) -> np.ndarray:
         """The surface point nearest ``p`` (radially from the axis)."""

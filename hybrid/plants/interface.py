@@ -6,51 +6,16 @@ stopping before a non-finite state), ``outputs(states)`` (the output record of e
 ``sensor_wrench(x)`` (the sensor's reading at a state), ``conditioning(q)`` and
 ``conditioning_name``. Three implement it: the paper's closed-form planar plant
 (:mod:`hybrid.plants.planar`), the generated rigid-body plant of any arm
-(:mod:`hybrid.plants.rigid_body`), and MuJoCo (:mod:`hybrid.plants.mujoco`). :data:`PLANTS`
-names the plants a run can be given (``hybrid.simulate(exp, plant=name)``).
+(:mod:`hybrid.plants.rigid_body`), and MuJoCo (:mod:`hybrid.plants.mujoco`). Each builds on this
+module and on no other plant; :mod:`hybrid.plants.registry` names the plants a run can be given
+(``hybrid.simulate(exp, plant=name)``).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cached_property
 
 import numpy as np
-
-from hybrid.errors import HybridError
-
-#: the plants a run can take, by name: each builds the plant of an experiment
-PLANTS: dict[str, Callable] = {}
-
-
-def register_plant(name: str):
-    """Decorator: make the plant factory ``f(experiment) -> plant`` selectable as ``plant=name``."""
-    def register(factory):
-        PLANTS[name] = factory
-        return factory
-    return register
-
-
-@register_plant("generated")
-def generated_plant(exp):
-    """The experiment's generated plant (:meth:`hybrid.Experiment.plant`: the closed form of the
-    paper's arm, else the rigid-body plant)."""
-    return exp.plant()
-
-
-@register_plant("mujoco")
-def mujoco_plant(exp):
-    """MuJoCo as the experiment's plant (:func:`hybrid.plants.mujoco.mujoco_plant`)."""
-    from hybrid.plants import mujoco  # an optional extra: its module loads when a run asks for it
-
-    return mujoco.mujoco_plant(exp)
-
-
-def plant_for(exp, name: str):
-    """The plant ``name`` of the experiment ``exp``."""
-    if not isinstance(name, str) or name not in PLANTS:
-        raise HybridError(f"plant = {name!r:.40}; give one of {', '.join(repr(n) for n in PLANTS)}")
-    return PLANTS[name](exp)
 
 
 def plant_record(rhs: dict, outputs: dict) -> dict:

@@ -16,8 +16,9 @@ The model (:func:`arm_spec`, :class:`MujocoPlant`):
 - the sensor's spring-damper ``F_c = K_s (s - r) + D_s (s' - r')``, the penalty contact
   ``N = max(0, k_e delta + d_e delta')`` on the sensor tip's penetration ``delta = -phi / |grad phi|``
   and the Coulomb friction ``-gamma N tanh(|v_s| / v_eps) v_s / |v_s|`` against its sliding velocity
-  are the generated plant's formulas, evaluated here (the surface's ``phi`` in NumPy) in MuJoCo's
-  passive-force callback, so at every RK4 stage; MuJoCo's own contact and constraints are disabled.
+  are the generated plant's formulas, evaluated here (the surface's ``phi`` and its gradient in
+  NumPy, from its :meth:`~hybrid.geometry.surfaces.Surface.phi_function`) in MuJoCo's passive-force
+  callback, so at every RK4 stage; MuJoCo's own contact and constraints are disabled.
 
 MuJoCo thus integrates the generated plant's equations with its own rigid-body dynamics, by RK4 at
 the experiment's ``step``, and the two agree to rounding: about 1e-13 N RMS in the normal force of
@@ -53,57 +54,6 @@ def _mujoco():
     except ImportError:
         raise HybridError("the MuJoCo plant needs MuJoCo: pip install 'hybrid-decoupling[mujoco]'") from None
     return mujoco
-
-
-# ------------------------------------------------------------------------ surfaces
-
-
-def surface_function(surface):
-    """``p -> (phi(p), grad phi(p))`` of a 3-D surface in NumPy, from the formulas the generated
-    code is derived from (``phi > 0`` on the robot's side)."""
-    kind, theta = surface.kind, surface.as_array()
-    if kind == "plane":
-        point, normal = theta[:3], theta[3:]
-        unit = normal / math.sqrt(normal @ normal)
-        return lambda p: (float(unit @ (p - point)), unit)
-    if kind == "sphere":
-        center, rho = theta[:3], theta[3]
-
-        def sphere(p):
-            d = p - center
-            dist = math.sqrt(d @ d)
-            return dist - rho, d / dist
-        return sphere
-    if kind == "cylinder":
-        point, axis, rho = theta[:3], theta[3:6], theta[6]
-        uu = axis @ axis
-
-        def cylinder(p):
-            d = p - point
-            radial = d - axis * ((axis @ d) / uu)
-            dist = math.sqrt(radial @ radial)
-            return dist - rho, radial / dist
-        return cylinder
-    return _implicit_function(surface)
-
-
-def _implicit_function(surface):
-    """``phi`` and its gradient of any other surface (an :class:`~hybrid.ImplicitSurface`, or a
-    built-in surface's own formula), its parameters bound, differentiated by SymPy."""
-    import sympy as sp
-
-    x, y, z = sp.symbols("x y z", real=True)
-    if hasattr(surface, "phi"):
-        values = {sp.Symbol(k, real=True): float(v) for k, v in surface.parameters.items()}
-        phi = surface.phi.xreplace(values)
-    else:
-        phi = surface.formula((x, y, z), [sp.Float(v) for v in surface.as_array()], sp.sqrt)
-    f = sp.lambdify((x, y, z), [phi, *(sp.diff(phi, v) for v in (x, y, z))], modules="math")
-
-    def implicit(p):
-        value, *grad = f(*p)
-        return float(value), np.array(grad, float)
-    return implicit
 
 
 # -------------------------------------------------------------------------- robots
@@ -238,7 +188,7 @@ class MujocoPlant(Plant):
         self.conditioning, self.conditioning_name = self.generated.conditioning, self.generated.conditioning_name
         self.force_columns = self.generated.force_columns
         self.dim = (len(self.record["state"]) - 2 * robot.n) // 2  # the sensor tip's coordinates (2 or 3)
-        self._phi = surface_function(exp.surface)
+        self._phi = exp.surface.phi_function()  # p -> (phi, grad phi)
 
         spec, self.source = arm_spec(robot)
         last = spec.joint(robot.joint_names[-1]).parent

@@ -15,8 +15,8 @@ import numpy as np
 from hybrid.control.loops import model_error_note
 from hybrid.errors import HybridError, NonFiniteError
 from hybrid.experiments.experiment import Experiment
-from hybrid.plants.interface import plant_for
 from hybrid.plants.planar import planar_record
+from hybrid.plants.registry import plant_for
 from hybrid.simulation import closed_loop
 from hybrid.simulation.metrics import run_metrics
 from hybrid.simulation.results import SimulationResult
@@ -57,7 +57,7 @@ def check_memory(exp, record: dict | None = None) -> None:
 
 def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> SimulationResult:
     """Run the experiment ``exp``: its controller sampled every ``sample_time`` under zero-order hold,
-    its plant advanced by RK4 every ``step``. ``plant`` names one of :data:`hybrid.plants.interface.PLANTS`:
+    its plant advanced by RK4 every ``step``. ``plant`` names one of :data:`hybrid.plants.registry.PLANTS`:
     ``"generated"`` (the experiment's own: the paper's arm in closed form, else its rigid-body plant)
     or ``"mujoco"`` (MuJoCo reading the arm's URDF, :mod:`hybrid.plants.mujoco`). With
     ``compiled=False`` the Python runner runs it even where the compiled loop could (the reference

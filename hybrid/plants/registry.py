@@ -1,0 +1,44 @@
+"""The plants a run can take, by name (``hybrid.simulate(exp, plant=name)``): ``"generated"`` (the
+experiment's own: :mod:`~hybrid.plants.planar` or :mod:`~hybrid.plants.rigid_body`) and ``"mujoco"``
+(:mod:`~hybrid.plants.mujoco`, an optional extra, loaded when a run asks for it). A new plant is one
+implementation of :class:`hybrid.plants.interface.Plant`, named with :func:`register_plant`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from hybrid.errors import HybridError
+
+#: the plants a run can take, by name: each builds the plant of an experiment
+PLANTS: dict[str, Callable] = {}
+
+
+def register_plant(name: str):
+    """Decorator: make the plant factory ``f(experiment) -> plant`` selectable as ``plant=name``."""
+    def register(factory):
+        PLANTS[name] = factory
+        return factory
+    return register
+
+
+@register_plant("generated")
+def generated_plant(exp):
+    """The experiment's generated plant (:meth:`hybrid.Experiment.plant`: the closed form of the
+    paper's arm, else the rigid-body plant)."""
+    return exp.plant()
+
+
+@register_plant("mujoco")
+def mujoco_plant(exp):
+    """MuJoCo as the experiment's plant (:func:`hybrid.plants.mujoco.mujoco_plant`)."""
+    from hybrid.plants import mujoco  # an optional extra: its module loads when a run asks for it
+
+    return mujoco.mujoco_plant(exp)
+
+
+def plant_for(exp, name: str):
+    """The plant ``name`` of the experiment ``exp``."""
+    if not isinstance(name, str) or name not in PLANTS:
+        raise HybridError(f"plant = {name!r:.40}; give one of {', '.join(repr(n) for n in PLANTS)}")
+    return PLANTS[name](exp)
