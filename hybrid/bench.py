@@ -36,8 +36,7 @@ from hybrid.geometry.surfaces import Circle, Sphere
 from hybrid.models.planar_arm import paper_arm
 from hybrid.models.robot import Robot
 from hybrid.models.terms import arm_terms
-from hybrid.native import build as native
-from hybrid.native import units
+from hybrid.native import compiler, loader, units
 from hybrid.native.binding import workers
 from hybrid.native.units import planar_unit
 from hybrid.simulation import closed_loop
@@ -98,12 +97,12 @@ def harness_source(prefix: str, entry: dict, values: dict, singular_tol: float =
 
 def c_harness_ns(src_dir: Path, prefix: str, entry: dict, values: dict, calls: int, repeat: int) -> float:
     """Per-call time of a generated function inside C, by a compiled loop (the runtime's flags)."""
-    cc, ident = native.compiler()
+    cc, ident = compiler.compiler()
     with tempfile.TemporaryDirectory() as tmp:
         main = Path(tmp) / "bench.c"
         main.write_text(harness_source(prefix, entry, values))
         exe = Path(tmp) / "bench"
-        flags = [f for f in native.flags(ident) if f != "-fPIC"]
+        flags = [f for f in compiler.flags(ident) if f != "-fPIC"]
         subprocess.run([cc, *flags, f"-I{src_dir}", str(main), str(src_dir / f"{prefix}.c"),
                         "-o", str(exe), "-lm"], check=True, capture_output=True)
         out = subprocess.run([str(exe), str(calls), str(repeat)], check=True, capture_output=True, text=True)
@@ -148,7 +147,7 @@ def _versions() -> dict:
             out[pkg] = version(pkg)
         except PackageNotFoundError:
             pass
-    out["cc"] = native.compiler()[1]
+    out["cc"] = compiler.compiler()[1]
     return out
 
 
@@ -255,7 +254,7 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
         P = planar()
         values = {"q": P.q, "qd": P.qd, "a": P.a, "Fc": P.Fc, "arm": P.p, "surface": P.s, "opts": [1.0]}
         entry = planar_unit(b).entry("decoupling_law_circle")
-        add(in_c(b), c_harness_ns(native.source_dir(), f"hybrid_{b}", entry, values,
+        add(in_c(b), c_harness_ns(loader.source_dir(), f"hybrid_{b}", entry, values,
                                   200_000 if quick else 2_000_000, rep))
 
     def one_state() -> None:
@@ -912,7 +911,7 @@ def standalone_step(folder: Path, prefix: str, samples: np.ndarray, target: bool
     calls of its step, one by one, replaying ``samples`` on the sample clock. Returns the compile time
     [s], the object's ``.text`` [bytes], the timer's overhead and the calls' median, p99, p99.9 and
     maximum [ns], the overhead subtracted."""
-    cc, _ = native.compiler()
+    cc, _ = compiler.compiler()
     tag = "".join(c for c in "_".join(flags) if c.isalnum() or c == "_")
     obj, exe, out = (folder / f"{prefix}_{tag}{ext}" for ext in (".o", "", ".durations"))
     t0 = time.perf_counter()
@@ -949,7 +948,7 @@ def standalone_benchmarks(quick: bool, add) -> None:
     its step's per-call times replaying a recorded run (median, p99, p99.9, maximum), its code size and
     compile time, with the runtime's flags and with plain ``-O2``. With ``quick``: the paper's arm, 1e4 calls."""
     calls = 10_000 if quick else 1_000_000
-    bench_flags = [f for f in native.flags(native.compiler()[1]) if f != "-fPIC"]
+    bench_flags = [f for f in compiler.flags(compiler.compiler()[1]) if f != "-fPIC"]
     builds = {" ".join(bench_flags): bench_flags, "-O2": ["-O2"]}
     for name, factory in STANDALONE.items():
         if quick and name != "paper":
