@@ -43,7 +43,7 @@ LAZY_IMPORTS = {
     ("hybrid.cli.sweep", "hybrid.plots"): "matplotlib loads only when a sweep draws its heatmaps",
     ("hybrid.simulation.results", "hybrid.plots"): "matplotlib loads only when a result is drawn (res.plot())",
     ("hybrid.plants.interface", "hybrid.plants.mujoco"): "MuJoCo is an optional extra: it loads when a run asks",
-    ("hybrid.experiments.experiment", "hybrid.geometry.implicit"):
+    ("hybrid.experiments.serialisation", "hybrid.geometry.implicit"):
         "SymPy loads only when a file names a surface a user wrote down",
     ("hybrid.control.config", "hybrid.geometry.implicit"):
         "SymPy loads only when a controller file writes its surface as a formula",
