@@ -25,7 +25,7 @@ from pathlib import Path
 
 import pytest
 
-from hybrid.native.build import cache_dir
+from hybrid.native.cache import cache_dir
 
 try:
     import tomllib
@@ -45,7 +45,7 @@ LAZY_IMPORTS = {
     ("hybrid.cli.sweep", "hybrid.plots"): "matplotlib loads only when a sweep draws its heatmaps",
     ("hybrid.simulation.results", "hybrid.plots"): "matplotlib loads only when a result is drawn (res.plot())",
     ("hybrid.plants.registry", "hybrid.plants.mujoco"): "MuJoCo is an optional extra: it loads when a run asks",
-    ("hybrid.experiments.experiment", "hybrid.geometry.implicit"):
+    ("hybrid.experiments.serialisation", "hybrid.geometry.implicit"):
         "SymPy loads only when a file names a surface a user wrote down",
     ("hybrid.control.config", "hybrid.geometry.implicit"):
         "SymPy loads only when a controller file writes its surface as a formula",
@@ -525,7 +525,7 @@ def test_installed_package_refuses_regenerate_and_writes_nothing(tmp_path):
     # the runtime compiles the installed C, even beside a folder that merely looks like a checkout's
     (site / "generated").mkdir()
     shutil.copy2(site / "hybrid" / "_generated" / "hybrid_sympy.c", site / "generated")
-    probe = _run(["-c", "from hybrid.native import build; print(build.source_dir())"], elsewhere, **env)
+    probe = _run(["-c", "from hybrid.native import loader; print(loader.source_dir())"], elsewhere, **env)
     assert probe.stdout.strip() == str(site / "hybrid" / "_generated"), probe.stderr
 
     # the paper's experiment from the installed package, in another folder: metrics and figures, no series

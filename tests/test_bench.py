@@ -8,6 +8,9 @@ import pytest
 from hybrid.codegen import casadi_backend, controller_step, spatial_plant
 
 from hybrid import bench
+from hybrid.bench import harness, robots, runs, targets
+from hybrid.bench.groups import benchmark_groups, select_groups
+from hybrid.bench.report import format_table
 from hybrid.cli.main import main
 from hybrid.errors import HybridError
 from hybrid.experiments.tracing import tracing_experiment
@@ -21,22 +24,22 @@ def test_bench_quick_reports_every_benchmark():
                  "panda: the same by Pinocchio", "panda: generated C size", "ur5: controller step from Python",
                  "1,000 paper runs by hybrid.sweep", "paper: standalone controller step in C",
                  "paper: standalone controller, .text", "paper: standalone controller, compile time",
-                 bench.FIRST_SIMULATE, bench.COLD_PAPER, bench.ONE_RUN, bench.LOOP_RUN, bench.TRACE_ONE,
-                 bench.TRACE_RUN, bench.SWEEP_3D, bench.LOOP_OPS, f"ur5: {bench.LAW_BATCHED}"):
+                 targets.FIRST_SIMULATE, targets.COLD_PAPER, targets.ONE_RUN, targets.LOOP_RUN, targets.TRACE_ONE,
+                 targets.TRACE_RUN, targets.SWEEP_3D, targets.LOOP_OPS, f"ur5: {targets.LAW_BATCHED}"):
         assert part in names
     if hasattr(os, "sched_setaffinity"):
-        assert f"ur5: {bench.LAW_BATCHED_ONE_CORE}" in names
+        assert f"ur5: {targets.LAW_BATCHED_ONE_CORE}" in names
     assert all(r["median"] > 0 for r in report["results"])
     # the targets are reported (met or not), never asserted
     assert {r["name"] for r in report["results"] if "target" in r} >= {
         "F* in C, sympy backend, per call", "F* from Python, one state (law(q, qdot, a, Fc))",
-        "panda: r, rotation, J, J'q', B, n in C, per call (robot_terms)", bench.FIRST_SIMULATE, bench.COLD_PAPER,
-        bench.ONE_RUN, bench.TRACE_ONE, bench.SWEEP_3D, bench.SWEEP_10000, bench.LOOP_OPS}
+        "panda: r, rotation, J, J'q', B, n in C, per call (robot_terms)", targets.FIRST_SIMULATE, targets.COLD_PAPER,
+        targets.ONE_RUN, targets.TRACE_ONE, targets.SWEEP_3D, targets.SWEEP_10000, targets.LOOP_OPS}
     by = {r["name"]: r for r in report["results"]}
-    assert by[f"ur5: {bench.LAW_BATCHED}"]["ratio"].startswith("bitwise: ")
-    assert by[bench.FIRST_SIMULATE]["import_s"] > 0 and "import hybrid" in by[bench.FIRST_SIMULATE]["ratio"]
-    assert "the per-run share of a lanes batch" in by[bench.ONE_RUN]["ratio"]
-    assert "target" in bench.format_table(report).splitlines()[0]
+    assert by[f"ur5: {targets.LAW_BATCHED}"]["ratio"].startswith("bitwise: ")
+    assert by[targets.FIRST_SIMULATE]["import_s"] > 0 and "import hybrid" in by[targets.FIRST_SIMULATE]["ratio"]
+    assert "the per-run share of a lanes batch" in by[targets.ONE_RUN]["ratio"]
+    assert "target" in format_table(report).splitlines()[0]
 
 
 # ------------------------------------------------------------------ the targets
@@ -47,57 +50,58 @@ def _rows(**medians) -> list[dict]:
 
 
 def _marked(rows: list[dict]) -> dict:
-    bench.mark_targets(rows)
+    targets.mark_targets(rows)
     return {r["name"]: r for r in rows}
 
 
 @pytest.mark.parametrize("name, met, missed", [
-    (bench.ONE_RUN, 2.3, 2.31), (bench.SWEEP_10000, 2.8, 2.9), (bench.SWEEP_1000, 0.9, 1.1),
-    (bench.TRACE_ONE, 24.0, 26.0), (bench.SWEEP_3D, 3.0, 3.1), (bench.FIRST_SIMULATE, 1.5, 1.6),
-    (bench.COLD_PAPER, 7.9, 8.1), (f"ur5: {bench.LAW_BATCHED_ONE_CORE}", 120.0, 121.0),
-    (bench.LOOP_OPS, bench.LOOP_OPS_REFERENCE * 2 / 3, bench.LOOP_OPS_REFERENCE * 2 / 3 + 1)])
+    (targets.ONE_RUN, 2.3, 2.31), (targets.SWEEP_10000, 2.8, 2.9), (targets.SWEEP_1000, 0.9, 1.1),
+    (targets.TRACE_ONE, 24.0, 26.0), (targets.SWEEP_3D, 3.0, 3.1), (targets.FIRST_SIMULATE, 1.5, 1.6),
+    (targets.COLD_PAPER, 7.9, 8.1), (f"ur5: {targets.LAW_BATCHED_ONE_CORE}", 120.0, 121.0),
+    (targets.LOOP_OPS, targets.LOOP_OPS_REFERENCE * 2 / 3, targets.LOOP_OPS_REFERENCE * 2 / 3 + 1)])
 def test_a_target_is_met_up_to_its_bound_and_missed_past_it(name, met, missed):
     for median, expected in ((met, True), (missed, False)):
         row = _marked([{"name": name, "median": median, "unit": "ms"}])[name]
         assert row["met"] is expected and row["target"].startswith("<=")
-        text = bench.format_table({"results": [row], "machine": {"python": "3", "cc": "cc"}})
+        text = format_table({"results": [row], "machine": {"python": "3", "cc": "cc"}})
         assert f"{row['target']}: {'met' if expected else 'MISSED'}" in text.splitlines()[1]
 
 
 def test_targets_say_their_bounds():
-    by = _marked(_rows(**{bench.ONE_RUN: 1.0, bench.SWEEP_10000: 1.0, bench.TRACE_ONE: 1.0, bench.SWEEP_3D: 1.0,
-                          bench.FIRST_SIMULATE: 1.0, bench.COLD_PAPER: 1.0, f"ur5: {bench.LAW_BATCHED_ONE_CORE}": 1.0,
-                          bench.LOOP_OPS: 1.0}))
+    by = _marked(_rows(**{targets.ONE_RUN: 1.0, targets.SWEEP_10000: 1.0, targets.TRACE_ONE: 1.0,
+                          targets.SWEEP_3D: 1.0, targets.FIRST_SIMULATE: 1.0, targets.COLD_PAPER: 1.0,
+                          f"ur5: {targets.LAW_BATCHED_ONE_CORE}": 1.0, targets.LOOP_OPS: 1.0}))
     assert {n: r["target"] for n, r in by.items()} == {
-        bench.ONE_RUN: "<= 2.3 ms", bench.SWEEP_10000: "<= 2.8 s", bench.TRACE_ONE: "<= 25 ms",
-        bench.SWEEP_3D: "<= 3 s", bench.FIRST_SIMULATE: "<= 1.5 s", bench.COLD_PAPER: "<= 8 s",
-        f"ur5: {bench.LAW_BATCHED_ONE_CORE}": "<= 120 ns", bench.LOOP_OPS: f"<= 2/3 of {bench.LOOP_OPS_REFERENCE:,}"}
+        targets.ONE_RUN: "<= 2.3 ms", targets.SWEEP_10000: "<= 2.8 s", targets.TRACE_ONE: "<= 25 ms",
+        targets.SWEEP_3D: "<= 3 s", targets.FIRST_SIMULATE: "<= 1.5 s", targets.COLD_PAPER: "<= 8 s",
+        f"ur5: {targets.LAW_BATCHED_ONE_CORE}": "<= 120 ns",
+        targets.LOOP_OPS: f"<= 2/3 of {targets.LOOP_OPS_REFERENCE:,}"}
 
 
 def test_a_target_that_reads_another_row_needs_that_row():
-    alone = _marked(_rows(**{bench.ONE_STATE: 300.0}))
-    assert "target" not in alone[bench.ONE_STATE]  # its NumPy row did not run
-    fast = _marked(_rows(**{bench.ONE_STATE: 300.0, bench.NUMPY_LAW: 300.0 * 70}))
-    slow = _marked(_rows(**{bench.ONE_STATE: 300.0, bench.NUMPY_LAW: 300.0 * 69}))
-    assert fast[bench.ONE_STATE]["met"] and not slow[bench.ONE_STATE]["met"]
-    assert "target" not in fast[bench.NUMPY_LAW]
-    comp, numpy = bench.experiment_row(2.0, "compiled"), bench.experiment_row(2.0, "NumPy")
+    alone = _marked(_rows(**{targets.ONE_STATE: 300.0}))
+    assert "target" not in alone[targets.ONE_STATE]  # its NumPy row did not run
+    fast = _marked(_rows(**{targets.ONE_STATE: 300.0, targets.NUMPY_LAW: 300.0 * 70}))
+    slow = _marked(_rows(**{targets.ONE_STATE: 300.0, targets.NUMPY_LAW: 300.0 * 69}))
+    assert fast[targets.ONE_STATE]["met"] and not slow[targets.ONE_STATE]["met"]
+    assert "target" not in fast[targets.NUMPY_LAW]
+    comp, numpy = targets.experiment_row(2.0, "compiled"), targets.experiment_row(2.0, "NumPy")
     assert _marked(_rows(**{comp: 20.0, numpy: 2000.0}))[comp]["met"]
     assert not _marked(_rows(**{comp: 20.0, numpy: 1999.0}))[comp]["met"]
-    quick = bench.experiment_row(0.2, "compiled")  # the target is for the full run
-    assert "target" not in _marked(_rows(**{quick: 1.0, bench.experiment_row(0.2, "NumPy"): 1000.0}))[quick]
+    quick = targets.experiment_row(0.2, "compiled")  # the target is for the full run
+    assert "target" not in _marked(_rows(**{quick: 1.0, targets.experiment_row(0.2, "NumPy"): 1000.0}))[quick]
 
 
 def test_a_target_on_a_ratio_reads_the_ratio():
-    row = {"name": bench.IMPORT, "median": 100.0, "unit": "ms"}
-    assert _marked([{**row, "ratio_value": 2.5}])[bench.IMPORT]["met"]
-    assert not _marked([{**row, "ratio_value": 2.6}])[bench.IMPORT]["met"]
-    p999 = f"ur5: {bench.STANDALONE_P999}"
+    row = {"name": targets.IMPORT, "median": 100.0, "unit": "ms"}
+    assert _marked([{**row, "ratio_value": 2.5}])[targets.IMPORT]["met"]
+    assert not _marked([{**row, "ratio_value": 2.6}])[targets.IMPORT]["met"]
+    p999 = f"ur5: {targets.STANDALONE_P999}"
     assert not _marked([{"name": p999, "median": 1.0, "unit": "ns", "of_median": 2.1}])[p999]["met"]
 
 
 def test_rows_without_a_target_have_none():
-    by = _marked(_rows(**{bench.LOOP_RUN: 1.0, bench.TRACE_RUN: 1.0, "something else": 1.0}))
+    by = _marked(_rows(**{targets.LOOP_RUN: 1.0, targets.TRACE_RUN: 1.0, "something else": 1.0}))
     assert not any("target" in r for r in by.values())
 
 
@@ -106,22 +110,22 @@ def test_rows_without_a_target_have_none():
 
 def test_only_picks_the_groups_whose_label_contains_it():
     groups = [("F* in C (sympy backend)", None), ("paper runs: a sweep", None), ("3-D runs: a Sweep", None)]
-    assert bench.select_groups(groups, None) == groups
-    assert [g[0] for g in bench.select_groups(groups, "SWEEP")] == ["paper runs: a sweep", "3-D runs: a Sweep"]
-    assert [g[0] for g in bench.select_groups(groups, "f* in c")] == ["F* in C (sympy backend)"]
+    assert select_groups(groups, None) == groups
+    assert [g[0] for g in select_groups(groups, "SWEEP")] == ["paper runs: a sweep", "3-D runs: a Sweep"]
+    assert [g[0] for g in select_groups(groups, "f* in c")] == ["F* in C (sympy backend)"]
     with pytest.raises(HybridError, match="no benchmark group.*paper runs: a sweep"):
-        bench.select_groups(groups, "standalone")
+        select_groups(groups, "standalone")
     with pytest.raises(HybridError, match="--only needs"):
-        bench.select_groups(groups, " ")
+        select_groups(groups, " ")
 
 
 def test_the_groups_are_named_apart_and_building_them_runs_nothing():
     rows = []
-    groups = bench.benchmark_groups(True, 1, lambda *a, **k: rows.append(a))
+    groups = benchmark_groups(True, 1, lambda *a, **k: rows.append(a))
     labels = [label for label, _ in groups]
     assert len(set(labels)) == len(labels) and not rows
     for word in ("operations", "first use", "3-D runs", "standalone", "import hybrid"):
-        assert len(bench.select_groups(groups, word)) == 1
+        assert len(select_groups(groups, word)) == 1
 
 
 def test_bench_only_runs_the_chosen_group(capsys):
@@ -129,7 +133,7 @@ def test_bench_only_runs_the_chosen_group(capsys):
     out, err = capsys.readouterr()
     assert "[1/1] the 3-D closed loop's generated operations" in err
     lines = out.splitlines()
-    assert lines[1].startswith(bench.LOOP_OPS) and lines[2] == ""  # one row, then the machine
+    assert lines[1].startswith(targets.LOOP_OPS) and lines[2] == ""  # one row, then the machine
     assert main(["bench", "--only", "no such group"]) == 2
     assert "no benchmark group" in capsys.readouterr().err
 
@@ -139,7 +143,7 @@ def test_bench_only_runs_the_chosen_group(capsys):
 
 def test_loop_operations_are_the_loop_kernels_counts():
     exp = tracing_experiment()
-    got = bench.loop_operations(exp)
+    got = runs.loop_operations(exp)
     chain, spec = exp.robot.chain, exp.surface.spec()
     rhs = {k.name: k for k in spatial_plant.plant_kernels(chain, spec)}["plant_rhs"]
     step = {k.name: k for k in controller_step.controller_kernels(chain, spec, tuple(range(6)))}["controller_step"]
@@ -147,25 +151,25 @@ def test_loop_operations_are_the_loop_kernels_counts():
     assert (got["rhs"], got["step"], got["steps_per_sample"]) == (rhs_ops, step_ops, exp.steps_per_sample)
     assert got["per_step"] == 4 * rhs_ops + step_ops / exp.steps_per_sample
     # fewer steps a sample: a larger share of the controller step in each
-    fewer = bench.loop_operations(tracing_experiment(sample_time=exp.sample_time / 2))
+    fewer = runs.loop_operations(tracing_experiment(sample_time=exp.sample_time / 2))
     assert fewer["steps_per_sample"] == exp.steps_per_sample // 2 and fewer["per_step"] > got["per_step"]
 
 
 @pytest.mark.skipif(not hasattr(os, "sched_setaffinity"), reason="no thread affinity on this system")
 def test_on_one_core_pins_the_measurement_and_gives_the_cpus_back():
     before = os.sched_getaffinity(0)
-    assert bench.on_one_core(lambda: float(len(os.sched_getaffinity(0)))) == 1.0
+    assert harness.on_one_core(lambda: float(len(os.sched_getaffinity(0)))) == 1.0
     assert os.sched_getaffinity(0) == before
     with pytest.raises(ZeroDivisionError):
-        bench.on_one_core(lambda: 1 / 0)
+        harness.on_one_core(lambda: 1 / 0)
     assert os.sched_getaffinity(0) == before
 
 
 def test_alone_is_bitwise_compares_the_bits():
     rng = np.random.default_rng(3)
     batch = (rng.normal(size=(1000, 3)), rng.normal(size=(1000, 3)))
-    assert bench.alone_is_bitwise(lambda x, y: x * y + 1.0, batch)
+    assert robots.alone_is_bitwise(lambda x, y: x * y + 1.0, batch)
     # a state's numbers that depend on the others in its batch
-    assert not bench.alone_is_bitwise(lambda x, y: x - x.mean(axis=0), batch)
+    assert not robots.alone_is_bitwise(lambda x, y: x - x.mean(axis=0), batch)
     # -0.0 equals 0.0, but not bitwise
-    assert not bench.alone_is_bitwise(lambda x, y: np.full((len(x), 1), 0.0 if len(x) > 1 else -0.0), batch)
+    assert not robots.alone_is_bitwise(lambda x, y: np.full((len(x), 1), 0.0 if len(x) > 1 else -0.0), batch)

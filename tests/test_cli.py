@@ -19,7 +19,7 @@ from hybrid import plots
 from hybrid.cli import progress
 from hybrid.cli import sweep as sweep_cli
 from hybrid.cli.main import build_parser, main
-from hybrid.native import build
+from hybrid.native import cache
 
 ROOT = Path(__file__).resolve().parent.parent
 LONG_COMMANDS = ("paper", "trace", "sweep", "generate", "bench")
@@ -185,14 +185,14 @@ def test_slow_work_is_one_line_by_default_and_every_line_with_verbose(capsys):
         with progress.reporting(verbose, stream) as report:
             with report.step("running the schemes"):
                 for unit in ("a", "b", "c"):
-                    log.info("hybrid: compiling %s", unit, extra=build.SLOW)
+                    log.info("hybrid: compiling %s", unit, extra=cache.SLOW)
         lines = stream.getvalue().splitlines()
         if verbose:
             assert lines[0] == "running the schemes ..." and sum("compiling" in ln for ln in lines) == 3
         else:
             assert lines == [f"running the schemes ({progress.COMPILING}) ..."]
     assert log.level == logging.NOTSET and not log.handlers  # left as it was
-    log.info("hybrid: compiling x", extra=build.SLOW)  # the library alone stays silent
+    log.info("hybrid: compiling x", extra=cache.SLOW)  # the library alone stays silent
     assert capsys.readouterr().err == ""
 
 

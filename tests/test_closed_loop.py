@@ -15,7 +15,7 @@ from hybrid.codegen.lanes import PRELUDE, lanes_function, libm_maps
 import hybrid
 from hybrid import metrics
 from hybrid.control.controller import Controller
-from hybrid.native.build import compiler, flags
+from hybrid.native.compiler import compiler, flags
 from hybrid.plants.planar import PlanarPlant
 from hybrid.simulation import closed_loop
 from hybrid.simulation.runner import run

@@ -162,7 +162,7 @@ def test_bench_refuses_to_overwrite_its_json(tmp_path):
 
 
 def test_missing_compiler_says_what_to_install(tmp_path):
-    code = "import hybrid.native.build as n; n.load('sympy')"
+    code = "import hybrid.native.loader as n; n.load('sympy')"
     env = {k: v for k, v in os.environ.items() if k != "CC"}
     proc = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True,
                           env={**env, "PATH": str(tmp_path), "HYBRID_CACHE_DIR": str(tmp_path / "cache")})

@@ -154,7 +154,7 @@ def test_parameters_are_runtime_inputs():
     """Another arm or surface is another array, not another build."""
     from dataclasses import replace
 
-    from hybrid.native import build as native
+    from hybrid.native import loader as native
 
     arm = hybrid.paper_arm()
     before = native.load.cache_info().currsize

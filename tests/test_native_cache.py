@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import hybrid
-from hybrid.native import build as native
+from hybrid.native import build, cache, compiler, loader
 
 ROOT = Path(__file__).resolve().parent.parent
 LAW = ("import hybrid; law = hybrid.decoupling_law(hybrid.paper_arm(), hybrid.Circle((0.5, 0), 0.2)); "
@@ -48,7 +48,7 @@ def test_an_entry_that_matches_its_checksum_but_does_not_load_heals(tmp_path):
         so.write_bytes(b"\x7fELF not really a library")
         manifest = so.parent / "manifest.json"
         data = json.loads(manifest.read_text())
-        data["sha256"] = native._sha256(so)  # the checksum agrees: only loading can tell
+        data["sha256"] = cache._sha256(so)  # the checksum agrees: only loading can tell
         manifest.write_text(json.dumps(data))
     second = run(LAW, HYBRID_CACHE_DIR=str(tmp_path))
     assert second.returncode == 0, second.stderr
@@ -60,17 +60,17 @@ def test_hand_edited_generated_code_is_used_with_a_warning(tmp_path, monkeypatch
     shutil.copytree(ROOT / "generated", src)
     c = src / "hybrid_sympy.c"
     c.write_text(c.read_text() + "\n/* my tuning */\n")
-    monkeypatch.setattr(native, "source_dir", lambda: src)
+    monkeypatch.setattr(loader, "source_dir", lambda: src)
     monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
-    native.load.cache_clear()
+    loader.load.cache_clear()
     try:
-        with pytest.warns(native.HandEditedWarning, match="hybrid_sympy.c in .* were edited by hand"):
-            native.load("sympy")
+        with pytest.warns(loader.HandEditedWarning, match="hybrid_sympy.c in .* were edited by hand"):
+            loader.load("sympy")
         with warnings.catch_warnings():
             warnings.simplefilter("error")
-            native.load("casadi")  # untouched: no warning
+            loader.load("casadi")  # untouched: no warning
     finally:
-        native.load.cache_clear()
+        loader.load.cache_clear()
 
 
 def test_a_hand_edited_committed_loop_is_used_with_a_warning(tmp_path, monkeypatch):
@@ -84,11 +84,11 @@ def test_a_hand_edited_committed_loop_is_used_with_a_warning(tmp_path, monkeypat
     prefix, _ = units._loop_key(plant, dict(variant), 1)
     c = src / "loops" / f"{prefix}.c"
     c.write_text(c.read_text() + "\n/* my tuning */\n")
-    monkeypatch.setattr(native, "source_dir", lambda: src)
+    monkeypatch.setattr(build, "source_dir", lambda: src)  # where the units look for the committed loops
     monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
     unit = units.loop_unit(plant, dict(variant), 1)
     assert unit.folder == src / "loops"
-    with pytest.warns(native.HandEditedWarning, match=f"{prefix}.c in .* were edited by hand"):
+    with pytest.warns(loader.HandEditedWarning, match=f"{prefix}.c in .* were edited by hand"):
         assert unit.module.lib is not None  # compiled from the edited C
 
 
@@ -101,7 +101,7 @@ def test_a_committed_loop_with_a_file_missing_is_generated_instead(tmp_path, mon
     plant, variant = closed_loop.loop_of(hybrid.paper_experiment(controller="raibert_craig"))
     prefix, _ = units._loop_key(plant, dict(variant), 1)
     (src / "loops" / f"{prefix}.c").unlink()
-    monkeypatch.setattr(native, "source_dir", lambda: src)
+    monkeypatch.setattr(build, "source_dir", lambda: src)  # where the units look for the committed loops
     monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
     unit = units.loop_unit(plant, dict(variant), 1)
     assert unit.folder.parent == tmp_path / "cache" / "units"  # generated into the cache
@@ -109,10 +109,10 @@ def test_a_committed_loop_with_a_file_missing_is_generated_instead(tmp_path, mon
 
 
 def test_the_compiler_is_probed_once_per_process():
-    native._compiler.cache_clear()
-    native.compiler()
-    native.compiler()
-    assert native._compiler.cache_info().misses == 1
+    compiler._compiler.cache_clear()
+    compiler.compiler()
+    compiler.compiler()
+    assert compiler._compiler.cache_info().misses == 1
     assert isinstance(hybrid.NativeBuildError("x"), hybrid.HybridError)
 
 
@@ -131,15 +131,15 @@ def test_a_known_compiler_is_not_probed_again_and_a_changed_one_is(tmp_path, mon
     monkeypatch.setenv("CC", str(fake))
     try:
         for _ in range(2):
-            native._compiler.cache_clear()
-            assert native.compiler() == (str(fake), "fakecc 1.0")
+            compiler._compiler.cache_clear()
+            assert compiler.compiler() == (str(fake), "fakecc 1.0")
         assert calls.read_text().count("x") == 1
         install("2.0.1")  # another binary (size and time differ)
-        native._compiler.cache_clear()
-        assert native.compiler()[1] == "fakecc 2.0.1"
+        compiler._compiler.cache_clear()
+        assert compiler.compiler()[1] == "fakecc 2.0.1"
         assert calls.read_text().count("x") == 2
     finally:
-        native._compiler.cache_clear()
+        compiler._compiler.cache_clear()
 
 
 def test_a_cache_folder_under_a_file_is_a_native_build_error(tmp_path):
@@ -170,9 +170,9 @@ def test_robot_names_become_ascii_c_identifiers(tmp_path):
 ])
 def test_gccs_scheduling_flags_go_to_gcc_alone(ident, gcc):
     """GCC takes its pre-allocation scheduling flags; Clang and others (which may refuse them) do not."""
-    got = native.flags(ident)
-    assert got[:len(native.CFLAGS)] == native.CFLAGS
-    assert (set(native.GCC_FLAGS) <= set(got)) is gcc and (len(got) > len(native.CFLAGS)) is gcc
+    got = compiler.flags(ident)
+    assert got[:len(compiler.CFLAGS)] == compiler.CFLAGS
+    assert (set(compiler.GCC_FLAGS) <= set(got)) is gcc and (len(got) > len(compiler.CFLAGS)) is gcc
 
 
 def test_a_gcc_that_fails_on_its_scheduling_flags_builds_without_them(tmp_path):
@@ -200,15 +200,15 @@ exec {real} "$@"
 def test_this_compiler_takes_the_flags_it_is_given(tmp_path):
     """The flags chosen for the compiler found here compile a unit with it (and GCC's are among them
     when it is GCC)."""
-    cc, ident = native.compiler()
+    cc, ident = compiler.compiler()
     src = tmp_path / "t.c"
     src.write_text("double f(double x) { return x * x + 1.0; }\n")
-    proc = subprocess.run([cc, *native.flags(ident), "-shared", str(src), "-o", str(tmp_path / "t.so")],
+    proc = subprocess.run([cc, *compiler.flags(ident), "-shared", str(src), "-o", str(tmp_path / "t.so")],
                           capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     version = subprocess.run([cc, "-dM", "-E", "-"], input="", capture_output=True, text=True).stdout
     is_gcc = "__GNUC__" in version and "__clang__" not in version
-    assert (set(native.GCC_FLAGS) <= set(native.flags(ident))) is is_gcc
+    assert (set(compiler.GCC_FLAGS) <= set(compiler.flags(ident))) is is_gcc
 
 
 def _paper_loop(tmp_path: Path, parts: int | None):
@@ -225,7 +225,7 @@ def _paper_loop(tmp_path: Path, parts: int | None):
     if parts is not None:
         data["parts"] = parts
     (src / f"{prefix}.json").write_text(json.dumps(data))
-    return native.load_generated(src, prefix), prefix
+    return loader.load_generated(src, prefix), prefix
 
 
 def test_a_loop_compiled_in_parts_computes_what_it_computes_whole(tmp_path, monkeypatch):
@@ -237,8 +237,8 @@ def test_a_loop_compiled_in_parts_computes_what_it_computes_whole(tmp_path, monk
     manifest = json.loads(next((ROOT / "generated" / "loops").glob("*controller*.json")).read_text())
     assert manifest["parts"] == 2
     together = []
-    real = native._run_together
-    monkeypatch.setattr(native, "_run_together", lambda cmds: together.append(cmds) or real(cmds))
+    real = compiler._run_together
+    monkeypatch.setattr(compiler, "_run_together", lambda cmds: together.append(cmds) or real(cmds))
     runs = {}
     exp = hybrid.paper_experiment(duration=0.3)
     row = closed_loop.prepare(exp, lanes=1).row

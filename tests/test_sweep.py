@@ -68,15 +68,15 @@ def test_runs_prepared_alike_are_the_runs_prepared_alone(base, names, monkeypatc
     """Each run of a chunk that sweeps settings of ALIKE (each alone: the parts of the row it reaches; all at
     once) and settings that do not make runs alike (a scheme; a sensor's noise, whose runs the Python runner
     runs), is refused as it is alone, or its prepared row is the row it has alone, to the bit."""
-    from hybrid import sweeps
     from hybrid.simulation import closed_loop
+    from hybrid.sweeps import plan
 
     assert set(ALIKE) == set(closed_loop.ROW_SETTINGS)
     real, alike = closed_loop.prepare_alike, []
     monkeypatch.setattr(closed_loop, "prepare_alike", lambda *args: alike.append(args) or real(*args))
     grid = {**{name: ALIKE[name] for name in names}, "controller": ["task", "khatib"], "sensor.force_noise": [0.0, 0.5]}
     chunk = list(enumerate(points(grid, samples=300, seed=2) if len(names) > 1 else points(grid)))
-    rows, compiled = sweeps._prepared(base, chunk)
+    rows, compiled = plan._prepared(base, chunk)
     prepared = {index: p for index, _, _, p in compiled}
     for index, settings in chunk:
         try:
@@ -282,7 +282,7 @@ def test_resume_refuses_what_is_not_the_same_sweep(tmp_path):
 
 
 def test_a_second_sweep_into_the_same_folder_is_refused(tmp_path):
-    from hybrid.sweeps import _lock
+    from hybrid.sweeps.store import _lock
 
     out = tmp_path / "s"
     out.mkdir()

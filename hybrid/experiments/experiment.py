@@ -7,14 +7,14 @@ What differs between robots is a property of the robot: the paper's planar arm (
 :class:`~hybrid.Robot` with a ``closed_form``) runs on the committed closed-form plant, with
 the planar task axes and closed-form inverse kinematics; any other arm on its generated
 rigid-body plant, on all six task axes (or those it can serve). :func:`hybrid.paper_experiment`,
-:func:`hybrid.tracing_experiment` and :func:`hybrid.panda_experiment` are factories of it.
+:func:`hybrid.tracing_experiment` and :func:`hybrid.panda_experiment` are factories of it. Its start
+state is worked out in :mod:`hybrid.experiments.start`, its settings as data in
+:mod:`hybrid.experiments.serialisation`.
 """
 
 from __future__ import annotations
 
-import hashlib
-import json
-from dataclasses import asdict, dataclass, field, fields, replace
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
 import numpy as np
@@ -23,25 +23,22 @@ from hybrid.control.controller import Controller, Posture, check_posture
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES, scheme_of
-from hybrid.control.wrench_sensor import Tool, WrenchSensor
+from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.errors import HybridError
+from hybrid.experiments.serialisation import experiment_from_dict, experiment_to_dict
 from hybrid.experiments.settings import (
-    START_TOL,
     TOUCH_THRESHOLD,
     RunSettings,
     check_common_types,
     check_sensing,
     check_timing,
-    free,
-    pressed,
 )
-from hybrid.geometry.paths import CirclePath, LinePath, Path
-from hybrid.geometry.surfaces import SURFACE_KINDS, Circle, Plane, Surface
+from hybrid.experiments.start import start_state
+from hybrid.geometry.paths import Path
+from hybrid.geometry.surfaces import Surface
 from hybrid.geometry.task_axes import check_axes, reference_direction
-from hybrid.models.chain import Chain, Joint
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
-from hybrid.models.urdf import JointLimits, LinkInertia
 from hybrid.native.standalone import generate_experiment
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.plants.planar import PlanarPlant
@@ -286,7 +283,7 @@ class Experiment(RunSettings):
         (:func:`~hybrid.experiments.settings.free`); the tool's z axis along ``-n`` when the task has
         rotational axes, the joints from inverse kinematics of the true arm. What a foreign loop starts
         from."""
-        return _initial_state(self).copy()
+        return start_state(self).copy()
 
     def check_path(self) -> None:
         """Refuse a run whose desired path leaves the arm's workspace (where the reach is known)."""
@@ -317,141 +314,12 @@ class Experiment(RunSettings):
 
     def to_dict(self) -> dict:
         """The settings as JSON-ready data, from which :meth:`from_dict` builds the experiment again."""
-        d = {f.name: getattr(self, f.name) for f in fields(self)}
-        for name in ("sensor", "contact", "gains", "force_reference", "speed_reference"):
-            d[name] = asdict(d[name])
-        d["robot"] = robot_to_dict(self.robot)
-        d["surface"] = surface_to_dict(self.surface)
-        d["controller_surface"] = None if self.controller_surface is None else surface_to_dict(self.controller_surface)
-        d["path"] = None if self.path is None else {"kind": type(self.path).__name__, **asdict(self.path)}
-        d["start_point"] = None if self.start_point is None else list(self.start_point)
-        d["reference"] = list(self.reference)
-        d["axes"] = list(self.axes) if isinstance(self.axes, tuple) else self.axes
-        d["posture"] = None if self.posture is None else asdict(self.posture)
-        for name in ("wrench_sensor", "controller_wrench_sensor"):
-            d[name] = None if d[name] is None else asdict(d[name])
-        return {"kind": "experiment", **d}
+        return experiment_to_dict(self)
 
     @classmethod
     def from_dict(cls, d: dict) -> Experiment:
         """The experiment :meth:`to_dict` wrote; anything else is a HybridError."""
-        try:
-            return cls._from_dict(d)
-        except (KeyError, TypeError, AttributeError, ValueError, IndexError) as exc:
-            if isinstance(exc, HybridError):
-                raise
-            raise HybridError(f"not an experiment's settings ({type(exc).__name__}: {exc})") from None
-
-    @classmethod
-    def _from_dict(cls, d: dict) -> Experiment:
-        d = dict(d)
-        kind = d.pop("kind", None)
-        if kind is None and "arm" in d:  # a paper run saved before experiments were one type
-            d = _from_paper_settings(d)
-        elif kind == "tracing":
-            raise ValueError("a 3-D run saved before experiments were one type names its robot only by name: "
-                             "its arrays load with numpy.load")
-        elif kind != "experiment":
-            raise ValueError("no 'kind': 'experiment' entry")
-        parts = {"sensor": Sensor, "contact": Contact, "gains": Gains, "force_reference": Step,
-                 "speed_reference": Step}
-        for k, typ in parts.items():
-            d[k] = typ(**d[k])
-        d["robot"], d["surface"] = robot_from_dict(d["robot"]), surface_from_dict(d["surface"])
-        if d.get("controller_surface") is not None:
-            d["controller_surface"] = surface_from_dict(d["controller_surface"])
-        if d["path"] is not None:
-            path = dict(d["path"])
-            d["path"] = {"CirclePath": CirclePath, "LinePath": LinePath}[path.pop("kind")](**path)
-        if d["posture"] is not None:
-            d["posture"] = Posture(**d["posture"])
-        for name in ("wrench_sensor", "controller_wrench_sensor"):
-            if d.get(name) is not None:
-                d[name] = WrenchSensor(**{**d[name], "tool": Tool(**d[name]["tool"])})
-        if isinstance(d["axes"], list):
-            d["axes"] = tuple(d["axes"])
-        return cls(**d)
-
-
-def _initial_state(exp: Experiment) -> np.ndarray:
-    geometry = exp._geometry()
-    path = exp.followed_path() if exp.start_point is None else None
-    given = np.asarray(exp.start_point) if path is None else path.point_at(path.start)  # a path's start too
-    nearest = geometry.project(given)
-    p0 = nearest if nearest is not None and path is None else given  # as exp.start() gives it
-    if nearest is not None:
-        gap = float(np.linalg.norm(given - nearest))
-    else:  # without a closed-form projection the plant's own record says how far the point is
-        plant = exp.plant()
-        gap = abs(float(plant.outputs(_probe(exp, p0))[0][plant.record["outputs"].index("penetration")]))
-    if not gap <= START_TOL:
-        what = "start_point" if exp.start_point is not None else "the path's start"
-        hint = f", e.g. {np.round(nearest, 4).tolist()}" if nearest is not None else ""
-        raise HybridError(f"{what} {np.round(given, 4).tolist()} m is {gap * 1000:.1f} mm off the surface; give a "
-                          f"point on it (within {START_TOL * 1000:g} mm){hint}")
-    q0 = None if exp.posture is None else exp.posture.q_rest
-    p0 = tuple(np.asarray(p0).tolist())
-    if exp.start_gap > 0:
-        # the sensor tip's weight hangs on its spring where the plant gives it gravity (the 3-D plant's)
-        weight = np.zeros(3) if exp.robot.closed_form is not None else exp.sensor.mass * np.array(exp.robot.gravity)
-        return _free_start(exp.robot, geometry, p0, exp.elbow, q0, exp.reference, exp.singular_tol, exp.start_gap,
-                           tuple((weight[:len(p0)] / exp.sensor.stiffness).tolist()))
-    return _pressed_start(exp.robot, geometry, p0, exp.elbow, q0, exp.reference,
-                          exp.singular_tol, exp.force_reference(0.0), exp.contact.stiffness, exp.sensor.stiffness)
-
-
-def _probe(exp: Experiment, p: np.ndarray) -> np.ndarray:
-    """A plant state at rest with the sensor tip at ``p`` (one row)."""
-    return np.concatenate([np.zeros(2 * exp.robot.n), p, np.zeros(len(p))])[None, :]
-
-
-# the runs of a sweep mostly start alike: what they share is worked out once (from the values it reads)
-@lru_cache(maxsize=1024)
-def _pressed_start(robot, surface, p0, elbow, q0, reference, singular_tol, F0, k_e, K_s) -> np.ndarray:
-    normal = surface.normal_at(p0)
-    s, r = pressed(p0, normal, F0, k_e, K_s)
-    return _at_rest(robot, normal, p0, s, r, elbow, q0, reference, singular_tol)
-
-
-@lru_cache(maxsize=1024)
-def _free_start(robot, surface, p0, elbow, q0, reference, singular_tol, gap, sag) -> np.ndarray:
-    normal = surface.normal_at(p0)
-    s, r = free(p0, normal, gap, np.array(sag))
-    return _at_rest(robot, normal, p0, s, r, elbow, q0, reference, singular_tol, gap)
-
-
-def _at_rest(robot, normal, p0, s, r, elbow, q0, reference, singular_tol, gap: float = 0.0) -> np.ndarray:
-    """The state at rest with the sensor tip at ``s`` and the arm tip at ``r`` (the start point ``p0`` on
-    the surface, its ``normal``), the joints from the true arm's inverse kinematics."""
-    # the tool's orientation is set where the task controls it (the planar arm's follows from r)
-    rotation = None if robot.closed_form is not None else _tool_rotation(np.asarray(reference), normal)
-    where = (f"start_gap = {gap:g} m puts the arm tip at {np.round(r, 4).tolist()} m" if gap > 0 else
-             f"the start point {np.round(p0, 4).tolist()} m")
-    fix = ("give a smaller start_gap, or move the surface or start_point" if gap > 0 else
-           "move the surface or start_point")
-    try:
-        q = robot.inverse_kinematics(np.append(r, 0.0) if len(r) == 2 else r, rotation, q0=q0, elbow=elbow)
-    except HybridError as exc:
-        if gap > 0:
-            first, _, rest = str(exc).partition("\n")
-            raise HybridError(f"{where}, which the arm cannot reach; {fix}\n  {first}"
-                              + (f"\n{rest}" if rest else "")) from None
-        raise HybridError(f"the start pose cannot be reached: {exc}") from None
-    cond = float(robot.conditioning(q))
-    if cond < max(singular_tol, 1e-3):
-        raise HybridError(f"{where} puts the arm at or near a singularity (q = {np.round(q, 4).tolist()} rad, "
-                          f"{robot.conditioning_name} = {cond:.2e}); {fix}")
-    return np.concatenate([q, np.zeros(robot.n), s, np.zeros(len(s))])
-
-
-def _tool_rotation(e: np.ndarray, normal: np.ndarray) -> np.ndarray:
-    """The tool's start orientation: its z axis along ``-n``, its x axis along ``t1 = e x n``."""
-    x_tool = np.cross(e, normal)
-    if np.linalg.norm(x_tool) < 1e-6:
-        raise HybridError("the reference direction is parallel to the surface normal at the start point: the task "
-                          "frame is undefined there; choose another reference or start_point")
-    x_tool /= np.linalg.norm(x_tool)
-    return np.column_stack([x_tool, np.cross(-normal, x_tool), -normal])
+        return experiment_from_dict(cls, d)
 
 
 @lru_cache(maxsize=1024)
@@ -466,62 +334,3 @@ def _check_path(reach, path, s0, speed_reference, n_samples, sample_time, durati
         raise HybridError(f"the desired path leaves the arm's workspace at t = {t[i]:.3f} s "
                           f"(point {np.round(points[i], 4).tolist()} m, {d[i]:.3f} m from the base, reach "
                           f"{lo:.3f}-{hi:.3f} m); shorten duration, lower the speed or move the surface")
-
-
-def _from_paper_settings(d: dict) -> dict:
-    """The settings of a paper run in the form saved before experiments were one type: the planar arm's
-    parameters as ``arm``, the surface as a 2-D circle or line."""
-    surface = dict(d.pop("surface"))
-    kind = surface.pop("kind")
-    lifted = Circle(**surface) if kind == "circle" else Plane(**surface)
-    d["robot"], d["surface"] = {"closed_form": d.pop("arm")}, surface_to_dict(lifted)
-    d["backend"] = "sympy" if d.get("backend") == "numpy" else d.get("backend", "sympy")
-    d.update(path=None, reference=[0.0, 0.0, 1.0], axes=None, posture=None)
-    return d
-
-
-# ------------------------------------------------------------- robots and surfaces as data
-
-
-def robot_to_dict(robot: Robot) -> dict:
-    """Everything that defines ``robot`` as JSON-ready data (and a digest of it, for sweeps' resume)."""
-    if robot.closed_form is not None:
-        d = {"closed_form": asdict(robot.closed_form)}
-    else:
-        limits = None if robot.limits is None else {k: np.asarray(v).tolist() for k, v in vars(robot.limits).items()}
-        d = {"name": robot.name, "chain": asdict(robot.chain), "links": [asdict(lk) for lk in robot.links],
-             "damping": list(robot.damping), "gravity": list(robot.gravity), "limits": limits}
-    d["digest"] = hashlib.sha256(json.dumps(d, sort_keys=True).encode()).hexdigest()[:16]
-    return d
-
-
-def robot_from_dict(d: dict) -> Robot:
-    if "closed_form" in d:
-        return Robot.planar(Arm(**d["closed_form"]))
-    c = d["chain"]
-
-    def rows(m):
-        return tuple(tuple(float(v) for v in row) for row in m)
-
-    joints = tuple(Joint(j["name"], j["kind"], rows(j["rotation"]), tuple(j["translation"]), tuple(j["axis"]))
-                   for j in c["joints"])
-    chain = Chain(joints, rows(c["tip_rotation"]), tuple(c["tip_translation"]))
-    links = tuple(LinkInertia(lk["mass"], tuple(lk["com"]), rows(lk["inertia"])) for lk in d["links"])
-    limits = None if d["limits"] is None else JointLimits(**{k: np.array(v, float) for k, v in d["limits"].items()})
-    return Robot(d["name"], chain, links, tuple(d["damping"]), tuple(d["gravity"]), limits)
-
-
-def surface_to_dict(surface: Surface) -> dict:
-    if surface.kind.startswith("implicit"):
-        return {"kind": "implicit", "phi": str(surface.phi), "parameters": dict(surface.parameters)}
-    return {"kind": surface.kind, **{k: list(v) if isinstance(v, tuple) else v for k, v in asdict(surface).items()}}
-
-
-def surface_from_dict(d: dict) -> Surface:
-    d = dict(d)
-    kind = d.pop("kind")
-    if kind == "implicit":
-        from hybrid.geometry.implicit import ImplicitSurface  # SymPy: loaded only for a user's surface
-
-        return ImplicitSurface(d["phi"], d["parameters"])
-    return SURFACE_KINDS[kind](**d)

@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from hybrid.errors import HybridError, NonFiniteError, SingularConfigurationError, TaskFrameError
-from hybrid.native.build import load_fastcall
+from hybrid.native.loader import load_fastcall
 from hybrid.spec.interfaces import STATUS_NAMES
 from hybrid.validate import check_size
 

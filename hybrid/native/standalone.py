@@ -10,7 +10,7 @@ import numpy as np
 from hybrid.errors import HybridError
 from hybrid.models.robot import Robot
 from hybrid.models.urdf import read_chain
-from hybrid.native import build, units
+from hybrid.native import cache, units
 from hybrid.validate import c_identifier, check_c_name
 
 
@@ -71,7 +71,7 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
         return units.generator("standalone_controller").build_standalone_controller(step, prefix, what, info,
                                                                                    values, stem).files
 
-    folder = build.generated_unit(stem, key, make)
+    folder = cache.generated_unit(stem, key, make)
     return {n: (folder / n).read_text() for n in (f"{stem}.c", f"{stem}.h", f"{stem}.json")}
 
 
@@ -117,7 +117,7 @@ def plant_files(exp, prefix: str, x0) -> dict[str, str]:
         return units.generator("standalone_plant").build_standalone_plant(rhs, outputs, force, prefix, what, info,
                                                                           values, backend).files
 
-    folder = build.generated_unit(prefix, key, make)
+    folder = cache.generated_unit(prefix, key, make)
     return {n: (folder / n).read_text() for n in (f"{prefix}.c", f"{prefix}.h", f"{prefix}.json")}
 
 
@@ -132,7 +132,7 @@ def write_files(out, files: dict[str, str], force: bool) -> list[Path]:
         raise HybridError(f"{', '.join(clash)} already exist in {out} with other content; "
                           "pass --force to overwrite them, or choose another --out or --name")
     try:
-        build.write_unit_files(out, files)
+        cache.write_unit_files(out, files)
     except OSError as exc:
         raise HybridError(f"cannot write into {out} ({exc.strerror}); choose a writable --out") from None
     return [out / n for n in files]

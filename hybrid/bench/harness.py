@@ -1,0 +1,107 @@
+"""How the benchmarks measure: medians of repeated timings, warm-ups, one core, and C timed inside C.
+
+A measurement is the median, over ``repeat`` runs, of the time of ``number`` calls divided by
+``number``: per call, in ns unless a row says otherwise. A generated function is timed inside C by
+a compiled loop with the runtime's flags, on a new state each call.
+"""
+
+from __future__ import annotations
+
+import os
+import statistics
+import subprocess
+import tempfile
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+
+from hybrid.native import compiler
+
+#: calls of a run through ``simulate`` before it is timed: in a fresh process the first is about twice
+#: as slow (the C library's allocator maps the record's memory afresh, page by page) and the next ten a
+#: tenth slower
+WARM_UP = 5
+
+
+def median_ns(fn, number: int, repeat: int) -> float:
+    """The median over ``repeat`` timings of ``number`` calls of ``fn()``, per call [ns]."""
+    times = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        for _ in range(number):
+            fn()
+        times.append((time.perf_counter() - t0) / number * 1e9)
+    return statistics.median(times)
+
+
+def on_one_core(measure: Callable[[], float]) -> float | None:
+    """``measure()`` with the calling thread pinned to one of its CPUs, its CPUs given back after (a
+    batch splits over the CPUs the caller may run on: here it runs on the caller's thread alone); None
+    where the system cannot pin a thread."""
+    if not hasattr(os, "sched_setaffinity"):
+        return None
+    cpus = os.sched_getaffinity(0)
+    os.sched_setaffinity(0, {min(cpus)})
+    try:
+        return measure()
+    finally:
+        os.sched_setaffinity(0, cpus)
+
+
+HARNESS = r"""
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+#include "%(prefix)s.h"
+static double now(void) { struct timespec ts; clock_gettime(CLOCK_MONOTONIC, &ts); return ts.tv_sec + 1e-9 * ts.tv_nsec; }
+int main(int argc, char **argv) {
+    long ncalls = argc > 1 ? atol(argv[1]) : 1000000, i;
+    int rep, reps = argc > 2 ? atoi(argv[2]) : 7;
+    double sink = 0.0;
+%(arrays)s
+    for (rep = 0; rep < reps; ++rep) {
+        double t0 = now();
+        for (i = 0; i < ncalls; ++i) {
+            %(first)s[0] = %(first0)r + 1e-9 * (double)(i & 1023);   /* a new state each call */
+            %(symbol)s(%(args)s);
+            sink += %(out)s[0];
+        }
+        printf("%%.3f\n", (now() - t0) / (double)ncalls * 1e9);
+    }
+    fprintf(stderr, "%%g\n", sink);
+    return 0;
+}
+"""
+
+
+def harness_source(prefix: str, entry: dict, values: dict, singular_tol: float = 1e-3) -> str:
+    """A C program timing one call of the manifest function ``entry`` on the input ``values``."""
+    decl = []
+    for a in entry["inputs"]:
+        v = np.asarray(values[a["name"]], float).ravel()
+        if v.size != a["size"]:
+            raise ValueError(f"{a['name']} needs {a['size']} values, got {v.size}")
+        decl.append(f"    double {a['name']}[{a['size']}] = {{{', '.join(repr(float(x)) for x in v)}}};")
+    decl += [f"    double {a['name']}[{a['size']}];" for a in entry["outputs"]]
+    args = [a["name"] for a in entry["inputs"]] + ([repr(singular_tol)] if entry["singular_tol"] else [])
+    args += [a["name"] for a in entry["outputs"]]
+    first = entry["inputs"][0]["name"]
+    return HARNESS % {"prefix": prefix, "arrays": "\n".join(decl), "symbol": entry["symbol"], "args": ", ".join(args),
+                      "first": first, "first0": float(np.asarray(values[first]).ravel()[0]),
+                      "out": entry["outputs"][0]["name"]}
+
+
+def c_harness_ns(src_dir: Path, prefix: str, entry: dict, values: dict, calls: int, repeat: int) -> float:
+    """Per-call time of a generated function inside C, by a compiled loop (the runtime's flags)."""
+    cc, ident = compiler.compiler()
+    with tempfile.TemporaryDirectory() as tmp:
+        main = Path(tmp) / "bench.c"
+        main.write_text(harness_source(prefix, entry, values))
+        exe = Path(tmp) / "bench"
+        flags = [f for f in compiler.flags(ident) if f != "-fPIC"]
+        subprocess.run([cc, *flags, f"-I{src_dir}", str(main), str(src_dir / f"{prefix}.c"),
+                        "-o", str(exe), "-lm"], check=True, capture_output=True)
+        out = subprocess.run([str(exe), str(calls), str(repeat)], check=True, capture_output=True, text=True)
+    return statistics.median(float(x) for x in out.stdout.split())

@@ -1,0 +1,132 @@
+"""The benchmarks' rows by name, and the targets some of them have, as a table.
+
+A target is data: the row it is for, how the report says it, the bound on one of the row's fields
+(in the row's own unit: ns, ms, s, ops), and what else it asks (a field at least some value; the
+row against another row). A row that did not run has no target, and neither has one whose target
+compares it with a row that did not run.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+# ------------------------------------------------------------------ the paper's arm
+
+ONE_STATE = "F* from Python, one state (law(q, qdot, a, Fc))"
+BATCHED = "F* from Python, batched, per state (N = 1e5, SIMD lanes, both cores)"
+NUMPY_LAW = "F* in plain NumPy (hybrid.reference)"
+
+
+def in_c(backend: str) -> str:
+    return f"F* in C, {backend} backend, per call"
+
+
+def experiment_row(duration: float, how: str) -> str:
+    """The name of the paper experiment's end-to-end row (``how``: compiled, NumPy)."""
+    return f"paper experiment end to end ({duration:g} s simulated), {how}"
+
+
+# ------------------------------------------------------------------ first use
+
+IMPORT = "import hybrid in a fresh process, from bytecode, less the interpreter's start"
+FIRST_SIMULATE = "first paper simulate (hybrid.simulate(hybrid.paper_experiment())), fresh process and cache"
+COLD_PAPER = "python -m hybrid paper --out DIR, fresh process and cache (wall time)"
+
+# ------------------------------------------------------------------ the URDF arms (each row's name after "ARM: ")
+
+TERMS_IN_C = "r, rotation, J, J'q', B, n in C, per call (robot_terms)"
+LAW_IN_C = "6-D F* on a sphere in C, per call (curvature on)"
+LAW_ONE = "6-D F* from Python, one state (law(q, qdot, a, Fc))"
+LAW_BATCHED = "6-D F* from Python, batched, per state (N = 1e5, both cores)"
+LAW_BATCHED_ONE_CORE = "6-D F* from Python, batched, per state (N = 1e5, one core)"
+STEP_IN_C = "controller step in C (measurement, six loops, law), per sample"
+STEP_ONE = "controller step from Python, per sample (ctrl(t, q, qdot, Fc))"
+GEN_COMPILE = "generate + compile, fresh cache and process"
+
+# ------------------------------------------------------------------ runs and sweeps
+
+ONE_RUN = "paper run through hybrid.simulate (2 s simulated)"
+SWEEP_1000 = "1,000 paper runs by hybrid.sweep (both cores)"
+SWEEP_10000 = "10,000 paper runs by hybrid.sweep (both cores)"
+LOOP_RUN = "paper run in the compiled closed loop, as SIMD lanes, one core, per run"
+TRACE_ONE = "3-D run (UR5 on the sphere, 3 s simulated) through hybrid.simulate"
+TRACE_RUN = "3-D run (UR5 on the sphere, 3 s simulated) in the compiled loop, as SIMD lanes, one core, per run"
+SWEEP_3D = "1,000 3-D runs (UR5 on the sphere) by hybrid.sweep (both cores)"
+LOOP_OPS = "3-D closed loop (UR5 on the sphere), generated operations per RK4 step"
+#: LOOP_OPS before the body-frame algorithms: 4 x 2,593 (the plant's right-hand side) + 3,488 / 100 (the
+#: controller step, once a sample of 100 steps) = 10,406.9. A reference count, like a baseline: the target
+#: is a share of it
+LOOP_OPS_REFERENCE = 10_407
+
+# ------------------------------------------------------------------ the standalone controller (after "ARM: ")
+
+STANDALONE_STEP = "standalone controller step in C (NAME_controller_step), per call"
+STANDALONE_P999 = "standalone controller step in C, p99.9 of the calls"
+STANDALONE_SIZE = "standalone controller, .text of the compiled object"
+STANDALONE_COMPILE = "standalone controller, compile time of the generated C"
+
+
+# ------------------------------------------------------------------ the targets
+
+
+class Target(NamedTuple):
+    """A row's target, met when the row's ``field`` is at most ``at_most``; with ``at_least``, ``(field,
+    bound)``, when that field is also at least the bound (a row without it has 0); with ``against``,
+    ``(other row, factor)``, when the other row's median is also at least ``factor`` times this row's."""
+
+    row: str
+    text: str  # as the report says it
+    at_most: float
+    field: str = "median"
+    at_least: tuple[str, float] | None = None
+    against: tuple[str, float] | None = None
+
+    def met(self, by: dict[str, dict]) -> bool:
+        """Whether the row of ``by`` (the rows by name) meets the target."""
+        row = by[self.row]
+        ok = row[self.field] <= self.at_most
+        if ok and self.at_least is not None:
+            field, bound = self.at_least
+            ok = row.get(field, 0) >= bound
+        if ok and self.against is not None:
+            other, factor = self.against
+            ok = by[other]["median"] / row["median"] >= factor
+        return bool(ok)
+
+
+#: every target; the experiment's is for the full run (2 s simulated): a quick run has no such row
+TARGETS = (
+    Target(in_c("sympy"), "<= 60 ns", 60),
+    Target(in_c("casadi"), "<= 60 ns", 60),
+    Target(ONE_STATE, "<= 1 us, >= 70x NumPy", 1000, against=(NUMPY_LAW, 70)),
+    Target(BATCHED, "<= 10 ns", 10),
+    Target(experiment_row(2.0, "compiled"), "<= 25 ms, >= 100x NumPy", 25,
+           against=(experiment_row(2.0, "NumPy"), 100)),
+    Target(IMPORT, "<= 2.5x import numpy", 2.5, field="ratio_value"),
+    Target(FIRST_SIMULATE, "<= 1.5 s", 1.5),
+    Target(COLD_PAPER, "<= 8 s", 8),
+    Target(f"panda: {TERMS_IN_C}", "<= 1 us", 1000),
+    Target(f"panda: {GEN_COMPILE}", "<= 30 s", 30),
+    Target(f"ur5: {LAW_IN_C}", "<= 0.6 us", 600),
+    Target(f"panda: {LAW_IN_C}", "<= 1.5 us", 1500),
+    Target(f"ur5: {LAW_ONE}", "<= 1.5 us, >= 20x Pinocchio + NumPy", 1500, at_least=("speedup", 20)),
+    Target(f"ur5: {LAW_BATCHED}", "<= 0.5 us", 500),
+    Target(f"ur5: {LAW_BATCHED_ONE_CORE}", "<= 120 ns", 120),
+    Target(f"ur5: {STEP_ONE}", "<= 2 us", 2000),
+    Target(f"ur5: {STANDALONE_STEP}", "<= 0.6 us", 600),
+    Target(f"ur5: {STANDALONE_P999}", "<= 2x the median", 2, field="of_median"),
+    Target(ONE_RUN, "<= 2.3 ms", 2.3),
+    Target(SWEEP_1000, "<= 1 s", 1),
+    Target(SWEEP_10000, "<= 2.8 s", 2.8),
+    Target(TRACE_ONE, "<= 25 ms", 25),
+    Target(SWEEP_3D, "<= 3 s", 3),
+    Target(LOOP_OPS, f"<= 2/3 of {LOOP_OPS_REFERENCE:,}", 2 / 3 * LOOP_OPS_REFERENCE),
+)
+
+
+def mark_targets(results: list[dict]) -> None:
+    """Give each row that has a target (:data:`TARGETS`) the target and whether it is ``met``."""
+    by = {r["name"]: r for r in results}
+    for target in TARGETS:
+        if target.row in by and (target.against is None or target.against[0] in by):
+            by[target.row].update(target=target.text, met=target.met(by))

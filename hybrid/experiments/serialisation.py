@@ -1,0 +1,143 @@
+"""An experiment as JSON-ready data and back (:meth:`hybrid.Experiment.to_dict`,
+:meth:`hybrid.Experiment.from_dict`): its parts, its robot and its surfaces; and a paper run saved
+in the form before experiments were one type."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from dataclasses import asdict, fields
+
+import numpy as np
+
+from hybrid.control.controller import Posture
+from hybrid.control.loops import Gains
+from hybrid.control.references import Step
+from hybrid.control.wrench_sensor import Tool, WrenchSensor
+from hybrid.errors import HybridError
+from hybrid.geometry.paths import CirclePath, LinePath
+from hybrid.geometry.surfaces import SURFACE_KINDS, Circle, Plane, Surface
+from hybrid.models.chain import Chain, Joint
+from hybrid.models.planar_arm import Arm
+from hybrid.models.robot import Robot
+from hybrid.models.urdf import JointLimits, LinkInertia
+from hybrid.plants.contact import Contact, Sensor
+
+
+def experiment_to_dict(exp) -> dict:
+    """The settings of the experiment ``exp`` as JSON-ready data, from which :func:`experiment_from_dict`
+    builds it again."""
+    d = {f.name: getattr(exp, f.name) for f in fields(exp)}
+    for name in ("sensor", "contact", "gains", "force_reference", "speed_reference"):
+        d[name] = asdict(d[name])
+    d["robot"] = robot_to_dict(exp.robot)
+    d["surface"] = surface_to_dict(exp.surface)
+    d["controller_surface"] = None if exp.controller_surface is None else surface_to_dict(exp.controller_surface)
+    d["path"] = None if exp.path is None else {"kind": type(exp.path).__name__, **asdict(exp.path)}
+    d["start_point"] = None if exp.start_point is None else list(exp.start_point)
+    d["reference"] = list(exp.reference)
+    d["axes"] = list(exp.axes) if isinstance(exp.axes, tuple) else exp.axes
+    d["posture"] = None if exp.posture is None else asdict(exp.posture)
+    for name in ("wrench_sensor", "controller_wrench_sensor"):
+        d[name] = None if d[name] is None else asdict(d[name])
+    return {"kind": "experiment", **d}
+
+
+def experiment_from_dict(cls: type, d: dict):
+    """The experiment of class ``cls`` that :func:`experiment_to_dict` wrote; anything else is a HybridError."""
+    try:
+        return cls(**_settings(d))
+    except (KeyError, TypeError, AttributeError, ValueError, IndexError) as exc:
+        if isinstance(exc, HybridError):
+            raise
+        raise HybridError(f"not an experiment's settings ({type(exc).__name__}: {exc})") from None
+
+
+def _settings(d: dict) -> dict:
+    """The keyword arguments of the experiment ``d`` describes."""
+    d = dict(d)
+    kind = d.pop("kind", None)
+    if kind is None and "arm" in d:  # a paper run saved before experiments were one type
+        d = _from_paper_settings(d)
+    elif kind == "tracing":
+        raise ValueError("a 3-D run saved before experiments were one type names its robot only by name: "
+                         "its arrays load with numpy.load")
+    elif kind != "experiment":
+        raise ValueError("no 'kind': 'experiment' entry")
+    parts = {"sensor": Sensor, "contact": Contact, "gains": Gains, "force_reference": Step,
+             "speed_reference": Step}
+    for k, typ in parts.items():
+        d[k] = typ(**d[k])
+    d["robot"], d["surface"] = robot_from_dict(d["robot"]), surface_from_dict(d["surface"])
+    if d.get("controller_surface") is not None:
+        d["controller_surface"] = surface_from_dict(d["controller_surface"])
+    if d["path"] is not None:
+        path = dict(d["path"])
+        d["path"] = {"CirclePath": CirclePath, "LinePath": LinePath}[path.pop("kind")](**path)
+    if d["posture"] is not None:
+        d["posture"] = Posture(**d["posture"])
+    for name in ("wrench_sensor", "controller_wrench_sensor"):
+        if d.get(name) is not None:
+            d[name] = WrenchSensor(**{**d[name], "tool": Tool(**d[name]["tool"])})
+    if isinstance(d["axes"], list):
+        d["axes"] = tuple(d["axes"])
+    return d
+
+
+def _from_paper_settings(d: dict) -> dict:
+    """The settings of a paper run in the form saved before experiments were one type: the planar arm's
+    parameters as ``arm``, the surface as a 2-D circle or line."""
+    surface = dict(d.pop("surface"))
+    kind = surface.pop("kind")
+    lifted = Circle(**surface) if kind == "circle" else Plane(**surface)
+    d["robot"], d["surface"] = {"closed_form": d.pop("arm")}, surface_to_dict(lifted)
+    d["backend"] = "sympy" if d.get("backend") == "numpy" else d.get("backend", "sympy")
+    d.update(path=None, reference=[0.0, 0.0, 1.0], axes=None, posture=None)
+    return d
+
+
+# ------------------------------------------------------------- robots and surfaces as data
+
+
+def robot_to_dict(robot: Robot) -> dict:
+    """Everything that defines ``robot`` as JSON-ready data (and a digest of it, for sweeps' resume)."""
+    if robot.closed_form is not None:
+        d = {"closed_form": asdict(robot.closed_form)}
+    else:
+        limits = None if robot.limits is None else {k: np.asarray(v).tolist() for k, v in vars(robot.limits).items()}
+        d = {"name": robot.name, "chain": asdict(robot.chain), "links": [asdict(lk) for lk in robot.links],
+             "damping": list(robot.damping), "gravity": list(robot.gravity), "limits": limits}
+    d["digest"] = hashlib.sha256(json.dumps(d, sort_keys=True).encode()).hexdigest()[:16]
+    return d
+
+
+def robot_from_dict(d: dict) -> Robot:
+    if "closed_form" in d:
+        return Robot.planar(Arm(**d["closed_form"]))
+    c = d["chain"]
+
+    def rows(m):
+        return tuple(tuple(float(v) for v in row) for row in m)
+
+    joints = tuple(Joint(j["name"], j["kind"], rows(j["rotation"]), tuple(j["translation"]), tuple(j["axis"]))
+                   for j in c["joints"])
+    chain = Chain(joints, rows(c["tip_rotation"]), tuple(c["tip_translation"]))
+    links = tuple(LinkInertia(lk["mass"], tuple(lk["com"]), rows(lk["inertia"])) for lk in d["links"])
+    limits = None if d["limits"] is None else JointLimits(**{k: np.array(v, float) for k, v in d["limits"].items()})
+    return Robot(d["name"], chain, links, tuple(d["damping"]), tuple(d["gravity"]), limits)
+
+
+def surface_to_dict(surface: Surface) -> dict:
+    if surface.kind.startswith("implicit"):
+        return {"kind": "implicit", "phi": str(surface.phi), "parameters": dict(surface.parameters)}
+    return {"kind": surface.kind, **{k: list(v) if isinstance(v, tuple) else v for k, v in asdict(surface).items()}}
+
+
+def surface_from_dict(d: dict) -> Surface:
+    d = dict(d)
+    kind = d.pop("kind")
+    if kind == "implicit":
+        from hybrid.geometry.implicit import ImplicitSurface  # SymPy: loaded only for a user's surface
+
+        return ImplicitSurface(d["phi"], d["parameters"])
+    return SURFACE_KINDS[kind](**d)
