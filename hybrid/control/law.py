@@ -115,7 +115,7 @@ class DecouplingLaw:
     @property
     def arm(self) -> Arm | None:
         """The planar arm's parameters (its closed form), or None."""
-        return self.robot.closed_form
+        return self.robot.kind.arm
 
     @property
     def m(self) -> int:

@@ -41,8 +41,7 @@ from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
 from hybrid.native.standalone import generate_experiment
 from hybrid.plants.contact import Contact, Sensor
-from hybrid.plants.planar import PlanarPlant
-from hybrid.plants.rigid_body import RigidBodyPlant
+from hybrid.plants.registry import generated_plant_class
 from hybrid.validate import SINGULAR_TOL, _point
 
 #: the committed units that can run the closed-form plant and law (the same equations, two printers)
@@ -151,9 +150,7 @@ class Experiment(RunSettings):
             if self.controller_surface.spec().estimated and self.frame == "desired":
                 raise HybridError("frame='desired' puts the loops on the desired point of a surface the controller "
                                   "knows; with an EstimatedSurface give frame='actual'")
-        if self.robot.closed_form is not None and self.surface.cross_section() is None:
-            raise HybridError(f"the planar arm needs a planar surface (a hybrid.Circle or a 2-D hybrid.Plane: a "
-                              f"cylinder or a plane along base z), got {self.surface!r:.60}")
+        self.robot.kind.check_surface(self.surface)
         if self.posture is not None and not isinstance(self.posture, Posture):
             raise HybridError(f"posture = {self.posture!r:.60}; give a hybrid.Posture(q_rest, stiffness, damping) "
                               "or None")
@@ -165,14 +162,7 @@ class Experiment(RunSettings):
         if isinstance(self.elbow, bool) or not isinstance(self.elbow, (int, np.integer)) or self.elbow not in (1, -1):
             raise HybridError(f"elbow = {self.elbow!r}; give +1 (q2 > 0) or -1 (q2 < 0)")
         object.__setattr__(self, "reference", tuple(reference_direction(self.reference)))
-        if self.robot.closed_form is not None and self.reference != (0.0, 0.0, 1.0):
-            raise HybridError(f"reference = {self.reference}: the planar arm's task frame has e = z (its plant "
-                              "records in it); leave reference out")
-        if self.robot.closed_form is None:
-            for name, value, default in (("elbow", self.elbow, 1), ("backend", self.backend, "sympy")):
-                if value != default:
-                    raise HybridError(f"{name} = {value!r} is a setting of the planar arm's closed form; leave it "
-                                      f"out for the robot {self.robot.name!r}")
+        self.robot.kind.check_settings(self.robot, self.reference, {"elbow": self.elbow, "backend": self.backend})
         # what the controller will refuse, refused now (building it compiles its step)
         check_posture(self.robot, check_axes(self.robot, self.axes), scheme_of(self.controller), self.posture)
         if self.start_point is not None:
@@ -216,12 +206,13 @@ class Experiment(RunSettings):
     @property
     def arm(self) -> Arm | None:
         """The planar arm's parameters (its closed form), or None for any other robot."""
-        return self.robot.closed_form
+        return self.robot.kind.arm
 
     @property
     def plant_class(self) -> type:
-        """The generated plant of these runs: the closed form of the planar arm, else the rigid-body one."""
-        return PlanarPlant if self.robot.closed_form is not None else RigidBodyPlant
+        """The generated plant of these runs, the robot's kind's (the closed form of the planar arm, else the
+        rigid-body one; :data:`hybrid.plants.registry.GENERATED_PLANTS`)."""
+        return generated_plant_class(self.robot.kind.plant)
 
     def plant(self):
         """The generated plant of this run (the true arm, sensor, contact on the surface)."""
@@ -240,7 +231,7 @@ class Experiment(RunSettings):
     @property
     def section(self):
         """The surface's cross-section the planar arm runs on (:meth:`Surface.cross_section`), or None."""
-        return None if self.robot.closed_form is None else self.surface.cross_section()
+        return self.robot.kind.section(self.surface)
 
     def _geometry(self):
         """Where the start, the path and the normals are taken: the planar arm's cross-section, else the

@@ -101,9 +101,8 @@ def _from_paper_settings(d: dict) -> dict:
 
 def robot_to_dict(robot: Robot) -> dict:
     """Everything that defines ``robot`` as JSON-ready data (and a digest of it, for sweeps' resume)."""
-    if robot.closed_form is not None:
-        d = {"closed_form": asdict(robot.closed_form)}
-    else:
+    d = robot.kind.to_dict()
+    if d is None:
         limits = None if robot.limits is None else {k: np.asarray(v).tolist() for k, v in vars(robot.limits).items()}
         d = {"name": robot.name, "chain": asdict(robot.chain), "links": [asdict(lk) for lk in robot.links],
              "damping": list(robot.damping), "gravity": list(robot.gravity), "limits": limits}

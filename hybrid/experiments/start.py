@@ -34,7 +34,7 @@ def start_state(exp) -> np.ndarray:
     p0 = tuple(np.asarray(p0).tolist())
     if exp.start_gap > 0:
         # the sensor tip's weight hangs on its spring where the plant gives it gravity (the 3-D plant's)
-        weight = np.zeros(3) if exp.robot.closed_form is not None else exp.sensor.mass * np.array(exp.robot.gravity)
+        weight = exp.sensor.mass * np.array(exp.robot.gravity) if exp.robot.kind.sensor_weighs else np.zeros(3)
         return _free_start(exp.robot, geometry, p0, exp.elbow, q0, exp.reference, exp.singular_tol, exp.start_gap,
                            tuple((weight[:len(p0)] / exp.sensor.stiffness).tolist()))
     return _pressed_start(exp.robot, geometry, p0, exp.elbow, q0, exp.reference,
@@ -65,7 +65,7 @@ def _at_rest(robot, normal, p0, s, r, elbow, q0, reference, singular_tol, gap: f
     """The state at rest with the sensor tip at ``s`` and the arm tip at ``r`` (the start point ``p0`` on
     the surface, its ``normal``), the joints from the true arm's inverse kinematics."""
     # the tool's orientation is set where the task controls it (the planar arm's follows from r)
-    rotation = None if robot.closed_form is not None else _tool_rotation(np.asarray(reference), normal)
+    rotation = robot.kind.tool_rotation(lambda: _tool_rotation(np.asarray(reference), normal))
     where = (f"start_gap = {gap:g} m puts the arm tip at {np.round(r, 4).tolist()} m" if gap > 0 else
              f"the start point {np.round(p0, 4).tolist()} m")
     fix = ("give a smaller start_gap, or move the surface or start_point" if gap > 0 else

@@ -10,7 +10,7 @@ the kind; nothing else tests which kind a robot is.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 
 import numpy as np
 
@@ -107,11 +107,16 @@ class SerialChain:
                                   f"leave it out for the robot {robot.name!r}")
 
     def tool_rotation(self, rotation):
-        """The tool's orientation the start asks for (``rotation``, computed only where it is used)."""
+        """The tool's orientation the start asks for (``rotation()``, computed only where it is used)."""
         return rotation()
 
-    def to_dict(self, robot) -> dict | None:
-        """What rebuilds the robot beside its name (None: the robot is saved as a chain)."""
+    def plant_printer(self, backend: str) -> str:
+        """The printer of its plant's standalone C, given the experiment's ``backend`` setting (a chain's
+        plant is CasADi's)."""
+        return "casadi"
+
+    def to_dict(self) -> dict | None:
+        """What rebuilds the robot (None: the robot is saved as a chain, its parts one by one)."""
         return None
 
 
@@ -170,9 +175,10 @@ class ClosedFormArm(SerialChain):
     def tool_rotation(self, rotation):
         return None  # the arm's orientation follows from its position
 
-    def to_dict(self, robot) -> dict:
-        from dataclasses import asdict
+    def plant_printer(self, backend: str) -> str:
+        return backend
 
+    def to_dict(self) -> dict:
         return {"closed_form": asdict(self.arm)}
 
 

@@ -106,7 +106,7 @@ def plant_files(exp, prefix: str, x0) -> dict[str, str]:
     robot, surface = exp.robot, (exp.section or exp.surface).kind
     info = {"robot": {"robot": robot.name, "joints": list(robot.joint_names)}, "surface": surface,
             "plant": plant.key()[0], "experiment": exp.to_dict()}
-    backend = exp.backend if robot.closed_form is not None else "casadi"
+    backend = robot.kind.plant_printer(exp.backend)
     key = {"plant": plant.key(), "values": values, "info": info, "backend": backend,
            "generator": units.fingerprint(), "prefix": prefix}
 

@@ -316,4 +316,4 @@ class MujocoPlant(Plant):
 def mujoco_plant(exp) -> MujocoPlant:
     """MuJoCo as the plant of ``exp``: the arm read by MuJoCo, the sensor, contact and friction of the
     generated plant (the closed-form planar plant's sensor tip has no gravity: nor has MuJoCo's then)."""
-    return MujocoPlant(exp, exp.robot, sensor_gravity=exp.robot.closed_form is None)
+    return MujocoPlant(exp, exp.robot, sensor_gravity=exp.robot.kind.sensor_weighs)

@@ -9,9 +9,23 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from hybrid.errors import HybridError
+from hybrid.plants.interface import GeneratedPlant
+from hybrid.plants.planar import PlanarPlant
+from hybrid.plants.rigid_body import RigidBodyPlant
 
 #: the plants a run can take, by name: each builds the plant of an experiment
 PLANTS: dict[str, Callable] = {}
+#: the generated plants, by the name a robot's kind gives (:attr:`hybrid.models.kinds.SerialChain.plant`): a
+#: new generated plant is a :class:`~hybrid.plants.interface.GeneratedPlant` named here
+GENERATED_PLANTS: dict[str, type[GeneratedPlant]] = {"planar": PlanarPlant, "rigid_body": RigidBodyPlant}
+
+
+def generated_plant_class(name: str) -> type[GeneratedPlant]:
+    """The generated plant named ``name``."""
+    if name not in GENERATED_PLANTS:
+        raise HybridError(f"no generated plant is named {name!r}; the generated plants are "
+                          f"{', '.join(GENERATED_PLANTS)} (hybrid.plants.registry.GENERATED_PLANTS)")
+    return GENERATED_PLANTS[name]
 
 
 def register_plant(name: str):

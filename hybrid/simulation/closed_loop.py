@@ -112,15 +112,16 @@ def loop_of(exp, ctrl=None) -> tuple:
     return exp.plant_class.loop_plant(exp), tuple(sorted(ctrl.step_variant().items()))
 
 
-def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None) -> Prepared | None:
+def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None, ctrl=None) -> Prepared | None:
     """``exp`` (the paper's experiment or a 3-D one) as a row of the compiled loop, after the checks
     ``simulate`` makes of the settings (a refused experiment raises their HybridError; the record's
     memory is ``simulate``'s to check: a sweep keeps none); None when it cannot run there: part of its
     controller runs in Python, or its sensor's signal is not the sensor's force itself (noise, bias, lag,
     delay: :mod:`hybrid.simulation.sensing`). A given start state ``x0`` is the caller's, checked
     (``simulate`` passes its own). ``lanes=1`` prepares the build for one run at a time (a run alone;
-    only what it needs is compiled), else the lanes build."""
-    ctrl = exp.build_controller()
+    only what it needs is compiled), else the lanes build. ``ctrl``: the experiment's controller, when
+    built already (it is read, not run)."""
+    ctrl = ctrl or exp.build_controller()
     if not ctrl.runs_in_c or not exp.sensor.ideal:
         return None
     if x0 is None:

@@ -69,20 +69,21 @@ def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> Simulat
     check_memory(exp, model.record)  # before the path check, whose arrays grow with the run too
     x0 = exp.initial_state()
     exp.check_path()
-    if plant != "generated":  # the compiled loop runs the generated plants only
-        return run(exp, model, exp.build_controller(), x0)
-    return _compiled_or_run(exp, model, x0, compiled)
+    # the compiled loop runs the experiment's own generated plant
+    return _compiled_or_run(exp, model, x0, compiled and isinstance(model, exp.plant_class))
 
 
 def _compiled_or_run(exp, plant, x0: np.ndarray, compiled: bool = True) -> SimulationResult:
     """The whole run in compiled C when the loop takes it (as a sweep runs it), else, and for the
-    account of a run that stopped there, the Python runner (the record's memory checked already)."""
-    prepared = closed_loop.prepare(exp, x0, lanes=1) if compiled else None
+    account of a run that stopped there, the Python runner (the record's memory checked already), with
+    the one controller built for it."""
+    controller = exp.build_controller()
+    prepared = closed_loop.prepare(exp, x0, lanes=1, ctrl=controller) if compiled else None
     if prepared is not None:
         done = closed_loop.run([prepared], record=True)[0]
         if done.status == 0:
             return _result(exp, plant, done.states, done.taus, done.metrics, outputs=done.outputs)
-    return run(exp, plant, exp.build_controller(), x0)
+    return run(exp, plant, controller, x0)
 
 
 def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
