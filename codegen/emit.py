@@ -26,7 +26,7 @@ from importlib.metadata import version
 from pathlib import Path
 
 from hybrid.native import checkout
-from hybrid.native.stamp import MANIFEST_STAMP, json_body_hash, stamp
+from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from . import model
 from .casadi_backend import kernel_sources

@@ -9,9 +9,9 @@ from pathlib import Path
 from hybrid.control.schemes import SCHEMES
 from hybrid.experiments.paper import paper_experiment
 from hybrid.files import temporary
-from hybrid.native.stamp import is_hand_edited
 from hybrid.native.units import LOOPS, loop_files
 from hybrid.simulation.closed_loop import loop_of
+from hybrid.spec.stamp import is_hand_edited
 
 from .emit import BACKENDS, build_unit, generated_dir
 

@@ -26,7 +26,7 @@ import re
 
 import casadi as ca
 
-from hybrid.native.stamp import MANIFEST_STAMP, json_body_hash, stamp
+from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from .controller_step import OPTION_DOCS
 from .emit import GENERATOR_VERSION, STATUS, Unit, _casadi_cores, comment_safe

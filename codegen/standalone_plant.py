@@ -25,7 +25,7 @@ import json
 
 import casadi as ca
 
-from hybrid.native.stamp import MANIFEST_STAMP, json_body_hash, stamp
+from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from .closed_loop import SIGNALS
 from .emit import GENERATOR_VERSION, Unit, _casadi_cores, _sympy_cores, comment_safe, rk4_step

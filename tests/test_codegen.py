@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 from hybrid.codegen import emit, regenerate
 
-from hybrid.native import stamp
+from hybrid.spec import stamp
 
 ROOT = Path(__file__).resolve().parent.parent
 

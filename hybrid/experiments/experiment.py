@@ -38,7 +38,6 @@ from hybrid.experiments.settings import (
 from hybrid.geometry.paths import CirclePath, LinePath, Path
 from hybrid.geometry.surfaces import SURFACE_KINDS, Circle, Plane, Surface
 from hybrid.geometry.task_axes import check_axes, reference_direction
-from hybrid.models.chain import Chain, Joint
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
 from hybrid.models.urdf import JointLimits, LinkInertia
@@ -46,6 +45,7 @@ from hybrid.native.standalone import generate_experiment
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.plants.planar import PlanarPlant
 from hybrid.plants.rigid_body import RigidBodyPlant
+from hybrid.spec.chain import Chain, Joint
 from hybrid.validate import SINGULAR_TOL, _point
 
 #: the committed units that can run the closed-form plant and law (the same equations, two printers)

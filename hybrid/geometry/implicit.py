@@ -19,7 +19,8 @@ import sympy as sp
 
 from hybrid.codegen import surfaces as cs
 from hybrid.errors import HybridError
-from hybrid.geometry.surfaces import Surface, SurfaceSpec, _unit_normal
+from hybrid.geometry.surfaces import Surface, _unit_normal
+from hybrid.spec.surface import SurfaceSpec
 from hybrid.validate import _finite, check_identifier, shown
 
 

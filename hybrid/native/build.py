@@ -32,7 +32,7 @@ import cffi
 from hybrid import files
 from hybrid.errors import NativeBuildError
 from hybrid.native import checkout
-from hybrid.native.stamp import is_hand_edited
+from hybrid.spec.stamp import is_hand_edited
 
 log = logging.getLogger("hybrid")
 #: marks a log record of slow work (compiling, generating): a program showing progress can tell it

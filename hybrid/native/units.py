@@ -20,8 +20,9 @@ from functools import cache
 from pathlib import Path
 
 from hybrid.errors import HybridError, NativeBuildError
-from hybrid.native import build, stamp
+from hybrid.native import build
 from hybrid.native.binding import Unit
+from hybrid.spec import stamp
 from hybrid.validate import c_identifier
 
 #: what a singular planar pose means, added to SingularConfigurationError messages
@@ -59,8 +60,9 @@ def robot_info(chain, name: str) -> dict:
     return {"robot": name, "joints": [{"name": j.name, "type": j.kind} for j in chain.joints]}
 
 
-#: the runtime's modules the generator reads (the chain's data, the surfaces' formulas, the task axes' names)
-GENERATOR_INPUTS = ("hybrid.models.chain", "hybrid.geometry.surfaces", "hybrid.geometry.task_axes")
+#: the runtime's modules the generator reads (the chain's data, the surfaces' formulas, the task axes' names,
+#: the generated files' stamp)
+GENERATOR_INPUTS = ("hybrid.spec.chain", "hybrid.spec.surface", "hybrid.spec.axes", "hybrid.spec.stamp")
 
 
 @cache
