@@ -23,9 +23,7 @@ import unicodedata
 from collections.abc import Callable
 from dataclasses import dataclass
 from importlib.metadata import version
-from pathlib import Path
 
-from hybrid.native import checkout
 from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from . import model
@@ -373,9 +371,3 @@ def build_unit(backend: str, n_links: int = 2) -> Unit:
     return assemble(f"hybrid_{backend}", backend, model.kernels(n_links),
                     f"hybrid force/velocity control kernels for a planar {n_links}-link arm, "
                     "derived by codegen/model.py")
-
-
-def generated_dir() -> Path:
-    """The checkout's ``generated/`` folder; a HybridError when ``hybrid`` runs installed
-    (:func:`hybrid.native.checkout.generated_dir`)."""
-    return checkout.generated_dir()
