@@ -22,11 +22,9 @@ import re
 import unicodedata
 from dataclasses import dataclass
 from importlib.metadata import version
-from pathlib import Path
 
-from hybrid.native import checkout
-from hybrid.native.stamp import MANIFEST_STAMP, json_body_hash, stamp
 from hybrid.spec.interfaces import KERNEL_STATUSES, STATUS_CODES
+from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from . import model
 from .casadi_backend import kernel_sources
@@ -370,9 +368,3 @@ def build_unit(backend: str, n_links: int = 2) -> Unit:
     return assemble(f"hybrid_{backend}", backend, model.kernels(n_links),
                     f"hybrid force/velocity control kernels for a planar {n_links}-link arm, "
                     "derived by codegen/model.py")
-
-
-def generated_dir() -> Path:
-    """The checkout's ``generated/`` folder; a HybridError when ``hybrid`` runs installed
-    (:func:`hybrid.native.checkout.generated_dir`)."""
-    return checkout.generated_dir()

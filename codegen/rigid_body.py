@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from hybrid.models.chain import (  # noqa: F401  (the chain's data, re-exported for the generator)
+from hybrid.spec.chain import (  # noqa: F401  (the chain's data, re-exported for the generator)
     INERTIAL,
     INERTIAL_UNITS,
     JOINT_UNITS,

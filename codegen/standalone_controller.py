@@ -26,9 +26,9 @@ import re
 
 import casadi as ca
 
-from hybrid.native.stamp import MANIFEST_STAMP, json_body_hash, stamp
 from hybrid.spec.controller_step import CONTROLLER_STEP, OPTION_DOCS, STATE_NEXT
 from hybrid.spec.interfaces import REFERENCE, STATE, STATUS_CODES, STATUSES
+from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from .emit import GENERATOR_VERSION, Unit, _casadi_cores, comment_safe
 from .kernel import Kernel

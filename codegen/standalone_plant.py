@@ -25,8 +25,8 @@ import json
 
 import casadi as ca
 
-from hybrid.native.stamp import MANIFEST_STAMP, json_body_hash, stamp
 from hybrid.spec.interfaces import STATUS_CODES
+from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from .closed_loop import SIGNALS
 from .emit import GENERATOR_VERSION, Unit, _casadi_cores, _sympy_cores, comment_safe, rk4_step

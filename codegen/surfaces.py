@@ -5,9 +5,9 @@ normal ``n = grad phi / |grad phi|`` from the surface to the robot; task-frame r
 ``t1 = e x n / |e x n|``, ``t2 = n x t1``, ``n`` for a reference direction ``e``. ``R_L'`` is
 the directional derivative of ``R_L`` along ``p'``: it carries the surface's curvature.
 
-A surface is described by a :class:`hybrid.geometry.surfaces.SurfaceSpec`: a kind, its
+A surface is described by a :class:`hybrid.spec.surface.SurfaceSpec`: a kind, its
 parameter names (run-time inputs of the generated C) and ``phi`` as a SymPy expression of
-``x, y, z`` and those parameters (written out here for the built-in plane, sphere and cylinder).
+``x, y, z`` and those parameters (the built-in plane's, sphere's and cylinder's from their formulas there).
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ from functools import cache
 import casadi as ca
 import sympy as sp
 
-from hybrid.geometry.surfaces import SurfaceSpec
+from hybrid.spec.surface import SurfaceSpec
 
 from .casadi_backend import to_sx
 from .factor import reciprocal

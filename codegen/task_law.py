@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import casadi as ca
 
-from hybrid.geometry.task_axes import AXIS_NAMES
+from hybrid.spec.axes import AXIS_NAMES
 
 from . import body_frame as bf
 from . import factor

@@ -5,7 +5,7 @@
 - the imports among ``hybrid.*`` (``hybrid.codegen`` included) form no cycle, counting those at module
   level, those inside functions (each one of a short list, with its reason) and those by name
   (``importlib.import_module``, ``hybrid._LAZY``, ``generator("model")``); nor do the generator and the
-  runtime import each other (but for :data:`KNOWN_GENERATOR_EDGES`);
+  runtime import each other;
 - ``regenerate`` rebuilds a checkout's emptied ``generated/`` byte for byte, and an installed
   package refuses it (unless given a folder) without writing anything.
 """
@@ -53,17 +53,6 @@ LAZY_IMPORTS = {
 
 #: the generator's package
 GENERATOR = "hybrid.codegen"
-#: The generator's imports of runtime modules that lead back into the generator, each with what it is for:
-#: ``regenerate`` writes the paper's closed loops, and the runtime builds those with the generator. These
-#: three close every cycle between the two today; the check leaves them out and fails on any other. An
-#: import that is gone must leave the list (it empties once ``regenerate`` imports no runtime that builds).
-KNOWN_GENERATOR_EDGES = {
-    ("hybrid.codegen.regenerate", "hybrid.experiments.paper"): "the paper's experiment, whose loops are committed",
-    ("hybrid.codegen.regenerate", "hybrid.native.units"): "the committed loops' names and files",
-    ("hybrid.codegen.regenerate", "hybrid.simulation.closed_loop"): "the loop of each of the paper's schemes",
-}
-
-
 def _run(args: list[str], cwd: Path, **env: str) -> subprocess.CompletedProcess:
     return subprocess.run([sys.executable, *args], cwd=cwd, env={**os.environ, **env}, capture_output=True,
                           text=True, timeout=300)
@@ -364,29 +353,24 @@ def test_imports_form_a_dag():
     assert not imports["unresolved"], f"imports of project modules the graph cannot follow: {imports['unresolved']}"
     graph = _graph(imports["module"], imports["deferred"], imports["by_name"])
     # the graph is the project's: both packages, relative imports resolved, imports of every kind seen
-    assert {"hybrid", "hybrid.cli.main", "hybrid.codegen.emit", "hybrid.codegen.regenerate"} <= set(graph)
-    assert {"hybrid.codegen.emit", "hybrid.native.stamp"} <= graph["hybrid.codegen.regenerate"]
+    assert {"hybrid", "hybrid.cli.main", "hybrid.codegen.emit", "hybrid.cli.regenerate"} <= set(graph)
+    assert {"hybrid.native.generator", "hybrid.spec.stamp"} <= graph["hybrid.cli.regenerate"]
     assert ("hybrid.plants.registry", "hybrid.plants.mujoco") in imports["deferred"]
-    assert {("hybrid", "hybrid.sweeps"), ("hybrid.native.units", "hybrid.codegen.robot_unit"),
-            ("hybrid.cli.main", "hybrid.codegen.regenerate")} <= set(imports["by_name"])
+    assert {("hybrid", "hybrid.sweeps"), ("hybrid.native.generator", "hybrid.codegen.api")} <= set(imports["by_name"])
     cycle = _cycle(graph)
     assert cycle is None, "import cycle: " + _shown(cycle, imports)
 
 
 def test_the_generator_and_the_runtime_do_not_import_each_other():
     """With the generator's modules taken as one, the imports still form a DAG: a runtime module the
-    generator imports never leads back into the generator (but for :data:`KNOWN_GENERATOR_EDGES`)."""
+    generator imports never leads back into the generator."""
     imports = _import_graph()
     edges = {**imports["module"], **imports["deferred"], **imports["by_name"]}
-    stale = sorted(f"{a} -> {b}" for a, b in set(KNOWN_GENERATOR_EDGES) - set(edges))
-    assert not stale, f"KNOWN_GENERATOR_EDGES lists imports that are gone, remove them: {stale}"
-    crossing = [(a, b) for a, b in KNOWN_GENERATOR_EDGES if a.startswith(GENERATOR) == b.startswith(GENERATOR)]
-    assert not crossing, f"KNOWN_GENERATOR_EDGES lists imports within one side: {crossing}"
-    graph = _collapsed(_graph({e: line for e, line in edges.items() if e not in KNOWN_GENERATOR_EDGES}), GENERATOR)
-    cycle = _cycle(graph)
+    cycle = _cycle(_collapsed(_graph(edges), GENERATOR))
     assert cycle is None, "the generator and the runtime import each other: " + " -> ".join(cycle)
-    # the check sees the cycles the listed imports close
-    assert _cycle(_collapsed(_graph(edges), GENERATOR)) is not None
+    # the check sees such a cycle: the generator importing the module that imports it
+    assert _cycle(_collapsed(_graph({**edges, ("hybrid.codegen.emit", "hybrid.native.generator"): 0}),
+                             GENERATOR)) is not None
 
 
 def test_imports_inside_functions_are_the_listed_ones():
@@ -495,7 +479,8 @@ def test_installed_package_refuses_regenerate_and_writes_nothing(tmp_path):
     installed = _run([*pip, "install", "--no-deps", "--no-index", "--no-compile", "--target", str(site),
                       str(wheel)], tmp_path)
     assert installed.returncode == 0, installed.stderr
-    assert (site / "hybrid" / "codegen" / "regenerate.py").is_file()
+    assert (site / "hybrid" / "codegen" / "api.py").is_file()
+    assert (site / "hybrid" / "codegen" / "templates" / "closed_loop.c.j2").is_file()  # the C templates
     assert (site / "hybrid" / "_generated" / "hybrid_sympy.c").is_file()
     assert (site / "hybrid" / "_generated" / "loops" / "index.json").is_file()  # the committed closed loops
 

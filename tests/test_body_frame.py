@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from hybrid.models.chain import Chain, Joint, parameter_names, rotation_rpy
+from hybrid.spec.chain import Chain, Joint, parameter_names, rotation_rpy
 
 ca = pytest.importorskip("casadi")
 bf = pytest.importorskip("hybrid.codegen.body_frame")

@@ -9,9 +9,10 @@ import sys
 from pathlib import Path
 
 import pytest
-from hybrid.codegen import emit, regenerate
+from hybrid.codegen import emit
 
-from hybrid.native import stamp
+from hybrid.cli import regenerate
+from hybrid.spec import stamp
 
 ROOT = Path(__file__).resolve().parent.parent
 

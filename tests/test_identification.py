@@ -8,7 +8,7 @@ import pytest
 
 import hybrid
 from hybrid.control.wrench_sensor import Tool, WrenchSensor, contact_wrench
-from hybrid.models.chain import rotation_rpy
+from hybrid.spec.chain import rotation_rpy
 
 pin = pytest.importorskip("pinocchio")
 

@@ -20,7 +20,7 @@ from hybrid.control.law import decoupling_law
 from hybrid.experiments.paper import paper_experiment
 from hybrid.geometry.surfaces import Circle
 from hybrid.models.planar_arm import paper_arm
-from hybrid.native import loader, units
+from hybrid.native import generator, loader
 from hybrid.native.units import planar_unit
 from hybrid.simulation.runner import simulate
 
@@ -43,7 +43,7 @@ class PaperLaw:
     @cached_property
     def kernel(self):
         """The planar law's generated kernel (SymPy)."""
-        return {kk.name: kk for kk in units.generator("model").kernels(2)}["decoupling_law_circle"]
+        return {kk.name: kk for kk in generator.api().planar_kernels(2)}["decoupling_law_circle"]
 
     def law_in_c(self, b: str) -> None:
         P = self.planar
@@ -78,7 +78,7 @@ class PaperLaw:
 
     def casadi_call(self) -> None:
         P = self.planar
-        cf = units.generator("casadi_backend").kernel_function(self.kernel)
+        cf = generator.api().kernel_function(self.kernel)
         self.add("F* by a CasADi Function call",
                  median_ns(lambda: cf(P.q, P.qd, P.a, P.Fc, P.p, P.s, 1.0), 2000, self.rep))
 
@@ -101,7 +101,7 @@ class PaperLaw:
 
     def regenerate(self) -> None:
         t0 = time.perf_counter()
-        subprocess.run([sys.executable, "-c", "from hybrid.codegen.regenerate import expected_files; expected_files()"],
+        subprocess.run([sys.executable, "-c", "from hybrid.cli.regenerate import expected_files; expected_files()"],
                        check=True, cwd=Path(__file__).resolve().parents[2])
         self.add("regenerate from scratch (both backends, fresh process)", (time.perf_counter() - t0) * 1e3, "ms")
 

@@ -31,7 +31,7 @@ from hybrid.control.references import Step
 from hybrid.geometry.surfaces import Sphere
 from hybrid.models.robot import Robot
 from hybrid.models.terms import arm_terms
-from hybrid.native import units
+from hybrid.native import generator, units
 from hybrid.spec.controller_step import CONTROLLER_STEP
 
 #: the URDF arms of the robot benchmarks (files of the example-robot-data package) and their tips
@@ -124,8 +124,8 @@ def alone_is_bitwise(law, batch: tuple[np.ndarray, ...], rows: tuple[int, ...] |
 def spatial_law_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool, add) -> None:
     """The general law of conventions §9 for a URDF arm on a sphere: in C, from Python, batched,
     against Pinocchio + NumPy; the generated operation count."""
-    kernel_function = units.generator("casadi_backend").kernel_function
-    law_kernels = units.generator("task_law").law_kernels
+    kernel_function = generator.api().kernel_function
+    law_kernels = generator.api().law_kernels
 
     path = _shipped_urdf(urdf)
     if path is None:
@@ -181,8 +181,8 @@ def spatial_law_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool
 def controller_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool, add) -> None:
     """One sample of :class:`hybrid.Controller` (task scheme, six axes, step references) on a sphere:
     in C, and from Python."""
-    kernel_function = units.generator("casadi_backend").kernel_function
-    controller_kernels = units.generator("controller_step").controller_kernels
+    kernel_function = generator.api().kernel_function
+    controller_kernels = generator.api().controller_kernels
 
     path = _shipped_urdf(urdf)
     if path is None:

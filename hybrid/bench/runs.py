@@ -22,7 +22,7 @@ from hybrid.bench.targets import (
 )
 from hybrid.experiments.paper import paper_experiment
 from hybrid.experiments.tracing import tracing_experiment
-from hybrid.native import units
+from hybrid.native import generator, units
 from hybrid.native.binding import workers
 from hybrid.simulation import closed_loop
 from hybrid.simulation.runner import simulate
@@ -95,7 +95,7 @@ def loop_operations(exp) -> dict:
     (:func:`hybrid.native.units.loop_unit`'s kernels): ``rhs``, the plant's state derivative (4
     evaluations an RK4 step); ``step``, the controller step (one a sample); ``steps_per_sample``; and
     ``per_step``, an RK4 step's count with its share of the sample's step: 4 rhs + step / steps_per_sample."""
-    kernel_function = units.generator("casadi_backend").kernel_function
+    kernel_function = generator.api().kernel_function
     spec = units.loop_spec(exp.plant_class.loop_plant(exp), exp.build_controller().step_variant())
     rhs, step = (kernel_function(k).n_instructions() for k in (spec.rhs, spec.step))
     per = exp.steps_per_sample

@@ -17,13 +17,13 @@ from pathlib import Path
 from hybrid import bench
 from hybrid.cli import common, progress
 from hybrid.cli import experiments as experiment_cli
+from hybrid.cli import regenerate as regenerate_cli
 from hybrid.cli import sweep as sweep_cli
 from hybrid.control.config import read_controller_config
 from hybrid.errors import HybridError
 from hybrid.models.robot import Robot
 from hybrid.native import checkout
 from hybrid.native.standalone import generate
-from hybrid.native.units import generator
 
 
 class _Parser(argparse.ArgumentParser):
@@ -44,17 +44,16 @@ def _regenerate(args) -> int:
         raise HybridError(f"--target {target} is not a folder of generated files")
     if target is not None and target.exists() and not target.is_dir():
         raise HybridError(f"--target {target} is a file; give a folder")
-    regenerate = generator("regenerate")
     where = "generated/" if target is None else str(target)
     if args.check:
-        problems = regenerate.check(target)
+        problems = regenerate_cli.check(target)
         if problems:
             print(f"{where} is out of date:\n" + "\n".join(problems), file=sys.stderr)
             return 1
         print(f"{where} is up to date")
         return 0
     try:
-        changed = regenerate.write(target, force=args.force)
+        changed = regenerate_cli.write(target, force=args.force)
     except FileExistsError as exc:
         raise HybridError(str(exc)) from None
     except OSError as exc:

@@ -78,7 +78,8 @@ from hybrid.errors import HybridError
 from hybrid.geometry.paths import CirclePath, LinePath
 from hybrid.geometry.paths import Path as DesiredPath
 from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere, Surface
-from hybrid.geometry.task_axes import AXES, AXIS_NAMES, check_axes
+from hybrid.geometry.task_axes import AXES, check_axes
+from hybrid.spec.axes import AXIS_NAMES
 from hybrid.validate import MAX_NESTING, shown
 
 Key = tuple[str, ...]

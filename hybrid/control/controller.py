@@ -19,11 +19,12 @@ from hybrid.control.references import Step
 from hybrid.control.schemes import Scheme, scheme_of
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.errors import HybridError, NonFiniteError, SampleTimingError
-from hybrid.geometry.task_axes import AXIS_NAMES, check_axes, reference_direction, spatial_surface
+from hybrid.geometry.task_axes import check_axes, reference_direction, spatial_surface
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
 from hybrid.native.standalone import generate_controller
+from hybrid.spec.axes import AXIS_NAMES
 from hybrid.spec.controller_step import CONTROLLER_STEP, NO_LIMIT, SENSOR, STATE_NEXT
 from hybrid.spec.interfaces import REFERENCE, TIMING_STATUSES, Dims
 from hybrid.validate import _finite, check_singular_tol

@@ -40,7 +40,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.geometry.surfaces import Surface, SurfaceSpec
+from hybrid.geometry.surfaces import Surface
+from hybrid.spec.surface import SurfaceSpec
 
 #: the estimators by name: (weight of the force estimate, of the velocity estimate, friction correction)
 METHODS = {"force": (1.0, 0.0, 1.0), "force_uncorrected": (1.0, 0.0, 0.0), "velocity": (0.0, 1.0, 0.0),

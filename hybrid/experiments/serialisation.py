@@ -17,11 +17,11 @@ from hybrid.control.wrench_sensor import Tool, WrenchSensor
 from hybrid.errors import HybridError
 from hybrid.geometry.paths import CirclePath, LinePath
 from hybrid.geometry.surfaces import SURFACE_KINDS, Circle, Plane, Surface
-from hybrid.models.chain import Chain, Joint
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot
 from hybrid.models.urdf import JointLimits, LinkInertia
 from hybrid.plants.contact import Contact, Sensor
+from hybrid.spec.chain import Chain, Joint
 
 
 def experiment_to_dict(exp) -> dict:

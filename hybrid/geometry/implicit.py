@@ -17,9 +17,10 @@ import casadi as ca
 import numpy as np
 import sympy as sp
 
-from hybrid.codegen import surfaces as cs
 from hybrid.errors import HybridError
-from hybrid.geometry.surfaces import Surface, SurfaceSpec, _unit_normal, numpy_phi
+from hybrid.geometry.surfaces import Surface, _unit_normal, numpy_phi
+from hybrid.native import generator
+from hybrid.spec.surface import SurfaceSpec
 from hybrid.validate import _finite, check_identifier, shown
 
 
@@ -65,7 +66,7 @@ class ImplicitSurface(Surface):
                               "does not give; add their values to parameters")
         spec = implicit_spec(phi, tuple(self.parameters))
         try:  # fail here, not at code generation, on a function the backend cannot translate
-            cs.phi_sx(spec, ca.SX.sym("p", 3), ca.SX.sym("theta", max(len(self.parameters), 1)))
+            generator.api().phi_sx(spec, ca.SX.sym("p", 3), ca.SX.sym("theta", max(len(self.parameters), 1)))
         except (NotImplementedError, TypeError, ValueError, RuntimeError) as exc:
             raise HybridError(f"ImplicitSurface.phi cannot be translated ({str(exc)[:80]}); write phi with +, -, "
                               "*, /, powers, sqrt, exp, log, trigonometric and hyperbolic functions, Abs, Min, "

@@ -21,30 +21,8 @@ import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.geometry.paths import CirclePath, LinePath
+from hybrid.spec.surface import FORMULAS, PARAMETERS, SurfaceSpec
 from hybrid.validate import _finite, _point, unit_vector
-
-
-@dataclass(frozen=True)
-class SurfaceSpec:
-    """What the code generator needs of a surface: ``kind`` (it names the generated code), the
-    names of its run-time parameters, and ``phi``: a SymPy expression of ``x, y, z`` and those
-    parameters (a user's surface), or a built-in surface's ``formula(p, theta, sqrt)`` of the point
-    ``p`` (3) and the parameters ``theta`` (in ``as_array`` order), written once with the class."""
-
-    kind: str
-    parameters: tuple[str, ...]
-    phi: object = None
-    #: ``phi`` as canonical text (SymPy's ``srepr``), which identifies it
-    phi_text: str = "built-in"
-    formula: object = None
-    #: True for a surface the controller estimates (its parameters are the estimator's tuning): the
-    #: task frame comes from the estimate, not from ``phi``
-    estimated: bool = False
-
-    def key(self) -> str:
-        """A stable text identifying the surface's expression (for cache keys)."""
-        return f"{self.kind}:{','.join(self.parameters)}:{self.phi_text}"
-
 
 #: every surface class, by its kind (for files that name a surface by kind)
 SURFACE_KINDS: dict[str, type] = {}
@@ -251,12 +229,8 @@ class Plane(Surface):
     def as_array(self) -> np.ndarray:
         return np.array([*self.point, *self.normal])
 
-    parameters_named = ("p_x", "p_y", "p_z", "n_x", "n_y", "n_z")
-
-    @staticmethod
-    def formula(p, theta, sqrt):
-        n = theta[3:6]
-        return sum(n[i] * (p[i] - theta[i]) for i in range(3)) / sqrt(sum(v * v for v in n))
+    parameters_named = PARAMETERS["plane"]
+    formula = staticmethod(FORMULAS["plane"])
 
     def cross_section(self) -> LineSection | None:
         """The line where a vertical plane cuts the base xy-plane (None for another plane)."""
@@ -305,11 +279,8 @@ class Sphere(Surface):
         object.__setattr__(self, "center", _point("Sphere", "center", self.center, (3,)))
         _positive("Sphere", "radius", self.radius)
 
-    parameters_named = ("c_x", "c_y", "c_z", "rho")
-
-    @staticmethod
-    def formula(p, theta, sqrt):
-        return sqrt(sum((p[i] - theta[i]) ** 2 for i in range(3))) - theta[3]
+    parameters_named = PARAMETERS["sphere"]
+    formula = staticmethod(FORMULAS["sphere"])
 
     def as_array(self) -> np.ndarray:
         return np.array([*self.center, self.radius])
@@ -372,14 +343,8 @@ class Cylinder(Surface):
         object.__setattr__(self, "axis", unit_vector("Cylinder", "axis", _point("Cylinder", "axis", self.axis, (3,))))
         _positive("Cylinder", "radius", self.radius)
 
-    parameters_named = ("p_x", "p_y", "p_z", "u_x", "u_y", "u_z", "rho")
-
-    @staticmethod
-    def formula(p, theta, sqrt):
-        u = theta[3:6]
-        d = [p[i] - theta[i] for i in range(3)]
-        along = sum(u[i] * d[i] for i in range(3)) / sum(v * v for v in u)
-        return sqrt(sum((d[i] - u[i] * along) ** 2 for i in range(3))) - theta[6]
+    parameters_named = PARAMETERS["cylinder"]
+    formula = staticmethod(FORMULAS["cylinder"])
 
     def as_array(self) -> np.ndarray:
         return np.array([*self.point, *self.axis, self.radius])

@@ -1,4 +1,4 @@
-"""The task axes and the task frame's reference direction, named as the generated code names them.
+"""The task axes and the task frame's reference direction (the axes' names: :data:`hybrid.spec.axes.AXIS_NAMES`).
 
 The task frame's rows are ``t1, t2, n`` (linear axes 0-2), then the rotations about them (3-5):
 ``t1 = e x n / |e x n|`` for the reference direction ``e``, ``t2 = n x t1``, ``n`` the surface's
@@ -15,8 +15,6 @@ from hybrid.errors import HybridError
 from hybrid.geometry.surfaces import Surface
 from hybrid.validate import unit_vector
 
-#: the six task axes, in the task frame's row order
-AXIS_NAMES = ("t1", "t2", "n", "rot_t1", "rot_t2", "rot_n")
 #: named task-axis selections: all six, position only, the planar arm's (t1, n)
 AXES = {"all": (0, 1, 2, 3, 4, 5), "position": (0, 1, 2), "planar": (0, 2)}
 

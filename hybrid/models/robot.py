@@ -18,12 +18,12 @@ from pathlib import Path
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.models import chain as rb
 from hybrid.models.kinds import SERIAL_CHAIN, ClosedFormArm
 from hybrid.models.planar_arm import Arm
 from hybrid.models.urdf import JointLimits, LinkInertia, read_chain
 from hybrid.native import units
 from hybrid.native.binding import Unit
+from hybrid.spec import chain as rb
 from hybrid.validate import _finite, check_model_error, finite_array, inertia_problem
 
 

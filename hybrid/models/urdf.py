@@ -19,7 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from hybrid.errors import LargeModelWarning, URDFError
-from hybrid.models.chain import Chain, Joint, rotation_rpy
+from hybrid.spec.chain import Chain, Joint, rotation_rpy
 from hybrid.validate import inertia_problem
 
 MOVING = ("revolute", "continuous", "prismatic")

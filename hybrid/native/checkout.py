@@ -58,9 +58,10 @@ def root() -> Path | None:
 def _generator_elsewhere(top: Path) -> str | None:
     """Why the generator that would run is not this checkout's ``codegen/`` (None when it is).
 
-    The generated text depends on the generator and on runtime modules it reads, so both must come
-    from one tree; and ``hybrid.codegen`` maps to ``codegen/`` only through an install's path mapping,
-    which may point at another checkout. ``find_spec`` locates it without running it (no SymPy).
+    The generated text depends on the generator and on what it shares with the runtime
+    (:mod:`hybrid.spec`), so both must come from one tree; and ``hybrid.codegen`` maps to ``codegen/``
+    only through an install's path mapping, which may point at another checkout. ``find_spec``
+    locates it without running it (no SymPy).
     """
     spec = importlib.util.find_spec("hybrid.codegen")
     if spec is None or spec.origin is None:

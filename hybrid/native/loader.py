@@ -25,7 +25,7 @@ from hybrid.errors import NativeBuildError
 from hybrid.native import checkout
 from hybrid.native.cache import SLOW, checksum_matches, entry, once, write_checksum
 from hybrid.native.compiler import compile_extension, compiler, flags, processor
-from hybrid.native.stamp import is_hand_edited
+from hybrid.spec.stamp import is_hand_edited
 
 log = logging.getLogger("hybrid")
 

@@ -10,7 +10,7 @@ import numpy as np
 from hybrid.errors import HybridError
 from hybrid.models.robot import Robot
 from hybrid.models.urdf import read_chain
-from hybrid.native import cache, units
+from hybrid.native import cache, generator, units
 from hybrid.validate import c_identifier, check_c_name
 
 
@@ -27,7 +27,7 @@ def generate(urdf, tip: str, out, name: str | None = None, locked: dict | None =
     parsed = read_chain(urdf, tip, locked)
     prefix = c_identifier(parsed.name if name is None else name)
     robot = Robot(parsed.name, parsed.chain, parsed.links, parsed.damping, gravity, parsed.limits)
-    unit = units.generator("robot_unit").build_robot_unit(
+    unit = generator.api().build_robot_unit(
         parsed.chain, prefix, units.robot_info(parsed.chain, parsed.name) | {"tip": tip},
         defaults=robot.as_array())
     return write_files(out, unit.files, force)
@@ -61,15 +61,14 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
                        if compiled_in["wrench_sensor"] else
                        "the force and moment on the robot at the tip frame's origin, base axes [N, N m]")}
     key = {"chain": units.chain_key(variant["chain"]), "surface": spec.key(), **info, "values": values,
-           "generator": units.fingerprint(), "prefix": prefix, **({"stem": stem} if stem != prefix else {})}
+           "generator": generator.fingerprint(), "prefix": prefix, **({"stem": stem} if stem != prefix else {})}
 
     def make() -> dict[str, str]:
-        step = {k.name: k for k in units.generator("controller_step").controller_kernels(
-            variant["chain"], spec, axes, **compiled_in)}[variant["step"]]
+        api = generator.api()
+        step = {k.name: k for k in api.controller_kernels(variant["chain"], spec, axes, **compiled_in)}[variant["step"]]
         what = (f"the hybrid force/velocity controller ({ctrl.scheme.name} scheme) of the {ctrl.robot.n}-joint arm "
                 f"'{variant['name']}' on a {spec.kind}, task axes {', '.join(ctrl.axis_names)}")
-        return units.generator("standalone_controller").build_standalone_controller(step, prefix, what, info,
-                                                                                   values, stem).files
+        return api.build_standalone_controller(step, prefix, what, info, values, stem).files
 
     folder = cache.generated_unit(stem, key, make)
     return {n: (folder / n).read_text() for n in (f"{stem}.c", f"{stem}.h", f"{stem}.json")}
@@ -80,7 +79,7 @@ def generate_experiment(exp, out, name: str | None = None, force: bool = False) 
     (``<name>_controller.c``, ``.h``, ``.json``: the struct ``<name>_controller``, as
     :meth:`hybrid.Controller.generate` writes it, symbols ``<name>_...``) and its plant
     (``<name>_plant.c``, ``.h``, ``.json``: the struct ``<name>_plant`` with the experiment's parameters,
-    timing and start state; :mod:`hybrid.codegen.standalone_plant`). ``name`` defaults to the robot's.
+    timing and start state; :func:`hybrid.codegen.api.build_standalone_plant`). ``name`` defaults to the robot's.
     Files in ``out`` with other content are refused unless ``force``."""
     if name is not None:
         check_c_name("name", name)
@@ -108,14 +107,14 @@ def plant_files(exp, prefix: str, x0) -> dict[str, str]:
             "plant": plant.key()[0], "experiment": exp.to_dict()}
     backend = robot.kind.plant_printer(exp.backend)
     key = {"plant": plant.key(), "values": values, "info": info, "backend": backend,
-           "generator": units.fingerprint(), "prefix": prefix}
+           "generator": generator.fingerprint(), "prefix": prefix}
 
     def make() -> dict[str, str]:
-        rhs, outputs, force = plant.kernels(units.generator)
+        api = generator.api()
+        rhs, outputs, force = plant.kernels(api)
         what = (f"the plant of an experiment: the {robot.n}-joint arm '{robot.name}', its force sensor and penalty "
                 f"contact with friction on a {surface}, advanced by RK4 with the torque held")
-        return units.generator("standalone_plant").build_standalone_plant(rhs, outputs, force, prefix, what, info,
-                                                                          values, backend).files
+        return api.build_standalone_plant(rhs, outputs, force, prefix, what, info, values, backend).files
 
     folder = cache.generated_unit(prefix, key, make)
     return {n: (folder / n).read_text() for n in (f"{prefix}.c", f"{prefix}.h", f"{prefix}.json")}

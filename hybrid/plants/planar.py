@@ -39,7 +39,7 @@ class PlanarLoopPlant(LoopPlant):
         return ["planar", self.kind]
 
     def kernels(self, generator) -> tuple:
-        kernels = {k.name: k for k in generator("model").kernels(2)}
+        kernels = {k.name: k for k in generator.planar_kernels(2)}
         return kernels[f"plant_rhs_{self.kind}"], kernels[f"plant_outputs_{self.kind}"], ("Fc_x", "Fc_y")
 
 

@@ -31,7 +31,7 @@ class RigidBodyLoopPlant(LoopPlant):
         return ["spatial", units.chain_key(self.chain), self.spec.key()]
 
     def kernels(self, generator) -> tuple:
-        kernels = {k.name: k for k in generator("spatial_plant").plant_kernels(self.chain, self.spec)}
+        kernels = {k.name: k for k in generator.plant_kernels(self.chain, self.spec)}
         return kernels["plant_rhs"], kernels["plant_outputs"], ("Fc_x", "Fc_y", "Fc_z")
 
 

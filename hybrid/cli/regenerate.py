@@ -1,4 +1,10 @@
-"""Write ``generated/`` from the symbolic models, or check that it is up to date."""
+"""``python -m hybrid regenerate``: write ``generated/`` from the generator, or check that it is up to date.
+
+``generated/`` holds the paper's arm in closed form (one unit per backend) and the closed loops that
+:data:`LOOPS_FILE` names (``generated/loops/``, with the index that files each under its key). What each
+loop is built from (an experiment under a scheme) is the runtime's to say; the generator is given plain
+descriptions (:mod:`hybrid.native.units`, through :mod:`hybrid.native.generator`).
+"""
 
 from __future__ import annotations
 
@@ -6,35 +12,50 @@ import difflib
 import os
 from pathlib import Path
 
-from hybrid.control.schemes import SCHEMES
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python 3.10
+    import tomli as tomllib
+
+from hybrid.errors import HybridError
 from hybrid.experiments.paper import paper_experiment
 from hybrid.files import temporary
-from hybrid.native.stamp import is_hand_edited
-from hybrid.native.units import LOOPS, loop_files
+from hybrid.native import checkout, generator
+from hybrid.native.units import BACKENDS, LOOPS, loop_files
 from hybrid.simulation.closed_loop import loop_of
-
-from .emit import BACKENDS, build_unit, generated_dir
+from hybrid.spec.stamp import is_hand_edited
 
 UPDATE_HINT = "run `python -m hybrid regenerate` and commit generated/"
+#: the closed loops committed in ``generated/loops``: an experiment by name, a scheme and lanes each
+LOOPS_FILE = Path(__file__).resolve().parent.parent / "data" / "committed_loops.toml"
+#: the experiments a committed loop may be built from, by the name :data:`LOOPS_FILE` gives them
+EXPERIMENTS = {"paper": paper_experiment}
 
 
 def _hint(target: Path | None) -> str:
     return UPDATE_HINT if target is None else f"run `python -m hybrid regenerate --target {target}`"
 
 
-def committed_loops() -> list[tuple]:
-    """The closed loops committed with the paper's arm, ``(plant, variant, lanes)`` each: its experiment
-    under each scheme of the ``paper`` command, as a run alone (what ``simulate`` runs first)."""
-    return [(*loop_of(paper_experiment(controller=scheme)), 1) for scheme in SCHEMES]
+def committed_loops(path: Path = LOOPS_FILE) -> list[tuple]:
+    """The closed loops :data:`LOOPS_FILE` names, ``(plant, variant, lanes)`` each (as
+    :func:`hybrid.native.units.loop_files` takes them)."""
+    loops = []
+    for entry in tomllib.loads(path.read_text())["loop"]:
+        make = EXPERIMENTS.get(entry.get("experiment"))
+        if make is None or not isinstance(entry.get("lanes"), int):
+            raise HybridError(f"{path}: a [[loop]] needs experiment (one of {', '.join(EXPERIMENTS)}), scheme and "
+                              f"lanes (an integer), got {entry}; correct the file")
+        plant, variant = loop_of(make(controller=entry["scheme"]))
+        loops.append((plant, dict(variant), entry["lanes"]))
+    return loops
 
 
 def expected_files(backends=BACKENDS) -> dict[str, str]:
-    """Every generated file's name (a path under ``generated/``) and the text the generators produce now."""
+    """Every generated file's name (a path under ``generated/``) and the text the generator produces now."""
     files: dict[str, str] = {}
     for b in backends:
-        files.update(build_unit(b).files)
-    files.update({f"{LOOPS}/{name}": text for name, text in loop_files(
-        [(plant, dict(variant), lanes) for plant, variant, lanes in committed_loops()]).items()})
+        files.update(generator.api().build_planar_unit(b).files)
+    files.update({f"{LOOPS}/{name}": text for name, text in loop_files(committed_loops()).items()})
     return files
 
 
@@ -52,7 +73,7 @@ def check(target: Path | None = None) -> list[str]:
     reports each file as missing.
     """
     hint = _hint(target)
-    target = target or generated_dir()
+    target = target or checkout.generated_dir()
     problems = []
     for name, text in expected_files().items():
         path = target / name
@@ -70,7 +91,7 @@ def write(target: Path | None = None, force: bool = False) -> list[str]:
     Returns the names of the files that changed. Files are replaced atomically, with the
     permissions a plain ``open`` gives (the checkout's other users can read them).
     """
-    target = target or generated_dir()
+    target = target or checkout.generated_dir()
     files = expected_files()
     for name in files:
         (target / name).parent.mkdir(parents=True, exist_ok=True)

@@ -1,0 +1,41 @@
+"""The generator's public interface: everything the runtime asks of it, each under one name.
+
+The runtime reaches the generator through :mod:`hybrid.native.generator` alone, which imports this
+module when a unit must be generated. Its functions take plain descriptions (a
+:class:`hybrid.spec.chain.Chain`, a :class:`hybrid.spec.surface.SurfaceSpec`, task-axis indices,
+names, flags and numbers) or kernels they returned, and give kernels or generated units (a
+:class:`Unit`: C source, header and manifest as text); none reads or writes a file.
+
+- the paper's planar arm in closed form: :func:`planar_kernels`, :func:`build_planar_unit` (one
+  backend of ``BACKENDS``: the committed ``generated/hybrid_<backend>.*``);
+- any serial chain: :func:`build_robot_unit` (terms, dynamics, operational space),
+  :func:`law_kernels` / :func:`build_law_unit` (the decoupling law on a surface),
+  :func:`build_frame_unit` (the task frame), :func:`controller_kernels` /
+  :func:`build_controller_unit` (one control sample), :func:`plant_kernels` /
+  :func:`build_plant_unit` (the 3-D plant);
+- a closed loop of a plant's kernels and a controller step: :class:`LoopSpec`,
+  :func:`build_closed_loop_unit`;
+- standalone C for a user's project: :func:`build_standalone_controller`, :func:`build_standalone_plant`;
+- a surface's ``phi`` in CasADi (:func:`phi_sx`) and a kernel as a CasADi Function
+  (:func:`kernel_function`).
+"""
+
+from __future__ import annotations
+
+from .casadi_backend import kernel_function
+from .closed_loop import LoopSpec, build_closed_loop_unit
+from .controller_step import controller_kernels
+from .emit import BACKENDS, Unit
+from .emit import build_unit as build_planar_unit
+from .model import kernels as planar_kernels
+from .robot_unit import build_controller_unit, build_frame_unit, build_law_unit, build_plant_unit, build_robot_unit
+from .spatial_plant import plant_kernels
+from .standalone_controller import build_standalone_controller
+from .standalone_plant import build_standalone_plant
+from .surfaces import phi_sx
+from .task_law import law_kernels
+
+__all__ = ["BACKENDS", "LoopSpec", "Unit", "build_closed_loop_unit", "build_controller_unit", "build_frame_unit",
+           "build_law_unit", "build_planar_unit", "build_plant_unit", "build_robot_unit", "build_standalone_controller",
+           "build_standalone_plant", "controller_kernels", "kernel_function", "law_kernels", "phi_sx",
+           "planar_kernels", "plant_kernels"]
