@@ -28,7 +28,7 @@ import casadi as ca
 
 from hybrid.native.stamp import MANIFEST_STAMP, json_body_hash, stamp
 from hybrid.spec.controller_step import CONTROLLER_STEP, OPTION_DOCS, STATE_NEXT
-from hybrid.spec.interfaces import REFERENCE, STATE, STATUS_CODES, STATUSES
+from hybrid.spec.interfaces import REFERENCE, STATE, STATUSES
 
 from .emit import GENERATOR_VERSION, Unit, _casadi_cores, comment_safe
 from .kernel import Kernel
@@ -84,44 +84,6 @@ def configured(prefix: str, a, doc: str, values, scalars=None) -> dict:
         raise ValueError(f"{a.name} takes {a.size} values, got {len(numbers)}")
     field = array_field(prefix, a.name, a.size, a.unit, None if scalars else a.names, doc)
     return {**field, "numbers": numbers, "scalars": scalars}
-
-
-def status_name_source(prefix: str, names) -> str:
-    """The C function ``<prefix>_status_name`` naming each of the statuses ``names`` (their numbers are
-    :data:`hybrid.spec.interfaces.STATUSES`'), ``"UNKNOWN"`` another number."""
-    cases = "".join(f'    case {STATUS_CODES[n]}: return "{n}";\n' for n in names)
-    return (f"const char *{prefix}_status_name(int status) {{\n    switch (status) {{\n{cases}"
-            '    default: return "UNKNOWN";\n    }\n}\n')
-
-
-def init_statements(struct: str, params, values: dict, scalars: tuple[str, ...]) -> list[str]:
-    """C statements giving the fields of ``struct`` (a pointer's name) the configuration's ``values``: one
-    field per parameter input, or its elements' named fields for the inputs in ``scalars``."""
-    lines = []
-    for a in params:
-        vals = [float(v) for v in values[a.name]]
-        if len(vals) != a.size:
-            raise ValueError(f"{a.name} takes {a.size} values, got {len(vals)}")
-        if a.name in scalars and a.names:
-            lines += [f"    {struct}->{n} = {_number(v)};" for n, v in zip(a.names, vals)]
-        else:
-            lines.append(array_statement(struct, a.name, vals))
-    return lines
-
-
-def array_statement(struct: str, field: str, vals) -> str:
-    """The C block copying the numbers ``vals`` into the array ``struct->field`` (``i`` declared)."""
-    numbers = ", ".join(_number(v) for v in vals)
-    return (f"    {{\n        static const double v[{len(vals)}] = {{{numbers}}};\n"
-            f"        for (i = 0; i < {len(vals)}; ++i) {struct}->{field}[i] = v[i];\n    }}")
-
-
-def _index_macros(prefix: str, field: str, names) -> list[str]:
-    """``#define <PREFIX>_<FIELD>_<NAME> index`` for an array's elements (none when two names clash)."""
-    made = [f"{prefix.upper()}_{field.upper()}_{_macro(n)}" for n in names]
-    if len(set(made)) < len(made):
-        return []
-    return [f"#define {m} {i}" for i, m in enumerate(made)]
 
 
 def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict, values: dict,
