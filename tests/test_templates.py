@@ -1,0 +1,141 @@
+"""The C templates (``codegen/templates/``): each renders, strictly, for the paper's arm and the UR5; the
+standalone C they render compiles warning-free; the standalone units' modules build only the context.
+
+The units are generated in a fresh cache (the generator runs, nothing is read back from an earlier run).
+"""
+
+from __future__ import annotations
+
+import ast
+import shutil
+import subprocess
+
+import jinja2
+import pytest
+from hybrid.codegen import closed_loop, templates
+
+import hybrid
+from hybrid.native import standalone, units
+
+STRICT = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]
+SPHERE = hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15)
+
+
+@pytest.fixture(scope="module")
+def rendered(tmp_path_factory):
+    """Every template the generator loads while it writes the paper's closed loop, its standalone controller
+    and plant, and the UR5's standalone controller with and without a wrench sensor; and those units' files."""
+    mp = pytest.MonkeyPatch()
+    mp.setenv("HYBRID_CACHE_DIR", str(tmp_path_factory.mktemp("cache")))
+    env, loaded = templates.environment(), []
+    get_template = env.get_template
+
+    def spy(name, *args, **kwargs):
+        loaded.append(name)
+        return get_template(name, *args, **kwargs)
+
+    mp.setattr(env, "get_template", spy)
+    try:
+        exp = hybrid.paper_experiment()
+        spec = units.loop_spec(exp.plant_class.loop_plant(exp), exp.build_controller().step_variant())
+        loop = closed_loop.build_closed_loop_unit(spec, "paper_loop", "the paper's closed loop", {})
+        files = standalone.controller_files(exp.build_controller(), "paper", "paper_controller")
+        files |= standalone.plant_files(exp, "paper_plant", exp.initial_state())
+        for name, sensor in (("ur5", None), ("ur5_sensor", hybrid.WrenchSensor(position=(0.01, -0.02, 0.05),
+                                                                              bias=(0.3, -0.2, 0.5, 0.0, 0.0, 0.1),
+                                                                              cutoff=15.0, order=2))):
+            files |= standalone.controller_files(hybrid.Controller(hybrid.ur5(), SPHERE, wrench_sensor=sensor), name)
+    finally:
+        mp.undo()
+    return set(loaded), files, loop
+
+
+def test_every_template_renders_strictly(rendered):
+    loaded, files, loop = rendered
+    on_disk = {p.name for p in templates.FOLDER.iterdir() if p.is_file()}
+    assert on_disk == loaded, f"templates never rendered: {sorted(on_disk - loaded)}"
+    assert templates.environment().undefined is jinja2.StrictUndefined
+    # a name the context lacks is an error, not an empty string
+    with pytest.raises(jinja2.UndefinedError):  # a field without its doc
+        templates.macro("standalone_common.c.j2", "array_field")({"name": "x", "size": 1, "unit": "1", "names": []},
+                                                                 str)
+    for text in (*files.values(), loop.files["paper_loop.c"]):
+        assert "{{" not in text and "{%" not in text and "{#" not in text
+
+
+@pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")
+def test_the_rendered_standalone_c_compiles_warning_free(rendered, tmp_path):
+    _, files, _ = rendered
+    for name, text in files.items():
+        (tmp_path / name).write_text(text)
+    sources = sorted(n for n in files if n.endswith(".c"))
+    assert sources == ["paper_controller.c", "paper_plant.c", "ur5.c", "ur5_sensor.c"]
+    for source in sources:
+        done = subprocess.run(["gcc", *STRICT, "-c", source, "-o", source[:-2] + ".o"], cwd=tmp_path,
+                              capture_output=True, text=True)
+        assert done.returncode == 0 and not done.stderr, f"{source}:\n{done.stderr}"
+
+
+# ------------------------------------------------------------------ no C in the units' Python
+
+def c_texts(source: str) -> list[tuple[int, str]]:
+    """The string literals of the Python ``source`` that hold C spanning lines (a newline and a ``;``, or a
+    brace starting or ending a line), with their line numbers: an f-string's literal parts count, docstrings
+    do not."""
+    tree = ast.parse(source)
+    docs = {id(node.body[0].value) for node in ast.walk(tree)
+            if isinstance(node, (ast.Module, ast.FunctionDef, ast.ClassDef)) and node.body
+            and isinstance(node.body[0], ast.Expr) and isinstance(node.body[0].value, ast.Constant)}
+    docs |= {id(v) for node in ast.walk(tree) if isinstance(node, ast.JoinedStr) for v in node.values}  # its parts
+    found = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.JoinedStr):
+            text = "\0".join(v.value if isinstance(v, ast.Constant) else "" for v in node.values)
+        elif isinstance(node, ast.Constant) and isinstance(node.value, str) and id(node) not in docs:
+            text = node.value
+        else:
+            continue
+        lines = text.split("\n")
+        if len(lines) > 1 and (";" in text or any(s.strip().startswith(("{", "}")) or s.rstrip().endswith("{")
+                                                  for s in lines)):
+            found.append((node.lineno, text))
+    return found
+
+
+#: C written in Python as the standalone units once were: a header in a triple-quoted f-string, a block
+#: joined from f-strings, a function from implicitly joined literals
+OLD_STYLE = '''
+"""A module."""
+
+
+def status_name_source(prefix, cases):
+    """Its C."""
+    return (f"const char *{prefix}_status_name(int status) {{\\n    switch (status) {{\\n{cases}"
+            '    default: return "UNKNOWN";\\n    }\\n}\\n')
+
+
+def array_statement(struct, field, numbers, n):
+    return (f"    {{\\n        static const double v[{n}] = {{{numbers}}};\\n"
+            f"        for (i = 0; i < {n}; ++i) {struct}->{field}[i] = v[i];\\n    }}")
+
+
+def header(P, prefix):
+    return f"""#ifndef {P}_H
+#define {P}_H
+void {prefix}_init({prefix} *p);
+#endif
+"""
+'''
+
+
+def test_the_c_finder_finds_c_in_python():
+    assert [line for line, _ in c_texts(OLD_STYLE)] == [7, 12, 17]
+    assert c_texts('"""Docs: x = {1};\nmore."""\nMESSAGE = "a wrench has six numbers; give six"\n'
+                   'JOIN = "\\n".join\n') == []
+
+
+@pytest.mark.parametrize("module", ["standalone_controller", "standalone_plant"])
+def test_the_standalone_units_python_holds_no_c(module):
+    path = templates.FOLDER.parent / f"{module}.py"
+    found = c_texts(path.read_text())
+    assert not found, f"C text in {path.name} at lines {[line for line, _ in found]}: move it into a template"
