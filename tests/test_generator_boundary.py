@@ -128,8 +128,8 @@ def test_every_file_that_shapes_the_generated_bytes_changes_the_fingerprint(fing
         seen.add(changed)
         path.write_bytes(original)
         assert fingerprint() == before
-    # a file that is not a module (a template) counts as well, in a subfolder too
-    template = top / "codegen" / "templates" / "unit.c.in"
+    # a new file that is not a module (a template) counts as well, in a new subfolder too
+    template = top / "codegen" / "more_templates" / "unit.c.in"
     template.parent.mkdir()
     template.write_text("/* a template */\n")
     assert fingerprint() != before
