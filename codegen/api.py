@@ -16,17 +16,21 @@ names, flags and numbers) or kernels they returned, and give kernels or generate
 - a closed loop of a plant's kernels and a controller step: :class:`LoopSpec`,
   :func:`build_closed_loop_unit`;
 - standalone C for a user's project: :func:`build_standalone_controller`, :func:`build_standalone_plant`;
+- the headers the units include: :func:`shared_headers`;
 - a surface's ``phi`` in CasADi (:func:`phi_sx`) and a kernel as a CasADi Function
   (:func:`kernel_function`).
 """
 
 from __future__ import annotations
 
+from hybrid.spec.stamp import stamp
+
 from .casadi_backend import kernel_function
 from .closed_loop import LoopSpec, build_closed_loop_unit
 from .controller_step import controller_kernels
 from .emit import BACKENDS, Unit
 from .emit import build_unit as build_planar_unit
+from .lanes import LANES_HEADER, lanes_header
 from .model import kernels as planar_kernels
 from .robot_unit import build_controller_unit, build_frame_unit, build_law_unit, build_plant_unit, build_robot_unit
 from .spatial_plant import plant_kernels
@@ -35,7 +39,14 @@ from .standalone_plant import build_standalone_plant
 from .surfaces import phi_sx
 from .task_law import law_kernels
 
-__all__ = ["BACKENDS", "LoopSpec", "Unit", "build_closed_loop_unit", "build_controller_unit", "build_frame_unit",
-           "build_law_unit", "build_planar_unit", "build_plant_unit", "build_robot_unit", "build_standalone_controller",
-           "build_standalone_plant", "controller_kernels", "kernel_function", "law_kernels", "phi_sx",
-           "planar_kernels", "plant_kernels"]
+
+def shared_headers() -> dict[str, str]:
+    """The headers the units include (the SIMD lanes', :data:`LANES_HEADER`), by file name, stamped as
+    generated files: one copy beside the units in ``generated/``."""
+    return {LANES_HEADER: stamp(lanes_header())}
+
+
+__all__ = ["BACKENDS", "LANES_HEADER", "LoopSpec", "Unit", "build_closed_loop_unit", "build_controller_unit",
+           "build_frame_unit", "build_law_unit", "build_planar_unit", "build_plant_unit", "build_robot_unit",
+           "build_standalone_controller", "build_standalone_plant", "controller_kernels", "kernel_function",
+           "law_kernels", "phi_sx", "planar_kernels", "plant_kernels", "shared_headers"]

@@ -32,7 +32,7 @@ from hybrid.spec.metrics import METRIC_NAMES, SETTLING_BAND, STEADY_WINDOW_S, TO
 
 from .emit import Unit, comment_safe, manifest, stamp, status_defines
 from .kernel import Arg, Kernel
-from .lanes import PRELUDE, lanes_function, libm_maps
+from .lanes import INCLUDE, LANES_HEADER, lanes_function, libm_maps
 from .templates import render
 
 #: the record columns the loop reads besides the force: normal force, tangential speed, penetration and
@@ -205,9 +205,10 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
     stages = "".join(lanes_function(k, name, fixed, "HL_STAGE", near=nq, apart=True) + "\n" for k, name, fixed in (
         (rhs, "plant_rhs_lanes", held), (stepping, "plant_rhs_signals_lanes", held + shown)))
     width = f"#define HL_W {ONE_RUN_LANES if lanes == 1 else lanes}" if lanes else ""
-    body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py. */\n"
+    body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py; it includes "
+            f"{LANES_HEADER} (in generated/: compile with -I there). */\n"
             "#if !defined(__GNUC__)\n#error \"the compiled closed loop needs GCC or Clang (vector extensions)\"\n"
-            f"#endif\n{width}\n{PRELUDE}\n{status_defines()}\n\n{libm_maps()}\n"
+            f"#endif\n{width}\n{INCLUDE}\n{status_defines()}\n\n{libm_maps()}\n"
             f"{PARTS}\n{_STAGE.format(small=int(stages.count(chr(10)) <= _INLINE_LINES))}\n{stages}"
             f"{lanes_function(spec.outputs, 'plant_outputs_lanes', shown, 'HL_APART', apart=True)}\n"
             f"{lanes_function(spec.step, spec.step.name + '_lanes', params, 'HL_APART', apart=True)}\n"

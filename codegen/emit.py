@@ -28,7 +28,7 @@ from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from . import model
 from .casadi_backend import kernel_sources
-from .lanes import PRELUDE, lanes_function, libm_maps
+from .lanes import INCLUDE, lanes_function, libm_maps
 from .model import Kernel
 from .sympy_backend import kernel_body
 from .templates import macro
@@ -194,7 +194,7 @@ static int all_finite(const double *v, int n) {{
 }}
 """]
     if any(k.lanes for k in kernels):  # GCC and Clang (vector extensions); any other compiler: plain C
-        out.append(f"#if defined(__GNUC__)\n#define HYBRID_LANES 1\n{PRELUDE}\n{libm_maps()}#else\n"
+        out.append(f"#if defined(__GNUC__)\n#define HYBRID_LANES 1\n{INCLUDE}\n{libm_maps()}#else\n"
                    "#define HYBRID_LANES 0\n#endif\n")
     for k in kernels:
         core_args = [a.name for a in (*k.inputs, *k.core_outputs())]

@@ -10,11 +10,12 @@ import numpy as np
 import pytest
 import sympy as sp
 from hybrid.codegen.kernel import Arg, Kernel
-from hybrid.codegen.lanes import PRELUDE, lanes_function, libm_maps
+from hybrid.codegen.lanes import INCLUDE, lanes_function, libm_maps
 
 import hybrid
 from hybrid import metrics
 from hybrid.control.controller import Controller
+from hybrid.native import generator
 from hybrid.native.compiler import compiler, flags
 from hybrid.plants.planar import PlanarPlant
 from hybrid.simulation import closed_loop
@@ -205,7 +206,8 @@ def _build(source: str, cdef: str, name: str, folder):
 
     ffi = cffi.FFI()
     ffi.cdef(cdef)
-    ffi.set_source(name, source, extra_compile_args=list(flags(compiler()[1])), libraries=["m"])
+    ffi.set_source(name, source, extra_compile_args=list(flags(compiler()[1])), libraries=["m"],
+                   include_dirs=[str(generator.include_dir())])  # the lanes' header
     os.environ.setdefault("CC", compiler()[0])
     so = ffi.compile(tmpdir=str(folder))
     spec = importlib.util.spec_from_file_location(name, so)
@@ -222,7 +224,7 @@ def vector_math(tmp_path_factory):
                     (Arg("y", sp.Matrix([sp.sin(x), sp.cos(x), sp.tanh(x), sp.exp(x / 64), sp.sqrt(sp.Abs(x))])),),
                     "vector math")
     # (split with no fixed input: a _pre function that computes what depends on nothing)
-    source = PRELUDE + libm_maps() + lanes_function(kernel, fixed=()) + """
+    source = INCLUDE + libm_maps() + lanes_function(kernel, fixed=()) + """
 int lanes(void) { return HL_W; }
 void f_many(int n, const double *x, double *y) {
     int i, l, j;
@@ -255,7 +257,7 @@ def test_sin_and_cos_near_a_point_are_within_2e_52(tmp_path):
     large, or not finite, what ``hl_sincos`` gives."""
     x = sp.Symbol("x0", real=True)
     kernel = Kernel("g", (Arg("x", sp.Matrix([x])),), (Arg("y", sp.Matrix([sp.sin(x), sp.cos(x)])),), "near")
-    source = PRELUDE + libm_maps() + lanes_function(kernel, near=1) + """
+    source = INCLUDE + libm_maps() + lanes_function(kernel, near=1) + """
 int lanes(void) { return HL_W; }
 void g_many(int n, const double *x, const double *x0, double *y) {
     int i, l, j;

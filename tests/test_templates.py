@@ -9,6 +9,7 @@ from __future__ import annotations
 import ast
 import shutil
 import subprocess
+from pathlib import Path
 
 import jinja2
 import pytest
@@ -16,6 +17,8 @@ from hybrid.codegen import closed_loop, templates
 
 import hybrid
 from hybrid.native import standalone, units
+
+ROOT = Path(__file__).resolve().parent.parent
 
 STRICT = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]
 SPHERE = hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15)
@@ -52,7 +55,7 @@ def rendered(tmp_path_factory):
 
 def test_every_template_renders_strictly(rendered):
     loaded, files, loop = rendered
-    on_disk = {p.name for p in templates.FOLDER.iterdir() if p.is_file()}
+    on_disk = {p.name for p in templates.FOLDER.iterdir() if p.suffix == ".j2"}
     assert on_disk == loaded, f"templates never rendered: {sorted(on_disk - loaded)}"
     assert templates.environment().undefined is jinja2.StrictUndefined
     # a name the context lacks is an error, not an empty string
@@ -139,3 +142,25 @@ def test_the_standalone_units_python_holds_no_c(module):
     path = templates.FOLDER.parent / f"{module}.py"
     found = c_texts(path.read_text())
     assert not found, f"C text in {path.name} at lines {[line for line, _ in found]}: move it into a template"
+
+
+@pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")
+def test_the_headers_compile_on_their_own_and_are_included_not_copied(tmp_path):
+    """Every C header of the generator's compiles alone, warning-free; the generated units include the SIMD
+    lanes' header (one copy, in generated/) instead of holding its text."""
+    headers = sorted(templates.FOLDER.glob("*.h"))
+    assert headers, "the generator has no C header"
+    for header in headers:
+        for flags in ([], ["-march=native"]):  # the portable build's lanes and this machine's
+            done = subprocess.run(["gcc", "-std=gnu99", "-O2", *flags, "-Wall", "-Wextra", "-Werror", "-fsyntax-only",
+                                   "-x", "c", str(header)], capture_output=True, text=True)
+            assert done.returncode == 0 and not done.stderr, done.stderr
+    generated = ROOT / "generated"
+    lanes = (templates.FOLDER / "hybrid_lanes.h").read_text()
+    body = lanes.split("#define HYBRID_LANES_H", 1)[1]
+    first_function = body[body.index("static inline"):].split("\n", 1)[0]
+    units = [generated / "hybrid_sympy.c", generated / "hybrid_casadi.c", *sorted((generated / "loops").glob("*.c"))]
+    for unit in units:
+        text = unit.read_text()
+        assert '#include "hybrid_lanes.h"' in text and first_function not in text, unit.name
+    assert (generated / "hybrid_lanes.h").read_text().endswith(lanes)

@@ -53,6 +53,7 @@ def committed_loops(path: Path = LOOPS_FILE) -> list[tuple]:
 def expected_files(backends=BACKENDS) -> dict[str, str]:
     """Every generated file's name (a path under ``generated/``) and the text the generator produces now."""
     files: dict[str, str] = {}
+    files.update(generator.api().shared_headers())
     for b in backends:
         files.update(generator.api().build_planar_unit(b).files)
     files.update({f"{LOOPS}/{name}": text for name, text in loop_files(committed_loops()).items()})

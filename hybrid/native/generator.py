@@ -29,6 +29,16 @@ def _codegen() -> Path:
     return Path(importlib.util.find_spec("hybrid.codegen").submodule_search_locations[0])
 
 
+def include_dir() -> Path:
+    """The folder of the headers the generated units include (``hybrid_lanes.h``): the generator's
+    templates, found without importing it."""
+    return _codegen() / "templates"
+
+
+#: the line by which a unit includes the SIMD lanes' header (``codegen/lanes.py``'s ``INCLUDE``)
+LANES_INCLUDE = '#include "hybrid_lanes.h"'
+
+
 def _package() -> Path:
     """The ``hybrid`` package's folder."""
     return Path(__file__).resolve().parents[1]

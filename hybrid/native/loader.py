@@ -22,7 +22,7 @@ from pathlib import Path
 import cffi
 
 from hybrid.errors import NativeBuildError
-from hybrid.native import checkout
+from hybrid.native import checkout, generator
 from hybrid.native.cache import SLOW, checksum_matches, entry, once, write_checksum
 from hybrid.native.compiler import compile_extension, compiler, flags, processor
 from hybrid.spec.stamp import is_hand_edited
@@ -144,8 +144,12 @@ def _compile_unit(src_dir: Path, prefix: str):
     # a unit whose manifest says it has parts: its own file once for each
     n = _manifest_parts(src_dir, prefix)
     parts = (f"{prefix}.c",) * n if n > 1 else ()
-    return _cached_module(f"_{prefix}", {"c": c_source, "h": header, "cffi": cffi.__version__,
-                                         **({"parts": n} if parts else {})}, write_source, [], parts)
+    # the header of the SIMD lanes, where the unit includes it: its text is part of the key
+    lanes = generator.LANES_INCLUDE in c_source
+    includes = [str(generator.include_dir())] if lanes else []
+    shared = {"lanes": (generator.include_dir() / "hybrid_lanes.h").read_text()} if lanes else {}
+    return _cached_module(f"_{prefix}", {"c": c_source, "h": header, "cffi": cffi.__version__, **shared,
+                                         **({"parts": n} if parts else {})}, write_source, includes, parts)
 
 
 def _manifest_parts(src_dir: Path, prefix: str) -> int:
