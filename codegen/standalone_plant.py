@@ -14,7 +14,9 @@ initial state ``x0`` that ``<prefix>_reset`` restores. Its functions:
   (the formula of :func:`codegen.emit.rk4_step`, the one every integrator of the project takes);
 - ``<prefix>_signals(&p, s)``: the record columns the metrics read (normal force, tangential speed,
   penetration, the surface's normal force: :data:`codegen.closed_loop.SIGNALS`);
-- ``<prefix>_outputs(&p, y)``: the plant's whole output record at ``x``.
+- ``<prefix>_outputs(&p, y)``: the plant's whole output record at ``x``;
+- ``<prefix>_metric_name(i)``: the name of a run's metric ``i``, as :mod:`hybrid.spec.metrics` declares them
+  (their indices, bands and window are the header's macros): what a closed loop in C reports.
 
 The text is a pure function of its inputs (no dates, no paths, stable ordering).
 """
@@ -26,6 +28,7 @@ import json
 import casadi as ca
 
 from hybrid.spec.interfaces import STATUS_CODES
+from hybrid.spec.metrics import METRICS, SETTLING_BAND, STEADY_WINDOW_S, TOUCH_BAND, metric_names
 from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from .closed_loop import SIGNALS
@@ -52,6 +55,14 @@ _DOC = {"robot": "the true arm's inertial parameters, joint viscosities and grav
         "arm": "the planar arm's lengths, masses, inertias, viscosities",
         "plant": "the sensor and the contact", "surface": "the surface's parameters",
         "e": "the task frame's reference direction (the output record's task axes)"}
+
+
+def _whole(value: float, scale: int) -> int:
+    """``value * scale`` as a whole number ``k`` whose ``k / scale`` in C is ``value`` to the bit."""
+    k = round(value * scale)
+    if k / scale != value:
+        raise ValueError(f"{value} is not a whole number of 1/{scale}")
+    return k
 
 
 def build_standalone_plant(rhs: Kernel, outputs: Kernel, force_columns: tuple[str, ...], prefix: str, what: str,
@@ -109,6 +120,9 @@ def build_standalone_plant(rhs: Kernel, outputs: Kernel, force_columns: tuple[st
     # the record's columns named by index macros besides the struct's arrays: the signals, the whole record
     records = [{"macros": index_names(prefix, "signals", SIGNALS)},
                {"macros": index_names(prefix, "y", y.names)}]
+    # the bands and the window as whole numbers (a header's macros are integers for every tool that reads it)
+    context |= {"metrics": METRICS, "metric_names": metric_names(nq), "settling_band": _whole(SETTLING_BAND, 100),
+                "touch_band": _whole(TOUCH_BAND, 100), "steady_window_ms": _whole(STEADY_WINDOW_S, 1000)}
     header = render("standalone_plant.h.j2", **context, signals=SIGNALS, records=records,
                     x=array_field(prefix, "x", nx, x.unit, x.names, "the state"))
     source = render("standalone_plant.c.j2", **context, tools=tools, cores=cores, packed=packed, rhs=rhs,
@@ -128,7 +142,8 @@ def build_standalone_plant(rhs: Kernel, outputs: Kernel, force_columns: tuple[st
             "struct": prefix, "fields": fields_doc,
             "scalars": {f["name"]: [s["name"] for s in f["scalars"]] for f in packed},
             "functions": [f"{prefix}_{f}" for f in ("init", "reset", "wrench", "advance", "signals", "outputs",
-                                                     "status_name")],
+                                                     "status_name", "metric_name")],
+            "metrics": list(metric_names(nq)),
             "configuration": {**{a.name: [float(v) for v in values[a.name]] for a in params}, "x0": x0,
                               "h": float(values["h"]), "steps_per_sample": per,
                               "sample_time": float(values["sample_time"]), "duration": float(values["duration"])}}

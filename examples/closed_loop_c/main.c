@@ -62,7 +62,7 @@ static void metrics_row(metrics *m, const double *s, long i, double h) {
     const double step = m->fa - m->fb, sgn = step >= 0 ? 1.0 : -1.0;
     /* the window after the force step ends at the speed step (the next disturbance), if later */
     const double f_end = m->vat > m->fat ? m->vat : m->end;
-    const double band = 0.02 * (m->fa != 0.0 ? fabs(m->fa) : fabs(step));
+    const double band = UR5_PLANT_SETTLING_BAND_PERCENT / 100.0 * (m->fa != 0.0 ? fabs(m->fa) : fabs(step));
     const int contact = s[UR5_PLANT_SIGNALS_N] > 0.0;
     if (t >= m->fat && t < f_end) {
         if (sgn * F > m->peak) m->peak = sgn * F;
@@ -77,7 +77,7 @@ static void metrics_row(metrics *m, const double *s, long i, double h) {
         if (fabs(F - Fd) > m->dev) m->dev = fabs(F - Fd);
         if (v > m->v_max) m->v_max = v;
     }
-    if (t >= m->end - 0.2) {
+    if (t >= m->end - UR5_PLANT_STEADY_WINDOW_MS / 1000.0) {
         m->sum_fe += Fd - F;
         m->sum_ve += vd - v;
         ++m->n_last;
@@ -94,7 +94,7 @@ static void metrics_row(metrics *m, const double *s, long i, double h) {
     if (contact && m->touch < 0) {
         m->touch = i;
         m->fd0 = Fd;
-        m->t_band = 0.05 * fabs(Fd);
+        m->t_band = UR5_PLANT_TOUCH_BAND_PERCENT / 100.0 * fabs(Fd);
         m->w_end = m->fa != m->fb && m->fat > t ? m->fat : INFINITY;
     }
     if (m->touch >= 0 && t < m->w_end) {
@@ -111,39 +111,38 @@ static void metrics_torque(metrics *m, const double *tau) {
     }
 }
 
+/* the run's metrics, in the order and under the names the plant's header declares (hybrid.metrics') */
 static void metrics_print(const metrics *m, double h) {
     const double step = m->fa - m->fb, sgn = step >= 0 ? 1.0 : -1.0;
-    double overshoot = NAN, percent = NAN, settling = NAN, drop = NAN, dev = NAN, v_over = NAN;
+    double out[UR5_PLANT_NMETRICS];
     int j;
+    for (j = 0; j < UR5_PLANT_NMETRICS; ++j) out[j] = NAN;
     if (m->n_f > 0 && m->fa != m->fb) {
-        overshoot = (sgn * m->peak - m->fa) * sgn;
-        percent = 100 * overshoot / fabs(step);
-        settling = m->last_out_f < 0 ? 0.0
-                 : m->last_out_f == m->last_f ? NAN : (double)(m->last_out_f + 1) * h - (double)m->first_f * h;
-        drop = m->drop;
+        out[UR5_PLANT_METRIC_FORCE_OVERSHOOT_N] = (sgn * m->peak - m->fa) * sgn;
+        out[UR5_PLANT_METRIC_FORCE_OVERSHOOT_PERCENT] = 100 * out[UR5_PLANT_METRIC_FORCE_OVERSHOOT_N] / fabs(step);
+        out[UR5_PLANT_METRIC_FORCE_SETTLING_TIME_2PCT_S] = m->last_out_f < 0 ? 0.0
+            : m->last_out_f == m->last_f ? NAN : (double)(m->last_out_f + 1) * h - (double)m->first_f * h;
+        out[UR5_PLANT_METRIC_SPEED_DROP_AFTER_FORCE_STEP_M_PER_S] = m->drop;
     }
     if (m->n_v > 0 && m->va != m->vb) {
-        dev = m->dev;
-        v_over = m->v_max - m->va;
+        out[UR5_PLANT_METRIC_FORCE_DEVIATION_AFTER_SPEED_STEP_N] = m->dev;
+        out[UR5_PLANT_METRIC_SPEED_OVERSHOOT_AFTER_SPEED_STEP_M_PER_S] = m->v_max - m->va;
     }
-    printf("force_overshoot_N %.17g\n", overshoot);
-    printf("force_overshoot_percent %.17g\n", percent);
-    printf("force_settling_time_2pct_s %.17g\n", settling);
-    printf("speed_drop_after_force_step_m_per_s %.17g\n", drop);
-    printf("force_deviation_after_speed_step_N %.17g\n", dev);
-    printf("speed_overshoot_after_speed_step_m_per_s %.17g\n", v_over);
-    printf("steady_state_force_error_N %.17g\n", m->sum_fe / (double)m->n_last);
-    printf("steady_state_speed_error_m_per_s %.17g\n", m->sum_ve / (double)m->n_last);
-    printf("rms_force_error_N %.17g\n", sqrt(m->sum_f2 / (double)m->rows));
-    printf("rms_speed_error_m_per_s %.17g\n", sqrt(m->sum_v2 / (double)m->rows));
-    printf("max_penetration_m %.17g\n", m->pen);
-    printf("contact_losses %ld\n", m->losses);
-    printf("time_out_of_contact_s %.17g\n", m->t_out);
-    printf("first_touch_time_s %.17g\n", m->touch < 0 ? NAN : (double)m->touch * h);
-    printf("first_touch_overshoot_N %.17g\n", m->touch < 0 ? NAN : m->t_peak - m->fd0);
-    printf("first_touch_settling_s %.17g\n", m->touch < 0 ? NAN : m->t_last_out < 0 ? 0.0
-           : m->t_last_out == m->t_last ? NAN : (double)(m->t_last_out + 1) * h - (double)m->touch * h);
-    for (j = 0; j < UR5_PLANT_NQ; ++j) printf("peak_torque_joint%d_Nm %.17g\n", j + 1, m->tau[j]);
+    out[UR5_PLANT_METRIC_STEADY_STATE_FORCE_ERROR_N] = m->sum_fe / (double)m->n_last;
+    out[UR5_PLANT_METRIC_STEADY_STATE_SPEED_ERROR_M_PER_S] = m->sum_ve / (double)m->n_last;
+    out[UR5_PLANT_METRIC_RMS_FORCE_ERROR_N] = sqrt(m->sum_f2 / (double)m->rows);
+    out[UR5_PLANT_METRIC_RMS_SPEED_ERROR_M_PER_S] = sqrt(m->sum_v2 / (double)m->rows);
+    out[UR5_PLANT_METRIC_MAX_PENETRATION_M] = m->pen;
+    out[UR5_PLANT_METRIC_CONTACT_LOSSES] = (double)m->losses;
+    out[UR5_PLANT_METRIC_TIME_OUT_OF_CONTACT_S] = m->t_out;
+    if (m->touch >= 0) {
+        out[UR5_PLANT_METRIC_FIRST_TOUCH_TIME_S] = (double)m->touch * h;
+        out[UR5_PLANT_METRIC_FIRST_TOUCH_OVERSHOOT_N] = m->t_peak - m->fd0;
+        out[UR5_PLANT_METRIC_FIRST_TOUCH_SETTLING_S] = m->t_last_out < 0 ? 0.0
+            : m->t_last_out == m->t_last ? NAN : (double)(m->t_last_out + 1) * h - (double)m->touch * h;
+    }
+    for (j = 0; j < UR5_PLANT_NQ; ++j) out[UR5_PLANT_METRIC_PEAK_TORQUE + j] = m->tau[j];
+    for (j = 0; j < UR5_PLANT_NMETRICS; ++j) printf("%s %.17g\n", ur5_plant_metric_name(j), out[j]);
 }
 
 /* one row of the record: t, x, the torque acting from t on */
