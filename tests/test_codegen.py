@@ -11,7 +11,9 @@ from pathlib import Path
 import pytest
 from hybrid.codegen import emit
 
+import hybrid
 from hybrid.cli import regenerate
+from hybrid.simulation.closed_loop import loop_of
 from hybrid.spec import stamp
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -74,3 +76,11 @@ def test_regenerate_refuses_to_overwrite_hand_edits(tmp_path):
     assert proc.returncode == 2 and "--force" in proc.stderr and path.read_text() == edited
     assert regenerate.write(target, force=True) == ["hybrid_casadi.c"]
     assert not stamp.is_hand_edited(path.read_text())
+
+
+def test_the_committed_loops_cover_every_scheme_of_the_paper():
+    """A scheme added to the registry has its paper loop committed (``hybrid/data/committed_loops.toml``
+    names it), so ``hybrid paper`` and ``simulate`` of the paper's experiment never generate at first use."""
+    committed = {(plant, tuple(sorted(variant.items()))) for plant, variant, _ in regenerate.committed_loops()}
+    for scheme in hybrid.SCHEMES:
+        assert loop_of(hybrid.paper_experiment(controller=scheme)) in committed, scheme
