@@ -108,7 +108,7 @@ def test_statuses_have_one_number_and_one_name_everywhere(tmp_path):
     codes = [s.code for s in STATUSES]
     assert len(set(codes)) == len(codes) and len({s.name for s in STATUSES}) == len(STATUSES)
     # the committed units' C macros
-    for header in (ROOT / "generated").glob("*.h"):
+    for header in (m.with_suffix(".h") for m in (ROOT / "generated").glob("*.json")):  # each unit's header
         macros = dict(re.findall(r"#define HYBRID_(\w+) (\d+)", header.read_text()))
         assert {k: int(v) for k, v in macros.items() if k in STATUS_CODES} == \
             {k: STATUS_CODES[k] for k in KERNEL_STATUSES}, header.name

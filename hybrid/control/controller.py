@@ -312,6 +312,7 @@ class Controller:
         self._held = [np.zeros(sizes[n]) for n in held]
         self._at = {n: i for i, n in enumerate(held)}
         self._t, self._last = self._held[self._at["t"]], self._held[self._at["last_torque"]]
+        self._z, self._estimate = self._held[self._at["integrals"]], self._held[self._at["estimate"]]
         self._extra, self._rate, self._target = (self._held[self._at[n]] for n in self._reference_inputs)
         self._clock = None  # the last sample's time
         self._fc = np.zeros(sizes["Fc"])
@@ -323,6 +324,10 @@ class Controller:
         self._rates = [(i, ref.rate) for i, ref in enumerate(self._references) if ref.rate is not None]
         # with references all steps and no path, the per-sample inputs end at t: the rest is bound
         self._short = not (self._varying or self._rates or path)
+        # what a call passes after q, qdot, Fc: the references are bound instead where they stay zero
+        refs = len(self._reference_inputs) if self._short else 0
+        self._bound_refs = self._held[len(self._held) - refs:]
+        del self._held[len(self._held) - refs:]
         # the compiled step is built at the first sample (a run of the compiled closed loop never needs it)
         self._binding = None
         self._sampled = False
@@ -334,11 +339,15 @@ class Controller:
         self._step, self._measure = unit.function(self._step_name), unit.function("task_measurement")
         CONTROLLER_STEP.check_manifest(self._step.entry, self._dims)
         self._into = self._step.unit.fast().call_into
-        # outputs written in place, in the declaration's order
-        self._out = [np.empty(size) for _, size, _ in self._step.outputs]
-        names = [name for name, _, _ in self._step.outputs]
-        self._advance = [(self._at[k], names.index(v)) for k, v in _ADVANCED.items()]
-        self._integrals = self._at["integrals"], names.index(STATE_NEXT["integrals"])
+        # outputs written in place, in the declaration's order; a state's next value is written into the state
+        # itself (the call reads every input before it writes an output), the integrals' only on a sample on
+        # time (else into a scratch array: they stay as they were)
+        into = {STATE_NEXT[s]: self._held[self._at[s]] for s in _ADVANCED}
+        self._out_off_time = [into.get(name) if name in into else np.empty(size)
+                              for name, size, _ in self._step.outputs]
+        integrals = STATE_NEXT["integrals"]
+        self._out = [self._held[self._at["integrals"]] if name == integrals else o
+                     for (name, _, _), o in zip(self._step.outputs, self._out_off_time)]
         self._bind()
 
     # ----------------------------------------------------------------- settings
@@ -354,10 +363,8 @@ class Controller:
         step is built)."""
         if not hasattr(self, "_step"):
             return
-        refs = len(self._reference_inputs) if self._short else 0
-        n_state = len(CONTROLLER_STEP.per_sample) - refs
-        self._n_held = len(self._held) - refs  # what a call passes: the references are bound when short
-        _, self._binding = self._step.fast_bind(n_state, *self._held[len(self._held) - refs:], *self._params,
+        n_state = len(CONTROLLER_STEP.per_sample) - len(self._bound_refs)
+        _, self._binding = self._step.fast_bind(n_state, *self._bound_refs, *self._params,
                                                 singular_tol=self.singular_tol)
 
     def set_wrench_sensor(self, sensor: WrenchSensor) -> None:
@@ -526,16 +533,6 @@ class Controller:
             self._last[:-1], self._last[-1] = tau, 1.0
 
     @property
-    def _z(self) -> np.ndarray:
-        """The loops' integrals (the buffer the next sample reads)."""
-        return self._held[self._at["integrals"]]
-
-    @property
-    def _estimate(self) -> np.ndarray:
-        """An estimated surface's state (the buffer the next sample reads)."""
-        return self._held[self._at["estimate"]]
-
-    @property
     def state(self) -> np.ndarray:
         """The loops' integrals, one row per task axis: ``(int e, int int e)`` (a copy)."""
         return self._z.reshape(-1, 2).copy()
@@ -585,24 +582,21 @@ class Controller:
         clock, timing = self._clock, self._timing(t)
         if self._binding is None:
             self._native()
-        out, held = self._out, self._held
+        # off the clock: the law's torque, the integrals as they were (the filter and the estimate advance on
+        # every sample the law serves)
+        out = self._out if timing is None else self._out_off_time
         if not self._short:
             self._python_references(t)
             if self.path is not None:
                 self._target[:] = self._desired(t)
-        done = self._into(self._binding, out, q, qdot, Fc, *held[:self._n_held])
+        done = self._into(self._binding, out, q, qdot, Fc, *self._held)
         if done is None:
-            self._checked(q, qdot, Fc)
+            self._checked(q, qdot, Fc, out)
         self._tick(t)
         self._last[:-1], self._last[-1] = out[0], 1.0
-        for i, k in self._advance:  # the filter and the estimate advance on every sample the law served
-            held[i], out[k] = out[k], held[i]
         self._sampled = True
-        if timing is not None:  # the law's torque, the integrals as they were
+        if timing is not None:
             raise SampleTimingError(timing, t, clock, self.sample_time, out[0].copy())
-        # the integrals' two buffers trade places: no copy
-        i, k = self._integrals
-        held[i], out[k] = out[k], held[i]
         return out[0].copy()
 
     def _timing(self, t: float) -> str | None:
@@ -657,7 +651,7 @@ class Controller:
         phi = _vector("path angles", got[2], 3) if len(got) == 3 else np.zeros(3)
         return np.concatenate([_vector("path point", got[0], d), _vector("path velocity", got[1], d), phi])
 
-    def _checked(self, q, qdot, Fc) -> None:
+    def _checked(self, q, qdot, Fc, out: list) -> None:
         """The general path: any array-like input, and the error that names the cause. A sample the
         law fails on (its inputs fine) still moves the sample clock, as the generated C's does."""
         t = self._t[0]
@@ -677,12 +671,13 @@ class Controller:
             raise HybridError(f"the references at t = {t} s are not finite; give references that return finite "
                               f"numbers\n  values {self._extra}, rates {self._rate}, desired point {self._target}")
         try:
-            got = self._step(q, qdot, Fc, *self._held, *self._params, singular_tol=self.singular_tol)
+            got = self._step(q, qdot, Fc, *self._held, *self._bound_refs, *self._params,
+                             singular_tol=self.singular_tol)
         except HybridError:
             if inputs_finite:
                 self._tick(t)
             raise
-        for (name, _, _), o in zip(self._step.outputs, self._out):
+        for (name, _, _), o in zip(self._step.outputs, out):
             o[:] = got[name].ravel()
 
     def measure(self, q, qdot, Fc) -> Measurement:
