@@ -84,8 +84,9 @@ CONTROLLER_STEP = Interface(
              "position error)", REFERENCE, ("p_x", "p_y", "p_z", "pd_x", "pd_y", "pd_z", "alpha", "beta", "gamma")),
         Port("steps", "3*m", "as yd_extra, then s", "the references' steps per axis: before, after, at",
              PARAMETER, PerAxis(("before", "after", "at"))),
-        Port("gains", "4*m", "per axis KP, KI, KI2, KD (see codegen/controller_step.py)",
-             "the loops' gains per axis (LOOP_GAINS)", PARAMETER, PerAxis(LOOP_GAINS)),
+        Port("gains", "4*m", "per axis KP, KI, KI2, KD: hybrid.Gains' KPv, KIv, KI2v, 0 on a velocity axis and "
+             "KPf, KIf, 0, KDf on a force axis", "the loops' gains per axis (LOOP_GAINS)", PARAMETER,
+             PerAxis(LOOP_GAINS)),
         Port("selection", "m", "1 (1: force-controlled axis)", "1 on a force-controlled axis", PARAMETER,
              Named("axes")),
         Port("robot", "robot", "per parameter", "the controller's model of the arm", PARAMETER, Named("robot")),
