@@ -30,10 +30,10 @@ import sympy as sp
 from hybrid.spec.controller_step import CONTROLLER_STEP
 from hybrid.spec.metrics import METRIC_NAMES, SETTLING_BAND, STEADY_WINDOW_S, TOUCH_BAND, metric_names
 
-from .emit import Unit, comment_safe, manifest, stamp, status_defines
+from .emit import STATUS, Unit, comment_safe, manifest, stamp
 from .kernel import Arg, Kernel
 from .lanes import INCLUDE, LANES_HEADER, lanes_function, libm_maps
-from .templates import render
+from .templates import macro, render
 
 #: the record columns the loop reads besides the force: normal force, tangential speed, penetration and
 #: the surface's normal force (``hybrid.metrics``' force_normal, velocity_tangential, penetration,
@@ -208,7 +208,7 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
     body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py; it includes "
             f"{LANES_HEADER} (in generated/: compile with -I there). */\n"
             "#if !defined(__GNUC__)\n#error \"the compiled closed loop needs GCC or Clang (vector extensions)\"\n"
-            f"#endif\n{width}\n{INCLUDE}\n{status_defines()}\n\n{libm_maps()}\n"
+            f"#endif\n{width}\n{INCLUDE}\n{macro('unit_common.c.j2', 'status_defines')(STATUS)}\n\n{libm_maps()}\n"
             f"{PARTS}\n{_STAGE.format(small=int(stages.count(chr(10)) <= _INLINE_LINES))}\n{stages}"
             f"{lanes_function(spec.outputs, 'plant_outputs_lanes', shown, 'HL_APART', apart=True)}\n"
             f"{lanes_function(spec.step, spec.step.name + '_lanes', params, 'HL_APART', apart=True)}\n"
