@@ -1,5 +1,5 @@
 """The C templates (``codegen/templates/``): each renders, strictly, for the paper's arm and the UR5; the
-standalone C they render compiles warning-free; the standalone units' modules build only the context.
+standalone C they render compiles warning-free; the units' modules build only the context.
 
 The units are generated in a fresh cache (the generator runs, nothing is read back from an earlier run).
 """
@@ -152,7 +152,7 @@ def test_the_c_finder_finds_c_in_python():
                    'JOIN = "\\n".join\nTITLE = "# if it runs\\nit is fine"\n') == []
 
 
-@pytest.mark.parametrize("module", ["standalone_controller", "standalone_plant", "emit", "robot_unit"])
+@pytest.mark.parametrize("module", ["standalone_controller", "standalone_plant", "emit", "closed_loop", "robot_unit"])
 def test_the_units_python_holds_no_c(module):
     path = templates.FOLDER.parent / f"{module}.py"
     found = c_texts(path.read_text())
