@@ -30,9 +30,9 @@ import sympy as sp
 from hybrid.spec.controller_step import CONTROLLER_STEP
 from hybrid.spec.metrics import METRIC_NAMES, SETTLING_BAND, STEADY_WINDOW_S, TOUCH_BAND, metric_names
 
-from .emit import Unit, comment_safe, manifest, stamp, status_defines
+from .emit import STATUS, Unit, comment_safe, manifest, stamp
 from .kernel import Arg, Kernel
-from .lanes import INCLUDE, LANES_HEADER, lanes_function, libm_maps
+from .lanes import LANES_HEADER, lanes_function, libm_maps
 from .templates import render
 
 #: the record columns the loop reads besides the force: normal force, tangential speed, penetration and
@@ -106,20 +106,8 @@ def _parameters(step: Kernel) -> list[Arg]:
     return [a for a in step.inputs if a.name in CONTROLLER_STEP.parameters]
 
 
-#: what the loop gives the step's inputs that change at every sample (the others are zero: the plant's sensor
-#: gives the wrench on the robot itself and the surface is told, so no filter and no estimate run, and every
-#: reference is a step)
-_DRIVEN = {"q": "x", "qd": "x + {nq}", "Fc": "fc", "integrals": "z", "last_torque": "last", "t": "tv"}
-
-
-def _signature(prefix: str) -> str:
-    return (f"int {prefix}_closed_loop(int nruns, const double *runs, int n_samples, int steps_per_sample, "
-            "double h, double sample_time, double singular_tol, double *metrics, int *status, "
-            "int *failed_sample, double *states, double *taus, double *outputs)")
-
-
-def _driver(prefix: str, spec: LoopSpec, stepping: Kernel) -> str:
-    """The loop's driver (``templates/closed_loop.c.j2``) for ``spec``: the context is where each block of a
+def _driver(spec: LoopSpec, stepping: Kernel) -> dict:
+    """The context of the loop's driver (``templates/closed_loop.c.j2``) for ``spec``: where each block of a
     run's row starts, the kernels' arguments and the metrics' places."""
     rhs, step = spec.rhs, spec.step
     nx, nq = rhs.inputs[0].size, rhs.inputs[1].size
@@ -130,57 +118,26 @@ def _driver(prefix: str, spec: LoopSpec, stepping: Kernel) -> str:
     nf = len(spec.force_columns)
     names = spec.outputs.outputs[0].names
     force, signals = ([names.index(c) for c in cols] for cols in (spec.force_columns, stepping.outputs[1].names))
-    plant = {a.name: f"blk + {offset['plant.' + a.name]}" for a in (*rhs.inputs[2:], *spec.outputs.inputs[1:])}
-    per_sample = [a for a in step.inputs if a.name in CONTROLLER_STEP.per_sample]
-    return render(
-        "closed_loop.c.j2", prefix=prefix, signature=_signature(prefix), step=step, outs=step.core_outputs(),
+    plant = {a.name: offset["plant." + a.name] for a in (*rhs.inputs[2:], *spec.outputs.inputs[1:])}
+    return dict(
+        step=step, outs=step.core_outputs(),
         guards=step.guards, nx=nx, nq=nq, nb=at, m=step.inputs[3].size // 2, ns=nf + len(SIGNALS),
         nm=len(metric_names(nq)), ny=stepping.outputs[2].size, force=force, signals=signals,
         iF=nf, iv=nf + 1, ipen=nf + 2, iN=nf + 3, fs=offset["force_step"], vs=offset["speed_step"], x0=offset["x0"],
-        # the run's arrays each kernel holds fixed, then where its values computed once go
-        held=[*(plant[a.name] for a in rhs.inputs[2:]), "pre_rhs"],
-        shown=[*(plant[a.name] for a in spec.outputs.inputs[1:]), "pre_out"],
-        both=[*(plant[a.name] for a in stepping.inputs[2:]), "pre_both"],
-        params=[*(f"blk + {offset['controller.' + a.name]}" for a in _parameters(step)), "pre_step"],
-        driven=[_DRIVEN.get(a.name, "zero").format(nq=nq) for a in per_sample],
-        nzero=max(a.size for a in per_sample if a.name not in _DRIVEN),
+        # where the run's arrays each kernel holds fixed start in its row
+        held=[plant[a.name] for a in rhs.inputs[2:]], shown=[plant[a.name] for a in spec.outputs.inputs[1:]],
+        both=[plant[a.name] for a in stepping.inputs[2:]],
+        params=[offset["controller." + a.name] for a in _parameters(step)],
+        per_sample=[a for a in step.inputs if a.name in CONTROLLER_STEP.per_sample],
         M={name: i for i, name in enumerate(METRIC_NAMES)}, settling_band=repr(SETTLING_BAND),
         steady_window_s=repr(STEADY_WINDOW_S), touch_band=repr(TOUCH_BAND))
 
 
-#: a small RK4 stage is inlined into the loop where lanes are many (measured on the paper's plant: 10 %
-#: faster with 8 lanes, 8 % slower with one, where the loop is bound by latency, not throughput); a large
-#: one is not (the UR5's: the same speed, twice the compile time)
-#: and a row's metrics likewise (the paper's: 4 % faster with 8 lanes; with the two of a run alone the
-#: same speed, and a tenth of a second longer to compile on a first run)
-_STAGE = """#if HL_W > 1 && {small}
-#define HL_STAGE static inline __attribute__((always_inline))
-#else
-#define HL_STAGE static
-#endif
-#if HL_W > 2
-#define HL_ROW static inline __attribute__((always_inline))
-#else
-#define HL_ROW static
-#endif"""
-#: the most lines of C the two stage functions may have to be inlined (the paper's plant: about 900; the
-#: UR5's: about 11,000)
+#: the most lines of C the two stage functions may have to be inlined into the loop where lanes are many
+#: (``templates/closed_loop_unit.c.j2``'s HL_STAGE; the paper's plant: about 900; the UR5's: about 11,000)
 _INLINE_LINES = 3000
-
-
-#: a unit compiled in two parts at once, one compiler each (``-DHL_PART=1`` and ``-DHL_PART=2``, linked
-#: together, with a binding compiled as ``-DHL_PART=0``, which only declares: :mod:`hybrid.native.build`):
-#: the second holds the functions the loop calls out of line (the plant's output record, the controller
-#: step, what a run computes once, the exact functions' pass), the first the loop with its stages inlined.
-#: A first run waits for the longer part, not for the whole. Without ``HL_PART`` it is one unit as any other.
-PARTS = """#ifdef HL_PART
-#define HL_APART __attribute__((visibility("hidden")))
-#define HL_IN_PART(n) (HL_PART == (n))
-#else
-#define HL_APART static
-#define HL_IN_PART(n) 1
-#endif"""
-#: the parts the manifest's ``parts`` names
+#: the parts a unit compiles in at once, one compiler each (``templates/closed_loop_unit.c.j2``'s HL_PART;
+#: :mod:`hybrid.native.build`), as the manifest's ``parts`` names them
 N_PARTS = 2
 
 
@@ -195,40 +152,24 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
                            lanes: int | None = None) -> Unit:
     """C source, header and manifest of the closed loop ``spec``, deterministic in its inputs; ``lanes``
     fixes the lane count instead of the instruction set's, and 1 is the build for one run at a time (as
-    fast as one run goes: :data:`ONE_RUN_LANES` lanes, each the same run)."""
+    fast as one run goes: :data:`ONE_RUN_LANES` lanes, each the same run). The C is
+    ``templates/closed_loop_unit.c.j2`` (which includes the driver, ``closed_loop.c.j2``) and
+    ``closed_loop_unit.h.j2``'s; the lanes functions in it are :func:`codegen.lanes.lanes_function`'s."""
     nq = spec.rhs.inputs[1].size
     rhs = Kernel("plant_rhs", spec.rhs.inputs, spec.rhs.outputs, spec.rhs.doc)
     held = tuple(a.name for a in spec.rhs.inputs[2:])
     shown = tuple(a.name for a in spec.outputs.inputs[1:])
     params = tuple(a.name for a in _parameters(spec.step))
     stepping = stepping_kernel(spec)
-    stages = "".join(lanes_function(k, name, fixed, "HL_STAGE", near=nq, apart=True) + "\n" for k, name, fixed in (
-        (rhs, "plant_rhs_lanes", held), (stepping, "plant_rhs_signals_lanes", held + shown)))
-    width = f"#define HL_W {ONE_RUN_LANES if lanes == 1 else lanes}" if lanes else ""
-    body = (f"/* {prefix}: {comment_safe(what)}.\n   Emitted by hybrid's codegen/closed_loop.py; it includes "
-            f"{LANES_HEADER} (in generated/: compile with -I there). */\n"
-            "#if !defined(__GNUC__)\n#error \"the compiled closed loop needs GCC or Clang (vector extensions)\"\n"
-            f"#endif\n{width}\n{INCLUDE}\n{status_defines()}\n\n{libm_maps()}\n"
-            f"{PARTS}\n{_STAGE.format(small=int(stages.count(chr(10)) <= _INLINE_LINES))}\n{stages}"
-            f"{lanes_function(spec.outputs, 'plant_outputs_lanes', shown, 'HL_APART', apart=True)}\n"
-            f"{lanes_function(spec.step, spec.step.name + '_lanes', params, 'HL_APART', apart=True)}\n"
-            f"#if HL_IN_PART(1)\n{_driver(prefix, spec, stepping)}#else\n{_signature(prefix)};\n"
-            f"int {prefix}_lanes(void);\n#endif\n")
-    doc = ("run nruns closed loops (rows of runs, blocks as the manifest's closed_loop.blocks), HL_W at a time: "
-           "n_samples control samples of sample_time [s], steps_per_sample RK4 steps of h [s] each; writes "
-           "metrics (nruns x closed_loop.metrics), status and failed_sample (-1, or the sample where a run "
-           "stopped) per run, and states, taus and the output record (closed_loop.outputs) per step when not NULL "
-           "(nruns x rows x size)")
-    header = f"""#ifndef {prefix.upper()}_H
-#define {prefix.upper()}_H
-/* cdef-begin */
-/* {doc}. */
-{_signature(prefix)};
-/* the runs per group: HL_W lanes (8 with AVX-512, 4 with AVX, else 2) */
-int {prefix}_lanes(void);
-/* cdef-end */
-#endif
-"""
+    stages = [lanes_function(k, name, fixed, "HL_STAGE", near=nq, apart=True) for k, name, fixed in (
+        (rhs, "plant_rhs_lanes", held), (stepping, "plant_rhs_signals_lanes", held + shown))]
+    lines = sum(stage.count("\n") + 1 for stage in stages)
+    body = render("closed_loop_unit.c.j2", **_driver(spec, stepping), prefix=prefix, what=what, comment=comment_safe,
+                  width=ONE_RUN_LANES if lanes == 1 else lanes, lanes_header=LANES_HEADER, status=STATUS,
+                  libm_maps=libm_maps(), small=int(lines <= _INLINE_LINES), stages=stages,
+                  outputs_lanes=lanes_function(spec.outputs, "plant_outputs_lanes", shown, "HL_APART", apart=True),
+                  step_lanes=lanes_function(spec.step, spec.step.name + "_lanes", params, "HL_APART", apart=True))
+    header = render("closed_loop_unit.h.j2", prefix=prefix)
     loop = {"symbol": f"{prefix}_closed_loop", "lanes_symbol": f"{prefix}_lanes",
             "blocks": [{"name": n, "size": s} for n, s in blocks(spec)],
             "state": list(spec.rhs.inputs[0].names or ()), "nx": spec.rhs.inputs[0].size, "nq": nq,

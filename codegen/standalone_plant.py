@@ -11,7 +11,7 @@ initial state ``x0`` that ``<prefix>_reset`` restores. Its functions:
   the tip (base axes; six numbers, the moment 0 and a planar arm's z force 0), what the controller's
   step takes;
 - ``<prefix>_advance(&p, tau, nsteps)``: ``nsteps`` classical RK4 steps of ``h`` with the torque held
-  (the formula of :func:`codegen.emit.rk4_step`, the one every integrator of the project takes);
+  (the formula of ``templates/rk4.c.j2``, the one every integrator of the project takes);
 - ``<prefix>_signals(&p, s)``: the record columns the metrics read (normal force, tangential speed,
   penetration, the surface's normal force: :data:`codegen.closed_loop.SIGNALS`);
 - ``<prefix>_outputs(&p, y)``: the plant's whole output record at ``x``;

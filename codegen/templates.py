@@ -1,7 +1,9 @@
 """The C templates (``codegen/templates/``) and the one environment that renders them.
 
-The hand-written C the generator emits around the kernels (the closed loop's driver, the RK4 step every
-integrator takes) lives in template files, as C with Jinja placeholders; Python builds only their context.
+The hand-written C the generator emits around the kernels (a unit's entry points and header, the closed
+loop's driver, the RK4 step every integrator takes, the standalone units) lives in template files, as C
+with Jinja placeholders; Python builds only their context (the printers of :mod:`codegen.sympy_backend`,
+:mod:`codegen.casadi_backend` and :mod:`codegen.lanes` give the kernels' bodies).
 Blocks' tags take their line with them (``trim_blocks``, ``lstrip_blocks``), so a template reads as the C it
 renders; an undefined name is an error, never an empty string.
 """

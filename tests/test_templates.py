@@ -1,5 +1,5 @@
 """The C templates (``codegen/templates/``): each renders, strictly, for the paper's arm and the UR5; the
-standalone C they render compiles warning-free; the standalone units' modules build only the context.
+standalone C they render compiles warning-free; the units' modules build only the context.
 
 The units are generated in a fresh cache (the generator runs, nothing is read back from an earlier run).
 """
@@ -7,13 +7,14 @@ The units are generated in a fresh cache (the generator runs, nothing is read ba
 from __future__ import annotations
 
 import ast
+import re
 import shutil
 import subprocess
 from pathlib import Path
 
 import jinja2
 import pytest
-from hybrid.codegen import closed_loop, templates
+from hybrid.codegen import closed_loop, robot_unit, templates
 
 import hybrid
 from hybrid.native import standalone, units
@@ -27,7 +28,8 @@ SPHERE = hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15)
 @pytest.fixture(scope="module")
 def rendered(tmp_path_factory):
     """Every template the generator loads while it writes the paper's closed loop, its standalone controller
-    and plant, and the UR5's standalone controller with and without a wrench sensor; and those units' files."""
+    and plant, the UR5's standalone controller with and without a wrench sensor and its plant's unit; and
+    those units' files."""
     mp = pytest.MonkeyPatch()
     mp.setenv("HYBRID_CACHE_DIR", str(tmp_path_factory.mktemp("cache")))
     env, loaded = templates.environment(), []
@@ -42,6 +44,8 @@ def rendered(tmp_path_factory):
         exp = hybrid.paper_experiment()
         spec = units.loop_spec(exp.plant_class.loop_plant(exp), exp.build_controller().step_variant())
         loop = closed_loop.build_closed_loop_unit(spec, "paper_loop", "the paper's closed loop", {})
+        ur5 = hybrid.ur5().chain
+        unit = robot_unit.build_plant_unit(ur5, SPHERE.spec(), "ur5_plant", units.robot_info(ur5, "ur5"))
         files = standalone.controller_files(exp.build_controller(), "paper", "paper_controller")
         files |= standalone.plant_files(exp, "paper_plant", exp.initial_state())
         for name, sensor in (("ur5", None), ("ur5_sensor", hybrid.WrenchSensor(position=(0.01, -0.02, 0.05),
@@ -50,11 +54,11 @@ def rendered(tmp_path_factory):
             files |= standalone.controller_files(hybrid.Controller(hybrid.ur5(), SPHERE, wrench_sensor=sensor), name)
     finally:
         mp.undo()
-    return set(loaded), files, loop
+    return set(loaded), files, loop, unit
 
 
 def test_every_template_renders_strictly(rendered):
-    loaded, files, loop = rendered
+    loaded, files, loop, unit = rendered
     on_disk = {p.name for p in templates.FOLDER.iterdir() if p.suffix == ".j2"}
     assert on_disk == loaded, f"templates never rendered: {sorted(on_disk - loaded)}"
     assert templates.environment().undefined is jinja2.StrictUndefined
@@ -62,13 +66,13 @@ def test_every_template_renders_strictly(rendered):
     with pytest.raises(jinja2.UndefinedError):  # a field without its doc
         templates.macro("standalone_common.c.j2", "array_field")({"name": "x", "size": 1, "unit": "1", "names": []},
                                                                  str)
-    for text in (*files.values(), loop.files["paper_loop.c"]):
+    for text in (*files.values(), *loop.files.values(), *unit.files.values()):
         assert "{{" not in text and "{%" not in text and "{#" not in text
 
 
 @pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")
 def test_the_rendered_standalone_c_compiles_warning_free(rendered, tmp_path):
-    _, files, _ = rendered
+    files = rendered[1]
     for name, text in files.items():
         (tmp_path / name).write_text(text)
     sources = sorted(n for n in files if n.endswith(".c"))
@@ -81,10 +85,14 @@ def test_the_rendered_standalone_c_compiles_warning_free(rendered, tmp_path):
 
 # ------------------------------------------------------------------ no C in the units' Python
 
+#: a line of the C preprocessor's
+DIRECTIVE = re.compile(r"^\s*#(if|ifdef|ifndef|elif|else|endif|define|undef|include|error|pragma)\b", re.MULTILINE)
+
+
 def c_texts(source: str) -> list[tuple[int, str]]:
-    """The string literals of the Python ``source`` that hold C spanning lines (a newline and a ``;``, or a
-    brace starting or ending a line), with their line numbers: an f-string's literal parts count, docstrings
-    do not."""
+    """The string literals of the Python ``source`` that hold C spanning lines (a newline and a ``;``, a
+    brace starting or ending a line, or a preprocessor directive), with their line numbers: an f-string's
+    literal parts count, docstrings do not."""
     tree = ast.parse(source)
     docs = {id(node.body[0].value) for node in ast.walk(tree)
             if isinstance(node, (ast.Module, ast.FunctionDef, ast.ClassDef)) and node.body
@@ -99,14 +107,14 @@ def c_texts(source: str) -> list[tuple[int, str]]:
         else:
             continue
         lines = text.split("\n")
-        if len(lines) > 1 and (";" in text or any(s.strip().startswith(("{", "}")) or s.rstrip().endswith("{")
-                                                  for s in lines)):
+        if len(lines) > 1 and (";" in text or DIRECTIVE.search(text)
+                               or any(s.strip().startswith(("{", "}")) or s.rstrip().endswith("{") for s in lines)):
             found.append((node.lineno, text))
     return found
 
 
-#: C written in Python as the standalone units once were: a header in a triple-quoted f-string, a block
-#: joined from f-strings, a function from implicitly joined literals
+#: C written in Python as the units once were: a header in a triple-quoted f-string, a block joined from
+#: f-strings, a function from implicitly joined literals, preprocessor lines alone
 OLD_STYLE = '''
 """A module."""
 
@@ -128,17 +136,24 @@ def header(P, prefix):
 void {prefix}_init({prefix} *p);
 #endif
 """
+
+
+PARTS = """#ifdef HL_PART
+#define HL_IN_PART(n) (HL_PART == (n))
+#else
+#define HL_IN_PART(n) 1
+#endif"""
 '''
 
 
 def test_the_c_finder_finds_c_in_python():
-    assert [line for line, _ in c_texts(OLD_STYLE)] == [7, 12, 17]
+    assert sorted(line for line, _ in c_texts(OLD_STYLE)) == [7, 12, 17, 24]
     assert c_texts('"""Docs: x = {1};\nmore."""\nMESSAGE = "a wrench has six numbers; give six"\n'
-                   'JOIN = "\\n".join\n') == []
+                   'JOIN = "\\n".join\nTITLE = "# if it runs\\nit is fine"\n') == []
 
 
-@pytest.mark.parametrize("module", ["standalone_controller", "standalone_plant"])
-def test_the_standalone_units_python_holds_no_c(module):
+@pytest.mark.parametrize("module", ["standalone_controller", "standalone_plant", "emit", "closed_loop", "robot_unit"])
+def test_the_units_python_holds_no_c(module):
     path = templates.FOLDER.parent / f"{module}.py"
     found = c_texts(path.read_text())
     assert not found, f"C text in {path.name} at lines {[line for line, _ in found]}: move it into a template"
