@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from hybrid.native import compiler
+from hybrid.native import compiler, generator
 
 #: calls of a run through ``simulate`` before it is timed: in a fresh process the first is about twice
 #: as slow (the C library's allocator maps the record's memory afresh, page by page) and the next ten a
@@ -101,7 +101,8 @@ def c_harness_ns(src_dir: Path, prefix: str, entry: dict, values: dict, calls: i
         main.write_text(harness_source(prefix, entry, values))
         exe = Path(tmp) / "bench"
         flags = [f for f in compiler.flags(ident) if f != "-fPIC"]
-        subprocess.run([cc, *flags, f"-I{src_dir}", str(main), str(src_dir / f"{prefix}.c"),
-                        "-o", str(exe), "-lm"], check=True, capture_output=True)
+        # the unit's folder, and the generator's headers (the SIMD lanes' header a unit includes)
+        subprocess.run([cc, *flags, f"-I{src_dir}", f"-I{generator.include_dir()}", str(main),
+                        str(src_dir / f"{prefix}.c"), "-o", str(exe), "-lm"], check=True, capture_output=True)
         out = subprocess.run([str(exe), str(calls), str(repeat)], check=True, capture_output=True, text=True)
     return statistics.median(float(x) for x in out.stdout.split())
