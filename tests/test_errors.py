@@ -16,7 +16,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import hybrid
-from hybrid import reference
+from hybrid import oracle
 from hybrid.control.loops import model_error_note
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -184,16 +184,16 @@ def test_corrupt_cache_entry_is_rebuilt(tmp_path):
 
 
 def _conditioning_at_samples(res):
-    """``2 |det J| / |J|_F^2`` at each control sample of a run, from the NumPy reference."""
+    """``2 |det J| / |J|_F^2`` at each control sample of a run, from the NumPy oracle."""
     exp = res.experiment
-    return np.array([reference.conditioning(q, exp.arm.as_array())
+    return np.array([oracle.conditioning(q, exp.arm.as_array())
                      for q in res.q[::exp.steps_per_sample][:exp.n_samples]])
 
 
 @pytest.mark.parametrize("backend, duration, tol", [("sympy", 2.0, 0.9), ("numpy", 0.5, 0.99)])
 def test_singularity_mid_run_stops_at_the_first_sample_past_the_tolerance(backend, duration, tol):
     # the paper's arm stretches towards full extension as it slides (conditioning 1.0 -> 0.43)
-    simulate = reference.simulate if backend == "numpy" else hybrid.simulate
+    simulate = oracle.simulate if backend == "numpy" else hybrid.simulate
     nominal = simulate(hybrid.paper_experiment(duration=duration))
     cond = _conditioning_at_samples(nominal)
     k = int(np.argmax(cond < tol))

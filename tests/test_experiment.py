@@ -9,7 +9,7 @@ import pytest
 from hybrid.codegen.model import PLANT_OUTPUTS
 
 import hybrid
-from hybrid import reference
+from hybrid import oracle
 from hybrid.plants import planar as plants
 from hybrid.simulation.metrics import settling_time
 
@@ -94,7 +94,7 @@ def test_khatib_is_more_sensitive_to_the_orthogonal_disturbance():
 def test_compiled_and_numpy_paths_agree():
     exp = hybrid.paper_experiment(duration=0.05)
     a = hybrid.simulate(exp)
-    b = reference.simulate(hybrid.paper_experiment(duration=0.05))
+    b = oracle.simulate(hybrid.paper_experiment(duration=0.05))
     # joints and positions to rounding; the sensor tip's sliding speed passes through the
     # stiff stiction region of tanh(v / 1e-3) at the start, which amplifies rounding
     np.testing.assert_allclose(a.state[:, :7], b.state[:, :7], rtol=1e-9, atol=1e-10)

@@ -7,7 +7,7 @@ import pytest
 from conftest import UR5, example_robot
 
 import hybrid
-from hybrid import reference as ref
+from hybrid import oracle
 from hybrid.models.shipped import UR5_URDF
 from hybrid.plants.rigid_body import RigidBodyPlant
 from hybrid.simulation.runner import run
@@ -81,7 +81,7 @@ def test_closed_loop_task_acceleration_equals_the_command():
         Jdqd = pin.getFrameClassicalAcceleration(model, data, fid, pin.LOCAL_WORLD_ALIGNED).vector
         qdd = pin.aba(model, data, q, qdot, tau + J[:3].T @ Fc[:3] - damping * qdot)
         v, vdot = J @ qdot, J @ qdd + Jdqd
-        R, Rd = ref.spatial_frame(exp.surface, data.oMf[fid].translation, v[:3], (0, 0, 1))
+        R, Rd = oracle.spatial_frame(exp.surface, data.oMf[fid].translation, v[:3], (0, 0, 1))
         Z = np.zeros((3, 3))
         y_dot = np.block([[R, Z], [Z, R]]) @ vdot + np.block([[Rd, Z], [Z, Rd]]) @ v
         worst[0] = max(worst[0], np.abs(y_dot - ctrl.last["a"]).max())

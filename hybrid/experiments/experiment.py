@@ -157,8 +157,8 @@ class Experiment(RunSettings):
         if self.path is not None and not isinstance(self.path, Path):
             raise HybridError(f"path = {self.path!r:.60}; give a hybrid.CirclePath or hybrid.LinePath, or None")
         if not isinstance(self.backend, str) or self.backend not in BACKENDS:
-            raise HybridError(f"unknown backend {self.backend!r:.40}; choose one of {BACKENDS} (the NumPy reference "
-                              "runs as hybrid.reference.simulate(experiment))")
+            raise HybridError(f"unknown backend {self.backend!r:.40}; choose one of {BACKENDS} (the NumPy oracle "
+                              "runs as hybrid.oracle.simulate(experiment))")
         if isinstance(self.elbow, bool) or not isinstance(self.elbow, (int, np.integer)) or self.elbow not in (1, -1):
             raise HybridError(f"elbow = {self.elbow!r}; give +1 (q2 > 0) or -1 (q2 < 0)")
         object.__setattr__(self, "reference", tuple(reference_direction(self.reference)))

@@ -7,7 +7,7 @@ has noise, a bias, a lag or a delay (the Python runner gives those); :func:`run`
 experiments, grouped by the loop they share, one native call per group; :func:`prepare_alike`
 prepares a run from another that differs from it only in settings of :data:`ROW_SETTINGS` (a
 sweep's runs, mostly). ``simulate`` and ``sweep`` use it; the Python runner
-(:func:`hybrid.simulation.runner.run`) is the reference it is tested against and the path that
+(:func:`hybrid.simulation.runner.run`) is the oracle it is tested against and the path that
 explains a run that stopped.
 """
 

@@ -4,8 +4,8 @@ A run the compiled loop takes (:mod:`hybrid.simulation.closed_loop`: references 
 numbers or steps, the controller's frame at the contact point) runs there whole, as a sweep runs
 it. The others run here: the loop over control samples in Python, everything inside a sample
 (the plant's RK4 steps, one controller step) compiled C; a compiled run that stopped is run here
-again, for the account of where and why. The NumPy reference runs through the same runner
-(:func:`hybrid.reference.simulate`, for tests and benchmarks). Runs are deterministic.
+again, for the account of where and why. The NumPy oracle runs through the same runner
+(:func:`hybrid.oracle.simulate`, for tests and benchmarks). Runs are deterministic.
 """
 
 from __future__ import annotations
