@@ -132,5 +132,5 @@ def task_acceleration_gap(panda, exp, ctrl, q, qdot, Fc, tau):
     Jdqd = pin.getFrameClassicalAcceleration(model, data, fid, pin.LOCAL_WORLD_ALIGNED).vector
     qdd = pin.aba(model, data, q, qdot, tau + J[:3].T @ Fc[:3] - np.array(exp.robot.damping) * qdot)
     v, vdot = J @ qdot, J @ qdd + Jdqd
-    R, Rd = oracle.spatial_frame(exp.surface, data.oMf[fid].translation.copy(), v[:3], exp.reference)
+    R, Rd = oracle.spatial_frame(exp.surface, data.oMf[fid].translation.copy(), v[:3], exp.frame_direction)
     return np.abs(blockdiag(R) @ vdot + blockdiag(Rd) @ v - ctrl.last["a"]).max(), J

@@ -122,7 +122,7 @@ def test_bad_settings_are_named(kwargs, words):
 
 @pytest.mark.parametrize("kwargs, words", [
     (dict(latitude=0.0), "latitude"), (dict(latitude=200.0), "latitude"),
-    (dict(reference="abc"), "reference"), (dict(reference=(0, 1)), "reference"),
+    (dict(frame_direction="abc"), "frame_direction"), (dict(frame_direction=(0, 1)), "frame_direction"),
 ])
 def test_bad_tracing_settings_are_named(kwargs, words):
     with pytest.raises(hybrid.HybridError, match=words):

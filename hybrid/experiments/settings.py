@@ -11,6 +11,7 @@ from hybrid.control.controller import ContactLoss
 from hybrid.control.loops import Gains, check_loops
 from hybrid.control.references import Step
 from hybrid.control.wrench_sensor import WrenchSensor
+from hybrid.deprecation import RENAMED, renamed_settings
 from hybrid.errors import HybridError
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.validate import _finite, check_singular_tol
@@ -178,8 +179,10 @@ PREFIX_ALIASES = {"arm.": "robot.closed_form."}
 
 
 def setting_path(name: str) -> str:
-    """The dotted path a setting name stands for (:func:`setting_aliases`, :data:`PREFIX_ALIASES`)."""
-    path = setting_aliases().get(name, name)
+    """The dotted path a setting name stands for (:func:`setting_aliases`, :data:`PREFIX_ALIASES`; a renamed
+    setting's old name, :data:`hybrid.deprecation.RENAMED`, stands for its new one)."""
+    head, dot, rest = name.partition(".")
+    path = setting_aliases().get(name, RENAMED.get(head, head) + dot + rest)
     for short, long in PREFIX_ALIASES.items():
         if path.startswith(short):
             return long + path[len(short):]
@@ -194,7 +197,9 @@ def setting_aliases() -> dict[str, str]:
 
 def with_overrides(cls, maker: str, overrides: dict, defaults: dict | None = None):
     """``cls(**defaults, **overrides)`` where the gains may also be given one by one (``KPv=50``) and
-    ``F_d`` / ``v_d`` name the force / speed references; an unknown name lists the known ones."""
+    ``F_d`` / ``v_d`` name the force / speed references; an unknown name lists the known ones. A renamed
+    setting's old name sets the new one, with a warning."""
+    overrides = renamed_settings(overrides, maker, stacklevel=5)
     names = {f.name for f in fields(cls)}
     gain_names = {f.name for f in fields(Gains)}
     aliases = REFERENCE_ALIASES

@@ -55,7 +55,7 @@ class RigidBodyPlant(GeneratedPlant):
         """The plant's parameter arrays (after ``x, tau``; the output record's also ``e``) by the
         manifest's names."""
         return {"robot": exp.robot.as_array(), "plant": exp.plant_array(), "surface": exp.surface.as_array(),
-                "e": np.asarray(exp.reference, float)}
+                "e": np.asarray(exp.frame_direction, float)}
 
     conditioning_name = "m/(|J|_F |J^+|_F)"
 
