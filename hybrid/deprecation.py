@@ -10,12 +10,13 @@ new ones.
 from __future__ import annotations
 
 import functools
+import inspect
 import warnings
 
 from hybrid.errors import HybridError
 
 #: the old name of each renamed setting or keyword, and its new name
-RENAMED = {"reference": "frame_direction"}
+RENAMED = {"reference": "frame_direction", "step": "integration_step"}
 #: the warnings' message, as a warnings filter matches it (the command line shows them)
 MESSAGE = r".*'\w+' is renamed '\w+'"
 
@@ -88,6 +89,12 @@ class RenamedKeywords(type):
     def __call__(cls, *args, **kwargs):
         kwargs = renamed_settings(kwargs, cls.__name__, cls._renamed, old_wins=True, stacklevel=4)
         return super().__call__(*args, **kwargs)
+
+    @property
+    def __signature__(cls) -> inspect.Signature:
+        """The class's own ``__init__``'s (``help`` and the documentation show its fields, not ``__call__``'s)."""
+        signature = inspect.signature(cls.__init__)
+        return signature.replace(parameters=list(signature.parameters.values())[1:])
 
 
 def renamed_attribute(old: str, new: str) -> property:

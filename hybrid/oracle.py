@@ -227,7 +227,7 @@ class NumpyPlant:
     plant interface: see :class:`hybrid.plants.Plant`)."""
 
     def __init__(self, exp):
-        self.kind, self.h = exp.section.kind, exp.step
+        self.kind, self.h = exp.section.kind, exp.integration_step
         self.arm, self.plant, self.surface = exp.arm.as_array(), exp.plant_array(), exp.section.as_array()
         self.record, self.nq = planar_record(), 2
 

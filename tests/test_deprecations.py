@@ -117,11 +117,50 @@ def test_a_controller_file_with_reference_reads_as_frame_direction(tmp_path, ur5
         hybrid.read_controller_config(both, ur5)
 
 
+# ------------------------------------------------------------------ step -> integration_step
+
+
+def test_the_integration_step_is_the_plants_rk4_step():
+    exp = hybrid.paper_experiment(integration_step=5e-5, duration=0.02)
+    assert exp.steps_per_sample == 200  # 10 ms samples of 0.05 ms integration steps
+    res = hybrid.simulate(exp)
+    np.testing.assert_allclose(np.diff(res.t), 5e-5, rtol=1e-9)
+
+
+def test_step_is_the_old_name_of_integration_step_and_warns():
+    new = hybrid.paper_experiment(integration_step=5e-5)
+    with pytest.warns(DeprecationWarning, match="paper_experiment: 'step' is renamed 'integration_step'"):
+        assert hybrid.paper_experiment(step=5e-5) == new
+    with pytest.warns(DeprecationWarning, match="Experiment: 'step' is renamed 'integration_step'"):
+        assert dataclasses.replace(hybrid.paper_experiment(), step=5e-5) == new
+    with pytest.warns(DeprecationWarning, match="'step' is renamed 'integration_step'"):
+        assert new.step == 5e-5
+    with pytest.warns(DeprecationWarning), pytest.raises(hybrid.HybridError, match="integration_step = 0.001 s is too "
+                                                                                     "large for the contact"):
+        hybrid.paper_experiment(step=1e-3)
+    assert "step" not in new.to_dict() and new.to_dict()["integration_step"] == 5e-5
+
+
+def test_a_sweep_over_step_sweeps_the_integration_step(tmp_path):
+    from hybrid.plots import label
+
+    base, values = hybrid.paper_experiment(duration=0.05), [1e-4, 5e-5]
+    new = hybrid.sweep(base, {"integration_step": values}, workers=1)
+    with pytest.warns(DeprecationWarning, match="sweep: 'step' is renamed 'integration_step'"):
+        old = hybrid.sweep(base, {"step": values}, out=tmp_path / "s", workers=1)
+    pd.testing.assert_frame_equal(old.rename(columns={"step": "integration_step"}), new)
+    assert label("step") == label("integration_step") == "integration step [s]"
+    # the folder resumes under the new name: its parts are the same runs
+    parts = {p.name: p.stat().st_mtime_ns for p in (tmp_path / "s" / "parts").iterdir()}
+    again = hybrid.sweep(base, {"integration_step": values}, out=tmp_path / "s", workers=1)
+    pd.testing.assert_frame_equal(again, new)
+    assert {p.name: p.stat().st_mtime_ns for p in (tmp_path / "s" / "parts").iterdir()} == parts
+
 # ------------------------------------------------------------------ files written before the renames
 
 #: the keys a saved experiment had before the renames, by their new names (written out: not read from the
 #: library's own table, which the test checks)
-OLD_KEYS = {"frame_direction": "reference"}
+OLD_KEYS = {"frame_direction": "reference", "integration_step": "step"}
 
 
 def _as_saved_before(d: dict) -> dict:

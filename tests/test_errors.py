@@ -76,8 +76,8 @@ def test_singular_jacobian(law, q2, as_input):
     (lambda: hybrid.decoupling_law(ARM, "circle"), "Circle or hybrid.Plane"),
     (lambda: hybrid.paper_experiment(controller="raibert"), "unknown controller 'raibert'"),
     (lambda: hybrid.paper_experiment(surface="sphere"), "unknown surface"),
-    (lambda: hybrid.paper_experiment(sample_time=0.01005), "not a whole multiple of step"),
-    (lambda: hybrid.paper_experiment(step=1e-3, sample_time=1e-2), "too large for the contact"),
+    (lambda: hybrid.paper_experiment(sample_time=0.01005), "not a whole multiple of integration_step"),
+    (lambda: hybrid.paper_experiment(integration_step=1e-3, sample_time=1e-2), "too large for the contact"),
     (lambda: hybrid.paper_experiment(duration=0.0), "positive duration"),
     (lambda: hybrid.paper_experiment(duration=-1.0), "positive duration"),
     (lambda: hybrid.paper_experiment(KDf=1.0), "force \\(normal\\) loop is unstable"),
@@ -221,7 +221,7 @@ def test_diverging_run_stops_with_time_place_and_cause():
     assert 0 < err.time < exp.duration and f"t = {err.time:.5f} s" in str(err)
     assert "model_error = 2.0" in str(err) and "force (normal) loop" in str(err)
     part = err.partial
-    assert np.isfinite(part.state).all() and part.t[-1] == pytest.approx(err.time - exp.step)
+    assert np.isfinite(part.state).all() and part.t[-1] == pytest.approx(err.time - exp.integration_step)
     assert np.abs(part.qdot[-1]).max() > 1e6 * max(np.abs(part.qdot[:100]).max(), 1e-3)
     # the note's claim, checked on its own: the same loops with tripled gains fail the up-front check
     tripled = {name: 3.0 * value for name, value in vars(exp.gains).items()}
@@ -259,5 +259,5 @@ def test_contact_loss_is_reported_not_raised():
     separated = res.penetration < 0  # sensor tip above the surface: no surface force can act
     assert separated.any() and (res.contact_force[separated] == 0).all()
     assert res.metrics["contact_losses"] >= 1
-    assert res.metrics["time_out_of_contact_s"] >= np.count_nonzero(separated[1:]) * res.experiment.step
+    assert res.metrics["time_out_of_contact_s"] >= np.count_nonzero(separated[1:]) * res.experiment.integration_step
     assert not separated[res.t < 0.4].any()

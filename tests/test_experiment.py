@@ -53,7 +53,7 @@ def test_no_steady_force_error_on_a_plane():
 
 def test_halving_the_step_changes_the_force_by_less_than_10_mN():
     a = hybrid.simulate(hybrid.paper_experiment())
-    b = hybrid.simulate(hybrid.paper_experiment(step=5e-5))
+    b = hybrid.simulate(hybrid.paper_experiment(integration_step=5e-5))
     assert np.max(np.abs(a.force_normal - b.force_normal[::2])) < 0.01
 
 

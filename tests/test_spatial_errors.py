@@ -257,7 +257,7 @@ def test_robots_and_laws_pickle(ur5, law):
     (lambda: hybrid.Circle((0, 10**400), 1), "must be two numbers"),
     (lambda: hybrid.ImplicitSurface("x - a", {"a": 10**400}), "within float range"),
     (lambda: hybrid.paper_experiment(model_error=10**400), "within float range"),
-    (lambda: hybrid.paper_experiment(step=5e-324), "too small for sample_time"),
+    (lambda: hybrid.paper_experiment(integration_step=5e-324), "too small for sample_time"),
     (lambda: hybrid.paper_experiment(gains="x", KPv=1), "give a hybrid.Gains"),
     (lambda: hybrid.paper_experiment(surface=hybrid.Plane((0, 0, 0), (0, 0, 1))), "2-D hybrid.Plane"),
     (lambda: hybrid.operational_space(hybrid.paper_arm(), [0.1, 1.0], [0, 0], singular_tol="a"), "real number"),

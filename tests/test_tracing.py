@@ -113,7 +113,7 @@ def test_the_shipped_ur5_is_example_robot_datas():
     (dict(surface=hybrid.Sphere((2.0, 0.0, 0.2), 0.15)), "cannot be reached"),
     (dict(surface=hybrid.Plane((0.4, 0.0, 0.1), (0.0, 0.0, 1.0))), "start_point"),
     (dict(controller="pid"), "unknown controller"),
-    (dict(step=1e-2), "too large for the contact"),
+    (dict(integration_step=1e-2), "too large for the contact"),
 ])
 def test_bad_settings_are_named(kwargs, words):
     with pytest.raises(hybrid.HybridError, match=words):

@@ -475,7 +475,7 @@ class _Reader:
                 raise self.error(("task", "reference"), "and frame_direction are both given; keep frame_direction "
                                  "(reference is its old name)")
             self.source.renamed(("task", "reference"), ("task", "frame_direction"))
-            table = renamed_keys(table)
+            table = renamed_keys(table, {"reference": "frame_direction"})
         self.known(("task",), table, ("axes", "selection", "frame_direction"), "[task]")
         kw: dict = {}
         if "axes" in table:

@@ -96,6 +96,10 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         the first touch, and after a loss of contact); 0 (the default): no such rule.
     touch_threshold : [N] the force below which the force axis counts as out of contact (0.5 N).
     frame : ``"actual"`` (the loops in ``R(r)``) or ``"desired"`` (in ``R(r_d)``).
+    duration : [s] the run's length, a whole number of samples.
+    integration_step : [s] the plant's fixed RK4 step (0.1 ms); ``sample_time`` is a whole multiple of it
+        (:attr:`steps_per_sample` integration steps a control sample).
+    sample_time : [s] the control sample period ``T``.
     backend : which committed unit runs the closed-form plant (``"sympy"`` or ``"casadi"``).
     singular_tol : the run stops when the Jacobian's conditioning at a sample falls below it.
     """
@@ -126,7 +130,7 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     force_reference: Step = field(default_factory=lambda: Step(10.0, 20.0, 0.4))
     speed_reference: Step = field(default_factory=lambda: Step(0.3, 0.6, 1.0))
     duration: float = 2.0
-    step: float = 1e-4
+    integration_step: float = 1e-4
     sample_time: float = 1e-2
     backend: str = "sympy"
     singular_tol: float = SINGULAR_TOL
@@ -135,6 +139,8 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     _renamed = RENAMED
     #: deprecated: :attr:`frame_direction`
     reference = renamed_attribute("reference", "frame_direction")
+    #: deprecated: :attr:`integration_step`
+    step = renamed_attribute("step", "integration_step")
 
     def __post_init__(self):
         # the checks that read PHYSICS are check_common_types, check_sensing and check_timing: keep it so
@@ -296,8 +302,8 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         Returns the paths written.
 
         ``<name>_plant_init(&p)`` gives a struct with this run's plant parameters (the true arm, the
-        sensor, the contact, the surface), its timing (``h``, ``steps_per_sample``, ``sample_time``,
-        ``duration``) and its start state (:meth:`initial_state`); ``<name>_plant_wrench`` reads the
+        sensor, the contact, the surface), its timing (``h``, the integration step; ``steps_per_sample``,
+        ``sample_time``, ``duration``) and its start state (:meth:`initial_state`); ``<name>_plant_wrench`` reads the
         sensor (what the controller's step takes), ``<name>_plant_advance(&p, tau, n)`` takes ``n`` RK4
         steps with the torque held, ``<name>_plant_signals`` gives what the metrics read. A loop of
         samples around the two is this run (``hybrid.simulate``'s) to rounding error. ``name``: ASCII

@@ -30,7 +30,8 @@ class RunSettings:
 
     @property
     def steps_per_sample(self) -> int:
-        return round(self.sample_time / self.step)
+        """How many integration steps (RK4, ``integration_step`` each) a control sample spans."""
+        return round(self.sample_time / self.integration_step)
 
     @property
     def n_samples(self) -> int:
@@ -138,28 +139,29 @@ def check_common_types(exp) -> None:
 
 
 def check_timing(exp) -> None:
-    """The run's timing and physics settings, checked alike for every experiment: duration, RK4 step
-    and sample time (whole multiples, fast enough for the contact), model error, stable loops."""
+    """The run's timing and physics settings, checked alike for every experiment: duration, integration
+    step and sample time (whole multiples, fast enough for the contact), model error, stable loops."""
     owner = type(exp).__name__
-    _finite(owner, duration=exp.duration, step=exp.step, sample_time=exp.sample_time)
+    h = exp.integration_step
+    _finite(owner, duration=exp.duration, integration_step=h, sample_time=exp.sample_time)
     if exp.duration <= 0:
         raise HybridError(f"duration = {exp.duration} s; give a positive duration")
-    if exp.step <= 0 or exp.sample_time <= 0:
-        raise HybridError(f"step = {exp.step} s and sample_time = {exp.sample_time} s must be positive")
-    ratio = exp.sample_time / exp.step
+    if h <= 0 or exp.sample_time <= 0:
+        raise HybridError(f"integration_step = {h} s and sample_time = {exp.sample_time} s must be positive")
+    ratio = exp.sample_time / h
     if not math.isfinite(ratio) or ratio > 1e9:
-        raise HybridError(f"step = {exp.step} s is too small for sample_time = {exp.sample_time} s "
-                          "(over 1e9 steps a sample); give a step of at least sample_time / 1e9")
+        raise HybridError(f"integration_step = {h} s is too small for sample_time = {exp.sample_time} s "
+                          "(over 1e9 steps a sample); give an integration_step of at least sample_time / 1e9")
     if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
-        raise HybridError(f"sample_time = {exp.sample_time} s is not a whole multiple of step = "
-                          f"{exp.step} s; choose step = sample_time / k for a whole k")
+        raise HybridError(f"sample_time = {exp.sample_time} s is not a whole multiple of integration_step = "
+                          f"{h} s; choose integration_step = sample_time / k for a whole k")
     # fastest plant mode: sensor mass on the contact (and sensor) spring-dampers
     rate = max(math.sqrt((exp.contact.stiffness + exp.sensor.stiffness) / exp.sensor.mass),
                (exp.contact.damping + exp.sensor.damping) / exp.sensor.mass)
-    if exp.step * rate > 1.0:
+    if h * rate > 1.0:
         raise HybridError(
-            f"step = {exp.step} s is too large for the contact: its fastest mode is {rate:.3g} rad/s "
-            f"and RK4 needs step * rate <= 1 for accuracy; use step <= {1.0 / rate:.2e} s")
+            f"integration_step = {h} s is too large for the contact: its fastest mode is {rate:.3g} rad/s "
+            f"and RK4 needs integration_step * rate <= 1 for accuracy; use integration_step <= {1.0 / rate:.2e} s")
     if exp.model_error <= -1 or exp.viscous_compensation < 0:
         raise HybridError(f"model_error = {exp.model_error} must be > -1 and viscous_compensation = "
                           f"{exp.viscous_compensation} >= 0")

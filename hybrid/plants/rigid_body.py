@@ -42,7 +42,7 @@ class RigidBodyPlant(GeneratedPlant):
         unit = units.plant_unit(exp.robot.chain, exp.robot.name, exp.surface.spec())
         given = self.inputs(exp)
         super().__init__(unit, "plant_rhs", "plant_outputs", tuple(given[k] for k in ("robot", "plant", "surface")),
-                         tuple(given.values()), exp.step, ("Fc_x", "Fc_y", "Fc_z"))
+                         tuple(given.values()), exp.integration_step, ("Fc_x", "Fc_y", "Fc_z"))
         self._robot = exp.robot
 
     @staticmethod

@@ -135,7 +135,7 @@ def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None, ctrl=No
     fs, vs = exp.force_reference, exp.speed_reference
     values = {"x0": x0, "force_step": (fs.before, fs.after, fs.at), "speed_step": (vs.before, vs.after, vs.at),
               **given, **{f"controller.{k}": v for k, v in ctrl.step_inputs().items()}}
-    settings = (exp.n_samples, exp.steps_per_sample, exp.step, exp.sample_time, exp.singular_tol)
+    settings = (exp.n_samples, exp.steps_per_sample, exp.integration_step, exp.sample_time, exp.singular_tol)
     return Prepared(exp, loop, settings, loop.row(values))
 
 
