@@ -130,21 +130,21 @@ def filter_and_noise(seeds: int = 5) -> tuple[str, list]:
 
 
 def appendix() -> tuple[str, str, dict]:
-    """Table 3: a stiffer and stiffer surface (the paper's arm, 0.05 m/s), each at an RK4 step that
-    resolves it; and the sensor's own stiffness, which sets the sampled force loop's stability."""
+    """Table 3: a stiffer and stiffer surface (the paper's arm, 0.05 m/s), each at an integration
+    step that resolves it; and the sensor's own stiffness, which sets the sampled force loop's stability."""
     rows, shown = [], {}
-    for k, step in ((1e5, 1e-4), (1e6, 1e-4), (1e7, 2e-5), (1e8, 5e-6)):
-        exp = base(hybrid.paper_experiment, contact=hybrid.Contact(stiffness=k), step=step, duration=0.6)
+    for k, h in ((1e5, 1e-4), (1e6, 1e-4), (1e7, 2e-5), (1e8, 5e-6)):
+        exp = base(hybrid.paper_experiment, contact=hybrid.Contact(stiffness=k), integration_step=h, duration=0.6)
         res = hybrid.simulate(exp)
         m = res.metrics
         if k in (1e5, 1e8):
             shown[f"k_e = {k:.0e} N/m"] = res
         zeta = exp.contact.damping / (2 * math.sqrt(k * exp.sensor.mass))
         out, bounce = _bouncing(res)
-        rows.append([f"{k:.0e}", f"{step:g}", f"{zeta:.3f}", int(m["contact_losses"]), f"{1000 * out:.1f}",
+        rows.append([f"{k:.0e}", f"{h:g}", f"{zeta:.3f}", int(m["contact_losses"]), f"{1000 * out:.1f}",
                      f"{1e6 * bounce:.0f}", f"{res.contact_force.max():.0f}", f"{m['first_touch_overshoot_N']:.2f}",
                      f"{m['first_touch_settling_s']:.2f}"])
-    table = markdown(["k_e [N/m]", "step [s]", "contact damping ratio", "contact losses", "bouncing [ms]",
+    table = markdown(["k_e [N/m]", "integration step [s]", "contact damping ratio", "contact losses", "bouncing [ms]",
                       "highest bounce [um]", "surface's peak force [N]", "measured overshoot [N]",
                       "settling [s]"], rows)
     rows = []

@@ -31,6 +31,7 @@ import matplotlib
 import numpy as np
 
 from hybrid import files
+from hybrid.deprecation import RENAMED
 from hybrid.errors import HybridError
 
 matplotlib.use("Agg")  # files only: no display needed
@@ -101,7 +102,7 @@ LABELS = {
     "F_d": "force reference [N]",
     "duration": "duration [s]",
     "sample_time": "sample time [s]",
-    "step": "integration step [s]",
+    "integration_step": "integration step [s]",
 }
 #: the units metric names end with, and how a label writes them
 SUFFIXES = (("_m_per_s", "m/s"), ("_percent", "%"), ("_Nm", "N m"), ("_deg", "deg"), ("_N", "N"), ("_s", "s"),
@@ -112,6 +113,7 @@ GAIN_UNITS = {"KPv": "1/s", "KIv": "1/s^2", "KI2v": "1/s^3", "KPf": "1/kg", "KDf
 def label(name: str) -> str:
     """A metric's or a setting's name as an axis label with its unit: ``speed_drop_after_force_step_m_per_s``
     is ``"speed drop after the force step [m/s]"``; an unknown name is spelled out from its parts."""
+    name = RENAMED.get(name, name)  # a sweep's parameter by a renamed setting's old name
     if name in LABELS:
         return LABELS[name]
     gain = name.removeprefix("gains.")

@@ -73,7 +73,7 @@ def robots():
 
 
 def pinocchio_terms(model, fid, q, qd, damping):
-    """J, J' q', B, n and the tip position from Pinocchio (the reference's inputs)."""
+    """J, J' q', B, n and the tip position from Pinocchio (the oracle's inputs)."""
     import pinocchio as pin
 
     data = model.createData()
@@ -88,7 +88,7 @@ def pinocchio_terms(model, fid, q, qd, damping):
 
 def well_conditioned_states(rng, robot, model, fid, surface, N, e=(0.0, 0.0, 1.0)):
     """Random states with a well-conditioned J and a defined task frame (and their Pinocchio terms)."""
-    from hybrid import reference as ref
+    from hybrid import oracle
 
     out = []
     while len(out) < N:
@@ -96,7 +96,7 @@ def well_conditioned_states(rng, robot, model, fid, surface, N, e=(0.0, 0.0, 1.0
         qd = rng.normal(0, 1, robot.n)
         terms = pinocchio_terms(model, fid, q, qd, np.array(robot.damping))
         s = np.linalg.svd(terms[0], compute_uv=False)
-        R, _ = ref.spatial_frame(surface, terms[4], terms[0][:3] @ qd, e)
+        R, _ = oracle.spatial_frame(surface, terms[4], terms[0][:3] @ qd, e)
         if s[-1] / s[0] > 0.05 and np.isfinite(R).all() and np.linalg.norm(np.cross(e, R[2])) > 0.1:
             out.append((q, qd, terms))
     return out
@@ -123,7 +123,7 @@ def pinocchio_panda():
 def task_acceleration_gap(panda, exp, ctrl, q, qdot, Fc, tau):
     """How far the task acceleration ``R v' + R' v`` of Pinocchio's arm under the torque ``tau`` and the
     sensor's force ``Fc`` is from the loops' ``a`` of the controller's latest sample, and ``J``."""
-    from hybrid import reference as ref
+    from hybrid import oracle
 
     pin, model, data, fid = panda
     pin.forwardKinematics(model, data, q, qdot, np.zeros(len(q)))
@@ -132,5 +132,5 @@ def task_acceleration_gap(panda, exp, ctrl, q, qdot, Fc, tau):
     Jdqd = pin.getFrameClassicalAcceleration(model, data, fid, pin.LOCAL_WORLD_ALIGNED).vector
     qdd = pin.aba(model, data, q, qdot, tau + J[:3].T @ Fc[:3] - np.array(exp.robot.damping) * qdot)
     v, vdot = J @ qdot, J @ qdd + Jdqd
-    R, Rd = ref.spatial_frame(exp.surface, data.oMf[fid].translation.copy(), v[:3], exp.reference)
+    R, Rd = oracle.spatial_frame(exp.surface, data.oMf[fid].translation.copy(), v[:3], exp.frame_direction)
     return np.abs(blockdiag(R) @ vdot + blockdiag(Rd) @ v - ctrl.last["a"]).max(), J

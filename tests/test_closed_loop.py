@@ -122,7 +122,7 @@ def test_metrics_in_c_equal_the_numpy_definitions_on_the_same_record(case):
     got = closed_loop.run([closed_loop.prepare(exp)], record=True)[0]
     plant = PlanarPlant(exp)
     record = plant.outputs(got.states)
-    t = np.arange(len(got.states)) * exp.step
+    t = np.arange(len(got.states)) * exp.integration_step
     col = {name: record[:, i] for i, name in enumerate(plant.record["outputs"])}
     ref = metrics(t, col["Fc_n"], col["v_t"], exp.force_reference.sampled(t), exp.speed_reference.sampled(t),
                   force_step=exp.force_reference, speed_step=exp.speed_reference, penetration=col["penetration"],

@@ -155,7 +155,7 @@ def test_plant_equals_python(tmp_path, make, name):
     np.testing.assert_array_equal(c.array("x0"), x0)
     np.testing.assert_array_equal(c.array("x"), x0)
     assert (c.p.h, c.p.steps_per_sample, c.p.sample_time, c.p.duration) == (
-        exp.step, exp.steps_per_sample, exp.sample_time, exp.duration)
+        exp.integration_step, exp.steps_per_sample, exp.sample_time, exp.duration)
     # off the rest state: a torque held over 300 steps, against the Python plant's RK4
     tau = np.linspace(-2.0, 3.0, py.nq)
     x, trajectory = x0.copy(), np.empty((300, len(x0)))

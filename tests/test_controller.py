@@ -11,7 +11,7 @@ from conftest import blockdiag, pinocchio_terms, well_conditioned_states
 from hybrid.codegen.model import PLANT_OUTPUTS
 
 import hybrid
-from hybrid import reference as ref
+from hybrid import oracle
 
 SPHERE = hybrid.Sphere((0.4, 0.1, 0.3), 0.15)
 OUT = {name: i for i, name in enumerate(PLANT_OUTPUTS)}
@@ -37,7 +37,7 @@ def closed_loop(exp, plant, ctrl):
 def test_from_experiment_in_an_independent_numpy_plant_gives_simulates_forces_and_speeds(settings):
     exp = hybrid.paper_experiment(duration=0.3, **settings)
     res = hybrid.simulate(exp)
-    ours = closed_loop(exp, ref.NumpyPlant(exp), hybrid.Controller.from_experiment(exp))
+    ours = closed_loop(exp, oracle.NumpyPlant(exp), hybrid.Controller.from_experiment(exp))
     at_samples = res.outputs[exp.steps_per_sample::exp.steps_per_sample]
     for col in ("Fc_n", "v_t"):  # the NumPy plant rounds differently: agreement to 1e-9, not bit for bit
         np.testing.assert_allclose(ours[:, OUT[col]], at_samples[:, OUT[col]], rtol=1e-9, atol=1e-9)
@@ -49,7 +49,7 @@ def test_paper_controller_equals_the_numpy_controller_on_random_samples(rng):
     for controller, frame, curvature, integral in itertools.product(("task", "khatib"), ("actual", "desired"),
                                                                     (False, True), (False, True)):
         exp = hybrid.paper_experiment(controller=controller, frame=frame, curvature=curvature, integral=integral)
-        ours, theirs = hybrid.Controller.from_experiment(exp), ref.NumpyController(exp)
+        ours, theirs = hybrid.Controller.from_experiment(exp), oracle.NumpyController(exp)
         ours.timing_tolerance = None  # samples 1.7 sample times apart
         for k in range(40):
             t = k * exp.sample_time * 1.7  # across both reference steps
@@ -117,7 +117,7 @@ def hand_torque(scheme, J, Jdqd, B, n, gravity, R, Rd, qd, a, Fc, yd, sigma, gai
     """The scheme's torque from Pinocchio's terms, written from conventions §7 and §9."""
     if scheme in ("task", "khatib"):
         contact = blockdiag(R).T @ (sigma * yd) if scheme == "khatib" else Fc
-        return ref.spatial_decoupling_law(J, Jdqd, B, n, R, Rd, qd, a, contact, np.zeros(len(qd)), range(6), True)[1]
+        return oracle.spatial_decoupling_law(J, Jdqd, B, n, R, Rd, qd, a, contact, np.zeros(len(qd)), range(6), True)[1]
     Jy = blockdiag(R) @ J
     motion = sigma == 0
     if scheme == "raibert_craig":
@@ -167,7 +167,7 @@ def test_ur5_loops_and_torque_sample_by_sample(rng, robots, scheme, option):
         Fc = rng.normal(0, 10, 6)
         tau = ctrl(t, q, qd, Fc)
         v = J @ qd
-        R, Rd = ref.spatial_frame(SPHERE, p, v[:3], (0, 0, 1))
+        R, Rd = oracle.spatial_frame(SPHERE, p, v[:3], (0, 0, 1))
         y, f = blockdiag(R) @ v, blockdiag(R) @ Fc
         yd = np.array([Ramp()(t), 0.0, 10.0 if t < 0.05 else 20.0, 0.3, 0.0, -0.2])
         rate = np.array([0.5, 0, 0, 0, 0, 0])
@@ -192,7 +192,7 @@ def test_khatib_and_task_torques_coincide_when_the_force_is_the_feedforward(rng,
     robot, model, fid = robots["panda"]
     q, qd, (J, _, _, _, p) = well_conditioned_states(rng, robot, model, fid, SPHERE, 1)[0]
     ctrls = [hybrid.Controller(robot, SPHERE, s, force_reference=15.0) for s in ("task", "khatib")]
-    R, _ = ref.spatial_frame(SPHERE, p, J[:3] @ qd, (0, 0, 1))
+    R, _ = oracle.spatial_frame(SPHERE, p, J[:3] @ qd, (0, 0, 1))
     Fc_ff = np.concatenate([R[2] * 15.0, np.zeros(3)])  # R^T Sigma F_d
     taus = [c(0.0, q, qd, Fc_ff) for c in ctrls]
     np.testing.assert_allclose(taus[0], taus[1], rtol=1e-11, atol=1e-11)
@@ -225,7 +225,7 @@ def test_closed_loop_task_acceleration_equals_the_loops_command(robots):
         tau = ctrl(k * ctrl.sample_time, q, qd, Fc)
         J, Jdqd, _, _, p = pinocchio_terms(model, fid, q, qd, damping)
         v, vdot = J @ qd, J @ qdd(q, qd, tau) + Jdqd
-        R, Rd = ref.spatial_frame(SPHERE, p, v[:3], (0, 0, 1))
+        R, Rd = oracle.spatial_frame(SPHERE, p, v[:3], (0, 0, 1))
         worst = max(worst, np.abs(blockdiag(R) @ vdot + blockdiag(Rd) @ v - ctrl.last["a"]).max())
         for _ in range(10):  # RK4 on (q, q') with tau held
             k1 = (qd, qdd(q, qd, tau))
@@ -260,7 +260,7 @@ def test_measure_and_state(robots):
     Fc = np.array([1.0, 2.0, 3.0, 0.1, 0.2, 0.3])
     m = ctrl.measure(q, qd, Fc)
     J, _, _, _, p = pinocchio_terms(model, fid, q, qd, np.zeros(6))
-    R, _ = ref.spatial_frame(SPHERE, p, J[:3] @ qd, (0, 0, 1))
+    R, _ = oracle.spatial_frame(SPHERE, p, J[:3] @ qd, (0, 0, 1))
     np.testing.assert_allclose(m.p, p, atol=1e-12)
     np.testing.assert_allclose(m.task_velocity, blockdiag(R) @ J @ qd, atol=1e-12)
     np.testing.assert_allclose(m.task_wrench, blockdiag(R) @ Fc, atol=1e-12)

@@ -69,13 +69,13 @@ def test_the_example_is_the_controller_built_by_hand(example, ur5):
         ur5, hybrid.Sphere((0.5, 0.0, 0.2), 0.15), "task", axes="all", selection=("n",),
         gains=hybrid.Gains(KPv=40.0, KIv=200.0, KI2v=1000.0, KPf=2.0, KDf=90.0, KIf=25.0),
         force_reference=hybrid.Step(10.0, 20.0, 0.5), velocity_reference=hybrid.Step(0.15, 0.3, 1.5),
-        sample_time=0.01, integral=True, curvature=False, frame="actual", reference=(0.0, 0.0, 1.0),
+        sample_time=0.01, integral=True, curvature=False, frame="actual", frame_direction=(0.0, 0.0, 1.0),
         position_error=False, integral_limit=None, contact_loss=None, singular_tol=1e-3, posture=None,
         torque_limit="urdf", torque_step_limit=None, timing_tolerance=0.25)
     assert changed(example, by_hand) == set()
     assert example.step_variant() == by_hand.step_variant()
     for name in ("scheme", "axes", "selection", "gains", "sample_time", "integral", "curvature", "frame",
-                 "reference", "position_error", "integral_limit", "contact_loss", "singular_tol", "posture",
+                 "frame_direction", "position_error", "integral_limit", "contact_loss", "singular_tol", "posture",
                  "timing_tolerance", "path"):
         assert getattr(example, name) == getattr(by_hand, name), name
     np.testing.assert_array_equal(example.torque_limit, ur5.limits.effort)  # "urdf": the file's limits
@@ -114,7 +114,7 @@ CHANGES = [
     ("surface.center", [("center = [0.5, 0.0, 0.2]", "center = [0.5, 0.1, 0.2]")], {"surface"}),
     ("surface.radius", [("radius = 0.15 ", "radius = 0.2 ")], {"surface"}),
     ("task.selection", [('selection = ["n"]', 'selection = ["n", "rot_n"]')], {"selection", "gains"}),
-    ("task.reference", [("reference = [0.0, 0.0, 1.0]", "reference = [1.0, 0.0, 0.0]")], {"e"}),
+    ("task.frame_direction", [("frame_direction = [0.0, 0.0, 1.0]", "frame_direction = [1.0, 0.0, 0.0]")], {"e"}),
     ("gains.KPv", [("KPv = 40.0", "KPv = 30.0")], {"gains"}),
     ("gains.KIv", [("KIv = 200.0", "KIv = 100.0")], {"gains"}),
     ("gains.KI2v", [("KI2v = 1000.0", "KI2v = 500.0")], {"gains"}),
@@ -257,8 +257,8 @@ REFUSALS = [
      "6 of them"),
     ("timing_tolerance = 0.25", "timing_tolerance = 1.5", "timing_tolerance =",
      "limits.timing_tolerance: timing_tolerance = 1.5", "between 0 and 1"),
-    ("reference = [0.0, 0.0, 1.0]", "reference = [0.0, 0.0, 0.0]", "reference =",
-     "task.reference: reference = (0.0, 0.0, 0.0)", "give a nonzero direction"),
+    ("frame_direction = [0.0, 0.0, 1.0]", "frame_direction = [0.0, 0.0, 0.0]", "frame_direction =",
+     "task.frame_direction: frame_direction = (0.0, 0.0, 0.0)", "give a nonzero direction"),
     ("force = { before = 10.0, after = 20.0, at = 0.5 }", "force = { t1 = 5.0 }", "force =",
      "references.force.t1: force_reference names axis t1", "move it to the other reference"),
     ('selection = ["n"]', 'selection = ["t1", "n"]', "velocity =",

@@ -173,7 +173,7 @@ ARGUMENTS = st.fixed_dictionaries({}, optional={
     "curvature": st.sampled_from([True, False, "yes"]),
     "frame": st.sampled_from(["actual", "desired", "world"]),
     "path": st.sampled_from([None, lambda t: ((0.5, 0.0, 0.35), (0.1, 0.0, 0.0)), lambda t: (0.1,), 3]),
-    "reference": st.sampled_from([(0.0, 0.0, 1.0), (1.0, 0.0, 0.0), (0, 0, 0), (np.nan, 0, 1), "z"]),
+    "frame_direction": st.sampled_from([(0.0, 0.0, 1.0), (1.0, 0.0, 0.0), (0, 0, 0), (np.nan, 0, 1), "z"]),
     "position_error": st.sampled_from([False, True, 0]),
     "integral_limit": st.sampled_from([None, 5.0, -1.0, np.nan, "big"]),
     "contact_loss": st.sampled_from([None, hybrid.ContactLoss(), 0.5]),

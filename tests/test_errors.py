@@ -16,7 +16,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import hybrid
-from hybrid import reference
+from hybrid import oracle
 from hybrid.control.loops import model_error_note
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -76,8 +76,8 @@ def test_singular_jacobian(law, q2, as_input):
     (lambda: hybrid.decoupling_law(ARM, "circle"), "Circle or hybrid.Plane"),
     (lambda: hybrid.paper_experiment(controller="raibert"), "unknown controller 'raibert'"),
     (lambda: hybrid.paper_experiment(surface="sphere"), "unknown surface"),
-    (lambda: hybrid.paper_experiment(sample_time=0.01005), "not a whole multiple of step"),
-    (lambda: hybrid.paper_experiment(step=1e-3, sample_time=1e-2), "too large for the contact"),
+    (lambda: hybrid.paper_experiment(sample_time=0.01005), "not a whole multiple of integration_step"),
+    (lambda: hybrid.paper_experiment(integration_step=1e-3, sample_time=1e-2), "too large for the contact"),
     (lambda: hybrid.paper_experiment(duration=0.0), "positive duration"),
     (lambda: hybrid.paper_experiment(duration=-1.0), "positive duration"),
     (lambda: hybrid.paper_experiment(KDf=1.0), "force \\(normal\\) loop is unstable"),
@@ -184,16 +184,16 @@ def test_corrupt_cache_entry_is_rebuilt(tmp_path):
 
 
 def _conditioning_at_samples(res):
-    """``2 |det J| / |J|_F^2`` at each control sample of a run, from the NumPy reference."""
+    """``2 |det J| / |J|_F^2`` at each control sample of a run, from the NumPy oracle."""
     exp = res.experiment
-    return np.array([reference.conditioning(q, exp.arm.as_array())
+    return np.array([oracle.conditioning(q, exp.arm.as_array())
                      for q in res.q[::exp.steps_per_sample][:exp.n_samples]])
 
 
 @pytest.mark.parametrize("backend, duration, tol", [("sympy", 2.0, 0.9), ("numpy", 0.5, 0.99)])
 def test_singularity_mid_run_stops_at_the_first_sample_past_the_tolerance(backend, duration, tol):
     # the paper's arm stretches towards full extension as it slides (conditioning 1.0 -> 0.43)
-    simulate = reference.simulate if backend == "numpy" else hybrid.simulate
+    simulate = oracle.simulate if backend == "numpy" else hybrid.simulate
     nominal = simulate(hybrid.paper_experiment(duration=duration))
     cond = _conditioning_at_samples(nominal)
     k = int(np.argmax(cond < tol))
@@ -221,7 +221,7 @@ def test_diverging_run_stops_with_time_place_and_cause():
     assert 0 < err.time < exp.duration and f"t = {err.time:.5f} s" in str(err)
     assert "model_error = 2.0" in str(err) and "force (normal) loop" in str(err)
     part = err.partial
-    assert np.isfinite(part.state).all() and part.t[-1] == pytest.approx(err.time - exp.step)
+    assert np.isfinite(part.state).all() and part.t[-1] == pytest.approx(err.time - exp.integration_step)
     assert np.abs(part.qdot[-1]).max() > 1e6 * max(np.abs(part.qdot[:100]).max(), 1e-3)
     # the note's claim, checked on its own: the same loops with tripled gains fail the up-front check
     tripled = {name: 3.0 * value for name, value in vars(exp.gains).items()}
@@ -259,5 +259,5 @@ def test_contact_loss_is_reported_not_raised():
     separated = res.penetration < 0  # sensor tip above the surface: no surface force can act
     assert separated.any() and (res.contact_force[separated] == 0).all()
     assert res.metrics["contact_losses"] >= 1
-    assert res.metrics["time_out_of_contact_s"] >= np.count_nonzero(separated[1:]) * res.experiment.step
+    assert res.metrics["time_out_of_contact_s"] >= np.count_nonzero(separated[1:]) * res.experiment.integration_step
     assert not separated[res.t < 0.4].any()

@@ -9,7 +9,7 @@ import pytest
 from hybrid.codegen.model import PLANT_OUTPUTS
 
 import hybrid
-from hybrid import reference
+from hybrid import oracle
 from hybrid.plants import planar as plants
 from hybrid.simulation.metrics import settling_time
 
@@ -53,7 +53,7 @@ def test_no_steady_force_error_on_a_plane():
 
 def test_halving_the_step_changes_the_force_by_less_than_10_mN():
     a = hybrid.simulate(hybrid.paper_experiment())
-    b = hybrid.simulate(hybrid.paper_experiment(step=5e-5))
+    b = hybrid.simulate(hybrid.paper_experiment(integration_step=5e-5))
     assert np.max(np.abs(a.force_normal - b.force_normal[::2])) < 0.01
 
 
@@ -94,7 +94,7 @@ def test_khatib_is_more_sensitive_to_the_orthogonal_disturbance():
 def test_compiled_and_numpy_paths_agree():
     exp = hybrid.paper_experiment(duration=0.05)
     a = hybrid.simulate(exp)
-    b = reference.simulate(hybrid.paper_experiment(duration=0.05))
+    b = oracle.simulate(hybrid.paper_experiment(duration=0.05))
     # joints and positions to rounding; the sensor tip's sliding speed passes through the
     # stiff stiction region of tanh(v / 1e-3) at the start, which amplifies rounding
     np.testing.assert_allclose(a.state[:, :7], b.state[:, :7], rtol=1e-9, atol=1e-10)

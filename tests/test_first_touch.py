@@ -65,7 +65,8 @@ def test_a_touch_at_5_cm_per_s_settles_without_a_loss(name):
     touched = res.contact_force > 0
     i0 = np.flatnonzero(touched)[0]
     assert res.t[i0] == m["first_touch_time_s"] and touched[i0:].all()
-    assert m["time_out_of_contact_s"] == pytest.approx(m["first_touch_time_s"] - res.experiment.step, abs=1e-12)
+    h = res.experiment.integration_step
+    assert m["time_out_of_contact_s"] == pytest.approx(m["first_touch_time_s"] - h, abs=1e-12)
 
 
 @pytest.mark.parametrize("name", sorted(FACTORIES))
@@ -82,7 +83,7 @@ def test_the_compiled_loop_and_the_python_runner_agree_on_the_touch(name):
     {"F_d": hybrid.Step(10.0, 15.0, 0.5)},                        # to the force step
     {"duration": 0.05},                                            # no touch: NaN
     {"start_gap": 0.0, "approach_speed": 0.0, "duration": 0.6},    # the pressed start: touched at 0
-    {"contact": hybrid.Contact(stiffness=1e7), "step": 2e-5, "duration": 0.3},  # it bounces: losses
+    {"contact": hybrid.Contact(stiffness=1e7), "integration_step": 2e-5, "duration": 0.3},  # it bounces: losses
 ])
 def test_the_metrics_in_c_equal_their_numpy_definitions_on_the_same_record(overrides):
     exp = touching("paper", **overrides)
@@ -92,7 +93,7 @@ def test_the_metrics_in_c_equal_their_numpy_definitions_on_the_same_record(overr
     # the loop's own output record (its rows within rounding of the plant's outputs of its states)
     np.testing.assert_allclose(got.outputs, plant.outputs(got.states), rtol=1e-12, atol=1e-9)
     col = {name: got.outputs[:, i] for i, name in enumerate(plant.record["outputs"])}
-    t = np.arange(len(got.states)) * exp.step
+    t = np.arange(len(got.states)) * exp.integration_step
     ref = hybrid.metrics(t, col["Fc_n"], col["v_t"], exp.force_reference.sampled(t), exp.speed_reference.sampled(t),
                          force_step=exp.force_reference, speed_step=exp.speed_reference,
                          penetration=col["penetration"], contact_force=col["N"], tau=got.taus)
@@ -111,7 +112,7 @@ def test_a_nearly_rigid_surface_chatters_the_sensor_tip_not_the_measured_force()
     between it and the arm keeps the measured force smooth, so the touch's overshoot is that on 1e5 N/m."""
     soft = hybrid.simulate(touching("paper", v_d=0.0, duration=0.5))
     rigid = hybrid.simulate(touching("paper", v_d=0.0, duration=0.5, contact=hybrid.Contact(stiffness=1e8),
-                                     step=5e-6))
+                                     integration_step=5e-6))
     assert soft.metrics["contact_losses"] == 0
     assert rigid.metrics["contact_losses"] >= 20
     bouncing = rigid.metrics["time_out_of_contact_s"] - rigid.metrics["first_touch_time_s"]

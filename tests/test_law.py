@@ -1,4 +1,4 @@
-"""The compiled decoupling law and arm terms against independent references."""
+"""The compiled decoupling law and arm terms against independent oracles (the NumPy oracle, Pinocchio)."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import pytest
 from conftest import random_arm, random_states, random_surface
 
 import hybrid
-from hybrid import reference as ref
+from hybrid import oracle
 
 KINDS = ("plane", "circle")
 BACKENDS = ("sympy", "casadi")
@@ -21,7 +21,7 @@ def rel_err(x, y):
 @pytest.mark.parametrize("kind", KINDS)
 @pytest.mark.parametrize("curvature", [False, True])
 @pytest.mark.parametrize("elbow", [1, -1])
-def test_law_matches_numpy_reference(rng, backend, kind, curvature, elbow):
+def test_law_matches_numpy_oracle(rng, backend, kind, curvature, elbow):
     worst = 0.0
     for _ in range(20):  # 20 random arms and surfaces x 100 states
         arm, surface = random_arm(rng), random_surface(rng, kind)
@@ -29,7 +29,7 @@ def test_law_matches_numpy_reference(rng, backend, kind, curvature, elbow):
         law = hybrid.decoupling_law(arm, surface, curvature=curvature, backend=backend)
         F, tau = law.evaluate(st["q"], st["qdot"], st["a"], st["Fc"])
         for i in range(100):
-            Fr, taur = ref.decoupling_law(kind, st["q"][i], st["qdot"][i], st["a"][i], st["Fc"][i],
+            Fr, taur = oracle.decoupling_law(kind, st["q"][i], st["qdot"][i], st["a"][i], st["Fc"][i],
                                           arm.as_array(), surface.cross_section().as_array(), curvature)
             worst = max(worst, rel_err(F[i], Fr), rel_err(tau[i], taur))
         # the single-state path gives the batch's numbers (the batch runs as SIMD lanes: within rounding)
@@ -47,7 +47,7 @@ def test_single_state_gives_the_same_numbers_for_any_array_layout(rng, backend):
         st = random_states(rng, 1)
         # values exact in float32, so every layout below holds the same numbers
         base = [st[k][0].astype(np.float32).astype(float) for k in ("q", "qdot", "a", "Fc")]
-        Fr, taur = ref.decoupling_law(kind, *base, arm.as_array(), surface.cross_section().as_array(), True)
+        Fr, taur = oracle.decoupling_law(kind, *base, arm.as_array(), surface.cross_section().as_array(), True)
         F, tau = law(*base), law.torque(*base)
         assert rel_err(F, Fr) < 1e-9 and rel_err(tau, taur) < 1e-9
         both = law.evaluate(*base)
@@ -93,13 +93,13 @@ def test_arm_terms_match_closed_forms(rng):
         st = random_states(rng, 1, elbow=rng.choice([-1, 1]))
         q, qd = st["q"][0], st["qdot"][0]
         t = hybrid.arm_terms(arm, q, qd)
-        r, J, Jdqd = ref.kinematics(q, qd, arm.as_array())
-        B, n = ref.dynamics(q, qd, arm.as_array())
+        r, J, Jdqd = oracle.kinematics(q, qd, arm.as_array())
+        B, n = oracle.dynamics(q, qd, arm.as_array())
         for got, want in ((t["r"], r), (t["J"], J), (t["Jdot_qdot"], Jdqd), (t["B"], B), (t["n"], n)):
             np.testing.assert_allclose(got, want, rtol=1e-12, atol=1e-12)
         np.testing.assert_allclose(t["B"], arm.inertia_matrix(q[1]), rtol=1e-12)
         Bo, no = hybrid.operational_space(arm, q, qd)
-        Bo_ref, no_ref = ref.operational_space(q, qd, arm.as_array())
+        Bo_ref, no_ref = oracle.operational_space(q, qd, arm.as_array())
         np.testing.assert_allclose(Bo, Bo_ref, rtol=1e-10, atol=1e-10)
         np.testing.assert_allclose(no, no_ref, rtol=1e-10, atol=1e-10)
 
@@ -141,11 +141,11 @@ def test_decoupling_identity(rng, kind, curvature):
         arm, surface = random_arm(rng), random_surface(rng, kind)
         st = {k: v[0] for k, v in random_states(rng, 1, elbow=rng.choice([-1, 1])).items()}
         tau = hybrid.decoupling_law(arm, surface, curvature).torque(st["q"], st["qdot"], st["a"], st["Fc"])
-        B, n = ref.dynamics(st["q"], st["qdot"], arm.as_array())
-        r, J, Jdqd = ref.kinematics(st["q"], st["qdot"], arm.as_array())
+        B, n = oracle.dynamics(st["q"], st["qdot"], arm.as_array())
+        r, J, Jdqd = oracle.kinematics(st["q"], st["qdot"], arm.as_array())
         qdd = np.linalg.solve(B, tau + J.T @ st["Fc"] - n)   # the robot in contact
         rdd, rd = J @ qdd + Jdqd, J @ st["qdot"]
-        R, Rd = ref.frame(kind, r, rd, surface.cross_section().as_array())
+        R, Rd = oracle.frame(kind, r, rd, surface.cross_section().as_array())
         ydot = R @ rdd + (Rd @ rd if curvature else 0.0)
         np.testing.assert_allclose(ydot, st["a"], rtol=1e-9, atol=1e-9 * (1 + np.abs(st["a"]).max()))
 

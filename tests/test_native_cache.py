@@ -249,7 +249,7 @@ def test_a_loop_compiled_in_parts_computes_what_it_computes_whole(tmp_path, monk
         metrics, states = np.empty(18), np.empty((steps, 8))
         status, failed = np.empty(1, np.intc), np.empty(1, np.intc)
         getattr(lib, f"{prefix}_closed_loop")(1, ffi.from_buffer("double[]", row), exp.n_samples, exp.steps_per_sample,
-                                              exp.step, exp.sample_time, exp.singular_tol,
+                                              exp.integration_step, exp.sample_time, exp.singular_tol,
                                               ffi.from_buffer("double[]", metrics), ffi.from_buffer("int[]", status),
                                               ffi.from_buffer("int[]", failed), ffi.from_buffer("double[]", states),
                                               ffi.NULL, ffi.NULL)

@@ -9,7 +9,7 @@ import pytest
 
 import hybrid
 import hybrid.geometry.surfaces
-from hybrid import reference as ref
+from hybrid import oracle
 
 
 def _sphere_cylinder_plane_implicit():
@@ -24,13 +24,13 @@ def test_task_frame_at_points_of_any_surface_matches_the_hand_derivation(rng, su
     p = rng.uniform([0.2, -0.3, 0.0], [0.8, 0.3, 0.5], (20, 3))
     pd = rng.normal(0.0, 0.3, (20, 3))
     e = np.array([0.1, 0.2, 1.0])
-    R, Rd = hybrid.task_frame(surface, p, pd, reference=e)
+    R, Rd = hybrid.task_frame(surface, p, pd, frame_direction=e)
     assert R.shape == Rd.shape == (20, 3, 3)
     for i in range(20):
-        R_ref, Rd_ref = ref.spatial_frame(surface, p[i], pd[i], e)
+        R_ref, Rd_ref = oracle.spatial_frame(surface, p[i], pd[i], e)
         np.testing.assert_allclose(R[i], R_ref, atol=1e-12)
         np.testing.assert_allclose(Rd[i], Rd_ref, atol=1e-10)
-        one = hybrid.task_frame(surface, p[i], pd[i], reference=e)  # one point: the same numbers
+        one = hybrid.task_frame(surface, p[i], pd[i], frame_direction=e)  # one point: the same numbers
         np.testing.assert_allclose(one[0], R[i], atol=1e-15)
 
 
@@ -139,7 +139,7 @@ def test_a_new_surface_is_one_class(tmp_path):
     surface = Paraboloid(0.45, 0.0, 0.1, 2.0)
     p, pd = np.array([0.5, 0.05, 0.1 + 2.0 * 0.0025 * 2]), np.array([0.1, -0.05, 0.02])
     R, Rd = hybrid.task_frame(surface, p, pd)
-    R_ref, Rd_ref = ref.spatial_frame(surface, p, pd, (0.0, 0.0, 1.0))
+    R_ref, Rd_ref = oracle.spatial_frame(surface, p, pd, (0.0, 0.0, 1.0))
     np.testing.assert_allclose(R, R_ref, atol=1e-12)
     np.testing.assert_allclose(Rd, Rd_ref, atol=1e-10)
     np.testing.assert_allclose(R[2], surface.normal_at(p), atol=1e-12)  # the formula and the class agree

@@ -155,7 +155,8 @@ def test_the_compiled_loop_and_the_python_runner_agree_and_the_result_loads_back
 def test_the_factory_takes_the_settings_the_others_take():
     exp = hybrid.panda_experiment()
     assert exp.robot == hybrid.panda() and len(exp.build_controller().axes) == 6
-    assert exp.posture == hybrid.Posture(exp.posture.q_rest) and exp.step == 1e-4 and exp.sample_time == 1e-2
+    assert exp.posture == hybrid.Posture(exp.posture.q_rest)
+    assert exp.integration_step == 1e-4 and exp.sample_time == 1e-2
     np.testing.assert_allclose(exp.start(), exp.followed_path().point_at(exp.followed_path().start), atol=1e-12)
 
     tuned = hybrid.panda_experiment(KPv=50.0, F_d=12.0, v_d=hybrid.Step(0.02, 0.04, 1.0), posture=None)

@@ -73,7 +73,7 @@ SETTINGS = st.fixed_dictionaries({}, optional={
                                                    st.floats(0.0, 0.2))),
     "v_d": st.one_of(st.floats(-1, 2), st.just("fast")),
     "duration": st.sampled_from([0.03, 0.05, 0.051, -0.1, 0.0]),
-    "step": st.sampled_from([1e-4, 2e-4, 5e-4, 1e-3, 3e-3, 0.0]),
+    "integration_step": st.sampled_from([1e-4, 2e-4, 5e-4, 1e-3, 3e-3, 0.0]),
     "sample_time": st.sampled_from([1e-2, 5e-3, 0.0101]),
     "KPv": st.floats(0, 500), "KPf": st.floats(0, 20), "KDf": st.floats(0, 500),
     "singular_tol": st.sampled_from([1e-3, 0.5, 0.99, 1.5, -0.1]),

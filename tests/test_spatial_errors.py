@@ -22,14 +22,14 @@ def law(ur5):
     return hybrid.decoupling_law(ur5, hybrid.Sphere((0.4, 0.1, 0.3), 0.15), curvature=True)
 
 
-def test_reference_parallel_to_the_normal_is_a_frame_error(ur5, law):
+def test_frame_direction_parallel_to_the_normal_is_a_frame_error(ur5, law):
     # a plane whose normal is base z: with e = z the task frame's t1 = e x n is undefined
     flat = hybrid.decoupling_law(ur5, hybrid.Plane((0, 0, 0.1), (0, 0, 1)))
-    with pytest.raises(hybrid.TaskFrameError, match="reference direction e is parallel to the surface normal"):
+    with pytest.raises(hybrid.TaskFrameError, match="its direction e is parallel to the surface normal"):
         flat(Q, np.zeros(6), np.zeros(6), np.zeros(6))
     with pytest.raises(hybrid.TaskFrameError):
         flat.task_frame((0.2, 0.3, 0.4), (0.0, 0.0, 0.0))
-    sideways = hybrid.decoupling_law(ur5, hybrid.Plane((0, 0, 0.1), (0, 0, 1)), reference=(1, 0, 0))
+    sideways = hybrid.decoupling_law(ur5, hybrid.Plane((0, 0, 0.1), (0, 0, 1)), frame_direction=(1, 0, 0))
     assert np.isfinite(sideways(Q, np.zeros(6), np.zeros(6), np.zeros(6))).all()
     # batched: the failing state is named
     many = np.tile(Q, (3, 1))
@@ -69,8 +69,8 @@ def test_euler_singularity_names_the_angle(ur5):
     ({"axes": "sideways"}, "name one of all, position, planar"),
     ({"axes": ()}, "distinct"),
     ({"axes": (True, 1)}, "distinct"),
-    ({"reference": (0, 0, 0)}, "nonzero direction"),
-    ({"reference": (0, 1)}, "nonzero direction"),
+    ({"frame_direction": (0, 0, 0)}, "nonzero direction"),
+    ({"frame_direction": (0, 1)}, "nonzero direction"),
     ({"curvature": "yes"}, "curvature must be True or False"),
     ({"singular_tol": 2.0}, "singular_tol"),
     ({"backend": "casadi"}, "closed form"),
@@ -257,7 +257,7 @@ def test_robots_and_laws_pickle(ur5, law):
     (lambda: hybrid.Circle((0, 10**400), 1), "must be two numbers"),
     (lambda: hybrid.ImplicitSurface("x - a", {"a": 10**400}), "within float range"),
     (lambda: hybrid.paper_experiment(model_error=10**400), "within float range"),
-    (lambda: hybrid.paper_experiment(step=5e-324), "too small for sample_time"),
+    (lambda: hybrid.paper_experiment(integration_step=5e-324), "too small for sample_time"),
     (lambda: hybrid.paper_experiment(gains="x", KPv=1), "give a hybrid.Gains"),
     (lambda: hybrid.paper_experiment(surface=hybrid.Plane((0, 0, 0), (0, 0, 1))), "2-D hybrid.Plane"),
     (lambda: hybrid.operational_space(hybrid.paper_arm(), [0.1, 1.0], [0, 0], singular_tol="a"), "real number"),
@@ -273,8 +273,8 @@ def test_overflow_and_unchecked_settings(make, match):
 def test_huge_directions_are_normalised_not_zeroed(ur5):
     assert hybrid.Plane((0, 0), (1e200, 1e200)).normal == pytest.approx((2**-0.5, 2**-0.5, 0.0))
     assert hybrid.Cylinder((0, 0, 0), (1e200, 0, 0), 1.0).axis == (1.0, 0.0, 0.0)
-    law = hybrid.decoupling_law(ur5, hybrid.Sphere((0.45, 0.1, 0.3), 0.15), reference=(0, 0, 1e200))
-    assert law.reference == (0.0, 0.0, 1.0)
+    law = hybrid.decoupling_law(ur5, hybrid.Sphere((0.45, 0.1, 0.3), 0.15), frame_direction=(0, 0, 1e200))
+    assert law.frame_direction == (0.0, 0.0, 1.0)
     for axes in [(float("inf"),), (0.5, 1.7, 2.2), ("0", "1", "2"), {0: 1, 1: 1, 2: 1}]:
         with pytest.raises(hybrid.HybridError, match="axes"):
             hybrid.decoupling_law(ur5, hybrid.Sphere((0.45, 0.1, 0.3), 0.15), axes=axes)

@@ -7,7 +7,7 @@ import pytest
 from conftest import UR5, example_robot
 
 import hybrid
-from hybrid import reference as ref
+from hybrid import oracle
 from hybrid.models.shipped import UR5_URDF
 from hybrid.plants.rigid_body import RigidBodyPlant
 from hybrid.simulation.runner import run
@@ -81,7 +81,7 @@ def test_closed_loop_task_acceleration_equals_the_command():
         Jdqd = pin.getFrameClassicalAcceleration(model, data, fid, pin.LOCAL_WORLD_ALIGNED).vector
         qdd = pin.aba(model, data, q, qdot, tau + J[:3].T @ Fc[:3] - damping * qdot)
         v, vdot = J @ qdot, J @ qdd + Jdqd
-        R, Rd = ref.spatial_frame(exp.surface, data.oMf[fid].translation, v[:3], (0, 0, 1))
+        R, Rd = oracle.spatial_frame(exp.surface, data.oMf[fid].translation, v[:3], (0, 0, 1))
         Z = np.zeros((3, 3))
         y_dot = np.block([[R, Z], [Z, R]]) @ vdot + np.block([[Rd, Z], [Z, Rd]]) @ v
         worst[0] = max(worst[0], np.abs(y_dot - ctrl.last["a"]).max())
@@ -113,7 +113,7 @@ def test_the_shipped_ur5_is_example_robot_datas():
     (dict(surface=hybrid.Sphere((2.0, 0.0, 0.2), 0.15)), "cannot be reached"),
     (dict(surface=hybrid.Plane((0.4, 0.0, 0.1), (0.0, 0.0, 1.0))), "start_point"),
     (dict(controller="pid"), "unknown controller"),
-    (dict(step=1e-2), "too large for the contact"),
+    (dict(integration_step=1e-2), "too large for the contact"),
 ])
 def test_bad_settings_are_named(kwargs, words):
     with pytest.raises(hybrid.HybridError, match=words):
@@ -122,7 +122,7 @@ def test_bad_settings_are_named(kwargs, words):
 
 @pytest.mark.parametrize("kwargs, words", [
     (dict(latitude=0.0), "latitude"), (dict(latitude=200.0), "latitude"),
-    (dict(reference="abc"), "reference"), (dict(reference=(0, 1)), "reference"),
+    (dict(frame_direction="abc"), "frame_direction"), (dict(frame_direction=(0, 1)), "frame_direction"),
 ])
 def test_bad_tracing_settings_are_named(kwargs, words):
     with pytest.raises(hybrid.HybridError, match=words):

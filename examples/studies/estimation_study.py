@@ -49,14 +49,14 @@ FIGURE_SURFACES = ("sphere", "bumps")
 
 def bumps(wavelength: float = BUMP_WAVELENGTH, height: float = BUMP_HEIGHT) -> dict:
     """The uneven plane's settings for :func:`hybrid.tracing_experiment`: the surface, the start point
-    (where the bumps' height is ``z0``), the reference direction (base x: ``t1`` runs along -y) and the
+    (where the bumps' height is ``z0``), the task frame's direction (base x: ``t1`` runs along -y) and the
     straight path along -y."""
     k = 2 * math.pi / wavelength
     x0 = (math.pi / 4 + 2 * math.pi * round(0.47 * k / (2 * math.pi))) / k  # sin(k x0) = cos(k x0), near 0.47 m
     y0 = 2 * math.pi * round(0.3 * k / (2 * math.pi)) / k  # sin(k y0) = 0, near 0.3 m
     surface = hybrid.ImplicitSurface("z - z0 - h*sin(k*x)*sin(k*y)", {"z0": BUMP_Z0, "h": height, "k": k})
     start = (x0, y0, BUMP_Z0)
-    return dict(surface=surface, start_point=start, reference=(1.0, 0.0, 0.0),
+    return dict(surface=surface, start_point=start, frame_direction=(1.0, 0.0, 0.0),
                 path=hybrid.LinePath(start, (0.0, -1.0, 0.0)))
 
 
@@ -66,7 +66,7 @@ def ledge(drop: float, width: float = 0.001) -> dict:
     surface = hybrid.ImplicitSurface("z - z0 + d*(1 + tanh((y1 - y)/w))/2",
                                      {"z0": BUMP_Z0, "d": drop, "w": width, "y1": 0.1})
     start = (0.47, 0.3, BUMP_Z0)
-    return dict(surface=surface, start_point=start, reference=(1.0, 0.0, 0.0),
+    return dict(surface=surface, start_point=start, frame_direction=(1.0, 0.0, 0.0),
                 path=hybrid.LinePath(start, (0.0, -1.0, 0.0)))
 
 

@@ -13,7 +13,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from hybrid import reference
+from hybrid import oracle
 from hybrid.bench.harness import c_harness_ns, median_ns
 from hybrid.bench.targets import BATCHED, NUMPY_LAW, ONE_STATE, experiment_row, in_c
 from hybrid.control.law import decoupling_law
@@ -66,7 +66,7 @@ class PaperLaw:
     def numpy_law(self) -> None:
         P = self.planar
         self.add(NUMPY_LAW, median_ns(
-            lambda: reference.decoupling_law("circle", P.q, P.qd, P.a, P.Fc, P.p, P.s, True), 2000, self.rep))
+            lambda: oracle.decoupling_law("circle", P.q, P.qd, P.a, P.Fc, P.p, P.s, True), 2000, self.rep))
 
     def lambdified(self) -> None:
         import sympy as sp
@@ -97,7 +97,7 @@ class PaperLaw:
                      "ms")
         else:
             self.add(experiment_row(dur, how),
-                     median_ns(lambda: reference.simulate(exp), 1, 1 if self.quick else 3) / 1e6, "ms")
+                     median_ns(lambda: oracle.simulate(exp), 1, 1 if self.quick else 3) / 1e6, "ms")
 
     def regenerate(self) -> None:
         t0 = time.perf_counter()
@@ -132,7 +132,7 @@ def _pinocchio_ns(arm, q, qd, a, Fc, s, rep):
         r = data.oMf[frame].translation[:2]
         Jdqd = pin.getFrameClassicalAcceleration(model, data, frame, pin.LOCAL_WORLD_ALIGNED).linear[:2]
         rd = J @ qd
-        R, Rd = reference.frame("circle", r, rd, s)
+        R, Rd = oracle.frame("circle", r, rd, s)
         Jinv = np.linalg.inv(J)
         Bo = Jinv.T @ B @ Jinv
         return Bo @ R.T @ (a - Rd @ rd) + Jinv.T @ n - Bo @ Jdqd - Fc

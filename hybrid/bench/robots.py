@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from hybrid import reference
+from hybrid import oracle
 from hybrid.bench.harness import c_harness_ns, median_ns, on_one_core
 from hybrid.bench.targets import (
     GEN_COMPILE,
@@ -169,8 +169,8 @@ def spatial_law_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool
 
     def pinocchio_law():
         placement, J, Jdqd, B, n = pinocchio_terms(q, qd)
-        R, Rd = reference.spatial_frame(sphere, placement.translation, J[:3] @ qd, (0.0, 0.0, 1.0))
-        return reference.spatial_decoupling_law(J, Jdqd, B, n, R, Rd, qd, a, Fc, np.zeros(robot.n), range(6), True)
+        R, Rd = oracle.spatial_frame(sphere, placement.translation, J[:3] @ qd, (0.0, 0.0, 1.0))
+        return oracle.spatial_decoupling_law(J, Jdqd, B, n, R, Rd, qd, a, Fc, np.zeros(robot.n), range(6), True)
 
     theirs = median_ns(pinocchio_law, 300 if quick else 3000, rep)
     add(f"{name}: {LAW_ONE}", ours, speedup=theirs / ours, ratio=f"{theirs / ours:.0f}x faster than Pinocchio + NumPy")

@@ -14,7 +14,7 @@ from typing import NamedTuple
 
 ONE_STATE = "F* from Python, one state (law(q, qdot, a, Fc))"
 BATCHED = "F* from Python, batched, per state (N = 1e5, SIMD lanes, both cores)"
-NUMPY_LAW = "F* in plain NumPy (hybrid.reference)"
+NUMPY_LAW = "F* in plain NumPy (hybrid.oracle)"
 
 
 def in_c(backend: str) -> str:

@@ -12,6 +12,7 @@ import os
 import re
 import sys
 import traceback
+import warnings
 from pathlib import Path
 
 from hybrid import bench
@@ -20,6 +21,7 @@ from hybrid.cli import experiments as experiment_cli
 from hybrid.cli import regenerate as regenerate_cli
 from hybrid.cli import sweep as sweep_cli
 from hybrid.control.config import read_controller_config
+from hybrid.deprecation import MESSAGE
 from hybrid.errors import HybridError
 from hybrid.models.robot import Robot
 from hybrid.native import checkout
@@ -171,7 +173,10 @@ def main(argv: list[str] | None = None, prog: str | None = None) -> int:
     debug = "--debug" in argv
     try:
         args = parse(argv, prog)
-        with progress.reporting(getattr(args, "verbose", False)) as report:
+        with progress.reporting(getattr(args, "verbose", False)) as report, warnings.catch_warnings():
+            # a renamed setting's old name (a sweep file's, --set's, a controller file's) is told on stderr
+            warnings.filterwarnings("always", MESSAGE, DeprecationWarning)
+            warnings.showwarning = lambda message, *_, **__: report.say(f"warning: {message}")
             args.report = report
             return args.func(args)
     except HybridError as exc:

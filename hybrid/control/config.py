@@ -21,7 +21,8 @@ Top level
     ``axes``: ``"all"`` (default for a 6-joint arm), ``"position"``, ``"planar"``, or a list of axis
     names (``t1``, ``t2``, ``n``, ``rot_t1``, ``rot_t2``, ``rot_n``). ``selection``: the
     force-controlled axes, a name or a list of names (default ``["n"]``; ``[]``: none).
-    ``reference``: the task frame's reference direction, 3 numbers in base axes (default z).
+    ``frame_direction``: the task frame's direction ``e``, 3 numbers in base axes (default z;
+    ``reference``, its old name, reads too, with a warning).
 ``[gains]``
     ``KPv, KIv, KI2v`` (velocity axes), ``KPf, KDf, KIf`` (force axes): numbers >= 0 for every
     axis (the rest keep :class:`~hybrid.Gains`' defaults). ``[gains.AXIS]`` (e.g. ``[gains.n]``): the
@@ -74,6 +75,7 @@ from hybrid.control.controller import ContactLoss, Controller, Posture
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES
+from hybrid.deprecation import renamed_keys, warn_renamed
 from hybrid.errors import HybridError
 from hybrid.geometry.paths import CirclePath, LinePath
 from hybrid.geometry.paths import Path as DesiredPath
@@ -102,7 +104,7 @@ KEYWORD_KEYS = {
     "scheme": ("scheme",), "sample_time": ("sample_time",), "integral": ("integral",), "curvature": ("curvature",),
     "frame": ("frame",), "position_error": ("position_error",), "singular_tol": ("singular_tol",),
     "surface": ("surface",), "axes": ("task", "axes"), "selection": ("task", "selection"),
-    "reference": ("task", "reference"), "gains": ("gains",), "force_reference": ("references", "force"),
+    "frame_direction": ("task", "frame_direction"), "gains": ("gains",), "force_reference": ("references", "force"),
     "velocity_reference": ("references", "velocity"), "integral_limit": ("limits", "integral"),
     "torque_limit": ("limits", "torque"), "torque_step_limit": ("limits", "torque_step"),
     "timing_tolerance": ("limits", "timing_tolerance"), "contact_loss": ("contact_loss",),
@@ -205,6 +207,14 @@ class Source:
             if key[:n] in self.lines:
                 return self.lines[key[:n]]
         return None
+
+    def renamed(self, old: Key, new: Key) -> None:
+        """Read the key ``old`` as ``new`` (its new name), with a warning at its line, which ``new``'s
+        refusals then point at."""
+        line = self.line(old)
+        warn_renamed(old[-1], new[-1], f"{self.path}{'' if line is None else f':{line}'}: [{'.'.join(old[:-1])}]")
+        if old in self.lines:
+            self.lines[new] = self.lines[old]
 
     def error(self, key: Key, message: str) -> HybridError:
         """``FILE:LINE: KEY: message`` (``KEY = value: ...`` when the message starts with the value)."""
@@ -460,7 +470,13 @@ class _Reader:
         return velocity if isinstance(velocity, Step) else Step(velocity, velocity, 0.0)
 
     def task(self, table: dict) -> dict:
-        self.known(("task",), table, ("axes", "selection", "reference"), "[task]")
+        if "reference" in table:  # the old name of frame_direction
+            if "frame_direction" in table:
+                raise self.error(("task", "reference"), "and frame_direction are both given; keep frame_direction "
+                                 "(reference is its old name)")
+            self.source.renamed(("task", "reference"), ("task", "frame_direction"))
+            table = renamed_keys(table, {"reference": "frame_direction"})
+        self.known(("task",), table, ("axes", "selection", "frame_direction"), "[task]")
         kw: dict = {}
         if "axes" in table:
             value = table["axes"]
@@ -472,9 +488,9 @@ class _Reader:
         if "selection" in table:
             kw["selection"] = tuple(self.axis_names(("task", "selection"), table["selection"],
                                                     "the force-controlled axes"))
-        if "reference" in table:
-            value = self.numbers(("task", "reference"), table["reference"], "a direction (x, y, z) in base axes")
-            kw["reference"] = value
+        if "frame_direction" in table:
+            kw["frame_direction"] = self.numbers(("task", "frame_direction"), table["frame_direction"],
+                                                 "a direction (x, y, z) in base axes")
         return kw
 
     def gain_values(self, key: Key, table: dict) -> dict:

@@ -18,8 +18,9 @@ from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.control.schemes import Scheme, scheme_of
 from hybrid.control.wrench_sensor import WrenchSensor
+from hybrid.deprecation import renamed_attribute, renamed_keywords
 from hybrid.errors import HybridError, NonFiniteError, SampleTimingError
-from hybrid.geometry.task_axes import check_axes, reference_direction, spatial_surface
+from hybrid.geometry.task_axes import check_axes, frame_direction_of, spatial_surface
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
@@ -194,7 +195,7 @@ class Controller:
     integral_limit : anti-windup: the largest integral action per axis [m/s^2 or rad/s^2]; a sample
         that would exceed it keeps the axis's integrals (conditional integration). Off by default.
     contact_loss : a :class:`ContactLoss` rule for force axes; off by default.
-    reference : the task frame's reference direction ``e`` (base axes).
+    frame_direction : the task frame's direction ``e`` (base axes): ``t1 = e x n / |e x n|``.
     singular_tol : conditioning below which a sample raises :class:`SingularConfigurationError`.
     posture : a :class:`Posture` task in the null space of the task (off by default). It needs a
         redundant task (fewer axes than joints: a 7-joint Panda, or a UR5 on ``axes="position"``)
@@ -222,11 +223,14 @@ class Controller:
 
     #: the step's per-sample inputs computed here when references are given as code (else bound to zeros)
     _reference_inputs = CONTROLLER_STEP.named(REFERENCE)
+    #: deprecated: :attr:`frame_direction`
+    reference = renamed_attribute("reference", "frame_direction")
 
+    @renamed_keywords(reference="frame_direction")
     def __init__(self, robot: Robot | Arm, surface, scheme: str | Scheme = "task", *, axes=None, selection=None,
                  gains: Gains | Mapping | None = None, force_reference=None, velocity_reference=None,
                  sample_time: float = 0.01, integral: bool = True, curvature: bool = False,
-                 frame: str = "actual", path: Callable | None = None, reference=(0.0, 0.0, 1.0),
+                 frame: str = "actual", path: Callable | None = None, frame_direction=(0.0, 0.0, 1.0),
                  position_error: bool = False, integral_limit: float | None = None,
                  contact_loss: ContactLoss | None = None, singular_tol: float = 1e-3,
                  posture: Posture | None = None, torque_limit="urdf", torque_step_limit=None,
@@ -261,7 +265,8 @@ class Controller:
                                   "not know the surface; use frame='actual' and position_error=False with it")
             self._spatial.check_sampling(sample_time)
         self.sample_time, self.integral, self.curvature, self.frame = float(sample_time), integral, curvature, frame
-        self.reference, self.singular_tol, self.path = tuple(reference_direction(reference)), float(singular_tol), path
+        self.frame_direction = tuple(frame_direction_of(frame_direction))
+        self.singular_tol, self.path = float(singular_tol), path
         self.selection = self._selection(selection)
         self.gains = self._gains(gains)
         if self.scheme.needs_force_gain and any(s and g.KPf <= 0 for g, s in zip(self.gains, self.selection)):
@@ -297,7 +302,7 @@ class Controller:
         self._dims = Dims.sized(robot.joint_names, self.axis_names, len(robot_array), len(surface_array))
         self._params = CONTROLLER_STEP.pack({
             "steps": steps, "gains": self._gain_array(), "selection": self.selection, "robot": robot_array,
-            "surface": surface_array, "e": self.reference, "options": options, "posture": posture_array,
+            "surface": surface_array, "e": self.frame_direction, "options": options, "posture": posture_array,
             "limits": limits, "sensor": sensor}, self._dims)
         # the step's other per-sample inputs, in its order: the states it keeps (the loops' integrals, the torque
         # last given to the arm and 1 once there is one, the sensor filter's, an estimated surface's), the sample

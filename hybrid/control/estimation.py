@@ -30,7 +30,7 @@ and the task frame's rate (the law's curvature term) comes from ``n'``. While th
 direction of motion (static friction holds against the tip's pull); with the tip at rest too, the
 friction correction holds. The velocity correction acts only in contact and above ``min_speed``.
 
-:func:`estimate_step` is the NumPy statement of one sample (the generated step's reference).
+:func:`estimate_step` is the NumPy statement of one sample (the generated step's oracle).
 """
 
 from __future__ import annotations

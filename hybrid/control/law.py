@@ -25,10 +25,11 @@ from functools import partial
 
 import numpy as np
 
+from hybrid.deprecation import renamed_attribute, renamed_keywords
 from hybrid.errors import HybridError, NonFiniteError
 from hybrid.geometry.frames import task_frame
 from hybrid.geometry.surfaces import Surface
-from hybrid.geometry.task_axes import check_axes, reference_direction, spatial_surface
+from hybrid.geometry.task_axes import check_axes, frame_direction_of, spatial_surface
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
@@ -50,11 +51,12 @@ class DecouplingLaw:
     compiled entry point is bound to them.
     """
 
-    __slots__ = ("robot", "surface", "curvature", "reference", "axes", "backend", "singular_tol", "_fn",
+    __slots__ = ("robot", "surface", "curvature", "frame_direction", "axes", "backend", "singular_tol", "_fn",
                  "_params", "_tail", "_fast", "_binding", "_force")
 
+    @renamed_keywords(reference="frame_direction")
     def __init__(self, robot: Robot | Arm, surface: Surface, curvature: bool = False,
-                 reference=(0.0, 0.0, 1.0), axes=None, backend: str | None = None,
+                 frame_direction=(0.0, 0.0, 1.0), axes=None, backend: str | None = None,
                  singular_tol: float = SINGULAR_TOL):
         init = partial(object.__setattr__, self)
         if isinstance(robot, Arm):  # the paper's parameters stand for its arm, in closed form
@@ -69,9 +71,9 @@ class DecouplingLaw:
         init("surface", surface)
         init("curvature", curvature)
         init("singular_tol", float(singular_tol))
-        init("reference", tuple(reference_direction(reference)))
+        init("frame_direction", tuple(frame_direction_of(frame_direction)))
         init("axes", check_axes(robot, axes))
-        section = robot.kind.closed_form_section(surface, self.axes, self.reference)
+        section = robot.kind.closed_form_section(surface, self.axes, self.frame_direction)
         closed = section is not None
         backend = backend if backend is not None else ("sympy" if closed else "rigid_body")
         if backend not in BACKENDS:
@@ -79,12 +81,12 @@ class DecouplingLaw:
         if backend != "rigid_body" and not closed:
             raise HybridError(f"backend {backend!r} is the paper's planar arm in closed form: it needs "
                               "hybrid.Robot.planar(arm) (or a hybrid.Arm) on a hybrid.Circle or a 2-D hybrid.Plane, "
-                              "planar task axes and reference (0, 0, 1); use backend='rigid_body'")
+                              "planar task axes and frame_direction (0, 0, 1); use backend='rigid_body'")
         init("backend", backend)
         if backend == "rigid_body":
             spatial = spatial_surface(surface)
             fn = units.law_unit(robot.chain, robot.name, spatial.spec(), self.axes).function("decoupling_law")
-            params = (robot.as_array(), spatial.as_array(), np.array(self.reference))
+            params = (robot.as_array(), spatial.as_array(), np.array(self.frame_direction))
             tail = (np.zeros(robot.n),)  # tau0
         else:
             fn = units.planar_unit(backend).function(f"decoupling_law_{section.kind}")
@@ -104,13 +106,16 @@ class DecouplingLaw:
 
     def __repr__(self) -> str:
         return (f"DecouplingLaw(robot={self.robot.name!r}, surface={self.surface!r}, curvature={self.curvature}, "
-                f"reference={self.reference}, axes={self.axes}, backend={self.backend!r}, "
+                f"frame_direction={self.frame_direction}, axes={self.axes}, backend={self.backend!r}, "
                 f"singular_tol={self.singular_tol})")
 
     def __reduce__(self):
         # the compiled handles do not pickle: a copy is built again from the settings
-        return (type(self), (self.robot, self.surface, self.curvature, self.reference, self.axes, self.backend,
+        return (type(self), (self.robot, self.surface, self.curvature, self.frame_direction, self.axes, self.backend,
                              self.singular_tol))
+
+    #: deprecated: :attr:`frame_direction`
+    reference = renamed_attribute("reference", "frame_direction")
 
     @property
     def arm(self) -> Arm | None:
@@ -156,7 +161,7 @@ class DecouplingLaw:
 
     def task_frame(self, p, pdot) -> tuple[np.ndarray, np.ndarray]:
         """``R`` and ``R'`` at the point ``p`` [m] moving at ``pdot`` (see :func:`hybrid.task_frame`)."""
-        return task_frame(self.surface, p, pdot, reference=self.reference)
+        return task_frame(self.surface, p, pdot, frame_direction=self.frame_direction)
 
     def _held(self, tau0) -> tuple:
         """The inputs after ``Fc``: the null-space torque where the law takes one."""
@@ -198,15 +203,16 @@ def _finite_tau0(tau0) -> None:
         raise NonFiniteError(f"tau0 = {np.array2string(np.asarray(tau0, float), precision=4):.100} is not finite")
 
 
+@renamed_keywords(reference="frame_direction")
 def decoupling_law(robot: Robot | Arm, surface: Surface, curvature: bool = False, *, backend: str | None = None,
-                   singular_tol: float = SINGULAR_TOL, reference=(0.0, 0.0, 1.0), axes=None) -> DecouplingLaw:
+                   singular_tol: float = SINGULAR_TOL, frame_direction=(0.0, 0.0, 1.0), axes=None) -> DecouplingLaw:
     """The decoupling law of ``robot`` on ``surface``, compiled (see :class:`DecouplingLaw`).
 
     ``axes``: the task axes, ``"all"`` (the default for a 6-joint arm or more), ``"position"``,
     ``"planar"`` (the paper's ``(t1, n)``, the default of its arm) or indices 0-5 of ``t1, t2, n``
-    and the rotations about them; ``reference``: the task frame's ``e`` (base axes);
+    and the rotations about them; ``frame_direction``: the task frame's direction ``e`` (base axes);
     ``curvature=True`` includes ``R' v`` (the paper runs without it); ``backend``: the derivation
     (``"rigid_body"``, or the planar closed form's ``"sympy"`` / ``"casadi"``; default the closed form
     where it applies).
     """
-    return DecouplingLaw(robot, surface, curvature, reference, axes, backend, singular_tol)
+    return DecouplingLaw(robot, surface, curvature, frame_direction, axes, backend, singular_tol)

@@ -17,7 +17,7 @@ turns each raw reading into ``F_c`` (conventions §12):
    the cutoff prewarped, so its gain is exactly -3 dB there), per component, started at the first
    sample's value.
 
-The functions here are the NumPy statement of these steps (the generated step's reference) and their
+The functions here are the NumPy statement of these steps (the generated step's oracle) and their
 inverse (the reading a sensor would give for a wrench, used by the simulated sensor).
 """
 

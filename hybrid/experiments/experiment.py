@@ -24,6 +24,7 @@ from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES, scheme_of
 from hybrid.control.wrench_sensor import WrenchSensor
+from hybrid.deprecation import RENAMED, RenamedKeywords, renamed_attribute
 from hybrid.errors import HybridError
 from hybrid.experiments.serialisation import experiment_from_dict, experiment_to_dict
 from hybrid.experiments.settings import (
@@ -36,7 +37,7 @@ from hybrid.experiments.settings import (
 from hybrid.experiments.start import start_state
 from hybrid.geometry.paths import Path
 from hybrid.geometry.surfaces import Surface
-from hybrid.geometry.task_axes import check_axes, reference_direction
+from hybrid.geometry.task_axes import check_axes, frame_direction_of
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
 from hybrid.native.standalone import generate_experiment
@@ -54,7 +55,7 @@ PHYSICS = frozenset({"model_error", "viscous_compensation", "sensor", "contact"}
 
 
 @dataclass(frozen=True, kw_only=True)
-class Experiment(RunSettings):
+class Experiment(RunSettings, metaclass=RenamedKeywords):
     """One closed-loop run: the true robot and surface, the controller's settings, the references,
     the sensor and contact, the integration and sampling.
 
@@ -75,7 +76,7 @@ class Experiment(RunSettings):
     start_point : the sensor tip's start on the surface [m] (projected onto it when within
         1 mm); default the path's start.
     elbow : +1 (``q2 > 0``) or -1: the planar arm's start configuration.
-    reference : the task frame's reference direction ``e`` (base axes).
+    frame_direction : the task frame's direction ``e`` (base axes): ``t1 = e x n / |e x n|``.
     axes : the controller's task axes (see :func:`hybrid.decoupling_law`); default the robot's.
     posture : a :class:`~hybrid.Posture` task in the null space of a redundant arm's task (its rest
         posture is also where the start's inverse kinematics begins); off by default.
@@ -95,6 +96,10 @@ class Experiment(RunSettings):
         the first touch, and after a loss of contact); 0 (the default): no such rule.
     touch_threshold : [N] the force below which the force axis counts as out of contact (0.5 N).
     frame : ``"actual"`` (the loops in ``R(r)``) or ``"desired"`` (in ``R(r_d)``).
+    duration : [s] the run's length, a whole number of samples.
+    integration_step : [s] the plant's fixed RK4 step (0.1 ms); ``sample_time`` is a whole multiple of it
+        (:attr:`steps_per_sample` integration steps a control sample).
+    sample_time : [s] the control sample period ``T``.
     backend : which committed unit runs the closed-form plant (``"sympy"`` or ``"casadi"``).
     singular_tol : the run stops when the Jacobian's conditioning at a sample falls below it.
     """
@@ -105,7 +110,7 @@ class Experiment(RunSettings):
     path: Path | None = None
     start_point: tuple[float, ...] | None = None
     elbow: int = 1
-    reference: tuple[float, float, float] = (0.0, 0.0, 1.0)
+    frame_direction: tuple[float, float, float] = (0.0, 0.0, 1.0)
     axes: str | tuple[int, ...] | None = None
     posture: Posture | None = None
     controller: str = "task"
@@ -125,10 +130,17 @@ class Experiment(RunSettings):
     force_reference: Step = field(default_factory=lambda: Step(10.0, 20.0, 0.4))
     speed_reference: Step = field(default_factory=lambda: Step(0.3, 0.6, 1.0))
     duration: float = 2.0
-    step: float = 1e-4
+    integration_step: float = 1e-4
     sample_time: float = 1e-2
     backend: str = "sympy"
     singular_tol: float = SINGULAR_TOL
+
+    #: the old names of renamed settings (:mod:`hybrid.deprecation`): given, they warn and set the new ones
+    _renamed = RENAMED
+    #: deprecated: :attr:`frame_direction`
+    reference = renamed_attribute("reference", "frame_direction")
+    #: deprecated: :attr:`integration_step`
+    step = renamed_attribute("step", "integration_step")
 
     def __post_init__(self):
         # the checks that read PHYSICS are check_common_types, check_sensing and check_timing: keep it so
@@ -157,12 +169,12 @@ class Experiment(RunSettings):
         if self.path is not None and not isinstance(self.path, Path):
             raise HybridError(f"path = {self.path!r:.60}; give a hybrid.CirclePath or hybrid.LinePath, or None")
         if not isinstance(self.backend, str) or self.backend not in BACKENDS:
-            raise HybridError(f"unknown backend {self.backend!r:.40}; choose one of {BACKENDS} (the NumPy reference "
-                              "runs as hybrid.reference.simulate(experiment))")
+            raise HybridError(f"unknown backend {self.backend!r:.40}; choose one of {BACKENDS} (the NumPy oracle "
+                              "runs as hybrid.oracle.simulate(experiment))")
         if isinstance(self.elbow, bool) or not isinstance(self.elbow, (int, np.integer)) or self.elbow not in (1, -1):
             raise HybridError(f"elbow = {self.elbow!r}; give +1 (q2 > 0) or -1 (q2 < 0)")
-        object.__setattr__(self, "reference", tuple(reference_direction(self.reference)))
-        self.robot.kind.check_settings(self.robot, self.reference, {"elbow": self.elbow, "backend": self.backend})
+        object.__setattr__(self, "frame_direction", tuple(frame_direction_of(self.frame_direction)))
+        self.robot.kind.check_settings(self.robot, self.frame_direction, {"elbow": self.elbow, "backend": self.backend})
         # what the controller will refuse, refused now (building it compiles its step)
         check_posture(self.robot, check_axes(self.robot, self.axes), scheme_of(self.controller), self.posture)
         if self.start_point is not None:
@@ -226,7 +238,7 @@ class Experiment(RunSettings):
         """Exactly the controller this run uses: its model of the arm, loops, references, options."""
         surface = self.surface if self.controller_surface is None else self.controller_surface
         return Controller(self.controller_robot(), surface, self.controller, axes=self.axes,
-                          reference=self.reference, posture=self.posture, **self.controller_settings())
+                          frame_direction=self.frame_direction, posture=self.posture, **self.controller_settings())
 
     @property
     def section(self):
@@ -290,8 +302,8 @@ class Experiment(RunSettings):
         Returns the paths written.
 
         ``<name>_plant_init(&p)`` gives a struct with this run's plant parameters (the true arm, the
-        sensor, the contact, the surface), its timing (``h``, ``steps_per_sample``, ``sample_time``,
-        ``duration``) and its start state (:meth:`initial_state`); ``<name>_plant_wrench`` reads the
+        sensor, the contact, the surface), its timing (``h``, the integration step; ``steps_per_sample``,
+        ``sample_time``, ``duration``) and its start state (:meth:`initial_state`); ``<name>_plant_wrench`` reads the
         sensor (what the controller's step takes), ``<name>_plant_advance(&p, tau, n)`` takes ``n`` RK4
         steps with the torque held, ``<name>_plant_signals`` gives what the metrics read. A loop of
         samples around the two is this run (``hybrid.simulate``'s) to rounding error. ``name``: ASCII

@@ -14,6 +14,7 @@ from hybrid.control.controller import Posture
 from hybrid.control.loops import Gains
 from hybrid.control.references import Step
 from hybrid.control.wrench_sensor import Tool, WrenchSensor
+from hybrid.deprecation import renamed_keys
 from hybrid.errors import HybridError
 from hybrid.geometry.paths import CirclePath, LinePath
 from hybrid.geometry.surfaces import SURFACE_KINDS, Circle, Plane, Surface
@@ -35,7 +36,7 @@ def experiment_to_dict(exp) -> dict:
     d["controller_surface"] = None if exp.controller_surface is None else surface_to_dict(exp.controller_surface)
     d["path"] = None if exp.path is None else {"kind": type(exp.path).__name__, **asdict(exp.path)}
     d["start_point"] = None if exp.start_point is None else list(exp.start_point)
-    d["reference"] = list(exp.reference)
+    d["frame_direction"] = list(exp.frame_direction)
     d["axes"] = list(exp.axes) if isinstance(exp.axes, tuple) else exp.axes
     d["posture"] = None if exp.posture is None else asdict(exp.posture)
     for name in ("wrench_sensor", "controller_wrench_sensor"):
@@ -64,6 +65,7 @@ def _settings(d: dict) -> dict:
                          "its arrays load with numpy.load")
     elif kind != "experiment":
         raise ValueError("no 'kind': 'experiment' entry")
+    d = renamed_keys(d)  # saved before settings were renamed
     parts = {"sensor": Sensor, "contact": Contact, "gains": Gains, "force_reference": Step,
              "speed_reference": Step}
     for k, typ in parts.items():
@@ -92,7 +94,7 @@ def _from_paper_settings(d: dict) -> dict:
     lifted = Circle(**surface) if kind == "circle" else Plane(**surface)
     d["robot"], d["surface"] = {"closed_form": d.pop("arm")}, surface_to_dict(lifted)
     d["backend"] = "sympy" if d.get("backend") == "numpy" else d.get("backend", "sympy")
-    d.update(path=None, reference=[0.0, 0.0, 1.0], axes=None, posture=None)
+    d.update(path=None, frame_direction=[0.0, 0.0, 1.0], axes=None, posture=None)
     return d
 
 

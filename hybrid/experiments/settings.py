@@ -11,6 +11,7 @@ from hybrid.control.controller import ContactLoss
 from hybrid.control.loops import Gains, check_loops
 from hybrid.control.references import Step
 from hybrid.control.wrench_sensor import WrenchSensor
+from hybrid.deprecation import RENAMED, renamed_settings
 from hybrid.errors import HybridError
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.validate import _finite, check_singular_tol
@@ -29,7 +30,8 @@ class RunSettings:
 
     @property
     def steps_per_sample(self) -> int:
-        return round(self.sample_time / self.step)
+        """How many integration steps (RK4, ``integration_step`` each) a control sample spans."""
+        return round(self.sample_time / self.integration_step)
 
     @property
     def n_samples(self) -> int:
@@ -137,28 +139,29 @@ def check_common_types(exp) -> None:
 
 
 def check_timing(exp) -> None:
-    """The run's timing and physics settings, checked alike for every experiment: duration, RK4 step
-    and sample time (whole multiples, fast enough for the contact), model error, stable loops."""
+    """The run's timing and physics settings, checked alike for every experiment: duration, integration
+    step and sample time (whole multiples, fast enough for the contact), model error, stable loops."""
     owner = type(exp).__name__
-    _finite(owner, duration=exp.duration, step=exp.step, sample_time=exp.sample_time)
+    h = exp.integration_step
+    _finite(owner, duration=exp.duration, integration_step=h, sample_time=exp.sample_time)
     if exp.duration <= 0:
         raise HybridError(f"duration = {exp.duration} s; give a positive duration")
-    if exp.step <= 0 or exp.sample_time <= 0:
-        raise HybridError(f"step = {exp.step} s and sample_time = {exp.sample_time} s must be positive")
-    ratio = exp.sample_time / exp.step
+    if h <= 0 or exp.sample_time <= 0:
+        raise HybridError(f"integration_step = {h} s and sample_time = {exp.sample_time} s must be positive")
+    ratio = exp.sample_time / h
     if not math.isfinite(ratio) or ratio > 1e9:
-        raise HybridError(f"step = {exp.step} s is too small for sample_time = {exp.sample_time} s "
-                          "(over 1e9 steps a sample); give a step of at least sample_time / 1e9")
+        raise HybridError(f"integration_step = {h} s is too small for sample_time = {exp.sample_time} s "
+                          "(over 1e9 steps a sample); give an integration_step of at least sample_time / 1e9")
     if abs(ratio - round(ratio)) > 1e-9 * ratio or round(ratio) < 1:
-        raise HybridError(f"sample_time = {exp.sample_time} s is not a whole multiple of step = "
-                          f"{exp.step} s; choose step = sample_time / k for a whole k")
+        raise HybridError(f"sample_time = {exp.sample_time} s is not a whole multiple of integration_step = "
+                          f"{h} s; choose integration_step = sample_time / k for a whole k")
     # fastest plant mode: sensor mass on the contact (and sensor) spring-dampers
     rate = max(math.sqrt((exp.contact.stiffness + exp.sensor.stiffness) / exp.sensor.mass),
                (exp.contact.damping + exp.sensor.damping) / exp.sensor.mass)
-    if exp.step * rate > 1.0:
+    if h * rate > 1.0:
         raise HybridError(
-            f"step = {exp.step} s is too large for the contact: its fastest mode is {rate:.3g} rad/s "
-            f"and RK4 needs step * rate <= 1 for accuracy; use step <= {1.0 / rate:.2e} s")
+            f"integration_step = {h} s is too large for the contact: its fastest mode is {rate:.3g} rad/s "
+            f"and RK4 needs integration_step * rate <= 1 for accuracy; use integration_step <= {1.0 / rate:.2e} s")
     if exp.model_error <= -1 or exp.viscous_compensation < 0:
         raise HybridError(f"model_error = {exp.model_error} must be > -1 and viscous_compensation = "
                           f"{exp.viscous_compensation} >= 0")
@@ -178,8 +181,10 @@ PREFIX_ALIASES = {"arm.": "robot.closed_form."}
 
 
 def setting_path(name: str) -> str:
-    """The dotted path a setting name stands for (:func:`setting_aliases`, :data:`PREFIX_ALIASES`)."""
-    path = setting_aliases().get(name, name)
+    """The dotted path a setting name stands for (:func:`setting_aliases`, :data:`PREFIX_ALIASES`; a renamed
+    setting's old name, :data:`hybrid.deprecation.RENAMED`, stands for its new one)."""
+    head, dot, rest = name.partition(".")
+    path = setting_aliases().get(name, RENAMED.get(head, head) + dot + rest)
     for short, long in PREFIX_ALIASES.items():
         if path.startswith(short):
             return long + path[len(short):]
@@ -194,7 +199,9 @@ def setting_aliases() -> dict[str, str]:
 
 def with_overrides(cls, maker: str, overrides: dict, defaults: dict | None = None):
     """``cls(**defaults, **overrides)`` where the gains may also be given one by one (``KPv=50``) and
-    ``F_d`` / ``v_d`` name the force / speed references; an unknown name lists the known ones."""
+    ``F_d`` / ``v_d`` name the force / speed references; an unknown name lists the known ones. A renamed
+    setting's old name sets the new one, with a warning."""
+    overrides = renamed_settings(overrides, maker, stacklevel=5)
     names = {f.name for f in fields(cls)}
     gain_names = {f.name for f in fields(Gains)}
     aliases = REFERENCE_ALIASES

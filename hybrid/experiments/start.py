@@ -35,9 +35,9 @@ def start_state(exp) -> np.ndarray:
     if exp.start_gap > 0:
         # the sensor tip's weight hangs on its spring where the plant gives it gravity (the 3-D plant's)
         weight = exp.sensor.mass * np.array(exp.robot.gravity) if exp.robot.kind.sensor_weighs else np.zeros(3)
-        return _free_start(exp.robot, geometry, p0, exp.elbow, q0, exp.reference, exp.singular_tol, exp.start_gap,
+        return _free_start(exp.robot, geometry, p0, exp.elbow, q0, exp.frame_direction, exp.singular_tol, exp.start_gap,
                            tuple((weight[:len(p0)] / exp.sensor.stiffness).tolist()))
-    return _pressed_start(exp.robot, geometry, p0, exp.elbow, q0, exp.reference,
+    return _pressed_start(exp.robot, geometry, p0, exp.elbow, q0, exp.frame_direction,
                           exp.singular_tol, exp.force_reference(0.0), exp.contact.stiffness, exp.sensor.stiffness)
 
 
@@ -48,24 +48,24 @@ def _probe(exp, p: np.ndarray) -> np.ndarray:
 
 # the runs of a sweep mostly start alike: what they share is worked out once (from the values it reads)
 @lru_cache(maxsize=1024)
-def _pressed_start(robot, surface, p0, elbow, q0, reference, singular_tol, F0, k_e, K_s) -> np.ndarray:
+def _pressed_start(robot, surface, p0, elbow, q0, frame_direction, singular_tol, F0, k_e, K_s) -> np.ndarray:
     normal = surface.normal_at(p0)
     s, r = pressed(p0, normal, F0, k_e, K_s)
-    return _at_rest(robot, normal, p0, s, r, elbow, q0, reference, singular_tol)
+    return _at_rest(robot, normal, p0, s, r, elbow, q0, frame_direction, singular_tol)
 
 
 @lru_cache(maxsize=1024)
-def _free_start(robot, surface, p0, elbow, q0, reference, singular_tol, gap, sag) -> np.ndarray:
+def _free_start(robot, surface, p0, elbow, q0, frame_direction, singular_tol, gap, sag) -> np.ndarray:
     normal = surface.normal_at(p0)
     s, r = free(p0, normal, gap, np.array(sag))
-    return _at_rest(robot, normal, p0, s, r, elbow, q0, reference, singular_tol, gap)
+    return _at_rest(robot, normal, p0, s, r, elbow, q0, frame_direction, singular_tol, gap)
 
 
-def _at_rest(robot, normal, p0, s, r, elbow, q0, reference, singular_tol, gap: float = 0.0) -> np.ndarray:
+def _at_rest(robot, normal, p0, s, r, elbow, q0, frame_direction, singular_tol, gap: float = 0.0) -> np.ndarray:
     """The state at rest with the sensor tip at ``s`` and the arm tip at ``r`` (the start point ``p0`` on
     the surface, its ``normal``), the joints from the true arm's inverse kinematics."""
     # the tool's orientation is set where the task controls it (the planar arm's follows from r)
-    rotation = robot.kind.tool_rotation(lambda: _tool_rotation(np.asarray(reference), normal))
+    rotation = robot.kind.tool_rotation(lambda: _tool_rotation(np.asarray(frame_direction), normal))
     where = (f"start_gap = {gap:g} m puts the arm tip at {np.round(r, 4).tolist()} m" if gap > 0 else
              f"the start point {np.round(p0, 4).tolist()} m")
     fix = ("give a smaller start_gap, or move the surface or start_point" if gap > 0 else
@@ -89,7 +89,7 @@ def _tool_rotation(e: np.ndarray, normal: np.ndarray) -> np.ndarray:
     """The tool's start orientation: its z axis along ``-n``, its x axis along ``t1 = e x n``."""
     x_tool = np.cross(e, normal)
     if np.linalg.norm(x_tool) < 1e-6:
-        raise HybridError("the reference direction is parallel to the surface normal at the start point: the task "
-                          "frame is undefined there; choose another reference or start_point")
+        raise HybridError("the task frame's direction e is parallel to the surface normal at the start point: the "
+                          "task frame is undefined there; choose another frame_direction or start_point")
     x_tool /= np.linalg.norm(x_tool)
     return np.column_stack([x_tool, np.cross(-normal, x_tool), -normal])

@@ -1,7 +1,7 @@
 """The task frame ``R(r)`` and its rate ``R'(r, r')`` at points of any surface, from the generated C.
 
 The rows of ``R_L`` are ``t1 = e x n / |e x n|``, ``t2 = n x t1`` and the normal ``n`` (towards the
-robot) for the reference direction ``e``; ``R_L'`` is its derivative along the point's velocity,
+robot) for the frame's direction ``e``; ``R_L'`` is its derivative along the point's velocity,
 which carries the surface's curvature. A planar surface's frame is the paper's 2 x 2 one, rows
 tangent ``t = (-n_y, n_x)`` and normal (the rows ``t1, n`` and columns ``x, y`` of its lift's with
 ``e = z``).
@@ -11,19 +11,22 @@ from __future__ import annotations
 
 import numpy as np
 
+from hybrid.deprecation import renamed_keywords
 from hybrid.errors import HybridError, NonFiniteError
 from hybrid.geometry.surfaces import Surface
-from hybrid.geometry.task_axes import reference_direction
+from hybrid.geometry.task_axes import frame_direction_of
 from hybrid.native import units
 from hybrid.native.binding import as_array, is_batch
 
 
-def task_frame(surface: Surface, r, rdot, *, reference=(0.0, 0.0, 1.0),
+@renamed_keywords(reference="frame_direction")
+def task_frame(surface: Surface, r, rdot, *, frame_direction=(0.0, 0.0, 1.0),
                backend: str = "sympy") -> tuple[np.ndarray, np.ndarray]:
     """``R(r)`` and ``R'(r, r')`` on ``surface`` at the point ``r`` [m] moving at ``r'`` [m/s].
 
     Points of 3 coordinates give the 3-D frame, ``(3, 3)`` for one point and ``(N, 3, 3)`` for N
-    (shape ``(N, 3)``) in one native call, generated for the surface (``reference`` its ``e``).
+    (shape ``(N, 3)``) in one native call, generated for the surface (``frame_direction``: the task
+    frame's direction ``e``, base axes).
     Points of 2 coordinates (in the base xy-plane, on a surface with a
     :meth:`~hybrid.geometry.surfaces.Surface.cross_section`: a cylinder about z, a vertical plane)
     give the paper's 2 x 2 frame: one point from the committed closed-form unit of ``backend``, N
@@ -43,14 +46,14 @@ def task_frame(surface: Surface, r, rdot, *, reference=(0.0, 0.0, 1.0),
         if section is None:
             raise HybridError(f"points of 2 coordinates lie in the base xy-plane, but {surface!r:.60} has no planar "
                               "cross-section there; give 3 coordinates")
-        if not np.array_equal(reference_direction(reference), (0.0, 0.0, 1.0)):
-            raise HybridError("a planar frame has e = z (tangent t = (-n_y, n_x)); leave reference out")
+        if not np.array_equal(frame_direction_of(frame_direction), (0.0, 0.0, 1.0)):
+            raise HybridError("a planar frame has e = z (tangent t = (-n_y, n_x)); leave frame_direction out")
         if not is_batch(r):
             out = units.planar_unit(backend).function(f"task_frame_{section.kind}")(r, rdot, section.as_array())
             return out["R"], out["Rd"]
         r, rdot = (np.column_stack([x, np.zeros(len(x))]) for x in (r, rdot))
     frame = units.frame_unit(surface.spec()).function("task_frame")
-    e = reference_direction(reference)
+    e = frame_direction_of(frame_direction)
     call = frame.batch if is_batch(r) else frame
     out = call(r, rdot, surface.as_array(), e)
     R, Rd = out["R"], out["Rd"]

@@ -1,7 +1,7 @@
-"""The task axes and the task frame's reference direction (the axes' names: :data:`hybrid.spec.axes.AXIS_NAMES`).
+"""The task axes and the task frame's direction (the axes' names: :data:`hybrid.spec.axes.AXIS_NAMES`).
 
 The task frame's rows are ``t1, t2, n`` (linear axes 0-2), then the rotations about them (3-5):
-``t1 = e x n / |e x n|`` for the reference direction ``e``, ``t2 = n x t1``, ``n`` the surface's
+``t1 = e x n / |e x n|`` for the frame's direction ``e``, ``t2 = n x t1``, ``n`` the surface's
 normal towards the robot. A task uses some of the six axes, in a given order.
 """
 
@@ -53,17 +53,18 @@ def spatial_surface(surface):
     return surface
 
 
-def reference_direction(e) -> np.ndarray:
-    """The task frame's reference direction ``e`` (3, base axes) as a unit vector, checked."""
+def frame_direction_of(e) -> np.ndarray:
+    """The task frame's direction ``e`` (3, base axes; ``frame_direction``) as a unit vector, checked."""
     try:
         arr = np.asarray(e, dtype=float)
         if arr.shape != (3,):
             raise ValueError
-        return np.array(_unit_reference(tuple(arr.tolist())))
+        return np.array(_unit_direction(tuple(arr.tolist())))
     except (TypeError, ValueError, OverflowError, HybridError):
-        raise HybridError(f"reference = {e!r:.60}; give a nonzero direction (e_x, e_y, e_z) in base axes") from None
+        raise HybridError(f"frame_direction = {e!r:.60}; give a nonzero direction (e_x, e_y, e_z) in base "
+                          "axes") from None
 
 
 @lru_cache(maxsize=256)
-def _unit_reference(e: tuple) -> tuple:
-    return unit_vector("decoupling_law", "reference", e)
+def _unit_direction(e: tuple) -> tuple:
+    return unit_vector("decoupling_law", "frame_direction", e)

@@ -94,12 +94,12 @@ class SerialChain:
         """The surface as this kind's plant and closed form see it: a chain sees it whole (None)."""
         return None
 
-    def closed_form_section(self, surface, axes: tuple[int, ...], reference) -> object | None:
+    def closed_form_section(self, surface, axes: tuple[int, ...], frame_direction) -> object | None:
         """The cross-section on which this kind's closed-form law serves ``surface`` on the task ``axes`` with
-        the frame's ``reference`` direction; None where it has no closed form that applies."""
+        the task frame's direction ``frame_direction``; None where it has no closed form that applies."""
         return None
 
-    def check_settings(self, robot, reference, settings: dict) -> None:
+    def check_settings(self, robot, frame_direction, settings: dict) -> None:
         """Refuse an experiment's closed-form settings a chain has none of (``settings``: by name)."""
         for name, default in self.closed_form_settings.items():
             if settings.get(name, default) != default:
@@ -160,17 +160,18 @@ class ClosedFormArm(SerialChain):
         """The surface's cross-section in the arm's plane (:meth:`Surface.cross_section`)."""
         return surface.cross_section()
 
-    def closed_form_section(self, surface, axes: tuple[int, ...], reference) -> object | None:
+    def closed_form_section(self, surface, axes: tuple[int, ...], frame_direction) -> object | None:
         """The cross-section, for a surface of the library's with one, the planar task axes ``(t1, n)`` and
-        the reference direction ``e = z``."""
-        if not isinstance(surface, Surface) or tuple(axes) != AXES["planar"] or tuple(reference) != (0.0, 0.0, 1.0):
+        the task frame's direction ``e = z``."""
+        planar = tuple(axes) == AXES["planar"] and tuple(frame_direction) == (0.0, 0.0, 1.0)
+        if not isinstance(surface, Surface) or not planar:
             return None
         return surface.cross_section()
 
-    def check_settings(self, robot, reference, settings: dict) -> None:
-        if tuple(reference) != (0.0, 0.0, 1.0):
-            raise HybridError(f"reference = {tuple(reference)}: the planar arm's task frame has e = z (its plant "
-                              "records in it); leave reference out")
+    def check_settings(self, robot, frame_direction, settings: dict) -> None:
+        if tuple(frame_direction) != (0.0, 0.0, 1.0):
+            raise HybridError(f"frame_direction = {tuple(frame_direction)}: the planar arm's task frame has e = z (its "
+                              "plant records in it); leave frame_direction out")
 
     def tool_rotation(self, rotation):
         return None  # the arm's orientation follows from its position

@@ -33,8 +33,8 @@ def status_error(status: int, where: str, singular_hint: str = "", **inputs) -> 
             f"pose, or lower singular_tol{shown}")
     if name == "FRAME_UNDEFINED":
         return TaskFrameError(
-            f"{where}: the task frame is undefined: the reference direction e is parallel to the surface normal "
-            f"there; choose another reference direction (decoupling_law(..., reference=...)){shown}")
+            f"{where}: the task frame is undefined: its direction e is parallel to the surface normal there; "
+            f"choose another frame_direction (decoupling_law(..., frame_direction=...)){shown}")
     if name == "EULER_SINGULAR":
         return SingularConfigurationError(
             f"{where}: the ZYX Euler angles are singular (beta = +-pi/2, cos beta = 0); use coordinates='twist' "

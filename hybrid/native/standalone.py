@@ -100,8 +100,9 @@ def plant_files(exp, prefix: str, x0) -> dict[str, str]:
     key (cached)."""
     plant = exp.plant_class.loop_plant(exp)
     values = {k: [float(v) for v in np.asarray(a, float).ravel()] for k, a in exp.plant_class.inputs(exp).items()}
-    values |= {"x0": [float(v) for v in x0], "h": float(exp.step), "steps_per_sample": int(exp.steps_per_sample),
-               "sample_time": float(exp.sample_time), "duration": float(exp.duration)}
+    values |= {"x0": [float(v) for v in x0], "h": float(exp.integration_step),
+               "steps_per_sample": int(exp.steps_per_sample), "sample_time": float(exp.sample_time),
+               "duration": float(exp.duration)}
     robot, surface = exp.robot, (exp.section or exp.surface).kind
     info = {"robot": {"robot": robot.name, "joints": list(robot.joint_names)}, "surface": surface,
             "plant": plant.key()[0], "experiment": exp.to_dict()}

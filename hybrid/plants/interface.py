@@ -59,11 +59,11 @@ class GeneratedPlant(Plant):
     after ``x`` of the outputs. The unit is compiled when the plant is first advanced or read (a run of
     the compiled loop needs only its record's names)."""
 
-    def __init__(self, unit, rhs: str, outputs: str, held: tuple, shown: tuple, step: float,
+    def __init__(self, unit, rhs: str, outputs: str, held: tuple, shown: tuple, integration_step: float,
                  force_columns: tuple[str, ...]):
         self._unit, self._names, self._held, self._shown = unit, (rhs, outputs), held, shown
         self.record = plant_record(unit.manifest_entry(rhs), unit.manifest_entry(outputs))
-        self.nq, self.h, self.force_columns = self.record["nq"], step, force_columns
+        self.nq, self.h, self.force_columns = self.record["nq"], integration_step, force_columns
 
     @cached_property
     def _bound(self) -> tuple:

@@ -21,7 +21,7 @@ The model (:func:`arm_spec`, :class:`MujocoPlant`):
   callback, so at every RK4 stage; MuJoCo's own contact and constraints are disabled.
 
 MuJoCo thus integrates the generated plant's equations with its own rigid-body dynamics, by RK4 at
-the experiment's ``step``, and the two agree to rounding: about 1e-13 N RMS in the normal force of
+the experiment's ``integration_step``, and the two agree to rounding: about 1e-13 N RMS in the normal force of
 the 3-D runs, about 1e-10 N in the paper's, whose sticking friction (``gamma N / v_eps`` against
 ``m_s``) amplifies rounding as much as a one-ulp change of the start state does. The output record
 is the generated plant's, computed from the state.
@@ -199,7 +199,7 @@ class MujocoPlant(Plant):
         for axis in np.eye(3):
             sensor.add_joint(type=mj.mjtJoint.mjJNT_SLIDE, axis=list(axis))
         opt = spec.option
-        opt.timestep, opt.integrator = exp.step, mj.mjtIntegrator.mjINT_RK4
+        opt.timestep, opt.integrator = exp.integration_step, mj.mjtIntegrator.mjINT_RK4
         D = mj.mjtDisableBit
         # our contact replaces MuJoCo's; no limits or friction loss (the generated plant has none); a bad
         # state is reported, not reset

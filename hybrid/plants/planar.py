@@ -50,7 +50,8 @@ class PlanarPlant(GeneratedPlant):
         unit = units.planar_unit(exp.backend)
         kind = exp.section.kind
         held = tuple(self.inputs(exp).values())
-        super().__init__(unit, f"plant_rhs_{kind}", f"plant_outputs_{kind}", held, held, exp.step, ("Fc_x", "Fc_y"))
+        super().__init__(unit, f"plant_rhs_{kind}", f"plant_outputs_{kind}", held, held, exp.integration_step,
+                         ("Fc_x", "Fc_y"))
         self._arm = exp.arm
 
     @staticmethod

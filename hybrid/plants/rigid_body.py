@@ -42,7 +42,7 @@ class RigidBodyPlant(GeneratedPlant):
         unit = units.plant_unit(exp.robot.chain, exp.robot.name, exp.surface.spec())
         given = self.inputs(exp)
         super().__init__(unit, "plant_rhs", "plant_outputs", tuple(given[k] for k in ("robot", "plant", "surface")),
-                         tuple(given.values()), exp.step, ("Fc_x", "Fc_y", "Fc_z"))
+                         tuple(given.values()), exp.integration_step, ("Fc_x", "Fc_y", "Fc_z"))
         self._robot = exp.robot
 
     @staticmethod
@@ -55,7 +55,7 @@ class RigidBodyPlant(GeneratedPlant):
         """The plant's parameter arrays (after ``x, tau``; the output record's also ``e``) by the
         manifest's names."""
         return {"robot": exp.robot.as_array(), "plant": exp.plant_array(), "surface": exp.surface.as_array(),
-                "e": np.asarray(exp.reference, float)}
+                "e": np.asarray(exp.frame_direction, float)}
 
     conditioning_name = "m/(|J|_F |J^+|_F)"
 

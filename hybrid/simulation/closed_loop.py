@@ -7,7 +7,7 @@ has noise, a bias, a lag or a delay (the Python runner gives those); :func:`run`
 experiments, grouped by the loop they share, one native call per group; :func:`prepare_alike`
 prepares a run from another that differs from it only in settings of :data:`ROW_SETTINGS` (a
 sweep's runs, mostly). ``simulate`` and ``sweep`` use it; the Python runner
-(:func:`hybrid.simulation.runner.run`) is the reference it is tested against and the path that
+(:func:`hybrid.simulation.runner.run`) is the oracle it is tested against and the path that
 explains a run that stopped.
 """
 
@@ -135,7 +135,7 @@ def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None, ctrl=No
     fs, vs = exp.force_reference, exp.speed_reference
     values = {"x0": x0, "force_step": (fs.before, fs.after, fs.at), "speed_step": (vs.before, vs.after, vs.at),
               **given, **{f"controller.{k}": v for k, v in ctrl.step_inputs().items()}}
-    settings = (exp.n_samples, exp.steps_per_sample, exp.step, exp.sample_time, exp.singular_tol)
+    settings = (exp.n_samples, exp.steps_per_sample, exp.integration_step, exp.sample_time, exp.singular_tol)
     return Prepared(exp, loop, settings, loop.row(values))
 
 

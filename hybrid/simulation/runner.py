@@ -4,8 +4,8 @@ A run the compiled loop takes (:mod:`hybrid.simulation.closed_loop`: references 
 numbers or steps, the controller's frame at the contact point) runs there whole, as a sweep runs
 it. The others run here: the loop over control samples in Python, everything inside a sample
 (the plant's RK4 steps, one controller step) compiled C; a compiled run that stopped is run here
-again, for the account of where and why. The NumPy reference runs through the same runner
-(:func:`hybrid.reference.simulate`, for tests and benchmarks). Runs are deterministic.
+again, for the account of where and why. The NumPy oracle runs through the same runner
+(:func:`hybrid.oracle.simulate`, for tests and benchmarks). Runs are deterministic.
 """
 
 from __future__ import annotations
@@ -48,8 +48,9 @@ def check_memory(exp, record: dict | None = None) -> None:
     record = record or planar_record()
     steps = exp.steps_per_sample * exp.n_samples + 1
     per_step = 8 * (len(record["state"]) + record["nq"] + len(record["outputs"]) + 3)  # doubles kept per RK4 step
-    check_size(f"duration = {exp.duration} s at step = {exp.step} s is {steps:,} RK4 steps, whose record needs",
-               steps * per_step, "shorten duration or lengthen step", fraction=MEMORY_FRACTION)
+    check_size(f"duration = {exp.duration} s at integration_step = {exp.integration_step} s is {steps:,} RK4 steps, "
+               "whose record needs", steps * per_step, "shorten duration or lengthen integration_step",
+               fraction=MEMORY_FRACTION)
 
 
 # ---------------------------------------------------------------------- runner
@@ -57,7 +58,7 @@ def check_memory(exp, record: dict | None = None) -> None:
 
 def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> SimulationResult:
     """Run the experiment ``exp``: its controller sampled every ``sample_time`` under zero-order hold,
-    its plant advanced by RK4 every ``step``. ``plant`` names one of :data:`hybrid.plants.registry.PLANTS`:
+    its plant advanced by RK4 every ``integration_step``. ``plant`` names one of :data:`hybrid.plants.registry.PLANTS`:
     ``"generated"`` (the experiment's own: the paper's arm in closed form, else its rigid-body plant)
     or ``"mujoco"`` (MuJoCo reading the arm's URDF, :mod:`hybrid.plants.mujoco`). With
     ``compiled=False`` the Python runner runs it even where the compiled loop could (the reference
@@ -134,10 +135,10 @@ def _divergence(partial: SimulationResult, plant, t: float, q, qdot, tau, x) -> 
     """The error for a plant state gone non-finite in the sample from ``t`` (state ``q, qdot`` then,
     torque ``tau``, last finite state ``x``): when, where, and the likely cause."""
     exp = partial.experiment
-    t_fail = partial.t[-1] + exp.step
+    t_fail = partial.t[-1] + exp.integration_step
     cond = plant.conditioning(q)
     causes = [c.lstrip("; ") for c in (model_error_note(exp), _closest_singularity(partial, plant)) if c]
-    causes = causes or ["reduce step or check gains and parameters"]
+    causes = causes or ["reduce integration_step or check gains and parameters"]
     return SimulationError(
         f"the plant state became NaN or infinite at t = {t_fail:.5f} s: {causes[0]}\n"
         + "".join(f"  also: {c}\n" for c in causes[1:]) +
@@ -165,7 +166,7 @@ def _result(exp, plant, states: np.ndarray, taus: np.ndarray, metrics: bool | di
     """The result of a run; ``metrics``: computed from the series (True), none (False), or as given;
     ``normals``: an estimated surface's normal at each sample; ``outputs``: the output record of each
     state, when the compiled loop gave it (else the plant computes it)."""
-    t = np.arange(len(states)) * exp.step
+    t = np.arange(len(states)) * exp.integration_step
     outputs = plant.outputs(states) if outputs is None else outputs
     res = SimulationResult(exp, t, states, taus, outputs, exp.force_reference.sampled(t),
                            exp.speed_reference.sampled(t), record=plant.record, normal_estimate=normals)

@@ -27,6 +27,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from hybrid import files
+from hybrid.deprecation import warn_old_names
 from hybrid.errors import HybridError
 from hybrid.sweeps import engines
 from hybrid.sweeps.engines import CONNECT_TIMEOUT, ENGINES, SCHEMES, _dask, _local, _preload_pandas, check_client
@@ -104,6 +105,7 @@ def sweep(base, parameters: Mapping, *, samples: int | None = None, seed: int = 
     check_base(base)
     check_mapping(parameters)
     check_names(base, parameters)
+    warn_old_names(parameters, "sweep")
     parameters = parameters_mapping(parameters)
     check_client(client, engine)
     if workers is not None:

@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from hybrid import files
+from hybrid.deprecation import RENAMED, renamed_keys
 from hybrid.errors import HybridError
 from hybrid.simulation.metrics import metrics
 from hybrid.sweeps.space import _plain
@@ -51,8 +52,11 @@ def _prepare(out: Path, description: dict, force: bool):
         for left in files.leftovers(out, OUTPUTS) + files.leftovers(out / "parts", (PART,)):
             left.unlink(missing_ok=True)
         spec = out / "sweep.json"
-        text = json.dumps(description, indent=2, sort_keys=True, default=str) + "\n"
-        same = spec.is_file() and _read_text(spec) == text
+        text = _text(description)
+        stored = _read_text(spec) if spec.is_file() else None
+        same = stored is not None and (stored == text or _renamed(stored) == _renamed(text))
+        if same and stored != text:  # written before settings were renamed: the same sweep, now by its new names
+            files.write_text(spec, text, overwrite=True)
         if not same:
             theirs = sorted({p for pattern in OUTPUTS for p in out.glob(pattern)}
                             | {p for p in (out / "parts").glob("*.parquet") if not p.name.startswith(".")})
@@ -70,6 +74,30 @@ def _prepare(out: Path, description: dict, force: bool):
         lock.close()
         raise
     return lock
+
+
+def _text(description: dict) -> str:
+    """A sweep's ``sweep.json``."""
+    return json.dumps(description, indent=2, sort_keys=True, default=str) + "\n"
+
+
+def _renamed(stored: str) -> str | None:
+    """The ``sweep.json`` text ``stored`` with renamed settings by their new names (its base experiment's,
+    :func:`hybrid.deprecation.renamed_keys`, and its parameters'), or None where it is not a sweep's."""
+    try:
+        description = json.loads(stored)
+    except ValueError:
+        return None
+    if not isinstance(description, dict) or not isinstance(description.get("base"), dict) \
+            or not isinstance(description.get("parameters"), list):
+        return None
+    parameters = [[_new_name(p[0]), *p[1:]] if isinstance(p, list) and p else p for p in description["parameters"]]
+    return _text({**description, "base": renamed_keys(description["base"]), "parameters": parameters})
+
+
+def _new_name(name):
+    """A parameter's name, a renamed setting's old name as its new one."""
+    return RENAMED.get(name, name) if isinstance(name, str) else name
 
 
 def _read_text(path: Path) -> str | None:
@@ -129,6 +157,10 @@ def _read_parts(out: Path, base, todo_all: list[tuple[int, dict]], force: bool) 
         except Exception as exc:  # noqa: BLE001 - pyarrow's errors are many; a part written by us reads
             problem = f"it does not read as Parquet ({type(exc).__name__})"
         else:
+            names = list(todo_all[0][1]) if todo_all else []
+            # a part written with a renamed setting's other name (before the rename, or after it)
+            frame = frame.rename(columns={c: n for c in frame.columns for n in names
+                                          if c != n and _new_name(c) == _new_name(n)})
             problem = _part_problem(part.name, frame, todo_all, known)
         if problem is not None:
             if not force:
