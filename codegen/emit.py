@@ -24,7 +24,7 @@ import unicodedata
 from dataclasses import dataclass
 from importlib.metadata import version
 
-from hybrid.spec.interfaces import KERNEL_STATUSES, STATUS_CODES
+from hybrid.spec.interfaces import KERNEL_STATUSES, PRINTERS, STATUS_CODES
 from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from . import model
@@ -34,7 +34,7 @@ from .lanes import LANES_HEADER, lanes_function, libm_maps
 from .sympy_backend import kernel_body
 from .templates import macro, render
 
-BACKENDS = ("sympy", "casadi")
+BACKENDS = PRINTERS  # a unit of the paper's arm in closed form, by its printer
 #: bumped whenever the emitted interface changes; recorded in every manifest and cache key
 GENERATOR_VERSION = "5"
 #: a unit's statuses as its C names them (the numbers of :data:`hybrid.spec.interfaces.STATUSES`)

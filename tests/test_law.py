@@ -8,9 +8,10 @@ from conftest import random_arm, random_states, random_surface
 
 import hybrid
 from hybrid import oracle
+from hybrid.spec.interfaces import PRINTERS
 
 KINDS = ("plane", "circle")
-BACKENDS = ("sympy", "casadi")
+BACKENDS = PRINTERS
 
 
 def rel_err(x, y):

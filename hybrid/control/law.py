@@ -34,10 +34,11 @@ from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
 from hybrid.native.binding import is_batch
+from hybrid.spec.interfaces import PRINTERS
 from hybrid.validate import SINGULAR_TOL, check_singular_tol, check_size
 
 #: the derivations a law can run: the rigid-body algorithms, or the planar arm's committed closed form
-BACKENDS = ("rigid_body", "sympy", "casadi")
+BACKENDS = ("rigid_body", *PRINTERS)
 
 
 class DecouplingLaw:

@@ -43,10 +43,11 @@ from hybrid.models.robot import Robot, as_robot
 from hybrid.native.standalone import generate_experiment
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.plants.registry import generated_plant_class
+from hybrid.spec.interfaces import PRINTERS
 from hybrid.validate import SINGULAR_TOL, _point
 
 #: the committed units that can run the closed-form plant and law (the same equations, two printers)
-BACKENDS = ("sympy", "casadi")
+BACKENDS = PRINTERS  # the closed form's units the plant and the law may take
 
 #: an experiment's physics: the controller's model error, the plant's sensor and contact. Of the
 #: experiment's checks only ``check_common_types``, ``check_sensing`` and ``check_timing`` read them

@@ -21,12 +21,13 @@ from hybrid.errors import HybridError, NativeBuildError
 from hybrid.native import build, generator
 from hybrid.native.binding import Unit
 from hybrid.spec import stamp
+from hybrid.spec.interfaces import PRINTERS
 from hybrid.validate import c_identifier
 
 #: what a singular planar pose means, added to SingularConfigurationError messages
 PLANAR_SINGULAR = " (elbow q2 near 0 or pi)"
 #: the committed units, by backend
-BACKENDS = ("sympy", "casadi")
+BACKENDS = PRINTERS
 
 
 def planar_unit(backend: str) -> Unit:

@@ -22,6 +22,10 @@ from dataclasses import dataclass
 
 from hybrid.errors import HybridError
 
+#: the printers of the paper's closed-form units (``generated/hybrid_<printer>.*``): SymPy's C printer, or
+#: CasADi's from the same SymPy derivation (a law's derivation is one of these or the rigid-body algorithms)
+PRINTERS = ("sympy", "casadi")
+
 # ------------------------------------------------------------------ the vocabulary
 
 
