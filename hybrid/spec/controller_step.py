@@ -96,11 +96,11 @@ CONTROLLER_STEP = Interface(
         Port("options", f"{len(OPTIONS)}", "1, s, 1, unit of a, N or N m, m/s or rad/s, 1",
              "switches and numbers (OPTIONS)", PARAMETER, OPTIONS),
         Port("posture", "3*nq", "per joint: rad or m (q_rest), then 1/s^2 (Kp), then 1/s (Kd)",
-             "the posture task's numbers (POSTURE)", PARAMETER, PerJoint(POSTURE)),
+             "the posture task's numbers (POSTURE)", PARAMETER, PerJoint(POSTURE), default=0.0),
         Port("limits", "2*nq", "per joint: N m or N (tau_max), then N m or N per sample (rate_max); DBL_MAX: none",
              "the torque limits (LIMITS)", PARAMETER, PerJoint(LIMITS), default=NO_LIMIT),
         Port("sensor", f"{len(SENSOR)}", "m, 1, 1, kg, m, N and N m, Hz, 1 (see hybrid/control/wrench_sensor.py)",
-             "the force/torque sensor's numbers (SENSOR)", PARAMETER, SENSOR),
+             "the force/torque sensor's numbers (SENSOR)", PARAMETER, SENSOR, default=0.0),
     ),
     outputs=(
         Port("tau", "nq", "N m or N", "the joint torques, within the limits"),
