@@ -149,7 +149,7 @@ def _driver(spec: LoopSpec, stepping: Kernel) -> dict:
 #: (``templates/closed_loop_unit.c.j2``'s HL_STAGE; the paper's plant: about 900; the UR5's: about 11,000)
 _INLINE_LINES = 3000
 #: the parts a unit compiles in at once, one compiler each (``templates/closed_loop_unit.c.j2``'s HL_PART;
-#: :mod:`hybrid.native.build`), as the manifest's ``parts`` names them
+#: :mod:`hybrid.native.compiler`), as the manifest's ``parts`` names them
 N_PARTS = 2
 
 

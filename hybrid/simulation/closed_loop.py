@@ -22,7 +22,7 @@ from functools import cache
 import numpy as np
 
 from hybrid.errors import HybridError, NativeBuildError
-from hybrid.native import build, units
+from hybrid.native import compiler, units
 from hybrid.native.binding import one_block, workers
 from hybrid.spec.interfaces import STATUS_CODES
 
@@ -153,7 +153,7 @@ def build_side_by_side(experiments, lanes: int | None = 1) -> None:
             pass
 
     try:
-        build.ready_for_threads()
+        compiler.ready_for_threads()
     except NativeBuildError:
         return  # each run says why it takes the Python runner
     distinct = {}  # one experiment per loop: two threads never build the same one
