@@ -8,12 +8,14 @@ import pytest
 from hybrid.codegen import casadi_backend, controller_step, spatial_plant
 
 from hybrid import bench
-from hybrid.bench import harness, robots, runs, targets
+from hybrid.bench import harness, robots, runs, standalone, targets
 from hybrid.bench.groups import benchmark_groups, select_groups
 from hybrid.bench.report import format_table
 from hybrid.cli.main import main
 from hybrid.errors import HybridError
+from hybrid.experiments.paper import paper_experiment
 from hybrid.experiments.tracing import tracing_experiment
+from hybrid.spec.controller_step import CONTROLLER_STEP, WRENCH
 
 
 def test_bench_quick_reports_every_benchmark():
@@ -153,6 +155,20 @@ def test_loop_operations_are_the_loop_kernels_counts():
     # fewer steps a sample: a larger share of the controller step in each
     fewer = runs.loop_operations(tracing_experiment(sample_time=exp.sample_time / 2))
     assert fewer["steps_per_sample"] == exp.steps_per_sample // 2 and fewer["per_step"] > got["per_step"]
+
+
+def test_standalone_driver_replays_a_run_that_follows_a_path(tmp_path):
+    """The step's driver with the desired point in each sample (the quick benchmark replays runs without)."""
+    exp = paper_experiment(duration=0.5, frame="desired")
+    samples, target = standalone.recorded_samples(exp)
+    nq = exp.plant().nq
+    # a sample as the driver reads it: q, qd, the wrench and the target, their sizes the declaration's
+    assert target and samples.shape[1] == 2 * nq + len(WRENCH) + int(CONTROLLER_STEP.port("target").size)
+    exp.build_controller().generate(tmp_path, "pe")
+    got = standalone.standalone_step(tmp_path, "pe", samples, target, exp.sample_time, ["-O1"], 200)
+    assert got["text"] > 0 and got["median"] <= got["p99"] <= got["max"]
+    driver = (tmp_path / "pe_driver.c").read_text()
+    assert f"memcpy(c.target, x + {2 * nq + len(WRENCH)}, sizeof c.target);" in driver
 
 
 @pytest.mark.skipif(not hasattr(os, "sched_setaffinity"), reason="no thread affinity on this system")

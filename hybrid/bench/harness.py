@@ -2,7 +2,7 @@
 
 A measurement is the median, over ``repeat`` runs, of the time of ``number`` calls divided by
 ``number``: per call, in ns unless a row says otherwise. A generated function is timed inside C by
-a compiled loop with the runtime's flags, on a new state each call.
+a compiled loop with the runtime's flags, on a new state each call (the program: ``c/harness.c.j2``).
 """
 
 from __future__ import annotations
@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
+from hybrid.bench.templates import render
 from hybrid.native import compiler, generator
 
 #: calls of a run through ``simulate`` before it is timed: in a fresh process the first is about twice
@@ -50,47 +51,19 @@ def on_one_core(measure: Callable[[], float]) -> float | None:
         os.sched_setaffinity(0, cpus)
 
 
-HARNESS = r"""
-#include <stdio.h>
-#include <stdlib.h>
-#include <time.h>
-#include "%(prefix)s.h"
-static double now(void) { struct timespec ts; clock_gettime(CLOCK_MONOTONIC, &ts); return ts.tv_sec + 1e-9 * ts.tv_nsec; }
-int main(int argc, char **argv) {
-    long ncalls = argc > 1 ? atol(argv[1]) : 1000000, i;
-    int rep, reps = argc > 2 ? atoi(argv[2]) : 7;
-    double sink = 0.0;
-%(arrays)s
-    for (rep = 0; rep < reps; ++rep) {
-        double t0 = now();
-        for (i = 0; i < ncalls; ++i) {
-            %(first)s[0] = %(first0)r + 1e-9 * (double)(i & 1023);   /* a new state each call */
-            %(symbol)s(%(args)s);
-            sink += %(out)s[0];
-        }
-        printf("%%.3f\n", (now() - t0) / (double)ncalls * 1e9);
-    }
-    fprintf(stderr, "%%g\n", sink);
-    return 0;
-}
-"""
-
-
 def harness_source(prefix: str, entry: dict, values: dict, singular_tol: float = 1e-3) -> str:
     """A C program timing one call of the manifest function ``entry`` on the input ``values``."""
-    decl = []
+    inputs = []
     for a in entry["inputs"]:
         v = np.asarray(values[a["name"]], float).ravel()
         if v.size != a["size"]:
             raise ValueError(f"{a['name']} needs {a['size']} values, got {v.size}")
-        decl.append(f"    double {a['name']}[{a['size']}] = {{{', '.join(repr(float(x)) for x in v)}}};")
-    decl += [f"    double {a['name']}[{a['size']}];" for a in entry["outputs"]]
-    args = [a["name"] for a in entry["inputs"]] + ([repr(singular_tol)] if entry["singular_tol"] else [])
-    args += [a["name"] for a in entry["outputs"]]
-    first = entry["inputs"][0]["name"]
-    return HARNESS % {"prefix": prefix, "arrays": "\n".join(decl), "symbol": entry["symbol"], "args": ", ".join(args),
-                      "first": first, "first0": float(np.asarray(values[first]).ravel()[0]),
-                      "out": entry["outputs"][0]["name"]}
+        inputs.append({"name": a["name"], "size": a["size"], "value": [float(x) for x in v]})
+    outputs = [{"name": a["name"], "size": a["size"]} for a in entry["outputs"]]
+    arguments = ([a["name"] for a in inputs] + ([singular_tol] if entry["singular_tol"] else [])
+                 + [a["name"] for a in outputs])
+    return render("harness.c.j2", prefix=prefix, symbol=entry["symbol"], inputs=inputs, outputs=outputs,
+                  arguments=arguments, first=inputs[0]["name"], first0=inputs[0]["value"][0])
 
 
 def c_harness_ns(src_dir: Path, prefix: str, entry: dict, values: dict, calls: int, repeat: int) -> float:

@@ -1,5 +1,5 @@
 """The controller as standalone C (:meth:`hybrid.Controller.generate`): each step call timed alone
-in C replaying a recorded run, its code size and its compile time."""
+in C replaying a recorded run (the driver: ``c/driver.c.j2``), its code size and its compile time."""
 
 from __future__ import annotations
 
@@ -12,73 +12,19 @@ from pathlib import Path
 import numpy as np
 
 from hybrid.bench.targets import STANDALONE_COMPILE, STANDALONE_P999, STANDALONE_SIZE, STANDALONE_STEP
+from hybrid.bench.templates import render
 from hybrid.errors import HybridError
 from hybrid.experiments.panda import panda_experiment
 from hybrid.experiments.paper import paper_experiment
 from hybrid.experiments.tracing import tracing_experiment
 from hybrid.native import compiler
 from hybrid.simulation.runner import simulate
+from hybrid.spec.controller_step import CONTROLLER_STEP, WRENCH
 
 #: the arms of the standalone-controller rows: their experiments (the controller and a run to replay)
 STANDALONE = {"paper": paper_experiment, "ur5": tracing_experiment, "panda": panda_experiment}
-
-DRIVER = r"""
-#define _POSIX_C_SOURCE 199309L
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <time.h>
-#include "%(prefix)s.h"
-#define W (2 * %(PREFIX)s_NQ + 6 + %(target)d)  /* a sample: q, qd, wrench (and the desired point) */
-static long long now_ns(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (long long)ts.tv_sec * 1000000000LL + ts.tv_nsec;
-}
-/* argv: samples file, number of samples, sample time, calls, output file: the calls' durations [ns],
-   then those of back-to-back clock reads (the timer's own cost) */
-int main(int argc, char **argv) {
-    long n, calls, i, k, warm, pairs = 100000;
-    double T, *s, tau[%(PREFIX)s_NQ], sink = 0.0;
-    long long *d, t0, t1;
-    %(prefix)s_controller c;
-    FILE *f;
-    int st;
-    if (argc != 6) return 2;
-    n = atol(argv[2]); T = atof(argv[3]); calls = atol(argv[4]);
-    s = malloc(sizeof(double) * W * n);
-    d = malloc(sizeof(long long) * (calls + pairs));
-    if (!s || !d || !(f = fopen(argv[1], "rb")) || fread(s, sizeof(double) * W, n, f) != (size_t)n) return 2;
-    fclose(f);
-    memset(d, 0, sizeof(long long) * (calls + pairs));  /* the pages touched before timing */
-    for (i = 0; i < pairs; ++i) { t0 = now_ns(); t1 = now_ns(); d[calls + i] = t1 - t0; }
-    %(prefix)s_controller_init(&c);
-    /* one pass through the samples untimed, then the timed calls. Each pass is the recorded run again:
-       a new run (reset, untimed) from t = 0, t advancing by T every call, so every call is on time */
-    warm = n;
-    for (i = -warm; i < calls; ++i) {
-        k = (i + warm) %% n;
-        const double *x = s + W * k;
-        double t = (double)k * T;
-        if (k == 0) %(prefix)s_controller_reset(&c);
-%(set_target)s
-        t0 = now_ns();
-        st = %(prefix)s_controller_step(&c, t, x, x + %(PREFIX)s_NQ, x + 2 * %(PREFIX)s_NQ, tau);
-        t1 = now_ns();
-        if (st != %(PREFIX)s_OK) {
-            fprintf(stderr, "call %%ld (sample %%ld, t = %%.6f s): status %%s\n", i, k, t, %(prefix)s_status_name(st));
-            return 3;
-        }
-        if (i >= 0) d[i] = t1 - t0;
-        sink += tau[0];
-    }
-    if (!(f = fopen(argv[5], "wb")) || fwrite(d, sizeof(long long), calls + pairs, f) != (size_t)(calls + pairs))
-        return 2;
-    fclose(f);
-    fprintf(stderr, "%%g\n", sink);
-    return 0;
-}
-"""
+#: the desired point's numbers in a sample (the step's ``target``: point, velocity, ZYX angles)
+TARGET = int(CONTROLLER_STEP.port("target").size)
 
 
 def recorded_samples(exp) -> tuple[np.ndarray, bool]:
@@ -130,6 +76,14 @@ def text_bytes(obj: Path) -> int:
     return total
 
 
+def driver_source(prefix: str, width: int, target: bool) -> str:
+    """The C program timing the step of the standalone controller ``prefix``, call by call, on samples
+    of ``width`` numbers: q, qd, the wrench and (with ``target``) the desired point."""
+    target_size = TARGET if target else 0
+    return render("driver.c.j2", prefix=prefix, PREFIX=prefix.upper(), wrench=len(WRENCH), target=target_size,
+                  nq=(width - len(WRENCH) - target_size) // 2)
+
+
 def standalone_step(folder: Path, prefix: str, samples: np.ndarray, target: bool, sample_time: float,
                     flags: list[str], calls: int) -> dict:
     """Compile the generated controller ``folder/prefix.c`` with ``flags`` (timed), and time ``calls``
@@ -142,11 +96,8 @@ def standalone_step(folder: Path, prefix: str, samples: np.ndarray, target: bool
     t0 = time.perf_counter()
     subprocess.run([cc, *flags, "-c", str(folder / f"{prefix}.c"), "-o", str(obj)], check=True, capture_output=True)
     compile_s = time.perf_counter() - t0
-    nq = (samples.shape[1] - 6 - (9 if target else 0)) // 2
-    set_target = (f"        memcpy(c.target, x + {2 * nq + 6}, sizeof c.target);" if target else "")
     driver = folder / f"{prefix}_driver.c"
-    driver.write_text(DRIVER % {"prefix": prefix, "PREFIX": prefix.upper(), "target": 9 if target else 0,
-                                "set_target": set_target})
+    driver.write_text(driver_source(prefix, samples.shape[1], target))
     subprocess.run([cc, *flags, f"-I{folder}", str(driver), str(obj), "-o", str(exe), "-lm"],
                    check=True, capture_output=True)
     data = folder / f"{prefix}_samples.bin"
