@@ -481,6 +481,7 @@ def test_installed_package_refuses_regenerate_and_writes_nothing(tmp_path):
     assert installed.returncode == 0, installed.stderr
     assert (site / "hybrid" / "codegen" / "api.py").is_file()
     assert (site / "hybrid" / "codegen" / "templates" / "closed_loop.c.j2").is_file()  # the C templates
+    assert (site / "hybrid" / "bench" / "c" / "driver.c.j2").is_file()  # the benchmarks' C
     assert (site / "hybrid" / "_generated" / "hybrid_sympy.c").is_file()
     assert (site / "hybrid" / "_generated" / "loops" / "index.json").is_file()  # the committed closed loops
 
