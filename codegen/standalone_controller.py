@@ -9,11 +9,15 @@ loops' integrals, the torque last written, the sample clock, and the last sample
 - a non-finite ``t``, ``q``, ``qd`` or ``wrench``: ``INPUT_NONFINITE``, ``tau`` the torque last
   written (0 before any), nothing changes;
 - the law failing (its guards, a non-finite output): that status, ``tau`` the torque last written,
-  the integrals and the last torque unchanged; the clock follows ``t``;
-- ``t`` off the sample clock (its interval since the last sample outside ``(1 +- tolerance) T``, or
-  0, or negative): ``SAMPLE_LATE``, ``SAMPLE_EARLY``, ``SAMPLE_REPEATED``, ``SAMPLE_BACKWARDS``,
-  ``tau`` the law's at this sample within the limits, the integrals unchanged; the clock follows a
-  forward ``t`` (so the next sample on time is accepted).
+  nothing changes (the clock neither: the next sample is timed from the last one served);
+- ``t`` late or early (its interval since the last sample outside ``(1 +- tolerance) T``):
+  ``SAMPLE_LATE``, ``SAMPLE_EARLY``, ``tau`` the law's at this sample within the limits, the
+  integrals unchanged, the other states (last torque, filter, estimate) advanced; the clock follows
+  ``t`` (so the next sample on time is accepted);
+- ``t`` equal to the last sample's or before it: ``SAMPLE_REPEATED``, ``SAMPLE_BACKWARDS``, ``tau``
+  the law's at this sample within the limits (rate-limited from the torque last written), and
+  nothing changes: no time passed, so no state (integrals, last torque, filter, estimate, clock,
+  the loop outputs) may advance as if a sample period had.
 
 The Python :class:`hybrid.Controller` does the same (raising where this returns a status), and
 the text is a pure function of its inputs (no dates, no paths, stable ordering).
@@ -27,7 +31,7 @@ import re
 import casadi as ca
 
 from hybrid.spec.controller_step import CONTROLLER_STEP, OPTION_DOCS, STATE_NEXT
-from hybrid.spec.interfaces import REFERENCE, STATE, STATUSES
+from hybrid.spec.interfaces import HELD_STATUSES, REFERENCE, STATE, STATUSES
 from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from .emit import GENERATOR_VERSION, Unit, _casadi_cores, comment_safe
@@ -132,7 +136,8 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
                     tau_unit=_unit_text(out["tau"].unit))
     source = render("standalone_controller.c.j2", **context, tools=f"CasADi {ca.__version__}",
                     cores=_casadi_cores(prefix, (step,)), step=step, outs=step.core_outputs(), packed=packed,
-                    call=_CALL, state_next=STATE_NEXT, tau=out["tau"], saturated=out["saturated"],
+                    call=_CALL, state_next=STATE_NEXT, held=HELD_STATUSES, tau=out["tau"],
+                    saturated=out["saturated"],
                     timing_tolerance=_number(values["timing_tolerance"]),
                     singular_tol=_number(values["singular_tol"]))
     fields_doc = [{"name": a.name, "size": a.size, **({"names": list(a.names)} if a.names else {}),

@@ -27,7 +27,7 @@ from hybrid.native import units
 from hybrid.native.standalone import generate_controller
 from hybrid.spec.axes import AXIS_NAMES
 from hybrid.spec.controller_step import CONTROLLER_STEP, NO_LIMIT, SENSOR, STATE_NEXT
-from hybrid.spec.interfaces import REFERENCE, TIMING_STATUSES, Dims
+from hybrid.spec.interfaces import HELD_STATUSES, REFERENCE, TIMING_STATUSES, Dims
 from hybrid.validate import _finite, check_singular_tol
 
 #: "no limit" for the options that are off (the generated step takes finite numbers only)
@@ -213,8 +213,13 @@ class Controller:
     timing_tolerance : the samples' timing check: a sample is on time when ``t`` advanced by the
         sample time within ``timing_tolerance`` of it (default 0.25: 25 %). A late, early, repeated or
         backwards sample raises :class:`~hybrid.SampleTimingError` carrying the torque to apply (that
-        of the law at this sample, within the limits) and leaves the integrals as they were; None:
-        no check. The generated C returns the same as named statuses (:meth:`generate`).
+        of the law at this sample, within the limits) and leaves the integrals as they were; a late or
+        early one advances the rest (the last torque, the sensor's filter, the estimate, the clock),
+        while at a repeated or backwards one no time passed, so nothing changes at all (the
+        ``last`` sample is still the one before). A sample refused (a bad input, the law failing)
+        changes nothing either, the clock included: the next is timed from the last one served. None:
+        no check (every sample is served as on time). The generated C returns the same as named
+        statuses (:meth:`generate`).
     wrench_sensor : a :class:`~hybrid.WrenchSensor`: the wrench given at each sample is then its raw
         reading (six numbers, sensor axes), which the step turns into ``F_c`` (its sign, bias, the
         tool's weight at the current orientation, the mount's lever, the filter; conventions §12).
@@ -350,6 +355,7 @@ class Controller:
         into = {STATE_NEXT[s]: self._held[self._at[s]] for s in _ADVANCED}
         self._out_off_time = [into.get(name) if name in into else np.empty(size)
                               for name, size, _ in self._step.outputs]
+        self._out_held = [np.empty(size) for _, size, _ in self._step.outputs]
         integrals = STATE_NEXT["integrals"]
         self._out = [self._held[self._at["integrals"]] if name == integrals else o
                      for (name, _, _), o in zip(self._step.outputs, self._out_off_time)]
@@ -569,9 +575,10 @@ class Controller:
         wrench on the robot ``Fc`` (base axes: force [N] of 2 or 3 entries, or force and moment, 6);
         advances the integrals by one sample.
 
-        A sample the law cannot serve raises: :class:`HybridError` for a non-finite input (nothing
-        changes), :class:`SingularConfigurationError` or :class:`TaskFrameError` (the integrals and the
-        last torque stay), :class:`SampleTimingError` off the sample clock (see ``timing_tolerance``)."""
+        A sample the law cannot serve raises and changes nothing (the integrals, the last torque, the
+        filter, the estimate, the sample clock): :class:`HybridError` for a bad input,
+        :class:`SingularConfigurationError` or :class:`TaskFrameError` where the law fails;
+        :class:`SampleTimingError` off the sample clock (see ``timing_tolerance``)."""
         if type(Fc) is not np.ndarray or Fc.shape != (6,):
             Fc = self._padded(Fc)
         if type(t) is not float and (isinstance(t, (str, bytes, bool, np.bool_))
@@ -587,9 +594,10 @@ class Controller:
         clock, timing = self._clock, self._timing(t)
         if self._binding is None:
             self._native()
-        # off the clock: the law's torque, the integrals as they were (the filter and the estimate advance on
-        # every sample the law serves)
-        out = self._out if timing is None else self._out_off_time
+        # late or early: the law's torque, the integrals as they were (the filter and the estimate advance);
+        # repeated or backwards: no time passed, so nothing advances (every output into scratch arrays)
+        held = timing in HELD_STATUSES
+        out = self._out if timing is None else self._out_held if held else self._out_off_time
         if not self._short:
             self._python_references(t)
             if self.path is not None:
@@ -597,9 +605,10 @@ class Controller:
         done = self._into(self._binding, out, q, qdot, Fc, *self._held)
         if done is None:
             self._checked(q, qdot, Fc, out)
-        self._tick(t)
-        self._last[:-1], self._last[-1] = out[0], 1.0
-        self._sampled = True
+        if not held:
+            self._tick(t)
+            self._last[:-1], self._last[-1] = out[0], 1.0
+            self._sampled = True
         if timing is not None:
             raise SampleTimingError(timing, t, clock, self.sample_time, out[0].copy())
         return out[0].copy()
@@ -657,8 +666,9 @@ class Controller:
         return np.concatenate([_vector("path point", got[0], d), _vector("path velocity", got[1], d), phi])
 
     def _checked(self, q, qdot, Fc, out: list) -> None:
-        """The general path: any array-like input, and the error that names the cause. A sample the
-        law fails on (its inputs fine) still moves the sample clock, as the generated C's does."""
+        """The general path: any array-like input, and the error that names the cause. A sample refused
+        here changes nothing (the outputs are written only when the step succeeds), the clock neither,
+        as in the generated C."""
         t = self._t[0]
         for name, v in (("q", q), ("qdot", qdot)):
             try:
@@ -670,18 +680,10 @@ class Controller:
             if not np.isfinite(arr).all():
                 raise NonFiniteError(f"{name} = {arr.tolist()} is not finite; give finite joint positions and "
                                      "velocities [rad, rad/s or m, m/s]")
-        inputs_finite = bool(np.isfinite(Fc).all())
-        if inputs_finite and not all(np.isfinite(v).all() for v in (self._extra, self._rate, self._target)):
-            self._tick(t)  # the law failed on its references: the clock moves, as the generated C's
+        if np.isfinite(Fc).all() and not all(np.isfinite(v).all() for v in (self._extra, self._rate, self._target)):
             raise HybridError(f"the references at t = {t} s are not finite; give references that return finite "
                               f"numbers\n  values {self._extra}, rates {self._rate}, desired point {self._target}")
-        try:
-            got = self._step(q, qdot, Fc, *self._held, *self._bound_refs, *self._params,
-                             singular_tol=self.singular_tol)
-        except HybridError:
-            if inputs_finite:
-                self._tick(t)
-            raise
+        got = self._step(q, qdot, Fc, *self._held, *self._bound_refs, *self._params, singular_tol=self.singular_tol)
         for (name, _, _), o in zip(self._step.outputs, out):
             o[:] = got[name].ravel()
 

@@ -150,10 +150,14 @@ STATUSES = (
     Status("EULER_SINGULAR", 4, "cos(beta) of the tip's ZYX Euler angles is near 0; tau is the torque last written"),
     Status("INPUT_NONFINITE", 5, "t, q, qd or wrench is not finite; tau is the torque last written, nothing "
                                  "changed"),
-    Status("SAMPLE_LATE", 6, "t advanced by more than (1 + timing_tolerance) sample_time"),
-    Status("SAMPLE_EARLY", 7, "t advanced by less than (1 - timing_tolerance) sample_time"),
-    Status("SAMPLE_REPEATED", 8, "t equals the last sample's"),
-    Status("SAMPLE_BACKWARDS", 9, "t is before the last sample's"),
+    Status("SAMPLE_LATE", 6, "t advanced by more than (1 + timing_tolerance) sample_time; tau is the law's, the "
+                             "integrals kept"),
+    Status("SAMPLE_EARLY", 7, "t advanced by less than (1 - timing_tolerance) sample_time; tau is the law's, the "
+                              "integrals kept"),
+    Status("SAMPLE_REPEATED", 8, "t equals the last sample's: no time passed; tau is the law's at this sample "
+                                 "within the limits, nothing changed"),
+    Status("SAMPLE_BACKWARDS", 9, "t is before the last sample's; tau is the law's at this sample within the "
+                                  "limits, nothing changed"),
 )
 STATUS_CODES = {s.name: s.code for s in STATUSES}
 STATUS_NAMES = {s.code: s.name for s in STATUSES}
@@ -161,6 +165,8 @@ STATUS_NAMES = {s.code: s.name for s in STATUSES}
 KERNEL_STATUSES = ("OK", "SINGULAR", "NONFINITE", "FRAME_UNDEFINED", "EULER_SINGULAR")
 #: the sample-timing statuses, by the interval since the last sample
 TIMING_STATUSES = ("SAMPLE_LATE", "SAMPLE_EARLY", "SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
+#: the timing statuses of a sample at which no time passed (or it went back): nothing of the step changes
+HELD_STATUSES = ("SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
 
 
 @dataclass(frozen=True)
