@@ -19,15 +19,15 @@ from hybrid.control.references import Step
 from hybrid.control.schemes import Scheme, scheme_of
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import renamed_attribute, renamed_keywords
-from hybrid.errors import HybridError, NonFiniteError, SampleTimingError
+from hybrid.errors import HybridError, NonFiniteError, ParameterError, SampleTimingError
 from hybrid.geometry.task_axes import check_axes, frame_direction_of, spatial_surface
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
 from hybrid.native.standalone import generate_controller
 from hybrid.spec.axes import AXIS_NAMES
-from hybrid.spec.controller_step import CONTROLLER_STEP, NO_LIMIT, SENSOR, STATE_NEXT
-from hybrid.spec.interfaces import HELD_STATUSES, REFERENCE, TIMING_STATUSES, Dims
+from hybrid.spec.controller_step import CONTROLLER_STEP, NO_LIMIT, SENSOR, SETTING_CHECKS, STATE_NEXT
+from hybrid.spec.interfaces import CHECKS, HELD_STATUSES, REFERENCE, TIMING_STATUSES, Dims
 from hybrid.validate import _finite, check_singular_tol
 
 #: "no limit" for the options that are off (the generated step takes finite numbers only)
@@ -224,6 +224,17 @@ class Controller:
         reading (six numbers, sensor axes), which the step turns into ``F_c`` (its sign, bias, the
         tool's weight at the current orientation, the mount's lever, the filter; conventions §12).
         None (the default): the wrench given is ``F_c`` itself.
+
+    Notes
+    -----
+    Every number the compiled step reads is checked against its declaration (the checks of
+    :data:`hybrid.spec.controller_step.CONTROLLER_STEP`'s ports, which the standalone C reads too): a
+    NaN, a negative limit or tolerance, a switch not 0 or 1, a filter cutoff at or above the Nyquist
+    frequency is refused here and by :meth:`set_wrench_sensor` with a :class:`HybridError` naming it.
+    The arrays the step reads are then read-only; the settings a sample reads in Python
+    (``sample_time``, ``timing_tolerance``, ``singular_tol``) are checked at each sample, and one
+    changed to an invalid value refuses the sample with a :class:`~hybrid.ParameterError`
+    (``status`` ``PARAMETER_INVALID``, ``torque`` the torque last written), nothing changed.
     """
 
     #: the step's per-sample inputs computed here when references are given as code (else bound to zeros)
@@ -305,10 +316,10 @@ class Controller:
         sensor = np.zeros(len(SENSOR)) if wrench_sensor is None else wrench_sensor.as_array(robot, self.sample_time)
         robot_array, surface_array = robot.as_array(), self._spatial.as_array()
         self._dims = Dims.sized(robot.joint_names, self.axis_names, len(robot_array), len(surface_array))
-        self._params = CONTROLLER_STEP.pack({
+        self._params = self._checked_parameters({
             "steps": steps, "gains": self._gain_array(), "selection": self.selection, "robot": robot_array,
             "surface": surface_array, "e": self.frame_direction, "options": options, "posture": posture_array,
-            "limits": limits, "sensor": sensor}, self._dims)
+            "limits": limits, "sensor": sensor})
         # the step's other per-sample inputs, in its order: the states it keeps (the loops' integrals, the torque
         # last given to the arm and 1 once there is one, the sensor filter's, an estimated surface's), the sample
         # time, the references computed here; the integrals, filter and estimate trade buffers with the outputs
@@ -386,11 +397,39 @@ class Controller:
                               "with wrench_sensor=hybrid.WrenchSensor(...) to give it one")
         if not isinstance(sensor, WrenchSensor):
             raise HybridError(f"sensor = {sensor!r:.60}; give a hybrid.WrenchSensor(...)")
-        self._params = CONTROLLER_STEP.pack({**self.step_inputs(), "sensor": sensor.as_array(self.robot,
-                                                                                               self.sample_time)},
-                                            self._dims)
+        self._params = self._checked_parameters({**self.step_inputs(),
+                                                 "sensor": sensor.as_array(self.robot, self.sample_time)})
         self.wrench_sensor = sensor
         self._bind()
+
+    def _checked_parameters(self, values: dict) -> tuple:
+        """The step's parameters packed from ``values``, each refused unless its declared check allows it
+        (:data:`hybrid.spec.interfaces.CHECKS`: the standalone C checks the same at each sample), then
+        read-only: they change only through this check."""
+        params = CONTROLLER_STEP.pack(values, self._dims)
+        refused = CONTROLLER_STEP.refused(params, self._dims, self.sample_time)
+        if refused:
+            port, element, value, valid = refused[0]
+            raise HybridError(f"the step's {port} {element} = {value!r}; give {valid}"
+                              + (f" ({len(refused) - 1} more refused)" if len(refused) > 1 else ""))
+        for p in params:
+            p.flags.writeable = False
+        return params
+
+    def _refused_setting(self) -> tuple[str, object, str] | None:
+        """The first of the settings a sample reads here (the sample time, the timing and singular
+        tolerances, the sample clock) that its declared check refuses, as ``(name, value, what is valid)``."""
+        T = self.sample_time
+        if not CHECKS["positive"].valid(T, T):
+            return "sample_time", T, CHECKS["positive"].meaning
+        settings = {"timing_tolerance": -1.0 if self.timing_tolerance is None else self.timing_tolerance,
+                    "singular_tol": self.singular_tol}
+        for name, check in SETTING_CHECKS.items():
+            if not CHECKS[check].valid(settings[name], T):
+                return name, getattr(self, name), CHECKS[check].meaning
+        if self._clock is not None and not _isfinite(self._clock):
+            return "the sample clock", self._clock, "a finite time: reset()"
+        return None
 
     @property
     def runs_in_c(self) -> bool:
@@ -591,6 +630,9 @@ class Controller:
         if not _isfinite(self._t[0]):
             raise HybridError(f"t = {t!r:.40}; give a finite sample time")
         t = self._t[0]
+        refused = self._refused_setting()
+        if refused is not None:  # nothing changes; the torque last written is the safe one
+            raise ParameterError(*refused, self._last[:-1] * self._last[-1])
         clock, timing = self._clock, self._timing(t)
         if self._binding is None:
             self._native()
