@@ -336,6 +336,7 @@ class Controller:
         self._z, self._estimate = self._held[self._at["integrals"]], self._held[self._at["estimate"]]
         self._extra, self._rate, self._target = (self._held[self._at[n]] for n in self._reference_inputs)
         self._clock = None  # the last sample's time
+        self._checked_settings = None  # the settings a sample reads, as last found valid
         self._fc = np.zeros(sizes["Fc"])
         # a force without moments: the planar arm's in its plane (2), any other arm's in space (3); a sensor's
         # reading is always six numbers
@@ -418,7 +419,8 @@ class Controller:
 
     def _refused_setting(self) -> tuple[str, object, str] | None:
         """The first of the settings a sample reads here (the sample time, the timing and singular
-        tolerances, the sample clock) that its declared check refuses, as ``(name, value, what is valid)``."""
+        tolerances) that its declared check refuses, as ``(name, value, what is valid)``. (The sample
+        clock is the controller's own, only ever a finite ``t`` it served.)"""
         T = self.sample_time
         if not CHECKS["positive"].valid(T, T):
             return "sample_time", T, CHECKS["positive"].meaning
@@ -427,8 +429,6 @@ class Controller:
         for name, check in SETTING_CHECKS.items():
             if not CHECKS[check].valid(settings[name], T):
                 return name, getattr(self, name), CHECKS[check].meaning
-        if self._clock is not None and not _isfinite(self._clock):
-            return "the sample clock", self._clock, "a finite time: reset()"
         return None
 
     @property
@@ -630,9 +630,12 @@ class Controller:
         if not _isfinite(self._t[0]):
             raise HybridError(f"t = {t!r:.40}; give a finite sample time")
         t = self._t[0]
-        refused = self._refused_setting()
-        if refused is not None:  # nothing changes; the torque last written is the safe one
-            raise ParameterError(*refused, self._last[:-1] * self._last[-1])
+        settings = (self.sample_time, self.timing_tolerance, self.singular_tol)
+        if settings != self._checked_settings:  # checked again whenever one changed (a NaN never equals)
+            refused = self._refused_setting()
+            if refused is not None:  # nothing changes; the torque last written is the safe one
+                raise ParameterError(*refused, self._last[:-1] * self._last[-1])
+            self._checked_settings = settings
         clock, timing = self._clock, self._timing(t)
         if self._binding is None:
             self._native()
