@@ -28,6 +28,7 @@ import casadi as ca
 import sympy as sp
 
 from hybrid.spec.controller_step import CONTROLLER_STEP
+from hybrid.spec.interfaces import STATE
 from hybrid.spec.metrics import METRIC_NAMES, SETTLING_BAND, STEADY_WINDOW_S, TOUCH_BAND, metric_names
 
 from .emit import STATUS, Unit, comment_safe, manifest, stamp
@@ -106,11 +107,22 @@ def _parameters(step: Kernel) -> list[Arg]:
     return [a for a in step.inputs if a.name in CONTROLLER_STEP.parameters]
 
 
+#: how the loop keeps each state of the step: the integrals and the last torque it advances; a force/torque
+#: sensor's filter and an estimated surface's state stay zero (the loop's runs have neither:
+#: ``Controller.runs_in_c``). A state declared besides these is refused, never silently held at zero
+_LOOP_STATES = {"integrals": "advanced", "last_torque": "advanced", "filter": "unused", "estimate": "unused"}
+
+
 def _driver(spec: LoopSpec, stepping: Kernel) -> dict:
     """The context of the loop's driver (``templates/closed_loop.c.j2``) for ``spec``: where each block of a
     run's row starts, the kernels' arguments and the metrics' places."""
     rhs, step = spec.rhs, spec.step
+    unknown = [n for n in CONTROLLER_STEP.named(STATE) if n not in _LOOP_STATES]
+    if unknown:
+        raise ValueError(f"the closed loop does not keep the step's state {', '.join(unknown)}: say how in "
+                         "codegen/closed_loop.py's _LOOP_STATES and templates/closed_loop.c.j2")
     nx, nq = rhs.inputs[0].size, rhs.inputs[1].size
+    sizes = {a.name: a.size for a in step.inputs}
     offset, at = {}, 0
     for name, size in blocks(spec):
         offset[name] = at
@@ -121,7 +133,7 @@ def _driver(spec: LoopSpec, stepping: Kernel) -> dict:
     plant = {a.name: offset["plant." + a.name] for a in (*rhs.inputs[2:], *spec.outputs.inputs[1:])}
     return dict(
         step=step, outs=step.core_outputs(),
-        guards=step.guards, nx=nx, nq=nq, nb=at, m=step.inputs[3].size // 2, ns=nf + len(SIGNALS),
+        guards=step.guards, nx=nx, nq=nq, nb=at, m=sizes["integrals"] // 2, ns=nf + len(SIGNALS),
         nm=len(metric_names(nq)), ny=stepping.outputs[2].size, force=force, signals=signals,
         iF=nf, iv=nf + 1, ipen=nf + 2, iN=nf + 3, fs=offset["force_step"], vs=offset["speed_step"], x0=offset["x0"],
         # where the run's arrays each kernel holds fixed start in its row
@@ -137,7 +149,7 @@ def _driver(spec: LoopSpec, stepping: Kernel) -> dict:
 #: (``templates/closed_loop_unit.c.j2``'s HL_STAGE; the paper's plant: about 900; the UR5's: about 11,000)
 _INLINE_LINES = 3000
 #: the parts a unit compiles in at once, one compiler each (``templates/closed_loop_unit.c.j2``'s HL_PART;
-#: :mod:`hybrid.native.build`), as the manifest's ``parts`` names them
+#: :mod:`hybrid.native.compiler`), as the manifest's ``parts`` names them
 N_PARTS = 2
 
 

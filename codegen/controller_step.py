@@ -351,10 +351,10 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
         "q", "qd", "Fc", "robot", "surface", "e", "sensor"))
     guards = (frame_guard(tf.sine),)
     if desired_frame:
-        guards += (Guard("loop_frame", tf_f.sine, "HYBRID_FRAME_UNDEFINED", frame_guard(tf.sine).tolerance,
+        guards += (Guard("loop_frame", tf_f.sine, "FRAME_UNDEFINED", frame_guard(tf.sine).tolerance,
                          "|e x n| at the desired point (the loop frame)"),)
     if position_error and max(axes) >= 3:  # T(r) enters the position error of an angular axis
-        guards += (Guard("euler", cos_beta, "HYBRID_EULER_SINGULAR", EULER_TOL,
+        guards += (Guard("euler", cos_beta, "EULER_SINGULAR", EULER_TOL,
                          "|cos beta| of the tip's ZYX Euler angles (the position error's T(r))"),)
     def outputs(torque):
         torque, z_kept, saturated = limited(torque, z, z_next, last, limits)

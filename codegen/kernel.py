@@ -21,6 +21,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from hybrid.spec.interfaces import KERNEL_STATUSES
+
 
 @dataclass(frozen=True)
 class Arg:
@@ -51,8 +53,9 @@ class Arg:
 @dataclass(frozen=True)
 class Guard:
     """A measure computed beside a kernel's outputs; below ``tolerance`` the entry point returns
-    ``status`` instead of ``HYBRID_OK``. ``tolerance`` is ``"singular_tol"`` (a run-time argument
-    of the entry point) or a number compiled in."""
+    ``status`` (a name of :data:`hybrid.spec.interfaces.KERNEL_STATUSES`; ``HYBRID_<status>`` in a unit's C)
+    instead of ``OK``. ``tolerance`` is ``"singular_tol"`` (a run-time argument of the entry point) or a
+    number compiled in."""
 
     name: str
     expr: object  # a one-element column
@@ -60,8 +63,13 @@ class Guard:
     tolerance: str | float
     doc: str
 
+    def __post_init__(self):
+        if self.status not in KERNEL_STATUSES or self.status == "OK":
+            raise ValueError(f"guard {self.name}: status {self.status!r} is not a kernel's failure status "
+                             f"({', '.join(KERNEL_STATUSES[1:])})")
+
     def describe(self) -> dict:
-        return {"name": self.name, "status": self.status, "tolerance": self.tolerance, "doc": self.doc}
+        return {"name": self.name, "status": f"HYBRID_{self.status}", "tolerance": self.tolerance, "doc": self.doc}
 
     @property
     def c_tolerance(self) -> str:
@@ -71,7 +79,7 @@ class Guard:
 
 def conditioning_guard(expr, doc: str) -> Guard:
     """The conditioning of ``J`` compared with the caller's ``singular_tol``."""
-    return Guard("cond", expr, "HYBRID_SINGULAR", "singular_tol", doc)
+    return Guard("cond", expr, "SINGULAR", "singular_tol", doc)
 
 
 @dataclass(frozen=True)

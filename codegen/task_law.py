@@ -38,7 +38,7 @@ EULER_TOL = 1e-6
 
 
 def frame_guard(sine) -> Guard:
-    return Guard("frame", sine, "HYBRID_FRAME_UNDEFINED", FRAME_TOL,
+    return Guard("frame", sine, "FRAME_UNDEFINED", FRAME_TOL,
                  "|e x n| (the reference direction e is parallel to the surface normal n)")
 
 
@@ -244,6 +244,6 @@ def operational_space_kernels(chain: rb.Chain) -> tuple[Kernel, ...]:
          Arg("no", no, "N, N m"), Arg("T", rb.row_major(T), "1", (6, 6)), Arg("Td", rb.row_major(Td), "1/s", (6, 6))),
         "the paper's coordinates r = (p, phi_ZYX): B_o(r) = T^T Lambda T, n_o(r, r') = T^T (Lambda T' r' + "
         "n_o,twist), T = diag(I, T_A) and T'(r, r')",
-        guards=(guard, Guard("euler", ca.cos(phi[1]), "HYBRID_EULER_SINGULAR", EULER_TOL,
+        guards=(guard, Guard("euler", ca.cos(phi[1]), "EULER_SINGULAR", EULER_TOL,
                              "|cos beta| (ZYX Euler angles at their singularity, beta = +-pi/2)")))
     return twist, euler

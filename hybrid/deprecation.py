@@ -9,6 +9,7 @@ new ones.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import inspect
 import warnings
@@ -87,7 +88,9 @@ class RenamedKeywords(type):
     subclass's own ``__init__`` too."""
 
     def __call__(cls, *args, **kwargs):
-        kwargs = renamed_settings(kwargs, cls.__name__, cls._renamed, old_wins=True, stacklevel=4)
+        # dataclasses.replace passes every field beside the old name given: the old name's value is the change
+        replacing = {f.name for f in dataclasses.fields(cls) if f.init} <= set(kwargs)
+        kwargs = renamed_settings(kwargs, cls.__name__, cls._renamed, old_wins=replacing, stacklevel=4)
         return super().__call__(*args, **kwargs)
 
     @property

@@ -33,6 +33,7 @@ import numpy as np
 from hybrid import files
 from hybrid.deprecation import RENAMED
 from hybrid.errors import HybridError
+from hybrid.spec.metrics import METRICS
 
 matplotlib.use("Agg")  # files only: no display needed
 import matplotlib.pyplot as plt  # noqa: E402
@@ -58,24 +59,10 @@ REFERENCE = dict(color="0.55", lw=3.0, alpha=0.55, zorder=1, solid_capstyle="but
 FORMATS = ("png", "pdf", "svg")
 FONT = 9  # pt, at the figures' saved size
 
-#: names and units of the metrics (hybrid.metrics) and of settings a sweep often varies
+#: names and units of the metrics (hybrid.metrics, as hybrid.spec.metrics declares them) and of settings a sweep
+#: often varies
 LABELS = {
-    "force_overshoot_N": "force overshoot after the force step [N]",
-    "force_overshoot_percent": "force overshoot after the force step [%]",
-    "force_settling_time_2pct_s": "force settling time (2 % band) [s]",
-    "speed_drop_after_force_step_m_per_s": "speed drop after the force step [m/s]",
-    "force_deviation_after_speed_step_N": "force deviation after the speed step [N]",
-    "speed_overshoot_after_speed_step_m_per_s": "speed overshoot after the speed step [m/s]",
-    "steady_state_force_error_N": "steady-state force error [N]",
-    "steady_state_speed_error_m_per_s": "steady-state speed error [m/s]",
-    "rms_force_error_N": "RMS force error [N]",
-    "rms_speed_error_m_per_s": "RMS speed error [m/s]",
-    "max_penetration_m": "largest penetration [m]",
-    "contact_losses": "contact losses [count]",
-    "time_out_of_contact_s": "time out of contact [s]",
-    "first_touch_time_s": "time of the first touch [s]",
-    "first_touch_overshoot_N": "force overshoot after the first touch [N]",
-    "first_touch_settling_s": "settling after the first touch (5 % band) [s]",
+    **{m.name: m.axis_label for m in METRICS},
     "normal_angle_error_deg": "RMS normal estimate error [deg]",
     "max_normal_angle_error_deg": "largest normal estimate error [deg]",
     "model_error": "model error (inertia too high) [fraction]",

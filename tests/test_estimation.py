@@ -15,6 +15,7 @@ import pytest
 
 import hybrid
 from hybrid.control.estimation import estimate_step
+from hybrid.spec.controller_step import ESTIMATE
 
 
 def _angle(a, b) -> float:
@@ -49,7 +50,7 @@ def synthetic(n, friction: float, samples: int, T: float = 0.01, speed: float = 
 
 
 def run_estimator(est, data, T: float = 0.01):
-    state, tuning = np.zeros(10), est.as_array()
+    state, tuning = np.zeros(len(ESTIMATE)), est.as_array()
     for F, v in data:
         state = estimate_step(state, tuning, F, v, T)
     return state
@@ -132,7 +133,7 @@ def _sticking(n, N: float = 20.0, friction: float = 0.3, speed: float = 0.05, pu
 
 
 def _errors(est, data):
-    state, tuning, out = np.zeros(10), est.as_array(), []
+    state, tuning, out = np.zeros(len(ESTIMATE)), est.as_array(), []
     for F, v in data:
         state = estimate_step(state, tuning, F, v, 0.01)
         out.append(np.degrees(_angle(state[:3], est.initial_normal)))
@@ -169,7 +170,7 @@ def test_the_step_estimates_as_the_numpy_statement(rng):
     ctrl = hybrid.Controller(base.robot, est, base.scheme, axes=base.axes, selection=("n",), gains=exp.gains,
                              force_reference=exp.force_reference, velocity_reference=exp.speed_reference,
                              sample_time=exp.sample_time)
-    state = np.zeros(10)
+    state = np.zeros(len(ESTIMATE))
     for k in range(exp.n_samples):
         x = r.state[k * exp.steps_per_sample]
         F = plant.sensor_wrench(x) + rng.normal(0, 0.3, 6)
@@ -192,7 +193,7 @@ def test_the_step_estimates_as_the_numpy_statement_through_loss_sticking_and_res
                              sample_time=exp.sample_time)
     t1, _ = _tangents(n)
     data = _loss_of_contact(n)[140:] + _sticking(n)[145:] + [(20.0 * n - 3.0 * t1, np.zeros(3))] * 5
-    state = np.zeros(10)
+    state = np.zeros(len(ESTIMATE))
     for k, (F, v) in enumerate(data):
         qdot = np.linalg.solve(J, np.concatenate([v, np.zeros(3)]))  # the tip's velocity v, no rotation
         ctrl(k * exp.sample_time, q, qdot, F)

@@ -129,7 +129,7 @@ def test_every_file_that_shapes_the_generated_bytes_changes_the_fingerprint(fing
         path.write_bytes(original)
         assert fingerprint() == before
     # a new file that is not a module (a template) counts as well, in a new subfolder too
-    template = top / "codegen" / "more_templates" / "unit.c.in"
+    template = top / "codegen" / "more_templates" / "unit.c.j2"
     template.parent.mkdir()
     template.write_text("/* a template */\n")
     assert fingerprint() != before
@@ -146,4 +146,8 @@ def test_files_outside_the_generator_leave_the_fingerprint(fingerprint_of_copy):
     cache = top / "codegen" / "__pycache__"
     cache.mkdir()
     (cache / "emit.cpython-312.pyc").write_bytes(b"\0")
+    assert fingerprint() == before
+    # nor is an editor's backup or a merge's leftover beside them
+    (top / "codegen" / "emit.py.orig").write_text("# an old copy\n")
+    (top / "codegen" / "templates" / "unit.c.j2~").write_text("/* a backup */\n")
     assert fingerprint() == before

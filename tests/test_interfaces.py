@@ -169,14 +169,19 @@ def test_ports_and_packing():
         Port("x", "nq*2", "", "").size_of(dims)
     assert PerAxis(("z1", "z2")).names(dims) == ("z1_t1", "z2_t1", "z1_n", "z2_n")
     assert PerJoint(("tau",), tail=("started",)).names(dims) == ("tau_j1", "tau_j2", "started")
-    packed = CONTROLLER_STEP.pack({"robot": [1, 2, 3], "surface": [4], "e": [0, 0, 1]}, dims)
+    required = {"steps": np.zeros(6), "gains": np.ones(8), "selection": [0, 1], "robot": [1, 2, 3], "surface": [4],
+                "e": [0, 0, 1], "options": np.ones(7)}
+    packed = CONTROLLER_STEP.pack(required, dims)
     by_name = dict(zip(CONTROLLER_STEP.parameters, packed))
     assert by_name["limits"].tolist() == [np.finfo(float).max] * 4  # a parameter not given: its default
-    assert by_name["gains"].tolist() == [0.0] * 8
+    assert by_name["posture"].tolist() == [0.0] * 6 and by_name["gains"].tolist() == [1.0] * 8
+    for name in required:  # no neutral value: refused when left out
+        with pytest.raises(HybridError, match=f"{name} has no neutral value"):
+            CONTROLLER_STEP.pack({k: v for k, v in required.items() if k != name}, dims)
     with pytest.raises(HybridError, match="no parameter q"):
         CONTROLLER_STEP.pack({"q": [0, 0]}, dims)
     with pytest.raises(HybridError, match="takes 3 numbers"):
-        CONTROLLER_STEP.pack({"e": [0, 1]}, dims)
+        CONTROLLER_STEP.pack({**required, "e": [0, 1]}, dims)
     # every state has an output it advances to, and the per-sample inputs come before the parameters
     assert set(STATE_NEXT) == set(CONTROLLER_STEP.named(STATE))
     assert all(out in {p.name for p in CONTROLLER_STEP.outputs} for out in STATE_NEXT.values())

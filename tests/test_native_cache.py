@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import hybrid
-from hybrid.native import build, cache, compiler, loader
+from hybrid.native import cache, compiler, loader
 
 ROOT = Path(__file__).resolve().parent.parent
 LAW = ("import hybrid; law = hybrid.decoupling_law(hybrid.paper_arm(), hybrid.Circle((0.5, 0), 0.2)); "
@@ -84,7 +84,7 @@ def test_a_hand_edited_committed_loop_is_used_with_a_warning(tmp_path, monkeypat
     prefix, _ = units._loop_key(plant, dict(variant), 1)
     c = src / "loops" / f"{prefix}.c"
     c.write_text(c.read_text() + "\n/* my tuning */\n")
-    monkeypatch.setattr(build, "source_dir", lambda: src)  # where the units look for the committed loops
+    monkeypatch.setattr(loader, "source_dir", lambda: src)  # where the units look for the committed loops
     monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
     unit = units.loop_unit(plant, dict(variant), 1)
     assert unit.folder == src / "loops"
@@ -101,7 +101,7 @@ def test_a_committed_loop_with_a_file_missing_is_generated_instead(tmp_path, mon
     plant, variant = closed_loop.loop_of(hybrid.paper_experiment(controller="raibert_craig"))
     prefix, _ = units._loop_key(plant, dict(variant), 1)
     (src / "loops" / f"{prefix}.c").unlink()
-    monkeypatch.setattr(build, "source_dir", lambda: src)  # where the units look for the committed loops
+    monkeypatch.setattr(loader, "source_dir", lambda: src)  # where the units look for the committed loops
     monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
     unit = units.loop_unit(plant, dict(variant), 1)
     assert unit.folder.parent == tmp_path / "cache" / "units"  # generated into the cache

@@ -24,6 +24,7 @@ from hybrid.native import units
 from hybrid.plants.rigid_body import RigidBodyPlant
 from hybrid.simulation import closed_loop
 from hybrid.simulation.runner import run
+from hybrid.spec.controller_step import CONTROLLER_STEP
 
 EXACT = dict(model_error=0.0, viscous_compensation=1.0, contact=hybrid.Contact(friction=0.0))
 SPHERE = hybrid.Sphere((0.4, 0.1, 0.3), 0.15)
@@ -167,8 +168,11 @@ def test_posture_off_is_bitwise_the_law_without_a_null_space_torque(rng, robots,
             Fc = rng.normal(0, 10, 6)
             z = ctrl.state.ravel()
             tau = ctrl(k * 0.01, q, qd, Fc)
-            want = zero_tau0(q, qd, Fc, z, last, np.zeros(13), np.zeros(10), np.array([k * 0.01]), np.zeros(6),
-                             np.zeros(6), np.zeros(9), *ctrl.step_inputs().values(),
+            # every per-sample input zero (sizes as the step declares them) but the sample's own
+            sizes = dict(zero_tau0.inputs)
+            sample = {**{n: np.zeros(sizes[n]) for n in CONTROLLER_STEP.per_sample}, "q": q, "qd": qd, "Fc": Fc,
+                      "integrals": z, "last_torque": last, "t": np.array([k * 0.01])}
+            want = zero_tau0(*(sample[n] for n in CONTROLLER_STEP.per_sample), *ctrl.step_inputs().values(),
                              singular_tol=ctrl.singular_tol)["tau"]
             assert tau.tobytes() == want.tobytes()
             last = np.append(tau, 1.0)

@@ -26,16 +26,23 @@ from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
 from hybrid.native.standalone import generate_controller
 from hybrid.spec.axes import AXIS_NAMES
-from hybrid.spec.controller_step import CONTROLLER_STEP, NO_LIMIT, SENSOR, SETTING_CHECKS, STATE_NEXT
-from hybrid.spec.interfaces import CHECKS, HELD_STATUSES, REFERENCE, TIMING_STATUSES, Dims
+from hybrid.spec.controller_step import (
+    CONTROLLER_STEP,
+    ESTIMATE,
+    LOOP_GAINS,
+    NO_LIMIT,
+    OPTIONS,
+    SENSOR,
+    SETTING_CHECKS,
+    STATE_NEXT,
+)
+from hybrid.spec.interfaces import CHECKS, HELD_STATUSES, REFERENCE, Dims
 from hybrid.validate import _finite, check_singular_tol
 
 #: "no limit" for the options that are off (the generated step takes finite numbers only)
 _OFF = 1e300
 #: the compiled step's inputs a controller fixes, in the step's order (after the per-sample ones)
 PARAMETERS = CONTROLLER_STEP.parameters
-#: the sample-timing statuses, by the interval since the last sample (see Controller's timing_tolerance)
-TIMING = TIMING_STATUSES
 #: the step's per-sample inputs a call gives (its q, qdot and Fc); the others the controller holds
 _CALLED = ("q", "qd", "Fc")
 #: the states a sample the law served advances whether or not it was on time (the integrals only on time;
@@ -305,9 +312,12 @@ class Controller:
         # it was, bit for bit; both are in the same unit, and the posture's numbers are run-time inputs of both
         self._step_name = self.scheme.step if self.posture is None else "controller_posture_step"
         loss = contact_loss or ContactLoss(-_OFF, 0.0)
-        options = np.array([float(curvature), self.sample_time, float(self.scheme.feeds_desired_force),
-                            _OFF if integral_limit is None else float(integral_limit), loss.threshold,
-                            loss.approach_speed, float(self.scheme.pseudoinverse)])
+        option = {"curvature": float(curvature), "sample_time": self.sample_time,
+                  "khatib": float(self.scheme.feeds_desired_force),
+                  "integral_limit": _OFF if integral_limit is None else float(integral_limit),
+                  "loss_threshold": loss.threshold, "approach_speed": loss.approach_speed,
+                  "pseudoinverse": float(self.scheme.pseudoinverse)}
+        options = np.array([option[name] for name in OPTIONS])
         steps = np.array([ref.step or (0.0, 0.0, 0.0) for ref in self._references], float).ravel()
         # every step takes the posture's numbers (zeros when off: the step without a posture ignores them)
         posture_array = np.zeros(3 * robot.n) if posture is None else self.posture.as_array()
@@ -334,7 +344,7 @@ class Controller:
         self._at = {n: i for i, n in enumerate(held)}
         self._t, self._last = self._held[self._at["t"]], self._held[self._at["last_torque"]]
         self._z, self._estimate = self._held[self._at["integrals"]], self._held[self._at["estimate"]]
-        self._extra, self._rate, self._target = (self._held[self._at[n]] for n in self._reference_inputs)
+        self._extra, self._rate, self._target = (self._held[self._at[n]] for n in ("yd_extra", "yd_rate", "target"))
         self._clock = None  # the last sample's time
         self._checked_settings = None  # the settings a sample reads, as last found valid
         self._fc = np.zeros(sizes["Fc"])
@@ -535,9 +545,9 @@ class Controller:
 
     def _gain_array(self) -> np.ndarray:
         """``(KP, KI, KI2, KD)`` per axis, as the generated step reads them."""
-        rows = [(g.KPf, g.KIf, 0.0, g.KDf) if s else (g.KPv, g.KIv, g.KI2v, 0.0)
-                for g, s in zip(self.gains, self.selection)]
-        return np.array(rows, float).ravel()
+        rows = [{"KP": g.KPf, "KI": g.KIf, "KI2": 0.0, "KD": g.KDf} if s else
+                {"KP": g.KPv, "KI": g.KIv, "KI2": g.KI2v, "KD": 0.0} for g, s in zip(self.gains, self.selection)]
+        return np.array([[row[k] for k in LOOP_GAINS] for row in rows], float).ravel()
 
     def _axis_references(self, force, velocity) -> list[Reference]:
         refs: list = [0.0] * len(self.axes)
@@ -693,7 +703,8 @@ class Controller:
         None for a surface the controller is told."""
         if not self._estimated:
             return None
-        return self._estimate[:3].copy() if self._estimate[9] else np.array(self._spatial.initial_normal)
+        started, n = ESTIMATE.index("started"), [ESTIMATE.index(k) for k in ("n_x", "n_y", "n_z")]
+        return self._estimate[n].copy() if self._estimate[started] else np.array(self._spatial.initial_normal)
 
     def _padded(self, Fc) -> np.ndarray:
         """``Fc`` as the step's 6-vector (into a buffer for a force without moments)."""

@@ -15,7 +15,7 @@ state is worked out in :mod:`hybrid.experiments.start`, its settings as data in
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 import numpy as np
 
@@ -216,12 +216,14 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
 
     # ------------------------------------------------------------------ derived
 
-    @property
+    # what the robot's kind makes of the experiment, worked out once: an experiment is immutable, and the
+    # settings with_physics changes (PHYSICS) reach none of these
+    @cached_property
     def arm(self) -> Arm | None:
         """The planar arm's parameters (its closed form), or None for any other robot."""
         return self.robot.kind.arm
 
-    @property
+    @cached_property
     def plant_class(self) -> type:
         """The generated plant of these runs, the robot's kind's (the closed form of the planar arm, else the
         rigid-body one; :data:`hybrid.plants.registry.GENERATED_PLANTS`)."""
@@ -241,7 +243,7 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         return Controller(self.controller_robot(), surface, self.controller, axes=self.axes,
                           frame_direction=self.frame_direction, posture=self.posture, **self.controller_settings())
 
-    @property
+    @cached_property
     def section(self):
         """The surface's cross-section the planar arm runs on (:meth:`Surface.cross_section`), or None."""
         return self.robot.kind.section(self.surface)

@@ -31,10 +31,8 @@ class SerialChain:
     conditioning_name = "m/(|J|_F |J^+|_F)"
     #: the numbers of a measured force without moments (base axes)
     force_size = 3
-    #: the name of its generated plant in the plants' registry (:mod:`hybrid.plants.interface`)
+    #: the name of its generated plant in the plants' registry (:mod:`hybrid.plants.registry`)
     plant = "rigid_body"
-    #: the law's derivation unless told (:data:`hybrid.control.law.BACKENDS`)
-    law_backend = "rigid_body"
     #: whether the sensor's own mass weighs on it in a plant (a chain moves in gravity; the planar arm's
     #: plane is horizontal to its sensor's spring)
     sensor_weighs = True
@@ -129,7 +127,6 @@ class ClosedFormArm(SerialChain):
     conditioning_name = "2|det J|/|J|_F^2"
     force_size = 2
     plant = "planar"
-    law_backend = "sympy"
     sensor_weighs = False
 
     def conditioning(self, robot, q) -> np.ndarray:

@@ -344,7 +344,7 @@ class Unit:
         return self._bound[name]
 
     def fast(self):
-        """The unit's one-state CPython entry point (``hybrid/fastcall.c``), compiled on first use."""
+        """The unit's one-state CPython entry point (``hybrid/native/fastcall.c``), compiled on first use."""
         if self._fast is None:
             self._fast = load_fastcall(Path(self.folder), self.manifest["unit"], self.manifest)
         return self._fast

@@ -4,7 +4,7 @@
  * NumPy arrays' data pointers directly and calls the generated C, so a law is a few hundred
  * nanoseconds from Python. It does not contain the generated code: it calls the functions of the
  * unit's cffi module through their addresses, given at bind time, so a unit is compiled once.
- * It is compiled and cached by hybrid/native.py, which writes before this file, from the unit's
+ * It is compiled and cached by hybrid/native/loader.py, which writes before this file, from the unit's
  * manifest:
  *
  *   static int adapt_K(hybrid_fn fn, const double *const *in, double tol, double *const *out) { ... }

@@ -4,7 +4,7 @@ Each unit in ``generated/`` is compiled with the system C compiler (:mod:`hybrid
 the first time it is used, and the result is cached (:mod:`hybrid.native.cache`) by a key that
 covers the C source, the cffi declarations, the compiler's identity, the flags and the Python ABI.
 Beside the cffi module of a unit, :func:`load_fastcall` builds its one-state entry point
-(``hybrid/fastcall.c``).
+(``hybrid/native/fastcall.c``).
 """
 
 from __future__ import annotations
@@ -221,12 +221,12 @@ def load_generated(src_dir: Path, prefix: str):
 
 # ------------------------------------------------------------------ the one-state entry point
 
-#: the most arguments a function may have for the one-state entry point (hybrid/fastcall.c)
+#: the most arguments a function may have for the one-state entry point (hybrid/native/fastcall.c)
 FAST_MAX_ARGS = 24
 
 
 def fastcall_prelude(manifest: dict) -> str:
-    """What ``hybrid/fastcall.c`` expects before it, written from the unit's manifest: an adapter
+    """What ``hybrid/native/fastcall.c`` expects before it, written from the unit's manifest: an adapter
     per function (its arguments in order) and the table of sizes and shapes."""
     adapters, table, max_out = [], [], 1
     for k, f in enumerate(manifest["functions"]):
@@ -249,7 +249,7 @@ def fastcall_prelude(manifest: dict) -> str:
 
 
 def load_fastcall(src_dir: Path, prefix: str, manifest: dict):
-    """The one-state CPython entry point (``hybrid/fastcall.c``) of the unit ``<prefix>`` in ``src_dir``.
+    """The one-state CPython entry point (``hybrid/native/fastcall.c``) of the unit ``<prefix>`` in ``src_dir``.
 
     ``bind(symbol, n_state, params, singular_tol)`` fixes a function's parameters; ``call(binding,
     which, *states)`` evaluates it, returning None off the fast path (see the C file).

@@ -4,7 +4,7 @@ The committed units (:func:`planar_unit`, the paper's arm in closed form) are co
 ``generated/``. A robot's units (its terms, its law on a surface, its controller step, its plant,
 a closed loop) are generated for its kinematic structure when first asked for, then compiled:
 both steps are cached on disk by a key over what they are built from, the generator's
-fingerprint and the versions of SymPy and CasADi (:mod:`hybrid.native.build`). The code generator
+fingerprint and the versions of SymPy and CasADi (:mod:`hybrid.native.cache`). The code generator
 is reached through :mod:`hybrid.native.generator`, only when a unit must be generated, so the
 runtime starts without it.
 """
@@ -18,8 +18,9 @@ from functools import cache
 from pathlib import Path
 
 from hybrid.errors import HybridError, NativeBuildError
-from hybrid.native import build, generator
+from hybrid.native import generator, loader
 from hybrid.native.binding import Unit
+from hybrid.native.cache import generated_unit
 from hybrid.spec import stamp
 from hybrid.spec.interfaces import PRINTERS
 from hybrid.validate import c_identifier
@@ -39,8 +40,8 @@ def planar_unit(backend: str) -> Unit:
 
 @cache
 def _planar_unit(backend: str) -> Unit:
-    return Unit(lambda: build.load(backend), build.manifest(backend), PLANAR_SINGULAR, {"qd": "qdot", "rd": "rdot"},
-                folder=build.source_dir())
+    return Unit(lambda: loader.load(backend), loader.manifest(backend), PLANAR_SINGULAR, {"qd": "qdot", "rd": "rdot"},
+                folder=loader.source_dir())
 
 
 def chain_key(chain) -> str:
@@ -75,7 +76,7 @@ def committed_key(prefix: str, key: dict) -> str:
 def _committed_folder(prefix: str, key: dict) -> Path | None:
     """``generated/loops`` when it holds the unit ``prefix`` for this very ``key``, else None."""
     try:
-        folder = build.source_dir() / LOOPS
+        folder = loader.source_dir() / LOOPS
         index = json.loads((folder / LOOP_INDEX).read_text())["loops"]
     except (NativeBuildError, OSError, ValueError, KeyError, TypeError):  # none committed here: generate it
         return None
@@ -90,15 +91,15 @@ def compiled(prefix: str, key: dict, make) -> Unit:
     (cached by ``key``, the generator's fingerprint and the versions of SymPy and CasADi); it is
     compiled (cached) and loaded when first used."""
     committed = _committed_folder(prefix, key)
-    folder = committed or build.generated_unit(prefix, {**key, "generator": generator.fingerprint(),
+    folder = committed or generated_unit(prefix, {**key, "generator": generator.fingerprint(),
                                                         **_tool_versions(), "prefix": prefix}, lambda: make().files)
 
     def load():
         if committed:  # C in generated/ a user may have edited: said, and used as it is
-            build.warn_if_hand_edited(folder, {n: (folder / n).read_text() for n in (f"{prefix}.c", f"{prefix}.h")})
-        return build.load_generated(folder, prefix)
+            loader.warn_if_hand_edited(folder, {n: (folder / n).read_text() for n in (f"{prefix}.c", f"{prefix}.h")})
+        return loader.load_generated(folder, prefix)
 
-    return Unit(load, build.read_manifest(folder, prefix),
+    return Unit(load, loader.read_manifest(folder, prefix),
                 " (a wrist, elbow or shoulder singularity)",
                 {"qd": "qdot", "pd": "pdot"}, folder=folder)
 

@@ -9,7 +9,7 @@ from functools import cache
 import numpy as np
 
 from hybrid.native import units
-from hybrid.native.build import manifest
+from hybrid.native.loader import manifest
 from hybrid.plants.interface import GeneratedPlant, LoopPlant, plant_record
 
 

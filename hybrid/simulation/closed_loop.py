@@ -22,8 +22,9 @@ from functools import cache
 import numpy as np
 
 from hybrid.errors import HybridError, NativeBuildError
-from hybrid.native import build, units
+from hybrid.native import compiler, units
 from hybrid.native.binding import one_block, workers
+from hybrid.spec.interfaces import STATUS_CODES
 
 log = logging.getLogger("hybrid")
 
@@ -152,7 +153,7 @@ def build_side_by_side(experiments, lanes: int | None = 1) -> None:
             pass
 
     try:
-        build.ready_for_threads()
+        compiler.ready_for_threads()
     except NativeBuildError:
         return  # each run says why it takes the Python runner
     distinct = {}  # one experiment per loop: two threads never build the same one
@@ -268,8 +269,9 @@ def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
                       ffi.from_buffer("double[]", taus) if record else ffi.NULL,
                       ffi.from_buffer("double[]", outputs) if record else ffi.NULL)
         for j, i in enumerate(members):
-            m = dict(zip(loop.metrics, metrics[j].tolist() if status[j] == 0 else [math.nan] * len(loop.metrics)))
-            if status[j] == 0:
+            ok = status[j] == STATUS_CODES["OK"]
+            m = dict(zip(loop.metrics, metrics[j].tolist() if ok else [math.nan] * len(loop.metrics)))
+            if ok:
                 m["contact_losses"] = int(m["contact_losses"])
             outcomes[i] = Outcome(int(status[j]), int(failed[j]), m, states[j] if record else None,
                                   taus[j] if record else None, outputs[j] if record else None)

@@ -21,6 +21,7 @@ from hybrid.simulation import closed_loop
 from hybrid.simulation.metrics import run_metrics
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.sensing import plant_reader
+from hybrid.spec.interfaces import STATUS_CODES
 from hybrid.validate import check_size
 
 
@@ -82,7 +83,7 @@ def _compiled_or_run(exp, plant, x0: np.ndarray, compiled: bool = True) -> Simul
     prepared = closed_loop.prepare(exp, x0, lanes=1, ctrl=controller) if compiled else None
     if prepared is not None:
         done = closed_loop.run([prepared], record=True)[0]
-        if done.status == 0:
+        if done.status == STATUS_CODES["OK"]:
             return _result(exp, plant, done.states, done.taus, done.metrics, outputs=done.outputs)
     return run(exp, plant, controller, x0)
 

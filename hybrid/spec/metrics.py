@@ -14,33 +14,54 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class Metric:
-    """One number a run is judged by: its name (which carries its unit), its unit and its meaning."""
+    """One number a run is judged by: its name (which carries its unit), its unit, its meaning, and the
+    short label a figure's axis shows (before its unit)."""
 
     name: str
     unit: str
+    label: str
     doc: str
+
+    @property
+    def axis_label(self) -> str:
+        """The label with its unit, as a figure's axis shows it."""
+        return f"{self.label} [{self.unit}]"
 
 
 METRICS = (
-    Metric("force_overshoot_N", "N", "the normal force's peak past the force step's value, signed by the step"),
-    Metric("force_overshoot_percent", "%", "the overshoot as a percentage of the force step"),
-    Metric("force_settling_time_2pct_s", "s", "the time after the force step until the force stays within 2 % "
-           "of its value (of the step's size when it steps to 0)"),
-    Metric("speed_drop_after_force_step_m_per_s", "m/s", "the largest speed error after the force step"),
-    Metric("force_deviation_after_speed_step_N", "N", "the largest force error after the speed step"),
-    Metric("speed_overshoot_after_speed_step_m_per_s", "m/s", "the speed's peak past the speed step's value"),
-    Metric("steady_state_force_error_N", "N", "the mean force error over the last 0.2 s"),
-    Metric("steady_state_speed_error_m_per_s", "m/s", "the mean speed error over the last 0.2 s"),
-    Metric("rms_force_error_N", "N", "the RMS force error over the run"),
-    Metric("rms_speed_error_m_per_s", "m/s", "the RMS speed error over the run"),
-    Metric("max_penetration_m", "m", "the sensor tip's largest penetration into the surface"),
-    Metric("contact_losses", "1", "how often the surface's normal force dropped to 0"),
-    Metric("time_out_of_contact_s", "s", "the time the surface's normal force was 0"),
-    Metric("first_touch_time_s", "s", "the time of the first sample in contact"),
-    Metric("first_touch_overshoot_N", "N", "the force's peak past its reference after the first touch, until "
-           "the force reference next changes"),
-    Metric("first_touch_settling_s", "s", "the time after the first touch until the force stays within "
-           "5 % of its reference there"),
+    Metric("force_overshoot_N", "N", "force overshoot after the force step",
+           "the normal force's peak past the force step's value, signed by the step"),
+    Metric("force_overshoot_percent", "%", "force overshoot after the force step",
+           "the overshoot as a percentage of the force step"),
+    Metric("force_settling_time_2pct_s", "s", "force settling time (2 % band)",
+           "the time after the force step until the force stays within 2 % of its value (of the step's size when "
+           "it steps to 0)"),
+    Metric("speed_drop_after_force_step_m_per_s", "m/s", "speed drop after the force step",
+           "the largest speed error after the force step"),
+    Metric("force_deviation_after_speed_step_N", "N", "force deviation after the speed step",
+           "the largest force error after the speed step"),
+    Metric("speed_overshoot_after_speed_step_m_per_s", "m/s", "speed overshoot after the speed step",
+           "the speed's peak past the speed step's value"),
+    Metric("steady_state_force_error_N", "N", "steady-state force error",
+           "the mean force error over the last 0.2 s"),
+    Metric("steady_state_speed_error_m_per_s", "m/s", "steady-state speed error",
+           "the mean speed error over the last 0.2 s"),
+    Metric("rms_force_error_N", "N", "RMS force error",
+           "the RMS force error over the run"),
+    Metric("rms_speed_error_m_per_s", "m/s", "RMS speed error",
+           "the RMS speed error over the run"),
+    Metric("max_penetration_m", "m", "largest penetration",
+           "the sensor tip's largest penetration into the surface"),
+    Metric("contact_losses", "count", "contact losses",
+           "how often the surface's normal force dropped to 0"),
+    Metric("time_out_of_contact_s", "s", "time out of contact",
+           "the time the surface's normal force was 0"),
+    Metric("first_touch_time_s", "s", "time of the first touch",
+           "the time of the first sample in contact"),
+    Metric("first_touch_overshoot_N", "N", "force overshoot after the first touch",
+           "the force's peak past its reference after the first touch, until the force reference next changes"),
+    Metric("first_touch_settling_s", "s", "settling after the first touch (5 % band)",
+           "the time after the first touch until the force stays within 5 % of its reference there"),
 )
 #: the metrics' names, in order
 METRIC_NAMES = tuple(m.name for m in METRICS)

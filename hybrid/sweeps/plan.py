@@ -16,6 +16,7 @@ from hybrid.errors import HybridError
 from hybrid.experiments.experiment import PHYSICS
 from hybrid.simulation import closed_loop
 from hybrid.simulation.runner import SimulationError, simulate
+from hybrid.spec.interfaces import STATUS_CODES
 from hybrid.sweeps.space import _built, _made, _nested, _paths
 
 
@@ -29,7 +30,7 @@ def run_points(base, chunk: list[tuple[int, dict]]) -> list[dict]:
     for (index, settings, exp, _), outcome in zip(compiled, closed_loop.run([c[3] for c in compiled])):
         # a run that stopped: the Python runner says where and why
         rows[index] = ({"run": index, **settings, **outcome.metrics, "status": "ok", "error": ""}
-                       if outcome.status == 0 else _simulated_row(index, settings, exp))
+                       if outcome.status == STATUS_CODES["OK"] else _simulated_row(index, settings, exp))
     return [rows[index] for index, _ in chunk]
 
 
