@@ -6,14 +6,25 @@ loops' integrals, the torque last written, the sample clock, and the last sample
 ``<prefix>_controller_step(&c, t, q, qd, wrench, tau)`` runs one sample of the step kernel of
 :mod:`codegen.controller_step` (measurement, loops, law, torque limits) and checks the call:
 
+- a run-time parameter (any configuration field, ``timing_tolerance``, ``singular_tol``) that its
+  declared check refuses (:data:`hybrid.spec.interfaces.CHECKS`, stated on the ports of
+  :data:`hybrid.spec.controller_step.CONTROLLER_STEP`: a NaN, a negative limit or tolerance, a
+  filter cutoff at or above Nyquist), or a sample clock ``t_last`` that is not finite:
+  ``PARAMETER_INVALID``, ``tau`` the torque last written (within the last valid limits; 0 before
+  any), nothing changes: a limit is never lifted, nor its sign flipped;
+
 - a non-finite ``t``, ``q``, ``qd`` or ``wrench``: ``INPUT_NONFINITE``, ``tau`` the torque last
   written (0 before any), nothing changes;
 - the law failing (its guards, a non-finite output): that status, ``tau`` the torque last written,
-  the integrals and the last torque unchanged; the clock follows ``t``;
-- ``t`` off the sample clock (its interval since the last sample outside ``(1 +- tolerance) T``, or
-  0, or negative): ``SAMPLE_LATE``, ``SAMPLE_EARLY``, ``SAMPLE_REPEATED``, ``SAMPLE_BACKWARDS``,
-  ``tau`` the law's at this sample within the limits, the integrals unchanged; the clock follows a
-  forward ``t`` (so the next sample on time is accepted).
+  nothing changes (the clock neither: the next sample is timed from the last one served);
+- ``t`` late or early (its interval since the last sample outside ``(1 +- tolerance) T``):
+  ``SAMPLE_LATE``, ``SAMPLE_EARLY``, ``tau`` the law's at this sample within the limits, the
+  integrals unchanged, the other states (last torque, filter, estimate) advanced; the clock follows
+  ``t`` (so the next sample on time is accepted);
+- ``t`` equal to the last sample's or before it: ``SAMPLE_REPEATED``, ``SAMPLE_BACKWARDS``, ``tau``
+  the law's at this sample within the limits (rate-limited from the torque last written), and
+  nothing changes: no time passed, so no state (integrals, last torque, filter, estimate, clock,
+  the loop outputs) may advance as if a sample period had.
 
 The Python :class:`hybrid.Controller` does the same (raising where this returns a status), and
 the text is a pure function of its inputs (no dates, no paths, stable ordering).
@@ -26,8 +37,8 @@ import re
 
 import casadi as ca
 
-from hybrid.spec.controller_step import CONTROLLER_STEP, OPTION_DOCS, STATE_NEXT
-from hybrid.spec.interfaces import REFERENCE, STATE, STATUSES
+from hybrid.spec.controller_step import CONTROLLER_STEP, OPTION_DOCS, SETTING_CHECKS, STATE_NEXT
+from hybrid.spec.interfaces import CHECKS, HELD_STATUSES, PARAMETER, REFERENCE, STATE, STATUSES, Dims
 from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from .emit import GENERATOR_VERSION, Unit, _casadi_cores, comment_safe
@@ -86,6 +97,31 @@ def configured(prefix: str, a, doc: str, values, scalars=None) -> dict:
     return {**field, "numbers": numbers, "scalars": scalars}
 
 
+def parameter_checks(dims: Dims, sample_time: str = "c->sample_time") -> list[dict]:
+    """The C tests of every run-time parameter the struct holds, from the declaration's checks
+    (:data:`hybrid.spec.interfaces.CHECKS`): runs of an array's elements under one check (``field``,
+    ``start``, ``stop``, ``valid``) and the scalar fields (``field`` without a range). ``valid`` is a C
+    expression of ``x`` (the element) that is true when it is a value its check allows."""
+    def valid(check: str) -> str:
+        return re.sub(r"\bT\b", sample_time, CHECKS[check].c)
+
+    runs: list[dict] = []
+    for p in CONTROLLER_STEP.inputs:
+        if not p.check or p.role != PARAMETER:
+            continue
+        checks = p.checks(dims)
+        if p.name in _SCALARS:
+            runs += [{"field": name, "valid": valid(k)} for name, k in zip(p.element_names(dims), checks) if k]
+            continue
+        start = 0
+        for i in range(1, len(checks) + 1):
+            if i == len(checks) or checks[i] != checks[start]:
+                if checks[start]:
+                    runs.append({"field": p.name, "start": start, "stop": i, "valid": valid(checks[start])})
+                start = i
+    return runs + [{"field": name, "valid": valid(k)} for name, k in SETTING_CHECKS.items()]
+
+
 def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict, values: dict,
                                 stem: str | None = None) -> Unit:
     """C source, header and manifest of the standalone controller around ``step``: its symbols start
@@ -106,6 +142,7 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     # advance only on a sample on time)
     kept = [inputs[n] for n in CONTROLLER_STEP.named(STATE) if n not in ("last_torque", "integrals")]
     nq, m = inputs["q"].size, inputs["yd_extra"].size
+    dims = Dims.sized(("",) * nq, ("",) * m, inputs["robot"].size, inputs["surface"].size)
     out = {a.name: a for a in step.outputs}
     loop_out = [out[n] for n in out if n not in (*STATE_NEXT.values(), "saturated")]
     doc = {p.name: p.doc for p in (*CONTROLLER_STEP.inputs, *CONTROLLER_STEP.outputs)}
@@ -132,7 +169,9 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
                     tau_unit=_unit_text(out["tau"].unit))
     source = render("standalone_controller.c.j2", **context, tools=f"CasADi {ca.__version__}",
                     cores=_casadi_cores(prefix, (step,)), step=step, outs=step.core_outputs(), packed=packed,
-                    call=_CALL, state_next=STATE_NEXT, tau=out["tau"], saturated=out["saturated"],
+                    call=_CALL, state_next=STATE_NEXT, held=HELD_STATUSES, tau=out["tau"],
+                    saturated=out["saturated"],
+                    checks=parameter_checks(dims),
                     timing_tolerance=_number(values["timing_tolerance"]),
                     singular_tol=_number(values["singular_tol"]))
     fields_doc = [{"name": a.name, "size": a.size, **({"names": list(a.names)} if a.names else {}),

@@ -42,5 +42,19 @@ class SampleTimingError(HybridError):
             "(the integrals were left as they were), or give timing_tolerance=None to skip the check")
 
 
+class ParameterError(HybridError):
+    """A run-time parameter of the control step that its declared check refuses (a NaN, a negative limit
+    or tolerance, a filter cutoff at or above Nyquist): the sample is refused and nothing changes.
+    ``status`` is ``PARAMETER_INVALID`` (the standalone C's status); ``torque`` [N m or N] is what to
+    apply: the torque last written (within the last valid limits), 0 before any."""
+
+    status = "PARAMETER_INVALID"
+
+    def __init__(self, name: str, value, valid: str, torque):
+        self.name, self.value, self.torque = name, value, torque
+        super().__init__(f"{name} = {value!r}; give {valid} (the sample was refused: apply this error's torque, "
+                         "the torque last written)")
+
+
 class LargeModelWarning(UserWarning):
     """A model so large that generating and compiling its code takes minutes (the message says how long)."""

@@ -187,3 +187,34 @@ def test_ports_and_packing():
     assert all(out in {p.name for p in CONTROLLER_STEP.outputs} for out in STATE_NEXT.values())
     roles = [p.role == PARAMETER for p in CONTROLLER_STEP.inputs]
     assert roles == sorted(roles)
+
+
+def test_every_parameter_declares_its_values_and_c_reads_the_same_rule(tmp_path):
+    """Each parameter of the step states what values its elements may take, and each check's C expression
+    (compiled here) and Python predicate agree on numbers at and around every edge, NaN and infinities."""
+    import subprocess
+
+    from hybrid.spec.interfaces import CHECKS, PARAMETER, Dims
+
+    dims = Dims(("a", "b", "c"), ("t1", "n"), ("",) * 4, ("",) * 2)
+    for p in CONTROLLER_STEP.inputs:
+        if p.role == PARAMETER:
+            assert p.check and all(p.checks(dims)) and len(p.checks(dims)) == p.size_of(dims), p.name
+    T = 0.01
+    xs = [float("nan"), float("inf"), -float("inf"), -1.0, -0.5, -0.0, 0.0, 5e-324, 0.5, 1.0 - 2 ** -53, 1.0, 2.0,
+          0.5 / T - 1e-12, 0.5 / T, 1e300, float(np.finfo(float).max)]
+    def c_number(x: float) -> str:
+        return repr(x) if np.isfinite(x) else "NAN" if np.isnan(x) else "INFINITY" if x > 0 else "-INFINITY"
+
+    lines = ["#include <math.h>", "#include <stdio.h>", "int main(void) {",
+             f"    const double xs[{len(xs)}] = {{{', '.join(c_number(x) for x in xs)}}};",
+             "    const double T = 0.01;", "    int i;", f"    for (i = 0; i < {len(xs)}; ++i) {{",
+             "        const double x = xs[i];"]
+    lines += [f'        printf("%d ", (int)({c.c}));' for c in CHECKS.values()]
+    lines += ['        printf("\\n");', "    }", "    (void)T;", "    return 0;", "}"]
+    (tmp_path / "checks.c").write_text("\n".join(lines) + "\n")
+    subprocess.run(["gcc", "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", str(tmp_path / "checks.c"), "-o",
+                    str(tmp_path / "checks"), "-lm"], check=True)
+    got = subprocess.run([str(tmp_path / "checks")], check=True, capture_output=True, text=True).stdout.split("\n")
+    for x, row in zip(xs, got):
+        assert [int(v) for v in row.split()] == [int(bool(c.valid(x, T))) for c in CHECKS.values()], x

@@ -19,7 +19,7 @@ from hybrid.control.references import Step
 from hybrid.control.schemes import Scheme, scheme_of
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import renamed_attribute, renamed_keywords
-from hybrid.errors import HybridError, NonFiniteError, SampleTimingError
+from hybrid.errors import HybridError, NonFiniteError, ParameterError, SampleTimingError
 from hybrid.geometry.task_axes import check_axes, frame_direction_of, spatial_surface
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
@@ -33,9 +33,10 @@ from hybrid.spec.controller_step import (
     NO_LIMIT,
     OPTIONS,
     SENSOR,
+    SETTING_CHECKS,
     STATE_NEXT,
 )
-from hybrid.spec.interfaces import REFERENCE, Dims
+from hybrid.spec.interfaces import CHECKS, HELD_STATUSES, REFERENCE, Dims
 from hybrid.validate import _finite, check_singular_tol
 
 #: "no limit" for the options that are off (the generated step takes finite numbers only)
@@ -219,12 +220,28 @@ class Controller:
     timing_tolerance : the samples' timing check: a sample is on time when ``t`` advanced by the
         sample time within ``timing_tolerance`` of it (default 0.25: 25 %). A late, early, repeated or
         backwards sample raises :class:`~hybrid.SampleTimingError` carrying the torque to apply (that
-        of the law at this sample, within the limits) and leaves the integrals as they were; None:
-        no check. The generated C returns the same as named statuses (:meth:`generate`).
+        of the law at this sample, within the limits) and leaves the integrals as they were; a late or
+        early one advances the rest (the last torque, the sensor's filter, the estimate, the clock),
+        while at a repeated or backwards one no time passed, so nothing changes at all (the
+        ``last`` sample is still the one before). A sample refused (a bad input, the law failing)
+        changes nothing either, the clock included: the next is timed from the last one served. None:
+        no check (every sample is served as on time). The generated C returns the same as named
+        statuses (:meth:`generate`).
     wrench_sensor : a :class:`~hybrid.WrenchSensor`: the wrench given at each sample is then its raw
         reading (six numbers, sensor axes), which the step turns into ``F_c`` (its sign, bias, the
         tool's weight at the current orientation, the mount's lever, the filter; conventions §12).
         None (the default): the wrench given is ``F_c`` itself.
+
+    Notes
+    -----
+    Every number the compiled step reads is checked against its declaration (the checks of
+    :data:`hybrid.spec.controller_step.CONTROLLER_STEP`'s ports, which the standalone C reads too): a
+    NaN, a negative limit or tolerance, a switch not 0 or 1, a filter cutoff at or above the Nyquist
+    frequency is refused here and by :meth:`set_wrench_sensor` with a :class:`HybridError` naming it.
+    The arrays the step reads are then read-only; the settings a sample reads in Python
+    (``sample_time``, ``timing_tolerance``, ``singular_tol``) are checked at each sample, and one
+    changed to an invalid value refuses the sample with a :class:`~hybrid.ParameterError`
+    (``status`` ``PARAMETER_INVALID``, ``torque`` the torque last written), nothing changed.
     """
 
     #: the step's per-sample inputs computed here when references are given as code (else bound to zeros)
@@ -309,10 +326,10 @@ class Controller:
         sensor = np.zeros(len(SENSOR)) if wrench_sensor is None else wrench_sensor.as_array(robot, self.sample_time)
         robot_array, surface_array = robot.as_array(), self._spatial.as_array()
         self._dims = Dims.sized(robot.joint_names, self.axis_names, len(robot_array), len(surface_array))
-        self._params = CONTROLLER_STEP.pack({
+        self._params = self._checked_parameters({
             "steps": steps, "gains": self._gain_array(), "selection": self.selection, "robot": robot_array,
             "surface": surface_array, "e": self.frame_direction, "options": options, "posture": posture_array,
-            "limits": limits, "sensor": sensor}, self._dims)
+            "limits": limits, "sensor": sensor})
         # the step's other per-sample inputs, in its order: the states it keeps (the loops' integrals, the torque
         # last given to the arm and 1 once there is one, the sensor filter's, an estimated surface's), the sample
         # time, the references computed here; the integrals, filter and estimate trade buffers with the outputs
@@ -329,6 +346,7 @@ class Controller:
         self._z, self._estimate = self._held[self._at["integrals"]], self._held[self._at["estimate"]]
         self._extra, self._rate, self._target = (self._held[self._at[n]] for n in ("yd_extra", "yd_rate", "target"))
         self._clock = None  # the last sample's time
+        self._checked_settings = None  # the settings a sample reads, as last found valid
         self._fc = np.zeros(sizes["Fc"])
         # a force without moments: the planar arm's in its plane (2), any other arm's in space (3); a sensor's
         # reading is always six numbers
@@ -359,6 +377,7 @@ class Controller:
         into = {STATE_NEXT[s]: self._held[self._at[s]] for s in _ADVANCED}
         self._out_off_time = [into.get(name) if name in into else np.empty(size)
                               for name, size, _ in self._step.outputs]
+        self._out_held = [np.empty(size) for _, size, _ in self._step.outputs]
         integrals = STATE_NEXT["integrals"]
         self._out = [self._held[self._at["integrals"]] if name == integrals else o
                      for (name, _, _), o in zip(self._step.outputs, self._out_off_time)]
@@ -389,11 +408,38 @@ class Controller:
                               "with wrench_sensor=hybrid.WrenchSensor(...) to give it one")
         if not isinstance(sensor, WrenchSensor):
             raise HybridError(f"sensor = {sensor!r:.60}; give a hybrid.WrenchSensor(...)")
-        self._params = CONTROLLER_STEP.pack({**self.step_inputs(), "sensor": sensor.as_array(self.robot,
-                                                                                               self.sample_time)},
-                                            self._dims)
+        self._params = self._checked_parameters({**self.step_inputs(),
+                                                 "sensor": sensor.as_array(self.robot, self.sample_time)})
         self.wrench_sensor = sensor
         self._bind()
+
+    def _checked_parameters(self, values: dict) -> tuple:
+        """The step's parameters packed from ``values``, each refused unless its declared check allows it
+        (:data:`hybrid.spec.interfaces.CHECKS`: the standalone C checks the same at each sample), then
+        read-only: they change only through this check."""
+        params = CONTROLLER_STEP.pack(values, self._dims)
+        refused = CONTROLLER_STEP.refused(params, self._dims, self.sample_time)
+        if refused:
+            port, element, value, valid = refused[0]
+            raise HybridError(f"the step's {port} {element} = {value!r}; give {valid}"
+                              + (f" ({len(refused) - 1} more refused)" if len(refused) > 1 else ""))
+        for p in params:
+            p.flags.writeable = False
+        return params
+
+    def _refused_setting(self) -> tuple[str, object, str] | None:
+        """The first of the settings a sample reads here (the sample time, the timing and singular
+        tolerances) that its declared check refuses, as ``(name, value, what is valid)``. (The sample
+        clock is the controller's own, only ever a finite ``t`` it served.)"""
+        T = self.sample_time
+        if not CHECKS["positive"].valid(T, T):
+            return "sample_time", T, CHECKS["positive"].meaning
+        settings = {"timing_tolerance": -1.0 if self.timing_tolerance is None else self.timing_tolerance,
+                    "singular_tol": self.singular_tol}
+        for name, check in SETTING_CHECKS.items():
+            if not CHECKS[check].valid(settings[name], T):
+                return name, getattr(self, name), CHECKS[check].meaning
+        return None
 
     @property
     def runs_in_c(self) -> bool:
@@ -578,9 +624,10 @@ class Controller:
         wrench on the robot ``Fc`` (base axes: force [N] of 2 or 3 entries, or force and moment, 6);
         advances the integrals by one sample.
 
-        A sample the law cannot serve raises: :class:`HybridError` for a non-finite input (nothing
-        changes), :class:`SingularConfigurationError` or :class:`TaskFrameError` (the integrals and the
-        last torque stay), :class:`SampleTimingError` off the sample clock (see ``timing_tolerance``)."""
+        A sample the law cannot serve raises and changes nothing (the integrals, the last torque, the
+        filter, the estimate, the sample clock): :class:`HybridError` for a bad input,
+        :class:`SingularConfigurationError` or :class:`TaskFrameError` where the law fails;
+        :class:`SampleTimingError` off the sample clock (see ``timing_tolerance``)."""
         if type(Fc) is not np.ndarray or Fc.shape != (6,):
             Fc = self._padded(Fc)
         if type(t) is not float and (isinstance(t, (str, bytes, bool, np.bool_))
@@ -593,12 +640,19 @@ class Controller:
         if not _isfinite(self._t[0]):
             raise HybridError(f"t = {t!r:.40}; give a finite sample time")
         t = self._t[0]
+        settings = (self.sample_time, self.timing_tolerance, self.singular_tol)
+        if settings != self._checked_settings:  # checked again whenever one changed (a NaN never equals)
+            refused = self._refused_setting()
+            if refused is not None:  # nothing changes; the torque last written is the safe one
+                raise ParameterError(*refused, self._last[:-1] * self._last[-1])
+            self._checked_settings = settings
         clock, timing = self._clock, self._timing(t)
         if self._binding is None:
             self._native()
-        # off the clock: the law's torque, the integrals as they were (the filter and the estimate advance on
-        # every sample the law serves)
-        out = self._out if timing is None else self._out_off_time
+        # late or early: the law's torque, the integrals as they were (the filter and the estimate advance);
+        # repeated or backwards: no time passed, so nothing advances (every output into scratch arrays)
+        held = timing in HELD_STATUSES
+        out = self._out if timing is None else self._out_held if held else self._out_off_time
         if not self._short:
             self._python_references(t)
             if self.path is not None:
@@ -606,9 +660,10 @@ class Controller:
         done = self._into(self._binding, out, q, qdot, Fc, *self._held)
         if done is None:
             self._checked(q, qdot, Fc, out)
-        self._tick(t)
-        self._last[:-1], self._last[-1] = out[0], 1.0
-        self._sampled = True
+        if not held:
+            self._tick(t)
+            self._last[:-1], self._last[-1] = out[0], 1.0
+            self._sampled = True
         if timing is not None:
             raise SampleTimingError(timing, t, clock, self.sample_time, out[0].copy())
         return out[0].copy()
@@ -667,8 +722,9 @@ class Controller:
         return np.concatenate([_vector("path point", got[0], d), _vector("path velocity", got[1], d), phi])
 
     def _checked(self, q, qdot, Fc, out: list) -> None:
-        """The general path: any array-like input, and the error that names the cause. A sample the
-        law fails on (its inputs fine) still moves the sample clock, as the generated C's does."""
+        """The general path: any array-like input, and the error that names the cause. A sample refused
+        here changes nothing (the outputs are written only when the step succeeds), the clock neither,
+        as in the generated C."""
         t = self._t[0]
         for name, v in (("q", q), ("qdot", qdot)):
             try:
@@ -680,18 +736,10 @@ class Controller:
             if not np.isfinite(arr).all():
                 raise NonFiniteError(f"{name} = {arr.tolist()} is not finite; give finite joint positions and "
                                      "velocities [rad, rad/s or m, m/s]")
-        inputs_finite = bool(np.isfinite(Fc).all())
-        if inputs_finite and not all(np.isfinite(v).all() for v in (self._extra, self._rate, self._target)):
-            self._tick(t)  # the law failed on its references: the clock moves, as the generated C's
+        if np.isfinite(Fc).all() and not all(np.isfinite(v).all() for v in (self._extra, self._rate, self._target)):
             raise HybridError(f"the references at t = {t} s are not finite; give references that return finite "
                               f"numbers\n  values {self._extra}, rates {self._rate}, desired point {self._target}")
-        try:
-            got = self._step(q, qdot, Fc, *self._held, *self._bound_refs, *self._params,
-                             singular_tol=self.singular_tol)
-        except HybridError:
-            if inputs_finite:
-                self._tick(t)
-            raise
+        got = self._step(q, qdot, Fc, *self._held, *self._bound_refs, *self._params, singular_tol=self.singular_tol)
         for (name, _, _), o in zip(self._step.outputs, out):
             o[:] = got[name].ravel()
 

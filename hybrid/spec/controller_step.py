@@ -43,6 +43,9 @@ OPTION_DOCS = {
     "approach_speed": "the speed at which a force axis that lost contact approaches the surface [m/s or rad/s]",
     "pseudoinverse": "Raibert & Craig's scheme: 1: the selected rows' pseudo-inverse (Fisher & Mujtaba), 0: J_y^-1",
 }
+#: what each option may be (:data:`hybrid.spec.interfaces.CHECKS`): the switches 0 or 1, the sample time > 0,
+#: the anti-windup limit and the approach speed >= 0 (1e300: off), the loss threshold any number (-1e300: off)
+OPTION_CHECKS = ("switch", "positive", "switch", "nonnegative", "finite", "nonnegative", "switch")
 #: the posture task's per-joint numbers, in this order (n each) in the ``posture`` array
 POSTURE = ("q_rest", "Kp", "Kd")
 #: the torque limits' per-joint numbers, in this order (n each) in the ``limits`` array
@@ -54,6 +57,12 @@ NO_LIMIT = 1.7976931348623157e308
 SENSOR = ("r_x", "r_y", "r_z", *(f"R_{i}{j}" for i in range(3) for j in range(3)), "sign", "tool_mass",
           "tool_cx", "tool_cy", "tool_cz", "bias_fx", "bias_fy", "bias_fz", "bias_mx", "bias_my", "bias_mz",
           "cutoff_hz", "order")
+#: what each of the sensor's numbers may be: the tool's mass >= 0, the cutoff below Nyquist (0: no filter)
+SENSOR_CHECKS = ("finite",) * 13 + ("nonnegative",) + ("finite",) * 9 + ("below_nyquist", "finite")
+#: the step's settings that are no array of its own (the standalone struct's scalar fields, the
+#: Controller's attributes), and what each may be: the timing check's tolerance (-1: no check) and the
+#: least conditioning of the task Jacobian
+SETTING_CHECKS = {"timing_tolerance": "fraction_or_off", "singular_tol": "fraction"}
 #: the estimator's state: the normal estimate, its rate, the last force, 1 once started
 ESTIMATE = ("n_x", "n_y", "n_z", "ndot_x", "ndot_y", "ndot_z", "F_x", "F_y", "F_z", "started")
 #: a wrench's six numbers: force, then moment
@@ -83,24 +92,27 @@ CONTROLLER_STEP = Interface(
         Port("target", "9", "m, m/s, rad", "the desired point, its velocity and ZYX angles (desired frame, "
              "position error)", REFERENCE, ("p_x", "p_y", "p_z", "pd_x", "pd_y", "pd_z", "alpha", "beta", "gamma")),
         Port("steps", "3*m", "as yd_extra, then s", "the references' steps per axis: before, after, at",
-             PARAMETER, PerAxis(("before", "after", "at"))),
+             PARAMETER, PerAxis(("before", "after", "at")), check="finite"),
         Port("gains", "4*m", "per axis KP, KI, KI2, KD: hybrid.Gains' KPv, KIv, KI2v, 0 on a velocity axis and "
              "KPf, KIf, 0, KDf on a force axis", "the loops' gains per axis (LOOP_GAINS)", PARAMETER,
-             PerAxis(LOOP_GAINS)),
+             PerAxis(LOOP_GAINS), check="nonnegative"),
         Port("selection", "m", "1 (1: force-controlled axis)", "1 on a force-controlled axis", PARAMETER,
-             Named("axes")),
-        Port("robot", "robot", "per parameter", "the controller's model of the arm", PARAMETER, Named("robot")),
+             Named("axes"), check="switch"),
+        Port("robot", "robot", "per parameter", "the controller's model of the arm", PARAMETER, Named("robot"),
+             check="finite"),
         Port("surface", "surface", "m (lengths), 1 (directions)", "the surface's parameters", PARAMETER,
-             Named("surface")),
-        Port("e", "3", "1", "the task frame's reference direction (base axes)", PARAMETER, ("e_x", "e_y", "e_z")),
+             Named("surface"), check="finite"),
+        Port("e", "3", "1", "the task frame's reference direction (base axes)", PARAMETER, ("e_x", "e_y", "e_z"),
+             check="finite"),
         Port("options", f"{len(OPTIONS)}", "1, s, 1, unit of a, N or N m, m/s or rad/s, 1",
-             "switches and numbers (OPTIONS)", PARAMETER, OPTIONS),
+             "switches and numbers (OPTIONS)", PARAMETER, OPTIONS, check=OPTION_CHECKS),
         Port("posture", "3*nq", "per joint: rad or m (q_rest), then 1/s^2 (Kp), then 1/s (Kd)",
-             "the posture task's numbers (POSTURE)", PARAMETER, PerJoint(POSTURE), default=0.0),
+             "the posture task's numbers (POSTURE)", PARAMETER, PerJoint(POSTURE), default=0.0,
+             check=("finite", "nonnegative", "nonnegative")),
         Port("limits", "2*nq", "per joint: N m or N (tau_max), then N m or N per sample (rate_max); DBL_MAX: none",
-             "the torque limits (LIMITS)", PARAMETER, PerJoint(LIMITS), default=NO_LIMIT),
+             "the torque limits (LIMITS)", PARAMETER, PerJoint(LIMITS), default=NO_LIMIT, check="nonnegative"),
         Port("sensor", f"{len(SENSOR)}", "m, 1, 1, kg, m, N and N m, Hz, 1 (see hybrid/control/wrench_sensor.py)",
-             "the force/torque sensor's numbers (SENSOR)", PARAMETER, SENSOR, default=0.0),
+             "the force/torque sensor's numbers (SENSOR)", PARAMETER, SENSOR, default=0.0, check=SENSOR_CHECKS),
     ),
     outputs=(
         Port("tau", "nq", "N m or N", "the joint torques, within the limits"),

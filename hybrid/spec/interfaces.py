@@ -12,7 +12,9 @@ a port added here reaches every one of them, and a unit whose manifest disagrees
 declaration is refused when it is bound (:meth:`Interface.check_manifest`).
 
 The statuses (:data:`STATUSES`) and the metrics (:data:`METRICS`) are declared here too: one
-number has one name in Python and in C.
+number has one name in Python and in C. So are the checks of a parameter's values (:data:`CHECKS`): a
+port's ``check`` says which values each of its elements may take, and the standalone C and the
+:class:`~hybrid.Controller` refuse any other from that one statement.
 """
 
 from __future__ import annotations
@@ -83,6 +85,36 @@ class Named:
         return getattr(dims, self.of)
 
 
+@dataclass(frozen=True)
+class Check:
+    """What values a parameter's element may take: ``meaning`` in words, ``c`` the C expression of ``x``
+    (the element) and ``T`` (the sample time) that is true for a valid one, ``valid`` the same in Python
+    (on a number or an array, ``T`` a number). Both are false for NaN: every test is a comparison that
+    NaN fails."""
+
+    name: str
+    meaning: str
+    c: str
+    valid: object
+
+
+#: the largest finite double: ``|x| <= DBL_MAX`` is false for infinities and NaN alike
+_DBL_MAX = 1.7976931348623157e308
+#: every check of a parameter's values, by name
+CHECKS = {c.name: c for c in (
+    Check("finite", "a finite number", "isfinite(x)", lambda x, T: abs(x) <= _DBL_MAX),
+    Check("nonnegative", "a finite number >= 0 (a limit or a tolerance: DBL_MAX is none)",
+          "(isfinite(x) && x >= 0.0)", lambda x, T: (abs(x) <= _DBL_MAX) & (x >= 0)),
+    Check("positive", "a finite number > 0", "(isfinite(x) && x > 0.0)", lambda x, T: (abs(x) <= _DBL_MAX) & (x > 0)),
+    Check("switch", "0 or 1", "(x == 0.0 || x == 1.0)", lambda x, T: (x == 0) | (x == 1)),
+    Check("fraction", "a number in [0, 1)", "(x >= 0.0 && x < 1.0)", lambda x, T: (x >= 0) & (x < 1)),
+    Check("fraction_or_off", "a number in [0, 1), or -1: no check", "(x == -1.0 || (x >= 0.0 && x < 1.0))",
+          lambda x, T: (x == -1) | ((x >= 0) & (x < 1))),
+    Check("below_nyquist", "a frequency >= 0 below the Nyquist frequency 0.5 / sample_time (0: off)",
+          "(x >= 0.0 && x < 0.5 / T)", lambda x, T: (x >= 0) & (x < 0.5 / T)),
+)}
+
+
 #: the roles of a function's inputs: what gives each its numbers at a sample
 ARGUMENT = "argument"    # the caller's measurement of this sample (t, q, q', the wrench)
 STATE = "state"          # kept between samples: zero at a start, written back from the outputs
@@ -101,7 +133,10 @@ class Port:
     ``names`` gives the elements' names (a tuple, or :class:`PerAxis`, :class:`PerJoint`,
     :class:`Named`); ``role`` says what fills an input (:data:`ROLES`; outputs have none);
     ``default`` is the value of every element (or one per element) of a parameter that its owner does not
-    set, the value at which it changes nothing; None where no value is neutral (the owner must give it)."""
+    set, the value at which it changes nothing; None where no value is neutral (the owner must give it).
+    ``check`` names the values a parameter's elements may take (:data:`CHECKS`): one name for every
+    element, or a tuple of one per item of a :class:`PerJoint` or :class:`PerAxis` (repeated over the
+    joints or axes) or one per element of a fixed ``names``."""
 
     name: str
     size: str
@@ -110,6 +145,27 @@ class Port:
     role: str = ""
     names: tuple[str, ...] | PerAxis | PerJoint | Named | None = None
     default: float | tuple[float, ...] | None = None
+    check: str | tuple[str, ...] = ""
+
+    def __post_init__(self):
+        for name in (self.check,) if isinstance(self.check, str) else self.check:
+            if name and name not in CHECKS:
+                raise ValueError(f"port {self.name}: check {name!r} is not one of {', '.join(CHECKS)}")
+
+    def checks(self, dims: Dims) -> tuple[str, ...]:
+        """The check of each element for ``dims`` (``""``: none)."""
+        size = self.size_of(dims)
+        if isinstance(self.check, str):
+            return (self.check,) * size
+        if isinstance(self.names, PerJoint):
+            got = tuple(k for k in self.check for _ in dims.joints)
+        elif isinstance(self.names, PerAxis):
+            got = tuple(self.check) * len(dims.axes)
+        else:
+            got = tuple(self.check)
+        if len(got) != size:
+            raise ValueError(f"port {self.name}: {len(self.check)} checks do not fit its {size} elements")
+        return got
 
     def size_of(self, dims: Dims) -> int:
         """The number of elements for ``dims``."""
@@ -150,10 +206,17 @@ STATUSES = (
     Status("EULER_SINGULAR", 4, "cos(beta) of the tip's ZYX Euler angles is near 0; tau is the torque last written"),
     Status("INPUT_NONFINITE", 5, "t, q, qd or wrench is not finite; tau is the torque last written, nothing "
                                  "changed"),
-    Status("SAMPLE_LATE", 6, "t advanced by more than (1 + timing_tolerance) sample_time"),
-    Status("SAMPLE_EARLY", 7, "t advanced by less than (1 - timing_tolerance) sample_time"),
-    Status("SAMPLE_REPEATED", 8, "t equals the last sample's"),
-    Status("SAMPLE_BACKWARDS", 9, "t is before the last sample's"),
+    Status("SAMPLE_LATE", 6, "t advanced by more than (1 + timing_tolerance) sample_time; tau is the law's, the "
+                             "integrals kept"),
+    Status("SAMPLE_EARLY", 7, "t advanced by less than (1 - timing_tolerance) sample_time; tau is the law's, the "
+                              "integrals kept"),
+    Status("SAMPLE_REPEATED", 8, "t equals the last sample's: no time passed; tau is the law's at this sample "
+                                 "within the limits, nothing changed"),
+    Status("SAMPLE_BACKWARDS", 9, "t is before the last sample's; tau is the law's at this sample within the "
+                                  "limits, nothing changed"),
+    Status("PARAMETER_INVALID", 10, "a run-time parameter is not a value its check allows (a NaN, a negative "
+                                    "limit or tolerance, a filter cutoff at or above Nyquist) or the sample "
+                                    "clock is not finite; tau is the torque last written, nothing changed"),
 )
 STATUS_CODES = {s.name: s.code for s in STATUSES}
 STATUS_NAMES = {s.code: s.name for s in STATUSES}
@@ -161,6 +224,8 @@ STATUS_NAMES = {s.code: s.name for s in STATUSES}
 KERNEL_STATUSES = ("OK", "SINGULAR", "NONFINITE", "FRAME_UNDEFINED", "EULER_SINGULAR")
 #: the sample-timing statuses, by the interval since the last sample
 TIMING_STATUSES = ("SAMPLE_LATE", "SAMPLE_EARLY", "SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
+#: the timing statuses of a sample at which no time passed (or it went back): nothing of the step changes
+HELD_STATUSES = ("SAMPLE_REPEATED", "SAMPLE_BACKWARDS")
 
 
 @dataclass(frozen=True)
@@ -227,6 +292,18 @@ class Interface:
                 raise HybridError(f"{self.name}'s {p.name} takes {size} numbers, got {arr.size}")
             out.append(arr)
         return tuple(out)
+
+    def refused(self, params: tuple, dims: Dims, sample_time: float) -> list[tuple[str, str, float, str]]:
+        """The elements of ``params`` (the parameters in argument order, as :meth:`pack` gives them) that
+        their ports' checks refuse, as ``(port, element, value, what is valid)``; ``sample_time`` [s] is
+        the ``T`` of the checks that read it."""
+        bad = []
+        for p, values in zip((p for p in self.inputs if p.role == PARAMETER), params):
+            names = p.element_names(dims) or tuple(str(i) for i in range(p.size_of(dims)))
+            for name, value, check in zip(names, values, p.checks(dims)):
+                if check and not CHECKS[check].valid(float(value), sample_time):
+                    bad.append((p.name, name or str(len(bad)), float(value), CHECKS[check].meaning))
+        return bad
 
     def check_manifest(self, entry: dict, dims: Dims) -> None:
         """Refuse a unit's manifest entry whose arguments are not this declaration's (names, order,
