@@ -71,8 +71,9 @@ try:
 except ModuleNotFoundError:  # Python 3.10
     import tomli as tomllib
 
-from hybrid.control.controller import ContactLoss, Controller, Posture
+from hybrid.control.controller import Controller
 from hybrid.control.loops import Gains
+from hybrid.control.options import ContactLoss, Posture
 from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES
 from hybrid.deprecation import renamed_keys, warn_renamed

@@ -19,8 +19,9 @@ from functools import cached_property, lru_cache
 
 import numpy as np
 
-from hybrid.control.controller import Controller, Posture, check_posture
+from hybrid.control.controller import Controller
 from hybrid.control.loops import Gains
+from hybrid.control.options import Posture, check_posture
 from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES, scheme_of
 from hybrid.control.wrench_sensor import WrenchSensor

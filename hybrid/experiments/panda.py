@@ -35,7 +35,7 @@ every joint stays below 60 % of its rating throughout.
 
 from __future__ import annotations
 
-from hybrid.control.controller import Posture
+from hybrid.control.options import Posture
 from hybrid.control.references import Step
 from hybrid.experiments.experiment import Experiment
 from hybrid.experiments.settings import with_overrides

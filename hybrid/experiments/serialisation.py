@@ -10,8 +10,8 @@ from dataclasses import asdict, fields
 
 import numpy as np
 
-from hybrid.control.controller import Posture
 from hybrid.control.loops import Gains
+from hybrid.control.options import Posture
 from hybrid.control.references import Step
 from hybrid.control.wrench_sensor import Tool, WrenchSensor
 from hybrid.deprecation import renamed_keys

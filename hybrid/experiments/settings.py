@@ -7,8 +7,8 @@ from dataclasses import fields, replace
 
 import numpy as np
 
-from hybrid.control.controller import ContactLoss
 from hybrid.control.loops import Gains, check_loops
+from hybrid.control.options import ContactLoss
 from hybrid.control.references import Step
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import RENAMED, renamed_settings
