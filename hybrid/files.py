@@ -1,4 +1,7 @@
-"""Writing what a user asked for: atomically, never over their files unasked, one clear line on failure.
+"""Reading and writing the files a user names: atomically, never over their files unasked, one clear line on failure.
+
+A file a user names is read by :func:`read_user_text`: a regular file only (a FIFO, a device or a
+folder is refused before it is opened, so nothing blocks), of a bounded size, decoded as UTF-8.
 
 Every output goes to a temporary file in the target's folder and is renamed into place, so an
 interrupted run leaves either the old file or the new one, never half of one. A file-system
@@ -11,6 +14,7 @@ from __future__ import annotations
 import contextlib
 import fnmatch
 import os
+import stat
 import tempfile
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -120,3 +124,66 @@ def write_with(path: Path, writer: Callable[[Path], None], overwrite: bool = Fal
     with atomic_path(path, overwrite) as tmp:
         writer(tmp)
     return Path(path)
+
+
+MAX_USER_TEXT_BYTES = 16 * 2**20  # a controller, sweep or robot description is far smaller
+
+
+def regular_file(path, what: str, error: type[HybridError] = HybridError) -> Path:
+    """``path`` as a :class:`~pathlib.Path` to an existing regular file, or ``error`` saying why not.
+
+    Looked at with ``os.stat`` before anything opens it: a FIFO or a device would block or
+    never end, a folder cannot be read as text.
+    """
+    if not isinstance(path, (str, os.PathLike)):
+        raise error(f"the {what} must be a path, got {type(path).__name__}; give a path")
+    name = os.fspath(path)
+    if not isinstance(name, str) or "\0" in name or not name.strip():
+        raise error(f"the {what} path {name!r:.60} is not a file name; give a path")
+    try:
+        mode = os.stat(name).st_mode
+    except OSError as exc:
+        raise error(f"cannot read the {what} {name:.200} ({_why(exc)}); check the path") from None
+    if not stat.S_ISREG(mode):
+        kind = "a folder" if stat.S_ISDIR(mode) else "a FIFO" if stat.S_ISFIFO(mode) else "not a regular file"
+        raise error(f"the {what} {name:.200} is {kind}; give a regular file")
+    return Path(name)
+
+
+def read_user_bytes(path, what: str, limit_bytes: int = MAX_USER_TEXT_BYTES,
+                    error: type[HybridError] = HybridError) -> bytes:
+    """The content of the regular file ``path`` (a ``what``: "controller file"), at most
+    ``limit_bytes`` long; anything else is ``error`` naming the file and what to do."""
+    path = regular_file(path, what, error)
+    try:
+        # O_NONBLOCK: should the name turn into a FIFO after the check, opening it does not wait
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    except OSError as exc:
+        raise error(f"cannot read the {what} {path} ({_why(exc)}); check the path") from None
+    with os.fdopen(fd, "rb") as f:
+        info = os.fstat(f.fileno())
+        if not stat.S_ISREG(info.st_mode):
+            raise error(f"the {what} {path} is not a regular file; give a regular file")
+        if info.st_size > limit_bytes:
+            raise error(f"the {what} {path} is {info.st_size} bytes, more than the {limit_bytes} read; "
+                        "give a smaller file")
+        try:
+            data = f.read(limit_bytes + 1)
+        except OSError as exc:
+            raise error(f"cannot read the {what} {path} ({_why(exc)}); check the file") from None
+    if len(data) > limit_bytes:  # grew since fstat
+        raise error(f"the {what} {path} is more than {limit_bytes} bytes; give a smaller file")
+    return data
+
+
+def read_user_text(path, what: str, limit_bytes: int = MAX_USER_TEXT_BYTES,
+                   error: type[HybridError] = HybridError) -> str:
+    """The UTF-8 text of the regular file ``path`` (see :func:`read_user_bytes`); bytes that are
+    not UTF-8 are ``error`` naming the file and the byte offset."""
+    data = read_user_bytes(path, what, limit_bytes, error)
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = data.count(b"\n", 0, exc.start) + 1
+        raise error(f"the {what} {os.fspath(path)} is not UTF-8 text (byte {exc.start}, line {line}); "
+                    "save it as UTF-8") from None

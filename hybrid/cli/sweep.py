@@ -22,6 +22,7 @@ from hybrid.errors import HybridError
 from hybrid.experiments import FACTORIES
 from hybrid.experiments.experiment import Experiment
 from hybrid.experiments.settings import PREFIX_ALIASES, setting_aliases
+from hybrid.files import read_user_text
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.sweeps import sweep
 from hybrid.validate import MAX_NESTING, check_nesting, shown
@@ -194,10 +195,8 @@ def check_parameter_names(base, parameters) -> None:
 def read_config(path: Path) -> dict:
     """The sweep's settings from its TOML file, checked."""
     try:
-        config = tomllib.loads(path.read_text())
-    except OSError as exc:
-        raise HybridError(f"cannot read the sweep file {path}: {exc.strerror}") from None
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        config = tomllib.loads(read_user_text(path, "sweep file"))
+    except tomllib.TOMLDecodeError as exc:
         raise HybridError(f"{path} is not valid TOML: {exc}") from None
     except RecursionError:  # the TOML reader recurses into inline tables and arrays
         raise HybridError(f"{path}: tables or lists are nested too deeply to read; write them at most "

@@ -78,6 +78,7 @@ from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES
 from hybrid.deprecation import renamed_keys, warn_renamed
 from hybrid.errors import HybridError
+from hybrid.files import read_user_text
 from hybrid.geometry.paths import CirclePath, LinePath
 from hybrid.geometry.paths import Path as DesiredPath
 from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere, Surface
@@ -173,14 +174,8 @@ def read_controller_config(path, robot) -> Controller:
 
 def load_controller_config(path) -> ControllerConfig:
     """The TOML file ``path`` read and checked into a :class:`ControllerConfig` (no robot needed)."""
+    text = read_user_text(path, "controller file")
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise HybridError(f"{path}: cannot read the controller file ({exc.strerror or exc}); give a readable "
-                          "TOML file") from None
-    except UnicodeDecodeError:
-        raise HybridError(f"{path}: not UTF-8 text; give a TOML file") from None
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:

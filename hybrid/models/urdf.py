@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import difflib
 import math
-import os
 import warnings
 import xml.parsers.expat
 from dataclasses import dataclass, field
@@ -19,6 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from hybrid.errors import LargeModelWarning, URDFError
+from hybrid.files import read_user_text
 from hybrid.spec.chain import Chain, Joint, rotation_rpy
 from hybrid.validate import inertia_problem
 
@@ -200,22 +200,9 @@ class _Tree:
 
 def _read_tree(path) -> _Tree:
     """Read and parse the URDF at ``path``; check its links and joints form one tree."""
-    if not isinstance(path, (str, os.PathLike)):
-        raise URDFError(f"the URDF path must be a file name, got {type(path).__name__}")
-    try:
-        path = Path(path)
-        if not path.is_file():
-            raise URDFError(f"cannot read the URDF file {path} ({'a folder' if path.is_dir() else 'no such file'}"
-                            " or not a regular file); check the path")
-        if path.stat().st_size > MAX_URDF_BYTES:
-            raise URDFError(f"{path} is {path.stat().st_size / 2**20:.0f} MiB; a URDF of more than "
-                            f"{MAX_URDF_BYTES // 2**20} MiB is not read (meshes belong in their own files)")
-        text = path.read_text()
-    except (OSError, UnicodeDecodeError, ValueError) as exc:
-        if isinstance(exc, URDFError):
-            raise
-        raise URDFError(f"cannot read the URDF file {str(path)[:200]} ({exc.__class__.__name__}: "
-                        f"{getattr(exc, 'strerror', None) or exc}); check the path") from None
+    # meshes belong in their own files: a URDF is text of at most MAX_URDF_BYTES
+    text = read_user_text(path, "URDF file", MAX_URDF_BYTES, error=URDFError)
+    path = Path(path)
     source = path.name
     root = parse_xml(text, source)
     links = {}

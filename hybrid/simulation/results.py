@@ -143,6 +143,11 @@ class SimulationResult:
     def load(cls, path: str | Path) -> SimulationResult:
         """A result written by :meth:`save`; a missing, truncated or foreign file is a HybridError."""
         try:
+            files.regular_file(path, "saved result")  # before np.load opens it: a FIFO would block it
+        except HybridError as exc:
+            raise HybridError(f"{path!s:.200} is not a readable saved hybrid result ({str(exc).partition('; ')[0]}); "
+                              "give a file written by SimulationResult.save") from None
+        try:
             with np.load(path, allow_pickle=False) as z:
                 arrays = {k: z[k] for k in ("t", "state", "tau", "outputs", "force_reference", "speed_reference")}
                 settings = json.loads(str(z["experiment"]))
