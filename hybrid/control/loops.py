@@ -68,13 +68,30 @@ def _loop_radii(g, T: float, k: float) -> tuple:
     # an integrator whose gain is 0 feeds nothing back: its eigenvalue 1 is left out
     used_v = 1 + (g.KIv != 0 or g.KI2v != 0) + (g.KI2v != 0)
     used_f = 2 + (g.KIf != 0)
-    loops = {
-        "velocity (tangent) loop": (velocity_loop_matrix(g.KPv, g.KIv, g.KI2v, T)[:used_v, :used_v],
-                                    "needs KPv*KIv > KI2v and KPv*T well below 2"),
-        "force (normal) loop": (force_loop_matrix(g.KPf, g.KDf, g.KIf, k, T)[:used_f, :used_f],
-                                "needs KDf*KPf > KIf, and KDf*T and sqrt(KPf*k)*T well below 2"),
-    }
-    return tuple((name, (float(max(abs(np.linalg.eigvals(M)))), rule)) for name, (M, rule) in loops.items())
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is a radius of inf, below
+        loops = {
+            "velocity (tangent) loop": (velocity_loop_matrix(g.KPv, g.KIv, g.KI2v, T)[:used_v, :used_v],
+                                        "needs KPv*KIv > KI2v and KPv*T well below 2"),
+            "force (normal) loop": (force_loop_matrix(g.KPf, g.KDf, g.KIf, k, T)[:used_f, :used_f],
+                                    "needs KDf*KPf > KIf, and KDf*T and sqrt(KPf*k)*T well below 2"),
+        }
+    return tuple((name, (_spectral_radius(M), rule)) for name, (M, rule) in loops.items())
+
+
+def _spectral_radius(M: np.ndarray) -> float:
+    """The largest eigenvalue modulus of ``M``; ``inf`` when ``M`` is not finite.
+
+    An entry of ``M`` overflows only when a gain times the sample time (or the contact stiffness)
+    passes the largest float; the loop's radius grows with those products (``KPf*k*T**2/2``,
+    ``KPv*T``, ...), so such a loop is unstable by far, and ``inf`` says so in the same verdict.
+    """
+    if not np.isfinite(M).all():
+        return float("inf")
+    try:
+        radius = float(max(abs(np.linalg.eigvals(M))))
+    except np.linalg.LinAlgError:  # no convergence: only for entries near overflow, as above
+        return float("inf")
+    return radius if np.isfinite(radius) else float("inf")
 
 
 def contact_stiffness(exp) -> float:
@@ -87,9 +104,16 @@ def check_loops(exp) -> None:
     g, T, k = exp.effective_gains(), exp.sample_time, contact_stiffness(exp)
     for name, (radius, rule) in loop_radii(g, T, k).items():
         if radius >= 1.0:
+            why = (f"spectral radius {radius:.3g} >= 1" if np.isfinite(radius) else
+                   f"a gain times sample_time or contact stiffness overflows: {_largest(g)}")
             raise HybridError(
-                f"the {name} is unstable at sample_time {T} s (spectral radius {radius:.3g} >= 1); it {rule}\n"
+                f"the {name} is unstable at sample_time {T} s ({why}); it {rule}\n"
                 f"  gains {g}, contact stiffness {k:.0f} N/m")
+
+
+def _largest(g) -> str:
+    name, value = max(field_values(g).items(), key=lambda item: item[1])
+    return f"{name} = {value:.3g}"
 
 
 def model_error_note(exp) -> str:
