@@ -16,7 +16,8 @@ names, flags and numbers) or kernels they returned, and give kernels or generate
 - a closed loop of a plant's kernels and a controller step: :class:`LoopSpec`,
   :func:`build_closed_loop_unit`;
 - standalone C for a user's project: :func:`build_standalone_controller`, :func:`build_standalone_plant`;
-- the headers the units include: :func:`shared_headers`;
+- the headers the units include: :func:`shared_headers`; the environment that renders C templates
+  (:func:`template_environment`, for another C program of the project's);
 - a surface's ``phi`` in CasADi (:func:`phi_sx`) and a kernel as a CasADi Function
   (:func:`kernel_function`).
 """
@@ -38,6 +39,7 @@ from .standalone_controller import build_standalone_controller
 from .standalone_plant import build_standalone_plant
 from .surfaces import phi_sx
 from .task_law import law_kernels
+from .templates import environment_for as template_environment
 
 
 def shared_headers() -> dict[str, str]:
@@ -49,4 +51,4 @@ def shared_headers() -> dict[str, str]:
 __all__ = ["BACKENDS", "LANES_HEADER", "LoopSpec", "Unit", "build_closed_loop_unit", "build_controller_unit",
            "build_frame_unit", "build_law_unit", "build_planar_unit", "build_plant_unit", "build_robot_unit",
            "build_standalone_controller", "build_standalone_plant", "controller_kernels", "kernel_function",
-           "law_kernels", "phi_sx", "planar_kernels", "plant_kernels", "shared_headers"]
+           "law_kernels", "phi_sx", "planar_kernels", "plant_kernels", "shared_headers", "template_environment"]

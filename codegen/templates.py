@@ -20,9 +20,16 @@ FOLDER = Path(__file__).resolve().parent / "templates"
 
 
 @cache
-def environment() -> jinja2.Environment:
-    return jinja2.Environment(loader=jinja2.FileSystemLoader(FOLDER), undefined=jinja2.StrictUndefined,
+def environment_for(folder: Path) -> jinja2.Environment:
+    """The project's one way of rendering C templates, for the templates in ``folder`` (the generator's, or
+    another C program's of the project: the benchmarks' drivers)."""
+    return jinja2.Environment(loader=jinja2.FileSystemLoader(folder), undefined=jinja2.StrictUndefined,
                               trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)
+
+
+def environment() -> jinja2.Environment:
+    """The environment of the generator's templates."""
+    return environment_for(FOLDER)
 
 
 def render(name: str, **context) -> str:

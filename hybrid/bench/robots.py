@@ -121,17 +121,22 @@ def alone_is_bitwise(law, batch: tuple[np.ndarray, ...], rows: tuple[int, ...] |
     return True
 
 
+def _arm_on_sphere(urdf: str, tip: str) -> tuple[Path, Robot, Sphere] | None:
+    """The shipped arm ``urdf``'s file, its chain to ``tip`` and the benchmarks' sphere; None where the arm
+    is not installed."""
+    path = _shipped_urdf(urdf)
+    return None if path is None else (path, Robot.from_urdf(path, tip=tip), Sphere(SPHERE[:3], SPHERE[3]))
+
+
 def spatial_law_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool, add) -> None:
     """The general law of conventions §9 for a URDF arm on a sphere: in C, from Python, batched,
     against Pinocchio + NumPy; the generated operation count."""
     kernel_function = generator.api().kernel_function
     law_kernels = generator.api().law_kernels
-
-    path = _shipped_urdf(urdf)
-    if path is None:
+    arm = _arm_on_sphere(urdf, tip)
+    if arm is None:
         return
-    robot = Robot.from_urdf(path, tip=tip)
-    sphere = Sphere(SPHERE[:3], SPHERE[3])
+    path, robot, sphere = arm
     law = decoupling_law(robot, sphere, curvature=True)
     unit = units.law_unit(robot.chain, robot.name, sphere.spec(), law.axes)
     rng = np.random.default_rng(2)
@@ -183,12 +188,10 @@ def controller_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool,
     in C, and from Python."""
     kernel_function = generator.api().kernel_function
     controller_kernels = generator.api().controller_kernels
-
-    path = _shipped_urdf(urdf)
-    if path is None:
+    arm = _arm_on_sphere(urdf, tip)
+    if arm is None:
         return
-    robot = Robot.from_urdf(path, tip=tip)
-    sphere = Sphere(SPHERE[:3], SPHERE[3])
+    _, robot, sphere = arm
     # the same sample again and again: no sample clock to keep
     ctrl = Controller(robot, sphere, force_reference=Step(10.0, 20.0, 0.5), velocity_reference=Step(0.15, 0.3, 1.5),
                       timing_tolerance=None)

@@ -2,26 +2,24 @@
 
 The hand-written C that times generated code (a loop around one generated function, the standalone
 controller's step driver) lives in template files, as C with Jinja placeholders; Python builds only their
-context: names, sizes and values. Blocks' tags take their line with them (``trim_blocks``,
-``lstrip_blocks``), so a template reads as the C it renders; an undefined name is an error, never an empty
-string.
+context: names, sizes and values. They render as the generator's do (:mod:`hybrid.codegen.templates`).
 """
 
 from __future__ import annotations
 
-from functools import cache
 from pathlib import Path
 
 import jinja2
+
+from hybrid.native import generator
 
 #: the folder of the templates
 FOLDER = Path(__file__).resolve().parent / "c"
 
 
-@cache
 def environment() -> jinja2.Environment:
-    return jinja2.Environment(loader=jinja2.FileSystemLoader(FOLDER), undefined=jinja2.StrictUndefined,
-                              trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True, autoescape=False)
+    """The generator's environment for C templates (one set of conventions), on this folder."""
+    return generator.api().template_environment(FOLDER)
 
 
 def render(name: str, **context) -> str:
