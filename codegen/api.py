@@ -11,7 +11,8 @@ names, flags and numbers) or kernels they returned, and give kernels or generate
 - any serial chain: :func:`build_robot_unit` (terms, dynamics, operational space),
   :func:`law_kernels` / :func:`build_law_unit` (the decoupling law on a surface),
   :func:`build_frame_unit` (the task frame), :func:`controller_kernels` /
-  :func:`build_controller_unit` (one control sample), :func:`plant_kernels` /
+  :func:`build_controller_unit` (one control sample, and :func:`safe_stop_kernel`: its fault
+  reaction's torque), :func:`plant_kernels` /
   :func:`build_plant_unit` (the 3-D plant);
 - a closed loop of a plant's kernels and a controller step: :class:`LoopSpec`,
   :func:`build_closed_loop_unit`;
@@ -34,6 +35,7 @@ from .emit import build_unit as build_planar_unit
 from .lanes import LANES_HEADER, lanes_header
 from .model import kernels as planar_kernels
 from .robot_unit import build_controller_unit, build_frame_unit, build_law_unit, build_plant_unit, build_robot_unit
+from .safe_stop import safe_stop_kernel
 from .spatial_plant import plant_kernels
 from .standalone_controller import build_standalone_controller
 from .standalone_plant import build_standalone_plant
@@ -51,4 +53,5 @@ def shared_headers() -> dict[str, str]:
 __all__ = ["BACKENDS", "LANES_HEADER", "LoopSpec", "Unit", "build_closed_loop_unit", "build_controller_unit",
            "build_frame_unit", "build_law_unit", "build_planar_unit", "build_plant_unit", "build_robot_unit",
            "build_standalone_controller", "build_standalone_plant", "controller_kernels", "kernel_function",
-           "law_kernels", "phi_sx", "planar_kernels", "plant_kernels", "shared_headers", "template_environment"]
+           "law_kernels", "phi_sx", "planar_kernels", "plant_kernels", "safe_stop_kernel", "shared_headers",
+           "template_environment"]

@@ -18,6 +18,14 @@ plant's parameter arrays, the controller's, the reference steps the metrics read
 lists the row's blocks by name. A run whose controller step trips a guard or gives a non-finite
 output, or whose state stops being finite, gets that status and the sample where it happened; the
 others go on.
+
+A run whose sensor drops out (its row's ``dropout``: the window ``[start, end)`` [s] of the samples
+whose reading is lost; ``inf, inf``: none) reacts to faults as the standalone step does
+(:mod:`codegen.standalone_controller`): a lost reading or a failing law is a refused sample (the
+torque last written, nothing advances), the sample after one is late when the run's
+``timing_tolerance`` checks timing (the law's torque, the integrals kept), and ``fault_samples``
+consecutive faulted samples enter the safe state for the rest of the run (the ``safe_stop`` kernel,
+:mod:`codegen.safe_stop`). A run without a dropout stops at such a sample, as before.
 """
 
 from __future__ import annotations
@@ -27,7 +35,7 @@ from dataclasses import dataclass
 import casadi as ca
 import sympy as sp
 
-from hybrid.spec.controller_step import CONTROLLER_STEP
+from hybrid.spec.controller_step import CONTROLLER_STEP, FAULT, FAULT_STATE
 from hybrid.spec.interfaces import STATE
 from hybrid.spec.metrics import METRIC_NAMES, SETTLING_BAND, STEADY_WINDOW_S, TOUCH_BAND, metric_names
 
@@ -43,13 +51,15 @@ SIGNALS = ("Fc_n", "v_t", "penetration", "N")
 @dataclass(frozen=True)
 class LoopSpec:
     """What one closed loop is made of: the plant's state derivative ``rhs(x, tau, ...)`` and output
-    record ``outputs(x, ...)``, the controller ``step`` (:mod:`codegen.controller_step`) and the
-    record columns of the sensor's force on the robot (base axes)."""
+    record ``outputs(x, ...)``, the controller ``step`` (:mod:`codegen.controller_step`), the
+    record columns of the sensor's force on the robot (base axes) and the step's fault reaction
+    ``stop`` (:mod:`codegen.safe_stop`)."""
 
     rhs: Kernel
     outputs: Kernel
     step: Kernel
     force_columns: tuple[str, ...]
+    stop: Kernel
 
 
 def _rows(expr, index: list[int]):
@@ -87,8 +97,9 @@ def stepping_kernel(spec: LoopSpec) -> Kernel:
 
 def blocks(spec: LoopSpec) -> list[tuple[str, int]]:
     """``(name, size)`` of each block of a run's row: the initial state, the plant's parameter arrays
-    (``plant.<input>``), the controller's (``controller.<input>``), then the force and speed steps
-    ``(before, after, at)`` the metrics read."""
+    (``plant.<input>``), the controller's (``controller.<input>``), the force and speed steps
+    ``(before, after, at)`` the metrics read, then the sensor's ``dropout`` window ``(start, end)`` [s]
+    and the controller's ``timing_tolerance`` (-1: no timing check)."""
     x = spec.rhs.inputs[0]
     out, sizes = [("x0", x.size)], {}
     for a in (*spec.rhs.inputs[2:], *spec.outputs.inputs[1:]):
@@ -96,7 +107,7 @@ def blocks(spec: LoopSpec) -> list[tuple[str, int]]:
             raise ValueError(f"plant input {a.name} has two sizes")
     out += [(f"plant.{n}", s) for n, s in sizes.items()]
     out += [(f"controller.{a.name}", a.size) for a in _parameters(spec.step)]
-    return out + [("force_step", 3), ("speed_step", 3)]
+    return out + [("force_step", 3), ("speed_step", 3), ("dropout", 2), ("timing_tolerance", 1)]
 
 
 def _parameters(step: Kernel) -> list[Arg]:
@@ -136,6 +147,10 @@ def _driver(spec: LoopSpec, stepping: Kernel) -> dict:
         guards=step.guards, nx=nx, nq=nq, nb=at, m=sizes["integrals"] // 2, ns=nf + len(SIGNALS),
         nm=len(metric_names(nq)), ny=stepping.outputs[2].size, force=force, signals=signals,
         iF=nf, iv=nf + 1, ipen=nf + 2, iN=nf + 3, fs=offset["force_step"], vs=offset["speed_step"], x0=offset["x0"],
+        dropout=offset["dropout"], tol=offset["timing_tolerance"], stop=spec.stop,
+        stop_params=[offset["controller." + a.name] for a in spec.stop.inputs if a.name in _STOP_ROW],
+        fault=offset["controller.fault"], FS=_fault_state_places(nq),
+        FO={name: i for i, name in enumerate(FAULT)}, nfs=len(FAULT_STATE.items) * nq + len(FAULT_STATE.tail),
         # where the run's arrays each kernel holds fixed start in its row
         held=[plant[a.name] for a in rhs.inputs[2:]], shown=[plant[a.name] for a in spec.outputs.inputs[1:]],
         both=[plant[a.name] for a in stepping.inputs[2:]],
@@ -143,6 +158,17 @@ def _driver(spec: LoopSpec, stepping: Kernel) -> dict:
         per_sample=[a for a in step.inputs if a.name in CONTROLLER_STEP.per_sample],
         M={name: i for i, name in enumerate(METRIC_NAMES)}, settling_band=repr(SETTLING_BAND),
         steady_window_s=repr(STEADY_WINDOW_S), touch_band=repr(TOUCH_BAND))
+
+
+def _fault_state_places(nq: int) -> dict[str, int]:
+    """Where each item of :data:`hybrid.spec.controller_step.FAULT_STATE` starts (its joints' block, or
+    its one number)."""
+    places = {k: i * nq for i, k in enumerate(FAULT_STATE.items)}
+    return places | {k: len(FAULT_STATE.items) * nq + i for i, k in enumerate(FAULT_STATE.tail)}
+
+
+#: the safe-stop kernel's fixed inputs a run's row holds (its sample time is the loop's)
+_STOP_ROW = ("robot", "fault", "limits")
 
 
 #: the most lines of C the two stage functions may have to be inlined into the loop where lanes are many
@@ -180,7 +206,9 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
                   width=ONE_RUN_LANES if lanes == 1 else lanes, lanes_header=LANES_HEADER, status=STATUS,
                   libm_maps=libm_maps(), small=int(lines <= _INLINE_LINES), stages=stages,
                   outputs_lanes=lanes_function(spec.outputs, "plant_outputs_lanes", shown, "HL_APART", apart=True),
-                  step_lanes=lanes_function(spec.step, spec.step.name + "_lanes", params, "HL_APART", apart=True))
+                  step_lanes=lanes_function(spec.step, spec.step.name + "_lanes", params, "HL_APART", apart=True),
+                  stop_lanes=lanes_function(spec.stop, "safe_stop_lanes", (*_STOP_ROW, "sample_time"), "HL_APART",
+                                            apart=True))
     header = render("closed_loop_unit.h.j2", prefix=prefix)
     loop = {"symbol": f"{prefix}_closed_loop", "lanes_symbol": f"{prefix}_lanes",
             "blocks": [{"name": n, "size": s} for n, s in blocks(spec)],

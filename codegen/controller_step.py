@@ -154,18 +154,23 @@ def limited(tau, z, z_next, last, limits):
     ``tau_j`` in one sample (the rate bound first, then the magnitude's). A saturated sample keeps the
     integrals as they were (conditional integration: the loops do not wind up against a torque the
     arm does not get). A limit of the largest double (``DBL_MAX``) is none: it changes no finite torque."""
+    out = bounded(tau, last, limits)
+    saturated = ca.sum1(out != tau) > 0
+    return out, ca.if_else(saturated, z, z_next), saturated
+
+
+def bounded(tau, last, limits):
+    """``tau`` within ``limits`` (:func:`limited`'s bounds: the rate's from ``last`` once started, then the
+    magnitude's); a torque that is not finite stays as it is (and is reported so)."""
     n = tau.shape[0]
     prev, started, tau_max, rate_max = last[:n], last[n], limits[:n], limits[n:]
     out = []
     for j in range(n):
         lo, hi = ca.if_else(started, prev[j] - rate_max[j], -tau_max[j]), ca.if_else(started, prev[j] + rate_max[j],
                                                                                           tau_max[j])
-        # a torque that is not finite stays as it is, and is reported so
         finite = ca.fabs(tau[j]) <= NO_LIMIT  # the largest double: false for infinities and NaN
         out.append(ca.if_else(finite, _clamped(_clamped(tau[j], lo, hi), -tau_max[j], tau_max[j]), tau[j]))
-    out = ca.vertcat(*out)
-    saturated = ca.sum1(out != tau) > 0
-    return out, ca.if_else(saturated, z, z_next), saturated
+    return ca.vertcat(*out)
 
 
 def sensor_wrench(tip_R, reading, sensor, gravity):

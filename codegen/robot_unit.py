@@ -15,6 +15,7 @@ from .controller_step import controller_kernels
 from .emit import Unit, assemble
 from .factor import ldl_solve
 from .kernel import Arg, Kernel
+from .safe_stop import safe_stop_kernel
 from .spatial_plant import plant_kernels
 from .surfaces import phi_of
 from .task_law import AXIS_NAMES, frame_kernel, law_kernels, operational_space_kernels
@@ -87,7 +88,8 @@ def build_controller_unit(chain: rb.Chain, spec, axes: tuple[int, ...], prefix: 
                           variant: dict) -> Unit:
     """One control sample (measurement, loops, law) of ``chain`` on ``spec`` for the task ``axes``;
     ``variant`` holds the compiled-in options (``desired_frame``, ``position_error``)."""
-    return _task_unit(controller_kernels(chain, spec, axes, **variant), "controller step", chain, spec, axes,
+    kernels = (*controller_kernels(chain, spec, axes, **variant), safe_stop_kernel(chain))
+    return _task_unit(kernels, "controller step", chain, spec, axes,
                       prefix, info, variant)
 
 

@@ -26,6 +26,13 @@ loops' integrals, the torque last written, the sample clock, and the last sample
   nothing changes: no time passed, so no state (integrals, last torque, filter, estimate, clock,
   the loop outputs) may advance as if a sample period had.
 
+A faulted sample (any status above but ``SAMPLE_REPEATED`` and ``SAMPLE_BACKWARDS``, at which no time
+passed) counts in ``fault_state``; a sample served on time ends the count. After ``fault_samples``
+consecutive ones the step is in its safe state (:mod:`codegen.safe_stop`) until a reset:
+``SAFE_STOP`` at every sample, ``tau`` the safe-stop kernel's (from the struct's numbers, or the
+generated configuration's where the struct holds one its check refuses; from the last finite joint
+positions and zero velocities where the sample's are not finite), the law no longer served.
+
 The Python :class:`hybrid.Controller` does the same (raising where this returns a status), and
 the text is a pure function of its inputs (no dates, no paths, stable ordering).
 """
@@ -37,8 +44,24 @@ import re
 
 import casadi as ca
 
-from hybrid.spec.controller_step import CONTROLLER_STEP, OPTION_DOCS, SETTING_CHECKS, STATE_NEXT
-from hybrid.spec.interfaces import CHECKS, HELD_STATUSES, PARAMETER, REFERENCE, STATE, STATUSES, Dims
+from hybrid.spec.controller_step import (
+    CONTROLLER_STEP,
+    FAULT_DOCS,
+    OPTION_DOCS,
+    SAFE_STOP,
+    SETTING_CHECKS,
+    STATE_NEXT,
+)
+from hybrid.spec.interfaces import (
+    CHECKS,
+    HELD_STATUSES,
+    PARAMETER,
+    REFERENCE,
+    STATE,
+    STATUSES,
+    TIMING_STATUSES,
+    Dims,
+)
 from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from .emit import GENERATOR_VERSION, Unit, _casadi_cores, comment_safe
@@ -50,7 +73,9 @@ _WRENCH = "the force and moment on the robot at the tip frame's origin, base axe
 #: the C expression of each per-sample input the call fills from its own arguments and the struct's state
 _CALL = {"q": "q", "qd": "qd", "Fc": "wrench", "last_torque": "last", "t": "tv"}
 #: the inputs held as named scalar fields (their elements' names), not an array
-_SCALARS = ("options",)
+_SCALARS = ("options", "fault")
+#: what each named scalar field holds
+_SCALAR_DOCS = {**OPTION_DOCS, **FAULT_DOCS}
 
 
 def statuses() -> dict[str, int]:
@@ -122,10 +147,11 @@ def parameter_checks(dims: Dims, sample_time: str = "c->sample_time") -> list[di
     return runs + [{"field": name, "valid": valid(k)} for name, k in SETTING_CHECKS.items()]
 
 
-def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict, values: dict,
+def build_standalone_controller(step: Kernel, stop: Kernel, prefix: str, what: str, info: dict, values: dict,
                                 stem: str | None = None) -> Unit:
-    """C source, header and manifest of the standalone controller around ``step``: its symbols start
-    ``prefix``, its files ``stem`` (default ``prefix``).
+    """C source, header and manifest of the standalone controller around ``step``, with ``stop`` (the
+    :data:`~hybrid.spec.controller_step.SAFE_STOP` kernel, ``codegen.safe_stop``) its fault reaction:
+    its symbols start ``prefix``, its files ``stem`` (default ``prefix``).
 
     ``values`` holds the configuration ``_init`` writes: every parameter input of ``step`` by name
     (a sequence of numbers), ``timing_tolerance`` and ``singular_tol``. The C is
@@ -135,6 +161,8 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     declared = [p.name for p in (*CONTROLLER_STEP.inputs, *CONTROLLER_STEP.outputs)]
     if [a.name for a in (*step.inputs, *step.outputs)] != declared:
         raise ValueError(f"a controller step's arguments are not its declaration's {declared}")
+    if [a.name for a in (*stop.inputs, *stop.outputs)] != [p.name for p in (*SAFE_STOP.inputs, *SAFE_STOP.outputs)]:
+        raise ValueError("the safe-stop kernel's arguments are not its declaration's")
     inputs = {a.name: a for a in step.inputs}
     params = [inputs[n] for n in CONTROLLER_STEP.parameters]
     caller = CONTROLLER_STEP.named(REFERENCE)
@@ -155,7 +183,7 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
 
     configuration = [
         configured(prefix, a, doc[a.name], values[a.name],
-                   [{"name": n, "doc": OPTION_DOCS.get(n, n), "unit": None} for n in a.names]
+                   [{"name": n, "doc": _SCALAR_DOCS.get(n, n), "unit": None} for n in a.names]
                    if a.name in _SCALARS and a.names else None) for a in params]
     packed = [f for f in configuration if f["scalars"]]
     if "sample_time" not in inputs["options"].names:
@@ -163,13 +191,19 @@ def build_standalone_controller(step: Kernel, prefix: str, what: str, info: dict
     sections = {"configuration": configuration, "references": [field(inputs[n]) for n in caller],
                 "state": [field(a) for a in (inputs["integrals"], *kept)], "loop_outputs": [field(a) for a in loop_out]}
     sections["kept"] = sections["state"][1:]
+    stop_state = next(a for a in stop.inputs if a.name == "fault_state")
     context = {"prefix": prefix, "stem": stem, "what": what, "generator": GENERATOR_VERSION, "comment": comment_safe,
-               "statuses": STATUSES, "nq": nq, "m": m, **sections}
+               "statuses": STATUSES, "nq": nq, "m": m, **sections,
+               "fault_state": array_field(prefix, stop_state.name, stop_state.size, stop_state.unit, stop_state.names,
+                                          SAFE_STOP.port("fault_state").doc)}
     header = render("standalone_controller.h.j2", **context, wrench=info.get("wrench", _WRENCH),
                     tau_unit=_unit_text(out["tau"].unit))
     source = render("standalone_controller.c.j2", **context, tools=f"CasADi {ca.__version__}",
-                    cores=_casadi_cores(prefix, (step,)), step=step, outs=step.core_outputs(), packed=packed,
-                    call=_CALL, state_next=STATE_NEXT, held=HELD_STATUSES, tau=out["tau"],
+                    cores=_casadi_cores(prefix, (step, stop)), step=step, outs=step.core_outputs(), packed=packed,
+                    call=_CALL, state_next=STATE_NEXT, held=HELD_STATUSES, tau=out["tau"], stop=stop,
+                    served=[s for s in TIMING_STATUSES if s not in HELD_STATUSES],
+                    fault=next(f for f in configuration if f["name"] == "fault"),
+                    fault_samples=_number(values["fault"][0]), stop_time=_number(values["fault"][1]),
                     saturated=out["saturated"],
                     checks=parameter_checks(dims),
                     timing_tolerance=_number(values["timing_tolerance"]),

@@ -35,6 +35,7 @@ from typing import TYPE_CHECKING
 from hybrid._version import __version__
 from hybrid.control.controller import Controller, Measurement
 from hybrid.control.estimation import EstimatedSurface
+from hybrid.control.fault import FaultReaction
 from hybrid.control.identification import ToolIdentification, identify_tool, tare
 from hybrid.control.law import DecouplingLaw, decoupling_law
 from hybrid.control.loops import Gains
@@ -48,6 +49,7 @@ from hybrid.errors import (
     NativeBuildError,
     NonFiniteError,
     ParameterError,
+    SafeStopError,
     SampleTimingError,
     SingularConfigurationError,
     TaskFrameError,
@@ -95,12 +97,12 @@ def __dir__() -> list[str]:
 
 __all__ = [
     "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw",
-    "EstimatedSurface", "Experiment", "Gains", "HybridError", "ImplicitSurface", "Khatib", "LargeModelWarning",
-    "LinePath", "Measurement", "NativeBuildError", "NonFiniteError", "OperationalSpace", "PANDA_URDF",
-    "ParameterError", "Plane", "Posture", "Reference", "Robot", "SCHEMES", "SampleTimingError", "Scheme", "Sensor",
-    "SimulationError",
-    "SimulationResult", "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "Tool",
-    "ToolIdentification", "UR5_URDF", "URDFError", "WrenchSensor", "__version__", "arm_terms", "decoupling_law",
-    "identify_tool", "metrics", "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment",
-    "read_controller_config", "simulate", "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
+    "EstimatedSurface", "Experiment", "FaultReaction", "Gains", "HybridError", "ImplicitSurface", "Khatib",
+    "LargeModelWarning", "LinePath", "Measurement", "NativeBuildError", "NonFiniteError", "OperationalSpace",
+    "PANDA_URDF", "ParameterError", "Plane", "Posture", "Reference", "Robot", "SCHEMES", "SafeStopError",
+    "SampleTimingError", "Scheme", "Sensor", "SimulationError", "SimulationResult", "SingularConfigurationError",
+    "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "Tool", "ToolIdentification", "UR5_URDF", "URDFError",
+    "WrenchSensor", "__version__", "arm_terms", "decoupling_law", "identify_tool", "metrics", "operational_space",
+    "panda", "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config", "simulate", "sweep",
+    "tare", "task_frame", "tracing_experiment", "ur5",
 ]

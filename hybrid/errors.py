@@ -56,5 +56,19 @@ class ParameterError(HybridError):
                          "the torque last written)")
 
 
+class SafeStopError(HybridError):
+    """The control step is in its safe state (``status`` ``SAFE_STOP``, the standalone C's status) after
+    its fault reaction's ``fault_samples`` consecutive faulted samples, until ``reset()``: ``torque``
+    [N m or N] is what to apply (it holds the arm and releases the torque it had at the fault)."""
+
+    status = "SAFE_STOP"
+
+    def __init__(self, torque, faults: int, cause: str):
+        self.torque, self.faults = torque, faults
+        super().__init__(f"the controller is in its safe state after {faults} consecutive faulted samples (the "
+                         f"last: {cause}); apply this error's torque (it holds the arm and releases the contact) "
+                         "and call reset() to resume")
+
+
 class LargeModelWarning(UserWarning):
     """A model so large that generating and compiling its code takes minutes (the message says how long)."""

@@ -275,7 +275,7 @@ def _python(py, t, q, qd, w):
     """``(status, torque)`` of the Python controller: its torque, or the error's (None: it has none)."""
     try:
         return "OK", py(t, q, qd, w)
-    except (hybrid.SampleTimingError, hybrid.ParameterError) as err:
+    except (hybrid.SampleTimingError, hybrid.ParameterError, hybrid.SafeStopError) as err:
         return err.status, err.torque
     except hybrid.HybridError:
         return "REFUSED", None
@@ -307,6 +307,7 @@ def test_random_parameters_and_calls_never_lift_a_limit(paper, data):
         py = None
     c.c = c.ffi.new("pp_controller *")
     c.lib.pp_controller_init(c.c)
+    generated = np.frombuffer(c.ffi.buffer(c.c.limits), float).copy()  # the safe state's, where ours are refused
     if py is not None:  # the C configured as the Python controller (generate writes these numbers)
         limits = py.step_inputs()["limits"]
         c_tol, c_ilim = -1.0 if py.timing_tolerance is None else py.timing_tolerance, py.step_inputs()["options"][3]
@@ -332,8 +333,14 @@ def test_random_parameters_and_calls_never_lift_a_limit(paper, data):
         name = c.name(st_c)
         assert np.isfinite(tau).all(), name
         if not valid:
-            assert name == "PARAMETER_INVALID"
-        if name in LAW:
+            assert name in ("PARAMETER_INVALID", "SAFE_STOP")
+        if name == "SAFE_STOP":  # after five faulted samples: within the limits (the generated ones where ours
+            # are refused), rate-limited from the torque last written
+            bounds = np.asarray(limits if valid else generated)
+            assert (np.abs(tau) <= bounds[:nq]).all()
+            with np.errstate(over="ignore"):
+                assert (np.abs(tau - last) <= bounds[nq:] * (1 + 1e-12) + 1e-12 * np.abs(last)).all() or not had
+        elif name in LAW:
             assert valid
             assert (np.abs(tau) <= np.asarray(limits[:nq])).all()
             if had:
@@ -344,7 +351,7 @@ def test_random_parameters_and_calls_never_lift_a_limit(paper, data):
             np.testing.assert_array_equal(tau, last)  # the torque last written
         if py is not None:
             name_py, tau_py = _python(py, t_next, q, qd, w)
-            if name in LAW or name_py in LAW:
+            if name in (*LAW, "SAFE_STOP") or name_py in (*LAW, "SAFE_STOP"):
                 assert name_py == name
                 np.testing.assert_allclose(tau, tau_py, rtol=1e-12, atol=1e-12 * max(1.0, np.abs(tau).max()))
             else:

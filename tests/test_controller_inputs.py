@@ -17,13 +17,26 @@ Q_UR5 = np.array([0.0, -1.2, 1.6, -1.9, -1.57, 0.0])
 
 
 @pytest.fixture(scope="module")
-def ur5_ctrl():
+def _ur5():
     return hybrid.Controller(hybrid.ur5(), SPHERE, timing_tolerance=None)  # samples at any time
 
 
 @pytest.fixture(scope="module")
-def paper_ctrl():
+def _paper():
     return hybrid.Controller(hybrid.paper_arm(), hybrid.Circle((0.5, 0.0), 0.2), timing_tolerance=None)
+
+
+# each test starts a new run: the refusals of the tests before would count as consecutive faults
+@pytest.fixture
+def ur5_ctrl(_ur5):
+    _ur5.reset()
+    return _ur5
+
+
+@pytest.fixture
+def paper_ctrl(_paper):
+    _paper.reset()
+    return _paper
 
 
 def first_line(exc: BaseException) -> str:

@@ -20,7 +20,7 @@ from hybrid.control import controller as controller_module
 from hybrid.errors import HybridError, NonFiniteError, SingularConfigurationError, TaskFrameError
 from hybrid.native import units
 from hybrid.native.binding import status_error
-from hybrid.spec.controller_step import CONTROLLER_STEP, STATE_NEXT
+from hybrid.spec.controller_step import CONTROLLER_STEP, SAFE_STOP, STATE_NEXT
 from hybrid.spec.interfaces import (
     KERNEL_STATUSES,
     PARAMETER,
@@ -137,13 +137,17 @@ def test_standalone_struct_is_the_declaration(tmp_path):
         if p.role not in (PARAMETER, REFERENCE, STATE) or p.name == "last_torque":
             continue
         names = p.element_names(dims)
-        if p.name == "options":
+        if p.name in ("options", "fault"):
             assert all(re.search(rf"double {n};", header) for n in names)
             continue
         assert re.search(rf"double {p.name}\[{p.size_of(dims)}\];", header), p.name
         if names and p.name not in ("robot", "surface"):
             macro = re.sub(r"[^A-Za-z0-9]+", "_", names[-1]).strip("_").upper()
             assert f"#define DECL_{p.name.upper()}_{macro} {len(names) - 1}" in header, p.name
+    # the fault reaction's state, as the safe-stop kernel declares it
+    state = SAFE_STOP.port("fault_state")
+    assert re.search(rf"double fault_state\[{state.size_of(dims)}\];", header)
+    assert f"#define DECL_FAULT_STATE_SAMPLES {state.size_of(dims) - 1}" in header
     # the gains: the same names in Python (PerAxis of LOOP_GAINS) and in C
     assert "#define DECL_GAINS_KP_N " in header and "KP_n" in CONTROLLER_STEP.port("gains").element_names(dims)
 

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 31bd22711ca70988da06f9644acb56f8d109a303adc5a8b23ef964f455cc15d3 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 46c38ab2be333fadc43c5c4e1f10a9d68e9c75b822dafef22cbd7b120093b209 */
 /* hybrid_planar_arm_circle_raibert_cr_57176b91a5fa: the paper's closed loop on a circle: raibert_craig_step.
    Emitted by hybrid's codegen/closed_loop.py; it includes hybrid_lanes.h (in generated/: compile with -I there). */
 #if !defined(__GNUC__)
@@ -810,7 +810,7 @@ HL_APART void plant_outputs_lanes(const hl_v *x, const hl_v *pre, hl_v *y);
 
 #define RAIBERT_CRAIG_STEP_LANES_NPRE 74
 #if HL_IN_PART(2)
-HL_APART void raibert_craig_step_lanes_pre(const hl_v *steps, const hl_v *gains, const hl_v *selection, const hl_v *robot, const hl_v *surface, const hl_v *e, const hl_v *options, const hl_v *posture, const hl_v *limits, const hl_v *sensor, hl_v *pre) {
+HL_APART void raibert_craig_step_lanes_pre(const hl_v *steps, const hl_v *gains, const hl_v *selection, const hl_v *robot, const hl_v *surface, const hl_v *e, const hl_v *options, const hl_v *posture, const hl_v *limits, const hl_v *sensor, const hl_v *fault, hl_v *pre) {
     const hl_v v60 = hl_splat(0.32);
     const hl_v v56 = hl_splat(0.45);
     const hl_v v67 = surface[0];
@@ -1009,10 +1009,11 @@ HL_APART void raibert_craig_step_lanes_pre(const hl_v *steps, const hl_v *gains,
     (void)posture;
     (void)limits;
     (void)sensor;
+    (void)fault;
     (void)pre;
 }
 #else
-HL_APART void raibert_craig_step_lanes_pre(const hl_v *steps, const hl_v *gains, const hl_v *selection, const hl_v *robot, const hl_v *surface, const hl_v *e, const hl_v *options, const hl_v *posture, const hl_v *limits, const hl_v *sensor, hl_v *pre);
+HL_APART void raibert_craig_step_lanes_pre(const hl_v *steps, const hl_v *gains, const hl_v *selection, const hl_v *robot, const hl_v *surface, const hl_v *e, const hl_v *options, const hl_v *posture, const hl_v *limits, const hl_v *sensor, const hl_v *fault, hl_v *pre);
 #endif
 
 static inline __attribute__((always_inline)) void raibert_craig_step_lanes_core(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond, const int exact, hl_i *odd) {
@@ -1644,6 +1645,310 @@ HL_APART void raibert_craig_step_lanes(const hl_v *q, const hl_v *qd, const hl_v
 HL_APART void raibert_craig_step_lanes(const hl_v *q, const hl_v *qd, const hl_v *Fc, const hl_v *integrals, const hl_v *last_torque, const hl_v *filter, const hl_v *estimate, const hl_v *t, const hl_v *yd_extra, const hl_v *yd_rate, const hl_v *target, const hl_v *pre, hl_v *tau, hl_v *integrals_next, hl_v *a, hl_v *y, hl_v *f, hl_v *saturated, hl_v *filter_next, hl_v *estimate_next, hl_v *contact_wrench, hl_v *frame, hl_v *cond);
 #endif
 
+#define SAFE_STOP_LANES_NPRE 28
+#if HL_IN_PART(2)
+HL_APART void safe_stop_lanes_pre(const hl_v *robot, const hl_v *fault, const hl_v *limits, const hl_v *sample_time, hl_v *pre) {
+    const hl_v v18 = fault[1];
+    const hl_v v19 = v18 * v18;
+    const hl_v v205 = 1.0 / v19;
+    const hl_v v206 = 1.0 / v18;
+    const hl_v v71 = hl_splat(0.45);
+    const hl_v v29 = robot[22];
+    const hl_v v32 = robot[23];
+    const hl_v v66 = robot[11];
+    const hl_v v83 = robot[12];
+    const hl_v v67 = robot[10];
+    const hl_v v55 = robot[19];
+    const hl_v v26 = robot[1];
+    const hl_v v37 = robot[2];
+    const hl_v v27 = robot[0];
+    const hl_v v209 = v26 * v27;
+    const hl_v v14 = robot[9];
+    const hl_v v112 = robot[20];
+    const hl_v v212 = v27 * v37;
+    const hl_v v2 = sample_time[0];
+    const hl_v v0 = fault[2];
+    const hl_v v204 = 1.0 / v0;
+    const hl_v v6 = hl_splat(1.0);
+    const hl_v v123 = limits[2];
+    const hl_v v120 = limits[0];
+    const hl_v v134 = -v120;
+    const hl_v v118 = hl_splat(1.7976931348623157e+308);
+    const hl_v v161 = robot[21];
+    const hl_v v170 = limits[3];
+    const hl_v v168 = limits[1];
+    const hl_v v180 = -v168;
+    pre[0] = v205;
+    pre[1] = v206;
+    pre[2] = v71;
+    pre[3] = v29;
+    pre[4] = v32;
+    pre[5] = v66;
+    pre[6] = v83;
+    pre[7] = v67;
+    pre[8] = v55;
+    pre[9] = v26;
+    pre[10] = v37;
+    pre[11] = v27;
+    pre[12] = v209;
+    pre[13] = v14;
+    pre[14] = v112;
+    pre[15] = v212;
+    pre[16] = v2;
+    pre[17] = v0;
+    pre[18] = v204;
+    pre[19] = v6;
+    pre[20] = v123;
+    pre[21] = v120;
+    pre[22] = v134;
+    pre[23] = v118;
+    pre[24] = v161;
+    pre[25] = v170;
+    pre[26] = v168;
+    pre[27] = v180;
+    (void)robot;
+    (void)fault;
+    (void)limits;
+    (void)sample_time;
+    (void)pre;
+}
+#else
+HL_APART void safe_stop_lanes_pre(const hl_v *robot, const hl_v *fault, const hl_v *limits, const hl_v *sample_time, hl_v *pre);
+#endif
+
+static inline __attribute__((always_inline)) void safe_stop_lanes_core(const hl_v *q, const hl_v *qd, const hl_v *last_torque, const hl_v *fault_state, const hl_v *pre, hl_v *tau, const int exact, hl_i *odd) {
+    (void)q;
+    (void)qd;
+    (void)last_torque;
+    (void)fault_state;
+    (void)pre;
+    (void)odd;
+    const hl_v v205 = pre[0];
+    const hl_v v15 = fault_state[4];
+    const hl_v v16 = q[0];
+    const hl_v v17 = v15 - v16;
+    const hl_v v20 = v17 * v205;
+    const hl_v v21 = qd[0];
+    const hl_v v22 = v21 + v21;
+    const hl_v v206 = pre[1];
+    const hl_v v23 = v22 * v206;
+    const hl_v v24 = v20 - v23;
+    const hl_v v71 = pre[2];
+    const hl_v v72 = v71 * v24;
+    hl_v v28, v31;
+    if (exact) hl_sincos(v16, &v28, &v31); else hl_sincos_poly(v16, &v28, &v31, odd);
+    const hl_v v29 = pre[3];
+    const hl_v v30 = v28 * v29;
+    const hl_v v32 = pre[4];
+    const hl_v v33 = v31 * v32;
+    const hl_v v34 = v30 - v33;
+    const hl_v v73 = v34 + v72;
+    const hl_v v57 = q[1];
+    hl_v v68, v70;
+    if (exact) hl_sincos(v57, &v68, &v70); else hl_sincos_poly(v57, &v68, &v70, odd);
+    const hl_v v74 = v70 * v73;
+    const hl_v v56 = fault_state[5];
+    const hl_v v58 = v56 - v57;
+    const hl_v v59 = v58 * v205;
+    const hl_v v60 = qd[1];
+    const hl_v v61 = v60 + v60;
+    const hl_v v62 = v61 * v206;
+    const hl_v v213 = v59 - v62;
+    const hl_v v64 = v24 + v213;
+    const hl_v v66 = pre[5];
+    const hl_v v80 = v64 * v66;
+    const hl_v v76 = v71 * v21;
+    const hl_v v77 = v68 * v76;
+    const hl_v v78 = v77 * v60;
+    const hl_v v214 = v80 - v78;
+    const hl_v v216 = v214 + v74;
+    const hl_v v43 = v31 * v29;
+    const hl_v v44 = v28 * v32;
+    const hl_v v45 = v43 + v44;
+    const hl_v v69 = v68 * v45;
+    const hl_v v82 = v21 + v60;
+    const hl_v v83 = pre[6];
+    const hl_v v84 = v82 * v83;
+    const hl_v v85 = v77 - v84;
+    const hl_v v86 = v82 * v85;
+    const hl_v v215 = v69 + v86;
+    const hl_v v87 = v215 + v216;
+    const hl_v v67 = pre[7];
+    const hl_v v88 = v67 * v87;
+    const hl_v v89 = v66 * v88;
+    const hl_v v55 = pre[8];
+    const hl_v v65 = v55 * v64;
+    const hl_v v220 = v65 + v89;
+    const hl_v v90 = v68 * v73;
+    const hl_v v96 = v64 * v83;
+    const hl_v v93 = v70 * v76;
+    const hl_v v94 = v93 * v60;
+    const hl_v v217 = v94 - v96;
+    const hl_v v219 = v217 + v90;
+    const hl_v v91 = v70 * v45;
+    const hl_v v98 = v82 * v66;
+    const hl_v v99 = v93 + v98;
+    const hl_v v100 = v82 * v99;
+    const hl_v v218 = v91 + v100;
+    const hl_v v101 = v219 - v218;
+    const hl_v v102 = v67 * v101;
+    const hl_v v103 = v83 * v102;
+    const hl_v v105 = v220 - v103;
+    const hl_v v26 = pre[9];
+    const hl_v v35 = v24 * v26;
+    const hl_v v207 = v21 * v21;
+    const hl_v v37 = pre[10];
+    const hl_v v39 = v37 * v207;
+    const hl_v v208 = v35 - v39;
+    const hl_v v40 = v208 + v34;
+    const hl_v v209 = pre[12];
+    const hl_v v42 = v209 * v40;
+    const hl_v v14 = pre[13];
+    const hl_v v25 = v14 * v24;
+    const hl_v v112 = pre[14];
+    const hl_v v113 = v112 * v21;
+    const hl_v v221 = v113 + v25;
+    const hl_v v222 = v221 + v42;
+    const hl_v v46 = v24 * v37;
+    const hl_v v210 = v21 * v21;
+    const hl_v v49 = v26 * v210;
+    const hl_v v211 = v49 + v46;
+    const hl_v v50 = v211 + v45;
+    const hl_v v212 = pre[15];
+    const hl_v v52 = v212 * v50;
+    const hl_v v223 = v52 + v222;
+    const hl_v v224 = v223 + v105;
+    const hl_v v106 = v68 * v102;
+    const hl_v v107 = v70 * v88;
+    const hl_v v108 = v106 + v107;
+    const hl_v v109 = v71 * v108;
+    const hl_v v114 = v109 + v224;
+    const hl_v v1 = fault_state[8];
+    const hl_v v2 = pre[16];
+    const hl_v v3 = v1 * v2;
+    const hl_v v0 = pre[17];
+    const hl_v v4 = hl_bool(v0 <= v3);
+    const hl_v v5 = hl_bool(v4 == 0.0);
+    const hl_v v204 = pre[18];
+    const hl_v v7 = v3 * v204;
+    const hl_v v6 = pre[19];
+    const hl_v v8 = v6 - v7;
+    const hl_v v12 = hl_select(v5 != 0.0, v8, hl_splat(0.0));
+    const hl_v v13 = v6 - v12;
+    const hl_v v115 = v13 * v114;
+    const hl_v v9 = fault_state[0];
+    const hl_v v10 = v8 * v9;
+    const hl_v v11 = hl_select(v5 != 0.0, v10, hl_splat(0.0));
+    const hl_v v116 = v11 + v115;
+    const hl_v v122 = last_torque[0];
+    const hl_v v123 = pre[20];
+    const hl_v v132 = v122 - v123;
+    const hl_v v121 = last_torque[2];
+    const hl_v v133 = hl_select(v121 != 0.0, v132, hl_splat(0.0));
+    const hl_v v126 = hl_bool(v121 == 0.0);
+    const hl_v v120 = pre[21];
+    const hl_v v134 = pre[22];
+    const hl_v v135 = hl_select(v126 != 0.0, v134, hl_splat(0.0));
+    const hl_v v136 = v133 + v135;
+    const hl_v v137 = hl_bool(v116 < v136);
+    const hl_v v139 = hl_bool(v137 == 0.0);
+    const hl_v v140 = hl_select(v139 != 0.0, v116, hl_splat(0.0));
+    const hl_v v138 = hl_select(v137 != 0.0, v136, hl_splat(0.0));
+    const hl_v v141 = v138 + v140;
+    const hl_v v124 = v122 + v123;
+    const hl_v v125 = hl_select(v121 != 0.0, v124, hl_splat(0.0));
+    const hl_v v127 = hl_select(v126 != 0.0, v120, hl_splat(0.0));
+    const hl_v v128 = v125 + v127;
+    const hl_v v129 = hl_bool(v128 < v116);
+    const hl_v v131 = hl_bool(v129 == 0.0);
+    const hl_v v142 = hl_select(v131 != 0.0, v141, hl_splat(0.0));
+    const hl_v v130 = hl_select(v129 != 0.0, v128, hl_splat(0.0));
+    const hl_v v143 = v130 + v142;
+    const hl_v v147 = hl_bool(v143 < v134);
+    const hl_v v149 = hl_bool(v147 == 0.0);
+    const hl_v v150 = hl_select(v149 != 0.0, v143, hl_splat(0.0));
+    const hl_v v148 = hl_select(v147 != 0.0, v134, hl_splat(0.0));
+    const hl_v v151 = v148 + v150;
+    const hl_v v144 = hl_bool(v120 < v143);
+    const hl_v v146 = hl_bool(v144 == 0.0);
+    const hl_v v152 = hl_select(v146 != 0.0, v151, hl_splat(0.0));
+    const hl_v v145 = hl_select(v144 != 0.0, v120, hl_splat(0.0));
+    const hl_v v153 = v145 + v152;
+    const hl_v v117 = hl_fabs(v116);
+    const hl_v v118 = pre[23];
+    const hl_v v119 = hl_bool(v117 <= v118);
+    const hl_v v154 = hl_select(v119 != 0.0, v153, hl_splat(0.0));
+    const hl_v v155 = hl_bool(v119 == 0.0);
+    const hl_v v156 = hl_select(v155 != 0.0, v116, hl_splat(0.0));
+    const hl_v v157 = v154 + v156;
+    tau[0] = v157;
+    const hl_v v161 = pre[24];
+    const hl_v v162 = v161 * v60;
+    const hl_v v163 = v105 + v162;
+    const hl_v v164 = v13 * v163;
+    const hl_v v158 = fault_state[1];
+    const hl_v v159 = v8 * v158;
+    const hl_v v160 = hl_select(v5 != 0.0, v159, hl_splat(0.0));
+    const hl_v v165 = v160 + v164;
+    const hl_v v169 = last_torque[1];
+    const hl_v v170 = pre[25];
+    const hl_v v178 = v169 - v170;
+    const hl_v v179 = hl_select(v121 != 0.0, v178, hl_splat(0.0));
+    const hl_v v168 = pre[26];
+    const hl_v v180 = pre[27];
+    const hl_v v181 = hl_select(v126 != 0.0, v180, hl_splat(0.0));
+    const hl_v v182 = v179 + v181;
+    const hl_v v183 = hl_bool(v165 < v182);
+    const hl_v v185 = hl_bool(v183 == 0.0);
+    const hl_v v186 = hl_select(v185 != 0.0, v165, hl_splat(0.0));
+    const hl_v v184 = hl_select(v183 != 0.0, v182, hl_splat(0.0));
+    const hl_v v187 = v184 + v186;
+    const hl_v v171 = v169 + v170;
+    const hl_v v172 = hl_select(v121 != 0.0, v171, hl_splat(0.0));
+    const hl_v v173 = hl_select(v126 != 0.0, v168, hl_splat(0.0));
+    const hl_v v174 = v172 + v173;
+    const hl_v v175 = hl_bool(v174 < v165);
+    const hl_v v177 = hl_bool(v175 == 0.0);
+    const hl_v v188 = hl_select(v177 != 0.0, v187, hl_splat(0.0));
+    const hl_v v176 = hl_select(v175 != 0.0, v174, hl_splat(0.0));
+    const hl_v v189 = v176 + v188;
+    const hl_v v193 = hl_bool(v189 < v180);
+    const hl_v v195 = hl_bool(v193 == 0.0);
+    const hl_v v196 = hl_select(v195 != 0.0, v189, hl_splat(0.0));
+    const hl_v v194 = hl_select(v193 != 0.0, v180, hl_splat(0.0));
+    const hl_v v197 = v194 + v196;
+    const hl_v v190 = hl_bool(v168 < v189);
+    const hl_v v192 = hl_bool(v190 == 0.0);
+    const hl_v v198 = hl_select(v192 != 0.0, v197, hl_splat(0.0));
+    const hl_v v191 = hl_select(v190 != 0.0, v168, hl_splat(0.0));
+    const hl_v v199 = v191 + v198;
+    const hl_v v166 = hl_fabs(v165);
+    const hl_v v167 = hl_bool(v166 <= v118);
+    const hl_v v200 = hl_select(v167 != 0.0, v199, hl_splat(0.0));
+    const hl_v v201 = hl_bool(v167 == 0.0);
+    const hl_v v202 = hl_select(v201 != 0.0, v165, hl_splat(0.0));
+    const hl_v v203 = v200 + v202;
+    tau[1] = v203;
+}
+
+#if HL_IN_PART(2)
+HL_APART __attribute__((noinline, cold)) void safe_stop_lanes_exact(const hl_v *q, const hl_v *qd, const hl_v *last_torque, const hl_v *fault_state, const hl_v *pre, hl_v *tau) {
+    safe_stop_lanes_core(q, qd, last_torque, fault_state, pre, tau, 1, NULL);
+}
+#else
+HL_APART __attribute__((noinline, cold)) void safe_stop_lanes_exact(const hl_v *q, const hl_v *qd, const hl_v *last_torque, const hl_v *fault_state, const hl_v *pre, hl_v *tau);
+#endif
+
+#if HL_IN_PART(2)
+HL_APART void safe_stop_lanes(const hl_v *q, const hl_v *qd, const hl_v *last_torque, const hl_v *fault_state, const hl_v *pre, hl_v *tau) {
+    hl_i odd = hl_splat(0.0) != 0.0;
+    safe_stop_lanes_core(q, qd, last_torque, fault_state, pre, tau, 0, &odd);
+    if (hl_any(odd)) safe_stop_lanes_exact(q, qd, last_torque, fault_state, pre, tau);
+}
+#else
+HL_APART void safe_stop_lanes(const hl_v *q, const hl_v *qd, const hl_v *last_torque, const hl_v *fault_state, const hl_v *pre, hl_v *tau);
+#endif
+
 #if HL_IN_PART(1)
 
 typedef struct {
@@ -1682,8 +1987,8 @@ typedef struct {
 
 static inline void window_at(lanes_window *w, const lanes_metrics *mt, const hl_v *blk, long i, double h,
                              double end) {
-    const hl_v fb = blk[122], fa = blk[123], fat = blk[124];
-    const hl_v vb = blk[125], va = blk[126], vat = blk[127];
+    const hl_v fb = blk[125], fa = blk[126], fat = blk[127];
+    const hl_v vb = blk[128], va = blk[129], vat = blk[130];
     const hl_v t = hl_splat((double)i * h), step = fa - fb;
     w->Fd = hl_select(t < fat, fb, fa);
     w->vd = hl_select(t < vat, vb, va);
@@ -1713,7 +2018,7 @@ static inline int same_windows(const lanes_window *a, const lanes_window *b) {
    it is: a sum there only adds +0 to a sum that is never -0) */
 HL_ROW void metrics_signals(lanes_metrics *mt, lanes_window *w, const hl_v *blk, const hl_v *s, long i,
                             double h) {
-    const hl_v fb = blk[122], fa = blk[123], fat = blk[124];
+    const hl_v fb = blk[125], fa = blk[126], fat = blk[127];
     const double ti = (double)i * h;
     const hl_v t = hl_splat(ti), idx = hl_splat((double)i), Fd = w->Fd, vd = w->vd;
     const hl_v F = s[2], v = s[3], pen = s[4];
@@ -1783,7 +2088,7 @@ static void metrics_row(lanes_metrics *mt, const hl_v *blk, const hl_v *s, const
 }
 
 static void metrics_of_lane(const lanes_metrics *mt, const hl_v *blk, int l, long rows, double h, double *out) {
-    const double fb = blk[122][l], fa = blk[123][l], vb = blk[125][l], va = blk[126][l];
+    const double fb = blk[125][l], fa = blk[126][l], vb = blk[128][l], va = blk[129][l];
     int j;
     for (j = 0; j < 6; ++j) out[j] = NAN;
     if (mt->n_f[l] > 0 && fa != fb) {
@@ -1852,9 +2157,14 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
                       double *states, double *taus, double *outputs) {
     hl_v pre_rhs[PLANT_RHS_LANES_NPRE], pre_out[PLANT_OUTPUTS_LANES_NPRE], pre_both[PLANT_RHS_SIGNALS_LANES_NPRE],
         pre_step[RAIBERT_CRAIG_STEP_LANES_NPRE];
-    hl_v blk[128], x[8], xt[8], k1[8], k2[8], k3[8], k4[8], s[6], fc[6], z[4], tv[1],
+    hl_v blk[134], x[8], xt[8], k1[8], k2[8], k3[8], k4[8], s[6], fc[6], z[4], tv[1],
         zero[13], base[6], last[3], y[14];
     hl_v o_tau[2]; hl_v o_integrals_next[4]; hl_v o_a[2]; hl_v o_y[2]; hl_v o_f[2]; hl_v o_saturated[1]; hl_v o_filter_next[13]; hl_v o_estimate_next[10]; hl_v o_contact_wrench[6]; hl_v o_frame[1]; hl_v o_cond[1];
+    /* the torque applied, the fault reaction's state (FAULT_STATE) and its safe state's torque */
+    hl_v tq[2], fst[9], o_stop[2], tsv[1], pre_stop[SAFE_STOP_LANES_NPRE];
+    /* the lanes that react to faults (their sensor drops out), check timing, lost this sample's reading, refused
+       the last sample, served one already, are in the safe state */
+    hl_i reacts, timed, dropped, bad, failed, refused, served, on_time, enter, refused_prev, clocked, stopped;
     lanes_run run;
     lanes_metrics mt;
     lanes_window win, win_end;
@@ -1865,7 +2175,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     int i, j, l, k, steady;
     (void)singular_tol;
     for (l = 0; l < HL_W; ++l) {
-        for (j = 0; j < 128; ++j) blk[j][l] = runs[(long)(g + (l < used ? l : 0)) * 128 + j];
+        for (j = 0; j < 134; ++j) blk[j][l] = runs[(long)(g + (l < used ? l : 0)) * 134 + j];
         run.status[l] = HYBRID_OK;
         run.sample[l] = -1;
     }
@@ -1883,12 +2193,18 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     for (j = 0; j < 6; ++j) fc[j] = hl_splat(0.0);
     for (j = 0; j < 4; ++j) z[j] = hl_splat(0.0);
     for (j = 0; j <= 2; ++j) last[j] = hl_splat(0.0);
+    for (j = 0; j < 9; ++j) fst[j] = hl_splat(0.0);
+    reacts = blk[131] < INFINITY;
+    timed = blk[133] >= 0.0;
+    refused_prev = clocked = stopped = hl_splat(0.0) != 0.0;
+    tsv[0] = hl_splat(sample_time);
     for (j = 0; j < 8; ++j) x[j] = blk[0 + j];
     for (j = 0; j < 6; ++j) base[j] = hl_splat(NAN);  /* none yet: the first step computes it */
     plant_rhs_lanes_pre(blk + 8, blk + 19, blk + 26, pre_rhs);
     plant_outputs_lanes_pre(blk + 8, blk + 19, blk + 26, pre_out);
     plant_rhs_signals_lanes_pre(blk + 8, blk + 19, blk + 26, pre_both);
-    raibert_craig_step_lanes_pre(blk + 29, blk + 35, blk + 43, blk + 45, blk + 70, blk + 77, blk + 80, blk + 87, blk + 93, blk + 97, pre_step);
+    raibert_craig_step_lanes_pre(blk + 29, blk + 35, blk + 43, blk + 45, blk + 70, blk + 77, blk + 80, blk + 87, blk + 93, blk + 97, blk + 122, pre_step);
+    safe_stop_lanes_pre(blk + 45, blk + 122, blk + 93, tsv, pre_stop);
     for (k = 0; k < n_samples && hl_any(run.alive); ++k) {
         /* the sensor's reading at the sample instant (a row's signals come with its step's first stage) */
         plant_outputs_lanes(x, pre_out, y);
@@ -1896,33 +2212,78 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         fc[1] = y[5];
 
         tv[0] = hl_splat(k * sample_time);
+        /* a lost reading (the sensor's dropout): not a number */
+        dropped = (tv[0] >= blk[131]) & (tv[0] < blk[132]);
+        if (hl_any(dropped)) {
+            for (j = 0; j < 2; ++j) fc[j] = hl_select(dropped, hl_splat(NAN), fc[j]);
+        }
         /* the plant's sensor gives the wrench on the robot itself and the surface is told: no filter, no estimate */
         raibert_craig_step_lanes(x, x + 2, fc, z, last, zero, zero, tv, zero, zero, zero, pre_step, o_tau, o_integrals_next, o_a, o_y, o_f, o_saturated, o_filter_next, o_estimate_next, o_contact_wrench, o_frame, o_cond);
         at_sample = run.alive;  /* the lanes whose state this sample starts from is recorded */
-        flag(&run, hl_fabs(o_frame[0]) < 1e-06, HYBRID_FRAME_UNDEFINED, k);
-        flag(&run, hl_fabs(o_cond[0]) < singular_tol, HYBRID_SINGULAR, k);
-        flag(&run, hl_not_finite(o_tau, 2) | hl_not_finite(o_integrals_next, 4) | hl_not_finite(o_a, 2) | hl_not_finite(o_y, 2) | hl_not_finite(o_f, 2) | hl_not_finite(o_saturated, 1) | hl_not_finite(o_filter_next, 13) | hl_not_finite(o_estimate_next, 10) | hl_not_finite(o_contact_wrench, 6) | hl_not_finite(o_frame, 1) | hl_not_finite(o_cond, 1), HYBRID_NONFINITE, k);
-        for (j = 0; j < 4; ++j) z[j] = o_integrals_next[j];
-        /* the torque the rate limit starts from at the next sample */
-        for (j = 0; j < 2; ++j) last[j] = o_tau[j];
-        last[2] = hl_splat(1.0);
-        if (k == 0) record(states, taus, g, used, 0, rows, x, o_tau, hl_splat(0.0) == 0.0, run.alive);
+        /* a guard tripped or an output not finite: a run that reacts to faults refuses the sample, another stops */
+        bad = dropped;
+        failed = hl_fabs(o_frame[0]) < 1e-06;
+        flag(&run, failed & ~reacts, HYBRID_FRAME_UNDEFINED, k);
+        bad |= failed;
+        failed = hl_fabs(o_cond[0]) < singular_tol;
+        flag(&run, failed & ~reacts, HYBRID_SINGULAR, k);
+        bad |= failed;
+        failed = hl_not_finite(o_tau, 2) | hl_not_finite(o_integrals_next, 4) | hl_not_finite(o_a, 2) | hl_not_finite(o_y, 2) | hl_not_finite(o_f, 2) | hl_not_finite(o_saturated, 1) | hl_not_finite(o_filter_next, 13) | hl_not_finite(o_estimate_next, 10) | hl_not_finite(o_contact_wrench, 6) | hl_not_finite(o_frame, 1) | hl_not_finite(o_cond, 1);
+        flag(&run, failed & ~reacts, HYBRID_NONFINITE, k);
+        bad |= failed;
+        refused = bad & ~stopped;
+        served = ~bad & ~stopped;
+        /* the sample after a refused one is late (it is timed from the last one served): the integrals stay */
+        on_time = served & ~(refused_prev & clocked & timed);
+        for (j = 0; j < 4; ++j) z[j] = hl_select(on_time, o_integrals_next[j], z[j]);
+        /* the torque applied: the law's, or at a refused sample the torque last written (0 before any); the rate
+           limit starts from it at the next sample */
+        for (j = 0; j < 2; ++j) last[j] = tq[j] = hl_select(served, o_tau[j], last[j]);
+        last[2] = hl_select(served, hl_splat(1.0), last[2]);
+        if (hl_any(reacts)) {
+            /* the fault reaction (codegen/standalone_controller.py's): a faulted sample counts, one on time ends the
+               count; fault_samples of them enter the safe state, for the rest of the run */
+            fst[6] = hl_select(stopped, fst[6],
+                                   hl_select(on_time, hl_splat(0.0), fst[6] + 1.0));
+            enter = reacts & ~stopped & (fst[6] >= blk[122]);
+            if (hl_any(enter)) {
+                for (j = 0; j < 2; ++j) {
+                    fst[0 + j] = hl_select(enter, tq[j], fst[0 + j]);
+                    fst[4 + j] = hl_select(enter, x[j] + blk[123] * x[2 + j],
+                                                     fst[4 + j]);
+                }
+                fst[8] = hl_select(enter, hl_splat(0.0), fst[8]);
+                fst[7] = hl_select(enter, hl_splat(1.0), fst[7]);
+                stopped |= enter;
+            }
+            if (hl_any(stopped)) {
+                safe_stop_lanes(x, x + 2, last, fst, pre_stop, o_stop);
+                for (j = 0; j < 2; ++j) last[j] = tq[j] = hl_select(stopped, o_stop[j], tq[j]);
+                last[2] = hl_select(stopped, hl_splat(1.0), last[2]);
+                fst[8] = hl_select(stopped, fst[8] + 1.0, fst[8]);
+                for (j = 0; j < 2; ++j) fst[2 + j] = hl_select(stopped, x[j], fst[2 + j]);
+            }
+        }
+        for (j = 0; j < 2; ++j) fst[2 + j] = hl_select(served, x[j], fst[2 + j]);
+        refused_prev = refused;
+        clocked |= served | stopped;
+        if (k == 0) record(states, taus, g, used, 0, rows, x, tq, hl_splat(0.0) == 0.0, run.alive);
         /* the metrics' windows: where no edge of theirs falls among the sample's rows, each row updates only
            what its signals change, and the counts are the sample's */
         window_at(&win, &mt, blk, row, h, end);
         window_at(&win_end, &mt, blk, row + steps_per_sample - 1, h, end);
         steady = same_windows(&win, &win_end);
-        metrics_torque(&mt, o_tau);
+        metrics_torque(&mt, tq);
         for (i = 0; i < steps_per_sample; ++i) {
             /* the joints' sin and cos the step's stages rotate from: its start's, or an earlier step's */
             hl_rebase(x, base, 2);
-            plant_rhs_signals_lanes(x, o_tau, pre_both, k1, s, y, base);
+            plant_rhs_signals_lanes(x, tq, pre_both, k1, s, y, base);
             for (j = 0; j < 8; ++j) xt[j] = x[j] + 0.5 * h * k1[j];
-            plant_rhs_lanes(xt, o_tau, pre_rhs, k2, base);
+            plant_rhs_lanes(xt, tq, pre_rhs, k2, base);
             for (j = 0; j < 8; ++j) xt[j] = x[j] + 0.5 * h * k2[j];
-            plant_rhs_lanes(xt, o_tau, pre_rhs, k3, base);
+            plant_rhs_lanes(xt, tq, pre_rhs, k3, base);
             for (j = 0; j < 8; ++j) xt[j] = x[j] + h * k3[j];
-            plant_rhs_lanes(xt, o_tau, pre_rhs, k4, base);
+            plant_rhs_lanes(xt, tq, pre_rhs, k4, base);
             for (j = 0; j < 8; ++j) x[j] = x[j] + h / 6.0 * (k1[j] + 2.0 * (k2[j] + k3[j]) + k4[j]);
             /* the row the step started from */
             if (!steady) window_at(&win, &mt, blk, row, h, end);
@@ -1937,7 +2298,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
             if (hl_any(~run.alive)) {
                 for (j = 0; j < 8; ++j) x[j] = hl_select(run.alive, x[j], blk[0 + j]);
             }
-            record(states, taus, g, used, row, rows, x, o_tau, run.alive, run.alive);
+            record(states, taus, g, used, row, rows, x, tq, run.alive, run.alive);
         }
         if (steady) metrics_rows(&mt, &win, row - steps_per_sample, row - 1);
     }
@@ -1949,11 +2310,11 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         s[3] = y[2];
         s[4] = y[10];
         s[5] = y[11];
-        metrics_row(&mt, blk, s, o_tau, row, h, end);
+        metrics_row(&mt, blk, s, tq, row, h, end);
         record_outputs(outputs, g, used, row, rows, y, run.alive);
     }
     while (++row < rows) { /* all stopped */
-        record(states, taus, g, used, row, rows, x, o_tau, run.alive, run.alive);
+        record(states, taus, g, used, row, rows, x, tq, run.alive, run.alive);
         record_outputs(outputs, g, used, row, rows, y, run.alive);
     }
     for (l = 0; l < used; ++l) {

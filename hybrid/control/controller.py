@@ -9,14 +9,16 @@ are evaluated in the compiled step at the sample time ``t``; others, given as co
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from math import isfinite as _isfinite
 
 import numpy as np
 
+from hybrid.control.fault import FaultMonitor, FaultReaction, time_passed
 from hybrid.control.loops import Gains
-from hybrid.control.options import ContactLoss, Posture, Reference, call_user, check_posture
+from hybrid.control.options import ContactLoss, Posture, call_user, check_posture
 from hybrid.control.schemes import Scheme, scheme_of
+from hybrid.control.task_settings import axis_references, gain_array, gains_of, joint_limit, selection_of
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import renamed_attribute, renamed_keywords
 from hybrid.errors import HybridError, NonFiniteError, ParameterError, SampleTimingError
@@ -29,7 +31,6 @@ from hybrid.spec.axes import AXIS_NAMES
 from hybrid.spec.controller_step import (
     CONTROLLER_STEP,
     ESTIMATE,
-    LOOP_GAINS,
     NO_LIMIT,
     OPTIONS,
     SENSOR,
@@ -131,6 +132,11 @@ class Controller:
         reading (six numbers, sensor axes), which the step turns into ``F_c`` (its sign, bias, the
         tool's weight at the current orientation, the mount's lever, the filter; conventions §12).
         None (the default): the wrench given is ``F_c`` itself.
+    fault_reaction : a :class:`~hybrid.FaultReaction` (None: its defaults, 5 samples, a 50 ms stop, the
+        torque released over 0.2 s): after its ``fault_samples`` consecutive faulted samples (refused,
+        late or early; a dropout of ``k`` samples is followed by a late one: ``k + 1``) every sample
+        raises :class:`~hybrid.SafeStopError` until :meth:`reset`, carrying the safe state's torque: the
+        arm stopped and held by its model, the torque it had released (:mod:`hybrid.control.fault`).
 
     Notes
     -----
@@ -157,7 +163,8 @@ class Controller:
                  position_error: bool = False, integral_limit: float | None = None,
                  contact_loss: ContactLoss | None = None, singular_tol: float = 1e-3,
                  posture: Posture | None = None, torque_limit="urdf", torque_step_limit=None,
-                 timing_tolerance: float | None = 0.25, wrench_sensor: WrenchSensor | None = None):
+                 timing_tolerance: float | None = 0.25, wrench_sensor: WrenchSensor | None = None,
+                 fault_reaction: FaultReaction | None = None):
         robot = as_robot(robot)
         for name, value in (("integral", integral), ("curvature", curvature), ("position_error", position_error)):
             if not isinstance(value, bool):
@@ -190,14 +197,14 @@ class Controller:
         self.sample_time, self.integral, self.curvature, self.frame = float(sample_time), integral, curvature, frame
         self.frame_direction = tuple(frame_direction_of(frame_direction))
         self.singular_tol, self.path = float(singular_tol), path
-        self.selection = self._selection(selection)
-        self.gains = self._gains(gains)
+        self.selection = selection_of(self.axes, selection)
+        self.gains = gains_of(self.axes, gains, integral)
         if self.scheme.needs_force_gain and any(s and g.KPf <= 0 for g, s in zip(self.gains, self.selection)):
             raise HybridError(f"the {self.scheme.name} scheme commands m_d a = a / KPf on force axes: give KPf > 0")
         self.position_error, self.integral_limit, self.contact_loss = position_error, integral_limit, contact_loss
-        self.posture = self._posture(posture)
-        self.torque_limit = self._limit("torque_limit", torque_limit)
-        self.torque_step_limit = self._limit("torque_step_limit", torque_step_limit)
+        self.posture = check_posture(self.robot, self.axes, self.scheme, posture)
+        self.torque_limit = joint_limit(robot, "torque_limit", torque_limit)
+        self.torque_step_limit = joint_limit(robot, "torque_step_limit", torque_step_limit)
         if timing_tolerance is not None:
             _finite("Controller", timing_tolerance=timing_tolerance)
             if not 0 < timing_tolerance < 1:
@@ -207,7 +214,11 @@ class Controller:
         if wrench_sensor is not None and not isinstance(wrench_sensor, WrenchSensor):
             raise HybridError(f"wrench_sensor = {wrench_sensor!r:.60}; give a hybrid.WrenchSensor(...) or None")
         self.wrench_sensor = wrench_sensor
-        self._references = self._axis_references(force_reference, velocity_reference)
+        if fault_reaction is not None and not isinstance(fault_reaction, FaultReaction):
+            raise HybridError(f"fault_reaction = {fault_reaction!r:.60}; give a hybrid.FaultReaction(...) or None "
+                              "(its defaults)")
+        self._fault_reaction = fault_reaction or FaultReaction()
+        self._references = axis_references(self.axes, self.selection, force_reference, velocity_reference)
         # a posture has its own generated step (the law plus tau0), so the law without one stays the very code
         # it was, bit for bit; both are in the same unit, and the posture's numbers are run-time inputs of both
         self._step_name = self.scheme.step if self.posture is None else "controller_posture_step"
@@ -227,9 +238,10 @@ class Controller:
         robot_array, surface_array = robot.as_array(), self._spatial.as_array()
         self._dims = Dims.sized(robot.joint_names, self.axis_names, len(robot_array), len(surface_array))
         self._params = self._checked_parameters({
-            "steps": steps, "gains": self._gain_array(), "selection": self.selection, "robot": robot_array,
-            "surface": surface_array, "e": self.frame_direction, "options": options, "posture": posture_array,
-            "limits": limits, "sensor": sensor})
+            "steps": steps, "gains": gain_array(self.gains, self.selection), "selection": self.selection,
+            "robot": robot_array, "surface": surface_array, "e": self.frame_direction, "options": options,
+            "posture": posture_array, "limits": limits, "sensor": sensor, "fault": self._fault_reaction.as_array()})
+        self._fault = FaultMonitor(self._dims)
         # the step's other per-sample inputs, in its order: the states it keeps (the loops' integrals, the torque
         # last given to the arm and 1 once there is one, the sensor filter's, an estimated surface's), the sample
         # time, the references computed here; the integrals, filter and estimate trade buffers with the outputs
@@ -269,6 +281,7 @@ class Controller:
         unit = units.controller_unit(self.robot.chain, self.robot.name, self._spatial.spec(), self.axes,
                                      self.frame == "desired", self.position_error, self.wrench_sensor is not None)
         self._step, self._measure = unit.function(self._step_name), unit.function("task_measurement")
+        self._stop = unit.function("safe_stop")
         CONTROLLER_STEP.check_manifest(self._step.entry, self._dims)
         self._into = self._step.unit.fast().call_into
         # outputs written in place, in the declaration's order; a state's next value is written into the state
@@ -379,107 +392,16 @@ class Controller:
     def axis_names(self) -> tuple[str, ...]:
         return tuple(AXIS_NAMES[i] for i in self.axes)
 
-    def _axis(self, what: str, key) -> int:
-        """The position in ``axes`` of the axis named or numbered ``key``."""
-        index = AXIS_NAMES.index(key) if key in AXIS_NAMES else key
-        if isinstance(index, (int, np.integer)) and not isinstance(index, bool) and index in self.axes:
-            return self.axes.index(int(index))
-        raise HybridError(f"{what}: {key!r} is not one of the task axes {', '.join(self.axis_names)}; name one of "
-                          "them (or give its index 0-5)")
-
-    def _selection(self, selection) -> tuple[int, ...]:
-        if selection is None:
-            selection = ("n",) if 2 in self.axes else ()
-        if isinstance(selection, (str, int)):
-            selection = (selection,)
-        try:
-            chosen = {self._axis("selection", k) for k in selection}
-        except HybridError:
-            raise
-        except (TypeError, ValueError):
-            raise HybridError(f"selection = {selection!r:.60}; give the force-controlled axes by name, "
-                              "e.g. ('n',)") from None
-        return tuple(int(k in chosen) for k in range(len(self.axes)))
-
-    def _gains(self, gains) -> tuple[Gains, ...]:
-        per_axis = [Gains()] * len(self.axes)
-        if gains is None:
-            pass
-        elif isinstance(gains, Gains):
-            per_axis = [gains] * len(self.axes)
-        elif isinstance(gains, Mapping):
-            for key, g in gains.items():
-                if not isinstance(g, Gains):
-                    raise HybridError(f"gains[{key!r}] = {g!r:.60}; give a hybrid.Gains(...)")
-                per_axis[self._axis("gains", key)] = g
-        else:
-            raise HybridError(f"gains = {gains!r:.60}; give a hybrid.Gains(...) or {{axis name: Gains}}")
-        if not self.integral:
-            per_axis = [replace(g, KI2v=0.0, KIf=0.0) for g in per_axis]
-        return tuple(per_axis)
-
-    def _posture(self, posture) -> Posture | None:
-        return check_posture(self.robot, self.axes, self.scheme, posture)
-
-    def _limit(self, name: str, value) -> np.ndarray:
-        """A per-joint limit > 0 (``inf``: none) from None, ``"urdf"``, one number or one per joint."""
-        n = self.robot.n
-        if value is None:
-            return np.full(n, np.inf)
-        if isinstance(value, str) and value == "urdf" and name == "torque_limit":
-            limits = self.robot.limits
-            if limits is None:
-                return np.full(n, np.inf)
-            # an effort of 0 (or none) in a URDF states no limit: an actuated joint with no torque is not one
-            effort = np.array(limits.effort, float)
-            return np.where(effort > 0, effort, np.inf)
-        try:
-            arr = np.broadcast_to(np.asarray(value, dtype=float), (n,)).copy()
-        except (TypeError, ValueError):
-            arr = np.full(n, np.nan)
-        if isinstance(value, (str, bool)) or np.isnan(arr).any() or (arr <= 0).any():
-            urdf = "'urdf' (the URDF's effort limits), " if name == "torque_limit" else ""
-            raise HybridError(f"{name} = {value!r:.60}; give {urdf}None (no limit), one number > 0 [N m or N"
-                              f"{' per sample' if name != 'torque_limit' else ''}] or {n} of them (one per joint)")
-        return arr
-
-    def _gain_array(self) -> np.ndarray:
-        """``(KP, KI, KI2, KD)`` per axis, as the generated step reads them."""
-        rows = [{"KP": g.KPf, "KI": g.KIf, "KI2": 0.0, "KD": g.KDf} if s else
-                {"KP": g.KPv, "KI": g.KIv, "KI2": g.KI2v, "KD": 0.0} for g, s in zip(self.gains, self.selection)]
-        return np.array([[row[k] for k in LOOP_GAINS] for row in rows], float).ravel()
-
-    def _axis_references(self, force, velocity) -> list[Reference]:
-        refs: list = [0.0] * len(self.axes)
-        if force is None:  # the default: 10 N on the normal, if it is force-controlled
-            force = {"n": 10.0} if 2 in self.axes and self.selection[self.axes.index(2)] else {}
-        if velocity is None:
-            velocity = {}
-        for what, given, force_axes in (("force_reference", force, True), ("velocity_reference", velocity, False)):
-            if isinstance(given, Mapping):
-                items = {self._axis(what, k): v for k, v in given.items()}
-            else:
-                main = 2 if force_axes else 0  # the normal force, the speed along t1
-                items = {self.axes.index(main): given} if main in self.axes else {}
-            for k, v in items.items():
-                if bool(self.selection[k]) != force_axes:
-                    kind = "force" if force_axes else "velocity"
-                    raise HybridError(f"{what} names axis {self.axis_names[k]}, which is not a {kind}-controlled "
-                                      f"axis (selection: {self._selected()}); move it to the other reference")
-                refs[k] = Reference.of(f"{what}[{self.axis_names[k]}]", v)
-        return [Reference.of("reference", r) for r in refs]
-
-    def _selected(self) -> str:
-        return ", ".join(n for n, s in zip(self.axis_names, self.selection) if s) or "none"
-
     # ------------------------------------------------------------------ running
 
     def reset(self, torque=None) -> None:
         """A new run: the loops' integrals zero, no last sample (the next one is on time whenever it
-        comes). ``torque`` [N m or N, one per joint], when given, is the torque the arm has now: the
-        first sample's torque is then rate-limited from it (``torque_step_limit``)."""
+        comes), the fault reaction's state zero (it ends the safe state). ``torque`` [N m or N, one per
+        joint], when given, is the torque the arm has now: the first sample's torque is then rate-limited
+        from it (``torque_step_limit``)."""
         for name in ("integrals", "last_torque", *_ADVANCED):
             self._held[self._at[name]][:] = 0.0
+        self._fault.reset()
         self._sampled = False
         self._clock = None
         if torque is not None:
@@ -524,10 +446,74 @@ class Controller:
         wrench on the robot ``Fc`` (base axes: force [N] of 2 or 3 entries, or force and moment, 6);
         advances the integrals by one sample.
 
-        A sample the law cannot serve raises and changes nothing (the integrals, the last torque, the
-        filter, the estimate, the sample clock): :class:`HybridError` for a bad input,
-        :class:`SingularConfigurationError` or :class:`TaskFrameError` where the law fails;
-        :class:`SampleTimingError` off the sample clock (see ``timing_tolerance``)."""
+        A sample the law cannot serve raises and changes nothing but the fault reaction's count (the
+        integrals, the last torque, the filter, the estimate, the sample clock stay): :class:`HybridError`
+        for a bad input, :class:`SingularConfigurationError` or :class:`TaskFrameError` where the law
+        fails; :class:`SampleTimingError` off the sample clock (see ``timing_tolerance``). Every error a
+        sample raises carries ``torque``, what to apply. After the ``fault_reaction``'s
+        ``fault_samples`` consecutive faulted samples (refused, late or early) every sample raises
+        :class:`SafeStopError` until :meth:`reset`, its torque the safe state's
+        (:mod:`hybrid.control.fault`)."""
+        passed = time_passed(t, self._clock)
+        if self._fault.stopped:
+            raise self._safe_sample(t, q, qdot, passed, "the safe state holds until reset()")
+        try:
+            tau = self._serve(t, q, qdot, Fc)
+        except HybridError as exc:
+            timing = getattr(exc, "status", None)
+            if timing in HELD_STATUSES:  # no time passed: no fault of its own
+                raise
+            if isinstance(exc, SampleTimingError):  # served, off time
+                self._fault.served(q, on_time=False)
+            if not hasattr(exc, "torque"):
+                exc.torque = self._last[:-1] * self._last[-1]
+            if self._fault.faulted(passed, self.fault_reaction, self._last[:-1] * self._last[-1], q, qdot):
+                raise self._safe_sample(t, q, qdot, passed, str(exc).partition("\n")[0]) from exc
+            raise
+        self._fault.served(q, on_time=True)
+        return tau
+
+    @property
+    def fault_reaction(self) -> FaultReaction:
+        """The fault reaction's numbers (fixed: the step reads them)."""
+        return self._fault_reaction
+
+    @property
+    def stopped(self) -> bool:
+        """Whether the step is in its safe state (after the ``fault_reaction``'s consecutive faulted samples;
+        until :meth:`reset`)."""
+        return self._fault.stopped
+
+    @property
+    def fault_state(self) -> np.ndarray:
+        """The fault reaction's state (:data:`hybrid.spec.controller_step.FAULT_STATE`, as the standalone
+        C's ``fault_state``; a copy)."""
+        return self._fault.state.copy()
+
+    def _safe_sample(self, t, q, qdot, passed: bool, cause: str):
+        """One sample of the safe state: the :class:`SafeStopError` carrying its torque."""
+        if self._binding is None:
+            self._native()
+        error = self._fault.safe_sample(self._stop, q, qdot, self._last, dict(zip(PARAMETERS, self._params)),
+                                        passed, cause)
+        if passed:
+            self._tick_finite(t)
+        return error
+
+    def _tick_finite(self, t) -> None:
+        """The clock follows a forward ``t`` that is a finite number (the safe state's samples)."""
+        if not time_passed(t, self._clock) or isinstance(t, (bool, np.bool_)) or \
+                not isinstance(t, (int, float, np.integer, np.floating)):
+            return
+        try:
+            value = float(t)
+        except OverflowError:
+            return
+        if _isfinite(value):
+            self._tick(value)
+
+    def _serve(self, t, q, qdot, Fc) -> np.ndarray:
+        """One sample served by the law, or refused (:meth:`__call__`)."""
         if type(Fc) is not np.ndarray or Fc.shape != (6,):
             Fc = self._padded(Fc)
         if type(t) is not float and (isinstance(t, (str, bytes, bool, np.bool_))

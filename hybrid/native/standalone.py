@@ -66,9 +66,10 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
     def make() -> dict[str, str]:
         api = generator.api()
         step = {k.name: k for k in api.controller_kernels(variant["chain"], spec, axes, **compiled_in)}[variant["step"]]
+        stop = api.safe_stop_kernel(variant["chain"])
         what = (f"the hybrid force/velocity controller ({ctrl.scheme.name} scheme) of the {ctrl.robot.n}-joint arm "
                 f"'{variant['name']}' on a {spec.kind}, task axes {', '.join(ctrl.axis_names)}")
-        return api.build_standalone_controller(step, prefix, what, info, values, stem).files
+        return api.build_standalone_controller(step, stop, prefix, what, info, values, stem).files
 
     folder = cache.generated_unit(stem, key, make)
     return {n: (folder / n).read_text() for n in (f"{stem}.c", f"{stem}.h", f"{stem}.json")}

@@ -186,7 +186,7 @@ def loop_spec(plant, variant: dict):
     steps = {k.name: k for k in api.controller_kernels(
         v["chain"], v["spec"], v["axes"], v["desired_frame"], v["position_error"], v["wrench_sensor"])}
     rhs, outputs, force = plant.kernels(api)
-    return api.LoopSpec(rhs, outputs, steps[v["step"]], force)
+    return api.LoopSpec(rhs, outputs, steps[v["step"]], force, api.safe_stop_kernel(v["chain"]))
 
 
 def _build_loop(prefix: str, plant, v: dict, lanes: int | None):

@@ -32,6 +32,10 @@ class Sensor:
     delay_samples : the reading reaches the controller this many control samples late (a whole
         number >= 0).
     seed : the noise's seed: the same seed, the same noise, run after run.
+    dropout_at, dropout_duration : [s] the reading the controller gets is NaN from ``dropout_at`` for
+        ``dropout_duration`` (a dropped sensor, a cut cable), samples the controller refuses: its fault
+        reaction acts (:mod:`hybrid.control.fault`), and the run applies the torque each faulted
+        sample's error carries, as a real arm's loop does. ``dropout_duration`` 0 (the default): none.
 
     With every signal option off (the defaults) the controller gets the spring-damper's force itself,
     as before these options existed, bit for bit.
@@ -46,6 +50,8 @@ class Sensor:
     bandwidth_hz: float | None = None         # first-order lag [Hz]
     delay_samples: int = 0                    # whole control samples
     seed: int = 0
+    dropout_at: float = 0.0
+    dropout_duration: float = 0.0
 
     def __post_init__(self):
         _finite("Sensor", mass=self.mass, stiffness=self.stiffness, damping=self.damping)
@@ -75,12 +81,32 @@ class Sensor:
         if not _real(s) or not math.isfinite(s) or s != int(s) or s < 0:
             raise HybridError(f"Sensor seed = {s!r:.40}; give a whole number >= 0")
         object.__setattr__(self, "seed", int(s))
+        for name in ("dropout_at", "dropout_duration"):
+            v = getattr(self, name)
+            if not _real(v) or not math.isfinite(v) or v < 0:
+                raise HybridError(f"Sensor {name} = {v!r:.40}; give a time >= 0 [s]")
+            object.__setattr__(self, name, float(v))
+
+    @property
+    def clean(self) -> bool:
+        """True when the reading, where it is not lost (a dropout), is the spring-damper's force itself:
+        no noise, bias, lag or delay."""
+        return (self.force_noise == 0 and self.moment_noise == 0 and not any(self.bias) and self.bandwidth_hz is None
+                and self.delay_samples == 0)
 
     @property
     def ideal(self) -> bool:
-        """True when the reading is the spring-damper's force itself: no noise, bias, lag or delay."""
-        return (self.force_noise == 0 and self.moment_noise == 0 and not any(self.bias) and self.bandwidth_hz is None
-                and self.delay_samples == 0)
+        """True when the reading is the spring-damper's force itself: no noise, bias, lag, delay or dropout."""
+        return self.clean and not self.drops_out
+
+    def dropped(self, t: float) -> bool:
+        """Whether the reading at ``t`` [s] is lost (``dropout_at``, ``dropout_duration``)."""
+        return self.dropout_at <= t < self.dropout_at + self.dropout_duration
+
+    @property
+    def drops_out(self) -> bool:
+        """Whether the reading is lost some time in a run."""
+        return self.dropout_duration > 0
 
     def check_sampling(self, sample_time: float) -> None:
         """Refuse a lag whose corner frequency is at or above the Nyquist frequency of ``sample_time`` [s]."""

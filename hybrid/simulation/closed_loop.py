@@ -118,12 +118,13 @@ def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None, ctrl=No
     ``simulate`` makes of the settings (a refused experiment raises their HybridError; the record's
     memory is ``simulate``'s to check: a sweep keeps none); None when it cannot run there: part of its
     controller runs in Python, or its sensor's signal is not the sensor's force itself (noise, bias, lag,
-    delay: :mod:`hybrid.simulation.sensing`). A given start state ``x0`` is the caller's, checked
+    delay: :mod:`hybrid.simulation.sensing`; a dropout runs here, the loop's fault reaction as the
+    controller's). A given start state ``x0`` is the caller's, checked
     (``simulate`` passes its own). ``lanes=1`` prepares the build for one run at a time (a run alone;
     only what it needs is compiled), else the lanes build. ``ctrl``: the experiment's controller, when
     built already (it is read, not run)."""
     ctrl = ctrl or exp.build_controller()
-    if not ctrl.runs_in_c or not exp.sensor.ideal:
+    if not ctrl.runs_in_c or not exp.sensor.clean:
         return None
     if x0 is None:
         x0 = exp.initial_state()
@@ -134,7 +135,11 @@ def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None, ctrl=No
     if loop is None:
         return None
     fs, vs = exp.force_reference, exp.speed_reference
+    sensor = exp.sensor
+    start = sensor.dropout_at if sensor.drops_out else np.inf
     values = {"x0": x0, "force_step": (fs.before, fs.after, fs.at), "speed_step": (vs.before, vs.after, vs.at),
+              "dropout": (start, start + sensor.dropout_duration),
+              "timing_tolerance": -1.0 if ctrl.timing_tolerance is None else ctrl.timing_tolerance,
               **given, **{f"controller.{k}": v for k, v in ctrl.step_inputs().items()}}
     settings = (exp.n_samples, exp.steps_per_sample, exp.integration_step, exp.sample_time, exp.singular_tol)
     return Prepared(exp, loop, settings, loop.row(values))

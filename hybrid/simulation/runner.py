@@ -90,7 +90,9 @@ def _compiled_or_run(exp, plant, x0: np.ndarray, compiled: bool = True) -> Simul
 
 def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
     """Run ``exp`` from the state ``x0`` with ``plant`` (see :mod:`hybrid.plants`) and
-    ``tau = controller(t, q, qdot, Fc)`` under zero-order hold."""
+    ``tau = controller(t, q, qdot, Fc)`` under zero-order hold. Where the sensor drops out
+    (``Sensor.dropout_duration``), the torque each faulted sample's error carries is applied (as a real arm's
+    loop does: the controller's fault reaction), elsewhere an error ends the run."""
     check_memory(exp, plant.record)
     x = np.array(x0, dtype=float)
     m, n_samples = exp.steps_per_sample, exp.n_samples
@@ -110,7 +112,8 @@ def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
         # the sensor's reading: its spring and damper between arm tip and sensor tip
         Fc = read(x)
         try:
-            tau = np.ascontiguousarray(controller(t, q, qdot, Fc), dtype=float)
+            tau = np.ascontiguousarray(_applied(controller, t, q, qdot, Fc, exp.sensor.drops_out),
+                                       dtype=float)
             if not np.isfinite(tau).all():
                 raise NonFiniteError(f"the controller's torque is {tau.tolist()} N m")
         except HybridError as exc:
@@ -130,6 +133,17 @@ def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
             last = 1 + k * m + done
             raise _divergence(_result(exp, plant, states[:last], taus[:last], False), plant, t, q, qdot, tau, x)
     return _result(exp, plant, states, taus, True, normals)
+
+
+def _applied(controller, t: float, q, qdot, Fc, faults: bool):
+    """The controller's torque at a sample; where ``faults`` are injected, a faulted sample's too (the torque
+    its error carries, as a real arm's loop applies it)."""
+    try:
+        return controller(t, q, qdot, Fc)
+    except HybridError as exc:
+        if not faults or getattr(exc, "torque", None) is None:
+            raise
+        return exc.torque
 
 
 def _divergence(partial: SimulationResult, plant, t: float, q, qdot, tau, x) -> SimulationError:

@@ -14,7 +14,10 @@ tip (base axes). The controller is given
 3. ``m_k = y_k + b + sigma * n_k``: the bias ``b`` and white Gaussian noise, ``n_k`` standard normal per
    component from the seeded generator, ``sigma`` the force's standard deviation on the force
    components and the moment's on the moments;
-4. the delay: at sample ``k`` the controller gets ``m_max(k - d, 0)``.
+4. the delay: at sample ``k`` the controller gets ``m_max(k - d, 0)``;
+5. a dropout: from the sensor's ``dropout_at`` for ``dropout_duration`` (``k T`` in that window) the
+   controller gets NaN, which it refuses: its fault reaction acts, and the run applies each faulted
+   sample's torque.
 
 :class:`SensorSignal` is steps 2-4 on any sequence of readings; :func:`plant_reader` builds the whole
 chain for an experiment's runs, or says there is none (the controller then gets ``F_k`` as before).
@@ -47,6 +50,7 @@ class SensorSignal:
         self.scale = np.repeat([sensor.force_noise, sensor.moment_noise], 3)
         self.delay = sensor.delay_samples
         self._noisy = bool(self.scale.any())
+        self._sensor, self._T, self._k = sensor, sample_time, 0
         self._rng = np.random.default_rng(sensor.seed)
         self._lagged: np.ndarray | None = None
         self._line: deque = deque()
@@ -63,7 +67,8 @@ class SensorSignal:
         self._line.append(m)
         if len(self._line) > self.delay + 1:
             self._line.popleft()
-        return self._line[0].copy()
+        t, self._k = self._k * self._T, self._k + 1
+        return np.full(6, np.nan) if self._sensor.dropped(t) else self._line[0].copy()
 
 
 def plant_reader(exp, plant):

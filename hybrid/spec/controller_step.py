@@ -9,7 +9,12 @@ output ``<name>_next``, or from ``tau`` for ``last_torque``) and the references 
 (:data:`~hybrid.spec.interfaces.PARAMETER`).
 
 Arrays of mixed numbers have their layouts here: :data:`LOOP_GAINS`, :data:`OPTIONS` (with
-:data:`OPTION_DOCS`), :data:`POSTURE`, :data:`LIMITS`, :data:`SENSOR` and :data:`ESTIMATE`.
+:data:`OPTION_DOCS`), :data:`POSTURE`, :data:`LIMITS`, :data:`SENSOR`, :data:`ESTIMATE`, :data:`FAULT` (with
+:data:`FAULT_DOCS`) and :data:`FAULT_STATE`.
+
+:data:`SAFE_STOP` is the step's fault reaction: the torque of its safe state (conventions, "The fault
+reaction"), which the standalone C and the :class:`hybrid.Controller` apply after :data:`FAULT`'s
+``fault_samples`` consecutive faulted samples, until a reset.
 """
 
 from __future__ import annotations
@@ -63,6 +68,23 @@ SENSOR_CHECKS = ("finite",) * 13 + ("nonnegative",) + ("finite",) * 9 + ("below_
 #: Controller's attributes), and what each may be: the timing check's tolerance (-1: no check) and the
 #: least conditioning of the task Jacobian
 SETTING_CHECKS = {"timing_tolerance": "fraction_or_off", "singular_tol": "fraction"}
+#: the fault reaction's numbers (the ``fault`` array): how many consecutive faulted samples enter the safe
+#: state, the joints' stopping time constant in it, the time over which it releases the torque the arm had
+FAULT = ("fault_samples", "stop_time", "unload_time")
+#: what each of the fault reaction's numbers means (the standalone header documents its fields with these)
+FAULT_DOCS = {
+    "fault_samples": "consecutive faulted samples (refused, late or early) that enter the safe state [1]",
+    "stop_time": "the safe state's time constant: the joints stop and hold, critically damped [s]",
+    "unload_time": "the safe state releases the torque the arm had at the fault over this time [s]; 0: at once",
+}
+#: their defaults: 5 samples (5 ms at 1 kHz, 50 ms at 100 Hz), a 50 ms stop, the torque released over 0.2 s
+FAULT_DEFAULTS = (5.0, 0.05, 0.2)
+#: what each may be: a whole number of samples >= 1, a time > 0, a time >= 0
+FAULT_CHECKS = ("count", "positive", "nonnegative")
+#: the fault reaction's state: the torque at the safe state's entry, the last finite joint positions, the
+#: positions the safe state holds (where the joints' velocities at its entry, decaying with ``stop_time``,
+#: bring them), the consecutive faulted samples, 1 in the safe state, the samples since its entry
+FAULT_STATE = PerJoint(("tau_entry", "q_hold", "q_stop"), tail=("faults", "stopped", "samples"))
 #: the estimator's state: the normal estimate, its rate, the last force, 1 once started
 ESTIMATE = ("n_x", "n_y", "n_z", "ndot_x", "ndot_y", "ndot_z", "F_x", "F_y", "F_z", "started")
 #: a wrench's six numbers: force, then moment
@@ -113,6 +135,8 @@ CONTROLLER_STEP = Interface(
              "the torque limits (LIMITS)", PARAMETER, PerJoint(LIMITS), default=NO_LIMIT, check="nonnegative"),
         Port("sensor", f"{len(SENSOR)}", "m, 1, 1, kg, m, N and N m, Hz, 1 (see hybrid/control/wrench_sensor.py)",
              "the force/torque sensor's numbers (SENSOR)", PARAMETER, SENSOR, default=0.0, check=SENSOR_CHECKS),
+        Port("fault", f"{len(FAULT)}", "1, s, s", "the fault reaction's numbers (FAULT)", PARAMETER, FAULT,
+             default=FAULT_DEFAULTS, check=FAULT_CHECKS),
     ),
     outputs=(
         Port("tau", "nq", "N m or N", "the joint torques, within the limits"),
@@ -133,3 +157,31 @@ CONTROLLER_STEP = Interface(
 #: the step's state inputs and the outputs that carry them to the next sample
 STATE_NEXT = {"integrals": "integrals_next", "last_torque": "tau", "filter": "filter_next",
               "estimate": "estimate_next"}
+
+#: the torque of the safe state (the fault reaction): the arm stopped and held at ``q_stop`` (the inverse
+#: dynamics of its model for a critically damped hold of time constant ``stop_time``) and the torque it had
+#: at the fault's entry ``tau_entry`` released linearly over ``unload_time``, within the torque limits. The
+#: caller gives the joint positions (the last finite ones where the sample's are not) and velocities (0
+#: where not finite)
+SAFE_STOP = Interface(
+    "safe_stop",
+    inputs=(
+        Port("q", "nq", "rad or m", "joint positions (the last finite ones)", ARGUMENT, Named("joints")),
+        Port("qd", "nq", "rad/s or m/s", "joint velocities (0 where not finite)", ARGUMENT, Named("joints")),
+        Port("last_torque", "nq+1", "N m or N, then 1", "the torque last written, and 1 once there is one",
+             STATE, PerJoint(("tau",), tail=("started",))),
+        Port("fault_state", "3*nq+3", "N m or N, then rad or m (twice), then 1, 1, 1", "the fault reaction's state "
+             "(FAULT_STATE)", STATE, FAULT_STATE),
+        Port("robot", "robot", "per parameter", "the controller's model of the arm", PARAMETER, Named("robot"),
+             check="finite"),
+        Port("fault", f"{len(FAULT)}", "1, s, s", "the fault reaction's numbers (FAULT)", PARAMETER, FAULT,
+             default=FAULT_DEFAULTS, check=FAULT_CHECKS),
+        Port("limits", "2*nq", "per joint: N m or N (tau_max), then N m or N per sample (rate_max); DBL_MAX: none",
+             "the torque limits (LIMITS)", PARAMETER, PerJoint(LIMITS), default=NO_LIMIT, check="nonnegative"),
+        Port("sample_time", "1", "s", "the sample period T", PARAMETER, check="positive"),
+    ),
+    outputs=(
+        Port("tau", "nq", "N m or N", "the safe state's joint torques, within the limits"),
+    ),
+    doc="the safe state's torque: stop and hold by the model's inverse dynamics, release the entry torque",
+)

@@ -100,6 +100,12 @@ class Check:
 
 #: the largest finite double: ``|x| <= DBL_MAX`` is false for infinities and NaN alike
 _DBL_MAX = 1.7976931348623157e308
+
+
+def _floor(x):
+    """``floor(x)`` of a number or an array without NumPy (the generator imports none): NaN stays NaN."""
+    return x - x % 1
+
 #: every check of a parameter's values, by name
 CHECKS = {c.name: c for c in (
     Check("finite", "a finite number", "isfinite(x)", lambda x, T: abs(x) <= _DBL_MAX),
@@ -110,6 +116,8 @@ CHECKS = {c.name: c for c in (
     Check("fraction", "a number in [0, 1)", "(x >= 0.0 && x < 1.0)", lambda x, T: (x >= 0) & (x < 1)),
     Check("fraction_or_off", "a number in [0, 1), or -1: no check", "(x == -1.0 || (x >= 0.0 && x < 1.0))",
           lambda x, T: (x == -1) | ((x >= 0) & (x < 1))),
+    Check("count", "a whole number >= 1 (at most 1e9)", "(x >= 1.0 && x <= 1e9 && x == floor(x))",
+          lambda x, T: (x >= 1) & (x <= 1e9) & (x == _floor(x))),
     Check("below_nyquist", "a frequency >= 0 below the Nyquist frequency 0.5 / sample_time (0: off)",
           "(x >= 0.0 && x < 0.5 / T)", lambda x, T: (x >= 0) & (x < 0.5 / T)),
 )}
@@ -217,6 +225,9 @@ STATUSES = (
     Status("PARAMETER_INVALID", 10, "a run-time parameter is not a value its check allows (a NaN, a negative "
                                     "limit or tolerance, a filter cutoff at or above Nyquist) or the sample "
                                     "clock is not finite; tau is the torque last written, nothing changed"),
+    Status("SAFE_STOP", 11, "the step is in its safe state after fault_samples consecutive faulted samples, until "
+                            "a reset: tau stops the arm and holds it (its model's inverse dynamics, time "
+                            "constant stop_time) and releases the torque it had over unload_time"),
 )
 STATUS_CODES = {s.name: s.code for s in STATUSES}
 STATUS_NAMES = {s.code: s.name for s in STATUSES}

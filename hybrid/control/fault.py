@@ -1,0 +1,158 @@
+"""The control step's fault reaction: a safe state after consecutive faulted samples, until a reset.
+
+A real arm's controller must not serve a fault for ever: holding the last torque through a long sensor
+dropout lifts the tool off and brings it back with an impact. :class:`FaultReaction` holds the numbers
+of the reaction (:data:`hybrid.spec.controller_step.FAULT`): after ``fault_samples`` consecutive faulted
+samples (refused: a bad input or parameter, the law failing; or served off time: late, early) the step
+enters its safe state and stays there until ``reset``. The safe state (``codegen.safe_stop``, the same
+compiled kernel in C and Python) holds the arm with its model's inverse dynamics for a deceleration of
+every joint with the time constant ``stop_time`` (gravity, the velocity terms and the joints'
+viscosity compensated) and releases the torque the arm had at the fault linearly over
+``unload_time``, within the torque limits: a controlled stop with the drives on (IEC 60204-1's stop
+category 2, as an industrial arm's protective stop), neither a fall (power off) nor a clamp at the
+force the tool had (a brake); the contact force decays at a bounded rate.
+
+A sample at which no time passed (repeated, or before the last) is no fault of its own: it counts
+nothing. A sample the law serves on time ends a count.
+
+:class:`FaultMonitor` is that bookkeeping for :class:`hybrid.Controller` (the standalone C's step does
+the same in its struct's ``fault_state``, element for element).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from math import isfinite
+
+import numpy as np
+
+from hybrid.errors import HybridError, SafeStopError
+from hybrid.spec.controller_step import FAULT, FAULT_DEFAULTS, FAULT_STATE, OPTIONS
+from hybrid.spec.interfaces import CHECKS, Dims
+
+
+@dataclass(frozen=True)
+class FaultReaction:
+    """The fault reaction's numbers (module docstring).
+
+    Parameters
+    ----------
+    fault_samples : consecutive faulted samples that enter the safe state (a whole number >= 1).
+    stop_time : [s] > 0, the joints' velocities decay as ``q'' = -q' / stop_time`` in the safe state.
+    unload_time : [s] >= 0, the torque the arm had at the fault is released over it (0: at once).
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> hybrid.FaultReaction(fault_samples=3).as_array().tolist()
+    [3.0, 0.05, 0.2]
+    """
+
+    fault_samples: int = int(FAULT_DEFAULTS[0])
+    stop_time: float = FAULT_DEFAULTS[1]
+    unload_time: float = FAULT_DEFAULTS[2]
+
+    def __post_init__(self):
+        checks = dict(zip(FAULT, ("count", "positive", "nonnegative")))
+        for name in FAULT:
+            value = getattr(self, name)
+            number = not isinstance(value, (bool, np.bool_)) and isinstance(value, (int, float, np.integer,
+                                                                                     np.floating))
+            if not number or not CHECKS[checks[name]].valid(float(value), 1.0):
+                raise HybridError(f"FaultReaction {name} = {value!r:.40}; give {CHECKS[checks[name]].meaning}")
+            object.__setattr__(self, name, int(value) if name == "fault_samples" else float(value))
+
+    def as_array(self) -> np.ndarray:
+        """The numbers as the step reads them (:data:`~hybrid.spec.controller_step.FAULT`)."""
+        return np.array([float(getattr(self, name)) for name in FAULT])
+
+
+class FaultMonitor:
+    """The fault reaction's state for a controller of ``dims``' joints: ``state`` is
+    :data:`~hybrid.spec.controller_step.FAULT_STATE` (the torque at the entry, the last finite joint
+    positions, the consecutive faulted samples, 1 in the safe state, the samples since its entry)."""
+
+    def __init__(self, dims: Dims):
+        names = FAULT_STATE.names(dims)
+        self.n = len(dims.joints)
+        self.state = np.zeros(len(names))
+        self._faults, self._stopped, self._samples = (names.index(k) for k in FAULT_STATE.tail)
+
+    def reset(self) -> None:
+        self.state[:] = 0.0
+
+    @property
+    def stopped(self) -> bool:
+        return bool(self.state[self._stopped])
+
+    @property
+    def faults(self) -> int:
+        return int(self.state[self._faults])
+
+    def served(self, q, on_time: bool) -> None:
+        """A sample the law served: its ``q`` kept; on time, the count ends."""
+        self._hold(q)
+        if on_time:
+            self.state[self._faults] = 0.0
+
+    def faulted(self, passed: bool, reaction: FaultReaction, torque: np.ndarray, q, qdot) -> bool:
+        """A faulted sample at ``q, qdot`` (counted when time ``passed``); True when it enters the safe
+        state: the torque the arm has (``torque``) is then released from here, and the arm stops where its
+        velocities, decaying with ``stop_time``, bring it."""
+        if passed:
+            self.state[self._faults] += 1.0
+        if self.state[self._faults] < reaction.fault_samples:
+            return False
+        n = self.n
+        q_now = _finite_vector(q, n)
+        qd_now = _finite_vector(qdot, n) if q_now is not None else None
+        self.state[2 * n:3 * n] = (self.state[n:2 * n] if q_now is None else q_now) \
+            + (0.0 if qd_now is None else reaction.stop_time * qd_now)
+        self.state[:n] = torque
+        self.state[self._stopped], self.state[self._samples] = 1.0, 0.0
+        return True
+
+    def safe_sample(self, stop, q, qdot, last: np.ndarray, parameters: dict, passed: bool, cause: str):
+        """One sample of the safe state: the error carrying its torque (the ``safe_stop`` kernel ``stop``
+        at ``q``, or the last finite positions, and ``qdot``, or 0, from the ``parameters`` by name); the
+        last torque ``last`` (the step's state) becomes it."""
+        q_now = _finite_vector(q, self.n)
+        qd_now = _finite_vector(qdot, self.n) if q_now is not None else None
+        qs = self.state[self.n:2 * self.n] if q_now is None else q_now
+        qds = np.zeros(self.n) if qd_now is None else qd_now
+        T = parameters["options"][OPTIONS.index("sample_time")]
+        try:
+            tau = np.asarray(stop(qs, qds, last, self.state, parameters["robot"], parameters["fault"],
+                                  parameters["limits"], np.array([T]))["tau"], float).ravel().copy()
+        except HybridError:  # the model gives no torque: the torque last written
+            tau = last[:-1] * last[-1]
+        last[:-1], last[-1] = tau, 1.0
+        if passed:
+            self.state[self._samples] += 1.0
+            self._hold(q)
+        return SafeStopError(tau.copy(), self.faults, cause)
+
+    def _hold(self, q) -> None:
+        got = _finite_vector(q, self.n)
+        if got is not None:
+            self.state[self.n:2 * self.n] = got
+
+
+def time_passed(t, clock: float | None) -> bool:
+    """Whether time passed at a sample at ``t`` since the last served at ``clock``: not at a ``t`` at or
+    before it (one that is not a finite number cannot tell)."""
+    if clock is None or isinstance(t, (bool, np.bool_)) or not isinstance(t, (int, float, np.integer, np.floating)):
+        return True
+    try:
+        t = float(t)
+    except OverflowError:
+        return True
+    return not (isfinite(t) and t <= clock)
+
+
+def _finite_vector(v, n: int) -> np.ndarray | None:
+    try:
+        arr = np.asarray(v, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        return None
+    return arr.copy() if arr.shape == (n,) and np.isfinite(arr).all() else None
