@@ -33,8 +33,9 @@ def status_error(status: int, where: str, singular_hint: str = "", **inputs) -> 
             f"pose, or lower singular_tol{shown}")
     if name == "FRAME_UNDEFINED":
         return TaskFrameError(
-            f"{where}: the task frame is undefined: its direction e is parallel to the surface normal there; "
-            f"choose another frame_direction (decoupling_law(..., frame_direction=...)){shown}")
+            f"{where}: the task frame is undefined: its direction e is parallel to the surface normal there, or the "
+            "surface has no normal there (grad phi vanishes or phi is undefined); choose another frame_direction "
+            f"or point{shown}")
     if name == "EULER_SINGULAR":
         return SingularConfigurationError(
             f"{where}: the ZYX Euler angles are singular (beta = +-pi/2, cos beta = 0); use coordinates='twist' "
