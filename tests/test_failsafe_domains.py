@@ -68,3 +68,101 @@ def test_the_compiled_step_names_a_missing_normal_at_the_tip(ur5, kind):
         ctrl(0.0, Q, np.zeros(6), np.zeros(6))
     assert ctrl.last is None
     ctrl(0.0, Q + 0.01, np.zeros(6), np.zeros(6))  # a pose 10 mrad away is served
+
+
+# ---------------------------------------------------------------- values nested thousands deep
+
+
+def _nested(depth: int, leaf=1.0, key="n") -> dict:
+    """``{key: {key: ... leaf}}``, ``depth`` mappings deep (built without recursion)."""
+    value = leaf
+    for _ in range(depth):
+        value = {key: value}
+    return value
+
+
+DEEP = _nested(5000)
+DEEP_LIST = [1.0]
+for _ in range(5000):
+    DEEP_LIST = [DEEP_LIST]
+
+
+SPHERE = hybrid.Sphere((0.5, 0.0, 0.2), 0.15)
+
+
+def _refused_in_a_short_line(make, accepted: bool = False) -> None:
+    """``make()`` raises a HybridError whose first line is short (or, ``accepted``, raises nothing)."""
+    try:
+        make()
+    except hybrid.HybridError as exc:
+        first = str(exc).splitlines()[0]
+        assert len(first) < 300, first
+    else:
+        assert accepted, "no error"
+
+
+@pytest.mark.parametrize("make", [
+    lambda: hybrid.Controller(hybrid.ur5(), SPHERE, gains=DEEP),
+    lambda: hybrid.Controller(hybrid.ur5(), SPHERE, gains={"n": DEEP}),
+    lambda: hybrid.tracing_experiment(gains=DEEP),
+    lambda: hybrid.paper_experiment(gains=DEEP),
+    lambda: hybrid.paper_experiment(KPv=DEEP),
+    lambda: hybrid.task_frame(SPHERE, (0.5, 0.0, 0.4), (0.0, 0.0, 0.0), frame_direction=DEEP),
+], ids=["gains", "gains per axis", "tracing gains", "paper gains", "one gain", "frame_direction"])
+def test_gains_nested_thousands_deep_are_refused_in_a_short_line(make):
+    _refused_in_a_short_line(make)
+
+
+def _keywords(make) -> list[str]:
+    import inspect
+
+    return [n for n, p in inspect.signature(make).parameters.items()
+            if p.kind is p.KEYWORD_ONLY or (p.default is not p.empty and n != "self")]
+
+
+@pytest.mark.parametrize("deep", [DEEP, DEEP_LIST], ids=["mapping", "list"])
+def test_every_setting_nested_thousands_deep_is_refused_in_a_short_line(deep):
+    """Every setting of an experiment, a Controller and the settings' classes, given a mapping or a
+    list nested 5000 deep: a HybridError, its first line short, never a RecursionError (a Controller
+    reads a mapping's keys as the axes ``selection`` names, and calls ``path`` only at a sample)."""
+    import dataclasses
+
+    for name in [f.name for f in dataclasses.fields(hybrid.Experiment)]:
+        _refused_in_a_short_line(lambda name=name: hybrid.tracing_experiment(**{name: deep}))
+    for name in _keywords(hybrid.Controller.__init__):
+        _refused_in_a_short_line(lambda name=name: hybrid.Controller(hybrid.ur5(), SPHERE, **{name: deep}),
+                                 accepted=name in ("selection", "path"))
+    _refused_in_a_short_line(lambda: hybrid.Controller(hybrid.ur5(), deep))
+    for cls in (hybrid.Sensor, hybrid.Contact, hybrid.Gains, hybrid.Posture, hybrid.ContactLoss,
+                hybrid.WrenchSensor, hybrid.EstimatedSurface, hybrid.Step):
+        for f in dataclasses.fields(cls):
+            # the class's own fields given, the one under test nested: a missing one is not the point
+            values = {g.name: deep if g.name == f.name else _a_valid(cls, g) for g in dataclasses.fields(cls)}
+            _refused_in_a_short_line(lambda cls=cls, values=values: cls(**values))
+
+
+def _a_valid(cls, field):
+    """A valid value of ``cls``'s ``field``: its default, or the example the class takes."""
+    import dataclasses
+
+    if field.default is not dataclasses.MISSING:
+        return field.default
+    if field.default_factory is not dataclasses.MISSING:
+        return field.default_factory()
+    return {("Posture", "q_rest"): (0.0,) * 6, ("Step", "before"): 1.0, ("Step", "after"): 2.0,
+            ("Step", "at"): 0.5, ("ContactLoss", "threshold"): 1.0}[(cls.__name__, field.name)]
+
+
+def test_messages_show_values_through_the_bounded_repr():
+    """``{value!r:.60}`` builds the whole repr before cutting it (recursing as deep as the value is nested,
+    as long as it is long): every message shows a value through ``hybrid.validate.shown``."""
+    import ast
+    from pathlib import Path
+
+    root = Path(hybrid.__file__).parent
+    found = []
+    for path in sorted(root.rglob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.FormattedValue) and node.conversion == ord("r") and node.format_spec:
+                found.append(f"{path.relative_to(root.parent)}:{node.lineno}")
+    assert not found, found

@@ -233,7 +233,7 @@ def _build(node, args: list, symbols: dict, refuse) -> sp.Expr:
         refuse(f"the name {node.id!r} (not x, y, z, a parameter, a known function or pi, E)")
     value = node.value
     if not isinstance(value, (int, float)) or isinstance(value, bool) or not abs(value) < 1e300:
-        refuse(f"the constant {value!r:.30}")
+        refuse(f"the constant {shown(value, 30)}")
     return sp.Integer(value) if isinstance(value, int) else sp.Float(value)
 
 
