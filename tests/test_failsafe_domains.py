@@ -70,6 +70,68 @@ def test_the_compiled_step_names_a_missing_normal_at_the_tip(ur5, kind):
     ctrl(0.0, Q + 0.01, np.zeros(6), np.zeros(6))  # a pose 10 mrad away is served
 
 
+
+# ---------------------------------------------------------------- a run leaving the domain of phi
+
+#: tilted planes a run along t1 (base +x) leaves at x = 0.5: phi itself undefined there (its gradient
+#: finite beyond: the controller's frame does not see it), and phi with its gradient undefined
+LEAVING = {"log": "z - 0.2 - 0.1*y + 1e-9*log(0.5 - x)", "root": "z - 0.2 - 0.1*y + 1e-3*sqrt(0.5 - x)**3"}
+
+
+def _leaving(kind: str, duration: float = 0.5):
+    surface = hybrid.ImplicitSurface(LEAVING[kind], {})
+    z0 = -surface.phi_function()(np.array([0.45, 0.0, 0.0]))[0]  # phi = z + g(x, y): on it at z = -g
+    return hybrid.tracing_experiment(surface=surface, start_point=(0.45, 0.0, z0), duration=duration)
+
+
+def _plant(name: str) -> str:
+    if name == "mujoco":
+        pytest.importorskip("mujoco")
+    return name
+
+
+@pytest.mark.parametrize("plant, compiled", [("generated", True), ("generated", False), ("mujoco", False)],
+                         ids=["compiled loop", "python runner", "mujoco"])
+def test_a_run_leaving_the_domain_of_phi_stops_where_the_sensor_tip_leaves_it(plant, compiled):
+    exp = _leaving("log")
+    with pytest.raises(hybrid.SimulationError, match="is undefined .* at the sensor tip s") as info:
+        hybrid.simulate(exp, plant=_plant(plant), compiled=compiled)
+    err, h, n = info.value, exp.integration_step, exp.robot.n
+    # the last state kept has the sensor tip short of x = 0.5, reaching it within its integration step
+    s, sd = err.partial.state[-1][2 * n:2 * n + 3], err.partial.state[-1][2 * n + 3:]
+    assert s[0] < 0.5 <= s[0] + 1.5 * h * sd[0]
+    assert err.time == pytest.approx(err.partial.t[-1] + h)
+    assert f"t = {err.time:.5f} s" in str(err).splitlines()[0]
+    assert np.isfinite(err.partial.outputs).all()  # no row of NaN penetration before it
+
+
+def test_the_compiled_loop_stops_a_run_leaving_phi_as_non_finite_its_metrics_nan():
+    from hybrid.simulation import closed_loop
+    from hybrid.spec.interfaces import STATUS_NAMES
+
+    exp = _leaving("log")
+    done = closed_loop.run([closed_loop.prepare(exp, lanes=1)], record=True)[0]
+    assert STATUS_NAMES[done.status] == "NONFINITE"
+    assert all(np.isnan(v) for v in done.metrics.values())
+    # every row whose state is finite has a finite penetration (the plant stops where phi is undefined)
+    record = exp.plant().record["outputs"]
+    finite = np.isfinite(done.states).all(axis=1)
+    assert 0 < finite.sum() < len(finite)
+    assert np.isfinite(done.outputs[finite][:, record.index("penetration")]).all()
+
+
+@pytest.mark.parametrize("plant", ["generated", "mujoco"])
+def test_a_run_whose_arm_tip_leaves_the_domain_of_phi_stops_at_that_sample(plant):
+    exp = _leaving("root")
+    with pytest.raises(hybrid.SimulationError, match="is undefined .* at the arm tip r") as info:
+        hybrid.simulate(exp, plant=_plant(plant))
+    err = info.value
+    assert err.time == pytest.approx(err.partial.t[-1])  # a control sample: the controller's frame refused it
+    assert "the task frame is undefined" in str(err)
+    r = err.partial.outputs[-1][[exp.plant().record["outputs"].index(c) for c in ("r_x", "r_y", "r_z")]]
+    assert r[0] >= 0.5 and np.isnan(exp.surface.phi_function()(r)[1]).any()
+
+
 # ---------------------------------------------------------------- values nested thousands deep
 
 

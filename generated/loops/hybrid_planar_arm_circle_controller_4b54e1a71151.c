@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 3428922222bc0bea80791ff0e40a70a669166d6949641d62ae7351c457c8a5af */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: bf2d56a6051ff0cc5db8829e6fd84b8880a18389bfa2320ce3465ae2c79035d6 */
 /* hybrid_planar_arm_circle_controller_4b54e1a71151: the paper's closed loop on a circle: controller_step.
    Emitted by hybrid's codegen/closed_loop.py; it includes hybrid_lanes.h (in generated/: compile with -I there). */
 #if !defined(__GNUC__)
@@ -2061,7 +2061,8 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
             /* the row's output where its state is recorded (a sample's first row: before its controller's stop) */
             record_outputs(outputs, g, used, row, rows, y, i == 0 ? at_sample : run.alive);
             ++row;
-            flag(&run, hl_not_finite(x, 8), HYBRID_NONFINITE, k);
+            /* a state, or a signal the metrics read (a surface undefined where the tip is), not finite */
+            flag(&run, hl_not_finite(x, 8) | hl_not_finite(s, 6), HYBRID_NONFINITE, k);
             /* a stopped lane restarts from its initial state: its numbers no longer matter, and they stay
                finite */
             if (hl_any(~run.alive)) {
@@ -2079,6 +2080,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         s[3] = y[2];
         s[4] = y[10];
         s[5] = y[11];
+        flag(&run, hl_not_finite(s, 6), HYBRID_NONFINITE, k - 1);
         metrics_row(&mt, blk, s, o_tau, row, h, end);
         record_outputs(outputs, g, used, row, rows, y, run.alive);
     }

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 01261bbeacf8bcb3e21f1615e132cb547772c5333cbe439ac6379b3140c042d8 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: f4a1c4dcc0a4fea72546352295ea0f28b3a0072c1585e021c20762282f1fcdff */
 /* hybrid_planar_arm_circle_raibert_cr_57176b91a5fa: the paper's closed loop on a circle: raibert_craig_step.
    Emitted by hybrid's codegen/closed_loop.py; it includes hybrid_lanes.h (in generated/: compile with -I there). */
 #if !defined(__GNUC__)
@@ -1947,7 +1947,8 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
             /* the row's output where its state is recorded (a sample's first row: before its controller's stop) */
             record_outputs(outputs, g, used, row, rows, y, i == 0 ? at_sample : run.alive);
             ++row;
-            flag(&run, hl_not_finite(x, 8), HYBRID_NONFINITE, k);
+            /* a state, or a signal the metrics read (a surface undefined where the tip is), not finite */
+            flag(&run, hl_not_finite(x, 8) | hl_not_finite(s, 6), HYBRID_NONFINITE, k);
             /* a stopped lane restarts from its initial state: its numbers no longer matter, and they stay
                finite */
             if (hl_any(~run.alive)) {
@@ -1965,6 +1966,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         s[3] = y[2];
         s[4] = y[10];
         s[5] = y[11];
+        flag(&run, hl_not_finite(s, 6), HYBRID_NONFINITE, k - 1);
         metrics_row(&mt, blk, s, o_tau, row, h, end);
         record_outputs(outputs, g, used, row, rows, y, run.alive);
     }

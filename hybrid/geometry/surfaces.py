@@ -75,6 +75,21 @@ class Surface:
         xyz = sp.symbols("x y z", real=True)
         return numpy_phi(self.formula(xyz, [sp.Float(v) for v in self.as_array()], sp.sqrt), xyz)
 
+    def undefined_at(self, points) -> int | None:
+        """The index of the first of ``points`` (3 coordinates each) where the surface gives no contact:
+        ``phi`` or its gradient is not a finite number there (its formula undefined) or the gradient is 0
+        (no normal); None where every point has one (or the surface gives no ``phi``)."""
+        try:
+            phi = self.phi_function()
+        except HybridError:
+            return None
+        with np.errstate(all="ignore"):  # a closed form at its centre or axis divides by 0
+            for i, p in enumerate(np.asarray(points, float).reshape(-1, 3)):
+                value, grad = phi(p)
+                if not (math.isfinite(value) and 0.0 < float(np.linalg.norm(grad)) <= sys.float_info.max):
+                    return i
+        return None
+
     def project(self, p) -> np.ndarray | None:
         return None
 
