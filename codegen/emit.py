@@ -9,7 +9,7 @@ Every public function of a unit ``hybrid_<backend>``:
 - returns an ``int`` status: ``HYBRID_OK``, ``HYBRID_SINGULAR`` (Jacobian conditioning
   below the caller's tolerance), ``HYBRID_NONFINITE`` (an output is NaN or infinite),
   ``HYBRID_FRAME_UNDEFINED`` (the task frame's reference direction is parallel to the
-  surface normal) or ``HYBRID_EULER_SINGULAR`` (``cos beta = 0`` in ZYX Euler angles).
+  surface normal, or the surface has none there) or ``HYBRID_EULER_SINGULAR`` (``cos beta = 0`` in ZYX Euler angles).
 
 The C is ``templates/unit.c.j2`` and ``unit.h.j2``'s (their shared pieces in ``unit_common.c.j2``);
 this module builds their context and the manifest. The text is a pure function of the symbolic model

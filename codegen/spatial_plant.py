@@ -54,7 +54,11 @@ def plant_kernels(chain: rb.Chain, spec: SurfaceSpec) -> tuple[Kernel, ...]:
     norm = ca.norm_2(grad)
     n_s = grad / norm
     delta, delta_d = -phi_sx(spec, s, theta) / norm, -ca.dot(n_s, sd)
-    N = ca.if_else(delta > 0, ca.fmax(0, k_e * delta + d_e * delta_d), 0)
+    # N = max(0, k_e delta + d_e delta') in contact, written with comparisons that let a NaN through
+    # (``delta > 0`` and ``fmax`` would make it 0): where the surface's formula is undefined at s the state
+    # goes NaN and the run stops there, instead of running on without a contact force
+    push = k_e * delta + d_e * delta_d
+    N = ca.if_else(delta <= 0, 0, ca.if_else(push < 0, 0, push))
     slide = sd - ca.dot(n_s, sd) * n_s
     # |v_s| kept away from 0 by far less than v_eps: tanh(w / v_eps) / w stays finite (1 / v_eps)
     w = ca.sqrt(ca.dot(slide, slide) + (1e-9 * v_eps) ** 2)

@@ -18,7 +18,7 @@ from functools import cache
 import casadi as ca
 import sympy as sp
 
-from hybrid.spec.surface import SurfaceSpec
+from hybrid.spec.surface import NORMAL_TOL, SurfaceSpec
 
 from .casadi_backend import to_sx
 from .factor import reciprocal
@@ -56,7 +56,8 @@ def phi_sx(spec: SurfaceSpec, p, theta) -> ca.SX:
 
 @dataclass
 class TaskFrame:
-    """``R_L`` (3x3, rows t1, t2, n), its derivative ``R_L'``, and ``|e x n|`` (the frame's guard)."""
+    """``R_L`` (3x3, rows t1, t2, n), its derivative ``R_L'``, and the frame's guard ``sine``: ``|e x n|``,
+    0 where the surface has no normal (:func:`normal_defined`)."""
 
     R: ca.SX
     Rd: ca.SX
@@ -78,7 +79,8 @@ def task_frame(spec: SurfaceSpec, p, pd, theta, e) -> TaskFrame:
 def _frame_on_symbols(spec: SurfaceSpec, p, pd, theta, e):
     phi = phi_sx(spec, p, theta)
     grad = ca.gradient(phi, p)
-    n = grad * reciprocal(ca.norm_2(grad))
+    size = ca.norm_2(grad)
+    n = grad * reciprocal(size)
     e_unit = e * reciprocal(ca.norm_2(e))
     c = cross(e_unit, n)
     sine = ca.norm_2(c)
@@ -86,4 +88,18 @@ def _frame_on_symbols(spec: SurfaceSpec, p, pd, theta, e):
     t2 = cross(n, t1)
     R = ca.vertcat(t1.T, t2.T, n.T)
     Rd = ca.reshape(ca.jtimes(ca.reshape(R, 9, 1), p, pd), 3, 3)
-    return R, Rd, sine, n
+    # the guard: 0 where a finite point has no normal; a non-finite point's spread is NaN or infinite, never
+    # below the tolerance (the kernel's non-finite check names the input, not the frame)
+    spread = ca.fabs(p[0]) + ca.fabs(p[1]) + ca.fabs(p[2])
+    guard = ca.if_else(normal_defined(size), sine, ca.if_else(spread <= _DBL_MAX, 0, spread))
+    return R, Rd, guard, n
+
+
+def normal_defined(size) -> ca.SX:
+    """1 where ``|grad phi| = size`` gives a normal: above :data:`NORMAL_TOL` and finite (a comparison with
+    NaN is false: a formula undefined at the point, its gradient NaN or infinite, gives none), else 0."""
+    return ca.logic_and(size > NORMAL_TOL, size <= _DBL_MAX)
+
+
+#: the largest double: ``x <= _DBL_MAX`` is false for an infinity and for NaN
+_DBL_MAX = 1.7976931348623157e308

@@ -39,7 +39,7 @@ EULER_TOL = 1e-6
 
 def frame_guard(sine) -> Guard:
     return Guard("frame", sine, "FRAME_UNDEFINED", FRAME_TOL,
-                 "|e x n| (the reference direction e is parallel to the surface normal n)")
+                 "|e x n|, 0 without a normal (e parallel to the surface normal n, or grad phi 0 or not finite)")
 
 
 def _blockdiag(A):

@@ -22,7 +22,8 @@ class URDFError(HybridError):
 
 
 class TaskFrameError(HybridError):
-    """The task frame is undefined: its reference direction is parallel to the surface normal."""
+    """The task frame is undefined: its reference direction is parallel to the surface normal, or the
+    surface has no normal there (its gradient vanishes, or its formula is undefined)."""
 
 
 class SampleTimingError(HybridError):

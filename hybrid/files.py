@@ -20,6 +20,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 from hybrid.errors import HybridError
+from hybrid.validate import shown
 
 
 def _read_umask() -> int:
@@ -68,7 +69,7 @@ def _why(exc: OSError) -> str:
 def output_path(path) -> Path:
     """``path`` as a file name to write, or a HybridError saying why it cannot be one."""
     if not isinstance(path, (str, os.PathLike)) or not str(path).strip() or "\0" in str(path):
-        raise HybridError(f"the output path {path!r:.60} is not a file name; give one")
+        raise HybridError(f"the output path {shown(path, 60)} is not a file name; give one")
     path = Path(path)
     if len(path.name.encode()) > 200:
         raise HybridError(f"the file name {path.name[:40]}... is {len(path.name)} characters; give a shorter one")
@@ -139,7 +140,7 @@ def regular_file(path, what: str, error: type[HybridError] = HybridError) -> Pat
         raise error(f"the {what} must be a path, got {type(path).__name__}; give a path")
     name = os.fspath(path)
     if not isinstance(name, str) or "\0" in name or not name.strip():
-        raise error(f"the {what} path {name!r:.60} is not a file name; give a path")
+        raise error(f"the {what} path {shown(name, 60)} is not a file name; give a path")
     try:
         mode = os.stat(name).st_mode
     except OSError as exc:

@@ -16,6 +16,7 @@ from hybrid.errors import HybridError, NonFiniteError, SingularConfigurationErro
 from hybrid.plants.planar import planar_record
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.runner import check_memory, run
+from hybrid.validate import shown
 
 SURFACE_KINDS = ("plane", "circle")
 
@@ -313,7 +314,7 @@ def simulate(exp) -> SimulationResult:
     """The paper's experiment ``exp`` run by the NumPy plant and controller (the same runner, the
     same zero-order hold): what the generated code is tested against."""
     if exp.controller not in SCHEMES:
-        raise HybridError(f"the NumPy oracle runs {' and '.join(SCHEMES)} only, not {exp.controller!r}")
+        raise HybridError(f"the NumPy oracle runs {' and '.join(SCHEMES)} only, not {shown(exp.controller)}")
     plant = NumpyPlant(exp)
     check_memory(exp, plant.record)
     x0 = exp.initial_state()

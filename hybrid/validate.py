@@ -20,7 +20,7 @@ def _finite(owner: str, **values: float) -> None:
     """Each value a real number (not a bool), finite as a float."""
     for name, v in values.items():
         if not isinstance(v, (int, float, np.floating, np.integer)) or isinstance(v, bool):
-            raise HybridError(f"{owner}.{name} must be a real number, got {v!r:.60}")
+            raise HybridError(f"{owner}.{name} must be a real number, got {shown(v, 60)}")
         try:
             ok = math.isfinite(float(v))
         except OverflowError:  # a Python int beyond float range
@@ -48,15 +48,15 @@ def _point(owner: str, name: str, p, dims: tuple[int, ...] = (2,)) -> tuple[floa
     """``p`` as a tuple of finite coordinates, of one of the lengths ``dims``."""
     what = " or ".join({2: "two numbers (x, y)", 3: "three numbers (x, y, z)"}[d] for d in dims)
     if isinstance(p, (str, bytes)):
-        raise HybridError(f"{owner}.{name} must be {what} in m, got {p!r}")
+        raise HybridError(f"{owner}.{name} must be {what} in m, got {shown(p)}")
     try:
         arr = np.asarray(p, dtype=float)
     except (TypeError, ValueError, OverflowError):
-        raise HybridError(f"{owner}.{name} must be {what} in m, got {p!r:.80}") from None
+        raise HybridError(f"{owner}.{name} must be {what} in m, got {shown(p, 80)}") from None
     if arr.ndim != 1 or arr.shape[0] not in dims:
         raise HybridError(f"{owner}.{name} must be {what} in m, got shape {arr.shape}")
     if not np.isfinite(arr).all():
-        raise HybridError(f"{owner}.{name} = {p!r} is not finite; give finite coordinates")
+        raise HybridError(f"{owner}.{name} = {shown(p)} is not finite; give finite coordinates")
     # + 0.0 makes -0.0 a 0.0: one place, one run (the runner's caches key on equal values)
     return tuple(float(v) + 0.0 for v in arr)
 
@@ -68,7 +68,7 @@ def finite_array(name: str, v, shape) -> np.ndarray:
     except (TypeError, ValueError):
         arr = np.array([])
     if arr.shape != shape or not np.isfinite(arr).all():
-        raise HybridError(f"{name} must be finite numbers of shape {shape}, got {v!r:.80}")
+        raise HybridError(f"{name} must be finite numbers of shape {shape}, got {shown(v, 80)}")
     return arr
 
 

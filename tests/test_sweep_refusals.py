@@ -249,6 +249,44 @@ def test_a_part_that_is_not_parquet_or_misnamed_is_refused(tmp_path):
     pd.testing.assert_frame_equal(sweep(BASE, GRID, out=out, workers=1, force=True), whole)
 
 
+def test_a_truncated_part_is_refused_then_redone_with_force(tmp_path):
+    """A part cut short (what a write in place would leave when killed) is named, never read as rows."""
+    out, whole, parts = _written(tmp_path)
+    data = parts[1].read_bytes()
+    parts[1].write_bytes(data[:len(data) // 2])
+    (out / "results.parquet").unlink()
+    refused(lambda: sweep(BASE, GRID, out=out, workers=1), "does not read as Parquet")
+    assert not (out / "results.parquet").exists()
+    pd.testing.assert_frame_equal(sweep(BASE, GRID, out=out, workers=1, force=True), whole)
+
+
+def test_a_part_whose_write_is_cut_short_is_not_there(tmp_path, monkeypatch):
+    """A part is written beside its name and renamed whole: a write stopped halfway (here by an
+    interrupt after half its bytes) leaves the parts before it and nothing of its own; the next sweep
+    resumes and gives the whole table."""
+    out = tmp_path / "s"
+    whole = sweep(BASE, GRID, out=tmp_path / "fresh", workers=1, chunk_size=2)
+    real, written = pd.DataFrame.to_parquet, []
+
+    def halfway(frame, path, *args, **kwargs):
+        written.append(path)
+        if len(written) == 2:  # the second part: half its bytes, then stopped
+            real(frame, path, *args, **kwargs)
+            data = open(path, "rb").read()
+            open(path, "wb").write(data[:len(data) // 2])
+            raise KeyboardInterrupt
+        return real(frame, path, *args, **kwargs)
+
+    monkeypatch.setattr(pd.DataFrame, "to_parquet", halfway)
+    with pytest.raises(KeyboardInterrupt):
+        sweep(BASE, GRID, out=out, workers=1, chunk_size=2)
+    monkeypatch.undo()
+    left = sorted(p.name for p in (out / "parts").iterdir())
+    assert left == ["part-00000000-00000001.parquet"]
+    assert len(pd.read_parquet(out / "parts" / left[0])) == 2
+    pd.testing.assert_frame_equal(sweep(BASE, GRID, out=out, workers=1, chunk_size=2), whole)
+
+
 def test_what_an_interrupted_write_left_is_removed(tmp_path):
     out, whole, _ = _written(tmp_path)
     left = [out / ".results.parquet.k2_9abcd.parquet", out / ".results.csv.zzzzzzzz.csv",

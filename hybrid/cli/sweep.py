@@ -233,7 +233,7 @@ def check_figures(figures: dict | None, parameters, metrics) -> None:
     if not isinstance(wanted, list) or not all(isinstance(w, str) for w in wanted) or not set(wanted) <= set(metrics):
         unknown = [w for w in wanted if w not in metrics] if isinstance(wanted, list) else wanted
         hint = common.did_you_mean(unknown[0], metrics) if isinstance(unknown, list) and unknown else ""
-        raise HybridError(f"[figures] metrics = {unknown!r:.60}{hint}: give a list of the runs' metric names "
+        raise HybridError(f"[figures] metrics = {shown(unknown, 60)}{hint}: give a list of the runs' metric names "
                           f"({', '.join(metrics)})")
     check_ratio(figures, parameters)
 

@@ -38,7 +38,7 @@ from hybrid.spec.controller_step import (
     STATE_NEXT,
 )
 from hybrid.spec.interfaces import CHECKS, HELD_STATUSES, REFERENCE, Dims
-from hybrid.validate import _finite, check_singular_tol
+from hybrid.validate import _finite, check_singular_tol, shown
 
 #: "no limit" for the options that are off (the generated step takes finite numbers only)
 _OFF = 1e300
@@ -168,14 +168,14 @@ class Controller:
         robot = as_robot(robot)
         for name, value in (("integral", integral), ("curvature", curvature), ("position_error", position_error)):
             if not isinstance(value, bool):
-                raise HybridError(f"{name} = {value!r}; give True or False")
+                raise HybridError(f"{name} = {shown(value)}; give True or False")
         if frame not in ("actual", "desired"):
-            raise HybridError(f"frame = {frame!r}; give 'actual' or 'desired'")
+            raise HybridError(f"frame = {shown(frame)}; give 'actual' or 'desired'")
         if (frame == "desired" or position_error) and not callable(path):
             raise HybridError(f"{'position_error' if position_error else 'frame=desired'} needs path=f(t) returning "
                               "the desired point and its velocity (p_d [m], p_d' [m/s])")
         if contact_loss is not None and not isinstance(contact_loss, ContactLoss):
-            raise HybridError(f"contact_loss = {contact_loss!r:.60}; give a hybrid.ContactLoss(threshold, "
+            raise HybridError(f"contact_loss = {shown(contact_loss, 60)}; give a hybrid.ContactLoss(threshold, "
                               "approach_speed) or None")
         if integral_limit is not None:
             _finite("Controller", integral_limit=integral_limit)
@@ -212,10 +212,10 @@ class Controller:
                                   "between 0 and 1 (0.25: a sample may come 25 % early or late), or None")
         self.timing_tolerance = None if timing_tolerance is None else float(timing_tolerance)
         if wrench_sensor is not None and not isinstance(wrench_sensor, WrenchSensor):
-            raise HybridError(f"wrench_sensor = {wrench_sensor!r:.60}; give a hybrid.WrenchSensor(...) or None")
+            raise HybridError(f"wrench_sensor = {shown(wrench_sensor, 60)}; give a hybrid.WrenchSensor(...) or None")
         self.wrench_sensor = wrench_sensor
         if fault_reaction is not None and not isinstance(fault_reaction, FaultReaction):
-            raise HybridError(f"fault_reaction = {fault_reaction!r:.60}; give a hybrid.FaultReaction(...) or None "
+            raise HybridError(f"fault_reaction = {shown(fault_reaction, 60)}; give a hybrid.FaultReaction(...) or None "
                               "(its defaults)")
         self._fault_reaction = fault_reaction or FaultReaction()
         self._references = axis_references(self.axes, self.selection, force_reference, velocity_reference)
@@ -320,7 +320,7 @@ class Controller:
             raise HybridError("this controller takes the contact wrench itself, not a sensor's reading: build it "
                               "with wrench_sensor=hybrid.WrenchSensor(...) to give it one")
         if not isinstance(sensor, WrenchSensor):
-            raise HybridError(f"sensor = {sensor!r:.60}; give a hybrid.WrenchSensor(...)")
+            raise HybridError(f"sensor = {shown(sensor, 60)}; give a hybrid.WrenchSensor(...)")
         self._params = self._checked_parameters({**self.step_inputs(),
                                                  "sensor": sensor.as_array(self.robot, self.sample_time)})
         self.wrench_sensor = sensor
@@ -334,7 +334,7 @@ class Controller:
         refused = CONTROLLER_STEP.refused(params, self._dims, self.sample_time)
         if refused:
             port, element, value, valid = refused[0]
-            raise HybridError(f"the step's {port} {element} = {value!r}; give {valid}"
+            raise HybridError(f"the step's {port} {element} = {shown(value)}; give {valid}"
                               + (f" ({len(refused) - 1} more refused)" if len(refused) > 1 else ""))
         for p in params:
             p.flags.writeable = False
@@ -410,7 +410,7 @@ class Controller:
             except (TypeError, ValueError):
                 tau = np.full(1, np.nan)
             if tau.shape != (self.robot.n,) or not np.isfinite(tau).all():
-                raise HybridError(f"reset(torque={torque!r:.60}); give the arm's present torque, {self.robot.n} "
+                raise HybridError(f"reset(torque={shown(torque, 60)}); give the arm's present torque, {self.robot.n} "
                                   "finite numbers [N m or N], or None")
             self._last[:-1], self._last[-1] = tau, 1.0
 
@@ -437,8 +437,8 @@ class Controller:
                 name = f"the {self.axis_names[i]} {what}"
                 value = call_user(f, t, name)
                 if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
-                    raise HybridError(f"{name} gave {value!r:.40} at t = {t} s; a reference f(t) returns one number "
-                                      "(and its rate(t) one number)")
+                    raise HybridError(f"{name} gave {shown(value, 40)} at t = {t} s; a reference f(t) returns one "
+                                      "number (and its rate(t) one number)")
                 target[i] = value
 
     def __call__(self, t: float, q, qdot, Fc) -> np.ndarray:
@@ -518,13 +518,13 @@ class Controller:
             Fc = self._padded(Fc)
         if type(t) is not float and (isinstance(t, (str, bytes, bool, np.bool_))
                                      or not isinstance(t, (int, np.integer, np.floating))):
-            raise HybridError(f"t = {t!r:.40}; give the sample time in seconds (a number)")
+            raise HybridError(f"t = {shown(t, 40)}; give the sample time in seconds (a number)")
         try:
             self._t[0] = t
         except OverflowError:  # an integer beyond any double
             self._t[0] = np.inf
         if not _isfinite(self._t[0]):
-            raise HybridError(f"t = {t!r:.40}; give a finite sample time")
+            raise HybridError(f"t = {shown(t, 40)}; give a finite sample time")
         t = self._t[0]
         settings = (self.sample_time, self.timing_tolerance, self.singular_tol)
         if settings != self._checked_settings:  # checked again whenever one changed (a NaN never equals)
@@ -602,7 +602,7 @@ class Controller:
     def _desired(self, t: float) -> np.ndarray:
         got = call_user(self.path, t, "the path")
         if not isinstance(got, tuple) or len(got) not in (2, 3):
-            raise HybridError(f"path({t}) returned {got!r:.60}; return (p_d, p_d') or (p_d, p_d', phi_d)")
+            raise HybridError(f"path({t}) returned {shown(got, 60)}; return (p_d, p_d') or (p_d, p_d', phi_d)")
         d = self._force_size  # a point of the planar arm's plane, or of space
         phi = _vector("path angles", got[2], 3) if len(got) == 3 else np.zeros(3)
         return np.concatenate([_vector("path point", got[0], d), _vector("path velocity", got[1], d), phi])
@@ -618,7 +618,7 @@ class Controller:
             except (TypeError, ValueError):
                 arr = None
             if arr is None or arr.shape != (self.robot.n,):
-                raise HybridError(f"{name} = {v!r:.60}; give {self.robot.n} numbers (one per joint)")
+                raise HybridError(f"{name} = {shown(v, 60)}; give {self.robot.n} numbers (one per joint)")
             if not np.isfinite(arr).all():
                 raise NonFiniteError(f"{name} = {arr.tolist()} is not finite; give finite joint positions and "
                                      "velocities [rad, rad/s or m, m/s]")
@@ -648,8 +648,8 @@ def _wrench(Fc, force_size: int) -> np.ndarray:
     except (TypeError, ValueError):
         arr = None
     if arr is None or arr.shape not in ((force_size,), (6,)):
-        raise HybridError(f"Fc = {Fc!r:.60}; give the measured force on the robot ({force_size} numbers, base axes) "
-                          "or the wrench (force, moment: 6 numbers)")
+        raise HybridError(f"Fc = {shown(Fc, 60)}; give the measured force on the robot ({force_size} numbers, base "
+                          "axes) or the wrench (force, moment: 6 numbers)")
     return np.concatenate([arr, np.zeros(6 - arr.size)])
 
 
@@ -660,5 +660,5 @@ def _vector(name: str, v, size: int) -> np.ndarray:
     except (TypeError, ValueError):
         arr = np.full(1, np.nan)
     if arr.shape != (size,) or not np.isfinite(arr).all():
-        raise HybridError(f"the desired {name} {v!r:.60} must be {size} finite numbers [m, m/s or rad]")
+        raise HybridError(f"the desired {name} {shown(v, 60)} must be {size} finite numbers [m, m/s or rad]")
     return np.concatenate([arr, np.zeros(3 - size)])

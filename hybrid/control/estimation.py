@@ -42,6 +42,7 @@ import numpy as np
 from hybrid.errors import HybridError
 from hybrid.geometry.surfaces import Surface
 from hybrid.spec.surface import SurfaceSpec
+from hybrid.validate import shown
 
 #: the estimators by name: (weight of the force estimate, of the velocity estimate, friction correction)
 METHODS = {"force": (1.0, 0.0, 1.0), "force_uncorrected": (1.0, 0.0, 0.0), "velocity": (0.0, 1.0, 0.0),
@@ -85,13 +86,13 @@ class EstimatedSurface(Surface):
 
     def __post_init__(self):
         if not isinstance(self.method, str) or self.method not in METHODS:
-            raise HybridError(f"EstimatedSurface method = {self.method!r:.40}; choose one of {', '.join(METHODS)}")
+            raise HybridError(f"EstimatedSurface method = {shown(self.method, 40)}; choose one of {', '.join(METHODS)}")
         try:
             n = np.asarray(self.initial_normal, dtype=float)
         except (TypeError, ValueError):
             n = np.full(1, np.nan)
         if n.shape != (3,) or not np.isfinite(n).all() or np.linalg.norm(n) < 1e-9:
-            raise HybridError(f"EstimatedSurface initial_normal = {self.initial_normal!r:.60}; give a nonzero "
+            raise HybridError(f"EstimatedSurface initial_normal = {shown(self.initial_normal, 60)}; give a nonzero "
                               "direction (3 finite numbers, base axes) from the surface towards the robot")
         object.__setattr__(self, "initial_normal", tuple(float(v) for v in n / np.linalg.norm(n)))
         if self.rate_gain is None:
@@ -104,7 +105,7 @@ class EstimatedSurface(Surface):
             ok = not isinstance(value, bool) and isinstance(value, (int, float, np.integer, np.floating)) \
                 and np.isfinite(value) and (value > 0 if positive else value >= 0)
             if not ok:
-                raise HybridError(f"EstimatedSurface {name} = {value!r:.40}; give a finite number "
+                raise HybridError(f"EstimatedSurface {name} = {shown(value, 40)}; give a finite number "
                                   f"{'> 0' if positive else '>= 0'}")
             object.__setattr__(self, name, float(value))
 

@@ -29,6 +29,7 @@ import numpy as np
 from hybrid.errors import HybridError, SafeStopError
 from hybrid.spec.controller_step import FAULT, FAULT_DEFAULTS, FAULT_STATE, OPTIONS
 from hybrid.spec.interfaces import CHECKS, Dims
+from hybrid.validate import shown
 
 
 @dataclass(frozen=True)
@@ -59,7 +60,7 @@ class FaultReaction:
             number = not isinstance(value, (bool, np.bool_)) and isinstance(value, (int, float, np.integer,
                                                                                      np.floating))
             if not number or not CHECKS[checks[name]].valid(float(value), 1.0):
-                raise HybridError(f"FaultReaction {name} = {value!r:.40}; give {CHECKS[checks[name]].meaning}")
+                raise HybridError(f"FaultReaction {name} = {shown(value, 40)}; give {CHECKS[checks[name]].meaning}")
             object.__setattr__(self, name, int(value) if name == "fault_samples" else float(value))
 
     def as_array(self) -> np.ndarray:

@@ -31,6 +31,7 @@ from hybrid.control.wrench_sensor import Tool, WrenchSensor, tool_wrench
 from hybrid.errors import HybridError
 from hybrid.models.robot import Robot
 from hybrid.models.terms import arm_terms
+from hybrid.validate import shown
 
 #: the largest condition number of the regressor (gravity scaled to unit length) accepted: about the
 #: inverse of the spread of the gravity directions in radians (1 for directions all over the sphere)
@@ -66,13 +67,13 @@ class ToolIdentification:
 
 def _check_sensor(sensor) -> None:
     if not isinstance(sensor, WrenchSensor):
-        raise HybridError(f"sensor = {sensor!r:.60}; give a hybrid.WrenchSensor")
+        raise HybridError(f"sensor = {shown(sensor, 60)}; give a hybrid.WrenchSensor")
 
 
 def _check_robot(robot, weighed: bool = True) -> np.ndarray:
     """``robot.gravity`` of a :class:`Robot` (not zero if the tool is ``weighed``)."""
     if not isinstance(robot, Robot):
-        raise HybridError(f"robot = {robot!r:.60}; give a hybrid.Robot (e.g. hybrid.ur5())")
+        raise HybridError(f"robot = {shown(robot, 60)}; give a hybrid.Robot (e.g. hybrid.ur5())")
     g = np.array(robot.gravity)
     if not weighed:
         return g
@@ -86,7 +87,7 @@ def _array(name: str, value, shape: tuple, what: str) -> np.ndarray:
     try:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
-        raise HybridError(f"{name} = {value!r:.60}; give {what}") from None
+        raise HybridError(f"{name} = {shown(value, 60)}; give {what}") from None
     if arr.shape != shape:
         raise HybridError(f"{name} has shape {arr.shape}; give {what}, shape {shape}")
     if not np.isfinite(arr).all():
@@ -151,7 +152,7 @@ def identify_tool(robot: Robot, sensor: WrenchSensor, q, readings, *,
     w = sensor.sign * _array("readings", readings, (N, 6), f"one reading per pose (force, then moment) for "
                                                            f"the {N} poses of q")
     if isinstance(max_condition, bool) or not (isinstance(max_condition, (int, float)) and max_condition >= 1):
-        raise HybridError(f"max_condition = {max_condition!r:.40}; give a number >= 1")
+        raise HybridError(f"max_condition = {shown(max_condition, 40)}; give a number >= 1")
     gn = float(np.linalg.norm(g))
     u = np.einsum("nji,j->ni", _sensor_rotations(robot, sensor, q), g) / gn  # R_s^T g / |g|
     k = _distinct(u)

@@ -35,7 +35,7 @@ from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
 from hybrid.native.binding import is_batch
 from hybrid.spec.interfaces import PRINTERS
-from hybrid.validate import SINGULAR_TOL, check_singular_tol, check_size
+from hybrid.validate import SINGULAR_TOL, check_singular_tol, check_size, shown
 
 #: the derivations a law can run: the rigid-body algorithms, or the planar arm's committed closed form
 BACKENDS = ("rigid_body", *PRINTERS)
@@ -63,10 +63,10 @@ class DecouplingLaw:
         if isinstance(robot, Arm):  # the paper's parameters stand for its arm, in closed form
             if not (isinstance(surface, Surface) and surface.cross_section() is not None):
                 raise HybridError(f"the planar arm needs a hybrid.Circle or hybrid.Plane in 2-D, got "
-                                  f"{surface!r:.100}; for another surface use a hybrid.Robot")
+                                  f"{shown(surface, 100)}; for another surface use a hybrid.Robot")
         robot = as_robot(robot)
         if not isinstance(curvature, bool):
-            raise HybridError(f"curvature must be True or False, got {curvature!r}")
+            raise HybridError(f"curvature must be True or False, got {shown(curvature)}")
         check_singular_tol("decoupling_law", singular_tol)
         init("robot", robot)
         init("surface", surface)
@@ -78,7 +78,7 @@ class DecouplingLaw:
         closed = section is not None
         backend = backend if backend is not None else ("sympy" if closed else "rigid_body")
         if backend not in BACKENDS:
-            raise HybridError(f"backend must be one of {', '.join(BACKENDS)}, got {backend!r:.40}")
+            raise HybridError(f"backend must be one of {', '.join(BACKENDS)}, got {shown(backend, 40)}")
         if backend != "rigid_body" and not closed:
             raise HybridError(f"backend {backend!r} is the paper's planar arm in closed form: it needs "
                               "hybrid.Robot.planar(arm) (or a hybrid.Arm) on a hybrid.Circle or a 2-D hybrid.Plane, "

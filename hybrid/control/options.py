@@ -16,7 +16,7 @@ import numpy as np
 from hybrid.control.references import Step
 from hybrid.errors import HybridError
 from hybrid.spec.axes import AXIS_NAMES
-from hybrid.validate import _finite
+from hybrid.validate import _finite, shown
 
 
 @dataclass(frozen=True)
@@ -43,7 +43,7 @@ def _gain(name: str, value, n: int) -> tuple[float, ...]:
     except (TypeError, ValueError):
         arr = np.full(1, np.nan)
     if arr.ndim > 1 or (arr.ndim == 1 and arr.size != n) or not np.isfinite(arr).all() or (arr < 0).any():
-        raise HybridError(f"Posture {name} = {value!r:.60}; give one finite number >= 0 for every joint, or "
+        raise HybridError(f"Posture {name} = {shown(value, 60)}; give one finite number >= 0 for every joint, or "
                           f"{n} of them (one per joint)")
     return tuple(float(v) for v in np.broadcast_to(arr, (n,)))
 
@@ -77,7 +77,7 @@ class Posture:
         except (TypeError, ValueError):
             q = np.full(1, np.nan)
         if q.ndim != 1 or q.size == 0 or not np.isfinite(q).all():
-            raise HybridError(f"Posture q_rest = {self.q_rest!r:.60}; give the rest posture, one finite joint "
+            raise HybridError(f"Posture q_rest = {shown(self.q_rest, 60)}; give the rest posture, one finite joint "
                               "position per joint [rad or m]")
         object.__setattr__(self, "q_rest", tuple(float(v) for v in q))
         for name in ("stiffness", "damping"):
@@ -116,7 +116,7 @@ class Reference:
         if callable(ref):
             rate = getattr(ref, "rate", None)
             return cls(None, ref, rate if callable(rate) else None)
-        raise HybridError(f"{name} = {ref!r:.60}; give a number, a hybrid.Step or a callable f(t)")
+        raise HybridError(f"{name} = {shown(ref, 60)}; give a number, a hybrid.Step or a callable f(t)")
 
 
 def check_posture(robot, axes: tuple[int, ...], scheme, posture) -> Posture | None:
@@ -124,7 +124,7 @@ def check_posture(robot, axes: tuple[int, ...], scheme, posture) -> Posture | No
     if posture is None:
         return None
     if not isinstance(posture, Posture):
-        raise HybridError(f"posture = {posture!r:.60}; give a hybrid.Posture(q_rest, stiffness, damping) or None")
+        raise HybridError(f"posture = {shown(posture, 60)}; give a hybrid.Posture(q_rest, stiffness, damping) or None")
     n, m = robot.n, len(axes)
     if len(posture.q_rest) != n:
         raise HybridError(f"Posture q_rest has {len(posture.q_rest)} joint positions; the arm has {n} joints "

@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import ClassVar
 
 from hybrid.errors import HybridError
+from hybrid.validate import shown
 
 #: every registered scheme, by name
 SCHEMES: dict[str, type[Scheme]] = {}
@@ -91,5 +92,5 @@ def scheme_of(scheme) -> Scheme:
         return scheme
     if isinstance(scheme, str) and scheme in SCHEMES:
         return SCHEMES[scheme]()
-    raise HybridError(f"unknown scheme {scheme!r:.40}; choose one of {', '.join(SCHEMES)} or pass a "
+    raise HybridError(f"unknown scheme {shown(scheme, 40)}; choose one of {', '.join(SCHEMES)} or pass a "
                       "hybrid.Scheme")

@@ -17,6 +17,7 @@ from hybrid.control.options import Reference
 from hybrid.errors import HybridError
 from hybrid.spec.axes import AXIS_NAMES
 from hybrid.spec.controller_step import LOOP_GAINS
+from hybrid.validate import shown
 
 
 def axis_index(axes: tuple[int, ...], what: str, key) -> int:
@@ -24,7 +25,7 @@ def axis_index(axes: tuple[int, ...], what: str, key) -> int:
     index = AXIS_NAMES.index(key) if isinstance(key, str) and key in AXIS_NAMES else key
     if isinstance(index, (int, np.integer)) and not isinstance(index, bool) and index in axes:
         return axes.index(int(index))
-    raise HybridError(f"{what}: {key!r:.40} is not one of the task axes {', '.join(_names(axes))}; name one of "
+    raise HybridError(f"{what}: {shown(key)} is not one of the task axes {', '.join(_names(axes))}; name one of "
                       "them (or give its index 0-5)")
 
 
@@ -40,7 +41,7 @@ def selection_of(axes: tuple[int, ...], selection) -> tuple[int, ...]:
     except HybridError:
         raise
     except (TypeError, ValueError):
-        raise HybridError(f"selection = {selection!r:.60}; give the force-controlled axes by name, "
+        raise HybridError(f"selection = {shown(selection, 60)}; give the force-controlled axes by name, "
                           "e.g. ('n',)") from None
     return tuple(int(k in chosen) for k in range(len(axes)))
 
@@ -56,7 +57,7 @@ def gains_of(axes: tuple[int, ...], gains, integral: bool = True) -> tuple[Gains
     elif isinstance(gains, Mapping):
         for key, g in gains.items():
             if not isinstance(g, Gains):
-                raise HybridError(f"gains[{key!r:.40}] is a {type(g).__name__}; give a hybrid.Gains(...)")
+                raise HybridError(f"gains[{shown(key, 40)}] is a {type(g).__name__}; give a hybrid.Gains(...)")
             per_axis[axis_index(axes, "gains", key)] = g
     else:
         raise HybridError(f"gains is a {type(gains).__name__}; give a hybrid.Gains(...) or {{axis name: Gains}}")
@@ -91,7 +92,7 @@ def joint_limit(robot, name: str, value) -> np.ndarray:
         arr = np.full(n, np.nan)
     if isinstance(value, (str, bool)) or np.isnan(arr).any() or (arr <= 0).any():
         urdf = "'urdf' (the URDF's effort limits), " if name == "torque_limit" else ""
-        raise HybridError(f"{name} = {value!r:.60}; give {urdf}None (no limit), one number > 0 [N m or N"
+        raise HybridError(f"{name} = {shown(value, 60)}; give {urdf}None (no limit), one number > 0 [N m or N"
                           f"{' per sample' if name != 'torque_limit' else ''}] or {n} of them (one per joint)")
     return arr
 

@@ -30,6 +30,7 @@ import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.models.urdf import rigid_offset
+from hybrid.validate import shown
 
 
 def _vector(owner: str, name: str, value, size: int) -> tuple[float, ...]:
@@ -38,7 +39,7 @@ def _vector(owner: str, name: str, value, size: int) -> tuple[float, ...]:
     except (TypeError, ValueError):
         arr = np.full(1, np.nan)
     if arr.shape != (size,) or not np.isfinite(arr).all():
-        raise HybridError(f"{owner} {name} = {value!r:.60}; give {size} finite numbers")
+        raise HybridError(f"{owner} {name} = {shown(value, 60)}; give {size} finite numbers")
     return tuple(float(v) for v in arr)
 
 
@@ -53,7 +54,7 @@ class Tool:
         mass = self.mass
         if isinstance(mass, bool) or not isinstance(mass, (int, float, np.integer, np.floating)) \
                 or not np.isfinite(mass) or mass < 0:
-            raise HybridError(f"Tool mass = {mass!r:.40}; give the tool's mass in kg, a number >= 0")
+            raise HybridError(f"Tool mass = {shown(mass, 40)}; give the tool's mass in kg, a number >= 0")
         object.__setattr__(self, "mass", float(mass))
         object.__setattr__(self, "com", _vector("Tool", "com", self.com, 3))
 
@@ -65,7 +66,7 @@ def _rotation(value) -> np.ndarray:
         R = np.full(1, np.nan)
     if R.shape != (3, 3) or not np.isfinite(R).all() or not np.allclose(R.T @ R, np.eye(3), atol=1e-9) \
             or np.linalg.det(R) < 0:
-        raise HybridError(f"WrenchSensor rotation = {value!r:.80}; give a 3 x 3 rotation matrix (orthonormal, "
+        raise HybridError(f"WrenchSensor rotation = {shown(value, 80)}; give a 3 x 3 rotation matrix (orthonormal, "
                           "det +1): the sensor axes in tip axes")
     return R
 
@@ -100,23 +101,24 @@ class WrenchSensor:
 
     def __post_init__(self):
         if self.frame is not None and not isinstance(self.frame, str):
-            raise HybridError(f"WrenchSensor frame = {self.frame!r:.40}; give a frame name of the URDF, or None")
+            raise HybridError(f"WrenchSensor frame = {shown(self.frame, 40)}; give a frame name of the URDF, or None")
         object.__setattr__(self, "position", _vector("WrenchSensor", "position", self.position, 3))
         object.__setattr__(self, "rotation", tuple(tuple(r) for r in _rotation(self.rotation)))
         if self.sign not in (1, -1) or isinstance(self.sign, bool):
-            raise HybridError(f"WrenchSensor sign = {self.sign!r}; give +1 (the tool side's wrench on the sensor) "
+            raise HybridError(f"WrenchSensor sign = {shown(self.sign)}; give +1 (the tool side's wrench on the sensor) "
                               "or -1 (the sensor's on the tool)")
         if not isinstance(self.tool, Tool):
-            raise HybridError(f"WrenchSensor tool = {self.tool!r:.60}; give a hybrid.Tool(mass, com)")
+            raise HybridError(f"WrenchSensor tool = {shown(self.tool, 60)}; give a hybrid.Tool(mass, com)")
         object.__setattr__(self, "bias", _vector("WrenchSensor", "bias", self.bias, 6))
         if self.cutoff is not None:
             c = self.cutoff
             if isinstance(c, bool) or not isinstance(c, (int, float, np.integer, np.floating)) \
                     or not np.isfinite(c) or c <= 0:
-                raise HybridError(f"WrenchSensor cutoff = {c!r:.40}; give the filter's cutoff in Hz (> 0), or None")
+                raise HybridError(f"WrenchSensor cutoff = {shown(c, 40)}; give the filter's cutoff in Hz (> 0), "
+                                  "or None")
             object.__setattr__(self, "cutoff", float(c))
         if self.order not in (1, 2) or isinstance(self.order, bool):
-            raise HybridError(f"WrenchSensor order = {self.order!r}; give 1 or 2 (the Butterworth filter's order)")
+            raise HybridError(f"WrenchSensor order = {shown(self.order)}; give 1 or 2 (the Butterworth filter's order)")
 
     def check_sampling(self, sample_time: float) -> None:
         """Refuse a cutoff at or above the Nyquist frequency of ``sample_time`` [s]."""
@@ -130,7 +132,7 @@ class WrenchSensor:
             return np.array(self.position), np.array(self.rotation)
         source = getattr(robot, "source", None)
         if source is None:
-            raise HybridError(f"WrenchSensor frame = {self.frame!r} names a URDF frame, but the robot "
+            raise HybridError(f"WrenchSensor frame = {shown(self.frame)} names a URDF frame, but the robot "
                               f"{getattr(robot, 'name', robot)!r} was not read from a URDF; give position and "
                               "rotation instead")
         path, tip, locked = source

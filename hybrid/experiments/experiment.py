@@ -45,7 +45,7 @@ from hybrid.native.standalone import generate_experiment
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.plants.registry import generated_plant_class
 from hybrid.spec.interfaces import PRINTERS
-from hybrid.validate import SINGULAR_TOL, _point
+from hybrid.validate import SINGULAR_TOL, _point, shown
 
 #: the committed units that can run the closed-form plant and law (the same equations, two printers)
 BACKENDS = PRINTERS  # the closed form's units the plant and the law may take
@@ -149,32 +149,32 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         # (with_physics runs them alone)
         check_common_types(self)
         if self.controller not in SCHEMES:
-            raise HybridError(f"unknown controller {self.controller!r}; choose one of {', '.join(SCHEMES)}")
+            raise HybridError(f"unknown controller {shown(self.controller)}; choose one of {', '.join(SCHEMES)}")
         if self.robot is None or self.surface is None:
             raise HybridError("an Experiment needs a robot and a surface; give both, or start from a factory: "
                               "hybrid.paper_experiment(), hybrid.tracing_experiment(), hybrid.panda_experiment()")
         object.__setattr__(self, "robot", as_robot(self.robot))
         if not isinstance(self.surface, Surface):
-            raise HybridError(f"unknown surface {self.surface!r:.60}; give a hybrid Circle, Plane, Sphere, Cylinder "
-                              "or ImplicitSurface")
+            raise HybridError(f"unknown surface {shown(self.surface, 60)}; give a hybrid Circle, Plane, Sphere, "
+                              "Cylinder or ImplicitSurface")
         if self.controller_surface is not None:
             if not isinstance(self.controller_surface, Surface):
-                raise HybridError(f"controller_surface = {self.controller_surface!r:.60}; give a hybrid surface (a "
-                                  "wrong one, or hybrid.EstimatedSurface()) or None (the true surface)")
+                raise HybridError(f"controller_surface = {shown(self.controller_surface, 60)}; give a hybrid surface "
+                                  "(a wrong one, or hybrid.EstimatedSurface()) or None (the true surface)")
             if self.controller_surface.spec().estimated and self.frame == "desired":
                 raise HybridError("frame='desired' puts the loops on the desired point of a surface the controller "
                                   "knows; with an EstimatedSurface give frame='actual'")
         self.robot.kind.check_surface(self.surface)
         if self.posture is not None and not isinstance(self.posture, Posture):
-            raise HybridError(f"posture = {self.posture!r:.60}; give a hybrid.Posture(q_rest, stiffness, damping) "
+            raise HybridError(f"posture = {shown(self.posture, 60)}; give a hybrid.Posture(q_rest, stiffness, damping) "
                               "or None")
         if self.path is not None and not isinstance(self.path, Path):
-            raise HybridError(f"path = {self.path!r:.60}; give a hybrid.CirclePath or hybrid.LinePath, or None")
+            raise HybridError(f"path = {shown(self.path, 60)}; give a hybrid.CirclePath or hybrid.LinePath, or None")
         if not isinstance(self.backend, str) or self.backend not in BACKENDS:
-            raise HybridError(f"unknown backend {self.backend!r:.40}; choose one of {BACKENDS} (the NumPy oracle "
+            raise HybridError(f"unknown backend {shown(self.backend, 40)}; choose one of {BACKENDS} (the NumPy oracle "
                               "runs as hybrid.oracle.simulate(experiment))")
         if isinstance(self.elbow, bool) or not isinstance(self.elbow, (int, np.integer)) or self.elbow not in (1, -1):
-            raise HybridError(f"elbow = {self.elbow!r}; give +1 (q2 > 0) or -1 (q2 < 0)")
+            raise HybridError(f"elbow = {shown(self.elbow)}; give +1 (q2 > 0) or -1 (q2 < 0)")
         object.__setattr__(self, "frame_direction", tuple(frame_direction_of(self.frame_direction)))
         self.robot.kind.check_settings(self.robot, self.frame_direction, {"elbow": self.elbow, "backend": self.backend})
         # what the controller will refuse, refused now (building it compiles its step)

@@ -15,6 +15,7 @@ from hybrid.experiments.settings import with_overrides
 from hybrid.geometry.surfaces import Circle
 from hybrid.models.planar_arm import Arm, paper_arm
 from hybrid.models.robot import Robot
+from hybrid.validate import shown
 
 
 def paper_experiment(**overrides) -> Experiment:
@@ -26,7 +27,7 @@ def paper_experiment(**overrides) -> Experiment:
     arm = overrides.pop("arm", None)
     if arm is not None:
         if not isinstance(arm, Arm):
-            raise HybridError(f"arm = {arm!r:.60}; give a hybrid.Arm (see hybrid.paper_arm())")
+            raise HybridError(f"arm = {shown(arm, 60)}; give a hybrid.Arm (see hybrid.paper_arm())")
         if "robot" in overrides:
             raise HybridError("give arm (the planar arm's parameters) or robot, not both")
         overrides["robot"] = Robot.planar(arm)

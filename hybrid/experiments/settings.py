@@ -14,7 +14,7 @@ from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import RENAMED, renamed_settings
 from hybrid.errors import HybridError
 from hybrid.plants.contact import Contact, Sensor
-from hybrid.validate import _finite, check_singular_tol
+from hybrid.validate import _finite, check_singular_tol, shown
 
 #: where the loops' task frame is taken: at the actual contact point or at the desired one
 FRAMES = ("actual", "desired")
@@ -83,7 +83,7 @@ def check_sensing(exp) -> None:
     for name in ("wrench_sensor", "controller_wrench_sensor"):
         value = getattr(exp, name)
         if value is not None and not isinstance(value, WrenchSensor):
-            raise HybridError(f"{name} = {value!r:.60}; give a hybrid.WrenchSensor(...) or None")
+            raise HybridError(f"{name} = {shown(value, 60)}; give a hybrid.WrenchSensor(...) or None")
     if exp.controller_wrench_sensor is not None and exp.wrench_sensor is None:
         raise HybridError("controller_wrench_sensor is what the controller believes of the true sensor: give "
                           "wrench_sensor too (the true one)")
@@ -118,23 +118,23 @@ def check_common_types(exp) -> None:
     owner = type(exp).__name__
     for name in ("integral", "curvature"):
         if not isinstance(getattr(exp, name), bool):
-            raise HybridError(f"{name} = {getattr(exp, name)!r}; give True or False")
+            raise HybridError(f"{name} = {shown(getattr(exp, name))}; give True or False")
     for name in ("controller", "frame"):
         if not isinstance(getattr(exp, name), str):
-            raise HybridError(f"{name} = {getattr(exp, name)!r}; give its name as a string")
+            raise HybridError(f"{name} = {shown(getattr(exp, name))}; give its name as a string")
     for name, typ in (("sensor", Sensor), ("contact", Contact), ("gains", Gains)):
         if not isinstance(getattr(exp, name), typ):
-            raise HybridError(f"{name} = {getattr(exp, name)!r:.60}; give a hybrid.{typ.__name__}(...)")
+            raise HybridError(f"{name} = {shown(getattr(exp, name), 60)}; give a hybrid.{typ.__name__}(...)")
     for name in ("force_reference", "speed_reference"):
         ref = getattr(exp, name)
         if isinstance(ref, (int, float, np.integer, np.floating)) and not isinstance(ref, bool):
             _finite(owner, **{name: ref})
             object.__setattr__(exp, name, Step(float(ref), float(ref), 0.0))  # a constant reference
         elif not isinstance(ref, Step):
-            raise HybridError(f"{name} = {ref!r:.60}; give a hybrid.Step(before, after, at) or a number")
+            raise HybridError(f"{name} = {shown(ref, 60)}; give a hybrid.Step(before, after, at) or a number")
     _finite(owner, model_error=exp.model_error, viscous_compensation=exp.viscous_compensation)
     if exp.frame not in FRAMES:
-        raise HybridError(f"unknown frame {exp.frame!r}; choose one of {FRAMES}")
+        raise HybridError(f"unknown frame {shown(exp.frame)}; choose one of {FRAMES}")
     check_singular_tol(owner, exp.singular_tol)
 
 
@@ -216,6 +216,6 @@ def with_overrides(cls, maker: str, overrides: dict, defaults: dict | None = Non
     if gains:
         base = overrides.get("gains", Gains())
         if not isinstance(base, Gains):
-            raise HybridError(f"gains = {base!r:.60}; give a hybrid.Gains(...) to combine with {', '.join(gains)}")
+            raise HybridError(f"gains = {shown(base, 60)}; give a hybrid.Gains(...) to combine with {', '.join(gains)}")
         overrides["gains"] = replace(base, **gains)
     return cls(**{**(defaults or {}), **overrides})

@@ -4,6 +4,7 @@ inverse kinematics (:meth:`hybrid.Experiment.initial_state`)."""
 
 from __future__ import annotations
 
+import math
 from functools import lru_cache
 
 import numpy as np
@@ -25,6 +26,10 @@ def start_state(exp) -> np.ndarray:
     else:  # without a closed-form projection the plant's own record says how far the point is
         plant = exp.plant()
         gap = abs(float(plant.outputs(_probe(exp, p0))[0][plant.record["outputs"].index("penetration")]))
+        if not math.isfinite(gap):  # no distance: the normal says why (grad phi vanishes, phi undefined)
+            geometry.normal_at(tuple(given.tolist()))
+            raise HybridError(f"the surface's phi is undefined at the start point {np.round(given, 4).tolist()} m; "
+                              "give a point where phi is a finite number")
     if not gap <= START_TOL:
         what = "start_point" if exp.start_point is not None else "the path's start"
         hint = f", e.g. {np.round(nearest, 4).tolist()}" if nearest is not None else ""

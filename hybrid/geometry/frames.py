@@ -17,6 +17,7 @@ from hybrid.geometry.surfaces import Surface
 from hybrid.geometry.task_axes import frame_direction_of
 from hybrid.native import units
 from hybrid.native.binding import as_array, is_batch
+from hybrid.validate import shown
 
 
 @renamed_keywords(reference="frame_direction")
@@ -34,7 +35,7 @@ def task_frame(surface: Surface, r, rdot, *, frame_direction=(0.0, 0.0, 1.0),
     """
     if not isinstance(surface, Surface):
         raise HybridError(f"surface must be a hybrid surface (Circle, Plane, Sphere, Cylinder, ImplicitSurface), "
-                          f"got {surface!r:.60}")
+                          f"got {shown(surface, 60)}")
     d = 2 if np.shape(r)[-1:] == (2,) else 3
     r, rdot = as_array("r", r, d, batched=None), as_array("rdot", rdot, d, batched=None)
     if r.shape != rdot.shape:
@@ -44,8 +45,8 @@ def task_frame(surface: Surface, r, rdot, *, frame_direction=(0.0, 0.0, 1.0),
     if d == 2:
         section = surface.cross_section()
         if section is None:
-            raise HybridError(f"points of 2 coordinates lie in the base xy-plane, but {surface!r:.60} has no planar "
-                              "cross-section there; give 3 coordinates")
+            raise HybridError(f"points of 2 coordinates lie in the base xy-plane, but {shown(surface, 60)} has no "
+                              "planar cross-section there; give 3 coordinates")
         if not np.array_equal(frame_direction_of(frame_direction), (0.0, 0.0, 1.0)):
             raise HybridError("a planar frame has e = z (tangent t = (-n_y, n_x)); leave frame_direction out")
         if not is_batch(r):

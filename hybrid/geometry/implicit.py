@@ -87,8 +87,15 @@ class ImplicitSurface(Surface):
         x, y, z = sp.symbols("x y z", real=True)
         grad = [sp.diff(self.phi, s) for s in (x, y, z)]
         subs = {x: p[0], y: p[1], z: p[2], **{sp.Symbol(k, real=True): v for k, v in self.parameters.items()}}
-        g = np.array([float(gi.subs(subs)) for gi in grad])
-        return _unit_normal(g, f"grad phi vanishes at {p}")
+        try:
+            g = np.array([float(gi.subs(subs)) for gi in grad])
+        except (TypeError, ValueError, OverflowError):  # complex or infinite: phi is undefined at p
+            g = np.full(3, np.nan)
+        if not np.isfinite(g).all():
+            raise HybridError(f"ImplicitSurface.phi = {shown(self.phi, 60)} is undefined at {tuple(p)} (grad phi = "
+                              f"{g.tolist()}): the surface has no normal there; give a point where phi and its "
+                              "gradient are finite numbers")
+        return _unit_normal(g, f"grad phi vanishes at {tuple(p)}")
 
     def phi_function(self):
         """``p -> (phi(p), grad phi(p))`` in NumPy, ``phi``'s parameters bound."""
@@ -226,7 +233,7 @@ def _build(node, args: list, symbols: dict, refuse) -> sp.Expr:
         refuse(f"the name {node.id!r} (not x, y, z, a parameter, a known function or pi, E)")
     value = node.value
     if not isinstance(value, (int, float)) or isinstance(value, bool) or not abs(value) < 1e300:
-        refuse(f"the constant {value!r:.30}")
+        refuse(f"the constant {shown(value, 30)}")
     return sp.Integer(value) if isinstance(value, int) else sp.Float(value)
 
 

@@ -13,6 +13,7 @@ surface it uses the surface's :meth:`~Surface.cross_section` (a :class:`CircleSe
 from __future__ import annotations
 
 import math
+import sys
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
@@ -21,7 +22,7 @@ import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.geometry.paths import CirclePath, LinePath
-from hybrid.spec.surface import FORMULAS, PARAMETERS, SurfaceSpec
+from hybrid.spec.surface import FORMULAS, NORMAL_TOL, PARAMETERS, SurfaceSpec
 from hybrid.validate import _finite, _point, unit_vector
 
 #: every surface class, by its kind (for files that name a surface by kind)
@@ -74,6 +75,21 @@ class Surface:
         xyz = sp.symbols("x y z", real=True)
         return numpy_phi(self.formula(xyz, [sp.Float(v) for v in self.as_array()], sp.sqrt), xyz)
 
+    def undefined_at(self, points) -> int | None:
+        """The index of the first of ``points`` (3 coordinates each) where the surface gives no contact:
+        ``phi`` or its gradient is not a finite number there (its formula undefined) or the gradient is 0
+        (no normal); None where every point has one (or the surface gives no ``phi``)."""
+        try:
+            phi = self.phi_function()
+        except HybridError:
+            return None
+        with np.errstate(all="ignore"):  # a closed form at its centre or axis divides by 0
+            for i, p in enumerate(np.asarray(points, float).reshape(-1, 3)):
+                value, grad = phi(p)
+                if not (math.isfinite(value) and 0.0 < float(np.linalg.norm(grad)) <= sys.float_info.max):
+                    return i
+        return None
+
     def project(self, p) -> np.ndarray | None:
         return None
 
@@ -98,16 +114,22 @@ def numpy_phi(phi, xyz) -> Callable[[np.ndarray], tuple[float, np.ndarray]]:
     import sympy as sp
 
     f = sp.lambdify(xyz, [phi, *(sp.diff(phi, v) for v in xyz)], modules="math")
+    undefined = (math.nan, np.full(3, math.nan))
 
     def evaluate(p):
-        value, *grad = f(*p)
-        return float(value), np.array(grad, float)
+        try:
+            value, *grad = f(*(float(v) for v in p))  # Python's floats: a domain error raises, as checked below
+            return float(value), np.array(grad, float)
+        except (ValueError, ZeroDivisionError, OverflowError, TypeError):
+            # the formula is undefined at p (the root or log of a negative number, a division by zero, a
+            # complex power): NaN, as the generated C gives it, for the plant to stop on
+            return undefined
     return evaluate
 
 
 def _unit_normal(g: np.ndarray, where: str) -> np.ndarray:
     norm = float(np.linalg.norm(g))
-    if not norm > 1e-12:
+    if not NORMAL_TOL < norm <= sys.float_info.max:
         raise HybridError(f"{where}, where the normal is undefined; give a point off it")
     return g / norm
 

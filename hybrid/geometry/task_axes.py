@@ -13,7 +13,7 @@ import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.geometry.surfaces import Surface
-from hybrid.validate import unit_vector
+from hybrid.validate import shown, unit_vector
 
 #: named task-axis selections: all six, position only, the planar arm's (t1, n)
 AXES = {"all": (0, 1, 2, 3, 4, 5), "position": (0, 1, 2), "planar": (0, 2)}
@@ -35,11 +35,11 @@ def check_axes(robot, axes) -> tuple[int, ...]:
         axes = AXES[axes]
     items = tuple(axes) if isinstance(axes, (tuple, list)) else None
     if items is None or not all(isinstance(i, (int, np.integer)) and not isinstance(i, bool) for i in items):
-        raise HybridError(f"axes = {axes!r:.60}; give a tuple of distinct task-axis indices 0-5 "
+        raise HybridError(f"axes = {shown(axes, 60)}; give a tuple of distinct task-axis indices 0-5 "
                           "(t1, t2, n, then rotations), or 'all', 'position', 'planar'")
     out = tuple(int(i) for i in items)  # in the user's order: a[k] acts on axis axes[k]
     if not out or len(set(out)) != len(out) or not all(0 <= i <= 5 for i in out):
-        raise HybridError(f"axes = {axes!r:.60}; give distinct task-axis indices 0-5")
+        raise HybridError(f"axes = {shown(axes, 60)}; give distinct task-axis indices 0-5")
     if len(out) > robot.n:
         raise HybridError(f"{len(out)} task axes need at least {len(out)} joints; the arm has {robot.n}")
     return out
@@ -61,7 +61,7 @@ def frame_direction_of(e) -> np.ndarray:
             raise ValueError
         return np.array(_unit_direction(tuple(arr.tolist())))
     except (TypeError, ValueError, OverflowError, HybridError):
-        raise HybridError(f"frame_direction = {e!r:.60}; give a nonzero direction (e_x, e_y, e_z) in base "
+        raise HybridError(f"frame_direction = {shown(e, 60)}; give a nonzero direction (e_x, e_y, e_z) in base "
                           "axes") from None
 
 

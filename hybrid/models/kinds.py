@@ -19,7 +19,7 @@ from hybrid.geometry.surfaces import Surface
 from hybrid.geometry.task_axes import AXES
 from hybrid.models.chain_terms import robot_terms
 from hybrid.models.planar_arm import Arm
-from hybrid.validate import finite_array
+from hybrid.validate import finite_array, shown
 
 
 class SerialChain:
@@ -151,7 +151,7 @@ class ClosedFormArm(SerialChain):
     def check_surface(self, surface) -> None:
         if surface.cross_section() is None:
             raise HybridError(f"the planar arm needs a planar surface (a hybrid.Circle or a 2-D hybrid.Plane: a "
-                              f"cylinder or a plane along base z), got {surface!r:.60}")
+                              f"cylinder or a plane along base z), got {shown(surface, 60)}")
 
     def section(self, surface):
         """The surface's cross-section in the arm's plane (:meth:`Surface.cross_section`)."""

@@ -24,7 +24,7 @@ from hybrid.models.urdf import JointLimits, LinkInertia, read_chain
 from hybrid.native import units
 from hybrid.native.binding import Unit
 from hybrid.spec import chain as rb
-from hybrid.validate import _finite, check_model_error, finite_array, inertia_problem
+from hybrid.validate import _finite, check_model_error, finite_array, inertia_problem, shown
 
 
 def _gravity(g) -> tuple[float, float, float]:
@@ -33,7 +33,7 @@ def _gravity(g) -> tuple[float, float, float]:
     except (TypeError, ValueError):
         arr = np.array([])
     if arr.shape != (3,) or not np.isfinite(arr).all():
-        raise HybridError(f"gravity = {g!r}; give three finite numbers (g_x, g_y, g_z) in m/s^2, base axes")
+        raise HybridError(f"gravity = {shown(g)}; give three finite numbers (g_x, g_y, g_z) in m/s^2, base axes")
     return tuple(map(float, arr))
 
 
@@ -62,7 +62,7 @@ class Robot:
     def __post_init__(self):
         if self.closed_form is not None:  # the planar arm's parameters are its closed form's, in one place
             if not isinstance(self.closed_form, Arm):
-                raise HybridError(f"closed_form = {self.closed_form!r:.60}; give a hybrid.Arm or None")
+                raise HybridError(f"closed_form = {shown(self.closed_form, 60)}; give a hybrid.Arm or None")
             chain, links, damping, gravity = _planar_parts(self.closed_form)
             for name, value in (("chain", chain), ("links", links), ("damping", damping), ("gravity", gravity)):
                 object.__setattr__(self, name, value)

@@ -20,7 +20,7 @@ import numpy as np
 from hybrid.errors import LargeModelWarning, URDFError
 from hybrid.files import read_user_text
 from hybrid.spec.chain import Chain, Joint, rotation_rpy
-from hybrid.validate import inertia_problem
+from hybrid.validate import inertia_problem, shown
 
 MOVING = ("revolute", "continuous", "prismatic")
 #: the largest URDF file read (a description, not a mesh)
@@ -274,7 +274,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
             raise URDFError(f"locked names joint '{name}', which {source} does not define")
         if not isinstance(value, (int, float, np.integer, np.floating)) or isinstance(value, bool) \
                 or not math.isfinite(value):
-            raise URDFError(f"locked['{name}'] = {value!r}; give a finite joint position (rad or m)")
+            raise URDFError(f"locked['{name}'] = {shown(value)}; give a finite joint position (rad or m)")
 
     # the chain: tip up to the root
     path_joints = []
@@ -431,12 +431,12 @@ def rigid_offset(path, tip: str, frame: str, locked: dict | None = None) -> tupl
     locked = dict(locked or {})
     for name in locked:
         if name not in tree.joints:
-            raise URDFError(f"locked names joint {name!r:.60}, which {tree.source} does not define")
+            raise URDFError(f"locked names joint {shown(name, 60)}, which {tree.source} does not define")
     for role, name in (("tip", tip), ("frame", frame)):
         if not isinstance(name, str) or name not in tree.links:
             near = difflib.get_close_matches(str(name), tree.links, n=1)
             hint = f"did you mean '{near[0]}'?" if near else f"links are: {', '.join(sorted(tree.links)[:12])}"
-            raise URDFError(f"{role} = {name!r:.60} is not a link of {tree.source}; give a link name ({hint})")
+            raise URDFError(f"{role} = {shown(name, 60)} is not a link of {tree.source}; give a link name ({hint})")
 
     def up(link: str) -> list[str]:
         """The joints from ``link`` up to the root, nearest first."""

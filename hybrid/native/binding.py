@@ -18,7 +18,7 @@ import numpy as np
 from hybrid.errors import HybridError, NonFiniteError, SingularConfigurationError, TaskFrameError
 from hybrid.native.loader import load_fastcall
 from hybrid.spec.interfaces import STATUS_NAMES
-from hybrid.validate import check_size
+from hybrid.validate import check_size, shown
 
 
 def status_error(status: int, where: str, singular_hint: str = "", **inputs) -> HybridError:
@@ -33,8 +33,9 @@ def status_error(status: int, where: str, singular_hint: str = "", **inputs) -> 
             f"pose, or lower singular_tol{shown}")
     if name == "FRAME_UNDEFINED":
         return TaskFrameError(
-            f"{where}: the task frame is undefined: its direction e is parallel to the surface normal there; "
-            f"choose another frame_direction (decoupling_law(..., frame_direction=...)){shown}")
+            f"{where}: the task frame is undefined: its direction e is parallel to the surface normal there, or the "
+            "surface has no normal there (grad phi vanishes or phi is undefined); choose another frame_direction "
+            f"or point{shown}")
     if name == "EULER_SINGULAR":
         return SingularConfigurationError(
             f"{where}: the ZYX Euler angles are singular (beta = +-pi/2, cos beta = 0); use coordinates='twist' "
@@ -69,7 +70,7 @@ def as_array(name: str, x, size: int, batched: bool | None = False) -> np.ndarra
         batched = arr is not None and arr.ndim == 2
     want = f"(N, {size}) with N >= 1" if batched else f"({size},)"
     if arr is None:
-        raise HybridError(f"{name} must be numbers of shape {want}, got {x!r:.80}")
+        raise HybridError(f"{name} must be numbers of shape {want}, got {shown(x, 80)}")
     if arr.ndim != (2 if batched else 1) or arr.shape[-1] != size or arr.shape[0] == 0:
         raise HybridError(f"{name} must have shape {want}, got {arr.shape}")
     return arr

@@ -26,6 +26,7 @@ from hybrid.native import checkout, generator
 from hybrid.native.cache import SLOW, checksum_matches, entry, once, write_checksum
 from hybrid.native.compiler import compile_extension, compiler, flags, processor
 from hybrid.spec.stamp import is_hand_edited
+from hybrid.validate import shown
 
 log = logging.getLogger("hybrid")
 
@@ -159,7 +160,7 @@ def _manifest_parts(src_dir: Path, prefix: str) -> int:
     except (NativeBuildError, AttributeError):
         return 1  # a unit read without its manifest is compiled whole, as any unit can be
     if not isinstance(parts, int) or isinstance(parts, bool) or not 1 <= parts <= 8:
-        raise NativeBuildError(f"the manifest {prefix}.json in {src_dir} says the unit has {parts!r:.40} parts; "
+        raise NativeBuildError(f"the manifest {prefix}.json in {src_dir} says the unit has {shown(parts, 40)} parts; "
                                "regenerate the unit")
     return parts
 

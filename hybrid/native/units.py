@@ -23,7 +23,7 @@ from hybrid.native.binding import Unit
 from hybrid.native.cache import generated_unit
 from hybrid.spec import stamp
 from hybrid.spec.interfaces import PRINTERS
-from hybrid.validate import c_identifier
+from hybrid.validate import c_identifier, shown
 
 #: what a singular planar pose means, added to SingularConfigurationError messages
 PLANAR_SINGULAR = " (elbow q2 near 0 or pi)"
@@ -34,7 +34,7 @@ BACKENDS = PRINTERS
 def planar_unit(backend: str) -> Unit:
     """The committed planar unit of ``backend``, bound from its manifest."""
     if not isinstance(backend, str) or backend not in BACKENDS:
-        raise HybridError(f"backend must be 'sympy' or 'casadi', got {backend!r:.40}")
+        raise HybridError(f"backend must be 'sympy' or 'casadi', got {shown(backend, 40)}")
     return _planar_unit(backend)
 
 

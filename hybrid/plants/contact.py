@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.validate import _finite, field_values
+from hybrid.validate import _finite, field_values, shown
 
 
 @dataclass(frozen=True)
@@ -62,29 +62,29 @@ class Sensor:
             v = getattr(self, name)
             _finite("Sensor", **{name: v})
             if v < 0:
-                raise HybridError(f"Sensor {name} = {v!r}; give a standard deviation >= 0 [{unit}] (0: no noise), "
+                raise HybridError(f"Sensor {name} = {shown(v)}; give a standard deviation >= 0 [{unit}] (0: no noise), "
                                   f"e.g. {name}={example}")
             object.__setattr__(self, name, float(v))
         object.__setattr__(self, "bias", _numbers("bias", self.bias, 6, "(f_x, f_y, f_z, m_x, m_y, m_z) [N, N m]"))
         if self.bandwidth_hz is not None:
             b = self.bandwidth_hz
             if not _real(b) or not math.isfinite(b) or b <= 0:
-                raise HybridError(f"Sensor bandwidth_hz = {b!r:.40}; give the lag's corner frequency in Hz (> 0), "
+                raise HybridError(f"Sensor bandwidth_hz = {shown(b, 40)}; give the lag's corner frequency in Hz (> 0), "
                                   "or None for no lag")
             object.__setattr__(self, "bandwidth_hz", float(b))
         d = self.delay_samples
         if not _real(d) or not math.isfinite(d) or d != int(d) or d < 0:
-            raise HybridError(f"Sensor delay_samples = {d!r:.40}; give a whole number of control samples >= 0 "
+            raise HybridError(f"Sensor delay_samples = {shown(d, 40)}; give a whole number of control samples >= 0 "
                               "(e.g. delay_samples=2: 20 ms at a 10 ms sample time)")
         object.__setattr__(self, "delay_samples", int(d))
         s = self.seed
         if not _real(s) or not math.isfinite(s) or s != int(s) or s < 0:
-            raise HybridError(f"Sensor seed = {s!r:.40}; give a whole number >= 0")
+            raise HybridError(f"Sensor seed = {shown(s, 40)}; give a whole number >= 0")
         object.__setattr__(self, "seed", int(s))
         for name in ("dropout_at", "dropout_duration"):
             v = getattr(self, name)
             if not _real(v) or not math.isfinite(v) or v < 0:
-                raise HybridError(f"Sensor {name} = {v!r:.40}; give a time >= 0 [s]")
+                raise HybridError(f"Sensor {name} = {shown(v, 40)}; give a time >= 0 [s]")
             object.__setattr__(self, name, float(v))
 
     @property
@@ -128,7 +128,7 @@ def _numbers(name: str, value, size: int, what: str) -> tuple[float, ...]:
         arr = np.full(1, np.nan)
     flags = isinstance(value, (list, tuple)) and any(isinstance(v, (bool, np.bool_)) for v in value)
     if arr.shape != (size,) or not np.isfinite(arr).all() or flags:
-        raise HybridError(f"Sensor {name} = {value!r:.60}; give {size} finite numbers: {what}")
+        raise HybridError(f"Sensor {name} = {shown(value, 60)}; give {size} finite numbers: {what}")
     return tuple(float(v) + 0.0 for v in arr)
 
 

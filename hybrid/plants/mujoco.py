@@ -30,6 +30,7 @@ is the generated plant's, computed from the state.
 from __future__ import annotations
 
 import math
+import sys
 from html import escape
 
 import numpy as np
@@ -259,8 +260,13 @@ class MujocoPlant(Plant):
         force = -Fc
         phi, grad = self._phi(s)
         norm = math.sqrt(grad @ grad)
-        normal = grad / norm if norm else grad
-        delta, speed = -phi / norm if norm else math.nan, normal @ sd
+        if not (math.isfinite(phi) and 0.0 < norm <= sys.float_info.max):
+            # no contact is defined here (the surface's formula is undefined at s, or it has no normal): the
+            # state goes NaN, as the generated plant's does, and the runner says where
+            data.qfrc_passive[n:] = math.nan
+            return
+        normal = grad / norm
+        delta, speed = -phi / norm, normal @ sd
         if delta > 0:
             N = max(0.0, c.stiffness * delta - c.damping * speed)
             slide = sd - speed * normal

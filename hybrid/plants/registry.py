@@ -12,6 +12,7 @@ from hybrid.errors import HybridError
 from hybrid.plants.interface import GeneratedPlant
 from hybrid.plants.planar import PlanarPlant
 from hybrid.plants.rigid_body import RigidBodyPlant
+from hybrid.validate import shown
 
 #: the plants a run can take, by name: each builds the plant of an experiment
 PLANTS: dict[str, Callable] = {}
@@ -54,5 +55,5 @@ def mujoco_plant(exp):
 def plant_for(exp, name: str):
     """The plant ``name`` of the experiment ``exp``."""
     if not isinstance(name, str) or name not in PLANTS:
-        raise HybridError(f"plant = {name!r:.40}; give one of {', '.join(repr(n) for n in PLANTS)}")
+        raise HybridError(f"plant = {shown(name, 40)}; give one of {', '.join(repr(n) for n in PLANTS)}")
     return PLANTS[name](exp)

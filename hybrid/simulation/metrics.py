@@ -7,6 +7,7 @@ import numpy as np
 from hybrid.errors import HybridError
 from hybrid.experiments.paper import Step
 from hybrid.spec.metrics import FIRST_TOUCH, METRIC_NAMES, PEAK_TORQUE, SETTLING_BAND, STEADY_WINDOW_S, TOUCH_BAND
+from hybrid.validate import shown
 
 
 def settling_time(t: np.ndarray, y: np.ndarray, target: float, band: float) -> float:
@@ -76,7 +77,7 @@ def metrics(t, force_normal, velocity_tangential, force_reference, speed_referen
         ("force_reference", force_reference), ("speed_reference", speed_reference)))
     for name, step in (("force_step", force_step), ("speed_step", speed_step)):
         if step is not None and not isinstance(step, Step):
-            raise HybridError(f"metrics: {name} = {step!r:.40}; give a hybrid.Step(before, after, at) or None")
+            raise HybridError(f"metrics: {name} = {shown(step, 40)}; give a hybrid.Step(before, after, at) or None")
     fs = force_step if force_step is not None else _step_of(t, Fd)
     vs = speed_step if speed_step is not None else _step_of(t, vd)
     end = t[-1]

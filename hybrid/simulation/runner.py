@@ -22,7 +22,7 @@ from hybrid.simulation.metrics import run_metrics
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.sensing import plant_reader
 from hybrid.spec.interfaces import STATUS_CODES
-from hybrid.validate import check_size
+from hybrid.validate import check_size, shown
 
 
 class SimulationError(HybridError):
@@ -118,6 +118,10 @@ def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
                 raise NonFiniteError(f"the controller's torque is {tau.tolist()} N m")
         except HybridError as exc:
             first, _, rest = str(exc).partition("\n")
+            # a frame or a result undefined: where the surface's formula is, that is why
+            tips = {"the arm tip r": _arm_tip(plant, x), "the sensor tip s": _sensor_tip(x, nq)}
+            where = _undefined_surface(exp, {k: v for k, v in tips.items() if v is not None})
+            first = f"{where}\n  {first}" if where else first
             raise SimulationError(
                 f"at t = {t:.4f} s: {first}\n  q = {np.round(q, 5).tolist()} rad, qdot = "
                 f"{np.round(qdot, 4).tolist()} rad/s" + (f"\n{rest}" if rest else ""),
@@ -152,7 +156,8 @@ def _divergence(partial: SimulationResult, plant, t: float, q, qdot, tau, x) -> 
     exp = partial.experiment
     t_fail = partial.t[-1] + exp.integration_step
     cond = plant.conditioning(q)
-    causes = [c.lstrip("; ") for c in (model_error_note(exp), _closest_singularity(partial, plant)) if c]
+    causes = [c.lstrip("; ") for c in (_left_the_surface(exp, x, len(q)), model_error_note(exp),
+                                       _closest_singularity(partial, plant)) if c]
     causes = causes or ["reduce integration_step or check gains and parameters"]
     return SimulationError(
         f"the plant state became NaN or infinite at t = {t_fail:.5f} s: {causes[0]}\n"
@@ -163,6 +168,66 @@ def _divergence(partial: SimulationResult, plant, t: float, q, qdot, tau, x) -> 
         f"  last finite state: q = {np.array2string(x[:len(q)], precision=4)} rad, qdot = "
         f"{np.array2string(x[len(q):2 * len(q)], precision=4)} rad/s",
         t_fail, partial)
+
+
+#: where along the integration step from the last finite state the sensor tip is looked at (fractions of
+#: the step, as its RK4 stages reach, and a little beyond)
+_STAGES = np.linspace(0.0, 1.5, 13)
+
+
+def _left_the_surface(exp, x: np.ndarray, nq: int) -> str:
+    """Where the sensor tip left the domain of the surface's formula in the integration step from the
+    last finite state ``x`` (a clause), or ''."""
+    s, sd = _sensor_tip(x, nq), x[2 * nq + 3:2 * nq + 6]
+    if s is None:
+        return ""
+    along = s + np.outer(_STAGES * exp.integration_step, sd)
+    i = exp.surface.undefined_at(along)
+    return "" if i is None else _undefined_surface(exp, {"the sensor tip s": along[i]})
+
+
+def _undefined_surface(exp, points: dict) -> str:
+    """'phi ... is undefined at <the first of ``points`` (by name) where it is>', or ''."""
+    names = list(points)
+    i = exp.surface.undefined_at([points[n] for n in names]) if names else None
+    if i is None:
+        return ""
+    formula = getattr(exp.surface, "phi", None)
+    what = f"the surface's phi = {shown(formula, 60)}" if formula is not None else f"the {exp.surface.kind}'s phi"
+    return (f"{what} is undefined (or has no normal) at {names[i]} = {np.round(points[names[i]], 5).tolist()} m; "
+            "keep the path where phi is defined, or write phi so that it is")
+
+
+def _sensor_tip(x: np.ndarray, nq: int) -> np.ndarray | None:
+    """The sensor tip ``s`` of a 3-D plant's state ``x = (q, q', s, s')`` (None for another plant)."""
+    return x[2 * nq:2 * nq + 3] if len(x) == 2 * nq + 6 else None
+
+
+def _arm_tip(plant, x: np.ndarray) -> np.ndarray | None:
+    """The arm tip ``r`` of the plant's output record at ``x`` (None where the record has none in 3-D)."""
+    names = plant.record["outputs"]
+    if not all(c in names for c in ("r_x", "r_y", "r_z")):
+        return None
+    row = plant._record_row(x)
+    return np.array([row[names.index(c)] for c in ("r_x", "r_y", "r_z")])
+
+
+def _check_signals(res: SimulationResult, plant) -> None:
+    """Stop a run whose record of what the metrics read (normal force, tangential speed, penetration,
+    contact force) is not a finite number at a row, as the compiled loop stops it: where and why (the
+    task frame or the contact undefined where a tip went), never metrics over NaN."""
+    signals = np.column_stack([res.force_normal, res.velocity_tangential, res.penetration, res.contact_force])
+    bad = np.flatnonzero(~np.isfinite(signals).all(axis=1))
+    if len(bad) == 0:
+        return
+    i, exp = int(bad[0]), res.experiment
+    x = res.state[i]
+    tips = {"the arm tip r": _arm_tip(plant, x), "the sensor tip s": _sensor_tip(x, plant.nq)}
+    why = _undefined_surface(exp, {k: v for k, v in tips.items() if v is not None})
+    raise SimulationError(
+        f"the run's force, speed or penetration became NaN or infinite at t = {res.t[i]:.5f} s: "
+        + (why or "the task frame at the arm tip is undefined there (its direction e parallel to the normal)"),
+        float(res.t[i]), _result(exp, plant, res.state[:max(i, 1)], res.tau[:max(i, 1)], False))
 
 
 def _closest_singularity(res: SimulationResult, plant, near: float = 0.1) -> str:
@@ -186,6 +251,7 @@ def _result(exp, plant, states: np.ndarray, taus: np.ndarray, metrics: bool | di
     res = SimulationResult(exp, t, states, taus, outputs, exp.force_reference.sampled(t),
                            exp.speed_reference.sampled(t), record=plant.record, normal_estimate=normals)
     if metrics is True:
+        _check_signals(res, plant)
         res.metrics = run_metrics(res)
     elif metrics:
         res.metrics = dict(metrics)

@@ -209,8 +209,8 @@ STATUSES = (
     Status("OK", 0, "a sample on time; tau is the law's, the integrals advanced"),
     Status("SINGULAR", 1, "the task Jacobian's conditioning is below singular_tol; tau is the torque last written"),
     Status("NONFINITE", 2, "the law's output is not finite; tau is the torque last written"),
-    Status("FRAME_UNDEFINED", 3, "the task frame's reference direction is parallel to the normal; tau is the "
-                                 "torque last written"),
+    Status("FRAME_UNDEFINED", 3, "the task frame's reference direction is parallel to the normal, or the surface "
+                                 "has no normal (grad phi 0 or not finite); tau is the torque last written"),
     Status("EULER_SINGULAR", 4, "cos(beta) of the tip's ZYX Euler angles is near 0; tau is the torque last written"),
     Status("INPUT_NONFINITE", 5, "t, q, qd or wrench is not finite; tau is the torque last written, nothing "
                                  "changed"),

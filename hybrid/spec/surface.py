@@ -10,6 +10,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+#: at or below this ``|grad phi|`` (and where it is not a finite number: the formula undefined there) a
+#: surface has no normal, and no task frame: the generated frame's guard and the runtime's ``normal_at`` say so
+NORMAL_TOL = 1e-12
+
 
 @dataclass(frozen=True)
 class SurfaceSpec:

@@ -11,6 +11,7 @@ from hybrid.errors import HybridError
 from hybrid.simulation import closed_loop
 from hybrid.sweeps.plan import run_points
 from hybrid.sweeps.space import apply
+from hybrid.validate import shown
 
 ENGINES = ("local", "dask")
 
@@ -87,7 +88,7 @@ def _check_address(address: str) -> None:
     host, _, port = rest.rpartition(":")
     if (sep and scheme not in SCHEMES) or not host or not port.isdigit() or not 0 < int(port) < 65536 \
             or any(c.isspace() for c in rest):
-        raise HybridError(f"the Dask scheduler address {address!r:.80} is not one; {usage}")
+        raise HybridError(f"the Dask scheduler address {shown(address, 80)} is not one; {usage}")
 
 
 def _connect(client, workers: int, timeout: float):

@@ -223,7 +223,7 @@ def check_names(base, names) -> None:
     for a, pa in paths.items():
         for b, pb in paths.items():
             if a != b and (pb == pa or pb.startswith(pa + ".")):
-                raise HybridError(f"parameters {a!r} and {b!r} set the same setting; keep one of them")
+                raise HybridError(f"parameters {shown(a)} and {shown(b)} set the same setting; keep one of them")
     for name in names:
         path = setting_path(name).split(".")
         obj = base

@@ -155,7 +155,7 @@ def _read_parts(out: Path, base, todo_all: list[tuple[int, dict]], force: bool) 
         try:
             frame = pd.read_parquet(part)
         except Exception as exc:  # noqa: BLE001 - pyarrow's errors are many; a part written by us reads
-            problem = f"it does not read as Parquet ({type(exc).__name__})"
+            problem = f"it does not read as Parquet ({type(exc).__name__}: cut short, or not a part)"
         else:
             names = list(todo_all[0][1]) if todo_all else []
             # a part written with a renamed setting's other name (before the rename, or after it)
