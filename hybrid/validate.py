@@ -181,6 +181,9 @@ def c_name_problem(name) -> str | None:
     if not _C_NAME.fullmatch(name):
         bad = next((c for c in name if not (c.isalnum() or c == "_")), None)
         return f"it has the character {bad!r}" if bad is not None else "it does not start with a letter"
+    if "__" in name or name.endswith("_"):
+        # the symbols are ``<name>_...``: a final _ doubles too
+        return "it has two _ in a row or ends with _ (C and CasADi keep names with __ for themselves)"
     if name.lower() in SYSTEM_HEADERS:
         return f"{name}.h would hide the header <{name.lower()}.h> from the sources built beside it (cc -I. ...)"
     if name in RESERVED_WORDS:
@@ -195,7 +198,7 @@ def check_c_name(what: str, name) -> str:
     if problem:
         hint = f", e.g. {c_identifier(name)!r}" if isinstance(name, str) else ""
         raise HybridError(f"{what} {shown(name, 60)} cannot name C symbols and files: {problem}; give another "
-                          f"(ASCII letters, digits and _, a letter first, at most {MAX_PREFIX}){hint}")
+                          f"(ASCII letters, digits and single _, a letter first, at most {MAX_PREFIX}){hint}")
     return name
 
 
@@ -211,20 +214,23 @@ def check_identifier(what: str, name, max_len: int = 64) -> str:
 
 def c_identifier(name: str) -> str:
     """``name`` made a name :func:`c_name_problem` accepts (the prefix of every emitted symbol and file,
-    derived from a robot's name): ASCII, a letter first, no system header's name nor a keyword (``math``
-    gives ``math_robot``), at most :data:`MAX_PREFIX` characters. Accents are dropped (``robôt`` gives
-    ``robot``); a name that had other non-ASCII characters, or was too long, gets a hash of it, so two
-    such names stay apart. The same name always gives the same prefix."""
+    derived from a robot's name): ASCII, a letter first, no ``__`` nor a final ``_`` (CasADi refuses them),
+    no system header's name nor a keyword (``math`` gives ``math_robot``), at most :data:`MAX_PREFIX`
+    characters. Accents are dropped (``robôt`` gives ``robot``); a name that had other non-ASCII
+    characters, or was too long, gets a hash of it, so two such names stay apart. The same name always
+    gives the same prefix."""
     if not isinstance(name, str):
         raise HybridError(f"a robot's name must be text, got {type(name).__name__}")
     letters = "".join(c for c in unicodedata.normalize("NFKD", name) if not unicodedata.combining(c))
     ident = re.sub(r"[^A-Za-z0-9_]", "_", letters.encode("ascii", "ignore").decode("ascii"))
-    ident = ident if re.match(r"[A-Za-z]", ident) else f"robot_{ident}"
+    ident = re.sub(r"__+", "_", ident).rstrip("_")
+    if not re.match(r"[A-Za-z]", ident):
+        ident = "robot" + (f"_{ident.lstrip('_')}" if ident else "")
     if ident.lower() in SYSTEM_HEADERS or ident in RESERVED_WORDS:
         ident = f"{ident}_robot"
     if not letters.isascii() or len(ident) > MAX_PREFIX:
         digest = hashlib.sha256(name.encode("utf-8", "surrogatepass")).hexdigest()
-        ident = f"{ident[:MAX_PREFIX - 13]}_{digest[:12]}"
+        ident = f"{ident[:MAX_PREFIX - 13].rstrip('_')}_{digest[:12]}"
     return ident
 
 

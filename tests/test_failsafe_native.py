@@ -38,7 +38,7 @@ def generate(tmp_path: Path, robot: str = "slider_arm", name: str | None = None)
 # ------------------------------------------------------------------ names
 
 
-@pytest.mark.parametrize("name", [*C_HEADERS, "Math", "STDIO", "hybrid_lanes", "for", "int", "null",
+@pytest.mark.parametrize("name", [*C_HEADERS, "Math", "STDIO", "hybrid_lanes", "for", "int", "null", "a__b", "arm_",
                                   "x" * 49, "bras_à_ressort", "_x", "1st"])
 def test_a_name_that_cannot_be_used_as_given_is_refused_and_nothing_written(tmp_path, name):
     with pytest.raises(HybridError) as info:
@@ -79,6 +79,35 @@ def test_the_longest_name_is_used_exactly_as_given(tmp_path):
     name = "a" * 47 + "z"
     written = generate(tmp_path, name=name)
     assert sorted(p.name for p in written) == [f"{name}.c", f"{name}.h", f"{name}.json"]
+
+
+@pytest.mark.parametrize("robot", ["math", "time", "for", "null", "arm__2", "arm_", "Roboter_ß", "Roboter_ä",
+                                   "ロボット", "αβ", "_", "x" * 300, "y" * 48 + "ß"])
+def test_every_derived_prefix_passes_the_one_check_and_casadi(robot):
+    casadi = pytest.importorskip("casadi")
+    from hybrid.validate import c_identifier, c_name_problem
+
+    prefix = c_identifier(robot)
+    assert c_name_problem(prefix) is None, prefix
+    # CasADi's own rule for a generated unit's name (independent of ours)
+    for name in (prefix, f"{prefix}_controller", f"{prefix}_plant"):
+        assert casadi.Function.check_name(name), name
+    assert c_identifier(robot) == prefix  # deterministic
+
+
+@pytest.mark.parametrize("robot", ["Roboter_ß", "Roboter_ä", "ロボット", "math"])
+def test_a_robot_name_that_is_no_c_name_gives_ascii_files_that_compile(tmp_path, robot):
+    written = generate(tmp_path, robot)
+    stems = {p.stem for p in written}
+    assert len(stems) == 1 and all(p.name.isascii() and p.read_bytes().isascii() for p in written)
+    (stem,) = stems
+    assert stem.lower() not in C_HEADERS and not (tmp_path / "out" / f"{robot}.h").exists()
+    if CC is not None:
+        proc = subprocess.run([CC, "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-c", f"{stem}.c", "-o",
+                               str(tmp_path / "x.o")], cwd=tmp_path / "out", capture_output=True, text=True)
+        assert proc.returncode == 0, proc.stderr[:2000]
+    shutil.rmtree(tmp_path / "out")
+    assert {p.name for p in generate(tmp_path, robot)} == {p.name for p in written}  # the same name again
 
 
 def test_a_user_name_is_refused_alike_by_the_controller_and_the_experiment(tmp_path):
