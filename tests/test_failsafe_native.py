@@ -118,3 +118,92 @@ def test_a_user_name_is_refused_alike_by_the_controller_and_the_experiment(tmp_p
             with pytest.raises(HybridError, match=why):
                 generate_c(tmp_path / "out", name)
     assert not (tmp_path / "out").exists()
+
+
+# ------------------------------------------------------------------ the cache's checksums
+
+#: a run that loads the UR5's compiled unit (and its one-state entry point) and prints numbers of it
+TERMS = ("import hybrid, numpy as np; t = hybrid.arm_terms(hybrid.ur5(), np.linspace(0.1, 0.6, 6), np.full(6, 0.2)); "
+         "print(t['B'].tolist(), t['r'].tolist())")
+
+
+def run_python(code: str, cache: Path, **env) -> subprocess.CompletedProcess:
+    """``code`` run by a fresh interpreter with the cache in ``cache``: a crash cannot take pytest with it."""
+    import os
+    import sys
+
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600,
+                          env={**os.environ, "HYBRID_CACHE_DIR": str(cache), **env})
+
+
+def cut(path: Path) -> None:
+    """``path`` truncated to half its length, in place (what a full disk or a killed copy leaves)."""
+    data = path.read_bytes()
+    path.write_bytes(data[:len(data) // 2])
+
+
+def test_a_damaged_cached_c_file_is_generated_again_not_copied(tmp_path, monkeypatch):
+    monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
+    ctrl = hybrid.read_controller_config(Path(hybrid.__file__).parent / "data" / "controller_ur5_sphere.toml",
+                                         hybrid.ur5())
+    first = {p.name: p.read_bytes() for p in ctrl.generate(tmp_path / "first", "ur5s")}
+    (cached,) = (tmp_path / "cache" / "units").glob("ur5s_*")
+    for k, name in enumerate(sorted(first)):
+        cut(cached / name)
+        again = {p.name: p.read_bytes() for p in ctrl.generate(tmp_path / f"again{k}", "ur5s")}
+        assert again == first, name
+        assert (cached / name).read_bytes() == first[name]  # the entry itself is whole again
+
+
+@pytest.mark.parametrize("forged", [False, True], ids=["checksum-differs", "checksum-forged"])
+def test_a_damaged_cached_library_is_rebuilt_not_loaded(tmp_path, forged):
+    """A library cut short is rebuilt, even when its manifest was rewritten to match it (the library is
+    then refused for parts past its end): the run gives the same numbers, and nothing crashes."""
+    import hashlib
+    import json
+
+    from hybrid.native.cache import library_intact
+
+    cache = tmp_path / "cache"
+    first = run_python(TERMS, cache)
+    assert first.returncode == 0, first.stderr
+    libraries = sorted(cache.glob("_*/*.so"))
+    assert len(libraries) >= 2  # the unit and its one-state entry point
+    for library in libraries:
+        cut(library)
+        if forged:
+            manifest = library.parent / "manifest.json"
+            record = json.loads(manifest.read_text())
+            record["sha256"] = hashlib.sha256(library.read_bytes()).hexdigest()
+            manifest.write_text(json.dumps(record))
+        again = run_python(TERMS, cache)
+        assert again.returncode == 0, f"{library.name}: exit {again.returncode}\n{again.stderr[-2000:]}"
+        assert again.stdout == first.stdout
+        assert library_intact(library, library.parent / "manifest.json")  # rebuilt in place
+
+
+def test_a_damaged_cached_unit_file_is_generated_again(tmp_path):
+    cache = tmp_path / "cache"
+    first = run_python(TERMS, cache)
+    assert first.returncode == 0, first.stderr
+    (unit,) = (cache / "units").glob("hybrid_ur5_*")
+    whole = {p.name: p.read_bytes() for p in unit.glob("hybrid_ur5.*")}
+    assert len(whole) == 3
+    for name in sorted(whole):
+        cut(unit / name)
+        again = run_python(TERMS, cache)
+        assert again.returncode == 0 and again.stdout == first.stdout, again.stderr[-2000:]
+        assert (unit / name).read_bytes() == whole[name]
+
+
+def test_only_a_whole_elf_library_passes(tmp_path):
+    from hybrid.native.cache import _whole_elf
+
+    if CC is None or not hasattr(__import__("os"), "uname") or __import__("sys").platform == "darwin":
+        pytest.skip("needs an ELF system and a C compiler")
+    (tmp_path / "x.c").write_text("double twice(double x) { return 2 * x; }\n")
+    subprocess.run([CC, "-shared", "-fPIC", "x.c", "-o", "x.so"], cwd=tmp_path, check=True)
+    data = (tmp_path / "x.so").read_bytes()
+    assert _whole_elf(data)
+    for n in (0, 3, 40, 64, len(data) // 3, len(data) // 2, len(data) - 1):
+        assert not _whole_elf(data[:n]), n

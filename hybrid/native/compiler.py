@@ -21,7 +21,7 @@ from functools import cache
 from pathlib import Path
 
 from hybrid.errors import NativeBuildError
-from hybrid.native.cache import atomic_write, cache_dir
+from hybrid.native.cache import atomic_write, cache_dir, digest
 
 log = logging.getLogger("hybrid")
 
@@ -141,11 +141,12 @@ def _remember_identity(path: str, ident: str) -> None:
 
 
 def compile_extension(c_file: Path, target: Path, cc: str, ident: str, includes: list[str],
-                      parts: tuple[Path, ...] = ()) -> None:
+                      parts: tuple[Path, ...] = ()) -> str:
     """Compile ``c_file`` into the extension ``target`` (written atomically) with the compiler ``cc``
     whose identity is ``ident``; with ``parts``, the unit's parts: ``c_file`` (the binding, which then
     declares what it calls) is compiled with ``-DHL_PART=0`` and part ``n`` with ``-DHL_PART=n``, all at
-    once (one compiler each), then linked."""
+    once (one compiler each), then linked. Returns the checksum of the bytes the compiler wrote (the
+    cache records it: a copy that came out otherwise is never loaded)."""
     so = c_file.with_name(target.name)
     paths = [str(c_file.parent), *sorted({sysconfig.get_paths()["include"], sysconfig.get_paths()["platinclude"]}),
              *includes]
@@ -174,7 +175,9 @@ def compile_extension(c_file: Path, target: Path, cc: str, ident: str, includes:
     if not so.is_file() or so.stat().st_size == 0:
         raise NativeBuildError(f"the compiler {cc} exited 0 but wrote no library for {c_file.name}; "
                                "set CC to a working C compiler")
-    atomic_write(target, so.read_bytes())
+    data = so.read_bytes()
+    atomic_write(target, data)
+    return digest(data)
 
 
 def _run(cmd: list[str]) -> tuple[list[str], int, str]:

@@ -75,8 +75,7 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
                 f"'{variant['name']}' on a {spec.kind}, task axes {', '.join(ctrl.axis_names)}")
         return api.build_standalone_controller(step, prefix, what, info, values, stem).files
 
-    folder = cache.generated_unit(stem, key, make)
-    return {n: (folder / n).read_text() for n in (f"{stem}.c", f"{stem}.h", f"{stem}.json")}
+    return cache.generated_unit(stem, key, make)[1]
 
 
 def generate_experiment(exp, out, name: str | None = None, force: bool = False) -> list[Path]:
@@ -120,8 +119,7 @@ def plant_files(exp, prefix: str, x0) -> dict[str, str]:
                 f"contact with friction on a {surface}, advanced by RK4 with the torque held")
         return api.build_standalone_plant(rhs, outputs, force, prefix, what, info, values, backend).files
 
-    folder = cache.generated_unit(prefix, key, make)
-    return {n: (folder / n).read_text() for n in (f"{prefix}.c", f"{prefix}.h", f"{prefix}.json")}
+    return cache.generated_unit(prefix, key, make)[1]
 
 
 def write_files(out, files: dict[str, str], force: bool) -> list[Path]:
