@@ -207,3 +207,82 @@ def test_only_a_whole_elf_library_passes(tmp_path):
     assert _whole_elf(data)
     for n in (0, 3, 40, 64, len(data) // 3, len(data) // 2, len(data) - 1):
         assert not _whole_elf(data[:n]), n
+
+
+# ------------------------------------------------------------------ temporaries a killed run leaves
+
+#: a process that starts writing the file argv[1] (or, with argv[2], building in its folder) and dies
+#: before it can clean up: what SIGKILL leaves
+DIES_WRITING = """
+import os, sys
+from pathlib import Path
+from hybrid import files
+target = Path(sys.argv[1])
+if len(sys.argv) > 2:
+    building = files.temporary_folder(target.parent)
+    print(building.__enter__())
+else:
+    fd, name = files.temporary(target)
+    os.write(fd, b"half a file")
+    print(name)
+sys.stdout.flush()
+os._exit(9)
+"""
+
+
+def killed_write(target: Path, folder: bool = False) -> Path:
+    """The temporary a process left that died writing ``target`` (or building beside it)."""
+    import sys
+
+    proc = subprocess.run([sys.executable, "-c", DIES_WRITING, str(target), *(["folder"] if folder else [])],
+                          capture_output=True, text=True)
+    assert proc.returncode == 9, proc.stderr
+    left = Path(proc.stdout.strip())
+    assert left.exists() and left.parent == target.parent and left.name.startswith(".")
+    return left
+
+
+def test_a_killed_runs_temporaries_are_removed_by_the_next_write(tmp_path, monkeypatch):
+    """Output, the cache's files and its build folders: the next run removes what a killed one left,
+    and keeps a running process's."""
+    from hybrid import files
+
+    monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
+    ctrl = hybrid.read_controller_config(Path(hybrid.__file__).parent / "data" / "controller_ur5_sphere.toml",
+                                         hybrid.ur5())
+    first = {p.name: p.read_bytes() for p in ctrl.generate(tmp_path / "first", "ur5s")}
+    out = tmp_path / "out"
+    out.mkdir()
+    (cached,) = (tmp_path / "cache" / "units").glob("ur5s_*")
+    left = [killed_write(out / "ur5s.c"), killed_write(out / "ur5s.json"), killed_write(cached / "ur5s.h"),
+            killed_write(cached / "x", folder=True)]
+    fd, running = files.temporary(out / "ur5s.h")  # this process's, still writing
+    try:
+        (cached / "ur5s.c").write_text("cut")  # the entry is made again: its folder is written
+        written = ctrl.generate(out, "ur5s", force=True)
+        assert {p.name: p.read_bytes() for p in written} == first
+        assert [p for p in left if p.exists()] == []
+        assert Path(running).exists()
+    finally:
+        import os
+
+        os.close(fd)
+        Path(running).unlink()
+    assert sorted(p.name for p in out.iterdir()) == sorted(first)
+
+
+def test_an_old_temporary_of_another_machine_is_removed_and_others_files_are_kept(tmp_path):
+    import os
+
+    from hybrid import files
+
+    theirs = tmp_path / ".r.txt.abcdef-1-0123abcd.tmp.txt"  # not this machine's: judged by its age
+    fresh = tmp_path / ".q.txt.abcdef-1-0123abcd.tmp.txt"
+    mine = [tmp_path / ".r.txt.backup", tmp_path / ".notes", tmp_path / "r.txt.abcdef-1-0123abcd.tmp.txt"]
+    for path in (theirs, fresh, *mine):
+        path.write_text("x")
+    old = os.stat(theirs).st_mtime - files.STALE_AFTER - 60
+    os.utime(theirs, (old, old))
+    files.write_text(tmp_path / "r.txt", "whole")
+    assert not theirs.exists() and fresh.exists() and all(p.exists() for p in mine)
+    assert (tmp_path / "r.txt").read_text() == "whole"

@@ -133,9 +133,7 @@ def _remember_identity(path: str, ident: str) -> None:
     known[key] = ident
     try:
         _identities().parent.mkdir(parents=True, exist_ok=True)
-        tmp = _identities().with_name(f".compilers.{os.getpid()}.tmp")
-        tmp.write_text(json.dumps(known, indent=1, sort_keys=True))
-        os.replace(tmp, _identities())
+        atomic_write(_identities(), json.dumps(known, indent=1, sort_keys=True).encode())
     except OSError:
         pass
 

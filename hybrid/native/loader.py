@@ -13,7 +13,6 @@ import importlib.util
 import json
 import logging
 import sysconfig
-import tempfile
 import time
 from collections.abc import Callable
 from functools import cache
@@ -21,6 +20,7 @@ from pathlib import Path
 
 import cffi
 
+from hybrid import files
 from hybrid.errors import NativeBuildError
 from hybrid.native import checkout, generator
 from hybrid.native.cache import SLOW, entry, library_intact, once, write_checksum
@@ -74,7 +74,7 @@ def _cached_module(stem: str, key_material: dict, write_source: Callable[[str, P
     def make() -> None:
         log.info("hybrid: compiling %s with %s", name, cc, extra=SLOW)
         t0 = time.perf_counter()
-        with tempfile.TemporaryDirectory(dir=folder) as tmp:
+        with files.temporary_folder(folder) as tmp:
             c_file = Path(tmp) / f"{name}.c"
             write_source(name, c_file)
             checksum = compile_extension(c_file, so, cc, ident, includes, tuple(Path(tmp) / part for part in parts))
