@@ -286,3 +286,65 @@ def test_an_old_temporary_of_another_machine_is_removed_and_others_files_are_kep
     files.write_text(tmp_path / "r.txt", "whole")
     assert not theirs.exists() and fresh.exists() and all(p.exists() for p in mine)
     assert (tmp_path / "r.txt").read_text() == "whole"
+
+
+# ------------------------------------------------------------------ a compiler that writes nothing
+
+#: a "compiler" that runs, says who it is, logs every call and writes nothing
+SILENT_CC = """#!/bin/sh
+echo "$@" >> "$(dirname "$0")/calls.log"
+[ "$1" = "--version" ] && echo "silentcc 1.0"
+exit 0
+"""
+
+
+def silent_compiler(tmp_path: Path) -> Path:
+    cc = tmp_path / "bin" / "silentcc"
+    cc.parent.mkdir()
+    cc.write_text(SILENT_CC)
+    cc.chmod(0o755)
+    return cc
+
+
+def test_a_compiler_that_writes_nothing_is_one_error_and_tried_once(tmp_path):
+    cc = silent_compiler(tmp_path)
+    code = ("import hybrid\n"
+            "for scheme in ('task', 'khatib', 'raibert_craig'):\n"
+            "    try:\n"
+            "        hybrid.simulate(hybrid.paper_experiment(controller=scheme, duration=0.1))\n"
+            "    except hybrid.NativeBuildError as exc:\n"
+            "        print(type(exc).__name__, str(exc).splitlines()[0])\n")
+    proc = run_python(code, tmp_path / "cache", CC=str(cc))
+    assert proc.returncode == 0, proc.stderr
+    errors = proc.stdout.splitlines()
+    assert len(errors) == 3 and len(set(errors)) == 1, errors  # the same error each time
+    assert errors[0].startswith("CompilerUnusable ") and f"$CC={str(cc)!r}" in errors[0] and "set CC to" in errors[0]
+    assert "warning" not in proc.stderr.lower(), proc.stderr
+    builds = [line for line in (cc.parent / "calls.log").read_text().splitlines() if "-shared" in line]
+    assert len(builds) == 1, builds  # the first failure stopped every later attempt
+
+
+def test_the_command_line_says_a_silent_compiler_in_one_line(tmp_path):
+    import os
+    import sys
+
+    cc = silent_compiler(tmp_path)
+    proc = subprocess.run([sys.executable, "-m", "hybrid", "paper", "--out", str(tmp_path / "paper")],
+                          capture_output=True, text=True, timeout=600,
+                          env={**os.environ, "CC": str(cc), "HYBRID_CACHE_DIR": str(tmp_path / "cache")})
+    assert proc.returncode == 2
+    lines = [line for line in proc.stderr.splitlines() if not line.startswith("running ")]
+    assert len(lines) == 1 and lines[0].startswith("error: ") and "wrote no library" in lines[0], proc.stderr
+    assert "$CC=" in lines[0]
+
+
+def test_a_sweep_stops_at_a_silent_compiler_and_resumes_with_a_working_one(tmp_path):
+    """No run is stored as refused for want of a compiler: the sweep stops, and resumed with a working
+    compiler it runs them all."""
+    code = ("import hybrid; t = hybrid.sweep(hybrid.paper_experiment(duration=0.1), {'model_error': [0.0, 0.1]}, "
+            f"out={str(tmp_path / 'sweep')!r}, workers=1); print(sorted(t['status']))")
+    stopped = run_python(code, tmp_path / "cache", CC=str(silent_compiler(tmp_path)))
+    assert stopped.returncode != 0 and "CompilerUnusable" in stopped.stderr.splitlines()[-1], stopped.stderr
+    resumed = run_python(code, tmp_path / "cache", CC=CC or "cc")
+    assert resumed.returncode == 0, resumed.stderr
+    assert resumed.stdout.strip() == "['ok', 'ok']"

@@ -29,7 +29,8 @@ def run(code: str, **env) -> subprocess.CompletedProcess:
 def test_cc_naming_a_missing_program_is_an_error_not_a_fallback(tmp_path):
     proc = run(LAW, CC="no-such-compiler", HYBRID_CACHE_DIR=str(tmp_path))
     assert proc.returncode != 0
-    assert "NativeBuildError: $CC='no-such-compiler' names no program on PATH" in proc.stderr
+    # a NativeBuildError: the compiler can build nothing
+    assert "CompilerUnusable: $CC='no-such-compiler' names no program on PATH" in proc.stderr
     assert not list(tmp_path.rglob("*.so"))  # gcc was not used behind the user's back
 
 

@@ -87,9 +87,13 @@ def _loop(plant, variant: tuple, lanes: int | None = None) -> Loop:
 @cache
 def _available_loop(plant, variant: tuple, lanes: int | None = None) -> Loop | None:
     """:func:`_loop`, or None (said once) when it cannot be built here: its C needs GCC's or Clang's
-    vector extensions, and without them every run takes the Python runner."""
+    vector extensions, and without them every run takes the Python runner. A compiler that can build
+    nothing (:class:`~hybrid.native.compiler.CompilerUnusable`) is the run's error: the Python runner
+    needs it too."""
     try:
         return _loop(plant, variant, lanes)
+    except compiler.CompilerUnusable:
+        raise
     except NativeBuildError as exc:
         log.warning("hybrid: the compiled closed loop cannot be built (%s); runs take the Python runner",
                     str(exc).splitlines()[0])
