@@ -348,3 +348,52 @@ def test_a_sweep_stops_at_a_silent_compiler_and_resumes_with_a_working_one(tmp_p
     resumed = run_python(code, tmp_path / "cache", CC=CC or "cc")
     assert resumed.returncode == 0, resumed.stderr
     assert resumed.stdout.strip() == "['ok', 'ok']"
+
+
+# ------------------------------------------------------------------ a run's memory
+
+#: every way to run an experiment far too long for memory, in a process that may not allocate more than
+#: 3 GiB: each must be refused by the one memory check (a HybridError), quickly, not a MemoryError or a kill
+TOO_LONG = """
+import resource, sys, time
+import hybrid, hybrid.oracle
+from hybrid.simulation import closed_loop
+out = sys.argv[1]
+runs = {
+    "simulate": lambda exp: hybrid.simulate(exp),
+    "python runner": lambda exp: hybrid.simulate(exp, compiled=False),
+    "oracle": lambda exp: hybrid.oracle.simulate(exp),
+    "generate": lambda exp: exp.generate(out),
+    "sweep's run": lambda exp: closed_loop.prepare(exp),
+    "sweep": lambda exp: hybrid.sweep(exp, {"model_error": [0.0]}, workers=1).iloc[0]["error"],
+}
+experiments = {"paper": hybrid.paper_experiment(duration=1e9), "tracing": hybrid.tracing_experiment(duration=1e9)}
+resource.setrlimit(resource.RLIMIT_AS, (3 * 2**30, resource.getrlimit(resource.RLIMIT_AS)[1]))
+for kind, exp in experiments.items():
+    for what, run in runs.items():
+        if kind == "tracing" and what == "oracle":
+            continue  # the NumPy oracle runs the paper's arm only
+        t0 = time.perf_counter()
+        try:
+            said = f"returned {run(exp)!r:.200}"
+        except hybrid.HybridError as exc:
+            said = f"HybridError {str(exc).splitlines()[0]}"
+        except MemoryError as exc:
+            said = f"MemoryError {exc}"
+        print(f"{kind} {what}: {time.perf_counter() - t0:.1f} s: {said}", flush=True)
+"""
+
+
+def test_a_run_too_long_for_memory_is_refused_by_every_way_to_run_it(tmp_path):
+    import sys
+
+    proc = subprocess.run([sys.executable, "-c", TOO_LONG, str(tmp_path / "out")], capture_output=True, text=True,
+                          timeout=900)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    lines = proc.stdout.splitlines()
+    assert len(lines) == 11, proc.stdout
+    for line in lines:
+        took = float(line.split(": ")[1].split(" s")[0])
+        assert "whose record needs" in line and "shorten duration" in line and took < 60, line
+        assert "MemoryError" not in line and ("HybridError" in line or "sweep:" in line), line
+    assert not (tmp_path / "out").exists()

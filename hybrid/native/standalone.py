@@ -91,8 +91,7 @@ def generate_experiment(exp, out, name: str | None = None, force: bool = False) 
                           "sensor signal (noise, bias, lag, delay) or a wrench_sensor runs in Python only; leave them "
                           "out to generate it")
     ctrl = exp.build_controller()
-    x0 = exp.initial_state()
-    exp.check_path()
+    x0 = exp.checked_start()  # the run the C makes: refused where simulate refuses it
     files = controller_files(ctrl, prefix, f"{prefix}_controller") | plant_files(exp, f"{prefix}_plant", x0)
     return write_files(out, files, force)
 
