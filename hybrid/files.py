@@ -4,62 +4,129 @@ A file a user names is read by :func:`read_user_text`: a regular file only (a FI
 folder is refused before it is opened, so nothing blocks), of a bounded size, decoded as UTF-8.
 
 Every output goes to a temporary file in the target's folder and is renamed into place, so an
-interrupted run leaves either the old file or the new one, never half of one. A file-system
-failure (missing, read-only or non-folder parent, full disk) is a :class:`HybridError` naming
-the path and what to do.
+interrupted run leaves either the old file or the new one, never half of one. Every temporary file
+(and folder) of the library is named by one scheme, :func:`temporary`'s, that says whose it is: a
+write removes the temporaries in its folder that a process no longer running left (a killed run's).
+A file-system failure (missing, read-only or non-folder parent, full disk) is a :class:`HybridError`
+naming the path and what to do.
 """
 
 from __future__ import annotations
 
 import contextlib
 import fnmatch
+import hashlib
 import os
+import re
+import secrets
+import shutil
+import socket
 import stat
-import tempfile
+import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
 from hybrid.errors import HybridError
 from hybrid.validate import shown
 
+#: this machine, in a temporary's name (a short hash of its host name): the process ids in names are its own
+_HOST = hashlib.sha256(socket.gethostname().encode("utf-8", "replace")).hexdigest()[:6]
+#: a temporary of the library's: ``.<target>.<host>-<pid>-<random>.tmp<target's suffix>`` (the suffix last:
+#: writers such as NumPy's and Matplotlib's choose the format by it)
+_TEMPORARY = re.compile(r"\.(?P<target>.+)\.(?P<host>[0-9a-f]{6})-(?P<pid>[0-9]{1,12})-[0-9a-f]{8}\.tmp(\.[^.]*)?")
+#: a temporary this old is stale whoever made it (a process id of another machine, or reused) [s]
+STALE_AFTER = 24 * 3600
+#: the target of the probe :func:`writable_folder` writes
+_PROBE = "hybrid-probe"
 
-def _read_umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
 
-
-_UMASK = _read_umask()  # read once, at import: os.umask is process-wide
+def _temporary_name(path: Path) -> Path:
+    return path.parent / f".{path.name}.{_HOST}-{os.getpid()}-{secrets.token_hex(4)}.tmp{path.suffix}"
 
 
 def temporary(path: Path) -> tuple[int, str]:
-    """``(fd, name)`` of a new temporary file beside ``path``, with the permissions a plain
-    ``open`` would give (``mkstemp``'s 0600 would hide the result from other users)."""
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=path.suffix)
-    os.fchmod(fd, 0o666 & ~_UMASK)
-    return fd, tmp
+    """``(fd, name)`` of a new temporary file beside ``path`` (named ``.<name>.<host>-<pid>-<random>.tmp<suffix>``),
+    with the permissions a plain ``open`` would give. The stale temporaries of the folder (a killed
+    process's: :func:`remove_stale_temporaries`) are removed first."""
+    remove_stale_temporaries(path.parent)
+    while True:
+        tmp = _temporary_name(path)
+        try:
+            return os.open(tmp, os.O_RDWR | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0), 0o666), str(tmp)
+        except FileExistsError:  # the random part met another: draw again
+            continue
+
+
+@contextlib.contextmanager
+def temporary_folder(parent: Path, what: str = "build") -> Iterator[Path]:
+    """A new folder in ``parent``, named as :func:`temporary` names files (``what`` as its target), removed
+    with what it holds when the block ends; a killed process's is removed as a stale temporary."""
+    remove_stale_temporaries(parent)
+    folder = _temporary_name(parent / what)
+    folder.mkdir()
+    try:
+        yield folder
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def _temporaries(folder: Path) -> Iterator[tuple[Path, re.Match]]:
+    """The library's temporaries in ``folder``, each with its name parsed."""
+    try:
+        with os.scandir(folder) as entries:
+            found = [(Path(e.path), m) for e in entries if e.name.startswith(".")
+                     and (m := _TEMPORARY.fullmatch(e.name)) is not None]
+    except OSError:  # no folder (yet), or not readable: nothing of ours to remove
+        return iter(())
+    return iter(found)
+
+
+def _running(pid: int) -> bool:
+    """Whether a process ``pid`` runs on this machine (one of another user counts)."""
+    if pid <= 0 or os.name != "posix":
+        return os.name != "posix"  # elsewhere no cheap check: a temporary is stale by its age alone
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (OSError, OverflowError):
+        return True
+    return True
+
+
+def _stale(path: Path, name: re.Match) -> bool:
+    """Whether the temporary ``path`` is a leftover: its process (of this machine) no longer runs, or it is
+    older than :data:`STALE_AFTER`."""
+    try:
+        age = time.time() - path.lstat().st_mtime
+    except OSError:
+        return False
+    return age > STALE_AFTER or (name["host"] == _HOST and not _running(int(name["pid"])))
+
+
+def _remove(path: Path) -> None:
+    if path.is_dir() and not path.is_symlink():
+        shutil.rmtree(path, ignore_errors=True)
+    else:
+        path.unlink(missing_ok=True)
+
+
+def remove_stale_temporaries(folder: Path) -> None:
+    """Remove the temporaries in ``folder`` that a process no longer running (or long ago) left: what a
+    killed write, build or sweep left. Another running process's are kept."""
+    for path, name in _temporaries(folder):
+        if _stale(path, name):
+            with contextlib.suppress(OSError):
+                _remove(path)
 
 
 def leftovers(folder: Path, patterns) -> list[Path]:
-    """The temporary files :func:`temporary` made in ``folder`` for targets whose names match one of
-    ``patterns`` (``fnmatch`` patterns: ``"results.parquet"``, ``"part-*.parquet"``) and that nothing
-    renamed or removed: what a killed process left. The folder-probe files too."""
-    found = []
-    for path in Path(folder).glob(".*"):
-        name = path.name[1:]
-        if fnmatch.fnmatchcase(path.name, ".hybrid-probe-????????"):
-            found.append(path)
-            continue
-        for pattern in patterns:
-            suffix = Path(pattern).suffix
-            stem = name[:len(name) - len(suffix)] if suffix and name.endswith(suffix) else None
-            target, _, random = (stem or "").rpartition(".")
-            # mkstemp's random part: 8 characters of [a-z0-9_]
-            if target and len(random) == 8 and fnmatch.fnmatchcase(target, pattern) \
-                    and all(c.isdigit() or "a" <= c <= "z" or c == "_" for c in random):
-                found.append(path)
-                break
-    return [p for p in found if p.is_file()]
+    """The temporaries in ``folder`` (whoever made them) for targets whose names match one of ``patterns``
+    (``fnmatch`` patterns: ``"results.parquet"``, ``"part-*.parquet"``), and the probes of
+    :func:`writable_folder`: what a process that holds the folder's lock may remove, since no one else
+    writes there."""
+    return [path for path, name in _temporaries(folder) if path.is_file()
+            and (name["target"] == _PROBE or any(fnmatch.fnmatchcase(name["target"], p) for p in patterns))]
 
 
 def _why(exc: OSError) -> str:
@@ -83,8 +150,9 @@ def writable_folder(folder: Path, what: str = "output folder") -> Path:
         raise HybridError(f"the {what} {folder} is a file; give a folder (nothing was written)")
     try:
         folder.mkdir(parents=True, exist_ok=True)
-        with tempfile.NamedTemporaryFile(dir=folder, prefix=".hybrid-probe-"):
-            pass
+        fd, probe = temporary(folder / _PROBE)  # removes a killed run's temporaries too
+        os.close(fd)
+        os.unlink(probe)
     except OSError as exc:
         raise HybridError(f"the {what} {folder} is not writable ({_why(exc)}); choose another folder") from None
     return folder

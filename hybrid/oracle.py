@@ -15,7 +15,7 @@ import numpy as np
 from hybrid.errors import HybridError, NonFiniteError, SingularConfigurationError
 from hybrid.plants.planar import planar_record
 from hybrid.simulation.results import SimulationResult
-from hybrid.simulation.runner import check_memory, run
+from hybrid.simulation.runner import run
 from hybrid.validate import shown
 
 SURFACE_KINDS = ("plane", "circle")
@@ -316,7 +316,4 @@ def simulate(exp) -> SimulationResult:
     if exp.controller not in SCHEMES:
         raise HybridError(f"the NumPy oracle runs {' and '.join(SCHEMES)} only, not {shown(exp.controller)}")
     plant = NumpyPlant(exp)
-    check_memory(exp, plant.record)
-    x0 = exp.initial_state()
-    exp.check_path()
-    return run(exp, plant, NumpyController(exp), x0)
+    return run(exp, plant, NumpyController(exp), exp.checked_start(plant.record))

@@ -99,14 +99,32 @@ def _moments(eig) -> str:
     return ", ".join(f"{e:.4g}" for e in eig)
 
 
-#: the longest prefix of emitted symbols and file names (a longer name is cut and given a hash)
+#: the longest prefix of emitted symbols and file names: a user's longer name is refused, a derived one is
+#: cut and given a hash
 MAX_PREFIX = 48
-#: the longest name a user may give for a C prefix (one over :data:`MAX_PREFIX` is cut and given a hash)
-MAX_C_NAME = 1000
 #: an ASCII C name that reserves nothing: a letter first (C keeps ``_X`` and ``__`` names for itself)
 _C_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 #: an ASCII identifier (a symbol in a formula; it only reaches C inside comments)
 _ASCII_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+#: the headers a generated unit's name must not take: ``<name>.h`` beside the user's sources (built with
+#: ``-I.``, as the C interface's page shows) would hide the system's header of that name from every file
+#: that includes it. The C standard library's, common POSIX and compiler ones, and the project's own
+SYSTEM_HEADERS = frozenset((
+    "assert complex ctype errno fenv float inttypes iso646 limits locale math setjmp signal stdalign stdarg "
+    "stdatomic stdbool stdckdint stdbit stddef stdint stdio stdlib stdnoreturn string tgmath threads time uchar "
+    "wchar wctype "
+    "aio cpio dirent dlfcn fcntl fmtmsg fnmatch ftw glob grp iconv langinfo libgen monetary mqueue ndbm netdb "
+    "nl_types poll pthread pwd regex sched search semaphore spawn strings syslog tar termios trace ulimit unistd "
+    "utime utmpx wordexp alloca malloc memory features endian byteswap "
+    "immintrin smmintrin emmintrin xmmintrin arm_neon omp Python "
+    "hybrid_lanes").lower().split())
+#: C's keywords (C23's included) and the names CasADi's code generator keeps: the generated symbols start
+#: with the name, and CasADi refuses these as a unit's
+RESERVED_WORDS = frozenset((
+    "auto break case char const continue default do double else enum extern float for goto if inline int long "
+    "register restrict return short signed sizeof static struct switch typedef union unsigned void volatile "
+    "while bool true false nullptr alignas alignof constexpr static_assert thread_local typeof typeof_unqual "
+    "null jac hess").split())
 
 
 def shown(value, limit: int = 60) -> str:
@@ -148,7 +166,9 @@ def check_nesting(what: str, value, max_depth: int = MAX_NESTING) -> None:
 
 
 def c_name_problem(name) -> str | None:
-    """Why ``name`` cannot be used as it is for C symbols and file names, or None when it can."""
+    """Why ``name`` cannot be used as it is for C symbols and file names, or None when it can: the one
+    check of every name a generated unit's files and symbols take (a user's, and one derived by
+    :func:`c_identifier`)."""
     if not isinstance(name, str):
         return f"it is a {type(name).__name__}, not text"
     bad = next((c for c in name if not c.isascii()), None)
@@ -156,22 +176,29 @@ def c_name_problem(name) -> str | None:
         return f"it has the non-ASCII character {bad!r} (U+{ord(bad):04X})"
     if not name:
         return "it is empty"
-    if len(name) > MAX_C_NAME:
-        return f"it has {len(name)} characters (at most {MAX_C_NAME})"
+    if len(name) > MAX_PREFIX:
+        return f"it has {len(name)} characters (at most {MAX_PREFIX})"
     if not _C_NAME.fullmatch(name):
         bad = next((c for c in name if not (c.isalnum() or c == "_")), None)
         return f"it has the character {bad!r}" if bad is not None else "it does not start with a letter"
+    if "__" in name or name.endswith("_"):
+        # the symbols are ``<name>_...``: a final _ doubles too
+        return "it has two _ in a row or ends with _ (C and CasADi keep names with __ for themselves)"
+    if name.lower() in SYSTEM_HEADERS:
+        return f"{name}.h would hide the header <{name.lower()}.h> from the sources built beside it (cc -I. ...)"
+    if name in RESERVED_WORDS:
+        return "it is a C keyword or a name CasADi's code generator keeps"
     return None
 
 
 def check_c_name(what: str, name) -> str:
-    """``name`` if it can prefix C symbols and file names as it is (ASCII letters, digits, ``_``,
-    a letter first); otherwise a HybridError that suggests a name that can."""
+    """``name`` if it can prefix C symbols and file names as it is (:func:`c_name_problem`); otherwise a
+    HybridError that suggests a name that can. A user's name is used as given or refused, never changed."""
     problem = c_name_problem(name)
     if problem:
         hint = f", e.g. {c_identifier(name)!r}" if isinstance(name, str) else ""
-        raise HybridError(f"{what} {shown(name, 60)} cannot name C symbols and files: {problem}; give ASCII "
-                          f"letters, digits and _, starting with a letter{hint}")
+        raise HybridError(f"{what} {shown(name, 60)} cannot name C symbols and files: {problem}; give another "
+                          f"(ASCII letters, digits and single _, a letter first, at most {MAX_PREFIX}){hint}")
     return name
 
 
@@ -186,17 +213,24 @@ def check_identifier(what: str, name, max_len: int = 64) -> str:
 
 
 def c_identifier(name: str) -> str:
-    """``name`` made a C identifier (the prefix of every emitted symbol and file): ASCII, a letter
-    first, at most :data:`MAX_PREFIX` characters. Accents are dropped (``robôt`` gives ``robot``);
-    a name that had other non-ASCII characters gets a hash of it, so two such names stay apart."""
+    """``name`` made a name :func:`c_name_problem` accepts (the prefix of every emitted symbol and file,
+    derived from a robot's name): ASCII, a letter first, no ``__`` nor a final ``_`` (CasADi refuses them),
+    no system header's name nor a keyword (``math`` gives ``math_robot``), at most :data:`MAX_PREFIX`
+    characters. Accents are dropped (``robôt`` gives ``robot``); a name that had other non-ASCII
+    characters, or was too long, gets a hash of it, so two such names stay apart. The same name always
+    gives the same prefix."""
     if not isinstance(name, str):
         raise HybridError(f"a robot's name must be text, got {type(name).__name__}")
     letters = "".join(c for c in unicodedata.normalize("NFKD", name) if not unicodedata.combining(c))
     ident = re.sub(r"[^A-Za-z0-9_]", "_", letters.encode("ascii", "ignore").decode("ascii"))
-    ident = ident if re.match(r"[A-Za-z]", ident) else f"robot_{ident}"
+    ident = re.sub(r"__+", "_", ident).rstrip("_")
+    if not re.match(r"[A-Za-z]", ident):
+        ident = "robot" + (f"_{ident.lstrip('_')}" if ident else "")
+    if ident.lower() in SYSTEM_HEADERS or ident in RESERVED_WORDS:
+        ident = f"{ident}_robot"
     if not letters.isascii() or len(ident) > MAX_PREFIX:
         digest = hashlib.sha256(name.encode("utf-8", "surrogatepass")).hexdigest()
-        ident = f"{ident[:MAX_PREFIX - 13]}_{digest[:12]}"
+        ident = f"{ident[:MAX_PREFIX - 13].rstrip('_')}_{digest[:12]}"
     return ident
 
 

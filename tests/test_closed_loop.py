@@ -184,9 +184,9 @@ def test_simulate_runs_the_compiled_loop_and_the_python_runner_agrees():
 
 
 def test_a_3d_record_too_big_for_memory_is_refused_before_the_run(monkeypatch):
-    import hybrid.simulation.runner as simulation
+    import hybrid.validate as validate
 
-    monkeypatch.setattr(simulation, "MEMORY_FRACTION", 1e-12)
+    monkeypatch.setattr(validate, "MEMORY_FRACTION", 1e-12)
     with pytest.raises(hybrid.HybridError, match="record needs"):
         hybrid.simulate(hybrid.tracing_experiment(duration=0.1))
 

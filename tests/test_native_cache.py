@@ -29,7 +29,8 @@ def run(code: str, **env) -> subprocess.CompletedProcess:
 def test_cc_naming_a_missing_program_is_an_error_not_a_fallback(tmp_path):
     proc = run(LAW, CC="no-such-compiler", HYBRID_CACHE_DIR=str(tmp_path))
     assert proc.returncode != 0
-    assert "NativeBuildError: $CC='no-such-compiler' names no program on PATH" in proc.stderr
+    # a NativeBuildError: the compiler can build nothing
+    assert "CompilerUnusable: $CC='no-such-compiler' names no program on PATH" in proc.stderr
     assert not list(tmp_path.rglob("*.so"))  # gcc was not used behind the user's back
 
 
@@ -48,7 +49,7 @@ def test_an_entry_that_matches_its_checksum_but_does_not_load_heals(tmp_path):
         so.write_bytes(b"\x7fELF not really a library")
         manifest = so.parent / "manifest.json"
         data = json.loads(manifest.read_text())
-        data["sha256"] = cache._sha256(so)  # the checksum agrees: only loading can tell
+        data["sha256"] = cache.digest(so.read_bytes())  # the checksum agrees: only loading can tell
         manifest.write_text(json.dumps(data))
     second = run(LAW, HYBRID_CACHE_DIR=str(tmp_path))
     assert second.returncode == 0, second.stderr

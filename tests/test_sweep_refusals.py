@@ -289,10 +289,12 @@ def test_a_part_whose_write_is_cut_short_is_not_there(tmp_path, monkeypatch):
 
 def test_what_an_interrupted_write_left_is_removed(tmp_path):
     out, whole, _ = _written(tmp_path)
-    left = [out / ".results.parquet.k2_9abcd.parquet", out / ".results.csv.zzzzzzzz.csv",
-            out / ".sweep.json.a1b2c3d4.json", out / "parts" / ".part-00000002-00000003.parquet.q1w2e3r4.parquet",
-            out / ".hybrid-probe-abcd1234"]
-    kept = [out / ".notes", out / ".results.parquet.backup", out / "parts" / ".keep.abcdefgh.parquet"]
+    # temporaries of any process (named as hybrid.files.temporary names them): the sweep's lock says none runs
+    left = [out / ".results.parquet.abc123-4242-0a1b2c3d.tmp.parquet", out / ".results.csv.abc123-1-ffffffff.tmp.csv",
+            out / ".sweep.json.0f0f0f-77-a1b2c3d4.tmp.json",
+            out / "parts" / ".part-00000002-00000003.parquet.abc123-5-01234567.tmp.parquet",
+            out / ".hybrid-probe.abc123-9-abcd1234.tmp"]
+    kept = [out / ".notes", out / ".results.parquet.backup", out / "parts" / ".keep.abc123-5-01234567.tmp.parquet"]
     for path in left + kept:
         path.write_text("half")
     pd.testing.assert_frame_equal(sweep(BASE, GRID, out=out, workers=1), whole)
@@ -311,7 +313,8 @@ def test_a_killed_sweep_leaves_nothing_the_next_one_keeps(tmp_path):
         time.sleep(0.02)
     proc.kill()
     proc.wait(timeout=60)
-    (out / "parts" / ".part-00000007-00000007.parquet.abcdefgh.parquet").write_text("half")  # as a kill mid-write
+    # as a kill mid-write leaves it
+    (out / "parts" / ".part-00000007-00000007.parquet.abc123-4242-abcdefab.tmp.parquet").write_text("half")
     table = sweep(hybrid.paper_experiment(duration=0.6), grid, out=out, workers=1)
     assert list(table["run"]) == list(range(8)) and not [p for p in out.rglob(".*") if p.name != ".lock"]
 

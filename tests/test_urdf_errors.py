@@ -181,8 +181,9 @@ def test_names_cannot_break_the_generated_c(tmp_path):
     robot = hybrid.Robot.from_urdf(path, tip="tool")
     assert np.allclose(robot.chain.joints[2].axis, (0.0, 0.6, 0.8))
     from hybrid.native.standalone import generate
+    from hybrid.validate import MAX_PREFIX
 
-    out = generate(path, "tool", tmp_path / "gen", name="x" * 300)
+    out = generate(path, "tool", tmp_path / "gen", name="x" * MAX_PREFIX)  # the longest name taken
     assert all(len(p.name) < 80 for p in out)
     c = next(p for p in out if p.suffix == ".c")
     cc = shutil.which("gcc") or shutil.which("cc")

@@ -132,7 +132,9 @@ def build_parser(prog: str = "hybrid") -> argparse.ArgumentParser:
     g.add_argument("--urdf", metavar="FILE", help="the robot's URDF file")
     g.add_argument("--tip", metavar="LINK", help="the link that ends the chain (e.g. tool0)")
     g.add_argument("--out", required=True, metavar="DIR", help="folder to write into")
-    g.add_argument("--name", metavar="PREFIX", help="prefix of the files and C symbols (default: the robot's name)")
+    g.add_argument("--name", metavar="PREFIX",
+                   help="prefix of the files and C symbols: ASCII letters, digits and single _, a letter first, "
+                   "not a C keyword or system header's name (default: made of the robot's name)")
     g.add_argument("--lock", action="append", type=_lock, default=[], metavar="JOINT[=POSITION]",
                    help="hold this joint at POSITION [rad or m] (default 0); repeatable")
     g.add_argument("--controller", metavar="CONFIG.toml",

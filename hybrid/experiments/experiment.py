@@ -292,6 +292,16 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         from."""
         return start_state(self).copy()
 
+    def checked_start(self, record: dict | None = None) -> np.ndarray:
+        """:meth:`initial_state`, after the checks every run of this experiment makes before anything
+        sized by its length is allocated: its record fits in memory (:meth:`check_memory`, with the
+        plant's ``record`` where the run keeps one), and its path stays in the workspace
+        (:meth:`check_path`). What ``simulate``, a sweep and ``generate`` start from."""
+        self.check_memory(record)
+        x0 = self.initial_state()
+        self.check_path()
+        return x0
+
     def check_path(self) -> None:
         """Refuse a run whose desired path leaves the arm's workspace (where the reach is known)."""
         reach, path = self.robot.reach(), self.followed_path()

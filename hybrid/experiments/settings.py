@@ -14,7 +14,7 @@ from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import RENAMED, renamed_settings
 from hybrid.errors import HybridError
 from hybrid.plants.contact import Contact, Sensor
-from hybrid.validate import _finite, check_singular_tol, shown
+from hybrid.validate import _finite, check_singular_tol, check_size, shown
 
 #: where the loops' task frame is taken: at the actual contact point or at the desired one
 FRAMES = ("actual", "desired")
@@ -36,6 +36,21 @@ class RunSettings:
     @property
     def n_samples(self) -> int:
         return math.ceil(self.duration / self.sample_time - 1e-9)
+
+    def check_memory(self, record: dict | None = None) -> None:
+        """Refuse, before anything sized by the run's length is allocated (its record, the path check's
+        arrays), a run whose record would not fit in memory (:func:`hybrid.validate.check_size`, with the
+        numbers). ``record``: the plant's columns (``state``, ``nq``, ``outputs``:
+        :func:`hybrid.plants.interface.plant_record`); without it, the least any plant keeps (the joints'
+        and the sensor tip's state and the torque). :meth:`Experiment.checked_start` calls it, before
+        every run: simulated, swept or generated."""
+        nq = self.robot.n
+        columns = (len(record["state"]) + record["nq"] + len(record["outputs"]) if record is not None
+                   else 2 * nq + 4 + nq)
+        steps = self.steps_per_sample * self.n_samples + 1
+        check_size(f"duration = {self.duration} s at integration_step = {self.integration_step} s is {steps:,} RK4 "
+                   "steps, whose record needs", steps * 8 * (columns + 3),  # doubles kept per RK4 step
+                   "shorten duration or lengthen integration_step")
 
     def effective_gains(self) -> Gains:
         """The gains in force: without integral action ``KI2v = KIf = 0``."""

@@ -3,18 +3,23 @@
 The cache lives under ``$HYBRID_CACHE_DIR`` (default ``~/.cache/hybrid``). An entry is named by a
 hash of everything it is built from, so a change to any of it makes a new entry instead of
 loading a stale one. Builds take a file lock and replace files atomically, so concurrent
-processes never see a partial file; a compiled library whose checksum does not match is
-rebuilt, not loaded.
+processes never see a partial file. The cache records the checksum (SHA-256) of every file it
+stores and verifies it at every read: a file that differs (truncated, damaged) is a cache miss,
+built again, never copied to a user or loaded; a library whose parts reach past its end is not
+loaded either.
 """
 
 from __future__ import annotations
 
+import contextlib
 import fcntl
 import hashlib
 import json
 import logging
 import os
-from collections.abc import Callable
+import struct
+import sys
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 from hybrid import files
@@ -58,15 +63,27 @@ def atomic_write(path: Path, data: bytes) -> None:
         raise
 
 
+@contextlib.contextmanager
+def locked(folder: Path) -> Iterator[None]:
+    """Hold the build lock of ``folder`` (across processes) for the block."""
+    with open(folder / ".lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        yield
+
+
 def once(folder: Path, valid: Callable[[], bool], make: Callable[[], None]) -> None:
     """``make()`` unless ``valid()``, under a file lock in ``folder``: across processes one builds,
     the others wait and then find the result valid."""
     if valid():
         return
-    with open(folder / ".lock", "w") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
+    with locked(folder):
         if not valid():
             make()
+
+
+def digest(data: bytes) -> str:
+    """The checksum the cache records of a file's bytes."""
+    return hashlib.sha256(data).hexdigest()
 
 
 # ------------------------------------------------------------------ compiled libraries
@@ -85,21 +102,42 @@ def entry(stem: str, material: str) -> tuple[str, Path]:
     return name, folder
 
 
-def _sha256(path: Path) -> str:
-    return hashlib.sha256(path.read_bytes()).hexdigest()
-
-
-def checksum_matches(library: Path, manifest: Path) -> bool:
-    """Whether ``library`` is there and its checksum is the one ``manifest`` records."""
+def library_intact(library: Path, manifest: Path) -> bool:
+    """Whether ``library`` may be loaded: its checksum is the one ``manifest`` records, and it holds
+    every part its headers name (:func:`_whole_elf`)."""
     try:
-        return library.is_file() and json.loads(manifest.read_text())["sha256"] == _sha256(library)
-    except (OSError, ValueError, KeyError):
+        data = library.read_bytes()
+        return json.loads(manifest.read_text())["sha256"] == digest(data) and _whole_elf(data)
+    except (OSError, ValueError, KeyError, TypeError):
         return False
 
 
-def write_checksum(manifest: Path, library: Path, **facts) -> None:
-    """Record ``library``'s checksum (and ``facts`` about its build) in ``manifest``, atomically."""
-    atomic_write(manifest, json.dumps({"sha256": _sha256(library), **facts}).encode())
+def _whole_elf(data: bytes) -> bool:
+    """Whether an ELF file's program headers, the segments they map and its section headers all lie
+    within ``data``. A library cut short maps pages past its end, and the first touch of one kills
+    the process (SIGBUS) instead of failing to load: refused before it is loaded. A library is ELF
+    everywhere but on macOS (Mach-O, left to the checksum)."""
+    if data[:4] != b"\x7fELF":
+        return sys.platform == "darwin" and len(data) > 0
+    if len(data) < 64 or data[4] not in (1, 2) or data[5] not in (1, 2):
+        return False
+    wide, order = data[4] == 2, "<" if data[5] == 1 else ">"
+    header = struct.unpack_from(order + ("QQIHHHHHH" if wide else "IIIHHHHHH"), data, 32 if wide else 28)
+    phoff, shoff, _, _, phentsize, phnum, shentsize, shnum, _ = header
+    if phoff + phnum * phentsize > len(data) or shoff + shnum * shentsize > len(data):
+        return False
+    for k in range(phnum):
+        offset, filesz = (struct.unpack_from(order + "QQQQ", data, phoff + k * phentsize + 8)[::3] if wide
+                          else struct.unpack_from(order + "IIII", data, phoff + k * phentsize + 4)[::3])
+        if offset + filesz > len(data):
+            return False
+    return True
+
+
+def write_checksum(manifest: Path, checksum: str, **facts) -> None:
+    """Record a library's ``checksum`` (of the bytes written; and ``facts`` about its build) in
+    ``manifest``, atomically."""
+    atomic_write(manifest, json.dumps({"sha256": checksum, **facts}).encode())
 
 
 # ------------------------------------------------------------------ generated units
@@ -112,30 +150,48 @@ def write_unit_files(target: Path, files: dict[str, str]) -> None:
         atomic_write(target / name, text.encode())
 
 
-def generated_unit(stem: str, key_material: dict, generate: Callable[[], dict[str, str]]) -> Path:
-    """The folder holding the unit that ``generate()`` writes, generated once per key (cached).
+#: the record of a generated unit's folder: its files' names and checksums, written last
+RECORD = "complete.json"
 
-    Generation runs under a file lock; the files are written atomically, and a folder whose
-    files are missing is generated again.
+
+def stored_texts(folder: Path) -> dict[str, str] | None:
+    """The files of the unit stored in ``folder`` by name, each read once and verified against the
+    checksum recorded when it was stored; None when the record is missing or any file is missing or
+    differs (a cache miss)."""
+    try:
+        recorded = json.loads((folder / RECORD).read_text())["sha256"]
+        texts = {}
+        for name, checksum in recorded.items():
+            data = (folder / name).read_bytes()
+            if digest(data) != checksum:
+                return None
+            texts[name] = data.decode()
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        return None
+    return texts or None
+
+
+def generated_unit(stem: str, key_material: dict,
+                   generate: Callable[[], dict[str, str]]) -> tuple[Path, dict[str, str]]:
+    """``(folder, files)``: the unit that ``generate()`` writes (its files by name, verified
+    (:func:`stored_texts`)) and the folder holding it, generated once per key (cached).
+
+    Generation runs under a file lock; the files are written atomically, their checksums last, and a
+    folder whose files are missing or differ from their checksums is generated again.
     """
-    digest = hashlib.sha256(json.dumps(key_material, sort_keys=True).encode()).hexdigest()[:20]
-    folder = writable_cache() / "units" / f"{stem}_{digest}"
-    done = folder / "complete.json"
-
-    def valid() -> bool:
-        try:
-            names = json.loads(done.read_text())["files"]
-            return all((folder / n).is_file() for n in names)
-        except (OSError, ValueError, KeyError, TypeError):
-            return False
-
-    def make() -> None:
-        log.info("hybrid: generating the C of %s", stem, extra=SLOW)
-        files = generate()
-        write_unit_files(folder, files)
-        atomic_write(done, json.dumps({"files": sorted(files)}).encode())
-
-    if not valid():
-        folder.mkdir(parents=True, exist_ok=True)
-        once(folder, valid, make)
-    return folder
+    key = digest(json.dumps(key_material, sort_keys=True).encode())[:20]
+    folder = writable_cache() / "units" / f"{stem}_{key}"
+    texts = stored_texts(folder)
+    if texts is not None:
+        return folder, texts
+    folder.mkdir(parents=True, exist_ok=True)
+    with locked(folder):
+        texts = stored_texts(folder)  # another process may have made it meanwhile
+        if texts is None:
+            log.info("hybrid: generating the C of %s", stem, extra=SLOW)
+            texts = generate()
+            write_unit_files(folder, texts)
+            # "files" as well: a runtime that reads only the names finds the entry whole too
+            atomic_write(folder / RECORD, json.dumps({"files": sorted(texts), "sha256": {
+                n: digest(t.encode()) for n, t in texts.items()}}).encode())
+    return folder, texts

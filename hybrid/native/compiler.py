@@ -21,7 +21,7 @@ from functools import cache
 from pathlib import Path
 
 from hybrid.errors import NativeBuildError
-from hybrid.native.cache import atomic_write, cache_dir
+from hybrid.native.cache import atomic_write, cache_dir, digest
 
 log = logging.getLogger("hybrid")
 
@@ -62,24 +62,52 @@ def ready_for_threads() -> tuple[str, str]:
     return compiler()
 
 
+class CompilerUnusable(NativeBuildError):
+    """The C compiler can build nothing here: ``$CC`` names no program, none is installed, it does not
+    run, or it ran and wrote no library. Said once: every later build in the process raises it again
+    at once, without trying (no run falls back to the Python runner, which needs the compiler too)."""
+
+
+#: the first :class:`CompilerUnusable` of this process, by the value of ``$CC`` it met
+_unusable: dict[str, str] = {}
+
+
 def compiler() -> tuple[str, str]:
     """``(path, identity)`` of the C compiler: ``$CC`` when set (and then only it), else ``cc``,
-    else ``gcc``. Probed once per process and value of ``$CC``."""
-    return _compiler(os.environ.get("CC", ""))
+    else ``gcc``. Probed once per process and value of ``$CC``; a compiler found unusable
+    (:class:`CompilerUnusable`) is not tried again."""
+    cc_env = os.environ.get("CC", "")
+    if cc_env in _unusable:
+        raise CompilerUnusable(_unusable[cc_env])
+    try:
+        return _compiler(cc_env)
+    except CompilerUnusable as exc:
+        _unusable.setdefault(cc_env, str(exc))
+        raise
+
+
+def unusable(message: str) -> CompilerUnusable:
+    """A :class:`CompilerUnusable` saying ``message``, remembered: every later build raises it at once."""
+    _unusable.setdefault(os.environ.get("CC", ""), message)
+    return CompilerUnusable(message)
+
+
+def _chosen_by(cc_env: str) -> str:
+    return f"$CC={cc_env!r}" if cc_env.strip() else "cc or gcc on PATH ($CC unset)"
 
 
 @cache
 def _compiler(cc_env: str) -> tuple[str, str]:
+    why = _chosen_by(cc_env)
     if cc_env.strip():
-        name, why = cc_env.split()[0], f"$CC={cc_env!r}"
-        path = shutil.which(name)
+        path = shutil.which(cc_env.split()[0])
         if path is None:
-            raise NativeBuildError(f"$CC={cc_env!r} names no program on PATH; set CC to a C compiler's path, "
+            raise CompilerUnusable(f"$CC={cc_env!r} names no program on PATH; set CC to a C compiler's path, "
                                    "or unset it to use cc")
     else:
-        path, why = shutil.which("cc") or shutil.which("gcc"), "cc or gcc on PATH ($CC unset)"
+        path = shutil.which("cc") or shutil.which("gcc")
         if path is None:
-            raise NativeBuildError(
+            raise CompilerUnusable(
                 "no C compiler found (tried cc and gcc; $CC is unset): install one, e.g. `apt-get install gcc` "
                 "on Debian/Ubuntu or `xcode-select --install` on macOS, or set CC to its path")
     ident = _known_identity(path)
@@ -88,7 +116,7 @@ def _compiler(cc_env: str) -> tuple[str, str]:
             ident = subprocess.run([path, "--version"], capture_output=True, text=True, check=True,
                                    timeout=60).stdout.splitlines()[0]
         except (OSError, subprocess.SubprocessError, IndexError) as exc:
-            raise NativeBuildError(f"the C compiler {path} (chosen by {why}) does not run ({exc}); "
+            raise CompilerUnusable(f"the C compiler {path} (chosen by {why}) does not run ({exc}); "
                                    "reinstall it or set CC") from exc
         _remember_identity(path, ident)
     log.info("hybrid: C compiler %s (%s), chosen by %s", path, ident, why)
@@ -133,19 +161,18 @@ def _remember_identity(path: str, ident: str) -> None:
     known[key] = ident
     try:
         _identities().parent.mkdir(parents=True, exist_ok=True)
-        tmp = _identities().with_name(f".compilers.{os.getpid()}.tmp")
-        tmp.write_text(json.dumps(known, indent=1, sort_keys=True))
-        os.replace(tmp, _identities())
+        atomic_write(_identities(), json.dumps(known, indent=1, sort_keys=True).encode())
     except OSError:
         pass
 
 
 def compile_extension(c_file: Path, target: Path, cc: str, ident: str, includes: list[str],
-                      parts: tuple[Path, ...] = ()) -> None:
+                      parts: tuple[Path, ...] = ()) -> str:
     """Compile ``c_file`` into the extension ``target`` (written atomically) with the compiler ``cc``
     whose identity is ``ident``; with ``parts``, the unit's parts: ``c_file`` (the binding, which then
     declares what it calls) is compiled with ``-DHL_PART=0`` and part ``n`` with ``-DHL_PART=n``, all at
-    once (one compiler each), then linked."""
+    once (one compiler each), then linked. Returns the checksum of the bytes the compiler wrote (the
+    cache records it: a copy that came out otherwise is never loaded)."""
     so = c_file.with_name(target.name)
     paths = [str(c_file.parent), *sorted({sysconfig.get_paths()["include"], sysconfig.get_paths()["platinclude"]}),
              *includes]
@@ -172,9 +199,14 @@ def compile_extension(c_file: Path, target: Path, cc: str, ident: str, includes:
         raise NativeBuildError(f"compiling {c_file.name} with {cc} failed: {hint}\n"
                                f"$ {' '.join(cmd)}\n{stderr[-4000:]}")
     if not so.is_file() or so.stat().st_size == 0:
-        raise NativeBuildError(f"the compiler {cc} exited 0 but wrote no library for {c_file.name}; "
-                               "set CC to a working C compiler")
-    atomic_write(target, so.read_bytes())
+        # no build can succeed with it: said once, not tried again (CompilerUnusable)
+        cc_env = os.environ.get("CC", "")
+        raise unusable(f"the compiler {cc} (chosen by {_chosen_by(cc_env)}) exited 0 but wrote no library for "
+                       f"{c_file.name}; set CC to a working C compiler (e.g. CC=gcc)"
+                       + (", or unset it to use cc" if cc_env.strip() else ""))
+    data = so.read_bytes()
+    atomic_write(target, data)
+    return digest(data)
 
 
 def _run(cmd: list[str]) -> tuple[list[str], int, str]:

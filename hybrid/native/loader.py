@@ -13,7 +13,6 @@ import importlib.util
 import json
 import logging
 import sysconfig
-import tempfile
 import time
 from collections.abc import Callable
 from functools import cache
@@ -21,9 +20,10 @@ from pathlib import Path
 
 import cffi
 
+from hybrid import files
 from hybrid.errors import NativeBuildError
 from hybrid.native import checkout, generator
-from hybrid.native.cache import SLOW, checksum_matches, entry, once, write_checksum
+from hybrid.native.cache import SLOW, entry, library_intact, once, write_checksum
 from hybrid.native.compiler import compile_extension, compiler, flags, processor
 from hybrid.spec.stamp import is_hand_edited
 from hybrid.validate import shown
@@ -69,18 +69,18 @@ def _cached_module(stem: str, key_material: dict, write_source: Callable[[str, P
     so = folder / f"{name}{sysconfig.get_config_var('EXT_SUFFIX')}"
     manifest = folder / "manifest.json"
 
-    def valid() -> bool:
-        return checksum_matches(so, manifest)
+    def valid() -> bool:  # verified at every load: a damaged library is rebuilt, never loaded
+        return library_intact(so, manifest)
 
     def make() -> None:
         log.info("hybrid: compiling %s with %s", name, cc, extra=SLOW)
         t0 = time.perf_counter()
-        with tempfile.TemporaryDirectory(dir=folder) as tmp:
+        with files.temporary_folder(folder) as tmp:
             c_file = Path(tmp) / f"{name}.c"
             write_source(name, c_file)
-            compile_extension(c_file, so, cc, ident, includes, tuple(Path(tmp) / part for part in parts))
+            checksum = compile_extension(c_file, so, cc, ident, includes, tuple(Path(tmp) / part for part in parts))
         log.info("hybrid: compiled %s in %.1f s", name, time.perf_counter() - t0)
-        write_checksum(manifest, so, compiler=ident, flags=flags(ident))
+        write_checksum(manifest, checksum, compiler=ident, flags=flags(ident))
 
     def build() -> None:
         once(folder, valid, make)
@@ -129,9 +129,10 @@ def _read_unit(src_dir: Path, prefix: str) -> tuple[str, str]:
                                "run `python -m hybrid regenerate` in a checkout of the project") from None
 
 
-def _compile_unit(src_dir: Path, prefix: str):
-    """The unit ``<prefix>.c`` of ``src_dir`` compiled as a cffi module (``.ffi``, ``.lib``)."""
-    c_source, header = _read_unit(src_dir, prefix)
+def _compile_unit(src_dir: Path, prefix: str, texts: dict[str, str] | None = None):
+    """The unit ``<prefix>.c`` of ``src_dir`` compiled as a cffi module (``.ffi``, ``.lib``); with
+    ``texts``, its files as read already (by name: a cached unit's, verified against their checksums)."""
+    c_source, header = (texts[f"{prefix}.c"], texts[f"{prefix}.h"]) if texts else _read_unit(src_dir, prefix)
     cdef = cdef_of(header)
 
     def write_source(name: str, path: Path) -> None:
@@ -143,7 +144,7 @@ def _compile_unit(src_dir: Path, prefix: str):
         ffi.emit_c_code(str(path))
 
     # a unit whose manifest says it has parts: its own file once for each
-    n = _manifest_parts(src_dir, prefix)
+    n = _manifest_parts(src_dir, prefix, texts)
     parts = (f"{prefix}.c",) * n if n > 1 else ()
     # the header of the SIMD lanes, where the unit includes it: its text is part of the key
     lanes = generator.LANES_INCLUDE in c_source
@@ -153,10 +154,10 @@ def _compile_unit(src_dir: Path, prefix: str):
                                          **({"parts": n} if parts else {})}, write_source, includes, parts)
 
 
-def _manifest_parts(src_dir: Path, prefix: str) -> int:
+def _manifest_parts(src_dir: Path, prefix: str, texts: dict[str, str] | None = None) -> int:
     """How many parts the unit's manifest says it is compiled in (``parts``; 1 where it says none)."""
     try:
-        parts = read_manifest(src_dir, prefix).get("parts", 1)
+        parts = read_manifest(src_dir, prefix, texts).get("parts", 1)
     except (NativeBuildError, AttributeError):
         return 1  # a unit read without its manifest is compiled whole, as any unit can be
     if not isinstance(parts, int) or isinstance(parts, bool) or not 1 <= parts <= 8:
@@ -172,11 +173,12 @@ def _copy_unit(folder: Path, prefix: str, c_source: str, header: str) -> None:
     (folder / f"{prefix}.h").write_text(header)
 
 
-def read_manifest(src_dir: Path, prefix: str) -> dict:
-    """The interface description written by the generator beside ``<prefix>.c``."""
+def read_manifest(src_dir: Path, prefix: str, texts: dict[str, str] | None = None) -> dict:
+    """The interface description written by the generator beside ``<prefix>.c`` (in ``texts``, the
+    unit's files read already, where given)."""
     try:
-        return json.loads((src_dir / f"{prefix}.json").read_text())
-    except (OSError, ValueError) as exc:
+        return json.loads(texts[f"{prefix}.json"] if texts else (src_dir / f"{prefix}.json").read_text())
+    except (OSError, ValueError, KeyError) as exc:
         raise NativeBuildError(f"the manifest {prefix}.json in {src_dir} is missing or unreadable ({exc}); "
                                "regenerate the unit") from None
 
@@ -215,9 +217,10 @@ def manifest(backend: str = "sympy") -> dict:
     return read_manifest(source_dir(), f"hybrid_{backend}")
 
 
-def load_generated(src_dir: Path, prefix: str):
-    """Compile (cached) and load the unit ``<prefix>`` written into ``src_dir`` (a cffi module)."""
-    return _compile_unit(src_dir, prefix)
+def load_generated(src_dir: Path, prefix: str, texts: dict[str, str] | None = None):
+    """Compile (cached) and load the unit ``<prefix>`` written into ``src_dir`` (a cffi module); with
+    ``texts``, its files as read already (by name)."""
+    return _compile_unit(src_dir, prefix, texts)
 
 
 # ------------------------------------------------------------------ the one-state entry point

@@ -18,14 +18,15 @@ def generate(urdf, tip: str, out, name: str | None = None, locked: dict | None =
              force: bool = False, gravity=(0.0, 0.0, -9.81)) -> list[Path]:
     """Write standalone C99 for the arm of ``urdf`` (``<prefix>.c``, ``.h``, ``.json``) into ``out``.
 
-    ``name`` (ASCII letters, digits, ``_``, a letter first) prefixes the files and symbols; without it
-    a prefix is derived from the URDF's robot name. Refuses to overwrite files that differ from
+    ``name`` (:func:`hybrid.validate.c_name_problem`: ASCII letters, digits, single ``_``, a letter first,
+    not a C keyword or a system header's name) prefixes the files and symbols; without it a prefix is
+    derived from the URDF's robot name. Refuses to overwrite files that differ from
     what it would write unless ``force``.
     """
-    if name is not None:  # the user's own name is used as given or refused, never silently changed
-        check_c_name("--name", name)
+    if name is not None:
+        c_prefix(name, "--name")  # refused before the URDF is read
     parsed = read_chain(urdf, tip, locked)
-    prefix = c_identifier(parsed.name if name is None else name)
+    prefix = c_prefix(name, "--name", parsed.name)
     robot = Robot(parsed.name, parsed.chain, parsed.links, parsed.damping, gravity, parsed.limits)
     unit = generator.api().build_robot_unit(
         parsed.chain, prefix, units.robot_info(parsed.chain, parsed.name) | {"tip": tip},
@@ -33,13 +34,17 @@ def generate(urdf, tip: str, out, name: str | None = None, locked: dict | None =
     return write_files(out, unit.files, force)
 
 
+def c_prefix(name: str | None, what: str, derived_from: str = "") -> str:
+    """The prefix of the generated files and symbols: the user's ``name`` (their ``what``) as given or
+    refused (:func:`hybrid.validate.check_c_name`), never silently changed; without one, made of
+    ``derived_from`` (a robot's name) by :func:`hybrid.validate.c_identifier`."""
+    return check_c_name(what, name) if name is not None else c_identifier(derived_from)
+
+
 def generate_controller(ctrl, out, name: str | None = None, force: bool = False) -> list[Path]:
     """Write the controller ``ctrl`` (a :class:`hybrid.Controller`) as standalone C99 into ``out``:
     ``<prefix>.c``, ``.h`` and ``.json`` (see :meth:`hybrid.Controller.generate`)."""
-    if name is not None:
-        check_c_name("name", name)
-    prefix = c_identifier(f"{ctrl.robot.name}_controller" if name is None else name)
-    return write_files(out, controller_files(ctrl, prefix), force)
+    return write_files(out, controller_files(ctrl, c_prefix(name, "name", f"{ctrl.robot.name}_controller")), force)
 
 
 def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, str]:
@@ -71,8 +76,7 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
                 f"'{variant['name']}' on a {spec.kind}, task axes {', '.join(ctrl.axis_names)}")
         return api.build_standalone_controller(step, stop, prefix, what, info, values, stem).files
 
-    folder = cache.generated_unit(stem, key, make)
-    return {n: (folder / n).read_text() for n in (f"{stem}.c", f"{stem}.h", f"{stem}.json")}
+    return cache.generated_unit(stem, key, make)[1]
 
 
 def generate_experiment(exp, out, name: str | None = None, force: bool = False) -> list[Path]:
@@ -82,16 +86,13 @@ def generate_experiment(exp, out, name: str | None = None, force: bool = False) 
     (``<name>_plant.c``, ``.h``, ``.json``: the struct ``<name>_plant`` with the experiment's parameters,
     timing and start state; :func:`hybrid.codegen.api.build_standalone_plant`). ``name`` defaults to the robot's.
     Files in ``out`` with other content are refused unless ``force``."""
-    if name is not None:
-        check_c_name("name", name)
-    prefix = c_identifier(exp.robot.name if name is None else name)
+    prefix = c_prefix(name, "name", exp.robot.name)
     if not exp.sensor.ideal or exp.wrench_sensor is not None:
         raise HybridError("the standalone plant gives its sensor's force as the reading: an experiment with a "
                           "sensor signal (noise, bias, lag, delay) or a wrench_sensor runs in Python only; leave them "
                           "out to generate it")
     ctrl = exp.build_controller()
-    x0 = exp.initial_state()
-    exp.check_path()
+    x0 = exp.checked_start()  # the run the C makes: refused where simulate refuses it
     files = controller_files(ctrl, prefix, f"{prefix}_controller") | plant_files(exp, f"{prefix}_plant", x0)
     return write_files(out, files, force)
 
@@ -118,8 +119,7 @@ def plant_files(exp, prefix: str, x0) -> dict[str, str]:
                 f"contact with friction on a {surface}, advanced by RK4 with the torque held")
         return api.build_standalone_plant(rhs, outputs, force, prefix, what, info, values, backend).files
 
-    folder = cache.generated_unit(prefix, key, make)
-    return {n: (folder / n).read_text() for n in (f"{prefix}.c", f"{prefix}.h", f"{prefix}.json")}
+    return cache.generated_unit(prefix, key, make)[1]
 
 
 def write_files(out, files: dict[str, str], force: bool) -> list[Path]:

@@ -91,15 +91,17 @@ def compiled(prefix: str, key: dict, make) -> Unit:
     (cached by ``key``, the generator's fingerprint and the versions of SymPy and CasADi); it is
     compiled (cached) and loaded when first used."""
     committed = _committed_folder(prefix, key)
-    folder = committed or generated_unit(prefix, {**key, "generator": generator.fingerprint(),
-                                                        **_tool_versions(), "prefix": prefix}, lambda: make().files)
+    # a cached unit's files are read once, verified against their checksums, and compiled as read
+    folder, texts = (committed, None) if committed else generated_unit(
+        prefix, {**key, "generator": generator.fingerprint(), **_tool_versions(), "prefix": prefix},
+        lambda: make().files)
 
     def load():
         if committed:  # C in generated/ a user may have edited: said, and used as it is
             loader.warn_if_hand_edited(folder, {n: (folder / n).read_text() for n in (f"{prefix}.c", f"{prefix}.h")})
-        return loader.load_generated(folder, prefix)
+        return loader.load_generated(folder, prefix, texts)
 
-    return Unit(load, loader.read_manifest(folder, prefix),
+    return Unit(load, loader.read_manifest(folder, prefix, texts),
                 " (a wrist, elbow or shoulder singularity)",
                 {"qd": "qdot", "pd": "pdot"}, folder=folder)
 

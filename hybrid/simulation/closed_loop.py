@@ -87,9 +87,13 @@ def _loop(plant, variant: tuple, lanes: int | None = None) -> Loop:
 @cache
 def _available_loop(plant, variant: tuple, lanes: int | None = None) -> Loop | None:
     """:func:`_loop`, or None (said once) when it cannot be built here: its C needs GCC's or Clang's
-    vector extensions, and without them every run takes the Python runner."""
+    vector extensions, and without them every run takes the Python runner. A compiler that can build
+    nothing (:class:`~hybrid.native.compiler.CompilerUnusable`) is the run's error: the Python runner
+    needs it too."""
     try:
         return _loop(plant, variant, lanes)
+    except compiler.CompilerUnusable:
+        raise
     except NativeBuildError as exc:
         log.warning("hybrid: the compiled closed loop cannot be built (%s); runs take the Python runner",
                     str(exc).splitlines()[0])
@@ -116,7 +120,8 @@ def loop_of(exp, ctrl=None) -> tuple:
 def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None, ctrl=None) -> Prepared | None:
     """``exp`` (the paper's experiment or a 3-D one) as a row of the compiled loop, after the checks
     ``simulate`` makes of the settings (a refused experiment raises their HybridError; the record's
-    memory is ``simulate``'s to check: a sweep keeps none); None when it cannot run there: part of its
+    memory is checked as :meth:`~hybrid.Experiment.checked_start` checks it without a plant's record:
+    a sweep keeps none); None when it cannot run there: part of its
     controller runs in Python, or its sensor's signal is not the sensor's force itself (noise, bias, lag,
     delay: :mod:`hybrid.simulation.sensing`; a dropout runs here, the loop's fault reaction as the
     controller's). A given start state ``x0`` is the caller's, checked
@@ -127,8 +132,7 @@ def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None, ctrl=No
     if not ctrl.runs_in_c or not exp.sensor.clean:
         return None
     if x0 is None:
-        x0 = exp.initial_state()
-        exp.check_path()
+        x0 = exp.checked_start()
     given = _plant_blocks(exp)
     # the build for the lanes it will run in (lanes=1: a run alone); :func:`run` takes the other if it must
     loop = _available_loop(*loop_of(exp, ctrl), lanes)

@@ -15,14 +15,13 @@ import numpy as np
 from hybrid.control.loops import model_error_note
 from hybrid.errors import HybridError, NonFiniteError
 from hybrid.experiments.experiment import Experiment
-from hybrid.plants.planar import planar_record
 from hybrid.plants.registry import plant_for
 from hybrid.simulation import closed_loop
 from hybrid.simulation.metrics import run_metrics
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.sensing import plant_reader
 from hybrid.spec.interfaces import STATUS_CODES
-from hybrid.validate import check_size, shown
+from hybrid.validate import shown
 
 
 class SimulationError(HybridError):
@@ -40,20 +39,6 @@ class SimulationError(HybridError):
 # -------------------------------------------------------------- initial state
 
 
-#: the most memory a run's record may take, as a fraction of the machine's
-MEMORY_FRACTION = 0.5
-
-
-def check_memory(exp, record: dict | None = None) -> None:
-    """Refuse, before any work, a run whose record would not fit in memory (with the numbers)."""
-    record = record or planar_record()
-    steps = exp.steps_per_sample * exp.n_samples + 1
-    per_step = 8 * (len(record["state"]) + record["nq"] + len(record["outputs"]) + 3)  # doubles kept per RK4 step
-    check_size(f"duration = {exp.duration} s at integration_step = {exp.integration_step} s is {steps:,} RK4 steps, "
-               "whose record needs", steps * per_step, "shorten duration or lengthen integration_step",
-               fraction=MEMORY_FRACTION)
-
-
 # ---------------------------------------------------------------------- runner
 
 
@@ -68,9 +53,7 @@ def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> Simulat
         raise HybridError(f"simulate() takes an experiment (see hybrid.paper_experiment() and "
                           f"hybrid.tracing_experiment()), got {type(exp).__name__}")
     model = plant_for(exp, plant)
-    check_memory(exp, model.record)  # before the path check, whose arrays grow with the run too
-    x0 = exp.initial_state()
-    exp.check_path()
+    x0 = exp.checked_start(model.record)  # the record's memory before anything sized by the run
     # the compiled loop runs the experiment's own generated plant
     return _compiled_or_run(exp, model, x0, compiled and isinstance(model, exp.plant_class))
 
@@ -89,11 +72,11 @@ def _compiled_or_run(exp, plant, x0: np.ndarray, compiled: bool = True) -> Simul
 
 
 def run(exp, plant, controller, x0: np.ndarray) -> SimulationResult:
-    """Run ``exp`` from the state ``x0`` with ``plant`` (see :mod:`hybrid.plants`) and
+    """Run ``exp`` from the state ``x0`` (:meth:`~hybrid.Experiment.checked_start`, given ``plant``'s
+    record: its memory is checked there) with ``plant`` (see :mod:`hybrid.plants`) and
     ``tau = controller(t, q, qdot, Fc)`` under zero-order hold. Where the sensor drops out
-    (``Sensor.dropout_duration``), the torque each faulted sample's error carries is applied (as a real arm's
-    loop does: the controller's fault reaction), elsewhere an error ends the run."""
-    check_memory(exp, plant.record)
+    (``Sensor.dropout_duration``), the torque each faulted sample's error carries is applied (as a real
+    arm's loop does: the controller's fault reaction), elsewhere an error ends the run."""
     x = np.array(x0, dtype=float)
     m, n_samples = exp.steps_per_sample, exp.n_samples
     total = m * n_samples

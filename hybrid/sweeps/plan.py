@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 from hybrid.errors import HybridError
 from hybrid.experiments.experiment import PHYSICS
+from hybrid.native.compiler import CompilerUnusable
 from hybrid.simulation import closed_loop
 from hybrid.simulation.runner import SimulationError, simulate
 from hybrid.spec.interfaces import STATUS_CODES
@@ -153,8 +154,10 @@ def _simulated_row(index: int, settings: dict, exp) -> dict:
 
 def _failure_row(index: int, settings: dict, exc: Exception) -> dict:
     """A run that did not finish: stopped while running (a result), refused before it started
-    (invalid settings), or a defect of ours (error)."""
-
+    (invalid settings), or a defect of ours (error). A compiler that can build nothing is no run's
+    result: it stops the sweep (its finished chunks are kept, to resume with a working one)."""
+    if isinstance(exc, CompilerUnusable):
+        raise exc
     status = ("failed" if isinstance(exc, SimulationError) else
               "invalid" if isinstance(exc, HybridError) else "error")
     cause = str(exc) if isinstance(exc, HybridError) else f"{type(exc).__name__}: {exc}"
