@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: fc12f35653d8074afd4592d7c48132b266bf63ab02d0940d7b233f5e88ef7cac */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 6ab9424b2da78946cfed46d8bd806bbd90edc6a2cf412b090641cff7a80c4e1a */
 /* hybrid_planar_arm_circle_controller_4b54e1a71151: the paper's closed loop on a circle: controller_step.
    Emitted by hybrid's codegen/closed_loop.py; it includes hybrid_lanes.h (in generated/: compile with -I there). */
 #if !defined(__GNUC__)
@@ -1195,6 +1195,8 @@ static inline __attribute__((always_inline)) void controller_step_lanes_core(con
     estimate_next[7] = v172;
     estimate_next[8] = v172;
     estimate_next[9] = v172;
+    estimate_next[10] = v172;
+    estimate_next[11] = v172;
     const hl_v v173 = pre[27];
     const hl_v v174 = v171 * v173;
     const hl_v v188 = hl_bool(v174 == 0.0);
@@ -1968,7 +1970,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         pre_step[CONTROLLER_STEP_LANES_NPRE];
     hl_v blk[128], x[8], xt[8], k1[8], k2[8], k3[8], k4[8], s[6], fc[6], z[4], tv[1],
         zero[13], base[6], last[3], y[14];
-    hl_v o_tau[2]; hl_v o_integrals_next[4]; hl_v o_a[2]; hl_v o_y[2]; hl_v o_f[2]; hl_v o_saturated[1]; hl_v o_filter_next[13]; hl_v o_estimate_next[10]; hl_v o_contact_wrench[6]; hl_v o_frame[1]; hl_v o_cond[1];
+    hl_v o_tau[2]; hl_v o_integrals_next[4]; hl_v o_a[2]; hl_v o_y[2]; hl_v o_f[2]; hl_v o_saturated[1]; hl_v o_filter_next[13]; hl_v o_estimate_next[12]; hl_v o_contact_wrench[6]; hl_v o_frame[1]; hl_v o_cond[1];
     lanes_run run;
     lanes_metrics mt;
     lanes_window win, win_end;
@@ -2015,7 +2017,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         at_sample = run.alive;  /* the lanes whose state this sample starts from is recorded */
         flag(&run, hl_fabs(o_frame[0]) < 1e-06, HYBRID_FRAME_UNDEFINED, k);
         flag(&run, hl_fabs(o_cond[0]) < singular_tol, HYBRID_SINGULAR, k);
-        flag(&run, hl_not_finite(o_tau, 2) | hl_not_finite(o_integrals_next, 4) | hl_not_finite(o_a, 2) | hl_not_finite(o_y, 2) | hl_not_finite(o_f, 2) | hl_not_finite(o_saturated, 1) | hl_not_finite(o_filter_next, 13) | hl_not_finite(o_estimate_next, 10) | hl_not_finite(o_contact_wrench, 6) | hl_not_finite(o_frame, 1) | hl_not_finite(o_cond, 1), HYBRID_NONFINITE, k);
+        flag(&run, hl_not_finite(o_tau, 2) | hl_not_finite(o_integrals_next, 4) | hl_not_finite(o_a, 2) | hl_not_finite(o_y, 2) | hl_not_finite(o_f, 2) | hl_not_finite(o_saturated, 1) | hl_not_finite(o_filter_next, 13) | hl_not_finite(o_estimate_next, 12) | hl_not_finite(o_contact_wrench, 6) | hl_not_finite(o_frame, 1) | hl_not_finite(o_cond, 1), HYBRID_NONFINITE, k);
         for (j = 0; j < 4; ++j) z[j] = o_integrals_next[j];
         /* the torque the rate limit starts from at the next sample */
         for (j = 0; j < 2; ++j) last[j] = o_tau[j];

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 31bd22711ca70988da06f9644acb56f8d109a303adc5a8b23ef964f455cc15d3 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 275d4cb1b2b5a8b5e53635af67db72e84224ba9ef9ec095060e0cea1baaa2a66 */
 /* hybrid_planar_arm_circle_raibert_cr_57176b91a5fa: the paper's closed loop on a circle: raibert_craig_step.
    Emitted by hybrid's codegen/closed_loop.py; it includes hybrid_lanes.h (in generated/: compile with -I there). */
 #if !defined(__GNUC__)
@@ -1218,6 +1218,8 @@ static inline __attribute__((always_inline)) void raibert_craig_step_lanes_core(
     estimate_next[7] = v192;
     estimate_next[8] = v192;
     estimate_next[9] = v192;
+    estimate_next[10] = v192;
+    estimate_next[11] = v192;
     const hl_v v193 = pre[27];
     const hl_v v194 = v191 * v193;
     const hl_v v208 = hl_bool(v194 == 0.0);
@@ -1854,7 +1856,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         pre_step[RAIBERT_CRAIG_STEP_LANES_NPRE];
     hl_v blk[128], x[8], xt[8], k1[8], k2[8], k3[8], k4[8], s[6], fc[6], z[4], tv[1],
         zero[13], base[6], last[3], y[14];
-    hl_v o_tau[2]; hl_v o_integrals_next[4]; hl_v o_a[2]; hl_v o_y[2]; hl_v o_f[2]; hl_v o_saturated[1]; hl_v o_filter_next[13]; hl_v o_estimate_next[10]; hl_v o_contact_wrench[6]; hl_v o_frame[1]; hl_v o_cond[1];
+    hl_v o_tau[2]; hl_v o_integrals_next[4]; hl_v o_a[2]; hl_v o_y[2]; hl_v o_f[2]; hl_v o_saturated[1]; hl_v o_filter_next[13]; hl_v o_estimate_next[12]; hl_v o_contact_wrench[6]; hl_v o_frame[1]; hl_v o_cond[1];
     lanes_run run;
     lanes_metrics mt;
     lanes_window win, win_end;
@@ -1901,7 +1903,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         at_sample = run.alive;  /* the lanes whose state this sample starts from is recorded */
         flag(&run, hl_fabs(o_frame[0]) < 1e-06, HYBRID_FRAME_UNDEFINED, k);
         flag(&run, hl_fabs(o_cond[0]) < singular_tol, HYBRID_SINGULAR, k);
-        flag(&run, hl_not_finite(o_tau, 2) | hl_not_finite(o_integrals_next, 4) | hl_not_finite(o_a, 2) | hl_not_finite(o_y, 2) | hl_not_finite(o_f, 2) | hl_not_finite(o_saturated, 1) | hl_not_finite(o_filter_next, 13) | hl_not_finite(o_estimate_next, 10) | hl_not_finite(o_contact_wrench, 6) | hl_not_finite(o_frame, 1) | hl_not_finite(o_cond, 1), HYBRID_NONFINITE, k);
+        flag(&run, hl_not_finite(o_tau, 2) | hl_not_finite(o_integrals_next, 4) | hl_not_finite(o_a, 2) | hl_not_finite(o_y, 2) | hl_not_finite(o_f, 2) | hl_not_finite(o_saturated, 1) | hl_not_finite(o_filter_next, 13) | hl_not_finite(o_estimate_next, 12) | hl_not_finite(o_contact_wrench, 6) | hl_not_finite(o_frame, 1) | hl_not_finite(o_cond, 1), HYBRID_NONFINITE, k);
         for (j = 0; j < 4; ++j) z[j] = o_integrals_next[j];
         /* the torque the rate limit starts from at the next sample */
         for (j = 0; j < 2; ++j) last[j] = o_tau[j];

@@ -76,12 +76,19 @@ class EstimatedSurface(Surface):
     rate_gain: float | None = None
     contact_threshold: float = 1.0
     min_speed: float = 0.01
-    compliance: float = 0.0
-    deflection_gate: float = 1.0
+    compliance: float | None = None
+    deflection_gate: float = 10.0
+    compliance_time_constant: float = float("inf")
+    compliance_information: float = 100.0
+    velocity_noise: float = 0.01
+    acquisition: float = 0.1
+    excitation: float = 20.0
     kind = "estimated"
     parameters_named = ("w_force", "w_velocity", "correct_friction", "force_time_constant",
                         "inverse_velocity_time_constant", "rate_gain", "contact_threshold", "min_speed", "n0_x", "n0_y",
-                        "n0_z", "compliance", "deflection_gate")
+                        "n0_z", "compliance", "deflection_gate", "compliance_information",
+                        "inverse_compliance_time_constant", "velocity_noise", "acquisition",
+                        "excitation")
 
     def __post_init__(self):
         if not isinstance(self.method, str) or self.method not in METHODS:
@@ -90,22 +97,30 @@ class EstimatedSurface(Surface):
             n = np.asarray(self.initial_normal, dtype=float)
         except (TypeError, ValueError):
             n = np.full(1, np.nan)
-        if n.shape != (3,) or not np.isfinite(n).all() or np.linalg.norm(n) < 1e-9:
+        if n.shape != (3,) or not np.isfinite(n).all() or not np.abs(n).max() > 0:
             raise HybridError(f"EstimatedSurface initial_normal = {self.initial_normal!r:.60}; give a nonzero "
                               "direction (3 finite numbers, base axes) from the surface towards the robot")
+        n = n / np.abs(n).max()  # first to 1 at most: the norm of a huge or tiny direction neither overflows nor is 0
         object.__setattr__(self, "initial_normal", tuple(float(v) for v in n / np.linalg.norm(n)))
         if self.rate_gain is None:
             object.__setattr__(self, "rate_gain", 1.0 if self.method == "fusion" else 0.0)
         for name, positive in (("force_time_constant", True), ("velocity_time_constant", True),
                                ("rate_gain", False),
                                ("contact_threshold", False), ("min_speed", False), ("compliance", False),
-                               ("deflection_gate", False)):
+                               ("deflection_gate", False), ("compliance_time_constant", True),
+                               ("compliance_information", True), ("velocity_noise", False), ("acquisition", True),
+                               ("excitation", False)):
             value = getattr(self, name)
+            if value is None and name == "compliance":
+                continue
             ok = not isinstance(value, bool) and isinstance(value, (int, float, np.integer, np.floating)) \
-                and np.isfinite(value) and (value > 0 if positive else value >= 0)
+                and (np.isfinite(value) or (name == "compliance_time_constant" and value == np.inf)) \
+                and (value > 0 if positive else value >= 0)
             if not ok:
                 raise HybridError(f"EstimatedSurface {name} = {value!r:.40}; give a finite number "
-                                  f"{'> 0' if positive else '>= 0'}")
+                                  f"{'> 0' if positive else '>= 0'}"
+                                  + {"compliance": " or None (estimated from nothing)",
+                                     "compliance_time_constant": " or inf (no forgetting)"}.get(name, ""))
             object.__setattr__(self, name, float(value))
 
     def spec(self) -> SurfaceSpec:
@@ -116,8 +131,9 @@ class EstimatedSurface(Surface):
         w_force, w_velocity, correct = METHODS[self.method]
         return np.array([w_force, w_velocity, correct, self.force_time_constant, 1.0 / self.velocity_time_constant,
                          self.rate_gain,
-                         self.contact_threshold, self.min_speed, *self.initial_normal, self.compliance,
-                         self.deflection_gate])
+                         self.contact_threshold, self.min_speed, *self.initial_normal, self.compliance or 0.0,
+                         self.deflection_gate, self.compliance_information, 1.0 / self.compliance_time_constant,
+                         self.velocity_noise, self.acquisition, self.excitation])
 
     def normal_at(self, p):
         raise HybridError("an EstimatedSurface has no normal of its own: the controller estimates it; give the "
@@ -132,11 +148,11 @@ class EstimatedSurface(Surface):
 
 
 def estimate_step(state: np.ndarray, tuning: np.ndarray, F, v, T: float) -> np.ndarray:
-    """One sample of the estimator (module docstring) in NumPy: the state ``(n, n', F, started)`` after it,
+    """One sample of the estimator (module docstring) in NumPy: the state :data:`ESTIMATE` after it,
     from the contact force ``F`` on the robot and the tip velocity ``v`` [base axes], ``tuning`` an
     :class:`EstimatedSurface`'s ``as_array()`` and ``T`` the sample time [s]."""
     w_force, w_velocity, correct, tau_f, inv_tau_v, rate_gain, f_min, v_min = tuning[:8]
-    compliance, gate = tuning[11], tuning[12]
+    c_prior, gate, info_prior, inv_tau_c, v_noise, acquisition, excitation = tuning[11:18]
     alpha = 1 - np.exp(-T / tau_f)
     kappa = rate_gain * alpha / (2 - alpha)
     started = state[9] != 0
@@ -144,8 +160,17 @@ def estimate_step(state: np.ndarray, tuning: np.ndarray, F, v, T: float) -> np.n
     rate = state[3:6] if started else np.zeros(3)
     m = (state[:3] if started else tuning[8:11]) + T * rate
     n_pred = m / np.linalg.norm(m)
+    c, info = (state[10], state[11]) if started else (c_prior, info_prior)
+    F_rate = (F - state[6:9]) / T if started else np.zeros(3)
+    # the compliance: the tip's normal velocity against the normal force's rate (recursive least squares,
+    # forgetting with tau_c), in contact
+    F_size = np.linalg.norm(F)
+    f_n = (n_pred @ F) * (F @ F_rate) / (F_size * F_size) if F_size > f_min else 0.0
+    f_n = f_n - np.clip(f_n, -excitation, excitation)
+    info = np.exp(-T * inv_tau_c) * info + f_n * f_n
+    c = max(c + f_n * (-(n_pred @ v) - c * f_n) / info, 0.0)
     # the contact point's velocity: the tip's and the tool's deflection's rate
-    deflection_rate = compliance * (F - state[6:9]) / T if started else np.zeros(3)
+    deflection_rate = c * F_rate
     v_c = v + deflection_rate
     vn = n_pred @ v_c
     v_t = v_c - vn * n_pred
@@ -166,9 +191,11 @@ def estimate_step(state: np.ndarray, tuning: np.ndarray, F, v, T: float) -> np.n
     n_force = F_perp / magnitude if touching else F_perp
     d = w_force * touching * alpha * (n_force - n_pred)
     if sliding and touching:
-        sigma = gate * np.linalg.norm(deflection_rate)
+        sigma = gate * (n_pred @ F_rate) * (c + v_noise / np.sqrt(info))
         d = d - w_velocity * inv_tau_v * T * vn / (speed * speed + sigma * sigma) * v_t
     m = n_pred + d
     n = m / np.linalg.norm(m)
+    # the rate takes the correction up to the acquisition's size: a larger one converges, it does not track
+    d = d * min(1.0, alpha * acquisition / max(np.linalg.norm(d), 1e-300))
     rate = rate + kappa / T * (d - (d @ n) * n)
-    return np.concatenate([n, rate - (rate @ n) * n, F, [1.0]])
+    return np.concatenate([n, rate - (rate @ n) * n, F, [1.0, c, info]])

@@ -63,8 +63,9 @@ SENSOR_CHECKS = ("finite",) * 13 + ("nonnegative",) + ("finite",) * 9 + ("below_
 #: Controller's attributes), and what each may be: the timing check's tolerance (-1: no check) and the
 #: least conditioning of the task Jacobian
 SETTING_CHECKS = {"timing_tolerance": "fraction_or_off", "singular_tol": "fraction"}
-#: the estimator's state: the normal estimate, its rate, the last force, 1 once started
-ESTIMATE = ("n_x", "n_y", "n_z", "ndot_x", "ndot_y", "ndot_z", "F_x", "F_y", "F_z", "started")
+#: the estimator's state: the normal estimate, its rate, the last force, 1 once started, the compliance's
+#: estimate and its information
+ESTIMATE = ("n_x", "n_y", "n_z", "ndot_x", "ndot_y", "ndot_z", "F_x", "F_y", "F_z", "started", "c", "c_information")
 #: a wrench's six numbers: force, then moment
 WRENCH = ("f_x", "f_y", "f_z", "m_x", "m_y", "m_z")
 
@@ -82,7 +83,8 @@ CONTROLLER_STEP = Interface(
         Port("filter", "13", "as the wrench (the sensor filter's state, two per component), then 1 once started",
              "the wrench filter's state", STATE),
         Port("estimate", f"{len(ESTIMATE)}",
-             "1, 1/s, N, 1 (the normal's estimate, its rate, the last force, 1 once started)",
+             "1, 1/s, N, 1, m/N, N^2/s^2 (the normal's estimate, its rate, the last force, 1 once started, the "
+             "compliance's estimate and its information)",
              "an estimated surface's state", STATE, ESTIMATE),
         Port("t", "1", "s", "the sample's time", ARGUMENT),
         Port("yd_extra", "m", "m/s, rad/s (velocity axes); N, N m (force axes)", "reference added per axis",
