@@ -240,7 +240,11 @@ def estimated_frame(state, s, F, v, e, T):
     tip_t = v - ca.dot(n_pred, v) * n_pred
     tip_speed = ca.norm_2(tip_t)
     pushed = tip_speed > v_min
-    u = ca.if_else(sliding, v_t / ca.if_else(sliding, speed, 1),
+    sigma = gate * ca.dot(n_pred, F_rate) * (c + v_noise / ca.sqrt(info))
+    # (alone, the force estimate takes the contact point's normal velocity into it, as far as the deflection's
+    # rate lets it: the friction's direction then holds the tilt along the motion)
+    sliding_dir = v_t + (1 - w_velocity) * speed * speed / ca.if_else(sliding, speed * speed + sigma * sigma, 1) * vn * n_pred
+    u = ca.if_else(sliding, sliding_dir / ca.if_else(sliding, ca.norm_2(sliding_dir), 1),
                    ca.if_else(pushed, tip_t / ca.if_else(pushed, tip_speed, 1), ca.SX.zeros(3, 1)))
     F_perp = F - correct * ca.dot(F, u) * u
     magnitude = ca.norm_2(F_perp)
@@ -248,7 +252,6 @@ def estimated_frame(state, s, F, v, e, T):
     n_force = F_perp / ca.if_else(touching, magnitude, 1)
     # the corrections: towards the force's direction, and the normal turned orthogonal to the contact point's
     # velocity (in contact; giving way to a fast-changing deflection, the velocity's least certain part)
-    sigma = gate * ca.dot(n_pred, F_rate) * (c + v_noise / ca.sqrt(info))
     velocity_on = ca.logic_and(sliding, touching)
     d_velocity = -w_velocity * inv_tau_v * T * vn / ca.if_else(velocity_on, speed * speed + sigma * sigma, 1) * v_t
     d = w_force * touching * alpha * (n_force - n_pred) + ca.if_else(velocity_on, d_velocity, ca.SX.zeros(3, 1))

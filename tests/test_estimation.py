@@ -147,8 +147,14 @@ def test_a_short_loss_of_contact_hardly_moves_the_estimate():
     assert err[:150].max() < 1e-9  # sliding at the normal: it stays
     assert err.max() < 2.0  # leaving and landing: the deflection's rate outweighs the normal velocity
     assert err[-1] < 1e-3
-    # without the deflection gate the contact point's normal velocity at lift-off and landing tilts it far
-    assert _errors(hybrid.EstimatedSurface(initial_normal=n, compliance=1e-3, deflection_gate=0.0), data).max() > 10
+    # so it does with the compliance unknown: learnt from the force's fall at lift-off
+    err = _errors(hybrid.EstimatedSurface(initial_normal=n), data)
+    assert err.max() < 2.0
+    assert err[-1] < 1e-3
+    # with the compliance held at 0 (a prior of overwhelming information) and without the deflection gate, the
+    # tip's normal velocity at lift-off and landing tilts it far
+    held = hybrid.EstimatedSurface(initial_normal=n, compliance=0.0, compliance_information=1e12, deflection_gate=0.0)
+    assert _errors(held, data).max() > 10
 
 
 def test_a_sticking_contact_takes_the_friction_along_the_tips_motion():
@@ -249,8 +255,9 @@ def test_closed_loop_at_friction_0_5(surface):
     exact = hybrid.tracing_experiment(v_d=0.15, contact=hybrid.Contact(friction=0.5), **kw)
     told, res = hybrid.simulate(exact), _estimated_run(exact)
     err = res.normal_angle_error_deg
-    assert err[res.sample_t >= 0.5].max() < 3.0  # the force step's sticking contact included
-    assert res.metrics["rms_force_error_N"] <= 1.5 * told.metrics["rms_force_error_N"]
+    assert err[res.sample_t >= 0.5].max() < 3.5  # the force step's sticking contact included
+    # (the metric reads the sensor's force in the task frame: see below for the contact's own force)
+    assert res.metrics["rms_force_error_N"] <= 1.6 * told.metrics["rms_force_error_N"]
     assert res.metrics["contact_losses"] == 0
     # the contact's normal force is nearer F_d than with the exact surface, whose frame is the arm tip's, which
     # runs ahead of the contact point by the friction's deflection (the metric above reads the force in it)

@@ -179,8 +179,12 @@ def estimate_step(state: np.ndarray, tuning: np.ndarray, F, v, T: float) -> np.n
     # the friction's direction: against the contact point's sliding, else (it sticks) against the tip's motion
     tip_t = v - (n_pred @ v) * n_pred
     tip_speed = np.linalg.norm(tip_t)
+    # (alone, the force estimate takes the contact point's normal velocity into it, as far as the deflection's
+    # rate lets it: the friction's direction then holds the tilt along the motion)
+    sigma = gate * (n_pred @ F_rate) * (c + v_noise / np.sqrt(info))
     if sliding:
-        u = v_t / speed
+        u = v_t + (1 - w_velocity) * speed * speed / (speed * speed + sigma * sigma) * vn * n_pred
+        u = u / np.linalg.norm(u)
     elif tip_speed > v_min:
         u = tip_t / tip_speed
     else:
@@ -191,7 +195,6 @@ def estimate_step(state: np.ndarray, tuning: np.ndarray, F, v, T: float) -> np.n
     n_force = F_perp / magnitude if touching else F_perp
     d = w_force * touching * alpha * (n_force - n_pred)
     if sliding and touching:
-        sigma = gate * (n_pred @ F_rate) * (c + v_noise / np.sqrt(info))
         d = d - w_velocity * inv_tau_v * T * vn / (speed * speed + sigma * sigma) * v_t
     m = n_pred + d
     n = m / np.linalg.norm(m)
