@@ -70,7 +70,7 @@ class EstimatedSurface(Surface):
     """
 
     method: str = "fusion"
-    initial_normal: tuple[float, float, float] = (0.0, 0.0, 1.0)
+    initial_normal: tuple[float, float, float] | None = None
     force_time_constant: float = 0.03
     velocity_time_constant: float = 0.03
     rate_gain: float | None = None
@@ -82,26 +82,31 @@ class EstimatedSurface(Surface):
     compliance_information: float = 100.0
     velocity_noise: float = 0.01
     acquisition: float = 0.1
-    excitation: float = 20.0
+    excitation: float = 5.0
+    max_curvature: float = 20.0
     kind = "estimated"
     parameters_named = ("w_force", "w_velocity", "correct_friction", "force_time_constant",
                         "inverse_velocity_time_constant", "rate_gain", "contact_threshold", "min_speed", "n0_x", "n0_y",
                         "n0_z", "compliance", "deflection_gate", "compliance_information",
                         "inverse_compliance_time_constant", "velocity_noise", "acquisition",
-                        "excitation")
+                        "excitation", "start_from_force",
+                        "max_curvature")
 
     def __post_init__(self):
         if not isinstance(self.method, str) or self.method not in METHODS:
             raise HybridError(f"EstimatedSurface method = {self.method!r:.40}; choose one of {', '.join(METHODS)}")
+        if self.initial_normal is None:
+            n = np.array([0.0, 0.0, 1.0])
         try:
-            n = np.asarray(self.initial_normal, dtype=float)
+            n = n if self.initial_normal is None else np.asarray(self.initial_normal, dtype=float)
         except (TypeError, ValueError):
             n = np.full(1, np.nan)
         if n.shape != (3,) or not np.isfinite(n).all() or not np.abs(n).max() > 0:
             raise HybridError(f"EstimatedSurface initial_normal = {self.initial_normal!r:.60}; give a nonzero "
                               "direction (3 finite numbers, base axes) from the surface towards the robot")
         n = n / np.abs(n).max()  # first to 1 at most: the norm of a huge or tiny direction neither overflows nor is 0
-        object.__setattr__(self, "initial_normal", tuple(float(v) for v in n / np.linalg.norm(n)))
+        if self.initial_normal is not None:
+            object.__setattr__(self, "initial_normal", tuple(float(v) for v in n / np.linalg.norm(n)))
         if self.rate_gain is None:
             object.__setattr__(self, "rate_gain", 1.0 if self.method == "fusion" else 0.0)
         for name, positive in (("force_time_constant", True), ("velocity_time_constant", True),
@@ -109,7 +114,7 @@ class EstimatedSurface(Surface):
                                ("contact_threshold", False), ("min_speed", False), ("compliance", False),
                                ("deflection_gate", False), ("compliance_time_constant", True),
                                ("compliance_information", True), ("velocity_noise", False), ("acquisition", True),
-                               ("excitation", False)):
+                               ("excitation", False), ("max_curvature", False)):
             value = getattr(self, name)
             if value is None and name == "compliance":
                 continue
@@ -131,9 +136,16 @@ class EstimatedSurface(Surface):
         w_force, w_velocity, correct = METHODS[self.method]
         return np.array([w_force, w_velocity, correct, self.force_time_constant, 1.0 / self.velocity_time_constant,
                          self.rate_gain,
-                         self.contact_threshold, self.min_speed, *self.initial_normal, self.compliance or 0.0,
+                         self.contact_threshold, self.min_speed, *self.start_normal, self.compliance or 0.0,
                          self.deflection_gate, self.compliance_information, 1.0 / self.compliance_time_constant,
-                         self.velocity_noise, self.acquisition, self.excitation])
+                         self.velocity_noise, self.acquisition, self.excitation,
+                         float(self.initial_normal is None), self.max_curvature])
+
+    @property
+    def start_normal(self) -> tuple[float, float, float]:
+        """The estimate before its first sample: ``initial_normal``, or base z until the first touch when
+        None."""
+        return (0.0, 0.0, 1.0) if self.initial_normal is None else self.initial_normal
 
     def normal_at(self, p):
         raise HybridError("an EstimatedSurface has no normal of its own: the controller estimates it; give the "
@@ -152,19 +164,23 @@ def estimate_step(state: np.ndarray, tuning: np.ndarray, F, v, T: float) -> np.n
     from the contact force ``F`` on the robot and the tip velocity ``v`` [base axes], ``tuning`` an
     :class:`EstimatedSurface`'s ``as_array()`` and ``T`` the sample time [s]."""
     w_force, w_velocity, correct, tau_f, inv_tau_v, rate_gain, f_min, v_min = tuning[:8]
-    c_prior, gate, info_prior, inv_tau_c, v_noise, acquisition, excitation = tuning[11:18]
+    c_prior, gate, info_prior, inv_tau_c, v_noise, acquisition, excitation, from_force, max_curvature = tuning[11:20]
     alpha = 1 - np.exp(-T / tau_f)
     kappa = rate_gain * alpha / (2 - alpha)
     started = state[9] != 0
     F, v = np.asarray(F, float), np.asarray(v, float)
+    F_size = np.linalg.norm(F)
+    if not started and from_force and not F_size > f_min:  # it starts at the first touch
+        return np.concatenate([tuning[8:11], np.zeros(3), F, [0.0, c_prior, info_prior]])
     rate = state[3:6] if started else np.zeros(3)
-    m = (state[:3] if started else tuning[8:11]) + T * rate
+    m = (state[:3] if started else F / F_size if from_force else tuning[8:11]) + T * rate
     n_pred = m / np.linalg.norm(m)
     c, info = (state[10], state[11]) if started else (c_prior, info_prior)
     F_rate = (F - state[6:9]) / T if started else np.zeros(3)
     # the compliance: the tip's normal velocity against the normal force's rate (recursive least squares,
     # forgetting with tau_c), in contact
-    F_size = np.linalg.norm(F)
+    # on the force's own rate along it (the estimate's tilt, turning with the sliding, stays out), beyond the
+    # excitation
     f_n = (n_pred @ F) * (F @ F_rate) / (F_size * F_size) if F_size > f_min else 0.0
     f_n = f_n - np.clip(f_n, -excitation, excitation)
     info = np.exp(-T * inv_tau_c) * info + f_n * f_n
@@ -201,4 +217,6 @@ def estimate_step(state: np.ndarray, tuning: np.ndarray, F, v, T: float) -> np.n
     # the rate takes the correction up to the acquisition's size: a larger one converges, it does not track
     d = d * min(1.0, alpha * acquisition / max(np.linalg.norm(d), 1e-300))
     rate = rate + kappa / T * (d - (d @ n) * n)
+    # no faster than the sliding along the sharpest curvature it follows
+    rate = rate * min(1.0, max_curvature * tip_speed / max(np.linalg.norm(rate), 1e-300))
     return np.concatenate([n, rate - (rate @ n) * n, F, [1.0, c, info]])
