@@ -179,8 +179,9 @@ def estimate_step(state: np.ndarray, tuning: np.ndarray, F, v, T: float) -> np.n
     F_rate = (F - state[6:9]) / T if started else np.zeros(3)
     # the compliance: the tip's normal velocity against the normal force's rate (recursive least squares,
     # forgetting with tau_c), in contact
-    # on the force's own rate along it (the estimate's tilt, turning with the sliding, stays out), beyond the
-    # excitation
+    # on the force's own rate along it (the estimate's tilt, turning with the sliding, stays out), less the
+    # excitation (a dead zone: it leans the compliance a little high, which the velocity correction bears
+    # better than low)
     f_n = (n_pred @ F) * (F @ F_rate) / (F_size * F_size) if F_size > f_min else 0.0
     f_n = f_n - np.clip(f_n, -excitation, excitation)
     info = np.exp(-T * inv_tau_c) * info + f_n * f_n
