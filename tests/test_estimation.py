@@ -255,7 +255,7 @@ def test_closed_loop_at_friction_0_5(surface):
     exact = hybrid.tracing_experiment(v_d=0.15, contact=hybrid.Contact(friction=0.5), **kw)
     told, res = hybrid.simulate(exact), _estimated_run(exact)
     err = res.normal_angle_error_deg
-    assert err[res.sample_t >= 0.5].max() < 3.5  # the force step's sticking contact included
+    assert err[res.sample_t >= 0.5].max() < 4.0  # the force step's sticking contact included
     # (the metric reads the sensor's force in the task frame: see below for the contact's own force)
     assert res.metrics["rms_force_error_N"] <= 1.6 * told.metrics["rms_force_error_N"]
     assert res.metrics["contact_losses"] == 0
@@ -307,7 +307,11 @@ def test_bad_estimators_are_refused():
     for kw, match in (({"initial_normal": (0, 0, 0)}, "initial_normal"), ({"initial_normal": (np.nan, 0, 1)},
                       "initial_normal"), ({"method": "magic"}, "method"), ({"force_time_constant": 0.0},
                       "force_time_constant"), ({"velocity_time_constant": -1.0}, "velocity_time_constant"),
-                      ({"compliance": -1e-3}, "compliance"), ({"rate_gain": float("inf")}, "rate_gain")):
+                      ({"compliance": -1e-3}, "compliance"), ({"rate_gain": float("inf")}, "rate_gain"),
+                      ({"compliance_time_constant": 0.0}, "compliance_time_constant"),
+                      ({"compliance_information": 0.0}, "compliance_information"),
+                      ({"excitation": float("nan")}, "excitation"), ({"max_curvature": -1.0}, "max_curvature"),
+                      ({"initial_normal": (1.0, float("inf"), 0.0)}, "initial_normal")):
         with pytest.raises(hybrid.HybridError, match=match):
             hybrid.EstimatedSurface(**kw)
     est = hybrid.EstimatedSurface()
