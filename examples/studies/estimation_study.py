@@ -263,6 +263,7 @@ def envelope_figure(rows: list[dict], out: Path) -> Path:
     """``estimation_envelope.png``: per factor, the largest angle after 0.5 s and after 1 s (left axis, log)
     and the force-error ratio (right axis) against the factor's value; the targets dashed (2 degrees, 1.5x)."""
     import matplotlib.pyplot as plt
+    from matplotlib import ticker
 
     factors = list(ENVELOPE)
     fig, axes = plt.subplots(2, (len(factors) + 1) // 2, figsize=(13, 6))
@@ -281,6 +282,10 @@ def envelope_figure(rows: list[dict], out: Path) -> Path:
         twin.set_ylabel("force error / exact's", fontsize=8, color="tab:red")
         if factor in ("compliance given", "sensor compliance"):
             ax.set_xscale("log")
+        for axis in (ax.xaxis, ax.yaxis) if factor in ("compliance given", "sensor compliance") else (ax.yaxis,):
+            axis.set_major_formatter(ticker.FormatStrFormatter("%g"))
+            axis.set_minor_formatter(ticker.NullFormatter())
+        ax.set_ylim(min(0.5, ax.get_ylim()[0]), max(3.0, ax.get_ylim()[1]))
         ax.tick_params(labelsize=7)
         twin.tick_params(labelsize=7)
     for ax in list(axes.flat)[len(factors):]:

@@ -57,15 +57,16 @@ friction correction holds. The velocity correction acts only in contact and abov
 **Where it holds** (the UR5 of the 3-D experiment, its defaults; examples/studies/estimation_study.py's
 envelope, each factor alone about the sphere at friction 0.2 and 0.15 m/s with the force step at 0.5 s;
 docs/studies/estimated_surface.md): within 2 degrees after 0.5 s and 1.5x the exact surface's force
-error from any start up to 90 degrees off, with a compliance given 0.1x-10x off or none, at 0.1-0.5 m/s,
-friction up to 0.35 and a radius down to 6 cm (the normal turning at 2.5 rad/s against the 30 ms
-time constants). It degrades at slow sliding (0.02-0.05 m/s: the force step costs 4-8 degrees for 0.3 s,
-the deflection then as fast as the sliding), at friction 0.5 and more during the force step (a sticking
-contact: 4-8 degrees), on a softer sensor (2 mm/N and more) and with sensor noise, its main limit: the
+error from any start up to 90 degrees off, with a compliance given 0.1x-10x off or none, at 0.05-0.5 m/s,
+friction up to 0.5 and a radius down to 6 cm (the normal turning at 2.5 rad/s against the 30 ms time
+constants). It degrades at slower sliding (0.02 m/s: the force step costs 4-5 degrees for 0.2 s, the
+deflection then faster than the sliding), during the force step at a contact that sticks through it
+(friction 0.5 on the cylinder at 0.15 m/s: up to 21 degrees for 0.3 s), on a sensor much softer or
+stiffer than the default's (2 mm/N: 9 degrees in the force step), and above all with sensor noise: the
 force's rate differentiated from a reading of 0.1 N noise (14 N/s a sample) blurs the deflection's rate
-and the compliance's fit (6 degrees after 0.5 s; 0.3 N: 19 degrees and 1.7x the force error; with the
-true compliance told and held, 6 and 11 degrees; a low-pass on the reading does not cure it, its lag
-turning the deflection's rate).
+and the compliance's fit (9 degrees after 0.5 s, 3 after 1 s; 0.3 N: 18 degrees and 2x the force error;
+with the true compliance told and held, 4 and 11 degrees; a low-pass on the reading does not cure it, its
+lag turning the deflection's rate).
 
 :func:`estimate_step` is the NumPy statement of one sample (the generated step's oracle).
 """
