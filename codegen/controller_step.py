@@ -227,9 +227,9 @@ def estimated_frame(state, s, F, v, e, T):
     n_pred = m / ca.norm_2(m)
     c, info = ca.if_else(started, state[10], c_prior), ca.if_else(started, state[11], info_prior)
     F_rate = started * (F - state[6:9]) / T
-    # the compliance: the tip's normal velocity against the normal force's rate (recursive least squares)
-    # on the force's own rate along it (the estimate's tilt, turning with the sliding, stays out), less the
-    # excitation (a dead zone: it leans the compliance a little high, which the velocity correction bears
+    # the compliance: the tip's normal velocity against the normal force's rate (recursive least squares), in
+    # contact; the force's own rate along it (the estimate's tilt, turning with the sliding, stays out), less
+    # the excitation (a dead zone: it leans the compliance a little high, which the velocity correction bears
     # better than low)
     along = ca.dot(F, F_rate) / ca.if_else(touching_at_all, F_size * F_size, 1)
     f_n = ca.if_else(touching_at_all, ca.dot(n_pred, F) * along, 0)

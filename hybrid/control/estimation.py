@@ -114,7 +114,8 @@ class EstimatedSurface(Surface):
     deflection_gate : >= 0: how far the velocity correction gives way to the deflection's normal rate
         (its innovation ``v_n |v_t| / (|v_t|^2 + sigma^2)`` instead of ``v_n / |v_t|``, ``sigma =
         deflection_gate (c + velocity_noise / sqrt(information)) |n . F'|``); 0: never.
-    velocity_noise : [m/s], >= 0: the velocity's uncertainty that makes the learnt compliance's.
+    velocity_noise : [m/s], >= 0: the tip velocity's uncertainty: the learnt compliance's is
+        ``velocity_noise / sqrt(information)``.
     acquisition : > 0: the largest correction the tracker's rate takes (as a multiple of the force's
         step ``1 - exp(-T / force_time_constant)``: 0.1 about 6 degrees at full gain).
     max_curvature : [1/m], >= 0: the estimate's rate is at most the tip's sliding speed times this.
@@ -139,9 +140,8 @@ class EstimatedSurface(Surface):
     parameters_named = ("w_force", "w_velocity", "correct_friction", "force_time_constant",
                         "inverse_velocity_time_constant", "rate_gain", "contact_threshold", "min_speed", "n0_x", "n0_y",
                         "n0_z", "compliance", "deflection_gate", "compliance_information",
-                        "inverse_compliance_time_constant", "velocity_noise", "acquisition",
-                        "excitation", "start_from_force",
-                        "max_curvature")
+                        "inverse_compliance_time_constant", "velocity_noise", "acquisition", "excitation",
+                        "start_from_force", "max_curvature")
 
     def __post_init__(self):
         if not isinstance(self.method, str) or self.method not in METHODS:
@@ -174,7 +174,7 @@ class EstimatedSurface(Surface):
             if not ok:
                 raise HybridError(f"EstimatedSurface {name} = {value!r:.40}; give a finite number "
                                   f"{'> 0' if positive else '>= 0'}"
-                                  + {"compliance": " or None (estimated from nothing)",
+                                  + {"compliance": " or None (learnt from 0)",
                                      "compliance_time_constant": " or inf (no forgetting)"}.get(name, ""))
             object.__setattr__(self, name, float(value))
 
@@ -228,10 +228,9 @@ def estimate_step(state: np.ndarray, tuning: np.ndarray, F, v, T: float) -> np.n
     c, info = (state[10], state[11]) if started else (c_prior, info_prior)
     F_rate = (F - state[6:9]) / T if started else np.zeros(3)
     # the compliance: the tip's normal velocity against the normal force's rate (recursive least squares,
-    # forgetting with tau_c), in contact
-    # on the force's own rate along it (the estimate's tilt, turning with the sliding, stays out), less the
-    # excitation (a dead zone: it leans the compliance a little high, which the velocity correction bears
-    # better than low)
+    # forgetting with tau_c), in contact; the force's own rate along it (the estimate's tilt, turning with the
+    # sliding, stays out), less the excitation (a dead zone: it leans the compliance a little high, which the
+    # velocity correction bears better than low)
     f_n = (n_pred @ F) * (F @ F_rate) / (F_size * F_size) if F_size > f_min else 0.0
     f_n = f_n - np.clip(f_n, -excitation, excitation)
     info = np.exp(-T * inv_tau_c) * info + f_n * f_n
