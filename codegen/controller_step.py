@@ -217,16 +217,32 @@ def estimated_frame(state, s, F, v, e, T):
     this sample: ``s`` holds the estimator's tuning (its ``parameters_named``), ``F`` the contact force on
     the robot and ``v`` the tip's velocity (base axes)."""
     w_force, w_velocity, correct, tau_f, inv_tau_v, rate_gain, f_min, v_min = (s[i] for i in range(8))
-    compliance, gate = s[11], s[12]
+    c_prior, gate, info_prior, inv_tau_c, v_noise, acquisition, excitation, from_force, max_curvature = (
+        s[i] for i in range(11, 20))
     alpha = 1 - ca.exp(-T / tau_f)
     kappa = rate_gain * alpha / (2 - alpha)  # the alpha-beta tracker's beta / alpha
     started = state[9]
+    F_size = ca.norm_2(F)
+    touching_at_all = F_size > f_min
     rate = started * state[3:6]
-    # the prediction: the normal turns on at its estimated rate (no lag on a steadily curving surface)
-    m = ca.if_else(started, state[0:3], s[8:11]) + T * rate
+    # the prediction: the normal turns on at its estimated rate (no lag on a steadily curving surface); the start
+    # is the given one, or the force's direction at the first touch
+    start = ca.if_else(ca.logic_and(from_force, touching_at_all), F / ca.if_else(touching_at_all, F_size, 1), s[8:11])
+    m = ca.if_else(started, state[0:3], start) + T * rate
     n_pred = m / ca.norm_2(m)
+    c, info = ca.if_else(started, state[10], c_prior), ca.if_else(started, state[11], info_prior)
+    F_rate = started * (F - state[6:9]) / T
+    # the compliance: the tip's normal velocity against the normal force's rate (recursive least squares), in
+    # contact; the force's own rate along it (the estimate's tilt, turning with the sliding, stays out), less
+    # the excitation (a dead zone: it leans the compliance a little high, which the velocity correction bears
+    # better than low)
+    along = ca.dot(F, F_rate) / ca.if_else(touching_at_all, F_size * F_size, 1)
+    f_n = ca.if_else(touching_at_all, ca.dot(n_pred, F) * along, 0)
+    f_n = f_n - _clamped(f_n, -excitation, excitation)
+    info = ca.exp(-T * inv_tau_c) * info + f_n * f_n
+    c = ca.fmax(c + f_n * (-ca.dot(n_pred, v) - c * f_n) / info, 0)
     # the contact point's velocity: the tip's, and the rate of the tool's deflection under the force
-    deflection_rate = started * compliance * (F - state[6:9]) / T
+    deflection_rate = c * F_rate
     v_c = v + deflection_rate
     vn = ca.dot(n_pred, v_c)
     v_t = v_c - vn * n_pred
@@ -237,7 +253,12 @@ def estimated_frame(state, s, F, v, e, T):
     tip_t = v - ca.dot(n_pred, v) * n_pred
     tip_speed = ca.norm_2(tip_t)
     pushed = tip_speed > v_min
-    u = ca.if_else(sliding, v_t / ca.if_else(sliding, speed, 1),
+    sigma = gate * ca.dot(n_pred, F_rate) * (c + v_noise / ca.sqrt(info))
+    # (alone, the force estimate takes the contact point's normal velocity into it, as far as the deflection's
+    # rate lets it: the friction's direction then holds the tilt along the motion)
+    gated = speed * speed / ca.if_else(sliding, speed * speed + sigma * sigma, 1)
+    sliding_dir = v_t + (1 - w_velocity) * gated * vn * n_pred
+    u = ca.if_else(sliding, sliding_dir / ca.if_else(sliding, ca.norm_2(sliding_dir), 1),
                    ca.if_else(pushed, tip_t / ca.if_else(pushed, tip_speed, 1), ca.SX.zeros(3, 1)))
     F_perp = F - correct * ca.dot(F, u) * u
     magnitude = ca.norm_2(F_perp)
@@ -245,21 +266,41 @@ def estimated_frame(state, s, F, v, e, T):
     n_force = F_perp / ca.if_else(touching, magnitude, 1)
     # the corrections: towards the force's direction, and the normal turned orthogonal to the contact point's
     # velocity (in contact; giving way to a fast-changing deflection, the velocity's least certain part)
-    sigma = gate * ca.norm_2(deflection_rate)
     velocity_on = ca.logic_and(sliding, touching)
     d_velocity = -w_velocity * inv_tau_v * T * vn / ca.if_else(velocity_on, speed * speed + sigma * sigma, 1) * v_t
     d = w_force * touching * alpha * (n_force - n_pred) + ca.if_else(velocity_on, d_velocity, ca.SX.zeros(3, 1))
     m = n_pred + d
     n = m / ca.norm_2(m)
+    # the rate takes the correction up to the acquisition's size: a larger one converges, it does not track
+    d = d * ca.fmin(1, alpha * acquisition / ca.fmax(ca.norm_2(d), 1e-300))
     rate = rate + kappa / T * (d - ca.dot(d, n) * n)
-    return normal_frame(n, rate, e), ca.vertcat(n, rate - ca.dot(rate, n) * n, F, 1)
+    # no faster than the sliding along the sharpest curvature it follows
+    rate = rate * ca.fmin(1, max_curvature * tip_speed / ca.fmax(ca.norm_2(rate), 1e-300))
+    # (waiting for the first touch, the state stays at its start)
+    waiting = ca.logic_and(ca.logic_and(1 - started, from_force), 1 - touching_at_all)
+    n = ca.if_else(waiting, s[8:11], n)
+    nxt = ca.if_else(waiting, ca.vertcat(s[8:11], ca.SX.zeros(3, 1), F, 0, c_prior, info_prior),
+                     ca.vertcat(n, rate - ca.dot(rate, n) * n, F, 1, c, info))
+    return normal_frame(n, ca.if_else(waiting, ca.SX.zeros(3, 1), rate), e), nxt
+
+
+#: below this ``|e x n|`` the estimated frame takes its direction from a fallback orthogonal to ``e`` (an
+#: estimate along ``e``, e.g. its start, has no frame of ``e``'s own)
+FALLBACK_SINE = 1e-3
 
 
 def normal_frame(n, rate, e) -> TaskFrame:
     """The task frame of the unit normal ``n`` and its rate (docs/conventions.md §9's rows from ``n``
-    and ``e``, differentiated along ``n'``, taken tangent)."""
+    and ``e``, differentiated along ``n'``, taken tangent); with ``n`` within :data:`FALLBACK_SINE` of
+    ``+-e``, the rows from a direction orthogonal to ``e`` (base x made orthogonal, or base y when ``e``
+    is near x) instead."""
     rate_t = rate - ca.dot(rate, n) * n
     e_unit = e / ca.norm_2(e)
+    near_x = ca.fabs(e_unit[0]) > 0.9
+    a = ca.vertcat(1 - near_x, near_x, 0)
+    e_alt = a - ca.dot(a, e_unit) * e_unit
+    parallel = ca.norm_2(cross(e_unit, n)) < FALLBACK_SINE
+    e_unit = ca.if_else(parallel, e_alt / ca.norm_2(e_alt), e_unit)
     c = cross(e_unit, n)
     sine = ca.norm_2(c)
     t1 = c / sine

@@ -38,6 +38,7 @@ import numpy as np
 
 import hybrid
 from hybrid.control.references import Step
+from hybrid.experiments.tracing import SPHERE_CENTER
 
 FRICTIONS = (0.0, 0.2, 0.5)
 SPEEDS = (0.05, 0.15, 0.3)
@@ -103,8 +104,7 @@ def told(exp: hybrid.Experiment, controller: str):
         return None
     if controller == "flat":
         return hybrid.Plane(tuple(start), tuple(normal))
-    return hybrid.EstimatedSurface(method=controller, initial_normal=tuple(normal),
-                                   compliance=1.0 / exp.sensor.stiffness)
+    return hybrid.EstimatedSurface(method=controller)  # its defaults: the start and the compliance its own
 
 
 def run(exp: hybrid.Experiment, controller: str) -> tuple[dict, hybrid.SimulationResult | None]:
@@ -177,6 +177,127 @@ def study(quick: bool = False) -> tuple[list[dict], dict]:
             for controller in ("exact", "fusion"):
                 add("ledge", exp, controller, surface=f"ledge {drop} mm", friction=friction, speed=0.3)
     return rows, kept
+
+
+#: the envelope's factors, each swept alone about the sphere's run at friction 0.2 and 0.15 m/s (the full
+#: list, then the quick one): the speed [m/s], the friction, the sphere's radius [m] (the normal turns at
+#: speed / radius against the estimator's 30 ms), the sensor's force noise [N], the sensor's compliance
+#: [mm/N] (its spring; the estimator learns it), the compliance the estimator is given [x the true one] and
+#: the start's angle [deg] from the true normal
+ENVELOPE = {"speed": ((0.02, 0.05, 0.1, 0.15, 0.3, 0.5), (0.05, 0.15, 0.3)),
+            "friction": ((0.0, 0.1, 0.2, 0.35, 0.5, 0.7), (0.0, 0.2, 0.5)),
+            "radius": ((0.04, 0.06, 0.1, 0.15, 0.25), (0.06, 0.15, 0.25)),
+            "force noise": ((0.0, 0.1, 0.3, 0.5, 1.0), (0.0, 0.3, 1.0)),
+            "sensor compliance": ((0.25, 0.5, 1.0, 2.0, 4.0), (0.5, 1.0, 2.0)),
+            "compliance given": ((0.1, 0.3, 1.0, 3.0, 10.0), (0.1, 1.0, 10.0)),
+            "start angle": ((0.0, 30.0, 60.0, 90.0), (0.0, 90.0))}
+ENVELOPE_UNITS = {"speed": "m/s", "friction": "", "radius": "m", "force noise": "N", "sensor compliance": "mm/N",
+                  "compliance given": "x true", "start angle": "deg"}
+
+
+def envelope_case(factor: str, value: float) -> tuple[hybrid.Experiment, hybrid.EstimatedSurface]:
+    """The run of the envelope's ``factor`` at ``value`` and the estimator it runs (defaults but the factor)."""
+    friction, speed, estimator, overrides = 0.2, 0.15, {}, {}
+    if factor == "speed":
+        speed = value
+    elif factor == "friction":
+        friction = value
+    elif factor == "radius":
+        overrides["surface"] = hybrid.Sphere(SPHERE_CENTER, value)
+    elif factor == "force noise":
+        overrides["sensor"] = hybrid.Sensor(force_noise=value)
+    elif factor == "sensor compliance":
+        overrides["sensor"] = hybrid.Sensor(stiffness=1000.0 / value)
+    exp = hybrid.tracing_experiment(speed_reference=Step(speed, speed, 0.0), contact=hybrid.Contact(friction=friction),
+                                    **overrides)
+    if factor == "compliance given":
+        estimator["compliance"] = value / exp.sensor.stiffness
+    elif factor == "start angle":
+        start = exp.initial_state()[12:15]
+        n = exp.surface.normal_at(start)
+        across = np.cross(n, (0.0, 0.0, 1.0)) if abs(n[2]) < 0.99 else np.array([1.0, 0.0, 0.0])
+        across /= np.linalg.norm(across)
+        a = math.radians(value)
+        estimator["initial_normal"] = tuple(math.cos(a) * n + math.sin(a) * across)
+    return exp, hybrid.EstimatedSurface(**estimator)
+
+
+def envelope(quick: bool = False) -> list[dict]:
+    """Each factor of :data:`ENVELOPE` swept alone: the estimate's largest angle after 0.5 s and after 1 s,
+    and its RMS force error over the exact surface's (the same run told the exact surface)."""
+    rows = []
+    for factor, (full, short) in ENVELOPE.items():
+        for value in short if quick else full:
+            exp, est = envelope_case(factor, value)
+            row = {"factor": factor, "value": value}
+            try:
+                told = hybrid.simulate(exp)
+                res = hybrid.simulate(dataclasses.replace(exp, controller_surface=est))
+            except hybrid.HybridError as exc:
+                rows.append({**row, "status": f"failed: {type(exc).__name__}"})
+                continue
+            err, t = res.normal_angle_error_deg, res.sample_t
+            rows.append({**row, "status": "ok", "angle_max_after_0.5s_deg": float(err[t >= 0.5].max()),
+                         "angle_max_after_1s_deg": float(err[t >= 1.0].max()),
+                         "force_error_ratio": res.metrics["rms_force_error_N"] / told.metrics["rms_force_error_N"],
+                         "contact_losses": int(res.metrics["contact_losses"])})
+    return rows
+
+
+def envelope_table(rows: list[dict]) -> str:
+    """The envelope as Markdown: per factor and value, the angles and the force-error ratio."""
+    out = ["| factor | value | largest angle after 0.5 s / 1 s [deg] | force error / exact's | contact losses |",
+           "| --- | --- | --- | --- | --- |"]
+    for r in rows:
+        unit = ENVELOPE_UNITS[r["factor"]]
+        value = f"{r['value']:g} {unit}".strip()
+        if r["status"] != "ok":
+            out.append(f"| {r['factor']} | {value} | fails | | |")
+            continue
+        out.append(f"| {r['factor']} | {value} | {r['angle_max_after_0.5s_deg']:.2f} / "
+                   f"{r['angle_max_after_1s_deg']:.2f} | {r['force_error_ratio']:.2f} | {r['contact_losses']} |")
+    return "\n".join(out) + "\n"
+
+
+def envelope_figure(rows: list[dict], out: Path) -> Path:
+    """``estimation_envelope.png``: per factor, the largest angle after 0.5 s and after 1 s (left axis, log)
+    and the force-error ratio (right axis) against the factor's value; the targets dashed (2 degrees, 1.5x)."""
+    import matplotlib.pyplot as plt
+    from matplotlib import ticker
+
+    factors = list(ENVELOPE)
+    fig, axes = plt.subplots(2, (len(factors) + 1) // 2, figsize=(13, 6))
+    for ax, factor in zip(axes.flat, factors):
+        ok = [r for r in rows if r["factor"] == factor and r["status"] == "ok"]
+        x = [r["value"] for r in ok]
+        ax.plot(x, [r["angle_max_after_0.5s_deg"] for r in ok], "o-", color="tab:blue", label="angle after 0.5 s")
+        ax.plot(x, [r["angle_max_after_1s_deg"] for r in ok], "s:", color="tab:blue", label="angle after 1 s")
+        ax.axhline(2.0, color="tab:blue", lw=0.8, ls="--")
+        ax.set_yscale("log")
+        ax.set_xlabel(f"{factor} [{ENVELOPE_UNITS[factor]}]" if ENVELOPE_UNITS[factor] else factor, fontsize=8)
+        ax.set_ylabel("largest angle [deg]", fontsize=8, color="tab:blue")
+        twin = ax.twinx()
+        twin.plot(x, [r["force_error_ratio"] for r in ok], "^-", color="tab:red", label="force error / exact's")
+        twin.axhline(1.5, color="tab:red", lw=0.8, ls="--")
+        twin.set_ylabel("force error / exact's", fontsize=8, color="tab:red")
+        if factor in ("compliance given", "sensor compliance"):
+            ax.set_xscale("log")
+        for axis in (ax.xaxis, ax.yaxis) if factor in ("compliance given", "sensor compliance") else (ax.yaxis,):
+            axis.set_major_formatter(ticker.FormatStrFormatter("%g"))
+            axis.set_minor_formatter(ticker.NullFormatter())
+        ax.set_ylim(min(0.5, ax.get_ylim()[0]), max(3.0, ax.get_ylim()[1]))
+        ax.tick_params(labelsize=7)
+        twin.tick_params(labelsize=7)
+    for ax in list(axes.flat)[len(factors):]:
+        ax.axis("off")
+    axes.flat[0].legend(fontsize=6, loc="upper left")
+    fig.suptitle("The estimator's defaults on the sphere (friction 0.2, 0.15 m/s, force step at 0.5 s), each factor "
+                 "alone; dashed: 2 degrees, 1.5x", fontsize=9)
+    fig.tight_layout()
+    path = out / "estimation_envelope.png"
+    fig.savefig(path, dpi=150)
+    plt.close(fig)
+    return path
 
 
 def _case(r: dict) -> tuple:
@@ -275,24 +396,35 @@ def figures(kept: dict, out: Path) -> list[Path]:
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", required=True, type=Path, help="folder for the CSV, JSON, tables and figures")
-    parser.add_argument("--quick", action="store_true", help="one friction and speed, no wavelength sweep")
+    parser.add_argument("--quick", action="store_true", help="one friction and speed, no wavelength sweep, three "
+                        "values (or two) per factor of the envelope")
     args = parser.parse_args(argv)
     args.out.mkdir(parents=True, exist_ok=True)
     began = time.perf_counter()
     rows, kept = study(args.quick)
     rows = with_ratios(rows)
+    sweep = envelope(args.quick)
+    with open(args.out / "envelope.csv", "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=sorted({k for r in sweep for k in r}, key=lambda k: list(
+            sweep[0]).index(k) if k in sweep[0] else 99))
+        writer.writeheader()
+        writer.writerows(sweep)
     names = sorted({k for r in rows for k in r}, key=lambda k: list(rows[0]).index(k) if k in rows[0] else 99)
     with open(args.out / "runs.csv", "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=names)
         writer.writeheader()
         writer.writerows(rows)
     settings = {"frictions": FRICTIONS, "speeds": SPEEDS, "bumps": {"height_m": BUMP_HEIGHT, "wavelength_m":
-                BUMP_WAVELENGTH, "z0_m": BUMP_Z0, "path_m": BUMP_PATH}, "estimator": hybrid.EstimatedSurface().__dict__}
-    (args.out / "study.json").write_text(json.dumps({"settings": settings, "runs": rows}, indent=1, default=str))
-    (args.out / "table.md").write_text(tables(rows))
-    written = figures(kept, args.out)
+                BUMP_WAVELENGTH, "z0_m": BUMP_Z0, "path_m": BUMP_PATH}, "estimator": hybrid.EstimatedSurface().__dict__,
+                "envelope": ENVELOPE}
+    (args.out / "study.json").write_text(json.dumps({"settings": settings, "runs": rows, "envelope": sweep},
+                                                    indent=1, default=str))
+    (args.out / "table.md").write_text(tables(rows) + "\n" + envelope_table(sweep))
+    written = [*figures(kept, args.out), envelope_figure(sweep, args.out)]
     print(tables(rows))
-    print(f"{len(rows)} runs in {time.perf_counter() - began:.0f} s; wrote runs.csv, study.json, table.md, "
+    print(envelope_table(sweep))
+    print(f"{len(rows) + 2 * len(sweep)} runs in {time.perf_counter() - began:.0f} s; wrote runs.csv, envelope.csv, "
+          "study.json, table.md, "
           + ", ".join(p.name for p in written) + f" into {args.out}")
 
 

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: ab37a2de89ac4d83839684a4bced613d58d2584589eeafbd1d1c170f67dee00f */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: c47ea3aa2353f5dace734a7c9d2cb7d4b1eb8e02aa46cc7e94ccda6d56483484 */
 /* hybrid_planar_arm_circle_controller_4b54e1a71151: the paper's closed loop on a circle: controller_step.
    Emitted by hybrid's codegen/closed_loop.py; it includes hybrid_lanes.h (in generated/: compile with -I there). */
 #if !defined(__GNUC__)
@@ -1197,6 +1197,8 @@ static inline __attribute__((always_inline)) void controller_step_lanes_core(con
     estimate_next[7] = v172;
     estimate_next[8] = v172;
     estimate_next[9] = v172;
+    estimate_next[10] = v172;
+    estimate_next[11] = v172;
     const hl_v v173 = pre[27];
     const hl_v v174 = v171 * v173;
     const hl_v v188 = hl_bool(v174 == 0.0);
@@ -2289,7 +2291,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         pre_step[CONTROLLER_STEP_LANES_NPRE];
     hl_v blk[134], x[8], xt[8], k1[8], k2[8], k3[8], k4[8], s[6], fc[6], z[4], tv[1],
         zero[13], base[6], last[3], y[14];
-    hl_v o_tau[2]; hl_v o_integrals_next[4]; hl_v o_a[2]; hl_v o_y[2]; hl_v o_f[2]; hl_v o_saturated[1]; hl_v o_filter_next[13]; hl_v o_estimate_next[10]; hl_v o_contact_wrench[6]; hl_v o_frame[1]; hl_v o_cond[1];
+    hl_v o_tau[2]; hl_v o_integrals_next[4]; hl_v o_a[2]; hl_v o_y[2]; hl_v o_f[2]; hl_v o_saturated[1]; hl_v o_filter_next[13]; hl_v o_estimate_next[12]; hl_v o_contact_wrench[6]; hl_v o_frame[1]; hl_v o_cond[1];
     /* the torque applied, the fault reaction's state (FAULT_STATE) and its safe state's torque */
     hl_v tq[2], fst[9], o_stop[2], tsv[1], pre_stop[SAFE_STOP_LANES_NPRE];
     /* the lanes that react to faults (their sensor drops out), check timing, lost this sample's reading, refused
@@ -2358,7 +2360,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         failed = hl_fabs(o_cond[0]) < singular_tol;
         flag(&run, failed & ~reacts, HYBRID_SINGULAR, k);
         bad |= failed;
-        failed = hl_not_finite(o_tau, 2) | hl_not_finite(o_integrals_next, 4) | hl_not_finite(o_a, 2) | hl_not_finite(o_y, 2) | hl_not_finite(o_f, 2) | hl_not_finite(o_saturated, 1) | hl_not_finite(o_filter_next, 13) | hl_not_finite(o_estimate_next, 10) | hl_not_finite(o_contact_wrench, 6) | hl_not_finite(o_frame, 1) | hl_not_finite(o_cond, 1);
+        failed = hl_not_finite(o_tau, 2) | hl_not_finite(o_integrals_next, 4) | hl_not_finite(o_a, 2) | hl_not_finite(o_y, 2) | hl_not_finite(o_f, 2) | hl_not_finite(o_saturated, 1) | hl_not_finite(o_filter_next, 13) | hl_not_finite(o_estimate_next, 12) | hl_not_finite(o_contact_wrench, 6) | hl_not_finite(o_frame, 1) | hl_not_finite(o_cond, 1);
         flag(&run, failed & ~reacts, HYBRID_NONFINITE, k);
         bad |= failed;
         refused = bad & ~stopped;

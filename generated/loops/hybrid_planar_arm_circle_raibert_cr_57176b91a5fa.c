@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: efaf3c05902313a6c6880f886f67aab54d84223955f2d8ce0d7cfb8517c4f33d */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 7f9d5d06d1a9660d6bd28a4582db90dcbcd30c766c3937f1892cea86f387251f */
 /* hybrid_planar_arm_circle_raibert_cr_57176b91a5fa: the paper's closed loop on a circle: raibert_craig_step.
    Emitted by hybrid's codegen/closed_loop.py; it includes hybrid_lanes.h (in generated/: compile with -I there). */
 #if !defined(__GNUC__)
@@ -1220,6 +1220,8 @@ static inline __attribute__((always_inline)) void raibert_craig_step_lanes_core(
     estimate_next[7] = v192;
     estimate_next[8] = v192;
     estimate_next[9] = v192;
+    estimate_next[10] = v192;
+    estimate_next[11] = v192;
     const hl_v v193 = pre[27];
     const hl_v v194 = v191 * v193;
     const hl_v v208 = hl_bool(v194 == 0.0);
@@ -2175,7 +2177,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         pre_step[RAIBERT_CRAIG_STEP_LANES_NPRE];
     hl_v blk[134], x[8], xt[8], k1[8], k2[8], k3[8], k4[8], s[6], fc[6], z[4], tv[1],
         zero[13], base[6], last[3], y[14];
-    hl_v o_tau[2]; hl_v o_integrals_next[4]; hl_v o_a[2]; hl_v o_y[2]; hl_v o_f[2]; hl_v o_saturated[1]; hl_v o_filter_next[13]; hl_v o_estimate_next[10]; hl_v o_contact_wrench[6]; hl_v o_frame[1]; hl_v o_cond[1];
+    hl_v o_tau[2]; hl_v o_integrals_next[4]; hl_v o_a[2]; hl_v o_y[2]; hl_v o_f[2]; hl_v o_saturated[1]; hl_v o_filter_next[13]; hl_v o_estimate_next[12]; hl_v o_contact_wrench[6]; hl_v o_frame[1]; hl_v o_cond[1];
     /* the torque applied, the fault reaction's state (FAULT_STATE) and its safe state's torque */
     hl_v tq[2], fst[9], o_stop[2], tsv[1], pre_stop[SAFE_STOP_LANES_NPRE];
     /* the lanes that react to faults (their sensor drops out), check timing, lost this sample's reading, refused
@@ -2244,7 +2246,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         failed = hl_fabs(o_cond[0]) < singular_tol;
         flag(&run, failed & ~reacts, HYBRID_SINGULAR, k);
         bad |= failed;
-        failed = hl_not_finite(o_tau, 2) | hl_not_finite(o_integrals_next, 4) | hl_not_finite(o_a, 2) | hl_not_finite(o_y, 2) | hl_not_finite(o_f, 2) | hl_not_finite(o_saturated, 1) | hl_not_finite(o_filter_next, 13) | hl_not_finite(o_estimate_next, 10) | hl_not_finite(o_contact_wrench, 6) | hl_not_finite(o_frame, 1) | hl_not_finite(o_cond, 1);
+        failed = hl_not_finite(o_tau, 2) | hl_not_finite(o_integrals_next, 4) | hl_not_finite(o_a, 2) | hl_not_finite(o_y, 2) | hl_not_finite(o_f, 2) | hl_not_finite(o_saturated, 1) | hl_not_finite(o_filter_next, 13) | hl_not_finite(o_estimate_next, 12) | hl_not_finite(o_contact_wrench, 6) | hl_not_finite(o_frame, 1) | hl_not_finite(o_cond, 1);
         flag(&run, failed & ~reacts, HYBRID_NONFINITE, k);
         bad |= failed;
         refused = bad & ~stopped;

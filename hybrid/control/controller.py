@@ -590,7 +590,7 @@ class Controller:
         if not self._estimated:
             return None
         started, n = ESTIMATE.index("started"), [ESTIMATE.index(k) for k in ("n_x", "n_y", "n_z")]
-        return self._estimate[n].copy() if self._estimate[started] else np.array(self._spatial.initial_normal)
+        return self._estimate[n].copy() if self._estimate[started] else np.array(self._spatial.start_normal)
 
     def _padded(self, Fc) -> np.ndarray:
         """``Fc`` as the step's 6-vector (into a buffer for a force without moments)."""

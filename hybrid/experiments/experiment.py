@@ -157,6 +157,9 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         if not isinstance(self.surface, Surface):
             raise HybridError(f"unknown surface {shown(self.surface, 60)}; give a hybrid Circle, Plane, Sphere, "
                               "Cylinder or ImplicitSurface")
+        if self.surface.spec().estimated:
+            raise HybridError("surface = EstimatedSurface(...): the plant needs the true surface; give it as surface "
+                              "and the EstimatedSurface as controller_surface (the controller estimates the normal)")
         if self.controller_surface is not None:
             if not isinstance(self.controller_surface, Surface):
                 raise HybridError(f"controller_surface = {shown(self.controller_surface, 60)}; give a hybrid surface "

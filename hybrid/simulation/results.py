@@ -135,7 +135,8 @@ class SimulationResult:
                     force_reference=self.force_reference, speed_reference=self.speed_reference,
                     output_names=np.array(self.record["outputs"]), units=json.dumps(self.UNITS),
                     record=json.dumps(self.record),
-                    experiment=json.dumps(self.experiment.to_dict()), metrics=json.dumps(self.metrics))
+                    experiment=json.dumps(self.experiment.to_dict()), metrics=json.dumps(self.metrics),
+                    **({} if self.normal_estimate is None else {"normal_estimate": self.normal_estimate}))
 
         return files.write_with(path, write, overwrite)
 
@@ -155,14 +156,17 @@ class SimulationResult:
                 metrics = json.loads(str(z["metrics"]))
                 # a file from before the record was saved holds a paper run: its record is the paper plant's
                 record = _record(json.loads(str(z["record"]))) if "record" in z.files else planar_record()
+                normals = z["normal_estimate"] if "normal_estimate" in z.files else None
             n = len(arrays["t"])
             shapes = {"t": (n,), "state": (n, len(record["state"])), "tau": (n, record["nq"]),
                       "outputs": (n, len(record["outputs"])), "force_reference": (n,), "speed_reference": (n,)}
             wrong = [k for k, shape in shapes.items() if arrays[k].shape != shape]
+            if normals is not None and normals.shape != (experiment.n_samples, 3):
+                wrong.append("normal_estimate")
             if wrong or n == 0 or not np.isfinite(arrays["t"]).all() or not isinstance(metrics, dict):
                 raise ValueError(f"arrays {', '.join(wrong) or 't'} do not have the shapes of a run")
             return cls(experiment, arrays["t"], arrays["state"], arrays["tau"], arrays["outputs"],
-                       arrays["force_reference"], arrays["speed_reference"], metrics, record)
+                       arrays["force_reference"], arrays["speed_reference"], metrics, record, normals)
         except (OSError, KeyError, ValueError, EOFError, zipfile.BadZipFile, zlib.error, TypeError,
                 AttributeError) as exc:
             why = getattr(exc, "strerror", None) or f"{type(exc).__name__}: {exc}"

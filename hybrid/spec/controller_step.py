@@ -85,8 +85,9 @@ FAULT_CHECKS = ("count", "positive", "nonnegative")
 #: positions the safe state holds (where the joints' velocities at its entry, decaying with ``stop_time``,
 #: bring them), the consecutive faulted samples, 1 in the safe state, the samples since its entry
 FAULT_STATE = PerJoint(("tau_entry", "q_hold", "q_stop"), tail=("faults", "stopped", "samples"))
-#: the estimator's state: the normal estimate, its rate, the last force, 1 once started
-ESTIMATE = ("n_x", "n_y", "n_z", "ndot_x", "ndot_y", "ndot_z", "F_x", "F_y", "F_z", "started")
+#: the estimator's state: the normal estimate, its rate, the last force, 1 once started, the compliance's
+#: estimate and its information
+ESTIMATE = ("n_x", "n_y", "n_z", "ndot_x", "ndot_y", "ndot_z", "F_x", "F_y", "F_z", "started", "c", "c_information")
 #: a wrench's six numbers: force, then moment
 WRENCH = ("f_x", "f_y", "f_z", "m_x", "m_y", "m_z")
 
@@ -104,7 +105,8 @@ CONTROLLER_STEP = Interface(
         Port("filter", "13", "as the wrench (the sensor filter's state, two per component), then 1 once started",
              "the wrench filter's state", STATE),
         Port("estimate", f"{len(ESTIMATE)}",
-             "1, 1/s, N, 1 (the normal's estimate, its rate, the last force, 1 once started)",
+             "1, 1/s, N, 1, m/N, N^2/s^2 (the normal's estimate, its rate, the last force, 1 once started, the "
+             "compliance's estimate and its information)",
              "an estimated surface's state", STATE, ESTIMATE),
         Port("t", "1", "s", "the sample's time", ARGUMENT),
         Port("yd_extra", "m", "m/s, rad/s (velocity axes); N, N m (force axes)", "reference added per axis",
