@@ -33,12 +33,13 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from hybrid._version import __version__
-from hybrid.control.controller import Controller, Measurement
+from hybrid.control.controller import Controller
 from hybrid.control.estimation import EstimatedSurface
 from hybrid.control.fault import FaultReaction
 from hybrid.control.identification import ToolIdentification, identify_tool, tare
 from hybrid.control.law import DecouplingLaw, decoupling_law
 from hybrid.control.loops import Gains
+from hybrid.control.measurement import Measurement
 from hybrid.control.options import ContactLoss, Posture, Reference
 from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES, Khatib, Scheme, TaskDecoupling

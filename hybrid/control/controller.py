@@ -9,13 +9,13 @@ are evaluated in the compiled step at the sample time ``t``; others, given as co
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
 from math import isfinite as _isfinite
 
 import numpy as np
 
 from hybrid.control.fault import FaultMonitor, FaultReaction, time_passed
 from hybrid.control.loops import Gains
+from hybrid.control.measurement import Measurement, padded_vector, wrench_of
 from hybrid.control.options import ContactLoss, Posture, call_user, check_posture
 from hybrid.control.schemes import Scheme, scheme_of
 from hybrid.control.task_settings import axis_references, gain_array, gains_of, joint_limit, selection_of
@@ -49,25 +49,6 @@ _CALLED = ("q", "qd", "Fc")
 #: the states a sample the law served advances whether or not it was on time (the integrals only on time;
 #: the last torque is the torque written), and the outputs they advance to
 _ADVANCED = {k: v for k, v in STATE_NEXT.items() if k not in ("integrals", "last_torque")}
-
-
-@dataclass(frozen=True)
-class Measurement:
-    """What the controller measures, at the arm tip: position ``p`` [m] and twist ``v = (p', w)``
-    [m/s, rad/s] in base axes; on all six task axes ``t1, t2, n`` (then rotations about them) the
-    task velocity ``R v`` and the task wrench ``R F_c`` [N, N m]. With a sensor, the stages of its
-    reading: ``reading`` (as given), ``compensated`` (less the bias and the tool's weight, sensor
-    axes) and ``contact_wrench`` (``F_c``: base axes, at the tip, before the filter, which keeps a
-    state: ``last["contact_wrench"]`` is the filtered one a sample used); without, all three are the
-    wrench given."""
-
-    p: np.ndarray
-    v: np.ndarray
-    task_velocity: np.ndarray
-    task_wrench: np.ndarray
-    reading: np.ndarray
-    compensated: np.ndarray
-    contact_wrench: np.ndarray
 
 
 class Controller:
@@ -597,15 +578,15 @@ class Controller:
         if type(Fc) is np.ndarray and Fc.dtype == np.float64 and Fc.shape == (self._force_size,):
             self._fc_head[...] = Fc  # the other entries stay 0
             return self._fc
-        return _wrench(Fc, self._force_size)
+        return wrench_of(Fc, self._force_size)
 
     def _desired(self, t: float) -> np.ndarray:
         got = call_user(self.path, t, "the path")
         if not isinstance(got, tuple) or len(got) not in (2, 3):
             raise HybridError(f"path({t}) returned {shown(got, 60)}; return (p_d, p_d') or (p_d, p_d', phi_d)")
         d = self._force_size  # a point of the planar arm's plane, or of space
-        phi = _vector("path angles", got[2], 3) if len(got) == 3 else np.zeros(3)
-        return np.concatenate([_vector("path point", got[0], d), _vector("path velocity", got[1], d), phi])
+        phi = padded_vector("path angles", got[2], 3) if len(got) == 3 else np.zeros(3)
+        return np.concatenate([padded_vector("path point", got[0], d), padded_vector("path velocity", got[1], d), phi])
 
     def _checked(self, q, qdot, Fc, out: list) -> None:
         """The general path: any array-like input, and the error that names the cause. A sample refused
@@ -633,32 +614,8 @@ class Controller:
         """What the controller measures at ``q, qdot, Fc`` (see :class:`Measurement`)."""
         if self._binding is None:
             self._native()
-        reading = _wrench(Fc, self._force_size)
+        reading = wrench_of(Fc, self._force_size)
         p = self.step_inputs()
         out = self._measure(q, qdot, reading, p["surface"], p["e"], p["robot"], p["sensor"], self._estimate)
         return Measurement(out["p"], out["v"], out["task_velocity"], out["task_wrench"], reading, out["compensated"],
                            out["contact_wrench"])
-
-
-def _wrench(Fc, force_size: int) -> np.ndarray:
-    """A measured force without moments (``force_size`` entries: 2 in the planar arm's plane, 3 in
-    space) or a wrench (6), base axes, as the 6-vector ``(f, m)``."""
-    try:
-        arr = np.asarray(Fc, dtype=float)
-    except (TypeError, ValueError):
-        arr = None
-    if arr is None or arr.shape not in ((force_size,), (6,)):
-        raise HybridError(f"Fc = {shown(Fc, 60)}; give the measured force on the robot ({force_size} numbers, base "
-                          "axes) or the wrench (force, moment: 6 numbers)")
-    return np.concatenate([arr, np.zeros(6 - arr.size)])
-
-
-def _vector(name: str, v, size: int) -> np.ndarray:
-    """``v`` as ``size`` finite numbers, padded to 3 (a planar point lies at z = 0)."""
-    try:
-        arr = np.asarray(v, dtype=float)
-    except (TypeError, ValueError):
-        arr = np.full(1, np.nan)
-    if arr.shape != (size,) or not np.isfinite(arr).all():
-        raise HybridError(f"the desired {name} {shown(v, 60)} must be {size} finite numbers [m, m/s or rad]")
-    return np.concatenate([arr, np.zeros(3 - size)])
