@@ -224,3 +224,45 @@ def test_the_compiled_loop_reacts_as_the_controller(make, dropout):
     # the runs differ from one without the dropout by more than rounding (the checks above can fail)
     rounding = spread(nudged.output("N"), python.output("N"))
     assert spread(compiled.output("N"), hybrid.simulate(make()).output("N")) > 100 * rounding + 1e-6
+
+
+def _sampled_hold_radius(ratio: float) -> float:
+    """The spectral radius of the safe state's hold on one joint of an exactly modelled arm, ``q'' = w`` with
+    ``w = -q / tau_s^2 - 2 q' / tau_s`` held over each sample (zero-order hold), at ``T / tau_s = ratio``."""
+    T = ratio  # tau_s = 1
+    A = np.array([[1.0, T], [0.0, 1.0]])
+    B = np.array([[T * T / 2], [T]])
+    return float(np.abs(np.linalg.eigvals(A + B @ np.array([[-1.0, -2.0]]))).max())
+
+
+def test_a_stop_shorter_than_two_samples_is_refused(pair):
+    """The sampled hold is unstable at stop_time <= sample_time (the arm is thrown, not stopped): the Controller
+    refuses a stop_time under two sample times, where the hold is stable, and the C refuses such a field."""
+    assert _sampled_hold_radius(1.0) >= 1.0 > _sampled_hold_radius(0.5)
+    robot, sphere = hybrid.ur5(), hybrid.Sphere((0.4, 0.0, 0.0), 0.2)
+    for stop_time in (0.001, 0.01, 0.0199):
+        with pytest.raises(hybrid.HybridError, match="two sample times"):
+            hybrid.Controller(robot, sphere, sample_time=0.01, fault_reaction=hybrid.FaultReaction(stop_time=stop_time))
+    hybrid.Controller(robot, sphere, sample_time=0.01, fault_reaction=hybrid.FaultReaction(stop_time=0.02))
+    py, c, samples = pair
+    c.lib.fr_controller_reset(c.c)
+    t, q, qd, w = samples[0]
+    good = c.c.stop_time
+    try:
+        c.c.stop_time = 1.5 * c.c.sample_time
+        code, _ = c.step(t, q, qd, np.resize(w, 6))
+        assert c.name(code) == "PARAMETER_INVALID"
+    finally:
+        c.c.stop_time = good
+    assert c.name(c.step(t, q, qd, np.resize(w, 6))[0]) == "OK"
+
+
+def test_the_shortest_stop_allowed_stops_the_arm():
+    """At stop_time = two sample times the paper's arm, its sensor lost for good in contact, comes to rest."""
+    exp = hybrid.paper_experiment(sensor=hybrid.Sensor(dropout_at=0.8, dropout_duration=10.0))
+    settings = dict(axes=exp.axes, frame_direction=exp.frame_direction, posture=exp.posture,
+                    **exp.controller_settings(), fault_reaction=hybrid.FaultReaction(stop_time=2 * exp.sample_time))
+    ctrl = hybrid.Controller(exp.controller_robot(), exp.surface, exp.controller, **settings)
+    done = run(exp, plant_for(exp, "generated"), ctrl, exp.initial_state())
+    assert ctrl.stopped and done.t[-1] >= exp.duration - exp.sample_time
+    assert np.abs(done.qdot[-1]).max() < 0.01

@@ -137,6 +137,7 @@ class Controller:
         late or early; a dropout of ``k`` samples is followed by a late one: ``k + 1``) every sample
         raises :class:`~hybrid.SafeStopError` until :meth:`reset`, carrying the safe state's torque: the
         arm stopped and held by its model, the torque it had released (:mod:`hybrid.control.fault`).
+        Its ``stop_time`` must be at least two sample times.
 
     Notes
     -----
@@ -218,6 +219,7 @@ class Controller:
             raise HybridError(f"fault_reaction = {shown(fault_reaction, 60)}; give a hybrid.FaultReaction(...) or None "
                               "(its defaults)")
         self._fault_reaction = fault_reaction or FaultReaction()
+        self._fault_reaction.check_sampling(self.sample_time)
         self._references = axis_references(self.axes, self.selection, force_reference, velocity_reference)
         # a posture has its own generated step (the law plus tau0), so the law without one stays the very code
         # it was, bit for bit; both are in the same unit, and the posture's numbers are run-time inputs of both

@@ -27,7 +27,7 @@ from math import isfinite
 import numpy as np
 
 from hybrid.errors import HybridError, SafeStopError
-from hybrid.spec.controller_step import FAULT, FAULT_DEFAULTS, FAULT_STATE, OPTIONS
+from hybrid.spec.controller_step import FAULT, FAULT_CHECKS, FAULT_DEFAULTS, FAULT_STATE, OPTIONS
 from hybrid.spec.interfaces import CHECKS, Dims
 from hybrid.validate import shown
 
@@ -39,7 +39,8 @@ class FaultReaction:
     Parameters
     ----------
     fault_samples : consecutive faulted samples that enter the safe state (a whole number >= 1).
-    stop_time : [s] > 0, the joints' velocities decay as ``q'' = -q' / stop_time`` in the safe state.
+    stop_time : [s] > 0, the joints' velocities decay as ``q'' = -q' / stop_time`` in the safe state; a
+        controller refuses one shorter than two of its sample times (:meth:`check_sampling`).
     unload_time : [s] >= 0, the torque the arm had at the fault is released over it (0: at once).
 
     Examples
@@ -62,6 +63,16 @@ class FaultReaction:
             if not number or not CHECKS[checks[name]].valid(float(value), 1.0):
                 raise HybridError(f"FaultReaction {name} = {shown(value, 40)}; give {CHECKS[checks[name]].meaning}")
             object.__setattr__(self, name, int(value) if name == "fault_samples" else float(value))
+
+    def check_sampling(self, sample_time: float) -> None:
+        """Refuse a ``stop_time`` shorter than two sample times ``sample_time`` [s]: the hold is a PD law
+        served once a sample (the torque held between samples), whose discrete poles leave the unit circle at
+        ``stop_time <= sample_time`` (the arm is thrown, not stopped); at two sample times they are inside,
+        at 0.7."""
+        if not CHECKS[FAULT_CHECKS[FAULT.index("stop_time")]].valid(self.stop_time, sample_time):
+            raise HybridError(f"FaultReaction stop_time = {self.stop_time:g} s is shorter than two sample times "
+                              f"({2 * sample_time:g} s at the sample time {sample_time:g} s): the sampled stop "
+                              "would be unstable; give at least two sample times")
 
     def as_array(self) -> np.ndarray:
         """The numbers as the step reads them (:data:`~hybrid.spec.controller_step.FAULT`)."""
