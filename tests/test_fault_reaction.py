@@ -266,3 +266,41 @@ def test_the_shortest_stop_allowed_stops_the_arm():
     done = run(exp, plant_for(exp, "generated"), ctrl, exp.initial_state())
     assert ctrl.stopped and done.t[-1] >= exp.duration - exp.sample_time
     assert np.abs(done.qdot[-1]).max() < 0.01
+
+
+def test_a_safe_state_entered_before_any_joint_position_stops_the_arm_where_it_is(pair):
+    """Joint positions lost from the start (an encoder not yet read) until the safe state: no position is known
+    to stop at, so the torque last written stays; the first finite positions are where the arm stops, not the
+    zero configuration. Python and C alike; the hold's torque is then the one of a fault entered there."""
+    py, c, samples = pair
+    T = samples[1][0] - samples[0][0]
+    n, lost = py.robot.n, py.fault_reaction.fault_samples
+    tau0 = np.linspace(-3.0, 3.0, n)
+    t, q, qd, w = samples[0]
+    w = np.resize(w, 6)
+    py.reset(torque=tau0)
+    c.lib.fr_controller_reset(c.c)
+    c.set_array("tau", tau0)
+    c.c.has_torque = 1
+    for k in range(lost):
+        status, tau = python_status(py, k * T, np.full(n, np.nan), qd, w)
+        code, tau_c = c.step(k * T, np.full(n, np.nan), qd, w)
+        assert c.name(code) == status
+        np.testing.assert_array_equal(tau, tau0)  # nothing known to stop at: the torque last written
+        np.testing.assert_array_equal(tau_c, tau0)
+    assert status == "SAFE_STOP"
+    status, tau = python_status(py, lost * T, q, qd, w)
+    code, tau_c = c.step(lost * T, q, qd, w)
+    np.testing.assert_allclose(tau_c, tau, rtol=1e-9, atol=1e-9)
+    np.testing.assert_allclose(py.fault_state, np.frombuffer(c.ffi.buffer(c.c.fault_state), float), rtol=1e-9)
+    q_stop = py.fault_state[2 * n:3 * n]
+    np.testing.assert_allclose(q_stop, q + py.fault_reaction.stop_time * qd, rtol=1e-12)
+    # independently: a controller whose safe state is entered at these very positions holds them alike
+    other = hybrid.Controller(py.robot, py.surface, gains=dict(zip(py.axis_names, py.gains)), torque_limit=LIMIT,
+                              fault_reaction=py.fault_reaction)
+    other.reset(torque=tau0)
+    other(0.0, q, qd, w)
+    for k in range(1, lost + 1):
+        status_o, _ = python_status(other, k * T, q, qd, np.full(6, np.nan))
+    assert status_o == "SAFE_STOP"
+    np.testing.assert_allclose(other.fault_state[2 * n:3 * n], q_stop, rtol=1e-12)

@@ -398,9 +398,9 @@ class Controller:
 
     def reset(self, torque=None) -> None:
         """A new run: the loops' integrals zero, no last sample (the next one is on time whenever it
-        comes), the fault reaction's state zero (it ends the safe state). ``torque`` [N m or N, one per
-        joint], when given, is the torque the arm has now: the first sample's torque is then rate-limited
-        from it (``torque_step_limit``)."""
+        comes), the fault reaction's state cleared (it ends the safe state; no joint positions known yet).
+        ``torque`` [N m or N, one per joint], when given, is the torque the arm has now: the first sample's
+        torque is then rate-limited from it (``torque_step_limit``)."""
         for name in ("integrals", "last_torque", *_ADVANCED):
             self._held[self._at[name]][:] = 0.0
         self._fault.reset()

@@ -82,16 +82,20 @@ class FaultReaction:
 class FaultMonitor:
     """The fault reaction's state for a controller of ``dims``' joints: ``state`` is
     :data:`~hybrid.spec.controller_step.FAULT_STATE` (the torque at the entry, the last finite joint
-    positions, the consecutive faulted samples, 1 in the safe state, the samples since its entry)."""
+    positions, NaN before any, the positions held, the consecutive faulted samples, 1 in the safe state,
+    the samples since its entry)."""
 
     def __init__(self, dims: Dims):
         names = FAULT_STATE.names(dims)
         self.n = len(dims.joints)
         self.state = np.zeros(len(names))
         self._faults, self._stopped, self._samples = (names.index(k) for k in FAULT_STATE.tail)
+        self.reset()
 
     def reset(self) -> None:
+        """No fault, no safe state, and no finite joint positions yet (``q_hold`` NaN: none to stop at)."""
         self.state[:] = 0.0
+        self.state[self.n:2 * self.n] = np.nan
 
     @property
     def stopped(self) -> bool:
@@ -132,6 +136,11 @@ class FaultMonitor:
         qd_now = _finite_vector(qdot, self.n) if q_now is not None else None
         qs = self.state[self.n:2 * self.n] if q_now is None else q_now
         qds = np.zeros(self.n) if qd_now is None else qd_now
+        q_stop = self.state[2 * self.n:3 * self.n]
+        if q_now is not None and not np.isfinite(q_stop).all():
+            # entered before any finite joint positions: the arm stops where the first finite ones bring it
+            # (until then the kernel gives no torque, and the torque last written stays)
+            q_stop[:] = q_now + parameters["fault"][FAULT.index("stop_time")] * qds
         T = parameters["options"][OPTIONS.index("sample_time")]
         try:
             tau = np.asarray(stop(qs, qds, last, self.state, parameters["robot"], parameters["fault"],

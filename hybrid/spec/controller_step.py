@@ -84,9 +84,10 @@ FAULT_DEFAULTS = (5.0, 0.05, 0.2)
 #: law served once a sample: at ``stop_time`` <= ``sample_time`` its discrete poles leave the unit circle),
 #: a time >= 0
 FAULT_CHECKS = ("count", "sampled_time_constant", "nonnegative")
-#: the fault reaction's state: the torque at the safe state's entry, the last finite joint positions, the
-#: positions the safe state holds (where the joints' velocities at its entry, decaying with ``stop_time``,
-#: bring them), the consecutive faulted samples, 1 in the safe state, the samples since its entry
+#: the fault reaction's state: the torque at the safe state's entry, the last finite joint positions (NaN
+#: after a reset, before any: a safe state entered then stops the arm where the first finite ones bring it),
+#: the positions the safe state holds (where the joints' velocities at its entry, decaying with
+#: ``stop_time``, bring them), the consecutive faulted samples, 1 in the safe state, the samples since its entry
 FAULT_STATE = PerJoint(("tau_entry", "q_hold", "q_stop"), tail=("faults", "stopped", "samples"))
 #: the estimator's state: the normal estimate, its rate, the last force, 1 once started
 ESTIMATE = ("n_x", "n_y", "n_z", "ndot_x", "ndot_y", "ndot_z", "F_x", "F_y", "F_z", "started")
