@@ -304,3 +304,27 @@ def test_a_safe_state_entered_before_any_joint_position_stops_the_arm_where_it_i
         status_o, _ = python_status(other, k * T, q, qd, np.full(6, np.nan))
     assert status_o == "SAFE_STOP"
     np.testing.assert_allclose(other.fault_state[2 * n:3 * n], q_stop, rtol=1e-12)
+
+
+def test_a_sample_time_that_makes_the_stop_too_short_refuses_the_sample(pair):
+    """The stop_time's bound reads the sample time: changed at run time to more than half the stop_time, the
+    sample is refused (PARAMETER_INVALID, the torque last written) in Python as in C; changed back, served."""
+    py, c, samples = pair
+    py.reset()
+    c.lib.fr_controller_reset(c.c)
+    T = py.sample_time
+    first = python_status(py, *samples[0])
+    assert first[0] == c.name(c.step(*samples[0][:3], np.resize(samples[0][3], 6))[0]) == "OK"
+    longer = 0.6 * py.fault_reaction.stop_time
+    py.sample_time = c.c.sample_time = longer
+    try:
+        t, q, qd, w = samples[1]
+        status, tau = python_status(py, longer, q, qd, w)
+        code, tau_c = c.step(longer, q, qd, np.resize(w, 6))
+        assert status == c.name(code) == "PARAMETER_INVALID"
+        np.testing.assert_array_equal(tau, first[1])
+        np.testing.assert_allclose(tau_c, tau, rtol=1e-9, atol=1e-9)
+    finally:
+        py.sample_time = c.c.sample_time = T
+    status, _ = python_status(py, T, *samples[1][1:])
+    assert status == c.name(c.step(T, *samples[1][1:3], np.resize(samples[1][3], 6))[0]) != "PARAMETER_INVALID"

@@ -146,8 +146,9 @@ class Controller:
     NaN, a negative limit or tolerance, a switch not 0 or 1, a filter cutoff at or above the Nyquist
     frequency is refused here and by :meth:`set_wrench_sensor` with a :class:`HybridError` naming it.
     The arrays the step reads are then read-only; the settings a sample reads in Python
-    (``sample_time``, ``timing_tolerance``, ``singular_tol``) are checked at each sample, and one
-    changed to an invalid value refuses the sample with a :class:`~hybrid.ParameterError`
+    (``sample_time``, ``timing_tolerance``, ``singular_tol``) are checked at each sample (with the
+    step's numbers whose check reads the sample time: a filter's cutoff, the fault reaction's
+    ``stop_time``), and one changed to an invalid value refuses the sample with a :class:`~hybrid.ParameterError`
     (``status`` ``PARAMETER_INVALID``, ``torque`` the torque last written), nothing changed.
     """
 
@@ -344,11 +345,17 @@ class Controller:
 
     def _refused_setting(self) -> tuple[str, object, str] | None:
         """The first of the settings a sample reads here (the sample time, the timing and singular
-        tolerances) that its declared check refuses, as ``(name, value, what is valid)``. (The sample
-        clock is the controller's own, only ever a finite ``t`` it served.)"""
+        tolerances) that its declared check refuses, as ``(name, value, what is valid)``, or a step's
+        number whose check reads the sample time and refuses it at this one (a filter cutoff at or above
+        Nyquist, a fault reaction's stop_time under two sample times), as the standalone C refuses its
+        struct's. (The sample clock is the controller's own, only ever a finite ``t`` it served.)"""
         T = self.sample_time
         if not CHECKS["positive"].valid(T, T):
             return "sample_time", T, CHECKS["positive"].meaning
+        refused = CONTROLLER_STEP.refused(self._params, self._dims, T)
+        if refused:
+            port, element, value, valid = refused[0]
+            return f"the step's {port} {element} at sample_time = {T:g} s", value, valid
         settings = {"timing_tolerance": -1.0 if self.timing_tolerance is None else self.timing_tolerance,
                     "singular_tol": self.singular_tol}
         for name, check in SETTING_CHECKS.items():
