@@ -31,7 +31,9 @@ passed) counts in ``fault_state``; a sample served on time ends the count. After
 consecutive ones the step is in its safe state (:mod:`codegen.safe_stop`) until a reset:
 ``SAFE_STOP`` at every sample, ``tau`` the safe-stop kernel's (from the struct's numbers, or the
 generated configuration's where the struct holds one its check refuses; from the last finite joint
-positions and zero velocities where the sample's are not finite), the law no longer served.
+positions and zero velocities where the sample's are not finite; before any finite ones since the
+reset, the torque last written, the arm then stopped where the first finite ones bring it), the law no
+longer served.
 
 The Python :class:`hybrid.Controller` does the same (raising where this returns a status), and
 the text is a pure function of its inputs (no dates, no paths, stable ordering).

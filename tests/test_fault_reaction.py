@@ -224,3 +224,107 @@ def test_the_compiled_loop_reacts_as_the_controller(make, dropout):
     # the runs differ from one without the dropout by more than rounding (the checks above can fail)
     rounding = spread(nudged.output("N"), python.output("N"))
     assert spread(compiled.output("N"), hybrid.simulate(make()).output("N")) > 100 * rounding + 1e-6
+
+
+def _sampled_hold_radius(ratio: float) -> float:
+    """The spectral radius of the safe state's hold on one joint of an exactly modelled arm, ``q'' = w`` with
+    ``w = -q / tau_s^2 - 2 q' / tau_s`` held over each sample (zero-order hold), at ``T / tau_s = ratio``."""
+    T = ratio  # tau_s = 1
+    A = np.array([[1.0, T], [0.0, 1.0]])
+    B = np.array([[T * T / 2], [T]])
+    return float(np.abs(np.linalg.eigvals(A + B @ np.array([[-1.0, -2.0]]))).max())
+
+
+def test_a_stop_shorter_than_two_samples_is_refused(pair):
+    """The sampled hold is unstable at stop_time <= sample_time (the arm is thrown, not stopped): the Controller
+    refuses a stop_time under two sample times, where the hold is stable, and the C refuses such a field."""
+    assert _sampled_hold_radius(1.0) >= 1.0 > _sampled_hold_radius(0.5)
+    robot, sphere = hybrid.ur5(), hybrid.Sphere((0.4, 0.0, 0.0), 0.2)
+    for stop_time in (0.001, 0.01, 0.0199):
+        with pytest.raises(hybrid.HybridError, match="two sample times"):
+            hybrid.Controller(robot, sphere, sample_time=0.01, fault_reaction=hybrid.FaultReaction(stop_time=stop_time))
+    hybrid.Controller(robot, sphere, sample_time=0.01, fault_reaction=hybrid.FaultReaction(stop_time=0.02))
+    py, c, samples = pair
+    c.lib.fr_controller_reset(c.c)
+    t, q, qd, w = samples[0]
+    good = c.c.stop_time
+    try:
+        c.c.stop_time = 1.5 * c.c.sample_time
+        code, _ = c.step(t, q, qd, np.resize(w, 6))
+        assert c.name(code) == "PARAMETER_INVALID"
+    finally:
+        c.c.stop_time = good
+    assert c.name(c.step(t, q, qd, np.resize(w, 6))[0]) == "OK"
+
+
+def test_the_shortest_stop_allowed_stops_the_arm():
+    """At stop_time = two sample times the paper's arm, its sensor lost for good in contact, comes to rest."""
+    exp = hybrid.paper_experiment(sensor=hybrid.Sensor(dropout_at=0.8, dropout_duration=10.0))
+    settings = dict(axes=exp.axes, frame_direction=exp.frame_direction, posture=exp.posture,
+                    **exp.controller_settings(), fault_reaction=hybrid.FaultReaction(stop_time=2 * exp.sample_time))
+    ctrl = hybrid.Controller(exp.controller_robot(), exp.surface, exp.controller, **settings)
+    done = run(exp, plant_for(exp, "generated"), ctrl, exp.initial_state())
+    assert ctrl.stopped and done.t[-1] >= exp.duration - exp.sample_time
+    assert np.abs(done.qdot[-1]).max() < 0.01
+
+
+def test_a_safe_state_entered_before_any_joint_position_stops_the_arm_where_it_is(pair):
+    """Joint positions lost from the start (an encoder not yet read) until the safe state: no position is known
+    to stop at, so the torque last written stays; the first finite positions are where the arm stops, not the
+    zero configuration. Python and C alike; the hold's torque is then the one of a fault entered there."""
+    py, c, samples = pair
+    T = samples[1][0] - samples[0][0]
+    n, lost = py.robot.n, py.fault_reaction.fault_samples
+    tau0 = np.linspace(-3.0, 3.0, n)
+    t, q, qd, w = samples[0]
+    w = np.resize(w, 6)
+    py.reset(torque=tau0)
+    c.lib.fr_controller_reset(c.c)
+    c.set_array("tau", tau0)
+    c.c.has_torque = 1
+    for k in range(lost):
+        status, tau = python_status(py, k * T, np.full(n, np.nan), qd, w)
+        code, tau_c = c.step(k * T, np.full(n, np.nan), qd, w)
+        assert c.name(code) == status
+        np.testing.assert_array_equal(tau, tau0)  # nothing known to stop at: the torque last written
+        np.testing.assert_array_equal(tau_c, tau0)
+    assert status == "SAFE_STOP"
+    status, tau = python_status(py, lost * T, q, qd, w)
+    code, tau_c = c.step(lost * T, q, qd, w)
+    np.testing.assert_allclose(tau_c, tau, rtol=1e-9, atol=1e-9)
+    np.testing.assert_allclose(py.fault_state, np.frombuffer(c.ffi.buffer(c.c.fault_state), float), rtol=1e-9)
+    q_stop = py.fault_state[2 * n:3 * n]
+    np.testing.assert_allclose(q_stop, q + py.fault_reaction.stop_time * qd, rtol=1e-12)
+    # independently: a controller whose safe state is entered at these very positions holds them alike
+    other = hybrid.Controller(py.robot, py.surface, gains=dict(zip(py.axis_names, py.gains)), torque_limit=LIMIT,
+                              fault_reaction=py.fault_reaction)
+    other.reset(torque=tau0)
+    other(0.0, q, qd, w)
+    for k in range(1, lost + 1):
+        status_o, _ = python_status(other, k * T, q, qd, np.full(6, np.nan))
+    assert status_o == "SAFE_STOP"
+    np.testing.assert_allclose(other.fault_state[2 * n:3 * n], q_stop, rtol=1e-12)
+
+
+def test_a_sample_time_that_makes_the_stop_too_short_refuses_the_sample(pair):
+    """The stop_time's bound reads the sample time: changed at run time to more than half the stop_time, the
+    sample is refused (PARAMETER_INVALID, the torque last written) in Python as in C; changed back, served."""
+    py, c, samples = pair
+    py.reset()
+    c.lib.fr_controller_reset(c.c)
+    T = py.sample_time
+    first = python_status(py, *samples[0])
+    assert first[0] == c.name(c.step(*samples[0][:3], np.resize(samples[0][3], 6))[0]) == "OK"
+    longer = 0.6 * py.fault_reaction.stop_time
+    py.sample_time = c.c.sample_time = longer
+    try:
+        t, q, qd, w = samples[1]
+        status, tau = python_status(py, longer, q, qd, w)
+        code, tau_c = c.step(longer, q, qd, np.resize(w, 6))
+        assert status == c.name(code) == "PARAMETER_INVALID"
+        np.testing.assert_array_equal(tau, first[1])
+        np.testing.assert_allclose(tau_c, tau, rtol=1e-9, atol=1e-9)
+    finally:
+        py.sample_time = c.c.sample_time = T
+    status, _ = python_status(py, T, *samples[1][1:])
+    assert status == c.name(c.step(T, *samples[1][1:3], np.resize(samples[1][3], 6))[0]) != "PARAMETER_INVALID"

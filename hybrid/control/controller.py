@@ -118,6 +118,7 @@ class Controller:
         late or early; a dropout of ``k`` samples is followed by a late one: ``k + 1``) every sample
         raises :class:`~hybrid.SafeStopError` until :meth:`reset`, carrying the safe state's torque: the
         arm stopped and held by its model, the torque it had released (:mod:`hybrid.control.fault`).
+        Its ``stop_time`` must be at least two sample times.
 
     Notes
     -----
@@ -126,8 +127,9 @@ class Controller:
     NaN, a negative limit or tolerance, a switch not 0 or 1, a filter cutoff at or above the Nyquist
     frequency is refused here and by :meth:`set_wrench_sensor` with a :class:`HybridError` naming it.
     The arrays the step reads are then read-only; the settings a sample reads in Python
-    (``sample_time``, ``timing_tolerance``, ``singular_tol``) are checked at each sample, and one
-    changed to an invalid value refuses the sample with a :class:`~hybrid.ParameterError`
+    (``sample_time``, ``timing_tolerance``, ``singular_tol``) are checked at each sample (with the
+    step's numbers whose check reads the sample time: a filter's cutoff, the fault reaction's
+    ``stop_time``), and one changed to an invalid value refuses the sample with a :class:`~hybrid.ParameterError`
     (``status`` ``PARAMETER_INVALID``, ``torque`` the torque last written), nothing changed.
     """
 
@@ -199,6 +201,7 @@ class Controller:
             raise HybridError(f"fault_reaction = {shown(fault_reaction, 60)}; give a hybrid.FaultReaction(...) or None "
                               "(its defaults)")
         self._fault_reaction = fault_reaction or FaultReaction()
+        self._fault_reaction.check_sampling(self.sample_time)
         self._references = axis_references(self.axes, self.selection, force_reference, velocity_reference)
         # a posture has its own generated step (the law plus tau0), so the law without one stays the very code
         # it was, bit for bit; both are in the same unit, and the posture's numbers are run-time inputs of both
@@ -323,11 +326,17 @@ class Controller:
 
     def _refused_setting(self) -> tuple[str, object, str] | None:
         """The first of the settings a sample reads here (the sample time, the timing and singular
-        tolerances) that its declared check refuses, as ``(name, value, what is valid)``. (The sample
-        clock is the controller's own, only ever a finite ``t`` it served.)"""
+        tolerances) that its declared check refuses, as ``(name, value, what is valid)``, or a step's
+        number whose check reads the sample time and refuses it at this one (a filter cutoff at or above
+        Nyquist, a fault reaction's stop_time under two sample times), as the standalone C refuses its
+        struct's. (The sample clock is the controller's own, only ever a finite ``t`` it served.)"""
         T = self.sample_time
         if not CHECKS["positive"].valid(T, T):
             return "sample_time", T, CHECKS["positive"].meaning
+        refused = CONTROLLER_STEP.refused(self._params, self._dims, T)
+        if refused:
+            port, element, value, valid = refused[0]
+            return f"the step's {port} {element} at sample_time = {T:g} s", value, valid
         settings = {"timing_tolerance": -1.0 if self.timing_tolerance is None else self.timing_tolerance,
                     "singular_tol": self.singular_tol}
         for name, check in SETTING_CHECKS.items():
@@ -377,9 +386,9 @@ class Controller:
 
     def reset(self, torque=None) -> None:
         """A new run: the loops' integrals zero, no last sample (the next one is on time whenever it
-        comes), the fault reaction's state zero (it ends the safe state). ``torque`` [N m or N, one per
-        joint], when given, is the torque the arm has now: the first sample's torque is then rate-limited
-        from it (``torque_step_limit``)."""
+        comes), the fault reaction's state cleared (it ends the safe state; no joint positions known yet).
+        ``torque`` [N m or N, one per joint], when given, is the torque the arm has now: the first sample's
+        torque is then rate-limited from it (``torque_step_limit``)."""
         for name in ("integrals", "last_torque", *_ADVANCED):
             self._held[self._at[name]][:] = 0.0
         self._fault.reset()

@@ -27,7 +27,7 @@ from math import isfinite
 import numpy as np
 
 from hybrid.errors import HybridError, SafeStopError
-from hybrid.spec.controller_step import FAULT, FAULT_DEFAULTS, FAULT_STATE, OPTIONS
+from hybrid.spec.controller_step import FAULT, FAULT_CHECKS, FAULT_DEFAULTS, FAULT_STATE, OPTIONS
 from hybrid.spec.interfaces import CHECKS, Dims
 from hybrid.validate import shown
 
@@ -39,7 +39,8 @@ class FaultReaction:
     Parameters
     ----------
     fault_samples : consecutive faulted samples that enter the safe state (a whole number >= 1).
-    stop_time : [s] > 0, the joints' velocities decay as ``q'' = -q' / stop_time`` in the safe state.
+    stop_time : [s] > 0, the joints' velocities decay as ``q'' = -q' / stop_time`` in the safe state; a
+        controller refuses one shorter than two of its sample times (:meth:`check_sampling`).
     unload_time : [s] >= 0, the torque the arm had at the fault is released over it (0: at once).
 
     Examples
@@ -63,6 +64,16 @@ class FaultReaction:
                 raise HybridError(f"FaultReaction {name} = {shown(value, 40)}; give {CHECKS[checks[name]].meaning}")
             object.__setattr__(self, name, int(value) if name == "fault_samples" else float(value))
 
+    def check_sampling(self, sample_time: float) -> None:
+        """Refuse a ``stop_time`` shorter than two sample times ``sample_time`` [s]: the hold is a PD law
+        served once a sample (the torque held between samples), whose discrete poles leave the unit circle at
+        ``stop_time <= sample_time`` (the arm is thrown, not stopped); at two sample times they are inside,
+        at 0.7."""
+        if not CHECKS[FAULT_CHECKS[FAULT.index("stop_time")]].valid(self.stop_time, sample_time):
+            raise HybridError(f"FaultReaction stop_time = {self.stop_time:g} s is shorter than two sample times "
+                              f"({2 * sample_time:g} s at the sample time {sample_time:g} s): the sampled stop "
+                              "would be unstable; give at least two sample times")
+
     def as_array(self) -> np.ndarray:
         """The numbers as the step reads them (:data:`~hybrid.spec.controller_step.FAULT`)."""
         return np.array([float(getattr(self, name)) for name in FAULT])
@@ -71,16 +82,20 @@ class FaultReaction:
 class FaultMonitor:
     """The fault reaction's state for a controller of ``dims``' joints: ``state`` is
     :data:`~hybrid.spec.controller_step.FAULT_STATE` (the torque at the entry, the last finite joint
-    positions, the consecutive faulted samples, 1 in the safe state, the samples since its entry)."""
+    positions, NaN before any, the positions held, the consecutive faulted samples, 1 in the safe state,
+    the samples since its entry)."""
 
     def __init__(self, dims: Dims):
         names = FAULT_STATE.names(dims)
         self.n = len(dims.joints)
         self.state = np.zeros(len(names))
         self._faults, self._stopped, self._samples = (names.index(k) for k in FAULT_STATE.tail)
+        self.reset()
 
     def reset(self) -> None:
+        """No fault, no safe state, and no finite joint positions yet (``q_hold`` NaN: none to stop at)."""
         self.state[:] = 0.0
+        self.state[self.n:2 * self.n] = np.nan
 
     @property
     def stopped(self) -> bool:
@@ -121,6 +136,11 @@ class FaultMonitor:
         qd_now = _finite_vector(qdot, self.n) if q_now is not None else None
         qs = self.state[self.n:2 * self.n] if q_now is None else q_now
         qds = np.zeros(self.n) if qd_now is None else qd_now
+        q_stop = self.state[2 * self.n:3 * self.n]
+        if q_now is not None and not np.isfinite(q_stop).all():
+            # entered before any finite joint positions: the arm stops where the first finite ones bring it
+            # (until then the kernel gives no torque, and the torque last written stays)
+            q_stop[:] = q_now + parameters["fault"][FAULT.index("stop_time")] * qds
         T = parameters["options"][OPTIONS.index("sample_time")]
         try:
             tau = np.asarray(stop(qs, qds, last, self.state, parameters["robot"], parameters["fault"],

@@ -74,16 +74,20 @@ FAULT = ("fault_samples", "stop_time", "unload_time")
 #: what each of the fault reaction's numbers means (the standalone header documents its fields with these)
 FAULT_DOCS = {
     "fault_samples": "consecutive faulted samples (refused, late or early) that enter the safe state [1]",
-    "stop_time": "the safe state's time constant: the joints stop and hold, critically damped [s]",
+    "stop_time": "the safe state's time constant: the joints stop and hold, critically damped [s]; at least two "
+                 "sample times",
     "unload_time": "the safe state releases the torque the arm had at the fault over this time [s]; 0: at once",
 }
 #: their defaults: 5 samples (5 ms at 1 kHz, 50 ms at 100 Hz), a 50 ms stop, the torque released over 0.2 s
 FAULT_DEFAULTS = (5.0, 0.05, 0.2)
-#: what each may be: a whole number of samples >= 1, a time > 0, a time >= 0
-FAULT_CHECKS = ("count", "positive", "nonnegative")
-#: the fault reaction's state: the torque at the safe state's entry, the last finite joint positions, the
-#: positions the safe state holds (where the joints' velocities at its entry, decaying with ``stop_time``,
-#: bring them), the consecutive faulted samples, 1 in the safe state, the samples since its entry
+#: what each may be: a whole number of samples >= 1, a time of at least two sample times (the hold is a PD
+#: law served once a sample: at ``stop_time`` <= ``sample_time`` its discrete poles leave the unit circle),
+#: a time >= 0
+FAULT_CHECKS = ("count", "sampled_time_constant", "nonnegative")
+#: the fault reaction's state: the torque at the safe state's entry, the last finite joint positions (NaN
+#: after a reset, before any: a safe state entered then stops the arm where the first finite ones bring it),
+#: the positions the safe state holds (where the joints' velocities at its entry, decaying with
+#: ``stop_time``, bring them), the consecutive faulted samples, 1 in the safe state, the samples since its entry
 FAULT_STATE = PerJoint(("tau_entry", "q_hold", "q_stop"), tail=("faults", "stopped", "samples"))
 #: the estimator's state: the normal estimate, its rate, the last force, 1 once started, the compliance's
 #: estimate and its information

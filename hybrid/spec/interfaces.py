@@ -118,6 +118,9 @@ CHECKS = {c.name: c for c in (
           lambda x, T: (x == -1) | ((x >= 0) & (x < 1))),
     Check("count", "a whole number >= 1 (at most 1e9)", "(x >= 1.0 && x <= 1e9 && x == floor(x))",
           lambda x, T: (x >= 1) & (x <= 1e9) & (x == _floor(x))),
+    Check("sampled_time_constant", "a time constant of at least two sample times (2 sample_time) [s]: the "
+          "sampled stop is unstable at one sample time or less", "(isfinite(x) && x >= 2.0 * T)",
+          lambda x, T: (abs(x) <= _DBL_MAX) & (x >= 2 * T)),
     Check("below_nyquist", "a frequency >= 0 below the Nyquist frequency 0.5 / sample_time (0: off)",
           "(x >= 0.0 && x < 0.5 / T)", lambda x, T: (x >= 0) & (x < 0.5 / T)),
 )}
