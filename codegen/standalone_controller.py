@@ -205,7 +205,7 @@ def build_standalone_controller(step: Kernel, stop: Kernel, prefix: str, what: s
                     call=_CALL, state_next=STATE_NEXT, held=HELD_STATUSES, tau=out["tau"], stop=stop,
                     served=[s for s in TIMING_STATUSES if s not in HELD_STATUSES],
                     fault=next(f for f in configuration if f["name"] == "fault"),
-                    fault_samples=_number(values["fault"][0]), stop_time=_number(values["fault"][1]),
+                    fault_samples=_number(values["fault"][0]),
                     saturated=out["saturated"],
                     checks=parameter_checks(dims),
                     timing_tolerance=_number(values["timing_tolerance"]),

@@ -457,7 +457,7 @@ class Controller:
                 self._fault.served(q, on_time=False)
             if not hasattr(exc, "torque"):
                 exc.torque = self._last[:-1] * self._last[-1]
-            if self._fault.faulted(passed, self.fault_reaction, self._last[:-1] * self._last[-1], q, qdot):
+            if self._fault.faulted(passed, self.fault_reaction, self._last[:-1] * self._last[-1], q):
                 raise self._safe_sample(t, q, qdot, passed, str(exc).partition("\n")[0]) from exc
             raise
         self._fault.served(q, on_time=True)

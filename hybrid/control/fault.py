@@ -5,12 +5,13 @@ dropout lifts the tool off and brings it back with an impact. :class:`FaultReact
 of the reaction (:data:`hybrid.spec.controller_step.FAULT`): after ``fault_samples`` consecutive faulted
 samples (refused: a bad input or parameter, the law failing; or served off time: late, early) the step
 enters its safe state and stays there until ``reset``. The safe state (``codegen.safe_stop``, the same
-compiled kernel in C and Python) holds the arm with its model's inverse dynamics for a deceleration of
-every joint with the time constant ``stop_time`` (gravity, the velocity terms and the joints'
-viscosity compensated) and releases the torque the arm had at the fault linearly over
-``unload_time``, within the torque limits: a controlled stop with the drives on (IEC 60204-1's stop
-category 2, as an industrial arm's protective stop), neither a fall (power off) nor a clamp at the
-force the tool had (a brake); the contact force decays at a bounded rate.
+compiled kernel in C and Python) stops the arm and holds it where it was at the entry, by its model's
+inverse dynamics for a critically damped hold of time constant ``stop_time`` (gravity, the velocity
+terms and the joints' viscosity compensated), and releases the difference between the torque the arm
+had and the hold's linearly over ``unload_time``, within the torque limits: a controlled stop with the
+drives on (IEC 60204-1's stop category 2, as an industrial arm's protective stop), neither a fall
+(power off) nor a rebound of the tool onto the part; the pressing the law added decays at a bounded
+rate, and the contact force the tool's compliance stores at the held position stays.
 
 A sample at which no time passed (repeated, or before the last) is no fault of its own: it counts
 nothing. A sample the law serves on time ends a count.
@@ -81,7 +82,7 @@ class FaultReaction:
 
 class FaultMonitor:
     """The fault reaction's state for a controller of ``dims``' joints: ``state`` is
-    :data:`~hybrid.spec.controller_step.FAULT_STATE` (the torque at the entry, the last finite joint
+    :data:`~hybrid.spec.controller_step.FAULT_STATE` (the torque to release, the last finite joint
     positions, NaN before any, the positions held, the consecutive faulted samples, 1 in the safe state,
     the samples since its entry)."""
 
@@ -111,19 +112,16 @@ class FaultMonitor:
         if on_time:
             self.state[self._faults] = 0.0
 
-    def faulted(self, passed: bool, reaction: FaultReaction, torque: np.ndarray, q, qdot) -> bool:
-        """A faulted sample at ``q, qdot`` (counted when time ``passed``); True when it enters the safe
-        state: the torque the arm has (``torque``) is then released from here, and the arm stops where its
-        velocities, decaying with ``stop_time``, bring it."""
+    def faulted(self, passed: bool, reaction: FaultReaction, torque: np.ndarray, q) -> bool:
+        """A faulted sample at ``q`` (counted when time ``passed``); True when it enters the safe state:
+        the arm then stops and holds where it is, and the torque it has (``torque``) is released from here."""
         if passed:
             self.state[self._faults] += 1.0
         if self.state[self._faults] < reaction.fault_samples:
             return False
         n = self.n
         q_now = _finite_vector(q, n)
-        qd_now = _finite_vector(qdot, n) if q_now is not None else None
-        self.state[2 * n:3 * n] = (self.state[n:2 * n] if q_now is None else q_now) \
-            + (0.0 if qd_now is None else reaction.stop_time * qd_now)
+        self.state[2 * n:3 * n] = self.state[n:2 * n] if q_now is None else q_now
         self.state[:n] = torque
         self.state[self._stopped], self.state[self._samples] = 1.0, 0.0
         return True
@@ -138,18 +136,21 @@ class FaultMonitor:
         qds = np.zeros(self.n) if qd_now is None else qd_now
         q_stop = self.state[2 * self.n:3 * self.n]
         if q_now is not None and not np.isfinite(q_stop).all():
-            # entered before any finite joint positions: the arm stops where the first finite ones bring it
-            # (until then the kernel gives no torque, and the torque last written stays)
-            q_stop[:] = q_now + parameters["fault"][FAULT.index("stop_time")] * qds
+            # entered before any finite joint positions: the arm stops at the first finite ones (until then the
+            # kernel gives no torque, and the torque last written stays)
+            q_stop[:] = q_now
         T = parameters["options"][OPTIONS.index("sample_time")]
         try:
-            tau = np.asarray(stop(qs, qds, last, self.state, parameters["robot"], parameters["fault"],
-                                  parameters["limits"], np.array([T]))["tau"], float).ravel().copy()
-        except HybridError:  # the model gives no torque: the torque last written
-            tau = last[:-1] * last[-1]
+            got = stop(qs, qds, last, self.state, parameters["robot"], parameters["fault"], parameters["limits"],
+                       np.array([T]))
+            tau = np.asarray(got["tau"], float).ravel().copy()
+            self.state[:self.n] = np.asarray(got["tau_offset_next"], float).ravel()
+            finite = True
+        except HybridError:  # the model gives no torque: the torque last written, and the release waits
+            tau, finite = last[:-1] * last[-1], False
         last[:-1], last[-1] = tau, 1.0
         if passed:
-            self.state[self._samples] += 1.0
+            self.state[self._samples] += float(finite)
             self._hold(q)
         return SafeStopError(tau.copy(), self.faults, cause)
 

@@ -20,6 +20,7 @@ from functools import cached_property, lru_cache
 import numpy as np
 
 from hybrid.control.controller import Controller
+from hybrid.control.fault import FaultReaction
 from hybrid.control.loops import Gains
 from hybrid.control.options import Posture, check_posture
 from hybrid.control.references import Step
@@ -104,6 +105,9 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     sample_time : [s] the control sample period ``T``.
     backend : which committed unit runs the closed-form plant (``"sympy"`` or ``"casadi"``).
     singular_tol : the run stops when the Jacobian's conditioning at a sample falls below it.
+    fault_reaction : the controller's :class:`~hybrid.FaultReaction` (its defaults): what a run with a
+        sensor's dropout (``Sensor.dropout_duration``) measures; a sweep varies its numbers by name
+        (``fault_reaction.stop_time``).
     """
 
     robot: Robot | None = None
@@ -136,6 +140,7 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     sample_time: float = 1e-2
     backend: str = "sympy"
     singular_tol: float = SINGULAR_TOL
+    fault_reaction: FaultReaction = field(default_factory=FaultReaction)
 
     #: the old names of renamed settings (:mod:`hybrid.deprecation`): given, they warn and set the new ones
     _renamed = RENAMED

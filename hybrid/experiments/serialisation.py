@@ -10,6 +10,7 @@ from dataclasses import asdict, fields
 
 import numpy as np
 
+from hybrid.control.fault import FaultReaction
 from hybrid.control.loops import Gains
 from hybrid.control.options import Posture
 from hybrid.control.references import Step
@@ -29,7 +30,7 @@ def experiment_to_dict(exp) -> dict:
     """The settings of the experiment ``exp`` as JSON-ready data, from which :func:`experiment_from_dict`
     builds it again."""
     d = {f.name: getattr(exp, f.name) for f in fields(exp)}
-    for name in ("sensor", "contact", "gains", "force_reference", "speed_reference"):
+    for name in ("sensor", "contact", "gains", "force_reference", "speed_reference", "fault_reaction"):
         d[name] = asdict(d[name])
     d["robot"] = robot_to_dict(exp.robot)
     d["surface"] = surface_to_dict(exp.surface)
@@ -70,6 +71,8 @@ def _settings(d: dict) -> dict:
              "speed_reference": Step}
     for k, typ in parts.items():
         d[k] = typ(**d[k])
+    if "fault_reaction" in d:  # saved since the step has one
+        d["fault_reaction"] = FaultReaction(**d["fault_reaction"])
     d["robot"], d["surface"] = robot_from_dict(d["robot"]), surface_from_dict(d["surface"])
     if d.get("controller_surface") is not None:
         d["controller_surface"] = surface_from_dict(d["controller_surface"])

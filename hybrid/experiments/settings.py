@@ -64,7 +64,8 @@ class RunSettings:
                 "velocity_reference": self.speed_reference, "sample_time": self.sample_time,
                 "integral": self.integral, "curvature": self.curvature, "frame": self.frame,
                 "path": self.desired_point if self.frame == "desired" else None, "singular_tol": self.singular_tol,
-                "contact_loss": loss, "wrench_sensor": self.controller_wrench_sensor or self.wrench_sensor}
+                "contact_loss": loss, "wrench_sensor": self.controller_wrench_sensor or self.wrench_sensor,
+                "fault_reaction": self.fault_reaction}
 
     def plant_array(self) -> np.ndarray:
         """The ``plant[7]`` array of the generated C (sensor, then contact)."""

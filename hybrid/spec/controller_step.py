@@ -84,11 +84,10 @@ FAULT_DEFAULTS = (5.0, 0.05, 0.2)
 #: law served once a sample: at ``stop_time`` <= ``sample_time`` its discrete poles leave the unit circle),
 #: a time >= 0
 FAULT_CHECKS = ("count", "sampled_time_constant", "nonnegative")
-#: the fault reaction's state: the torque at the safe state's entry, the last finite joint positions (NaN
-#: after a reset, before any: a safe state entered then stops the arm where the first finite ones bring it),
-#: the positions the safe state holds (where the joints' velocities at its entry, decaying with
-#: ``stop_time``, bring them), the consecutive faulted samples, 1 in the safe state, the samples since its entry
-FAULT_STATE = PerJoint(("tau_entry", "q_hold", "q_stop"), tail=("faults", "stopped", "samples"))
+#: the fault reaction's state: the torque to release (the torque at the safe state's entry, then its
+#: difference from the hold's torque there), the last finite joint positions (NaN before any), the positions
+#: held (the entry's), the consecutive faulted samples, 1 in the safe state, the samples since its entry
+FAULT_STATE = PerJoint(("tau_offset", "q_hold", "q_stop"), tail=("faults", "stopped", "samples"))
 #: the estimator's state: the normal estimate, its rate, the last force, 1 once started, the compliance's
 #: estimate and its information
 ESTIMATE = ("n_x", "n_y", "n_z", "ndot_x", "ndot_y", "ndot_z", "F_x", "F_y", "F_z", "started", "c", "c_information")
@@ -165,10 +164,10 @@ STATE_NEXT = {"integrals": "integrals_next", "last_torque": "tau", "filter": "fi
               "estimate": "estimate_next"}
 
 #: the torque of the safe state (the fault reaction): the arm stopped and held at ``q_stop`` (the inverse
-#: dynamics of its model for a critically damped hold of time constant ``stop_time``) and the torque it had
-#: at the fault's entry ``tau_entry`` released linearly over ``unload_time``, within the torque limits. The
-#: caller gives the joint positions (the last finite ones where the sample's are not) and velocities (0
-#: where not finite)
+#: dynamics of its model for a critically damped hold of time constant ``stop_time``) plus the difference
+#: between the torque it had at the entry and the hold's there, released linearly over ``unload_time``,
+#: within the torque limits. The caller gives the joint positions (the last finite ones where the sample's
+#: are not) and velocities (0 where not finite), and keeps ``tau_offset_next`` in ``fault_state``
 SAFE_STOP = Interface(
     "safe_stop",
     inputs=(
@@ -188,6 +187,7 @@ SAFE_STOP = Interface(
     ),
     outputs=(
         Port("tau", "nq", "N m or N", "the safe state's joint torques, within the limits"),
+        Port("tau_offset_next", "nq", "N m or N", "the torque to release, as fault_state keeps it after the sample"),
     ),
     doc="the safe state's torque: stop and hold by the model's inverse dynamics, release the entry torque",
 )
