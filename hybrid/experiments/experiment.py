@@ -198,6 +198,9 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
             raise HybridError("frame='desired' follows the experiment's path: give a path (hybrid.CirclePath or "
                               "hybrid.LinePath), or use frame='actual'")
         check_timing(self)
+        if not isinstance(self.fault_reaction, FaultReaction):
+            raise HybridError(f"fault_reaction = {shown(self.fault_reaction, 60)}; give a hybrid.FaultReaction(...)")
+        self.fault_reaction.check_sampling(self.sample_time)
 
     def with_physics(self, **changes) -> Experiment:
         """This experiment with other settings of :data:`PHYSICS`: what ``dataclasses.replace(self,
