@@ -1,4 +1,11 @@
-"""The one error family the library raises on bad input."""
+"""The one error family the library raises on bad input, and the warnings it gives."""
+
+import sys
+import warnings
+from pathlib import Path
+
+#: the package's folder: a warning points at the first caller outside it
+_PACKAGE = str(Path(__file__).resolve().parent)
 
 
 class HybridError(ValueError):
@@ -73,3 +80,22 @@ class SafeStopError(HybridError):
 
 class LargeModelWarning(UserWarning):
     """A model so large that generating and compiling its code takes minutes (the message says how long)."""
+
+
+class JointLimitWarning(UserWarning):
+    """A run that left the robot's joint position, velocity or effort limits (the URDF's): the message names
+    the worst joint, its limit, how far beyond it and when first (``SimulationResult.limit_violations``
+    holds the numbers)."""
+
+
+class RedundancyWarning(UserWarning):
+    """A redundant arm (more joints than task axes) without a posture task: the joint motion the task
+    leaves free is nobody's to hold, and it falls under gravity and winds up (give a ``hybrid.Posture``)."""
+
+
+def warn(message: str, category: type[Warning]) -> None:
+    """Warn ``message`` at the user's line: the first caller outside the package."""
+    frame, level = sys._getframe(1), 1
+    while frame is not None and str(Path(frame.f_code.co_filename).resolve()).startswith(_PACKAGE):
+        frame, level = frame.f_back, level + 1
+    warnings.warn(message, category, stacklevel=level)
