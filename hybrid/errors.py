@@ -2,10 +2,6 @@
 
 import sys
 import warnings
-from pathlib import Path
-
-#: the package's folder: a warning points at the first caller outside it
-_PACKAGE = str(Path(__file__).resolve().parent)
 
 
 class HybridError(ValueError):
@@ -94,8 +90,9 @@ class RedundancyWarning(UserWarning):
 
 
 def warn(message: str, category: type[Warning]) -> None:
-    """Warn ``message`` at the user's line: the first caller outside the package."""
-    frame, level = sys._getframe(1), 1
-    while frame is not None and str(Path(frame.f_code.co_filename).resolve()).startswith(_PACKAGE):
+    """Warn ``message`` at the user's line: the first caller outside the package (by its module's name: a
+    dataclass's generated ``__init__`` has no file of its own)."""
+    frame, level = sys._getframe(1), 2  # the caller of this function is warnings.warn's level 2
+    while frame is not None and frame.f_globals.get("__name__", "").partition(".")[0] == __name__.partition(".")[0]:
         frame, level = frame.f_back, level + 1
     warnings.warn(message, category, stacklevel=level)

@@ -53,6 +53,8 @@ class LimitViolation:
         unit = self.unit
         if self.kind == "position":
             beyond = f"{abs(self.value - self.limit):.3g} {unit} beyond its limit {self.limit:.4g} {unit}"
+        elif self.kind == "effort" and self.value >= self.limit * (1 - AT_EFFORT):
+            beyond = "at its limit: the torque saturated"
         else:
             beyond = f"{self.value / self.limit:.0%} of its limit {self.limit:.4g} {unit}"
         return (f"{self.kind}: joint {self.joint!r} reached {self.value:.4g} {unit}, {beyond}, first at "
