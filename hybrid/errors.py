@@ -3,6 +3,9 @@
 import sys
 import warnings
 
+#: the modules a warning's line is not in: the package's, and those that build its dataclasses
+_INSIDE = (__name__.partition(".")[0], "dataclasses")
+
 
 class HybridError(ValueError):
     """Bad input or an impossible request; the message says what was wrong and what to do."""
@@ -90,9 +93,9 @@ class RedundancyWarning(UserWarning):
 
 
 def warn(message: str, category: type[Warning]) -> None:
-    """Warn ``message`` at the user's line: the first caller outside the package (by its module's name: a
-    dataclass's generated ``__init__`` has no file of its own)."""
+    """Warn ``message`` at the user's line: the first caller outside the package and ``dataclasses`` (by
+    the module's name: a dataclass's generated ``__init__`` has no file of its own, ``replace`` calls it)."""
     frame, level = sys._getframe(1), 2  # the caller of this function is warnings.warn's level 2
-    while frame is not None and frame.f_globals.get("__name__", "").partition(".")[0] == __name__.partition(".")[0]:
+    while frame is not None and frame.f_globals.get("__name__", "").partition(".")[0] in _INSIDE:
         frame, level = frame.f_back, level + 1
     warnings.warn(message, category, stacklevel=level)
