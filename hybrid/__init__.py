@@ -46,12 +46,10 @@ from hybrid.control.schemes import SCHEMES, Khatib, Scheme, TaskDecoupling
 from hybrid.control.wrench_sensor import Tool, WrenchSensor
 from hybrid.errors import (
     HybridError,
-    JointLimitWarning,
     LargeModelWarning,
     NativeBuildError,
     NonFiniteError,
     ParameterError,
-    RedundancyWarning,
     SafeStopError,
     SampleTimingError,
     SingularConfigurationError,
@@ -73,6 +71,7 @@ from hybrid.plants.contact import Contact, Sensor
 from hybrid.simulation.metrics import metrics
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.runner import SimulationError, simulate
+from hybrid.user_warnings import JointLimitWarning, RedundancyWarning
 
 if TYPE_CHECKING:  # type checkers see the lazy names' real signatures
     from hybrid.control.config import read_controller_config

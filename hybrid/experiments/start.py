@@ -17,9 +17,10 @@ from functools import lru_cache
 
 import numpy as np
 
-from hybrid.errors import HybridError, RedundancyWarning, warn
+from hybrid.errors import HybridError
 from hybrid.experiments.settings import START_TOL, free, pressed
 from hybrid.spec.axes import AXIS_NAMES
+from hybrid.user_warnings import RedundancyWarning, warn
 from hybrid.validate import shown
 
 

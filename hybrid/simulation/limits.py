@@ -14,8 +14,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from hybrid.errors import JointLimitWarning, warn
 from hybrid.spec.chain import JOINT_UNITS
+from hybrid.user_warnings import JointLimitWarning, warn
 
 #: the kinds of limit, in the order they are told
 KINDS = ("position", "velocity", "effort")
