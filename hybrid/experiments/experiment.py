@@ -34,8 +34,9 @@ from hybrid.experiments.settings import (
     check_common_types,
     check_sensing,
     check_timing,
+    warn_redundancy,
 )
-from hybrid.experiments.start import check_seed, start_state, warn_redundancy
+from hybrid.experiments.start import check_seed, start_state
 from hybrid.geometry.paths import Path
 from hybrid.geometry.surfaces import Surface
 from hybrid.geometry.task_axes import check_axes, frame_direction_of

@@ -6,8 +6,8 @@ The inverse kinematics begins at the experiment's ``q0``, else at the posture's 
 middle of the joint ranges. A solution outside the URDF's position limits is first turned by whole
 turns into them (a revolute joint's pose repeats every ``2 pi``); failing that, and without a ``q0``
 of the user's, the search begins again from further seeds within the limits (the middle of the
-ranges, the posture's rest, points spread over the ranges) and takes the first solution within
-them. A start that still leaves them is refused, naming the joint.
+ranges where it began at the rest, points spread over the ranges) and takes the first solution
+within them. A start that still leaves them is refused, naming the joint.
 """
 
 from __future__ import annotations
@@ -19,8 +19,6 @@ import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.experiments.settings import START_TOL, free, pressed
-from hybrid.spec.axes import AXIS_NAMES
-from hybrid.user_warnings import RedundancyWarning, warn
 from hybrid.validate import shown
 
 
@@ -41,16 +39,6 @@ def check_seed(robot, q0) -> tuple[float, ...] | None:
         raise HybridError(f"q0 = {shown(q0, 60)}; give one finite joint position per joint [rad or m], {robot.n} "
                           f"for {', '.join(robot.joint_names)}, or None (the start's default seed)")
     return tuple(map(float, q))
-
-
-def warn_redundancy(robot, axes: tuple[int, ...], posture) -> None:
-    """Warn of a redundant task (more joints than task ``axes``) without a ``posture``: nothing holds the
-    joint motion it leaves free (:class:`hybrid.RedundancyWarning`)."""
-    if posture is None and robot.n > len(axes):
-        warn(f"the arm {robot.name!r} has {robot.n} joints for {len(axes)} task axes "
-             f"({', '.join(AXIS_NAMES[i] for i in axes)}) and no posture task: the joint motion the task leaves "
-             "free falls under gravity and winds up (joint rates, torques, contact lost); give "
-             "posture=hybrid.Posture(q_rest), a rest posture within the joint limits", RedundancyWarning)
 
 
 def start_state(exp) -> np.ndarray:

@@ -58,7 +58,7 @@ class LimitViolation:
         else:
             beyond = f"{self.value / self.limit:.0%} of its limit {self.limit:.4g} {unit}"
         return (f"{self.kind}: joint {self.joint!r} reached {self.value:.4g} {unit}, {beyond}, first at "
-                f"t = {self.first_time:.3f} s; {self.fraction:.1%} of the run out of a limit")
+                f"t = {self.first_time:.3f} s; a joint out of its {self.kind} limit for {self.fraction:.1%} of the run")
 
 
 def limit_violations(robot, t: np.ndarray, q: np.ndarray, qdot: np.ndarray, tau: np.ndarray) -> dict:
