@@ -20,7 +20,8 @@ The public API, by subpackage:
   :class:`Sensor` and :class:`Contact`, :func:`simulate`, :class:`SimulationResult`, :func:`metrics`;
   sweeps (:func:`sweep`);
 - :class:`HybridError`, the base of every error raised on bad input; :class:`LargeModelWarning`,
-  warned for a chain whose code takes minutes to generate.
+  warned for a chain whose code takes minutes to generate; :class:`JointLimitWarning`, for a run that
+  left the robot's joint limits; :class:`RedundancyWarning`, for a redundant arm without a posture task.
 
 Importing the package loads neither SymPy nor CasADi and reads no file: the code generator
 runs only when a unit must be built, and :class:`ImplicitSurface` (a SymPy expression) and
@@ -71,6 +72,7 @@ from hybrid.plants.contact import Contact, Sensor
 from hybrid.simulation.metrics import metrics
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.runner import SimulationError, simulate
+from hybrid.user_warnings import JointLimitWarning, RedundancyWarning
 
 if TYPE_CHECKING:  # type checkers see the lazy names' real signatures
     from hybrid.control.config import read_controller_config
@@ -98,12 +100,12 @@ def __dir__() -> list[str]:
 
 __all__ = [
     "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw",
-    "EstimatedSurface", "Experiment", "FaultReaction", "Gains", "HybridError", "ImplicitSurface", "Khatib",
-    "LargeModelWarning", "LinePath", "Measurement", "NativeBuildError", "NonFiniteError", "OperationalSpace",
-    "PANDA_URDF", "ParameterError", "Plane", "Posture", "Reference", "Robot", "SCHEMES", "SafeStopError",
-    "SampleTimingError", "Scheme", "Sensor", "SimulationError", "SimulationResult", "SingularConfigurationError",
-    "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "Tool", "ToolIdentification", "UR5_URDF", "URDFError",
-    "WrenchSensor", "__version__", "arm_terms", "decoupling_law", "identify_tool", "metrics", "operational_space",
-    "panda", "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config", "simulate", "sweep",
-    "tare", "task_frame", "tracing_experiment", "ur5",
+    "EstimatedSurface", "Experiment", "FaultReaction", "Gains", "HybridError", "ImplicitSurface",
+    "JointLimitWarning", "Khatib", "LargeModelWarning", "LinePath", "Measurement", "NativeBuildError",
+    "NonFiniteError", "OperationalSpace", "PANDA_URDF", "ParameterError", "Plane", "Posture", "RedundancyWarning",
+    "Reference", "Robot", "SCHEMES", "SafeStopError", "SampleTimingError", "Scheme", "Sensor", "SimulationError",
+    "SimulationResult", "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "Tool",
+    "ToolIdentification", "UR5_URDF", "URDFError", "WrenchSensor", "__version__", "arm_terms", "decoupling_law",
+    "identify_tool", "metrics", "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment",
+    "read_controller_config", "simulate", "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
 ]

@@ -35,8 +35,9 @@ from hybrid.experiments.settings import (
     check_common_types,
     check_sensing,
     check_timing,
+    warn_redundancy,
 )
-from hybrid.experiments.start import start_state
+from hybrid.experiments.start import check_seed, start_state
 from hybrid.geometry.paths import Path
 from hybrid.geometry.surfaces import Surface
 from hybrid.geometry.task_axes import check_axes, frame_direction_of
@@ -83,6 +84,10 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     axes : the controller's task axes (see :func:`hybrid.decoupling_law`); default the robot's.
     posture : a :class:`~hybrid.Posture` task in the null space of a redundant arm's task (its rest
         posture is also where the start's inverse kinematics begins); off by default.
+    q0 : [rad or m] joint positions, one per joint, where the start's inverse kinematics begins (default:
+        the posture's rest, else the middle of the joint ranges): a seed near the start wanted picks
+        its solution branch. A start outside the joint position limits is refused
+        (:mod:`hybrid.experiments.start`). The planar arm's start is in closed form: ``elbow`` picks it.
     controller : a scheme's name (``"task"``, ``"khatib"``, ``"raibert_craig"``, ``"fisher_mujtaba"``).
     sensor : the plant's elastic sensor and its signal (noise, bias, lag, delay: :class:`~hybrid.Sensor`).
     wrench_sensor : the true force/torque sensor and tool (a :class:`~hybrid.WrenchSensor`): the
@@ -119,6 +124,7 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     frame_direction: tuple[float, float, float] = (0.0, 0.0, 1.0)
     axes: str | tuple[int, ...] | None = None
     posture: Posture | None = None
+    q0: tuple[float, ...] | None = None
     controller: str = "task"
     integral: bool = True
     curvature: bool = False
@@ -186,7 +192,10 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         object.__setattr__(self, "frame_direction", tuple(frame_direction_of(self.frame_direction)))
         self.robot.kind.check_settings(self.robot, self.frame_direction, {"elbow": self.elbow, "backend": self.backend})
         # what the controller will refuse, refused now (building it compiles its step)
-        check_posture(self.robot, check_axes(self.robot, self.axes), scheme_of(self.controller), self.posture)
+        axes = check_axes(self.robot, self.axes)
+        check_posture(self.robot, axes, scheme_of(self.controller), self.posture)
+        object.__setattr__(self, "q0", check_seed(self.robot, self.q0))
+        warn_redundancy(self.robot, axes, self.posture)
         if self.start_point is not None:
             object.__setattr__(self, "start_point", _point("Experiment", "start_point", self.start_point,
                                                            (self._geometry().dim,)))

@@ -56,7 +56,7 @@ def panda_experiment(**overrides) -> Experiment:
     Takes the same keywords as :func:`hybrid.paper_experiment` (the gains one by one, ``F_d``,
     ``v_d``). On a vertical cylinder the path is, unless given, the circle around it through the
     start point (``start_point``, or the default one projected onto the cylinder); ``posture=None``
-    turns the posture task off.
+    turns the posture task off (warned: :class:`hybrid.RedundancyWarning`).
     """
     surface = overrides.get("surface", Cylinder(CYLINDER_POINT, (0.0, 0.0, 1.0), CYLINDER_RADIUS))
     defaults = {"robot": panda(), "surface": surface, "posture": Posture(REST_POSTURE),

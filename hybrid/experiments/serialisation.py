@@ -40,6 +40,10 @@ def experiment_to_dict(exp) -> dict:
     d["frame_direction"] = list(exp.frame_direction)
     d["axes"] = list(exp.axes) if isinstance(exp.axes, tuple) else exp.axes
     d["posture"] = None if exp.posture is None else asdict(exp.posture)
+    if exp.q0 is None:
+        del d["q0"]  # as saved before the start took a seed (a sweep's saved base stays the same)
+    else:
+        d["q0"] = list(exp.q0)
     for name in ("wrench_sensor", "controller_wrench_sensor"):
         d[name] = None if d[name] is None else asdict(d[name])
     return {"kind": "experiment", **d}

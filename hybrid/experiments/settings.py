@@ -14,6 +14,8 @@ from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import RENAMED, renamed_settings
 from hybrid.errors import HybridError
 from hybrid.plants.contact import Contact, Sensor
+from hybrid.spec.axes import AXIS_NAMES
+from hybrid.user_warnings import RedundancyWarning, warn
 from hybrid.validate import _finite, check_singular_tol, check_size, shown
 
 #: where the loops' task frame is taken: at the actual contact point or at the desired one
@@ -211,6 +213,16 @@ def setting_aliases() -> dict[str, str]:
     """Short names of settings and the paths they stand for: ``F_d`` / ``v_d`` for the references,
     each gain by its own name (``KPf`` for ``gains.KPf``)."""
     return {**REFERENCE_ALIASES, **{f.name: f"gains.{f.name}" for f in fields(Gains)}}
+
+
+def warn_redundancy(robot, axes: tuple[int, ...], posture) -> None:
+    """Warn of a redundant task (more joints than task ``axes``) without a ``posture``: nothing holds the
+    joint motion it leaves free (:class:`hybrid.RedundancyWarning`)."""
+    if posture is None and robot.n > len(axes):
+        warn(f"the arm {robot.name!r} has {robot.n} joints for {len(axes)} task axes "
+             f"({', '.join(AXIS_NAMES[i] for i in axes)}) and no posture task: the joint motion the task leaves "
+             "free falls under gravity and winds up (joint rates, torques, contact lost); give "
+             "posture=hybrid.Posture(q_rest), a rest posture within the joint limits", RedundancyWarning)
 
 
 def with_overrides(cls, maker: str, overrides: dict, defaults: dict | None = None):

@@ -41,6 +41,8 @@ class SerialChain:
 
     #: the closed form's parameters (None: it has none)
     arm: Arm | None = None
+    #: whether its inverse kinematics begins at a seed ``q0`` (the closed form's does not: its elbow picks)
+    seeded = True
 
     def conditioning(self, robot, q) -> np.ndarray:
         rows = np.atleast_2d(np.asarray(q, float))
@@ -128,6 +130,7 @@ class ClosedFormArm(SerialChain):
     force_size = 2
     plant = "planar"
     sensor_weighs = False
+    seeded = False
 
     def conditioning(self, robot, q) -> np.ndarray:
         return self.arm.conditioning(np.asarray(q, float).T)

@@ -14,6 +14,7 @@ from hybrid import files
 from hybrid.errors import HybridError
 from hybrid.experiments.experiment import Experiment
 from hybrid.plants.planar import planar_record
+from hybrid.simulation.limits import limit_violations
 
 
 @dataclass
@@ -62,6 +63,13 @@ class SimulationResult:
             return None
         cos = np.einsum("ij,ij->i", self.normal_estimate, self.true_normal)
         return np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
+
+    @property
+    def limit_violations(self) -> dict:
+        """Where the run left the robot's joint limits: ``{kind: LimitViolation}`` for each of
+        ``"position"``, ``"velocity"``, ``"effort"`` it left (empty: within them all), from the
+        recorded joints and torques (:mod:`hybrid.simulation.limits`)."""
+        return limit_violations(self.experiment.robot, self.t, self.q, self.qdot, self.tau)
 
     @property
     def UNITS(self) -> dict:  # noqa: N802 (a table, as before)

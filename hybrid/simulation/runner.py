@@ -17,6 +17,7 @@ from hybrid.errors import HybridError, NonFiniteError
 from hybrid.experiments.experiment import Experiment
 from hybrid.plants.registry import plant_for
 from hybrid.simulation import closed_loop
+from hybrid.simulation.limits import warn_limit_violations
 from hybrid.simulation.metrics import run_metrics
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.sensing import plant_reader
@@ -55,7 +56,9 @@ def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> Simulat
     model = plant_for(exp, plant)
     x0 = exp.checked_start(model.record)  # the record's memory before anything sized by the run
     # the compiled loop runs the experiment's own generated plant
-    return _compiled_or_run(exp, model, x0, compiled and isinstance(model, exp.plant_class))
+    result = _compiled_or_run(exp, model, x0, compiled and isinstance(model, exp.plant_class))
+    warn_limit_violations(result)
+    return result
 
 
 def _compiled_or_run(exp, plant, x0: np.ndarray, compiled: bool = True) -> SimulationResult:
