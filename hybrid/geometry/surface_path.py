@@ -26,9 +26,10 @@ from hybrid.geometry.surfaces import Surface
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
 #: the longest sub-interval of the table [m] (the Hermite interpolant's error is about its fourth power)
 TABLE_STEP = 2e-3
-#: the difference steps [m along the base curve, at most a fraction of the piece]: small enough for
-#: fourth-order accuracy, large enough that rounding (about 1e-16 / step) stays below 1e-11
-FIRST_STEP, SECOND_STEP, STEP_FRACTION = 2e-4, 2e-3, 5e-3
+#: the difference steps of C' and C'' [m along the base curve; at most 1/2000 and 1/50 of the piece]:
+#: small against a turn's radius (the error is about (step / radius)^4), large enough that rounding
+#: (about 1e-16 / step and 1e-16 / step^2) stays below 1e-10
+FIRST_STEP, SECOND_STEP = 2e-5, 5e-4
 
 
 def check_surface(owner: str, surface) -> None:
@@ -71,8 +72,8 @@ class SurfacePath(Path):
         if not np.all(rough > 0):
             raise HybridError(f"{self._owner}: a piece of the path has zero length; give distinct points")
         per_u = rough / np.diff(self._knots)  # base-curve metres per unit of u
-        self._h1 = np.minimum(FIRST_STEP, STEP_FRACTION * rough) / per_u
-        self._h2 = np.minimum(SECOND_STEP, 10 * STEP_FRACTION * rough) / per_u
+        self._h1 = np.minimum(FIRST_STEP, 5e-4 * rough) / per_u
+        self._h2 = np.minimum(SECOND_STEP, 2e-2 * rough) / per_u
         counts = np.maximum(8, np.ceil(rough / TABLE_STEP).astype(int))
         piece = np.repeat(pieces, counts)
         start = np.concatenate([[0], np.cumsum(counts)[:-1]])
@@ -115,6 +116,10 @@ class SurfacePath(Path):
         nodes = (mid[:, None] + half[:, None] * _GL_X).ravel()
         speed = self._speed(np.repeat(piece, len(_GL_X)), nodes).reshape(len(ua), len(_GL_X))
         return half * (speed @ _GL_W)
+
+    def arc_at_knot(self, i: int) -> float:
+        """The arc length [m] where the ``i``-th piece starts (``i`` = the number of pieces: ``length``)."""
+        return float(self._sa[np.searchsorted(self._ua, self._knots[i])])
 
     # ------------------------------------------------------------------ arc length to parameter
 

@@ -111,7 +111,7 @@ class WaypointPath(SurfacePath):
 
     def arc_of_waypoint(self, i: int) -> float:
         """The arc length [m] at the ``i``-th (projected) waypoint."""
-        return float(self._sa[np.searchsorted(self._ua, self.knots[i])])
+        return self.arc_at_knot(i)
 
     def __repr__(self):
         return (f"WaypointPath({type(self.surface).__name__}, {len(self.points)} points, closed={self.closed}, "
