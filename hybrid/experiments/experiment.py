@@ -176,7 +176,8 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
             raise HybridError(f"posture = {shown(self.posture, 60)}; give a hybrid.Posture(q_rest, stiffness, damping) "
                               "or None")
         if self.path is not None and not isinstance(self.path, Path):
-            raise HybridError(f"path = {shown(self.path, 60)}; give a hybrid.CirclePath or hybrid.LinePath, or None")
+            raise HybridError(f"path = {shown(self.path, 60)}; give a hybrid path (CirclePath, LinePath, or a "
+                              "subclass of hybrid.geometry.paths.Path), or None")
         if not isinstance(self.backend, str) or self.backend not in BACKENDS:
             raise HybridError(f"unknown backend {shown(self.backend, 40)}; choose one of {BACKENDS} (the NumPy oracle "
                               "runs as hybrid.oracle.simulate(experiment))")
