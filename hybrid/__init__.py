@@ -8,7 +8,8 @@ The public API, by subpackage:
   parameters), and their terms (:func:`arm_terms`, :func:`operational_space`);
 - geometry (:mod:`hybrid.geometry`): the surfaces :class:`Plane`, :class:`Circle`, :class:`Sphere`,
   :class:`Cylinder` and :class:`ImplicitSurface`; paths on them (:class:`CirclePath`,
-  :class:`LinePath`); the task frame at points of any surface (:func:`task_frame`);
+  :class:`LinePath`; on any surface :class:`WaypointPath`, :class:`RasterPath`,
+  :class:`SpiralPath`); the task frame at points of any surface (:func:`task_frame`);
 - control (:mod:`hybrid.control`): the compiled law (:class:`DecouplingLaw`, :func:`decoupling_law`),
   the :class:`Controller` component, its options (:class:`Posture`, a null-space posture task;
   :class:`ContactLoss`) and its schemes (:data:`SCHEMES`); :class:`Gains`, :class:`Step`; a controller
@@ -63,7 +64,9 @@ from hybrid.experiments.paper import paper_experiment
 from hybrid.experiments.tracing import tracing_experiment
 from hybrid.geometry.frames import task_frame
 from hybrid.geometry.paths import CirclePath, LinePath
+from hybrid.geometry.patterns import RasterPath, SpiralPath
 from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere
+from hybrid.geometry.waypoints import WaypointPath
 from hybrid.models.planar_arm import Arm, paper_arm
 from hybrid.models.robot import Robot
 from hybrid.models.shipped import PANDA_URDF, UR5_URDF, panda, ur5
@@ -100,12 +103,13 @@ def __dir__() -> list[str]:
 
 __all__ = [
     "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw",
-    "EstimatedSurface", "Experiment", "FaultReaction", "Gains", "HybridError", "ImplicitSurface",
-    "JointLimitWarning", "Khatib", "LargeModelWarning", "LinePath", "Measurement", "NativeBuildError",
-    "NonFiniteError", "OperationalSpace", "PANDA_URDF", "ParameterError", "Plane", "Posture", "RedundancyWarning",
+    "EstimatedSurface", "Experiment", "FaultReaction", "Gains", "HybridError", "ImplicitSurface", "JointLimitWarning",
+    "Khatib", "LargeModelWarning", "LinePath", "Measurement", "NativeBuildError", "NonFiniteError",
+    "OperationalSpace", "PANDA_URDF", "ParameterError", "Plane", "Posture", "RasterPath", "RedundancyWarning",
     "Reference", "Robot", "SCHEMES", "SafeStopError", "SampleTimingError", "Scheme", "Sensor", "SimulationError",
-    "SimulationResult", "SingularConfigurationError", "Sphere", "Step", "TaskDecoupling", "TaskFrameError", "Tool",
-    "ToolIdentification", "UR5_URDF", "URDFError", "WrenchSensor", "__version__", "arm_terms", "decoupling_law",
-    "identify_tool", "metrics", "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment",
-    "read_controller_config", "simulate", "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
+    "SimulationResult", "SingularConfigurationError", "Sphere", "SpiralPath", "Step", "TaskDecoupling",
+    "TaskFrameError", "Tool", "ToolIdentification", "UR5_URDF", "URDFError", "WaypointPath", "WrenchSensor",
+    "__version__", "arm_terms", "decoupling_law", "identify_tool", "metrics", "operational_space", "panda",
+    "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config", "simulate", "sweep", "tare",
+    "task_frame", "tracing_experiment", "ur5",
 ]

@@ -28,6 +28,7 @@ from hybrid.control.schemes import SCHEMES, scheme_of
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import RENAMED, RenamedKeywords, renamed_attribute
 from hybrid.errors import HybridError
+from hybrid.experiments.followed import check_followed
 from hybrid.experiments.serialisation import experiment_from_dict, experiment_to_dict
 from hybrid.experiments.settings import (
     TOUCH_THRESHOLD,
@@ -74,9 +75,12 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         The surface the controller is told: the true ``surface`` (the default), a wrong one (a sphere of
         another radius, a plane for a curved part), or a :class:`~hybrid.EstimatedSurface` it estimates
         online. The plant always has the true one.
-    path : CirclePath or LinePath, optional
+    path : Path, optional
         Where the desired point runs (for ``frame="desired"`` and the workspace check); default the
-        surface's own path (:meth:`Surface.path`), when it has one.
+        surface's own path (:meth:`Surface.path`), when it has one. The tip moves along the task axis
+        ``t1``, in the plane through the start normal to ``frame_direction``: a path out of that
+        plane, or against ``t1``, is not followed and refused
+        (:func:`~hybrid.experiments.followed.check_followed`).
     start_point : the sensor tip's start on the surface [m] (projected onto it when within
         1 mm); default the path's start.
     elbow : +1 (``q2 > 0``) or -1: the planar arm's start configuration.
@@ -183,7 +187,8 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
             raise HybridError(f"posture = {shown(self.posture, 60)}; give a hybrid.Posture(q_rest, stiffness, damping) "
                               "or None")
         if self.path is not None and not isinstance(self.path, Path):
-            raise HybridError(f"path = {shown(self.path, 60)}; give a hybrid.CirclePath or hybrid.LinePath, or None")
+            raise HybridError(f"path = {shown(self.path, 60)}; give a hybrid path (CirclePath, LinePath, or a "
+                              "subclass of hybrid.geometry.paths.Path), or None")
         if not isinstance(self.backend, str) or self.backend not in BACKENDS:
             raise HybridError(f"unknown backend {shown(self.backend, 40)}; choose one of {BACKENDS} (the NumPy oracle "
                               "runs as hybrid.oracle.simulate(experiment))")
@@ -207,6 +212,7 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
             raise HybridError("frame='desired' follows the experiment's path: give a path (hybrid.CirclePath or "
                               "hybrid.LinePath), or use frame='actual'")
         check_timing(self)
+        check_followed(self)
         if not isinstance(self.fault_reaction, FaultReaction):
             raise HybridError(f"fault_reaction = {shown(self.fault_reaction, 60)}; give a hybrid.FaultReaction(...)")
         self.fault_reaction.check_sampling(self.sample_time)

@@ -35,6 +35,9 @@ def experiment_to_dict(exp) -> dict:
     d["robot"] = robot_to_dict(exp.robot)
     d["surface"] = surface_to_dict(exp.surface)
     d["controller_surface"] = None if exp.controller_surface is None else surface_to_dict(exp.controller_surface)
+    if exp.path is not None and not isinstance(exp.path, (CirclePath, LinePath)):
+        raise HybridError(f"path = {type(exp.path).__name__}: only a CirclePath or LinePath is written to a file; "
+                          "give one of them, or keep the experiment in Python")
     d["path"] = None if exp.path is None else {"kind": type(exp.path).__name__, **asdict(exp.path)}
     d["start_point"] = None if exp.start_point is None else list(exp.start_point)
     d["frame_direction"] = list(exp.frame_direction)

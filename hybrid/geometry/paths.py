@@ -18,9 +18,20 @@ from hybrid.validate import _finite, _point, unit_vector
 
 
 class Path:
-    """The base of every path: ``point_at(s)``, ``points_at(s)`` (one row per arc length),
-    ``tangent_at(s)`` (unit), ``arc_of(p)`` (the arc length of the path point nearest ``p``) and
-    ``start`` (the arc length where a run starts unless told otherwise)."""
+    """The base of every path, and the protocol a path of your own follows (subclass it and give):
+
+    - ``point_at(s)``: the point [m] at arc length ``s`` [m] (3 coordinates; 2 in the planar arm's
+      plane);
+    - ``points_at(s)``: the points at an array of arc lengths, one row each;
+    - ``tangent_at(s)``: the unit tangent, in the direction of growing ``s``;
+    - ``arc_of(p)``: the arc length of the path's point nearest ``p``;
+    - ``start``: the arc length where a run starts unless told otherwise (default 0).
+
+    A path on a surface may also give ``normal_at(s)``, ``curvature_at(s)`` and ``length``
+    (:class:`~hybrid.WaypointPath`, :class:`~hybrid.RasterPath`, :class:`~hybrid.SpiralPath`). An
+    experiment moves its desired point along the path at the speed reference; its tip follows the path
+    only where the path runs along the task axis ``t1`` (:mod:`hybrid.experiments.followed`), and it
+    refuses any other."""
 
     start: float = 0.0
 

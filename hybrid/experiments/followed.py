@@ -1,0 +1,87 @@
+"""Whether an experiment's sensor tip follows the path it is given.
+
+The experiment's controller drives the tip along the task axis ``t1 = e x n / |e x n|`` at the
+speed reference (in the frame at the tip, or at the desired point for ``frame="desired"``); the path
+sets the start, the desired point and the workspace check, but does not steer the tip. As ``t1`` is
+normal to ``e`` (the frame's direction), the tip stays in the plane through its start normal to
+``e``, running along ``t1``: on the planar arm, along the surface's cross-section. A path elsewhere
+would be accepted and silently not followed, so :func:`check_followed` refuses it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from hybrid.errors import HybridError
+from hybrid.experiments.settings import START_TOL
+
+#: the times along the run [s] where the path is compared with the tip's motion
+SAMPLES = 129
+#: the least cosine between the path's tangent and t1 (the direction check: it runs with t1, not against)
+ALONG = 0.0
+#: how far [m] a path's point may be out of the plane the tip stays in (rounding, not a pattern's bend:
+#: a path on the surface in that plane runs along t1; one out of it, however little, turns elsewhere)
+PLANE_TOL = 1e-6
+
+_WHAT_WORKS = ("give a path the tip follows: leave path out (the surface's own, through the start), or e.g. "
+               "sphere.latitude_circle(), cylinder.circle_at(point), a LinePath along t1 on a plane, or choose "
+               "frame_direction normal to the path's plane; paths elsewhere (a WaypointPath, RasterPath or "
+               "SpiralPath that turns out of that plane) are not followed yet")
+
+
+def check_followed(exp) -> None:
+    """Refuse an experiment whose given ``path`` the tip does not follow: a point of the path (sampled
+    over the run) out of the plane through the start normal to ``e`` by more than :data:`PLANE_TOL`
+    (on the planar arm: off the surface's cross-section by more than :data:`START_TOL`), or its tangent
+    against ``t1``. A path in that plane but off the surface (a straight line over a bumpy part) is
+    followed as seen along the surface's normal, and accepted."""
+    path = exp.path
+    if path is None:
+        return
+    start = np.asarray(exp.start(), dtype=float)
+    t = np.linspace(0.0, exp.duration, SAMPLES)
+    s = path.arc_of(start) + exp.speed_reference.integral(t)
+    if hasattr(path, "length") and not getattr(path, "closed", True):
+        s = np.clip(s, 0.0, path.length)  # an open path's end: the workspace check reads the run past it
+    points = np.asarray(path.points_at(s), dtype=float)
+    tangents = np.array([path.tangent_at(float(si)) for si in s])
+    geometry = exp._geometry()
+    if points.shape[1] == 2:  # the planar arm: along the cross-section, its tangent (-n_y, n_x)
+        off = np.array([np.linalg.norm(p - geometry.project(p)) for p in points])
+        normals = np.array([geometry.normal_at(geometry.project(p)) for p in points])
+        t1 = np.column_stack([-normals[:, 1], normals[:, 0]])
+        where = "off the surface's cross-section, which the planar arm's tip runs along"
+    else:
+        e = np.asarray(exp.frame_direction, dtype=float)
+        off = np.abs((points - start) @ e)
+        t1 = np.cross(e, _normals(exp.surface, points))
+        t1 /= np.maximum(np.linalg.norm(t1, axis=1), 1e-300)[:, None]
+        where = (f"out of the plane through the start normal to e = frame_direction = {np.round(e, 6).tolist()}, "
+                 "where the tip stays (it moves along t1 = e x n / |e x n|)")
+    name = type(path).__name__
+    far = np.flatnonzero(~(off <= (START_TOL if points.shape[1] == 2 else PLANE_TOL)))
+    if len(far):
+        i = far[0]
+        raise HybridError(f"path = {name} is not followed: at t = {t[i]:.3f} s its point "
+                          f"{np.round(points[i], 4).tolist()} m is {off[i] * 1e3:.3g} mm {where}\n  {_WHAT_WORKS}")
+    cos = np.einsum("ij,ij->i", tangents, t1)
+    defined = np.linalg.norm(t1, axis=1) > 0.5
+    against = np.flatnonzero(defined & ~(cos > ALONG))
+    if len(against):
+        i = against[0]
+        angle = math.degrees(math.acos(max(-1.0, min(1.0, float(cos[i])))))
+        raise HybridError(f"path = {name} is not followed: at t = {t[i]:.3f} s it runs {angle:.0f} degrees from t1 "
+                          f"= {np.round(t1[i], 4).tolist()}, the direction the tip moves in\n  {_WHAT_WORKS}")
+
+
+def _normals(surface, points: np.ndarray) -> np.ndarray:
+    """The surface's unit normals ``grad phi / |grad phi|`` at (or near) the points, 0 where undefined."""
+    try:
+        phi = surface.phi_function()
+    except HybridError:  # a surface without a formula of its own gives its normals itself
+        return np.array([surface.normal_at(tuple(p)) for p in points])
+    with np.errstate(all="ignore"):
+        grads = np.array([phi(p)[1] for p in points], dtype=float)
+        return np.nan_to_num(grads / np.linalg.norm(grads, axis=1)[:, None])
