@@ -63,3 +63,37 @@ def test_page_snippets_run(page, tmp_path):
 def test_api_reference_lists_every_public_name():
     listed = set(re.findall(r"^   (\w+)$", (DOCS / "api.rst").read_text(), flags=re.M))
     assert set(hybrid.__all__) - {"__version__"} <= listed
+
+
+#: pages whose equations are typeset (MyST ``$...$`` and ``$$...$$``), not written as code
+MATH_PAGES = ("conventions.md",)
+#: what marks an equation written as code: an assignment or relation of the law's symbols
+EQUATION_SYMBOLS = ("R^T", "Bbar", "tau", "q'", "r'", "Sigma", "^-1", "^-T")
+
+
+def code_spans(markdown: str) -> list[str]:
+    """The inline code spans of a Markdown page, outside its fenced blocks."""
+    prose = re.sub(r"^```.*?^```", "", markdown, flags=re.M | re.S)
+    return re.findall(r"(?<!`)`([^`\n]+(?:\n[^`\n]+)*)`(?!`)", prose)
+
+
+def test_code_spans_found():
+    # the check below finds what it looks for: an equation in backticks, as the pages once wrote them
+    assert code_spans("law `tau = J^T F`, in `code` and\n```python\nx = `y`\n```\n") == ["tau = J^T F", "code"]
+
+
+@pytest.mark.parametrize("name", MATH_PAGES)
+def test_page_equations_are_math(name):
+    page = (DOCS / name).read_text()
+    equations = [span for span in code_spans(page)
+                 if "=" in span and any(symbol in span for symbol in EQUATION_SYMBOLS)]
+    assert not equations, f"{name} writes equations as code; typeset them as $...$: {equations}"
+    # and the page parses to math nodes, displays with labels among them
+    docutils_ = pytest.importorskip("myst_parser.parsers.docutils_")
+    from docutils import nodes
+    from docutils.core import publish_doctree
+    tree = publish_doctree(page, parser=docutils_.Parser(),
+                           settings_overrides={"myst_enable_extensions": ["dollarmath"], "report_level": 5})
+    inline, display = list(tree.findall(nodes.math)), list(tree.findall(nodes.math_block))
+    assert inline and display, f"{name}'s math did not parse as math"
+    assert all("`" not in node.astext() for node in inline + display)
