@@ -1,5 +1,5 @@
-"""The documentation's Python snippets run as written, page by page, and its API reference lists
-every public name.
+"""The documentation's Python snippets run as written, page by page, its API reference lists
+every public name, and its pages typeset their equations as math, not as code.
 
 Each page's Python blocks (``.. code-block:: python`` in reST, fenced ```` ```python ```` in Markdown)
 run in order, as one script, in a fresh interpreter and an empty folder (the snippets of a page build
