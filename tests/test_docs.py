@@ -1,5 +1,5 @@
-"""The documentation's Python snippets run as written, page by page, and its API reference lists
-every public name.
+"""The documentation's Python snippets run as written, page by page, its API reference lists
+every public name, and its pages typeset their equations as math, not as code.
 
 Each page's Python blocks (``.. code-block:: python`` in reST, fenced ```` ```python ```` in Markdown)
 run in order, as one script, in a fresh interpreter and an empty folder (the snippets of a page build
@@ -9,6 +9,7 @@ on each other), twice in a row: a snippet does not depend on what an earlier run
 
 from __future__ import annotations
 
+import ast
 import os
 import re
 import subprocess
@@ -63,3 +64,50 @@ def test_page_snippets_run(page, tmp_path):
 def test_api_reference_lists_every_public_name():
     listed = set(re.findall(r"^   (\w+)$", (DOCS / "api.rst").read_text(), flags=re.M))
     assert set(hybrid.__all__) - {"__version__"} <= listed
+
+
+#: pages whose equations are typeset (MyST ``$...$`` and ``$$...$$``), not written as code
+MATH_PAGES = ("conventions.md", "reference/arms_and_law.md", "reference/controller.md")
+#: what marks an equation written as code: an assignment or relation of the law's symbols
+EQUATION_SYMBOLS = ("R^T", "Bbar", "tau", "q'", "r'", "Sigma", "^-1", "^-T")
+
+
+def equations_as_code(markdown: str) -> list[str]:
+    """The inline code spans of a Markdown page, outside its fenced blocks, that are equations: an
+    ``=`` among the law's symbols, and not Python (``tau = ctrl(t, q, qdot, Fc)`` is a call in the API)."""
+    prose = re.sub(r"^```.*?^```", "", markdown, flags=re.M | re.S)
+    spans = re.findall(r"(?<!`)`([^`\n]+(?:\n[^`\n]+)*)`(?!`)", prose)
+    return [span for span in spans if "=" in span and any(symbol in span for symbol in EQUATION_SYMBOLS)
+            and not is_python(span)]
+
+
+def is_python(text: str) -> bool:
+    """Whether the text parses as Python."""
+    try:
+        ast.parse(text)
+    except SyntaxError:
+        return False
+    return True
+
+
+def test_equations_as_code_found():
+    # the check below finds what it looks for: equations in backticks, as the pages once wrote them
+    page = ("law `tau = J^T F`, `B_o r'' + n_o = T^T F`, not `tau = ctrl(t, q, qdot, Fc)`, `KPv = 40` nor $\\tau$"
+            "\n```python\nx = `tau = J^T F`\n```\n")
+    assert equations_as_code(page) == ["tau = J^T F", "B_o r'' + n_o = T^T F"]
+
+
+@pytest.mark.parametrize("name", MATH_PAGES)
+def test_page_equations_are_math(name):
+    page = (DOCS / name).read_text()
+    equations = equations_as_code(page)
+    assert not equations, f"{name} writes equations as code; typeset them as $...$: {equations}"
+    # and the page parses to math nodes, its displays too
+    docutils_ = pytest.importorskip("myst_parser.parsers.docutils_")
+    from docutils import nodes
+    from docutils.core import publish_doctree
+    tree = publish_doctree(page, parser=docutils_.Parser(),
+                           settings_overrides={"myst_enable_extensions": ["dollarmath"], "report_level": 5})
+    inline, display = list(tree.findall(nodes.math)), list(tree.findall(nodes.math_block))
+    assert inline and (display or "$$" not in page), f"{name}'s math did not parse as math"
+    assert all("`" not in node.astext() for node in inline + display)
