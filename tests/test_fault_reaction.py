@@ -111,8 +111,9 @@ def test_the_safe_state_holds_until_reset(pair):
         with pytest.raises(hybrid.NonFiniteError) as err:
             py(k * T, q, qd, np.full(3, np.nan))
         assert np.isfinite(err.value.torque).all() and not py.stopped
-    with pytest.raises(hybrid.SafeStopError):
+    with pytest.raises(hybrid.SafeStopError) as entry:
         py(py.fault_reaction.fault_samples * T, q, qd, np.full(3, np.nan))
+    np.testing.assert_array_equal(py.last["tau"], entry.value.torque)  # the torque applied, as C's c->tau
     for k in range(5):  # good samples do not end it
         with pytest.raises(hybrid.SafeStopError) as err:
             py((py.fault_reaction.fault_samples + 1 + k) * T, *samples[k][1:])

@@ -564,12 +564,15 @@ class Controller:
 
     @property
     def last(self) -> dict[str, np.ndarray] | None:
-        """The latest sample's ``tau``, integrals after it, loop accelerations ``a``, task velocity ``y``
-        and task wrench ``f`` (loop frame), by name; None before the first sample."""
+        """The latest sample's ``tau`` (in the safe state, the safe state's), integrals after it, loop
+        accelerations ``a``, task velocity ``y`` and task wrench ``f`` (loop frame), by name; None before the
+        first sample."""
         if not self._sampled:
             return None
         out = {name: o for (name, _, _), o in zip(self._step.outputs, self._out)}
-        return {"tau": out["tau"].copy(), "integrals": self._z.copy(), "a": out["a"].copy(), "y": out["y"].copy(),
+        # in the safe state the torque applied is the safe state's (as the standalone C's struct keeps it)
+        tau = self._last[:-1] * self._last[-1] if self._fault.stopped else out["tau"]
+        return {"tau": tau.copy(), "integrals": self._z.copy(), "a": out["a"].copy(), "y": out["y"].copy(),
                 "f": out["f"].copy(), "saturated": bool(out["saturated"][0]),
                 "contact_wrench": out["contact_wrench"].copy(), "normal": self.normal}
 
