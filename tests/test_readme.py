@@ -44,3 +44,16 @@ def test_library_example(tmp_path, monkeypatch, capsys):
     np.testing.assert_array_equal(saved.state, ns["res"].state)
     assert abs(ns["res"].metrics["steady_state_force_error_N"]) < 0.05
     assert "NaN or infinite at t = " in capsys.readouterr().out  # the diverging run was stopped and told
+
+
+def _quick_start(text: str) -> list[str]:
+    """The quick start's commands: the lines that make the virtual environment."""
+    return [line.strip() for line in text.splitlines() if line.strip().startswith("python3 -m venv .venv")]
+
+
+def test_getting_started_gives_the_readme_quick_start():
+    """The documentation's two commands are the README's, character for character (a second run of the
+    paper's command needs its --force)."""
+    readme = _quick_start(README.read_text())
+    assert len(readme) == 2
+    assert _quick_start((ROOT / "docs" / "getting_started.rst").read_text()) == readme

@@ -89,7 +89,9 @@ METHODS = {"force": (1.0, 0.0, 1.0), "force_uncorrected": (1.0, 0.0, 0.0), "velo
 
 @dataclass(frozen=True)
 class EstimatedSurface(Surface):
-    """A surface the controller estimates instead of being told (module docstring for each setting).
+    """A surface the controller is not told: the task frame from an online estimate of its normal.
+
+    The module docstring states the estimator and what each setting does.
 
     Every setting has a default that works on the 3-D experiment (the module docstring's envelope); the
     compliance is learnt, and the start taken from the first touch.
