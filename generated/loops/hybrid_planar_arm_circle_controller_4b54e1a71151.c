@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 1b4ad83176ffd565025f238a6202d4dc63654f2af2e739afaee9fa3d12bc69e1 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 7060b68d792c4bf4d057a91f7069a487981554fe13d9f5f67097cf1754ed4f53 */
 /* hybrid_planar_arm_circle_controller_4b54e1a71151: the paper's closed loop on a circle: controller_step.
    Emitted by hybrid's codegen/closed_loop.py; it includes hybrid_lanes.h (in generated/: compile with -I there). */
 #if !defined(__GNUC__)
@@ -2406,10 +2406,9 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
                 }
                 last[2] = hl_select(stopped, hl_splat(1.0), last[2]);
                 fst[8] = hl_select(stopped, fst[8] + 1.0, fst[8]);
-                for (j = 0; j < 2; ++j) fst[2 + j] = hl_select(stopped, x[j], fst[2 + j]);
             }
         }
-        for (j = 0; j < 2; ++j) fst[2 + j] = hl_select(served, x[j], fst[2 + j]);
+        /* fault_state's q_hold stays unused: the plant's joint positions are always finite */
         refused_prev = refused;
         clocked |= served | stopped;
         if (k == 0) record(states, taus, g, used, 0, rows, x, tq, hl_splat(0.0) == 0.0, run.alive);

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 819b746d21fc6d3c2941f796419e4d27076b9c0cabebdc01f6abb1639d369bda */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: e48805fde37fea08920c931df110729086dfdb02120d1f6919fb7b50fe826fe8 */
 /* hybrid_planar_arm_circle_raibert_cr_57176b91a5fa: the paper's closed loop on a circle: raibert_craig_step.
    Emitted by hybrid's codegen/closed_loop.py; it includes hybrid_lanes.h (in generated/: compile with -I there). */
 #if !defined(__GNUC__)
@@ -2292,10 +2292,9 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
                 }
                 last[2] = hl_select(stopped, hl_splat(1.0), last[2]);
                 fst[8] = hl_select(stopped, fst[8] + 1.0, fst[8]);
-                for (j = 0; j < 2; ++j) fst[2 + j] = hl_select(stopped, x[j], fst[2 + j]);
             }
         }
-        for (j = 0; j < 2; ++j) fst[2 + j] = hl_select(served, x[j], fst[2 + j]);
+        /* fault_state's q_hold stays unused: the plant's joint positions are always finite */
         refused_prev = refused;
         clocked |= served | stopped;
         if (k == 0) record(states, taus, g, used, 0, rows, x, tq, hl_splat(0.0) == 0.0, run.alive);

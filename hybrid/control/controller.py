@@ -13,7 +13,7 @@ from math import isfinite as _isfinite
 
 import numpy as np
 
-from hybrid.control.fault import FaultMonitor, FaultReaction, time_passed
+from hybrid.control.fault import FaultMonitor, FaultReaction, finite_time, time_passed
 from hybrid.control.loops import Gains
 from hybrid.control.measurement import Measurement, padded_vector, wrench_of
 from hybrid.control.options import ContactLoss, Posture, call_user, check_posture
@@ -486,21 +486,10 @@ class Controller:
             self._native()
         error = self._fault.safe_sample(self._stop, q, qdot, self._last, dict(zip(PARAMETERS, self._params)),
                                         passed, cause)
-        if passed:
-            self._tick_finite(t)
-        return error
-
-    def _tick_finite(self, t) -> None:
-        """The clock follows a forward ``t`` that is a finite number (the safe state's samples)."""
-        if not time_passed(t, self._clock) or isinstance(t, (bool, np.bool_)) or \
-                not isinstance(t, (int, float, np.integer, np.floating)):
-            return
-        try:
-            value = float(t)
-        except OverflowError:
-            return
-        if _isfinite(value):
+        value = finite_time(t)
+        if value is not None:  # the clock follows a forward t (_tick) that is a finite number
             self._tick(value)
+        return error
 
     def _serve(self, t, q, qdot, Fc) -> np.ndarray:
         """One sample served by the law, or refused (:meth:`__call__`)."""

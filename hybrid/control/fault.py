@@ -160,16 +160,22 @@ class FaultMonitor:
             self.state[self.n:2 * self.n] = got
 
 
-def time_passed(t, clock: float | None) -> bool:
-    """Whether time passed at a sample at ``t`` since the last served at ``clock``: not at a ``t`` at or
-    before it (one that is not a finite number cannot tell)."""
-    if clock is None or isinstance(t, (bool, np.bool_)) or not isinstance(t, (int, float, np.integer, np.floating)):
-        return True
+def finite_time(t) -> float | None:
+    """``t`` as a finite number of seconds, or None (not a number, or not finite)."""
+    if isinstance(t, (bool, np.bool_)) or not isinstance(t, (int, float, np.integer, np.floating)):
+        return None
     try:
         t = float(t)
     except OverflowError:
-        return True
-    return not (isfinite(t) and t <= clock)
+        return None
+    return t if isfinite(t) else None
+
+
+def time_passed(t, clock: float | None) -> bool:
+    """Whether time passed at a sample at ``t`` since the last served at ``clock``: not at a ``t`` at or
+    before it (one that is not a finite number cannot tell)."""
+    t = finite_time(t)
+    return clock is None or t is None or t > clock
 
 
 def _finite_vector(v, n: int) -> np.ndarray | None:
