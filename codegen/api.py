@@ -17,7 +17,8 @@ names, flags and numbers) or kernels they returned, and give kernels or generate
 - a closed loop of a plant's kernels and a controller step: :class:`LoopSpec`,
   :func:`build_closed_loop_unit`;
 - standalone C for a user's project: :func:`build_standalone_controller`, :func:`build_standalone_plant`;
-- the headers the units include: :func:`shared_headers`; the environment that renders C templates
+- the headers the units include: :func:`shared_headers` (the path follower's: :func:`path_header`); the
+  environment that renders C templates
   (:func:`template_environment`, for another C program of the project's);
 - a surface's ``phi`` in CasADi (:func:`phi_sx`) and a kernel as a CasADi Function
   (:func:`kernel_function`).
@@ -34,6 +35,7 @@ from .emit import BACKENDS, Unit
 from .emit import build_unit as build_planar_unit
 from .lanes import LANES_HEADER, lanes_header
 from .model import kernels as planar_kernels
+from .path_follow import PATH_HEADER, path_header
 from .robot_unit import build_controller_unit, build_frame_unit, build_law_unit, build_plant_unit, build_robot_unit
 from .safe_stop import safe_stop_kernel
 from .spatial_plant import plant_kernels
@@ -45,13 +47,14 @@ from .templates import environment_for as template_environment
 
 
 def shared_headers() -> dict[str, str]:
-    """The headers the units include (the SIMD lanes', :data:`LANES_HEADER`), by file name, stamped as
-    generated files: one copy beside the units in ``generated/``."""
-    return {LANES_HEADER: stamp(lanes_header())}
+    """The headers the units include (the SIMD lanes', :data:`LANES_HEADER`; the path follower's,
+    :data:`PATH_HEADER`), by file name, stamped as generated files: one copy beside the units in
+    ``generated/``."""
+    return {LANES_HEADER: stamp(lanes_header()), PATH_HEADER: stamp(path_header())}
 
 
-__all__ = ["BACKENDS", "LANES_HEADER", "LoopSpec", "Unit", "build_closed_loop_unit", "build_controller_unit",
-           "build_frame_unit", "build_law_unit", "build_planar_unit", "build_plant_unit", "build_robot_unit",
-           "build_standalone_controller", "build_standalone_plant", "controller_kernels", "kernel_function",
-           "law_kernels", "phi_sx", "planar_kernels", "plant_kernels", "safe_stop_kernel", "shared_headers",
-           "template_environment"]
+__all__ = ["BACKENDS", "LANES_HEADER", "PATH_HEADER", "LoopSpec", "Unit", "build_closed_loop_unit",
+           "build_controller_unit", "build_frame_unit", "build_law_unit", "build_planar_unit", "build_plant_unit",
+           "build_robot_unit", "build_standalone_controller", "build_standalone_plant", "controller_kernels",
+           "kernel_function", "law_kernels", "path_header", "phi_sx", "planar_kernels", "plant_kernels",
+           "safe_stop_kernel", "shared_headers", "template_environment"]

@@ -43,6 +43,7 @@ from hybrid.control.law import DecouplingLaw, decoupling_law
 from hybrid.control.loops import Gains
 from hybrid.control.measurement import Measurement
 from hybrid.control.options import ContactLoss, Posture, Reference
+from hybrid.control.path_task import PathTask
 from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES, Khatib, Scheme, TaskDecoupling
 from hybrid.control.wrench_sensor import Tool, WrenchSensor
@@ -105,9 +106,10 @@ __all__ = [
     "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw",
     "EstimatedSurface", "Experiment", "FaultReaction", "Gains", "HybridError", "ImplicitSurface", "JointLimitWarning",
     "Khatib", "LargeModelWarning", "LinePath", "Measurement", "NativeBuildError", "NonFiniteError",
-    "OperationalSpace", "PANDA_URDF", "ParameterError", "Plane", "Posture", "RasterPath", "RedundancyWarning",
-    "Reference", "Robot", "SCHEMES", "SafeStopError", "SampleTimingError", "Scheme", "Sensor", "SimulationError",
-    "SimulationResult", "SingularConfigurationError", "Sphere", "SpiralPath", "Step", "TaskDecoupling",
+    "OperationalSpace", "PANDA_URDF", "ParameterError", "PathTask", "Plane", "Posture", "RasterPath",
+    "RedundancyWarning", "Reference", "Robot", "SCHEMES", "SafeStopError", "SampleTimingError", "Scheme", "Sensor",
+    "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "SpiralPath", "Step",
+    "TaskDecoupling",
     "TaskFrameError", "Tool", "ToolIdentification", "UR5_URDF", "URDFError", "WaypointPath", "WrenchSensor",
     "__version__", "arm_terms", "decoupling_law", "identify_tool", "metrics", "operational_space", "panda",
     "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config", "simulate", "sweep", "tare",

@@ -19,7 +19,7 @@ import hybrid
     ({"sensor": {"mass": 0.1}}, "sensor = .*; give a hybrid.Sensor"),
     ({"gains": None}, "gains = None; give a hybrid.Gains"),
     ({"F_d": "ten"}, "force_reference = 'ten'; give a hybrid.Step"),
-    ({"v_d": None}, "speed_reference = None; give a hybrid.Step"),
+    ({"v_d": [0.1, 0.2]}, r"speed_reference = \[0.1, 0.2\]; give a hybrid.Step"),
     ({"F_d": float("nan")}, "force_reference is nan"),
     ({"start_point": (0.3, 0.0, 0.0)}, "start_point must be two numbers"),
     ({"start_point": "origin"}, "start_point must be two numbers"),

@@ -17,6 +17,7 @@ from hybrid.control.fault import FaultMonitor, FaultReaction, finite_time, time_
 from hybrid.control.loops import Gains
 from hybrid.control.measurement import Measurement, padded_vector, wrench_of
 from hybrid.control.options import ContactLoss, Posture, call_user, check_posture
+from hybrid.control.path_task import PathReferences, PathTask
 from hybrid.control.schemes import Scheme, scheme_of
 from hybrid.control.task_settings import axis_references, gain_array, gains_of, joint_limit, selection_of
 from hybrid.control.wrench_sensor import WrenchSensor
@@ -44,6 +45,8 @@ from hybrid.validate import _finite, check_singular_tol, shown
 _OFF = 1e300
 #: the compiled step's inputs a controller fixes, in the step's order (after the per-sample ones)
 PARAMETERS = CONTROLLER_STEP.parameters
+#: the wrench the path task's measurement of the tip is given (the tip's position does not depend on it)
+_NO_WRENCH = np.zeros(6)
 #: the step's per-sample inputs a call gives (its q, qdot and Fc); the others the controller holds
 _CALLED = ("q", "qd", "Fc")
 #: the states a sample the law served advances whether or not it was on time (the integrals only on time;
@@ -147,7 +150,7 @@ class Controller:
                  contact_loss: ContactLoss | None = None, singular_tol: float = 1e-3,
                  posture: Posture | None = None, torque_limit="urdf", torque_step_limit=None,
                  timing_tolerance: float | None = 0.25, wrench_sensor: WrenchSensor | None = None,
-                 fault_reaction: FaultReaction | None = None):
+                 fault_reaction: FaultReaction | None = None, path_task: PathTask | None = None):
         robot = as_robot(robot)
         for name, value in (("integral", integral), ("curvature", curvature), ("position_error", position_error)):
             if not isinstance(value, bool):
@@ -202,6 +205,12 @@ class Controller:
                               "(its defaults)")
         self._fault_reaction = fault_reaction or FaultReaction()
         self._fault_reaction.check_sampling(self.sample_time)
+        self._path_task = None if path_task is None else PathReferences(
+            path_task, self._spatial, robot, self.axes, self.selection,
+            force_reference is not None or velocity_reference is not None,
+            frame != "actual" or position_error or path is not None)
+        if path_task is not None:  # its references are the follower's, added to these
+            force_reference = {"n": 0.0}
         self._references = axis_references(self.axes, self.selection, force_reference, velocity_reference)
         # a posture has its own generated step (the law plus tau0), so the law without one stays the very code
         # it was, bit for bit; both are in the same unit, and the posture's numbers are run-time inputs of both
@@ -251,7 +260,7 @@ class Controller:
         self._varying = [(i, ref.value) for i, ref in enumerate(self._references) if ref.value is not None]
         self._rates = [(i, ref.rate) for i, ref in enumerate(self._references) if ref.rate is not None]
         # with references all steps and no path, the per-sample inputs end at t: the rest is bound
-        self._short = not (self._varying or self._rates or path)
+        self._short = not (self._varying or self._rates or path or path_task)
         # what a call passes after q, qdot, Fc: the references are bound instead where they stay zero
         refs = len(self._reference_inputs) if self._short else 0
         self._bound_refs = self._held[len(self._held) - refs:]
@@ -392,6 +401,8 @@ class Controller:
         for name in ("integrals", "last_torque", *_ADVANCED):
             self._held[self._at[name]][:] = 0.0
         self._fault.reset()
+        if self._path_task is not None:
+            self._path_task.follower.reset()
         self._sampled = False
         self._clock = None
         if torque is not None:
@@ -522,16 +533,36 @@ class Controller:
             self._python_references(t)
             if self.path is not None:
                 self._target[:] = self._desired(t)
+            if self._path_task is not None:
+                self._follow(q, qdot)
         done = self._into(self._binding, out, q, qdot, Fc, *self._held)
         if done is None:
             self._checked(q, qdot, Fc, out)
         if not held:
+            if self._path_task is not None:
+                self._path_task.follower.advance()
             self._tick(t)
             self._last[:-1], self._last[-1] = out[0], 1.0
             self._sampled = True
         if timing is not None:
             raise SampleTimingError(timing, t, clock, self.sample_time, out[0].copy())
         return out[0].copy()
+
+    def _follow(self, q, qdot) -> None:
+        """The path task's direction and references for the tip at ``q`` (the step's binding follows ``e``)."""
+        p = self.step_inputs()
+        tip = self._measure(q, qdot, _NO_WRENCH, p["surface"], p["e"], p["robot"], p["sensor"], self._estimate)["p"]
+        at = PARAMETERS.index("e")
+        e = self._path_task.write(tip.ravel(), self._params[at], self._extra, self._rate)
+        if e is not None:  # a unit vector from the follower: the check of e holds
+            self._params = (*self._params[:at], e, *self._params[at + 1:])
+            self._bind()
+
+    @property
+    def path_task(self) -> dict[str, float] | None:
+        """The path task's last sample (the follower's outputs by name: progress ``s``, the path's point, the
+        cross-track error, the references), None without a path task."""
+        return None if self._path_task is None else self._path_task.last
 
     def _timing(self, t: float) -> str | None:
         """The timing status of a sample at ``t`` (None: on time, or no check, or no last sample)."""

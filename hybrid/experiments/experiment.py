@@ -23,12 +23,13 @@ from hybrid.control.controller import Controller
 from hybrid.control.fault import FaultReaction
 from hybrid.control.loops import Gains
 from hybrid.control.options import Posture, check_posture
+from hybrid.control.path_task import PathTask
 from hybrid.control.references import Step
 from hybrid.control.schemes import SCHEMES, scheme_of
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import RENAMED, RenamedKeywords, renamed_attribute
 from hybrid.errors import HybridError
-from hybrid.experiments.followed import check_followed
+from hybrid.experiments.followed import check_followed, task_references
 from hybrid.experiments.serialisation import experiment_from_dict, experiment_to_dict
 from hybrid.experiments.settings import (
     TOUCH_THRESHOLD,
@@ -75,6 +76,11 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         The surface the controller is told: the true ``surface`` (the default), a wrong one (a sphere of
         another radius, a plane for a curved part), or a :class:`~hybrid.EstimatedSurface` it estimates
         online. The plant always has the true one.
+    path_task : PathTask, optional
+        The tip follows this :class:`~hybrid.PathTask`'s path on the surface from its start, at its speed and
+        force along the path (:mod:`hybrid.control.path_task`); ``force_reference`` is then its force at the
+        start (the start presses with it) and ``speed_reference`` 0, set here: give neither. A 3-D arm with
+        the task axes ``t1, t2, n``; the run's metrics add the path's (``path_error_rms_m``, ...).
     path : Path, optional
         Where the desired point runs (for ``frame="desired"`` and the workspace check); default the
         surface's own path (:meth:`Surface.path`), when it has one. The tip moves along the task axis
@@ -123,6 +129,7 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     surface: Surface | None = None
     controller_surface: Surface | None = None
     path: Path | None = None
+    path_task: PathTask | None = None
     start_point: tuple[float, ...] | None = None
     elbow: int = 1
     frame_direction: tuple[float, float, float] = (0.0, 0.0, 1.0)
@@ -143,8 +150,8 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     approach_speed: float = 0.0
     touch_threshold: float = TOUCH_THRESHOLD
     gains: Gains = field(default_factory=Gains)
-    force_reference: Step = field(default_factory=lambda: Step(10.0, 20.0, 0.4))
-    speed_reference: Step = field(default_factory=lambda: Step(0.3, 0.6, 1.0))
+    force_reference: Step | None = None
+    speed_reference: Step | None = None
     duration: float = 2.0
     integration_step: float = 1e-4
     sample_time: float = 1e-2
@@ -162,6 +169,7 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     def __post_init__(self):
         # the checks that read PHYSICS are check_common_types, check_sensing and check_timing: keep it so
         # (with_physics runs them alone)
+        task_references(self)
         check_common_types(self)
         if self.controller not in SCHEMES:
             raise HybridError(f"unknown controller {shown(self.controller)}; choose one of {', '.join(SCHEMES)}")
@@ -286,6 +294,8 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         given, else the surface's own (None where there is none)."""
         if self.path is not None:
             return self.path
+        if self.path_task is not None:
+            return self.path_task.path
         geometry = self._geometry()
         if self.start_point is not None:
             projected = geometry.project(self.start_point)

@@ -14,8 +14,11 @@ import math
 
 import numpy as np
 
+from hybrid.control.path_task import PathTask
+from hybrid.control.references import Step
 from hybrid.errors import HybridError
 from hybrid.experiments.settings import START_TOL
+from hybrid.validate import shown
 
 #: the times along the run [s] where the path is compared with the tip's motion
 SAMPLES = 129
@@ -27,8 +30,37 @@ PLANE_TOL = 1e-6
 
 _WHAT_WORKS = ("give a path the tip follows: leave path out (the surface's own, through the start), or e.g. "
                "sphere.latitude_circle(), cylinder.circle_at(point), a LinePath along t1 on a plane, or choose "
-               "frame_direction normal to the path's plane; paths elsewhere (a WaypointPath, RasterPath or "
-               "SpiralPath that turns out of that plane) are not followed yet")
+               "frame_direction normal to the path's plane; to follow any path on the surface (a WaypointPath, "
+               "RasterPath, SpiralPath or one's own), give path_task=hybrid.PathTask(path, speed=..., force=...) "
+               "instead of path")
+
+
+#: the references of an experiment without a path task, where none is given
+DEFAULT_FORCE, DEFAULT_SPEED = Step(10.0, 20.0, 0.4), Step(0.3, 0.6, 1.0)
+
+
+def task_references(exp) -> None:
+    """The experiment's ``force_reference`` and ``speed_reference``: with a path task, its force at the start
+    (the start presses with it) and 0, the task giving both along the path (a value given otherwise is
+    refused); without one, the defaults where none is given."""
+    task = exp.path_task
+    if task is None:
+        for name, default in (("force_reference", DEFAULT_FORCE), ("speed_reference", DEFAULT_SPEED)):
+            if getattr(exp, name) is None:
+                object.__setattr__(exp, name, default)
+        return
+    if not isinstance(task, PathTask):
+        raise HybridError(f"path_task = {shown(task, 60)}; give a hybrid.PathTask(path, speed=..., force=...) or None")
+    if exp.path is not None or exp.start_point is not None:
+        raise HybridError("path_task runs its own path from its start: leave path and start_point out")
+    force = float(task.force(task.path.start) if callable(task.force) else task.force)
+    derived = {"force_reference": Step(force, force, 0.0), "speed_reference": Step(0.0, 0.0, 0.0)}
+    for name, value in derived.items():
+        given = getattr(exp, name)
+        if given is not None and given != value and not (not isinstance(given, Step) and given == value.before):
+            raise HybridError(f"{name} = {given}: with a path_task the task gives the force and the speed along the "
+                              "path; leave force_reference and speed_reference out (give them in the PathTask)")
+        object.__setattr__(exp, name, value)
 
 
 def check_followed(exp) -> None:

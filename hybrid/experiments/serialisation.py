@@ -35,6 +35,10 @@ def experiment_to_dict(exp) -> dict:
     d["robot"] = robot_to_dict(exp.robot)
     d["surface"] = surface_to_dict(exp.surface)
     d["controller_surface"] = None if exp.controller_surface is None else surface_to_dict(exp.controller_surface)
+    if d.get("path_task") is not None:
+        raise HybridError("path_task: a path task's path is not written to a file; keep the experiment in Python "
+                          "(its results save)")
+    d.pop("path_task", None)  # None: as saved before experiments took one
     if exp.path is not None and not isinstance(exp.path, (CirclePath, LinePath)):
         raise HybridError(f"path = {type(exp.path).__name__}: only a CirclePath or LinePath is written to a file; "
                           "give one of them, or keep the experiment in Python")

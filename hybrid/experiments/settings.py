@@ -62,8 +62,10 @@ class RunSettings:
         """The :class:`~hybrid.Controller` keywords every experiment sets alike: the force loop on the
         normal, the speed reference on ``t1``, gains, sampling, options."""
         loss = ContactLoss(self.touch_threshold, self.approach_speed) if self.approach_speed > 0 else None
-        return {"selection": ("n",), "gains": self.gains, "force_reference": self.force_reference,
-                "velocity_reference": self.speed_reference, "sample_time": self.sample_time,
+        task = getattr(self, "path_task", None)  # a path task gives the references
+        return {"selection": ("n",), "gains": self.gains, "path_task": task,
+                "force_reference": None if task else self.force_reference,
+                "velocity_reference": None if task else self.speed_reference, "sample_time": self.sample_time,
                 "integral": self.integral, "curvature": self.curvature, "frame": self.frame,
                 "path": self.desired_point if self.frame == "desired" else None, "singular_tol": self.singular_tol,
                 "contact_loss": loss, "wrench_sensor": self.controller_wrench_sensor or self.wrench_sensor,

@@ -36,4 +36,6 @@ def tracing_experiment(**overrides) -> Experiment:
         overrides.setdefault("path", surface.latitude_circle(latitude))
     defaults = {"robot": ur5(), "surface": surface, "force_reference": Step(10.0, 20.0, 0.5),
                 "speed_reference": Step(0.15, 0.3, 1.5), "duration": 3.0}
+    if "path_task" in overrides:  # the task gives the references
+        del defaults["force_reference"], defaults["speed_reference"]
     return with_overrides(Experiment, "tracing_experiment", overrides, defaults)

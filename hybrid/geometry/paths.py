@@ -29,9 +29,10 @@ class Path:
 
     A path on a surface may also give ``normal_at(s)``, ``curvature_at(s)`` and ``length``
     (:class:`~hybrid.WaypointPath`, :class:`~hybrid.RasterPath`, :class:`~hybrid.SpiralPath`). An
-    experiment moves its desired point along the path at the speed reference; its tip follows the path
-    only where the path runs along the task axis ``t1`` (:mod:`hybrid.experiments.followed`), and it
-    refuses any other."""
+    experiment given it as ``path`` moves its desired point along it at the speed reference; its tip follows
+    the path only where the path runs along the task axis ``t1`` (:mod:`hybrid.experiments.followed`), and it
+    refuses any other. Given as a :class:`~hybrid.PathTask`'s path (``path_task``), any path on the
+    surface with a ``length`` (and ``closed``) is followed: the task frame turns with it."""
 
     start: float = 0.0
 

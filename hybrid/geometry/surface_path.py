@@ -176,6 +176,20 @@ class SurfacePath(Path):
         speed2 = float(d1 @ d1)
         return (d2 - (d2 @ d1) / speed2 * d1) / speed2
 
+    @property
+    def joints(self) -> np.ndarray:
+        """The arc lengths [m] where the pieces meet (the curvature may jump there), from 0 to ``length``."""
+        return np.array([self.arc_at_knot(i) for i in range(len(self._knots))])
+
+    def frames_at(self, s) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """At each arc length of ``s`` [m] at once: the points [m], unit tangents, the surface's unit normals
+        and the curvature vectors ``d^2 r / ds^2`` [1/m], one row each (as :meth:`point_at`,
+        :meth:`tangent_at`, :meth:`normal_at` and :meth:`curvature_at` give them one by one)."""
+        C, normals, d1, d2 = self._derivatives(*self._parameter(s), second=True)
+        speed2 = np.einsum("ij,ij->i", d1, d1)
+        kappa = (d2 - (np.einsum("ij,ij->i", d2, d1) / speed2)[:, None] * d1) / speed2[:, None]
+        return C, d1 / np.sqrt(speed2)[:, None], normals, kappa
+
     def arc_of(self, p) -> float:
         """The arc length of the path's point nearest ``p`` [m] (a local search from the nearest
         tabulated point)."""

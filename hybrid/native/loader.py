@@ -270,3 +270,34 @@ def load_fastcall(src_dir: Path, prefix: str, manifest: dict):
 
     return _cached_module(f"_{prefix}_fastcall", {"shim": shim, "prelude": prelude, "numpy": numpy.__version__},
                           write_source, [numpy.get_include()])
+
+
+# ------------------------------------------------------------------ the path follower
+
+#: the committed header of the path follower (``codegen/path_follow.py``)
+PATH_HEADER = "hybrid_path.h"
+#: the runtime's module: the header with its entry points (``hybrid_path_follow_entry``, ``hybrid_path_table_entry``)
+_PATH_SOURCE = f'#define HYBRID_PATH_ENTRY_POINTS 1\n#include "{PATH_HEADER}"\n'
+
+
+@cache
+def path_follower():
+    """The path follower of ``generated/hybrid_path.h`` compiled as a cffi module (``.ffi``, ``.lib``: its
+    entry points ``hybrid_path_follow_entry`` and ``hybrid_path_table_entry``), cached by the header's text."""
+    folder = source_dir()
+    try:
+        header = (folder / PATH_HEADER).read_text()
+    except OSError as exc:
+        raise NativeBuildError(f"the path follower's header {folder / PATH_HEADER} cannot be read ({exc.strerror}); "
+                               "run `python -m hybrid regenerate` in a checkout of the project") from None
+    warn_if_hand_edited(folder, {PATH_HEADER: header})
+
+    def write_source(name: str, path: Path) -> None:
+        (path.parent / PATH_HEADER).write_text(header)
+        ffi = cffi.FFI()
+        ffi.cdef(cdef_of(header))
+        ffi.set_source(name, _PATH_SOURCE, compiler_verbose=0)
+        ffi.emit_c_code(str(path))
+
+    return _cached_module("_hybrid_path", {"h": header, "c": _PATH_SOURCE, "cffi": cffi.__version__}, write_source,
+                          [])

@@ -51,6 +51,10 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
     """The standalone C of the controller ``ctrl`` by file name: its symbols start ``prefix``, its files
     ``stem`` (default ``prefix``); generated once per key (cached)."""
     stem = stem or prefix
+    if ctrl.path_task is not None:
+        raise HybridError("generate: the standalone C does not carry a path task's follower yet; generate the "
+                          "controller without path_task (its C takes e, yd_extra and yd_rate from the caller, which "
+                          "may run generated/hybrid_path.h's hybrid_path_follow), or run it in Python")
     variant = ctrl.step_variant()
     values = {k: [float(x) for x in v] for k, v in ctrl.step_inputs().items()}
     values |= {"timing_tolerance": -1.0 if ctrl.timing_tolerance is None else ctrl.timing_tolerance,

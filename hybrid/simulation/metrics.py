@@ -6,6 +6,7 @@ import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.experiments.paper import Step
+from hybrid.simulation.path_metrics import path_metrics
 from hybrid.spec.metrics import FIRST_TOUCH, METRIC_NAMES, PEAK_TORQUE, SETTLING_BAND, STEADY_WINDOW_S, TOUCH_BAND
 from hybrid.validate import shown
 
@@ -158,10 +159,14 @@ def estimate_metrics(t_samples, angle_error_deg) -> dict:
 
 def run_metrics(res) -> dict:
     """The metrics of a :class:`~hybrid.SimulationResult`, with its experiment's reference steps (and
-    an estimated surface's normal-angle errors, when the controller estimated it)."""
+    an estimated surface's normal-angle errors, when the controller estimated it; a path task's
+    :data:`~hybrid.spec.metrics.PATH_METRICS`, when it followed one)."""
+    values = _series_metrics(res)
     if res.normal_estimate is not None:
-        return {**_series_metrics(res), **estimate_metrics(res.sample_t, res.normal_angle_error_deg)}
-    return _series_metrics(res)
+        values.update(estimate_metrics(res.sample_t, res.normal_angle_error_deg))
+    if getattr(res.experiment, "path_task", None) is not None:
+        values.update(path_metrics(res))
+    return values
 
 
 def _series_metrics(res) -> dict:

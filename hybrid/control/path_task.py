@@ -1,0 +1,343 @@
+"""A task along a path on a surface (:class:`PathTask`) and its follower (:class:`PathFollower`).
+
+The task is the path, the speed and the normal force along it (numbers, or functions of the arc
+length), the acceleration limit of the speed's trapezoid and the cross-track gain. Its follower holds
+the path as a table (:data:`hybrid.spec.path_follow.PATH_TABLE`) and calls the generated follower
+(``hybrid_path.h``, :mod:`hybrid.spec.path_follow`) once a sample: the :class:`~hybrid.Controller`
+takes the task frame's direction and the loops' references from it.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from hybrid.control.options import call_user
+from hybrid.errors import HybridError, NonFiniteError
+from hybrid.geometry.paths import CirclePath, Path
+from hybrid.geometry.surface_points import project_points
+from hybrid.native import loader
+from hybrid.spec.controller_step import NO_LIMIT
+from hybrid.spec.path_follow import PATH_OUTPUT, PATH_SETTINGS, PATH_STATE, PATH_STATUSES, PATH_TABLE
+from hybrid.validate import _finite, shown
+
+#: how far [m] a path's node may be from the surface
+ON_SURFACE_TOL = 1e-4
+#: the step [m] of the central differences of a path's tangent where the path gives no curvature
+CURVATURE_STEP = 1e-4
+#: how far a path of one's own may be from an arc-length parametrisation between nodes (relative)
+ARC_LENGTH_TOL = 1e-2
+
+
+@dataclass(frozen=True)
+class PathTask:
+    """Follow ``path`` on its surface at ``speed`` [m/s] pressing with ``force`` [N] along the normal.
+
+    Parameters
+    ----------
+    path : Path
+        The path on the surface, 3-D: a :class:`~hybrid.WaypointPath`, :class:`~hybrid.RasterPath`,
+        :class:`~hybrid.SpiralPath`, a :class:`~hybrid.CirclePath` in space, or one's own :class:`Path`
+        parametrised by arc length with a ``length`` (and ``closed``, default False). The run starts at
+        its ``start`` arc length and runs towards growing arc length.
+    speed : float or callable
+        The speed along the path [m/s]: a number, or ``speed(s)`` of the arc length ``s`` [m] (the
+        acceleration along the path, ``v dv/ds``, at most ``acceleration``). The speed reference is
+        it within the turns' limit (the centripetal acceleration ``v^2 |kappa_g|`` of the path's turn on
+        the surface at most ``acceleration``: a raster's turnarounds are slower) and a trapezoid: from
+        ``speed_start`` up at ``acceleration``, and on an open path down to 0 at its end.
+    force : float or callable
+        The normal force [N]: a number, or ``force(s)`` of the arc length.
+    acceleration : float
+        The acceleration limit along the path and across it in turns [m/s^2].
+    speed_start : float, optional
+        The speed reference at the start [m/s] (above 0: the progress follows the tip, which must move);
+        default a tenth of the speed there.
+    cross_track_gain : float
+        [1/s] the cross-track error ``d`` is corrected by the velocity reference ``-gain d`` along ``t2``
+        (a time constant of ``1 / gain``).
+    laps : float, optional
+        A closed path's number of laps (None: it runs until the experiment ends); an open path runs to
+        its end.
+    spacing : float
+        The longest distance [m] between the table's nodes (the interpolation's error is about
+        ``spacing^4 kappa^3 / 384``: 1e-10 m at 1 mm on a curve of 1 cm radius).
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> plane = hybrid.Plane((0.4, 0.0, 0.2), (0.0, 0.0, 1.0))
+    >>> raster = hybrid.RasterPath(plane, (0.4, -0.05, 0.2), (1.0, 0.0, 0.0), 0.1, 0.01, 3)
+    >>> task = hybrid.PathTask(raster, speed=0.1, force=10.0)
+    >>> table, settings = task.table(plane)
+    >>> table.shape[1], bool(settings[1])
+    (13, False)
+    """
+
+    path: Path
+    speed: float | Callable[[float], float] = 0.1
+    force: float | Callable[[float], float] = 10.0
+    acceleration: float = 0.5
+    speed_start: float | None = None
+    cross_track_gain: float = 20.0
+    laps: float | None = None
+    spacing: float = 1e-3
+
+    def __post_init__(self):
+        if not isinstance(self.path, Path):
+            raise HybridError(f"PathTask.path = {shown(self.path, 60)}; give a hybrid path (WaypointPath, RasterPath, "
+                              "SpiralPath, CirclePath, or a subclass of hybrid.geometry.paths.Path)")
+        for name in ("speed", "force"):
+            value = getattr(self, name)
+            if not callable(value):
+                _finite("PathTask", **{name: value})
+        _finite("PathTask", acceleration=self.acceleration, cross_track_gain=self.cross_track_gain,
+                spacing=self.spacing)
+        if not self.acceleration > 0:
+            raise HybridError(f"PathTask.acceleration = {self.acceleration} m/s^2; give a positive acceleration limit")
+        if self.cross_track_gain < 0:
+            raise HybridError(f"PathTask.cross_track_gain = {self.cross_track_gain} 1/s; give a gain >= 0")
+        if not 0 < self.spacing <= 0.1:
+            raise HybridError(f"PathTask.spacing = {self.spacing} m; give a node spacing in (0, 0.1] m (1 mm: "
+                              "the default)")
+        if self.speed_start is not None:
+            _finite("PathTask", speed_start=self.speed_start)
+            if not self.speed_start > 0:
+                raise HybridError(f"PathTask.speed_start = {self.speed_start} m/s; give a positive start speed (the "
+                                  "progress follows the tip, which must move)")
+        if self.laps is not None:
+            _finite("PathTask", laps=self.laps)
+            if not self.laps > 0:
+                raise HybridError(f"PathTask.laps = {self.laps}; give a positive number of laps, or None")
+
+    # ------------------------------------------------------------------ the path as a table
+
+    def _shape(self) -> tuple[float, bool]:
+        """The path's length [m] and whether it is closed."""
+        path = self.path
+        closed = bool(getattr(path, "closed", isinstance(path, CirclePath)))
+        length = 2 * math.pi * path.radius if isinstance(path, CirclePath) else getattr(path, "length", None)
+        if not isinstance(length, (int, float, np.floating)) or not (0 < length < math.inf):
+            raise HybridError(f"PathTask.path = {type(path).__name__} has no finite length; give a path with an end "
+                              "(a WaypointPath through two points for a straight one) or a closed one")
+        if self.laps is not None and not closed:
+            raise HybridError(f"PathTask.laps = {self.laps}: an open path runs to its end; leave laps out")
+        return float(length), closed
+
+    def _frames(self, surface, s: np.ndarray):
+        """Points, tangents, normals and curvature vectors of the path at ``s``, checked to lie on ``surface``."""
+        path, name = self.path, type(self.path).__name__
+        if hasattr(path, "frames_at"):
+            points, tangents, normals, kappa = path.frames_at(s)
+        else:
+            points = np.asarray(path.points_at(s), dtype=float)
+            if points.ndim != 2 or points.shape[1] != 3:
+                raise HybridError(f"PathTask.path = {name} gives points of shape {points.shape[1:]}; a path task is "
+                                  "3-D: give a path of 3 coordinates")
+            tangents = self._tangents(s)
+            h = CURVATURE_STEP
+            kappa = (self._tangents(s + h) - self._tangents(s - h)) / (2 * h)
+            normals = None
+        if not (np.isfinite(points).all() and np.isfinite(tangents).all() and np.isfinite(kappa).all()):
+            raise NonFiniteError(f"PathTask.path = {name} gives points or tangents that are not finite; give a path "
+                                 "defined along its whole length")
+        on, surface_normals = project_points(surface, points, "PathTask.path")
+        off = np.linalg.norm(on - points, axis=1)
+        if off.max() > ON_SURFACE_TOL:
+            i = int(np.argmax(off))
+            raise HybridError(f"PathTask.path = {name} leaves the surface: at s = {s[i]:.4g} m its point "
+                              f"{np.round(points[i], 5).tolist()} m is {off[i] * 1e3:.3g} mm off it; give a path on "
+                              f"the surface (within {ON_SURFACE_TOL * 1e3:g} mm)")
+        normals = surface_normals if normals is None else normals
+        return points, tangents, normals, kappa
+
+    def _tangents(self, s: np.ndarray) -> np.ndarray:
+        t = np.array([np.asarray(self.path.tangent_at(float(x)), dtype=float) for x in s])
+        return t / np.linalg.norm(t, axis=1)[:, None]
+
+    def _nodes(self, length: float) -> np.ndarray:
+        """The table's arc lengths: at most ``spacing`` apart, with a node at every joint of the path's pieces
+        (where its curvature may jump, which no cubic between nodes would follow)."""
+        joints = np.asarray(getattr(self.path, "joints", (0.0, length)), dtype=float)
+        breaks = np.unique(np.clip(np.concatenate([[0.0, length], joints]), 0.0, length))
+        breaks = breaks[np.concatenate([[True], np.diff(breaks) > 1e-9 * length])]
+        breaks[-1] = length
+        parts = [np.linspace(a, b, int(math.ceil((b - a) / self.spacing)) + 1)[:-1]
+                 for a, b in zip(breaks[:-1], breaks[1:])]
+        return np.concatenate([*parts, [length]])
+
+    def _profile(self, name: str, s: np.ndarray) -> np.ndarray:
+        value = getattr(self, name)
+        if not callable(value):
+            return np.full(len(s), float(value))
+        got = []
+        for x in s:
+            y = call_user(value, float(x), f"PathTask.{name}")
+            if isinstance(y, (bool, np.bool_)) or not isinstance(y, (int, float, np.integer, np.floating)):
+                raise HybridError(f"PathTask.{name}({x:.4g}) gave {shown(y, 40)}; {name}(s) returns one number")
+            got.append(float(y))
+        arr = np.array(got)
+        if not np.isfinite(arr).all():
+            i = int(np.flatnonzero(~np.isfinite(arr))[0])
+            raise HybridError(f"PathTask.{name}({s[i]:.4g}) = {arr[i]}; give a finite {name} along the whole path")
+        return arr
+
+    def table(self, surface) -> tuple[np.ndarray, np.ndarray]:
+        """The follower's table (one row of :data:`~hybrid.spec.path_follow.PATH_TABLE` per node) and settings
+        (:data:`~hybrid.spec.path_follow.PATH_SETTINGS`) on ``surface`` (the surface the controller is told).
+
+        Returns
+        -------
+        table : ndarray, shape (rows, 13)
+        settings : ndarray, shape (8,)
+        """
+        length, closed = self._shape()
+        s = self._nodes(length)
+        rows = len(s)
+        points, tangents, normals, kappa = self._frames(surface, s)
+        if closed:  # one point at both ends
+            points[-1], tangents[-1], normals[-1], kappa[-1] = points[0], tangents[0], normals[0], kappa[0]
+        chords = np.linalg.norm(np.diff(points, axis=0), axis=1)
+        stretch = np.abs(chords / np.diff(s) - 1)
+        if stretch.max() > ARC_LENGTH_TOL:
+            i = int(np.argmax(stretch))
+            raise HybridError(f"PathTask.path = {type(self.path).__name__} is not parametrised by arc length: from s = "
+                              f"{s[i]:.4g} m to {s[i + 1]:.4g} m its point moves {chords[i]:.4g} m; give point_at(s) "
+                              "at arc length s")
+        kappa_g = np.einsum("ij,ij->i", kappa, np.cross(normals, tangents))
+        speed, force = self._profile("speed", s), self._profile("force", s)
+        if not (speed > 0).all():
+            i = int(np.flatnonzero(~(speed > 0))[0])
+            raise HybridError(f"PathTask.speed at s = {s[i]:.4g} m is {speed[i]} m/s; give a positive speed")
+        rate = speed[:-1] * np.diff(speed) / np.diff(s)
+        if np.abs(rate).max() > self.acceleration * (1 + 1e-9):
+            i = int(np.argmax(np.abs(rate)))
+            raise HybridError(f"PathTask.speed changes at {abs(rate[i]):.3g} m/s^2 near s = {s[i]:.4g} m, beyond the "
+                              f"acceleration limit {self.acceleration} m/s^2; raise acceleration or smooth the speed")
+        peak = float(speed.max())  # as asked: the turns' limit below slows where it must
+        speed = _turn_limited(speed, kappa_g, np.diff(s), self.acceleration)
+        start = float(np.mod(self.path.start, length)) if closed else float(self.path.start)
+        if not 0 <= start <= length:
+            raise HybridError(f"PathTask.path.start = {start} m is beyond the path (0 to {length:.6g} m); give a start "
+                              "on it")
+        speed_start = 0.1 * float(np.interp(start, s, speed)) if self.speed_start is None else float(self.speed_start)
+        distance = (NO_LIMIT if self.laps is None else self.laps * length) if closed else length - start
+        need = (max(peak ** 2 - speed_start ** 2, 0.0) + peak ** 2) / (2 * self.acceleration)
+        if not closed and need > distance:
+            raise HybridError(f"PathTask: at {self.acceleration} m/s^2 the speed {peak} m/s is not reached within the "
+                              f"path ({distance:.4g} m to travel, {need:.4g} m needed to speed up and stop); lower "
+                              "the speed or raise the acceleration")
+        table = np.column_stack([s, points, tangents, normals, kappa_g, speed, force])
+        settings = {"rows": rows, "closed": float(closed), "length": length, "start": start, "distance": distance,
+                    "speed_start": speed_start, "acceleration": self.acceleration,
+                    "cross_track_gain": self.cross_track_gain}
+        assert table.shape[1] == len(PATH_TABLE)
+        return np.ascontiguousarray(table), np.array([settings[k] for k in PATH_SETTINGS], dtype=float)
+
+
+def _turn_limited(speed: np.ndarray, kappa_g: np.ndarray, ds: np.ndarray, a: float) -> np.ndarray:
+    """The speed at the nodes within the turns' limit ``v^2 |kappa_g| <= a`` (the centripetal acceleration
+    on the surface), then within the acceleration limit along the path (``v dv/ds <= a``: a forward and a
+    backward pass over ``v^2``)."""
+    with np.errstate(divide="ignore"):
+        v2 = np.minimum(speed ** 2, a / np.abs(kappa_g))
+    for i in range(1, len(v2)):
+        v2[i] = min(v2[i], v2[i - 1] + 2 * a * ds[i - 1])
+    for i in range(len(v2) - 2, -1, -1):
+        v2[i] = min(v2[i], v2[i + 1] + 2 * a * ds[i])
+    return np.sqrt(v2)
+
+
+class PathFollower:
+    """A :class:`PathTask` on a surface, followed sample by sample (the generated follower).
+
+    ``follow(p)`` gives the outputs (:data:`~hybrid.spec.path_follow.PATH_OUTPUT`, by index) for the tip at
+    ``p`` [m] without changing the state; ``advance()`` keeps the last sample's state; ``reset()`` starts
+    the run again."""
+
+    def __init__(self, task: PathTask, surface):
+        self.task = task
+        self.table, self.settings = task.table(surface)
+        module = loader.path_follower()
+        self._ffi, self._lib = module.ffi, module.lib
+        self._table_ptr = self._ffi.from_buffer("double[]", self.table)
+        self._settings_ptr = self._ffi.from_buffer("double[]", self.settings)
+        if not self._lib.hybrid_path_table_entry(self._table_ptr, self._settings_ptr):
+            raise HybridError("PathTask: the path's table is not one the follower takes (not finite, or its arc "
+                              "lengths do not grow); give a path defined along its whole length")
+        self.state = np.zeros(len(PATH_STATE))
+        self.out = np.zeros(len(PATH_OUTPUT))
+        self._p = np.zeros(3)
+        self._ptrs = [self._ffi.from_buffer("double[]", a) for a in (self.state, self._p, self.out)]
+
+    def follow(self, p) -> np.ndarray:
+        """The outputs for the tip at ``p`` [m, base axes] (the state stays until :meth:`advance`)."""
+        self._p[:] = p
+        status = self._lib.hybrid_path_follow_entry(self._table_ptr, self._settings_ptr, *self._ptrs)
+        if status != PATH_STATUSES["PATH_OK"]:
+            name = next(k for k, v in PATH_STATUSES.items() if v == status)
+            raise NonFiniteError(f"the path follower refused the sample ({name}): tip {self._p.tolist()} m, state "
+                                 f"{self.state.tolist()}")
+        return self.out
+
+    def advance(self) -> None:
+        """Keep the last sample's progress (a sample on time)."""
+        self.state[:] = self.out[:len(PATH_STATE)]
+
+    def reset(self) -> None:
+        self.state[:] = 0.0
+
+
+_OUT = {name: i for i, name in enumerate(PATH_OUTPUT)}
+_E = slice(_OUT["e_x"], _OUT["e_z"] + 1)
+
+
+class PathReferences:
+    """A :class:`PathTask` in a :class:`~hybrid.Controller`: each sample, the follower's task frame direction
+    ``e`` and its references of ``t1`` (speed), ``t2`` (cross-track correction and the turn's feedforward)
+    and ``n`` (force), written into the step's inputs."""
+
+    def __init__(self, task: PathTask, surface, robot, axes: tuple[int, ...], selection: tuple[int, ...],
+                 references_given: bool, loop_frame_given: bool):
+        if not isinstance(task, PathTask):
+            raise HybridError(f"path_task = {shown(task, 60)}; give a hybrid.PathTask(path, speed=..., force=...) or "
+                              "None")
+        if robot.kind.force_size != 3:
+            raise HybridError("path_task: the planar arm's tip runs along its surface's cross-section; a path task is "
+                              "for an arm in space")
+        if not all(i in axes for i in (0, 1, 2)) or selection[axes.index(2)] != 1 or \
+                selection[axes.index(0)] or selection[axes.index(1)]:
+            raise HybridError("path_task needs the task axes t1 and t2 velocity-controlled and n force-controlled "
+                              "(axes 'position' or 'all', the default selection)")
+        if surface.spec().estimated:
+            raise HybridError("path_task: the path is drawn on a surface the controller knows; give that surface "
+                              "instead of an EstimatedSurface")
+        if references_given:
+            raise HybridError("path_task gives the speed along t1, the cross-track correction on t2 and the force on "
+                              "n: leave force_reference and velocity_reference out (give them in the PathTask)")
+        if loop_frame_given:
+            raise HybridError("path_task puts the loops in the frame at the tip, along the path: leave frame, "
+                              "position_error and path at their defaults")
+        self.follower = PathFollower(task, surface)
+        self._t1, self._t2, self._n = axes.index(0), axes.index(1), axes.index(2)
+
+    def write(self, p, e: np.ndarray, extra: np.ndarray, rate: np.ndarray) -> np.ndarray | None:
+        """The references for the tip at ``p`` [m] into ``extra`` and ``rate``; the task frame's direction
+        when it differs from ``e`` (a new array, read-only as the step's parameters are), else None."""
+        out = self.follower.follow(p)
+        extra[self._t1], rate[self._t1] = out[_OUT["speed"]], out[_OUT["speed_rate"]]
+        extra[self._t2], rate[self._t2] = out[_OUT["lateral_speed"]], out[_OUT["lateral_rate"]]
+        extra[self._n] = out[_OUT["force"]]
+        if np.array_equal(e, out[_E]):
+            return None
+        e = out[_E].copy()
+        e.flags.writeable = False
+        return e
+
+    @property
+    def last(self) -> dict[str, float]:
+        """The follower's last outputs by name (:data:`~hybrid.spec.path_follow.PATH_OUTPUT`)."""
+        return dict(zip(PATH_OUTPUT, self.follower.out.tolist()))

@@ -1,0 +1,54 @@
+"""The path follower's interface: a path on a surface as run-time data, and what it gives each sample.
+
+A path task (:class:`hybrid.PathTask`) follows a curve on a surface at a speed and a normal force that
+may change along it. Its path is a table (:data:`PATH_TABLE`, one row per node, nodes in increasing arc
+length), so one compiled follower serves every path; the follower (``hybrid_path_follow`` in the
+generated header ``hybrid_path.h``) reads the tip's position each sample and gives the task frame's
+direction and the loops' references (:data:`PATH_OUTPUT`). The standalone C, the
+:class:`hybrid.Controller` and the compiled closed loop call that one function.
+
+Between nodes the path is the cubic Hermite curve through the nodes' points with their unit tangents
+(an arc-length parametrisation: its error is about ``h^4 kappa^3 / 384`` for nodes ``h`` apart on a
+curve of curvature ``kappa``); the normal, the geodesic curvature and the profiles are interpolated
+linearly. Each sample:
+
+1. the progress ``s`` moves to the path's point nearest the tip (Newton steps on ``(p - c(s)) . t(s)``
+   from the last sample's ``s``: the measured motion along the path), within the path (an open path
+   ends; a closed one wraps), and ``travelled`` (the arc length since the start) with it;
+2. at ``c(s)``: the tangent ``t``, the surface's normal ``n`` and the cross-track direction
+   ``e = n x t``, which, as the task frame's direction, makes ``t1 = e x n = t`` and ``t2 = n x t1 = e``;
+3. the speed along ``t1``: the table's speed bounded by the acceleration from ``speed_start`` since the
+   start and, on an open path, by the deceleration to 0 at its end (a trapezoid in arc length), and its
+   rate ``v dv/ds``; on ``t2``: ``-cross_track_gain * d`` for the cross-track error ``d = (p - c) . e``,
+   and the centripetal feedforward ``kappa_g v^2`` of the path's turn on the surface (the task frame's
+   rate, computed for a fixed direction, does not carry it); on ``n``: the table's force.
+"""
+
+from __future__ import annotations
+
+#: a node's numbers, one row of the path's table: its arc length [m], point [m], unit tangent and the
+#: surface's unit normal there (towards the robot), the path's geodesic curvature (its turn on the surface,
+#: positive towards ``n x t``) [1/m], the speed [m/s] and the normal force [N] there
+PATH_TABLE = ("s", "p_x", "p_y", "p_z", "t_x", "t_y", "t_z", "n_x", "n_y", "n_z", "kappa_g", "speed", "force")
+#: the follower's settings: the table's rows, 1 for a closed path, its length [m], the arc length where the
+#: run starts [m], the arc length to travel [m] (an open path: to its end), the speed at the start [m/s], the
+#: acceleration limit along the path [m/s^2], the cross-track gain [1/s]
+PATH_SETTINGS = ("rows", "closed", "length", "start", "distance", "speed_start", "acceleration",
+                 "cross_track_gain")
+#: the follower's state: the progress ``s`` [m] (the arc length of the path's point nearest the tip), the arc
+#: length travelled [m], the table's row that holds ``s`` (a hint), 1 once started
+PATH_STATE = ("s", "travelled", "row", "started")
+#: what it gives each sample: the state after it, the path's point ``c(s)`` [m], its tangent, the surface's
+#: normal, the cross-track direction ``e = n x t`` (the task frame's direction), the references of t1 (speed
+#: [m/s] and its rate [m/s^2]), of t2 (the cross-track correction [m/s] and the turn's feedforward [m/s^2]),
+#: of n (force [N]), the cross-track error ``d`` [m], the tip's distance from the path in the surface's tangent
+#: plane [m], and 1 once an open path is done
+PATH_OUTPUT = ("s", "travelled", "row", "started", "c_x", "c_y", "c_z", "t_x", "t_y", "t_z", "n_x", "n_y", "n_z",
+               "e_x", "e_y", "e_z", "speed", "speed_rate", "lateral_speed", "lateral_rate", "force", "cross_track",
+               "path_error", "done")
+#: the follower's statuses: 0 the outputs are written; otherwise nothing is (the state stays)
+PATH_STATUSES = {"PATH_OK": 0, "PATH_INPUT_NONFINITE": 1, "PATH_TABLE_INVALID": 2}
+#: how close [m] to an open path's end counts as done
+PATH_DONE_TOL = 1e-4
+#: Newton steps of the progress per sample (the tip moves far less than a node's spacing in one)
+PATH_NEWTON_STEPS = 3
