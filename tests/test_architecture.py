@@ -44,6 +44,7 @@ LAZY_IMPORTS = {
     ("hybrid.cli.experiments", "hybrid.plots"): "matplotlib loads only for the commands that draw",
     ("hybrid.cli.sweep", "hybrid.plots"): "matplotlib loads only when a sweep draws its heatmaps",
     ("hybrid.simulation.results", "hybrid.plots"): "matplotlib loads only when a result is drawn (res.plot())",
+    ("hybrid.simulation.results", "hybrid.animation"): "matplotlib loads only when a result is animated",
     ("hybrid.plants.registry", "hybrid.plants.mujoco"): "MuJoCo is an optional extra: it loads when a run asks",
     ("hybrid.experiments.serialisation", "hybrid.geometry.implicit"):
         "SymPy loads only when a file names a surface a user wrote down",

@@ -128,6 +128,17 @@ class SimulationResult:
 
         return plot_result(self, title)
 
+    def animate(self, every: int | None = None, out: str | Path | None = None, *, fps: float | None = None,
+                overwrite: bool = False, force_scale: float | None = None, title: str | None = None):
+        """The arm doing the task, as a matplotlib ``FuncAnimation``: at every ``every``-th control
+        sample, the links through the joint origins, the surface, the sensor tip's path so far, the
+        recorded contact force as an arrow [``force_scale`` m/N] and the task frame's axes at the tip
+        (:func:`hybrid.animation.animate`). With ``out`` (a ``.gif``; an ``.mp4`` needs ffmpeg) it is
+        also written there, atomically; an existing file is refused unless ``overwrite``."""
+        from hybrid.animation import animate
+
+        return animate(self, every, out, fps=fps, overwrite=overwrite, force_scale=force_scale, title=title)
+
     def save(self, path: str | Path, overwrite: bool = False) -> Path:
         """Write an ``.npz`` with every array, the units and the experiment's settings; returns the
         path written (``.npz`` is added when missing). Atomic; refuses an existing file unless
