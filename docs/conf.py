@@ -15,6 +15,7 @@ import re
 import sys
 from pathlib import Path
 
+from sphinx.pycode import ModuleAnalyzer
 from sphinx.util import logging
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -92,6 +93,22 @@ def _check_api_listed(app, config) -> None:
         logging.getLogger(__name__).warning("docs/api.rst does not list the public names %s", ", ".join(missing))
 
 
+def _defined_data_comment(app, what, name, obj, options, lines) -> None:
+    """A constant documented under a module that imports it (``hybrid.UR5_URDF``) has its definition's
+    ``#:`` comment, not its type's docstring (a ``Path``'s, a ``tuple``'s)."""
+    if what != "data":
+        return
+    where, _, attr = name.rpartition(".")
+    if ("", attr) in ModuleAnalyzer.for_module(where).find_attr_docs():
+        return  # documented where it is listed
+    for modname, module in sorted(sys.modules.items()):
+        if modname.startswith("hybrid.") and vars(module).get(attr) is obj:
+            comment = ModuleAnalyzer.for_module(modname).find_attr_docs().get(("", attr))
+            if comment:
+                lines[:] = list(comment)
+                return
+
+
 def _gallery_headers_in_rest(app, config) -> None:
     """Gallery sections are folders with a reST header: the C examples' folders (a README.md each,
     linked from the how-to on standalone C) are not sections of the Python gallery."""
@@ -100,5 +117,6 @@ def _gallery_headers_in_rest(app, config) -> None:
 
 def setup(app):
     app.connect("config-inited", _check_api_listed)
+    app.connect("autodoc-process-docstring", _defined_data_comment)
     # after sphinx-gallery fills its configuration (priority 10), before it reads the examples
     app.connect("config-inited", _gallery_headers_in_rest, priority=11)

@@ -14,12 +14,36 @@ _INSIDE = (__name__.partition(".")[0], "dataclasses")
 class JointLimitWarning(UserWarning):
     """A run that left the robot's joint position, velocity or effort limits (the URDF's): the message names
     the worst joint, its limit, how far beyond it and when first (``SimulationResult.limit_violations``
-    holds the numbers)."""
+    holds the numbers).
+
+    Examples
+    --------
+    Make it an error where a run must stay within the limits:
+
+    >>> import warnings
+    >>> import hybrid
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("error", hybrid.JointLimitWarning)
+    ...     result = hybrid.simulate(hybrid.paper_experiment(duration=0.05))
+    >>> result.limit_violations
+    {}
+    """
 
 
 class RedundancyWarning(UserWarning):
     """A redundant arm (more joints than task axes) without a posture task: the joint motion the task
-    leaves free is nobody's to hold, and it falls under gravity and winds up (give a ``hybrid.Posture``)."""
+    leaves free is nobody's to hold, and it falls under gravity and winds up (give a ``hybrid.Posture``).
+
+    Examples
+    --------
+    >>> import warnings
+    >>> import hybrid
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     experiment = hybrid.panda_experiment(posture=None)
+    >>> [w.category.__name__ for w in caught]
+    ['RedundancyWarning']
+    """
 
 
 def warn(message: str, category: type[Warning]) -> None:

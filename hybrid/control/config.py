@@ -167,8 +167,46 @@ class ControllerConfig:
 
 
 def read_controller_config(path, robot) -> Controller:
-    """The :class:`~hybrid.Controller` of ``robot`` that the TOML file ``path`` describes (the
-    module's docstring lists its keys)."""
+    """The :class:`~hybrid.Controller` of ``robot`` that the TOML file ``path`` describes.
+
+    The keys are listed in :mod:`hybrid.control.config`; ``hybrid/data/controller_ur5_sphere.toml`` is
+    a commented example.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The TOML file.
+    robot : Robot
+        The robot it controls.
+
+    Returns
+    -------
+    Controller
+        The controller the file describes.
+
+    Raises
+    ------
+    HybridError
+        The file cannot be read, is not valid TOML, or a key is refused; the first line reads
+        ``FILE:LINE: KEY: what is wrong; what to give``.
+
+    Examples
+    --------
+    >>> import pathlib
+    >>> import tempfile
+    >>> import hybrid
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "controller.toml"
+    >>> _ = path.write_text('''
+    ... sample_time = 0.01
+    ... [surface]
+    ... kind = "circle"
+    ... center = [0.5, 0.0]
+    ... radius = 0.2
+    ... ''')
+    >>> controller = hybrid.read_controller_config(path, hybrid.Robot.planar(hybrid.paper_arm()))
+    >>> type(controller).__name__, controller.sample_time
+    ('Controller', 0.01)
+    """
     return load_controller_config(path).build(robot)
 
 

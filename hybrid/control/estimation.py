@@ -98,30 +98,58 @@ class EstimatedSurface(Surface):
 
     Parameters
     ----------
-    method : ``"fusion"`` (default), ``"force"``, ``"velocity"`` or ``"force_uncorrected"`` (the force's
+    method : str
+        ``"fusion"`` (default), ``"force"``, ``"velocity"`` or ``"force_uncorrected"`` (the force's
         direction as it is, friction and all: biased by the friction angle).
-    initial_normal : the estimate's start (base axes; made unit), e.g. the normal a drawing gives; None
-        (default): the contact force's direction at the first sample in contact (base z until then).
-    force_time_constant, velocity_time_constant : [s], > 0 (the force's at least one sample time).
-    rate_gain : >= 0: 1 the tracker's critically damped rate gain, 0 no rate (a lag on curved parts).
+    initial_normal : tuple of float or None
+        The estimate's start (base axes; made unit), e.g. the normal a drawing gives; None (default):
+        the contact force's direction at the first sample in contact (base z until then).
+    force_time_constant, velocity_time_constant : float
+        The estimators' time constants [s], > 0 (the force's at least one sample time).
+    rate_gain : float or None
+        >= 0: 1 the tracker's critically damped rate gain, 0 no rate (a lag on curved parts).
         Default: 1 for ``"fusion"``, 0 for one estimator alone (whose correction sees one direction only:
         a rate fed by it would turn the estimate about the directions it cannot see).
-    contact_threshold : [N], >= 0: the force estimate holds below it.
-    min_speed : [m/s], >= 0: the velocity estimate and the friction correction hold below it.
-    compliance : [m/N], >= 0, or None (default: 0): the start of the learnt compliance of the tool (and
-        sensor) between the tip and the contact.
-    compliance_information : [N^2/s^2], > 0: the weight of that start in the fit (a sample's weight is
-        the normal force's rate squared).
-    compliance_time_constant : [s], > 0, or inf (default): the fit's forgetting.
-    excitation : [N/s], >= 0: the fit's dead zone on the normal force's rate.
-    deflection_gate : >= 0: how far the velocity correction gives way to the deflection's normal rate
-        (its innovation ``v_n |v_t| / (|v_t|^2 + sigma^2)`` instead of ``v_n / |v_t|``, ``sigma =
-        deflection_gate (c + velocity_noise / sqrt(information)) |n . F'|``); 0: never.
-    velocity_noise : [m/s], >= 0: the tip velocity's uncertainty: the learnt compliance's is
+    contact_threshold : float
+        [N], >= 0: the force estimate holds below it.
+    min_speed : float
+        [m/s], >= 0: the velocity estimate and the friction correction hold below it.
+    compliance : float or None
+        [m/N], >= 0, or None (default: 0): the start of the learnt compliance of the tool (and sensor)
+        between the tip and the contact.
+    compliance_information : float
+        [N^2/s^2], > 0: the weight of that start in the fit (a sample's weight is the normal force's
+        rate squared).
+    compliance_time_constant : float
+        [s], > 0, or inf (default): the fit's forgetting.
+    excitation : float
+        [N/s], >= 0: the fit's dead zone on the normal force's rate.
+    deflection_gate : float
+        >= 0: how far the velocity correction gives way to the deflection's normal rate (its innovation
+        ``v_n |v_t| / (|v_t|^2 + sigma^2)`` instead of ``v_n / |v_t|``, ``sigma = deflection_gate (c +
+        velocity_noise / sqrt(information)) |n . F'|``); 0: never.
+    velocity_noise : float
+        [m/s], >= 0: the tip velocity's uncertainty: the learnt compliance's is
         ``velocity_noise / sqrt(information)``.
-    acquisition : > 0: the largest correction the tracker's rate takes (as a multiple of the force's
-        step ``1 - exp(-T / force_time_constant)``: 0.1 about 6 degrees at full gain).
-    max_curvature : [1/m], >= 0: the estimate's rate is at most the tip's sliding speed times this.
+    acquisition : float
+        > 0: the largest correction the tracker's rate takes (as a multiple of the force's step
+        ``1 - exp(-T / force_time_constant)``: 0.1 about 6 degrees at full gain).
+    max_curvature : float
+        [1/m], >= 0: the estimate's rate is at most the tip's sliding speed times this.
+
+    Raises
+    ------
+    HybridError
+        An unknown method, or a setting out of its range.
+
+    Examples
+    --------
+    Give it to a controller (or an experiment's ``controller_surface``) in place of the surface:
+
+    >>> import hybrid
+    >>> estimated = hybrid.EstimatedSurface(initial_normal=(0.0, 0.0, 1.0))
+    >>> estimated.method, estimated.rate_gain, estimated.start_normal
+    ('fusion', 1.0, (0.0, 0.0, 1.0))
     """
 
     method: str = "fusion"
@@ -182,10 +210,23 @@ class EstimatedSurface(Surface):
             object.__setattr__(self, name, float(value))
 
     def spec(self) -> SurfaceSpec:
+        """What the code generator needs: an estimated surface (no formula).
+
+        Returns
+        -------
+        SurfaceSpec
+            Its kind and the tuning's names.
+        """
         return SurfaceSpec(self.kind, self.parameters_named, estimated=True)
 
     def as_array(self) -> np.ndarray:
-        """The tuning as the generated step reads it (:data:`parameters_named`)."""
+        """The tuning as the generated step reads it.
+
+        Returns
+        -------
+        numpy.ndarray
+            One value per name of :data:`parameters_named`.
+        """
         w_force, w_velocity, correct = METHODS[self.method]
         return np.array([w_force, w_velocity, correct, self.force_time_constant, 1.0 / self.velocity_time_constant,
                          self.rate_gain,
@@ -201,11 +242,39 @@ class EstimatedSurface(Surface):
         return (0.0, 0.0, 1.0) if self.initial_normal is None else self.initial_normal
 
     def normal_at(self, p):
+        """An estimated surface has no normal of its own: the controller estimates it.
+
+        Parameters
+        ----------
+        p : array_like
+            A point (3 coordinates) [m].
+
+        Returns
+        -------
+        numpy.ndarray
+            Never: this raises.
+
+        Raises
+        ------
+        HybridError
+            Always: give the experiment the true surface, and this one as ``controller_surface``.
+        """
         raise HybridError("an EstimatedSurface has no normal of its own: the controller estimates it; give the "
                           "experiment the true surface (the plant's), and this one as controller_surface")
 
     def check_sampling(self, sample_time: float) -> None:
-        """Refuse time constants shorter than the sample time (the discrete estimate would overshoot)."""
+        """Refuse time constants shorter than the sample time (the discrete estimate would overshoot).
+
+        Parameters
+        ----------
+        sample_time : float
+            The controller's sample time [s].
+
+        Raises
+        ------
+        HybridError
+            ``force_time_constant`` is shorter than ``sample_time``.
+        """
         for name in ("force_time_constant",):
             if getattr(self, name) < sample_time:
                 raise HybridError(f"EstimatedSurface {name} = {getattr(self, name):g} s is shorter than the sample "

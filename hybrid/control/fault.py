@@ -39,10 +39,18 @@ class FaultReaction:
 
     Parameters
     ----------
-    fault_samples : consecutive faulted samples that enter the safe state (a whole number >= 1).
-    stop_time : [s] > 0, the joints' velocities decay as ``q'' = -q' / stop_time`` in the safe state; a
+    fault_samples : int
+        Consecutive faulted samples that enter the safe state (a whole number >= 1).
+    stop_time : float
+        [s] > 0, the joints' velocities decay as ``q'' = -q' / stop_time`` in the safe state; a
         controller refuses one shorter than two of its sample times (:meth:`check_sampling`).
-    unload_time : [s] >= 0, the torque the arm had at the fault is released over it (0: at once).
+    unload_time : float
+        [s] >= 0, the torque the arm had at the fault is released over it (0: at once).
+
+    Raises
+    ------
+    HybridError
+        A value out of its range, or not a number.
 
     Examples
     --------
@@ -69,14 +77,31 @@ class FaultReaction:
         """Refuse a ``stop_time`` shorter than two sample times ``sample_time`` [s]: the hold is a PD law
         served once a sample (the torque held between samples), whose discrete poles leave the unit circle at
         ``stop_time <= sample_time`` (the arm is thrown, not stopped); at two sample times they are inside,
-        at 0.7."""
+        at 0.7.
+
+        Parameters
+        ----------
+        sample_time : float
+            The controller's sample time [s].
+
+        Raises
+        ------
+        HybridError
+            ``stop_time`` is shorter than two sample times.
+        """
         if not CHECKS[FAULT_CHECKS[FAULT.index("stop_time")]].valid(self.stop_time, sample_time):
             raise HybridError(f"FaultReaction stop_time = {self.stop_time:g} s is shorter than two sample times "
                               f"({2 * sample_time:g} s at the sample time {sample_time:g} s): the sampled stop "
                               "would be unstable; give at least two sample times")
 
     def as_array(self) -> np.ndarray:
-        """The numbers as the step reads them (:data:`~hybrid.spec.controller_step.FAULT`)."""
+        """The numbers as the step reads them.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``fault_samples``, ``stop_time``, ``unload_time`` (:data:`~hybrid.spec.controller_step.FAULT`).
+        """
         return np.array([float(getattr(self, name)) for name in FAULT])
 
 

@@ -44,13 +44,26 @@ SAME_DIRECTION = 1e-6
 class ToolIdentification:
     """What :func:`identify_tool` found.
 
-    Attributes
+    Parameters
     ----------
-    bias : the sensor's bias [N, N m] (6, sensor axes, in the sign convention of ``s w``).
-    tool : the :class:`~hybrid.Tool` (mass [kg], centre of mass [m] in sensor axes).
-    residual_force_N, residual_moment_Nm : the RMS over the poses of the norm of the force and moment
-        left unexplained by the fit (the readings' noise, or a model that does not fit).
-    condition : the condition number of the regressor (gravity scaled to unit length).
+    bias : tuple of float
+        The sensor's bias [N, N m] (6, sensor axes, in the sign convention of ``s w``).
+    tool : Tool
+        The tool (mass [kg], centre of mass [m] in sensor axes).
+    residual_force_N, residual_moment_Nm : float
+        The RMS over the poses of the norm of the force and moment left unexplained by the fit (the
+        readings' noise, or a model that does not fit).
+    condition : float
+        The condition number of the regressor (gravity scaled to unit length).
+
+    Examples
+    --------
+    See :func:`identify_tool`, which makes one; :meth:`sensor` gives the sensor with what it found:
+
+    >>> import hybrid
+    >>> found = hybrid.ToolIdentification((1.0, 0.0, 0.0, 0.0, 0.0, 0.0), hybrid.Tool(0.5), 0.0, 0.0, 1.0)
+    >>> found.sensor(hybrid.WrenchSensor()).tool.mass
+    0.5
     """
 
     bias: tuple[float, ...]
@@ -60,7 +73,18 @@ class ToolIdentification:
     condition: float
 
     def sensor(self, sensor: WrenchSensor) -> WrenchSensor:
-        """``sensor`` with the identified bias and tool."""
+        """``sensor`` with the identified bias and tool.
+
+        Parameters
+        ----------
+        sensor : WrenchSensor
+            The sensor identified (its mount, sign and filter are kept).
+
+        Returns
+        -------
+        WrenchSensor
+            The sensor with this bias and tool.
+        """
         _check_sensor(sensor)
         return dataclasses.replace(sensor, bias=self.bias, tool=self.tool)
 
@@ -125,19 +149,53 @@ def identify_tool(robot: Robot, sensor: WrenchSensor, q, readings, *,
                   max_condition: float = MAX_CONDITION) -> ToolIdentification:
     """The bias and the tool of ``sensor`` from ``readings`` at rest in free space (module docstring).
 
-    Parameters
-    ----------
-    robot : the arm carrying the sensor (its tip rotation and gravity are used).
-    sensor : the sensor: its mount and sign are used; its bias and tool are what is identified.
-    q : joint positions of the N poses (N x n), N >= 3, the sensor held at 3 orientations to gravity
-        or more.
-    readings : the raw readings at those poses (N x 6: force [N], then moment [N m], sensor axes, in the
-        sensor's own sign convention).
-    max_condition : the largest condition number of the regressor accepted.
-
     A mass that comes out below zero by more than three of its standard errors is refused (a reading of the
     wrong sign, or of a sensor in contact); within them the sensor carries no tool: the bias alone is
     fitted (the readings' mean) and the tool is ``Tool()``.
+
+    Parameters
+    ----------
+    robot : Robot
+        The arm carrying the sensor (its tip rotation and gravity are used).
+    sensor : WrenchSensor
+        The sensor: its mount and sign are used; its bias and tool are what is identified.
+    q : array_like
+        Joint positions of the N poses (N x n), N >= 3, the sensor held at 3 orientations to gravity
+        or more.
+    readings : array_like
+        The raw readings at those poses (N x 6: force [N], then moment [N m], sensor axes, in the
+        sensor's own sign convention).
+    max_condition : float
+        The largest condition number of the regressor accepted.
+
+    Returns
+    -------
+    ToolIdentification
+        The bias, the tool, the fit's residuals and its condition number.
+
+    Raises
+    ------
+    HybridError
+        Fewer than 3 poses or orientations to gravity, poses that do not excite the tool's centre of
+        mass (above ``max_condition``), arrays of the wrong shape or not finite, a robot without
+        gravity, or a mass below zero.
+
+    Examples
+    --------
+    Readings of a 0.5 kg tool, its centre of mass 3 cm out, on a sensor of 1 N bias, at four wrist
+    poses of the UR5:
+
+    >>> import numpy as np
+    >>> import hybrid
+    >>> robot, sensor = hybrid.ur5(), hybrid.WrenchSensor()
+    >>> q = np.array([[0.0, -1.57, 1.57, 0.0, 0.0, 0.0], [0.0, -1.57, 1.57, 0.8, 0.0, 0.0],
+    ...               [0.0, -1.57, 1.57, 0.0, 0.8, 0.0], [0.0, -1.57, 1.57, 0.8, 0.8, 0.8]])
+    >>> R = hybrid.arm_terms(robot, q, np.zeros_like(q))["rotation"]
+    >>> weight = 0.5 * np.einsum("nji,j->ni", R, robot.gravity)  # in sensor (tip) axes
+    >>> readings = np.hstack([weight, np.cross([0.0, 0.0, 0.03], weight)]) + [1.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+    >>> found = hybrid.identify_tool(robot, sensor, q, readings)
+    >>> round(found.tool.mass, 6), round(found.tool.com[2], 6), round(found.bias[0], 6)
+    (0.5, 0.03, 1.0)
     """
     _check_sensor(sensor)
     g = _check_robot(robot)
@@ -193,7 +251,36 @@ def identify_tool(robot: Robot, sensor: WrenchSensor, q, readings, *,
 
 def tare(sensor: WrenchSensor, robot: Robot, q, reading) -> WrenchSensor:
     """``sensor`` with the bias that makes its compensated wrench zero at the joint positions ``q`` for
-    the raw ``reading`` (the arm at rest, nothing in contact); the tool as it is."""
+    the raw ``reading`` (the arm at rest, nothing in contact); the tool as it is.
+
+    Parameters
+    ----------
+    sensor : WrenchSensor
+        The sensor (its mount, sign and tool are used).
+    robot : Robot
+        The arm carrying it.
+    q : array_like
+        The joint positions of the pose (n).
+    reading : array_like
+        The raw reading at that pose (6: force [N], then moment [N m], sensor axes).
+
+    Returns
+    -------
+    WrenchSensor
+        The sensor with the new bias.
+
+    Raises
+    ------
+    HybridError
+        Arrays of the wrong shape or not finite, or not a sensor or a robot.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> tared = hybrid.tare(hybrid.WrenchSensor(), hybrid.ur5(), [0.0] * 6, [1.0, 0.0, -2.0, 0.0, 0.0, 0.1])
+    >>> tared.bias
+    (1.0, 0.0, -2.0, 0.0, 0.0, 0.1)
+    """
     _check_sensor(sensor)
     g = _check_robot(robot, weighed=False)
     q = _array("q", q, (robot.n,), f"the {robot.n} joint positions of the pose")

@@ -49,7 +49,43 @@ class DecouplingLaw:
     joint, ``a`` one task acceleration per axis [m/s^2 or rad/s^2, task frame], ``Fc`` the measured
     contact wrench on the robot (``wrench_size`` entries, base axes); or N rows of each for N states
     in one native call (``out=`` then takes the caller's arrays). Its settings are read-only: the
-    compiled entry point is bound to them.
+    compiled entry point is bound to them. :func:`decoupling_law` builds one.
+
+    Parameters
+    ----------
+    robot : Robot or Arm
+        The arm (the paper's planar arm's parameters stand for that arm).
+    surface : Surface
+        The surface the tool slides on.
+    curvature : bool
+        Include ``R' v`` (the paper runs without it).
+    frame_direction : array_like
+        The task frame's direction ``e`` (base axes).
+    axes : str or sequence of int or None
+        The task axes (see :func:`decoupling_law`); None: the robot's default.
+    backend : str or None
+        ``"rigid_body"``, or the planar closed form's ``"sympy"`` / ``"casadi"``; None: the closed
+        form where it applies.
+    singular_tol : float
+        The smallest distance from singularity accepted.
+
+    Raises
+    ------
+    HybridError
+        A setting refused: an unknown backend, a closed form where it does not apply, task axes the
+        arm cannot control.
+    NativeBuildError
+        The generated C could not be compiled.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> law = hybrid.DecouplingLaw(hybrid.paper_arm(), hybrid.Circle((0.5, 0.0), 0.2))
+    >>> law.backend, law.axes, law.wrench_size
+    ('sympy', (0, 2), 2)
+    >>> force, torque = law.evaluate([0.3, 1.2], [0.0, 0.0], [0.0, 1.0], [0.0, 0.0])
+    >>> force.shape, torque.shape
+    ((2,), (2,))
     """
 
     __slots__ = ("robot", "surface", "curvature", "frame_direction", "axes", "backend", "singular_tol", "_fn",
@@ -135,8 +171,30 @@ class DecouplingLaw:
         return 6 if self.backend == "rigid_body" else 2
 
     def evaluate(self, q, qdot, a, Fc, tau0=None, out: tuple | None = None) -> tuple[np.ndarray, np.ndarray]:
-        """``(F*, tau)`` for one state or N states; for N states ``out = (F, tau)`` are the caller's
-        arrays to write (either may be None)."""
+        """``(F*, tau)`` for one state or N states.
+
+        Parameters
+        ----------
+        q : array_like
+            Joint positions [rad or m], one per joint (or N rows).
+        qdot : array_like
+            Joint velocities [rad/s or m/s].
+        a : array_like
+            The commanded task accelerations, one per axis [m/s^2 or rad/s^2, task frame].
+        Fc : array_like
+            The measured contact wrench on the robot (``wrench_size`` entries, base axes).
+        tau0 : array_like or None
+            A redundant arm's null-space torque (one per joint); None: 0.
+        out : tuple of numpy.ndarray or None
+            For N states, ``(F, tau)``: the caller's arrays to write (either may be None).
+
+        Returns
+        -------
+        F : numpy.ndarray
+            ``F*`` in base axes.
+        tau : numpy.ndarray
+            The joint torques [N m or N].
+        """
         if out is not None:
             if not isinstance(out, (tuple, list)) or len(out) != 2:
                 raise HybridError("out must be (F, tau): two arrays of shape (N, size), either may be None")
@@ -145,7 +203,26 @@ class DecouplingLaw:
         return self._checked(q, qdot, a, Fc, tau0) if got is None else got
 
     def __call__(self, q, qdot, a, Fc, out: np.ndarray | None = None) -> np.ndarray:
-        """``F*`` in base axes (for N states, into ``out`` when given)."""
+        """``F*`` in base axes.
+
+        Parameters
+        ----------
+        q : array_like
+            Joint positions [rad or m], one per joint (or N rows).
+        qdot : array_like
+            Joint velocities [rad/s or m/s].
+        a : array_like
+            The commanded task accelerations, one per axis [m/s^2 or rad/s^2, task frame].
+        Fc : array_like
+            The measured contact wrench on the robot (``wrench_size`` entries, base axes).
+        out : numpy.ndarray or None
+            For N states, the caller's array to write.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``F*`` (``wrench_size`` entries, or N rows of them).
+        """
         if out is None:
             got = self._force(q, qdot, a, Fc)
             if got is not None:
@@ -154,14 +231,50 @@ class DecouplingLaw:
         return self._checked(q, qdot, a, Fc, None, {"F": out})[0]
 
     def torque(self, q, qdot, a, Fc, tau0=None, out: np.ndarray | None = None) -> np.ndarray:
-        """``tau = J^T F* + (I - J^T Jbar^T) tau0`` (for N states, into ``out`` when given)."""
+        """The joint torques ``tau = J^T F* + (I - J^T Jbar^T) tau0``.
+
+        Parameters
+        ----------
+        q : array_like
+            Joint positions [rad or m], one per joint (or N rows).
+        qdot : array_like
+            Joint velocities [rad/s or m/s].
+        a : array_like
+            The commanded task accelerations, one per axis [m/s^2 or rad/s^2, task frame].
+        Fc : array_like
+            The measured contact wrench on the robot (``wrench_size`` entries, base axes).
+        tau0 : array_like or None
+            A redundant arm's null-space torque (one per joint); None: 0.
+        out : numpy.ndarray or None
+            For N states, the caller's array to write.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``tau`` [N m or N], one per joint (or N rows).
+        """
         if out is not None:
             return self._checked(q, qdot, a, Fc, tau0, {"tau": out})[1]
         got = self._fast(self._binding, 1, q, qdot, a, Fc, *self._held(tau0))
         return self._checked(q, qdot, a, Fc, tau0)[1] if got is None else got
 
     def task_frame(self, p, pdot) -> tuple[np.ndarray, np.ndarray]:
-        """``R`` and ``R'`` at the point ``p`` [m] moving at ``pdot`` (see :func:`hybrid.task_frame`)."""
+        """The task frame at a point of the law's surface (see :func:`hybrid.task_frame`).
+
+        Parameters
+        ----------
+        p : array_like
+            The point [m].
+        pdot : array_like
+            Its velocity [m/s].
+
+        Returns
+        -------
+        R : numpy.ndarray
+            The task frame.
+        Rdot : numpy.ndarray
+            Its rate.
+        """
         return task_frame(self.surface, p, pdot, frame_direction=self.frame_direction)
 
     def _held(self, tau0) -> tuple:
@@ -209,11 +322,43 @@ def decoupling_law(robot: Robot | Arm, surface: Surface, curvature: bool = False
                    singular_tol: float = SINGULAR_TOL, frame_direction=(0.0, 0.0, 1.0), axes=None) -> DecouplingLaw:
     """The decoupling law of ``robot`` on ``surface``, compiled (see :class:`DecouplingLaw`).
 
-    ``axes``: the task axes, ``"all"`` (the default for a 6-joint arm or more), ``"position"``,
-    ``"planar"`` (the paper's ``(t1, n)``, the default of its arm) or indices 0-5 of ``t1, t2, n``
-    and the rotations about them; ``frame_direction``: the task frame's direction ``e`` (base axes);
-    ``curvature=True`` includes ``R' v`` (the paper runs without it); ``backend``: the derivation
-    (``"rigid_body"``, or the planar closed form's ``"sympy"`` / ``"casadi"``; default the closed form
-    where it applies).
+    Parameters
+    ----------
+    robot : Robot or Arm
+        The arm (the paper's planar arm's parameters stand for that arm).
+    surface : Surface
+        The surface the tool slides on.
+    curvature : bool
+        Include ``R' v`` (the paper runs without it).
+    backend : str or None
+        The derivation: ``"rigid_body"``, or the planar closed form's ``"sympy"`` / ``"casadi"``;
+        None (default): the closed form where it applies.
+    singular_tol : float
+        The smallest distance from singularity accepted.
+    frame_direction : array_like
+        The task frame's direction ``e`` (base axes).
+    axes : str or sequence of int or None
+        The task axes: ``"all"`` (the default for a 6-joint arm or more), ``"position"``,
+        ``"planar"`` (the paper's ``(t1, n)``, the default of its arm) or indices 0-5 of ``t1, t2, n``
+        and the rotations about them.
+
+    Returns
+    -------
+    DecouplingLaw
+        The compiled law.
+
+    Raises
+    ------
+    HybridError
+        A setting refused (see :class:`DecouplingLaw`).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import hybrid
+    >>> law = hybrid.decoupling_law(hybrid.paper_arm(), hybrid.Circle((0.5, 0.0), 0.2))
+    >>> q = np.tile([0.3, 1.2], (4, 1))  # four states in one call
+    >>> law.torque(q, np.zeros((4, 2)), np.zeros((4, 2)), np.zeros((4, 2))).shape
+    (4, 2)
     """
     return DecouplingLaw(robot, surface, curvature, frame_direction, axes, backend, singular_tol)

@@ -23,6 +23,28 @@ class Gains:
 
     Velocity: ``a_t = v_d' + KPv e_v + KIv int e_v + KI2v int int e_v``.
     Force: ``a_n = -KPf e_F - KDf v_n - KIf int e_F`` with ``e_F = F_d - F_c,n``.
+
+    Parameters
+    ----------
+    KPv, KIv, KI2v : float
+        The velocity loop's gains [1/s, 1/s^2, 1/s^3], >= 0.
+    KPf : float
+        The force loop's proportional gain ``1/m_d`` [1/kg], >= 0.
+    KDf : float
+        Its damping ``d_v/m_d`` [1/s], >= 0.
+    KIf : float
+        Its integral gain [1/(kg s)], >= 0.
+
+    Raises
+    ------
+    HybridError
+        A gain that is negative or not finite.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> hybrid.Gains(KPf=3.0)
+    Gains(KPv=40.0, KIv=200.0, KI2v=1000.0, KPf=3.0, KDf=90.0, KIf=25.0)
     """
 
     KPv: float = 40.0     # 1/s

@@ -18,7 +18,34 @@ class Measurement:
     reading: ``reading`` (as given), ``compensated`` (less the bias and the tool's weight, sensor
     axes) and ``contact_wrench`` (``F_c``: base axes, at the tip, before the filter, which keeps a
     state: ``last["contact_wrench"]`` is the filtered one a sample used); without, all three are the
-    wrench given."""
+    wrench given.
+
+    Parameters
+    ----------
+    p : numpy.ndarray
+        The tip's position [m], base axes.
+    v : numpy.ndarray
+        Its twist ``(p', w)`` [m/s, rad/s], base axes.
+    task_velocity : numpy.ndarray
+        ``R v`` on the six task axes.
+    task_wrench : numpy.ndarray
+        ``R F_c`` on the six task axes [N, N m].
+    reading : numpy.ndarray
+        The sensor's reading as given.
+    compensated : numpy.ndarray
+        The reading less the bias and the tool's weight, sensor axes.
+    contact_wrench : numpy.ndarray
+        ``F_c``: base axes, at the tip, before the filter.
+
+    Examples
+    --------
+    ``Controller.measure(q, qdot, Fc)`` gives one; its fields are:
+
+    >>> import dataclasses
+    >>> import hybrid
+    >>> [f.name for f in dataclasses.fields(hybrid.Measurement)]
+    ['p', 'v', 'task_velocity', 'task_wrench', 'reading', 'compensated', 'contact_wrench']
+    """
 
     p: np.ndarray
     v: np.ndarray

@@ -25,7 +25,26 @@ class ContactLoss:
     first touch, or after a loss of contact): it approaches the surface at ``approach_speed`` [m/s or
     rad/s] (through the impedance's damping ``KDf``) until the force comes back, its integral kept
     where the force law commands the same acceleration, so the hand-over at the touch has no jump
-    (conventions §4)."""
+    (conventions §4).
+
+    Parameters
+    ----------
+    threshold : float
+        The force below which an axis counts as out of contact [N or N m].
+    approach_speed : float
+        The speed at which it approaches the surface [m/s or rad/s], >= 0.
+
+    Raises
+    ------
+    HybridError
+        A value not finite, or a negative speed.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> hybrid.ContactLoss(threshold=1.0, approach_speed=0.05)
+    ContactLoss(threshold=1.0, approach_speed=0.05)
+    """
 
     threshold: float = 0.5
     approach_speed: float = 0.02
@@ -65,6 +84,29 @@ class Posture:
     defaults: 5 rad/s, critically damped). ``n`` (gravity, velocity terms, viscosity) is cancelled
     in the null space too, where the law alone leaves it: without a posture a redundant arm's null
     space falls under gravity, and with gains 0 it coasts.
+
+    Parameters
+    ----------
+    q_rest : tuple of float
+        The rest posture, one joint position per joint [rad or m].
+    stiffness : float or tuple of float
+        ``K_p`` [1/s^2], >= 0: one number for every joint, or one per joint.
+    damping : float or tuple of float
+        ``K_d`` [1/s], >= 0: one number for every joint, or one per joint.
+
+    Raises
+    ------
+    HybridError
+        A rest posture or gain not finite, a negative gain, or gains not one per joint.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> posture = hybrid.Posture((0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785))
+    >>> posture.stiffness, posture.damping
+    (25.0, 10.0)
+    >>> posture.as_array().shape
+    (21,)
     """
 
     q_rest: tuple[float, ...]
@@ -85,7 +127,13 @@ class Posture:
             object.__setattr__(self, name, value if np.ndim(getattr(self, name)) else value[0])
 
     def as_array(self) -> np.ndarray:
-        """The generated step's ``posture`` array: ``q_rest``, then ``K_p`` and ``K_d`` per joint."""
+        """The generated step's ``posture`` array.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``q_rest``, then ``K_p`` and ``K_d`` per joint.
+        """
         n = len(self.q_rest)
         return np.concatenate([self.q_rest, _gain("stiffness", self.stiffness, n), _gain("damping", self.damping, n)])
 
@@ -97,7 +145,24 @@ class Reference:
     A number is constant and a :class:`~hybrid.Step` jumps once: both are evaluated in the
     compiled step (``step`` = (before, after, at)), with rate 0 between jumps (as the paper's).
     Any other callable ``f(t)`` is evaluated in Python at each sample; its ``rate(t)`` method, when
-    it has one, gives the feedforward (else 0).
+    it has one, gives the feedforward (else 0). Build it with :meth:`of`.
+
+    Parameters
+    ----------
+    step : tuple of float or None
+        ``(before, after, at)`` of a constant or a step, evaluated in the compiled step; None for code.
+    value : callable or None
+        ``f(t)``, evaluated in Python; None for a constant or a step.
+    rate : callable or None
+        ``f.rate(t)``, the feedforward; None: 0.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> hybrid.Reference.of("force_reference", 10.0)
+    Reference(step=(10.0, 10.0, 0.0), value=None, rate=None)
+    >>> hybrid.Reference.of("force_reference", hybrid.Step(10.0, 20.0, 0.4)).step
+    (10.0, 20.0, 0.4)
     """
 
     step: tuple[float, float, float] | None
@@ -106,6 +171,25 @@ class Reference:
 
     @classmethod
     def of(cls, name: str, ref) -> Reference:
+        """The reference ``ref`` given for the setting ``name``.
+
+        Parameters
+        ----------
+        name : str
+            The setting it is given for (named by the error when refused).
+        ref : float, Step, callable or Reference
+            A number (constant), a :class:`~hybrid.Step`, or a callable ``f(t)``.
+
+        Returns
+        -------
+        Reference
+            The signal.
+
+        Raises
+        ------
+        HybridError
+            Anything else, or a number that is not finite.
+        """
         if isinstance(ref, Reference):
             return ref
         if isinstance(ref, (int, float, np.integer, np.floating)) and not isinstance(ref, bool):

@@ -26,11 +26,30 @@ def register(cls: type[Scheme]) -> type[Scheme]:
 class Scheme:
     """A hybrid force/velocity control scheme.
 
-    ``step``: the generated function that runs one sample (see :mod:`codegen.controller_step`).
-    ``feeds_desired_force``: the law's contact term is the desired force ``R^T Sigma F_d``
-    (fed forward) rather than the measured ``F_c`` (cancelled).
-    ``pseudoinverse``: motion axes mapped by the pseudo-inverse of the selected Jacobian rows.
-    ``needs_force_gain``: force axes need ``KPf > 0`` (their command is ``m_d a = a / KPf``).
+    A scheme is chosen by an instance or by its ``name`` (``Controller(..., scheme="khatib")``); its
+    behaviour is in its class attributes:
+
+    Attributes
+    ----------
+    name : str
+        Its name in :data:`SCHEMES`.
+    step : str
+        The generated function that runs one sample (see :mod:`codegen.controller_step`).
+    feeds_desired_force : bool
+        The law's contact term is the desired force ``R^T Sigma F_d`` (fed forward) rather than the
+        measured ``F_c`` (cancelled).
+    pseudoinverse : bool
+        Motion axes mapped by the pseudo-inverse of the selected Jacobian rows.
+    needs_force_gain : bool
+        Force axes need ``KPf > 0`` (their command is ``m_d a = a / KPf``).
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> sorted(hybrid.SCHEMES)
+    ['fisher_mujtaba', 'khatib', 'raibert_craig', 'task']
+    >>> hybrid.SCHEMES["khatib"]() == hybrid.Khatib()
+    True
     """
 
     name: ClassVar[str]
@@ -52,7 +71,16 @@ class Scheme:
 @register
 class TaskDecoupling(Scheme):
     """De Luca & Manes: ``F* = Bbar_o R^T (a - R' y) + n_o - F_c`` decouples the task axes and
-    cancels the *measured* contact force, so every axis is the integrator ``y' = a``."""
+    cancels the *measured* contact force, so every axis is the integrator ``y' = a``.
+
+    Examples
+    --------
+    The default scheme of a controller:
+
+    >>> import hybrid
+    >>> hybrid.TaskDecoupling().name, hybrid.TaskDecoupling().feeds_desired_force
+    ('task', False)
+    """
 
     name = "task"
 
@@ -60,7 +88,14 @@ class TaskDecoupling(Scheme):
 @register
 class Khatib(Scheme):
     """Khatib 1987, as the paper uses it: the same law and loops with the *desired* normal force
-    ``R^T Sigma F_d`` fed forward in place of the measured ``F_c`` (dynamically consistent)."""
+    ``R^T Sigma F_d`` fed forward in place of the measured ``F_c`` (dynamically consistent).
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> hybrid.Khatib().name, hybrid.Khatib().feeds_desired_force
+    ('khatib', True)
+    """
 
     name = "khatib"
     feeds_desired_force = True

@@ -45,7 +45,26 @@ def _vector(owner: str, name: str, value, size: int) -> tuple[float, ...]:
 
 @dataclass(frozen=True)
 class Tool:
-    """What hangs beyond the sensor: its ``mass`` [kg] and centre of mass ``com`` [m] in sensor axes."""
+    """What hangs beyond the sensor (its weight is part of every reading).
+
+    Parameters
+    ----------
+    mass : float
+        Its mass [kg], >= 0.
+    com : tuple of float
+        Its centre of mass [m], sensor axes.
+
+    Raises
+    ------
+    HybridError
+        A negative or non-finite mass, or a centre of mass not of three finite numbers.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> hybrid.Tool(mass=0.5, com=(0.0, 0.0, 0.03))
+    Tool(mass=0.5, com=(0.0, 0.0, 0.03))
+    """
 
     mass: float = 0.0
     com: tuple[float, float, float] = (0.0, 0.0, 0.0)
@@ -77,17 +96,40 @@ class WrenchSensor:
 
     Parameters
     ----------
-    frame : a frame of the robot's URDF rigidly attached to the tip's link (the sensor's own frame), or
+    frame : str or None
+        A frame of the robot's URDF rigidly attached to the tip's link (the sensor's own frame), or
         None with ``position`` and ``rotation``.
-    position : the sensor origin in tip axes [m] (default: at the tip).
-    rotation : the sensor axes in tip axes (3 x 3; default: the tip's).
-    sign : +1 (default): the reading is the wrench the tool side exerts on the sensor; -1: the one
-        the sensor exerts on the tool.
-    tool : the :class:`Tool` beyond the sensor (its weight is subtracted at the current orientation).
-    bias : the reading with nothing on the sensor [N, N m], sensor axes.
-    cutoff : the low-pass filter's cutoff [Hz], below the Nyquist frequency ``1 / (2 T)``; None: no
-        filter.
-    order : 1 or 2 (Butterworth).
+    position : tuple of float
+        The sensor origin in tip axes [m] (default: at the tip).
+    rotation : tuple
+        The sensor axes in tip axes (3 x 3; default: the tip's).
+    sign : int
+        +1 (default): the reading is the wrench the tool side exerts on the sensor; -1: the one the
+        sensor exerts on the tool.
+    tool : Tool
+        The tool beyond the sensor (its weight is subtracted at the current orientation).
+    bias : tuple of float
+        The reading with nothing on the sensor [N, N m], sensor axes.
+    cutoff : float or None
+        The low-pass filter's cutoff [Hz], below the Nyquist frequency ``1 / (2 T)``; None: no filter.
+    order : int
+        1 or 2 (Butterworth).
+
+    Raises
+    ------
+    HybridError
+        A value out of its range: not a rotation, a sign other than +-1, a cutoff not positive, an
+        order other than 1 or 2.
+
+    Examples
+    --------
+    A sensor 5 cm beyond the tip, carrying a 0.5 kg tool, filtered at 20 Hz:
+
+    >>> import hybrid
+    >>> sensor = hybrid.WrenchSensor(position=(0.0, 0.0, 0.05), tool=hybrid.Tool(0.5, (0.0, 0.0, 0.03)), cutoff=20.0)
+    >>> sensor.mount()[0].tolist()
+    [0.0, 0.0, 0.05]
+    >>> sensor.check_sampling(0.01)  # 20 Hz is below the Nyquist frequency of 10 ms samples
     """
 
     frame: str | None = None
@@ -121,13 +163,42 @@ class WrenchSensor:
             raise HybridError(f"WrenchSensor order = {shown(self.order)}; give 1 or 2 (the Butterworth filter's order)")
 
     def check_sampling(self, sample_time: float) -> None:
-        """Refuse a cutoff at or above the Nyquist frequency of ``sample_time`` [s]."""
+        """Refuse a cutoff at or above the Nyquist frequency of ``sample_time``.
+
+        Parameters
+        ----------
+        sample_time : float
+            The controller's sample time [s].
+
+        Raises
+        ------
+        HybridError
+            The cutoff is at or above ``1 / (2 sample_time)``.
+        """
         if self.cutoff is not None and self.cutoff >= 0.5 / sample_time:
             raise HybridError(f"WrenchSensor cutoff = {self.cutoff:g} Hz is at or above the Nyquist frequency "
                               f"{0.5 / sample_time:g} Hz of the sample time {sample_time:g} s; give a cutoff below it")
 
     def mount(self, robot=None) -> tuple[np.ndarray, np.ndarray]:
-        """The sensor frame in tip axes: ``(r [m], R_m)`` (from ``frame`` in ``robot``'s URDF when given)."""
+        """The sensor frame in tip axes.
+
+        Parameters
+        ----------
+        robot : Robot or None
+            The robot whose URDF names ``frame`` (needed only with a ``frame``).
+
+        Returns
+        -------
+        r : numpy.ndarray
+            The sensor origin [m], tip axes.
+        R_m : numpy.ndarray
+            The sensor axes in tip axes (3 x 3).
+
+        Raises
+        ------
+        HybridError
+            A ``frame`` with a robot not read from a URDF.
+        """
         if self.frame is None:
             return np.array(self.position), np.array(self.rotation)
         source = getattr(robot, "source", None)
@@ -140,7 +211,20 @@ class WrenchSensor:
         return r.copy(), R.copy()
 
     def as_array(self, robot, sample_time: float) -> np.ndarray:
-        """The generated step's ``sensor`` array (its layout: :data:`hybrid.spec.controller_step.SENSOR`)."""
+        """The generated step's ``sensor`` array.
+
+        Parameters
+        ----------
+        robot : Robot or None
+            The robot whose URDF names ``frame``.
+        sample_time : float
+            The controller's sample time [s] (the cutoff is checked against it).
+
+        Returns
+        -------
+        numpy.ndarray
+            The array, laid out as :data:`hybrid.spec.controller_step.SENSOR`.
+        """
         self.check_sampling(sample_time)
         r, Rm = self.mount(robot)
         return np.concatenate([r, Rm.ravel(), [float(self.sign), self.tool.mass], self.tool.com, self.bias,

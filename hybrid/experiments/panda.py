@@ -57,6 +57,29 @@ def panda_experiment(**overrides) -> Experiment:
     ``v_d``). On a vertical cylinder the path is, unless given, the circle around it through the
     start point (``start_point``, or the default one projected onto the cylinder); ``posture=None``
     turns the posture task off (warned: :class:`hybrid.RedundancyWarning`).
+
+    Parameters
+    ----------
+    **overrides
+        Any field of :class:`Experiment`; the gains one by one; ``F_d`` / ``v_d`` in place of the
+        force / speed references.
+
+    Returns
+    -------
+    Experiment
+        The Panda pressing on a vertical pillar and sliding around it, overridden.
+
+    Raises
+    ------
+    HybridError
+        An unknown or refused setting.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> experiment = hybrid.panda_experiment(duration=1.0)
+    >>> experiment.robot.name, experiment.duration
+    ('panda', 1.0)
     """
     surface = overrides.get("surface", Cylinder(CYLINDER_POINT, (0.0, 0.0, 1.0), CYLINDER_RADIUS))
     defaults = {"robot": panda(), "surface": surface, "posture": Posture(REST_POSTURE),

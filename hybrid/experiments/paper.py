@@ -21,8 +21,29 @@ from hybrid.validate import shown
 def paper_experiment(**overrides) -> Experiment:
     """The paper's experiment, with any setting of :class:`Experiment` overridden by keyword.
 
-    The gains can also be given one by one (``KPv=50``), ``F_d`` / ``v_d`` replace the force /
-    speed references, and ``arm`` (a :class:`hybrid.Arm`) gives the planar arm's parameters.
+    Parameters
+    ----------
+    **overrides
+        Any field of :class:`Experiment`; the gains one by one (``KPv=50``); ``F_d`` / ``v_d`` in
+        place of the force / speed references; ``arm`` (a :class:`hybrid.Arm`), the planar arm's
+        parameters.
+
+    Returns
+    -------
+    Experiment
+        The paper's experiment (module docstring), overridden.
+
+    Raises
+    ------
+    HybridError
+        An unknown or refused setting, or both ``arm`` and ``robot``.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> experiment = hybrid.paper_experiment(duration=0.5, KPf=3.0)
+    >>> experiment.duration, experiment.gains.KPf
+    (0.5, 3.0)
     """
     arm = overrides.pop("arm", None)
     if arm is not None:

@@ -23,15 +23,56 @@ from hybrid.validate import shown
 @renamed_keywords(reference="frame_direction")
 def task_frame(surface: Surface, r, rdot, *, frame_direction=(0.0, 0.0, 1.0),
                backend: str = "sympy") -> tuple[np.ndarray, np.ndarray]:
-    """``R(r)`` and ``R'(r, r')`` on ``surface`` at the point ``r`` [m] moving at ``r'`` [m/s].
+    """``R(r)`` and ``R'(r, r')`` on ``surface`` at the point ``r`` moving at ``r'``.
 
     Points of 3 coordinates give the 3-D frame, ``(3, 3)`` for one point and ``(N, 3, 3)`` for N
-    (shape ``(N, 3)``) in one native call, generated for the surface (``frame_direction``: the task
-    frame's direction ``e``, base axes).
+    (shape ``(N, 3)``) in one native call, generated for the surface.
     Points of 2 coordinates (in the base xy-plane, on a surface with a
     :meth:`~hybrid.geometry.surfaces.Surface.cross_section`: a cylinder about z, a vertical plane)
     give the paper's 2 x 2 frame: one point from the committed closed-form unit of ``backend``, N
     points from the 3-D frame's rows ``t1, n`` and columns ``x, y``.
+
+    Parameters
+    ----------
+    surface : Surface
+        Any surface of the library (:class:`~hybrid.Plane`, :class:`~hybrid.Sphere`, ...).
+    r : array_like
+        The point [m]: 3 coordinates or 2, or N rows of them.
+    rdot : array_like
+        Its velocity [m/s], of the shape of ``r``.
+    frame_direction : array_like
+        The task frame's direction ``e``, base axes (3-D frames only).
+    backend : str
+        The planar frame's committed unit: ``"sympy"`` (default) or ``"casadi"``.
+
+    Returns
+    -------
+    R : numpy.ndarray
+        The task frame, rows ``t1, t2, n`` (2-D: ``t, n``), base axes.
+    Rdot : numpy.ndarray
+        Its rate.
+
+    Raises
+    ------
+    TaskFrameError
+        ``e`` is parallel to the normal at ``r``, or the surface has no normal there.
+    NonFiniteError
+        ``r`` or ``rdot`` is not finite.
+    HybridError
+        Not a surface, shapes that differ, or 2 coordinates on a surface with no planar cross-section.
+
+    Examples
+    --------
+    On the paper's disc, at its point nearest the base, the normal row points back to the robot:
+
+    >>> import hybrid
+    >>> R, Rdot = hybrid.task_frame(hybrid.Circle((0.5, 0.0), 0.2), [0.3, 0.0], [0.0, -0.1])
+    >>> R.shape, R[1].tolist()
+    ((2, 2), [-1.0, 0.0])
+    >>> R, Rdot = hybrid.task_frame(hybrid.Sphere((0.5, 0.0, 0.2), 0.15), [[0.35, 0.0, 0.2]] * 4,
+    ...                             [[0.0, 0.1, 0.0]] * 4)
+    >>> R.shape
+    (4, 3, 3)
     """
     if not isinstance(surface, Surface):
         raise HybridError(f"surface must be a hybrid surface (Circle, Plane, Sphere, Cylinder, ImplicitSurface), "

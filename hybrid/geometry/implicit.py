@@ -28,10 +28,32 @@ from hybrid.validate import _finite, check_identifier, shown
 class ImplicitSurface(Surface):
     """Any surface ``phi(x, y, z) = 0`` written in SymPy, ``phi > 0`` on the robot's side.
 
-    ``parameters`` maps the names of ``phi``'s other symbols to their values (run-time inputs
-    of the generated code: changing a value never regenerates). ``phi`` may be a SymPy
-    expression or a string SymPy can parse, e.g. an ellipsoid
-    ``ImplicitSurface("(x/a)**2 + (y/b)**2 + (z/c)**2 - 1", {"a": 0.3, "b": 0.2, "c": 0.1})``.
+    Parameters
+    ----------
+    phi : sympy.Expr or str
+        ``phi(x, y, z)``, a SymPy expression of the symbols ``x, y, z`` and the parameters, or text
+        (read without running it: arithmetic, numbers, ``x, y, z``, the parameters and the functions
+        of :data:`PHI_FUNCTIONS`).
+    parameters : dict
+        The values of ``phi``'s other symbols, by name (run-time inputs of the generated code:
+        changing a value never regenerates).
+
+    Raises
+    ------
+    HybridError
+        ``phi`` not an expression of ``x, y, z``, a symbol without a value, a value not finite, text
+        that is not such a formula, or a function the code generator cannot translate.
+
+    Examples
+    --------
+    An ellipsoid of semi-axes 0.3, 0.2 and 0.1 m:
+
+    >>> import hybrid
+    >>> ellipsoid = hybrid.ImplicitSurface("(x/a)**2 + (y/b)**2 + (z/c)**2 - 1", {"a": 0.3, "b": 0.2, "c": 0.1})
+    >>> ellipsoid.normal_at([0.0, 0.0, 0.1]).tolist()
+    [0.0, 0.0, 1.0]
+    >>> ellipsoid.as_array().tolist()
+    [0.3, 0.2, 0.1]
     """
 
     phi: object
@@ -78,12 +100,43 @@ class ImplicitSurface(Surface):
         return hash((self.phi, tuple(self.parameters.items())))
 
     def spec(self) -> SurfaceSpec:
+        """What the code generator needs of this surface.
+
+        Returns
+        -------
+        SurfaceSpec
+            ``phi`` and its parameters' names, its kind named by a digest of ``phi``.
+        """
         return self._spec
 
     def as_array(self) -> np.ndarray:
+        """The generated code's run-time parameters of this surface.
+
+        Returns
+        -------
+        numpy.ndarray
+            The values of ``parameters``, in their order.
+        """
         return np.array([float(v) for v in self.parameters.values()])
 
     def normal_at(self, p) -> np.ndarray:
+        """Unit normal towards the robot, ``grad phi / |grad phi|``.
+
+        Parameters
+        ----------
+        p : array_like
+            A point (3 coordinates) [m].
+
+        Returns
+        -------
+        numpy.ndarray
+            The unit normal (3).
+
+        Raises
+        ------
+        HybridError
+            ``phi`` or its gradient is undefined at ``p``, or the gradient vanishes there.
+        """
         x, y, z = sp.symbols("x y z", real=True)
         grad = [sp.diff(self.phi, s) for s in (x, y, z)]
         subs = {x: p[0], y: p[1], z: p[2], **{sp.Symbol(k, real=True): v for k, v in self.parameters.items()}}
@@ -98,7 +151,13 @@ class ImplicitSurface(Surface):
         return _unit_normal(g, f"grad phi vanishes at {tuple(p)}")
 
     def phi_function(self):
-        """``p -> (phi(p), grad phi(p))`` in NumPy, ``phi``'s parameters bound."""
+        """``phi`` and its gradient in NumPy, ``phi``'s parameters bound.
+
+        Returns
+        -------
+        callable
+            ``p -> (phi(p), grad phi(p))``, ``p`` 3 coordinates; NaN where ``phi`` is undefined.
+        """
         values = {sp.Symbol(k, real=True): float(v) for k, v in self.parameters.items()}
         return numpy_phi(self.phi.xreplace(values), sp.symbols("x y z", real=True))
 

@@ -215,8 +215,34 @@ class LineSection(Section):
 
 
 def Circle(center, radius: float) -> Cylinder:  # noqa: N802  (a constructor, named as the shape it makes)
-    """The paper's disc of centre ``center`` = (x, y) [m] and radius ``radius`` [m], touched from
-    outside: the cylinder about base z through ``(x, y, 0)`` (its cross-section is the circle)."""
+    """The paper's disc, touched from outside: the cylinder about base z through its centre.
+
+    Parameters
+    ----------
+    center : array_like
+        The disc's centre (x, y) [m].
+    radius : float
+        Its radius [m], > 0.
+
+    Returns
+    -------
+    Cylinder
+        The cylinder about base z through ``(x, y, 0)`` (its cross-section is the circle).
+
+    Raises
+    ------
+    HybridError
+        A centre not of two finite numbers, or a radius not positive.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> disc = hybrid.Circle(center=(0.5, 0.0), radius=0.2)
+    >>> disc
+    Cylinder(point=(0.5, 0.0, 0.0), axis=(0.0, 0.0, 1.0), radius=0.2)
+    >>> disc.cross_section()
+    CircleSection(center=(0.5, 0.0), radius=0.2)
+    """
     c = _point("Circle", "center", center)
     _positive("Circle", "radius", radius)
     return Cylinder((*c, 0.0), (0.0, 0.0, 1.0), radius)
@@ -227,9 +253,29 @@ def Circle(center, radius: float) -> Cylinder:  # noqa: N802  (a constructor, na
 
 @dataclass(frozen=True)
 class Plane(Surface):
-    """A plane through ``point`` [m] with unit ``normal`` pointing towards the robot:
-    ``phi = n^T (p - point)``. Two coordinates give the paper's planar line: the vertical plane
-    through ``(x, y, 0)`` with normal ``(n_x, n_y, 0)``.
+    """A plane through ``point`` with unit ``normal`` pointing towards the robot: ``phi = n^T (p - point)``.
+
+    Parameters
+    ----------
+    point : array_like
+        A point of the plane [m]: 3 coordinates, or 2 for the paper's planar line (the vertical plane
+        through ``(x, y, 0)``).
+    normal : array_like
+        The direction from the plane towards the robot (as many coordinates as ``point``; made unit).
+
+    Raises
+    ------
+    HybridError
+        Coordinates not finite or of the wrong number, or a normal of zero length.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> wall = hybrid.Plane(point=(0.3, 0.0), normal=(-1.0, 0.0))
+    >>> wall
+    Plane(point=(0.3, 0.0, 0.0), normal=(-1.0, 0.0, 0.0))
+    >>> wall.project([0.5, 0.1, 0.2]).tolist()
+    [0.3, 0.1, 0.2]
     """
 
     point: tuple[float, ...]
@@ -249,36 +295,88 @@ class Plane(Surface):
         object.__setattr__(self, "normal", (*normal, 0.0)[:3])
 
     def as_array(self) -> np.ndarray:
+        """The generated code's run-time parameters of this surface.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``point`` (3), then ``normal`` (3).
+        """
         return np.array([*self.point, *self.normal])
 
     parameters_named = PARAMETERS["plane"]
     formula = staticmethod(FORMULAS["plane"])
 
     def cross_section(self) -> LineSection | None:
-        """The line where a vertical plane cuts the base xy-plane (None for another plane)."""
+        """The line where a vertical plane cuts the base xy-plane.
+
+        Returns
+        -------
+        LineSection or None
+            The line, or None for a plane that is not vertical.
+        """
         if self.normal[2] != 0.0:
             return None
         return _once(LineSection, self.point[:2], self.normal[:2])
 
     def normal_at(self, p) -> np.ndarray:
-        """Unit normal towards the robot (the same everywhere)."""
+        """Unit normal towards the robot (the same everywhere).
+
+        Parameters
+        ----------
+        p : array_like
+            A point (3 coordinates) [m].
+
+        Returns
+        -------
+        numpy.ndarray
+            The unit normal towards the robot (3).
+        """
         return np.array(self.normal)
 
     def phi_function(self):
-        """``p -> (phi(p), grad phi(p))``: ``n^T (p - point)`` and the unit normal ``n``."""
+        """``phi`` and its gradient in NumPy: ``n^T (p - point)`` and the unit normal ``n``.
+
+        Returns
+        -------
+        callable
+            ``p -> (phi(p), grad phi(p))``, ``p`` a NumPy array of 3 coordinates.
+        """
         theta = self.as_array()
         point, normal = theta[:3], theta[3:]
         unit = normal / math.sqrt(normal @ normal)
         return lambda p: (float(unit @ (p - point)), unit)
 
     def path_through(self, p) -> LinePath:
-        """The line through ``p`` along ``t1 = z x n`` (base x on a horizontal plane)."""
+        """The line through ``p`` along ``t1 = z x n`` (base x on a horizontal plane).
+
+        Parameters
+        ----------
+        p : array_like
+            A point of the plane (3 coordinates) [m].
+
+        Returns
+        -------
+        LinePath
+            The line, its arc length 0 at ``p``.
+        """
         n = np.asarray(self.normal)
         d = np.array([-n[1], n[0], 0.0])
         return LinePath(tuple(np.asarray(p, float)), tuple(d) if np.linalg.norm(d) > 1e-9 else (1.0, 0.0, 0.0))
 
     def project(self, p) -> np.ndarray:
-        """The surface point nearest ``p`` (along the normal)."""
+        """The surface point nearest ``p`` (along the normal).
+
+        Parameters
+        ----------
+        p : array_like
+            A point (3 coordinates) [m].
+
+        Returns
+        -------
+        numpy.ndarray
+            The surface point (3) [m].
+        """
         p = np.asarray(p, float)
         n = np.asarray(self.normal)
         return p - n * float((p - self.point) @ n)
@@ -290,8 +388,29 @@ class Plane(Surface):
 
 @dataclass(frozen=True)
 class Sphere(Surface):
-    """A sphere of centre ``center`` [m] and radius ``radius`` [m], touched from outside:
-    ``phi = |p - c| - radius``."""
+    """A sphere touched from outside: ``phi = |p - c| - radius``.
+
+    Parameters
+    ----------
+    center : array_like
+        The centre ``c`` (3 coordinates) [m].
+    radius : float
+        The radius [m], > 0.
+
+    Raises
+    ------
+    HybridError
+        A centre not of three finite numbers, or a radius not positive.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> ball = hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15)
+    >>> ball.normal_at([0.5, 0.0, 0.5]).tolist()
+    [0.0, 0.0, 1.0]
+    >>> ball.project([0.5, 0.0, 0.5]).tolist()
+    [0.5, 0.0, 0.35]
+    """
 
     center: tuple[float, float, float]
     radius: float
@@ -305,14 +424,44 @@ class Sphere(Surface):
     formula = staticmethod(FORMULAS["sphere"])
 
     def as_array(self) -> np.ndarray:
+        """The generated code's run-time parameters of this surface.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``center`` (3), then ``radius``.
+        """
         return np.array([*self.center, self.radius])
 
     def normal_at(self, p) -> np.ndarray:
+        """Unit normal towards the robot, along ``p - c``.
+
+        Parameters
+        ----------
+        p : array_like
+            A point (3 coordinates) [m].
+
+        Returns
+        -------
+        numpy.ndarray
+            The unit normal towards the robot (3).
+
+        Raises
+        ------
+        HybridError
+            ``p`` is the centre.
+        """
         d = np.asarray(p, float) - self.center
         return _unit_normal(d, f"the point {p} is the sphere's centre")
 
     def phi_function(self):
-        """``p -> (phi(p), grad phi(p))``: ``|p - c| - radius`` and ``(p - c) / |p - c|``."""
+        """``phi`` and its gradient in NumPy: ``|p - c| - radius`` and ``(p - c) / |p - c|``.
+
+        Returns
+        -------
+        callable
+            ``p -> (phi(p), grad phi(p))``, ``p`` a NumPy array of 3 coordinates.
+        """
         theta = self.as_array()
         center, rho = theta[:3], theta[3]
 
@@ -323,12 +472,39 @@ class Sphere(Surface):
         return sphere
 
     def project(self, p) -> np.ndarray:
-        """The surface point nearest ``p`` (radially)."""
+        """The surface point nearest ``p`` (radially).
+
+        Parameters
+        ----------
+        p : array_like
+            A point (3 coordinates) [m].
+
+        Returns
+        -------
+        numpy.ndarray
+            The surface point (3) [m].
+        """
         return np.asarray(self.center) + self.radius * self.normal_at(p)
 
     def latitude_circle(self, latitude: float = 60.0) -> CirclePath:
-        """The circle ``latitude`` degrees from the top (+z), counter-clockwise seen from +z (along
-        ``t1 = z x n``), starting on the side that faces the base's z axis."""
+        """A latitude circle, counter-clockwise seen from +z (along ``t1 = z x n``), starting on the
+        side that faces the base's z axis.
+
+        Parameters
+        ----------
+        latitude : float
+            Its angle from the top (+z) [degrees], in (0, 180).
+
+        Returns
+        -------
+        CirclePath
+            The circle.
+
+        Raises
+        ------
+        HybridError
+            A latitude outside (0, 180).
+        """
         _finite("Sphere.latitude_circle", latitude=latitude)
         if not 0 < latitude < 180:
             raise HybridError(f"latitude = {latitude} degrees from the top; give a value in (0, 180)")
@@ -337,11 +513,28 @@ class Sphere(Surface):
         return CirclePath((c[0], c[1], c[2] + h), rho, rho * math.atan2(-c[1], -c[0]))
 
     def path(self) -> CirclePath:
-        """The default path on a sphere: its latitude circle 60 degrees from the top."""
+        """The default path on a sphere: its latitude circle 60 degrees from the top.
+
+        Returns
+        -------
+        CirclePath
+            The circle (see :meth:`latitude_circle`).
+        """
         return self.latitude_circle()
 
     def path_through(self, p) -> CirclePath:
-        """The latitude circle through the point ``p`` of the sphere (about the vertical through its centre)."""
+        """The latitude circle through the point ``p`` of the sphere (about the vertical through its centre).
+
+        Parameters
+        ----------
+        p : array_like
+            A point of the sphere (3 coordinates) [m].
+
+        Returns
+        -------
+        CirclePath or None
+            The circle, its arc length at ``p`` its start; None at a pole.
+        """
         p, c = np.asarray(p, float), np.asarray(self.center, float)
         rho = math.hypot(p[0] - c[0], p[1] - c[1])
         if rho < 1e-9:
@@ -352,8 +545,31 @@ class Sphere(Surface):
 
 @dataclass(frozen=True)
 class Cylinder(Surface):
-    """An infinite cylinder of radius ``radius`` [m] about the line through ``point`` [m]
-    along ``axis``, touched from outside: ``phi = |(I - u u^T)(p - point)| - radius``."""
+    """An infinite cylinder touched from outside: ``phi = |(I - u u^T)(p - point)| - radius``.
+
+    Parameters
+    ----------
+    point : array_like
+        A point of its axis (3 coordinates) [m].
+    axis : array_like
+        The axis' direction ``u`` (3 coordinates; made unit).
+    radius : float
+        The radius [m], > 0.
+
+    Raises
+    ------
+    HybridError
+        Coordinates not finite or of the wrong number, an axis of zero length, or a radius not positive.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> pillar = hybrid.Cylinder(point=(0.5, 0.0, 0.0), axis=(0.0, 0.0, 1.0), radius=0.2)
+    >>> pillar.normal_at([0.3, 0.0, 0.1]).tolist()
+    [-1.0, 0.0, 0.0]
+    >>> pillar.circle_at([0.3, 0.0, 0.1])  # doctest: +ELLIPSIS
+    CirclePath(center=(0.5, 0.0, 0.1), radius=0.2, start=0.628...)
+    """
 
     point: tuple[float, float, float]
     axis: tuple[float, float, float]
@@ -369,16 +585,46 @@ class Cylinder(Surface):
     formula = staticmethod(FORMULAS["cylinder"])
 
     def as_array(self) -> np.ndarray:
+        """The generated code's run-time parameters of this surface.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``point`` (3), ``axis`` (3), then ``radius``.
+        """
         return np.array([*self.point, *self.axis, self.radius])
 
     def normal_at(self, p) -> np.ndarray:
+        """Unit normal towards the robot, radially from the axis.
+
+        Parameters
+        ----------
+        p : array_like
+            A point (3 coordinates) [m].
+
+        Returns
+        -------
+        numpy.ndarray
+            The unit normal towards the robot (3).
+
+        Raises
+        ------
+        HybridError
+            ``p`` is on the axis.
+        """
         d = np.asarray(p, float) - self.point
         radial = d - np.dot(d, self.axis) * np.asarray(self.axis)
         return _unit_normal(radial, f"the point {p} is on the cylinder's axis")
 
     def phi_function(self):
-        """``p -> (phi(p), grad phi(p))``: the distance from the axis less the radius, and the radial
-        unit vector."""
+        """``phi`` and its gradient in NumPy: the distance from the axis less the radius, and the
+        radial unit vector.
+
+        Returns
+        -------
+        callable
+            ``p -> (phi(p), grad phi(p))``, ``p`` a NumPy array of 3 coordinates.
+        """
         theta = self.as_array()
         point, axis, rho = theta[:3], theta[3:6], theta[6]
         uu = axis @ axis
@@ -391,14 +637,41 @@ class Cylinder(Surface):
         return cylinder
 
     def project(self, p) -> np.ndarray:
-        """The surface point nearest ``p`` (radially from the axis)."""
+        """The surface point nearest ``p`` (radially from the axis).
+
+        Parameters
+        ----------
+        p : array_like
+            A point (3 coordinates) [m].
+
+        Returns
+        -------
+        numpy.ndarray
+            The surface point (3) [m].
+        """
         d = np.asarray(p, float) - self.point
         u = np.asarray(self.axis)
         return np.asarray(self.point) + np.dot(d, u) * u + self.radius * self.normal_at(p)
 
     def circle_at(self, point) -> CirclePath:
         """The circle around a vertical cylinder (axis along base z) through ``point``,
-        counter-clockwise seen from +z, starting at ``point``."""
+        counter-clockwise seen from +z, starting at ``point``.
+
+        Parameters
+        ----------
+        point : array_like
+            A point of the cylinder (3 coordinates) [m].
+
+        Returns
+        -------
+        CirclePath
+            The circle, its arc length at ``point`` its start.
+
+        Raises
+        ------
+        HybridError
+            The cylinder's axis is not along base z.
+        """
         if abs(abs(self.axis[2]) - 1.0) > 1e-12:
             raise HybridError(f"Cylinder.circle_at needs a cylinder about base z, its axis is {self.axis}; "
                               "give the experiment a path of your own")
@@ -407,15 +680,44 @@ class Cylinder(Surface):
         return CirclePath(path.center, self.radius, path.arc_of(p))
 
     def path(self) -> CirclePath:
+        """A cylinder has no path of its own: see :meth:`circle_at`.
+
+        Returns
+        -------
+        CirclePath
+            Never: this raises.
+
+        Raises
+        ------
+        HybridError
+            Always.
+        """
         raise HybridError("a cylinder has no path of its own: give the experiment a path, e.g. "
                           "cylinder.circle_at(point)")
 
     def path_through(self, p) -> CirclePath | None:
-        """The circle around a vertical cylinder through ``p`` (None for another cylinder)."""
+        """The circle around a vertical cylinder through ``p``.
+
+        Parameters
+        ----------
+        p : array_like
+            A point of the cylinder (3 coordinates) [m].
+
+        Returns
+        -------
+        CirclePath or None
+            The circle of :meth:`circle_at`, or None for a cylinder that is not vertical.
+        """
         return self.circle_at(p) if self.cross_section() is not None else None
 
     def cross_section(self) -> CircleSection | None:
-        """The circle where a vertical cylinder cuts the base xy-plane (None for another cylinder)."""
+        """The circle where a vertical cylinder cuts the base xy-plane.
+
+        Returns
+        -------
+        CircleSection or None
+            The circle, or None for a cylinder that is not vertical.
+        """
         if self.axis[0] != 0.0 or self.axis[1] != 0.0:
             return None
         return _once(CircleSection, self.point[:2], self.radius)

@@ -20,6 +20,36 @@ class Arm:
     along the link, inertia ``Ii`` [kg m^2] about that centre, joint viscosity ``Vi``
     [N m s/rad]. ``gravity`` [m/s^2] acts along ``-y`` (0 for a SCARA). The paper gives
     ``I1`` about the joint axis and no ``m1, d1``: that is ``m1 = d1 = 0`` here.
+
+    Parameters
+    ----------
+    L1, L2 : float
+        The links' lengths [m], > 0.
+    m1, m2 : float
+        The links' masses [kg], >= 0.
+    d1, d2 : float
+        The distance of each link's centre of mass from its joint, along the link [m].
+    I1, I2 : float
+        The links' inertias about their centres of mass [kg m^2], >= 0.
+    V1, V2 : float
+        The joints' viscosities [N m s/rad], >= 0.
+    gravity : float
+        The acceleration of gravity along ``-y`` [m/s^2] (default 0: a SCARA).
+
+    Raises
+    ------
+    HybridError
+        A value is not finite, a length not positive, a mass, inertia or viscosity negative, or the
+        inertia matrix ``B(q)`` is not positive definite.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> arm = hybrid.Arm(L1=0.45, L2=0.32, m1=0.0, m2=3.5, d1=0.0, d2=0.15, I1=0.25, I2=0.16, V1=1.3, V2=0.2)
+    >>> arm == hybrid.paper_arm()
+    True
+    >>> arm.reach()
+    (0.13, 0.77)
     """
 
     L1: float
@@ -55,7 +85,18 @@ class Arm:
                     "(I1 > 0 or m1 d1 > 0, and I2 > 0 or m2 d2 > 0)")
 
     def inertia_matrix(self, q2: float) -> np.ndarray:
-        """Joint-space inertia ``B(q)`` [kg m^2]; it depends on ``q2`` only."""
+        """Joint-space inertia ``B(q)`` [kg m^2]; it depends on ``q2`` only.
+
+        Parameters
+        ----------
+        q2 : float
+            The second joint's position [rad].
+
+        Returns
+        -------
+        numpy.ndarray
+            ``B(q)``, 2 x 2.
+        """
         c = math.cos(q2)
         b22 = self.I2 + self.m2 * self.d2**2
         b12 = b22 + self.m2 * self.L1 * self.d2 * c
@@ -63,24 +104,71 @@ class Arm:
         return np.array([[b11, b12], [b12, b22]])
 
     def as_array(self) -> np.ndarray:
-        """The ``arm[11]`` array of the generated C: ``L1, L2, m1, m2, d1, d2, I1, I2, V1, V2, g``."""
+        """The ``arm[11]`` array of the generated C.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``L1, L2, m1, m2, d1, d2, I1, I2, V1, V2, g``.
+        """
         return np.array([getattr(self, f.name) for f in fields(self)], dtype=float)
 
     def with_model_error(self, inertial: float = 0.1, viscous_compensation: float = 0.5) -> Arm:
-        """The controller's model of this arm: inertial parameters ``(1 + inertial)`` times
-        the true ones, joint viscosity ``viscous_compensation`` times the true one."""
+        """The controller's model of this arm.
+
+        Parameters
+        ----------
+        inertial : float
+            The relative error of the inertial parameters: masses and inertias ``(1 + inertial)``
+            times the true ones.
+        viscous_compensation : float
+            The share of the joints' viscosity the model knows.
+
+        Returns
+        -------
+        Arm
+            The model's parameters.
+        """
         k = check_model_error(inertial, viscous_compensation)
         return _modelled(self, k, float(viscous_compensation))
 
     def conditioning(self, q):
         """Distance of ``J(q)`` from singularity, ``2 |det J| / |J|_F^2`` in [0, 1] (about
-        ``|sin q2|``); ``q`` of shape (2,) or (2, N)."""
+        ``|sin q2|``).
+
+        Parameters
+        ----------
+        q : numpy.ndarray
+            Joint positions [rad], of shape (2,) or (2, N).
+
+        Returns
+        -------
+        float or numpy.ndarray
+            The measure, one per state.
+        """
         L1, L2, c2 = self.L1, self.L2, np.cos(q[1])
         return 2.0 * L1 * L2 * np.abs(np.sin(q[1])) / (L1**2 + 2.0 * L2**2 + 2.0 * L1 * L2 * c2)
 
     def inverse_kinematics(self, position, elbow: int = 1) -> np.ndarray:
-        """Joint positions ``q`` [rad] putting the tip at ``position`` [m], in closed form: ``elbow = +1``
-        for ``q2 > 0``, ``-1`` for ``q2 < 0``. Raises :class:`HybridError` out of reach."""
+        """Joint positions putting the tip at ``position``, in closed form.
+
+        Parameters
+        ----------
+        position : array_like
+            The tip's position (x, y) [m].
+        elbow : int
+            +1 for ``q2 > 0``, -1 for ``q2 < 0``.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``q`` [rad], 2 entries.
+
+        Raises
+        ------
+        HybridError
+            The point is out of reach.
+        """
         r = np.asarray(position, float)
         L1, L2 = self.L1, self.L2
         c2 = (float(r @ r) - L1**2 - L2**2) / (2 * L1 * L2)
@@ -92,7 +180,13 @@ class Arm:
         return np.array([math.atan2(r[1], r[0]) - math.atan2(L2 * math.sin(q2), L1 + L2 * math.cos(q2)), q2])
 
     def reach(self) -> tuple[float, float]:
-        """Smallest and largest distance of the tip from the base [m]."""
+        """Smallest and largest distance of the tip from the base.
+
+        Returns
+        -------
+        tuple of float
+            ``(|L1 - L2|, L1 + L2)`` [m].
+        """
         return abs(self.L1 - self.L2), self.L1 + self.L2
 
 
@@ -109,5 +203,21 @@ def check_arm(arm) -> None:
 
 
 def paper_arm() -> Arm:
-    """The two-link SCARA of the paper (conventions §5)."""
+    """The two-link SCARA of the paper (conventions §5).
+
+    Returns
+    -------
+    Arm
+        ``L1 = 0.45``, ``L2 = 0.32`` m, ``m2 = 3.5`` kg, ``d2 = 0.15`` m, ``I1 = 0.25``, ``I2 = 0.16``
+        kg m^2, ``V1 = 1.3``, ``V2 = 0.2`` N m s/rad, no gravity.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> arm = hybrid.paper_arm()
+    >>> arm.L1, arm.L2, arm.m2
+    (0.45, 0.32, 3.5)
+    >>> arm.inertia_matrix(0.0).round(4).tolist()
+    [[1.67, 0.475], [0.475, 0.2388]]
+    """
     return Arm(L1=0.45, L2=0.32, m1=0.0, m2=3.5, d1=0.0, d2=0.15, I1=0.25, I2=0.16, V1=1.3, V2=0.2)

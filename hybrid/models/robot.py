@@ -39,13 +39,45 @@ def _gravity(g) -> tuple[float, float, float]:
 
 @dataclass(frozen=True)
 class Robot:
-    """A serial arm: ``chain`` (structure), per-link inertial parameters, joint viscosities
-    [N m s/rad or N s/m], gravity [m/s^2] in base axes, joint limits.
+    """A serial arm: its kinematic chain, inertial parameters, joint viscosities, gravity and joint limits.
 
     Build it with :meth:`from_urdf` or :meth:`planar`. Terms come from :func:`hybrid.arm_terms`.
-    ``closed_form`` holds the parameters of the paper's planar arm when the robot is that arm
-    (:meth:`planar`): its terms, plant and inverse kinematics then also exist in closed form, and
-    its chain, links, viscosities and gravity are derived from it (one place for its numbers).
+
+    Parameters
+    ----------
+    name : str
+        The robot's name (it names its generated code).
+    chain : hybrid.spec.chain.Chain
+        The kinematic structure (compiled into the generated C).
+    links : tuple of LinkInertia
+        Each joint's link: mass [kg], centre of mass [m] and inertia [kg m^2] in the joint's frame.
+    damping : tuple of float
+        The joints' viscosities [N m s/rad or N s/m].
+    gravity : tuple of float
+        Gravity in base axes [m/s^2].
+    limits : JointLimits or None
+        The joints' position, velocity and effort limits (a URDF's).
+    closed_form : Arm or None
+        The paper's planar arm when the robot is that arm (:meth:`planar`): its terms, plant and
+        inverse kinematics then also exist in closed form, and its chain, links, viscosities and
+        gravity are derived from it (one place for its numbers).
+    source : tuple or None
+        Where :meth:`from_urdf` read it.
+
+    Raises
+    ------
+    HybridError
+        A link or viscosity per joint missing, a value not physical (a negative mass, an inertia not
+        symmetric or not a rigid body's), or a last link without mass and inertia.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> robot = hybrid.Robot.planar(hybrid.paper_arm())
+    >>> robot.n, robot.joint_names
+    (2, ('joint1', 'joint2'))
+    >>> robot.inverse_kinematics([0.3, 0.4]).round(4).tolist()
+    [0.248, 1.7626]
     """
 
     name: str
@@ -97,9 +129,38 @@ class Robot:
     def from_urdf(cls, path, tip: str = "tool0", gravity=(0.0, 0.0, -9.81), locked: dict | None = None) -> Robot:
         """The serial chain of the URDF at ``path`` from its root link to the link ``tip``.
 
-        Fixed joints are merged; joints off the chain, and those named in ``locked``
-        (``{joint name: position}``), are held at 0 or at the given position and the links
-        they carry are lumped into the link they hang from.
+        Fixed joints are merged; joints off the chain, and those named in ``locked``, are held at 0
+        or at the given position and the links they carry are lumped into the link they hang from.
+
+        Parameters
+        ----------
+        path : str or pathlib.Path
+            The URDF file.
+        tip : str
+            The link the chain ends at (the tip frame).
+        gravity : array_like
+            Gravity in base axes [m/s^2].
+        locked : dict or None
+            ``{joint name: position}`` of joints held still.
+
+        Returns
+        -------
+        Robot
+            The chain, its links' inertial parameters, viscosities and limits as the file gives them.
+
+        Raises
+        ------
+        URDFError
+            The file cannot describe a controllable serial arm to ``tip``.
+        HybridError
+            ``tip`` is not a string, or ``locked`` not a dict.
+
+        Examples
+        --------
+        >>> import hybrid
+        >>> robot = hybrid.Robot.from_urdf(hybrid.UR5_URDF, tip="tool0")
+        >>> robot.n
+        6
         """
         if not isinstance(tip, str):
             raise HybridError(f"tip must be a link name (a string), got {tip!r}")
@@ -112,7 +173,18 @@ class Robot:
     @classmethod
     def planar(cls, arm: Arm) -> Robot:
         """The paper's planar arm (conventions §3) as a serial chain: revolute joints about base z,
-        links along x, the tip at ``L2`` beyond joint 2, gravity ``arm.gravity`` along ``-y``."""
+        links along x, the tip at ``L2`` beyond joint 2, gravity ``arm.gravity`` along ``-y``.
+
+        Parameters
+        ----------
+        arm : Arm
+            The arm's parameters (e.g. :func:`hybrid.paper_arm`).
+
+        Returns
+        -------
+        Robot
+            The arm, with ``closed_form`` its parameters.
+        """
         if not isinstance(arm, Arm):
             raise HybridError(f"arm must be a hybrid.Arm, got {type(arm).__name__}")
         return _planar(cls, arm)
@@ -129,19 +201,43 @@ class Robot:
         return tuple(j.name for j in self.chain.joints)
 
     def parameter_names(self) -> tuple[str, ...]:
-        """Names of the ``robot`` array of the generated C."""
+        """Names of the ``robot`` array of the generated C.
+
+        Returns
+        -------
+        tuple of str
+            One name per entry of :meth:`as_array`.
+        """
         return rb.parameter_names(self.chain)
 
     def as_array(self) -> np.ndarray:
-        """The ``robot`` array: per link ``m, c (3), I (6)``, then the viscosities, then gravity
-        (read-only)."""
+        """The ``robot`` array of the generated C.
+
+        Returns
+        -------
+        numpy.ndarray
+            Per link ``m, c (3), I (6)``, then the viscosities, then gravity (read-only).
+        """
         return self._params
 
     # ------------------------------------------------------------ model changes
 
     def with_model_error(self, inertial: float = 0.1, viscous_compensation: float = 0.5) -> Robot:
-        """The controller's model of this arm: masses and inertias ``(1 + inertial)`` times the
-        true ones (centres of mass unchanged), viscosities ``viscous_compensation`` times."""
+        """The controller's model of this arm.
+
+        Parameters
+        ----------
+        inertial : float
+            The relative error of the masses and inertias: ``(1 + inertial)`` times the true ones
+            (centres of mass unchanged).
+        viscous_compensation : float
+            The share of the joints' viscosities the model knows.
+
+        Returns
+        -------
+        Robot
+            The model.
+        """
         changed = self.kind.with_model_error(self, inertial, viscous_compensation)
         if changed is not None:
             return changed
@@ -152,10 +248,34 @@ class Robot:
 
     def with_link(self, joint: str, *, mass: float | None = None, com=None, inertia=None,
                   damping: float | None = None) -> Robot:
-        """This robot with the body moved by ``joint`` given new parameters (the others kept):
-        ``mass`` [kg], ``com`` (3) [m] and ``inertia`` (3x3 about the centre of mass) [kg m^2],
-        both in the joint's frame, ``damping`` its viscosity. The planar arm's parameters are its
-        ``closed_form``'s: change them there (``Robot.planar(dataclasses.replace(arm, m2=...))``)."""
+        """This robot with the body moved by ``joint`` given new parameters (the others kept).
+
+        The planar arm's parameters are its ``closed_form``'s: change them there
+        (``Robot.planar(dataclasses.replace(arm, m2=...))``).
+
+        Parameters
+        ----------
+        joint : str
+            The joint whose link changes.
+        mass : float or None
+            The link's mass [kg].
+        com : array_like or None
+            Its centre of mass (3) [m], in the joint's frame.
+        inertia : array_like or None
+            Its inertia (3 x 3, about the centre of mass) [kg m^2], in the joint's frame.
+        damping : float or None
+            The joint's viscosity [N m s/rad or N s/m].
+
+        Returns
+        -------
+        Robot
+            The changed robot.
+
+        Raises
+        ------
+        HybridError
+            No joint of that name, a value not physical, or the planar arm (change its ``Arm``).
+        """
         self.kind.check_link_change()
         if joint not in self.joint_names:
             raise HybridError(f"no joint named {joint!r}; the joints are {', '.join(self.joint_names)}")
@@ -184,21 +304,62 @@ class Robot:
         return self.kind.conditioning_name
 
     def conditioning(self, q) -> np.ndarray:
-        """The Jacobian's distance from singularity at ``q`` (one state, or one per row), in (0, 1]:
+        """The Jacobian's distance from singularity at ``q``, in (0, 1].
+
         ``m / (|J|_F |J^+|_F)`` (``m = min(6, n)``) of the tip's frame Jacobian, about
-        ``sigma_min / sigma_max``; the planar arm's ``2 |det J| / |J|_F^2`` (about ``|sin q2|``)."""
+        ``sigma_min / sigma_max``; the planar arm's ``2 |det J| / |J|_F^2`` (about ``|sin q2|``).
+
+        Parameters
+        ----------
+        q : array_like
+            Joint positions, one state (n) or one per row (N x n).
+
+        Returns
+        -------
+        float or numpy.ndarray
+            The measure, one per state.
+        """
         return self.kind.conditioning(self, q)
 
     def reach(self) -> tuple[float, float] | None:
-        """Smallest and largest distance of the tip from the base [m], when known in closed form."""
+        """Smallest and largest distance of the tip from the base, when known in closed form.
+
+        Returns
+        -------
+        tuple of float or None
+            ``(smallest, largest)`` [m], or None.
+        """
         return self.kind.reach()
 
     def inverse_kinematics(self, position, rotation=None, q0=None, tol: float = 1e-10, elbow: int = 1) -> np.ndarray:
-        """Joint positions putting the tip frame at ``position`` [m] (and ``rotation``, a 3x3 matrix in
-        base axes, when given), by damped least squares from ``q0`` (default: mid-range of the limits).
-        The planar arm solves in closed form (``elbow`` +1 for ``q2 > 0``, -1 for ``q2 < 0``; its
-        orientation follows from the position). Raises :class:`HybridError` when the pose is not
-        reached (out of reach, or a poor ``q0``)."""
+        """Joint positions putting the tip frame at ``position`` (and ``rotation``, when given).
+
+        Solved by damped least squares from ``q0``; the planar arm solves in closed form (its
+        orientation follows from the position).
+
+        Parameters
+        ----------
+        position : array_like
+            The tip's position [m], base axes (2 coordinates for the planar arm).
+        rotation : array_like or None
+            The tip frame's axes in base axes (3 x 3), or None: any orientation.
+        q0 : array_like or None
+            Where the iteration starts (default: mid-range of the limits).
+        tol : float
+            The tolerance on the pose's error.
+        elbow : int
+            The planar arm's elbow: +1 for ``q2 > 0``, -1 for ``q2 < 0``.
+
+        Returns
+        -------
+        numpy.ndarray
+            The joint positions [rad or m].
+
+        Raises
+        ------
+        HybridError
+            The pose is not reached (out of reach, or a poor ``q0``).
+        """
         return self.kind.inverse_kinematics(self, position, rotation, q0, tol, elbow)
 
     @property

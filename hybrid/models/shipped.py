@@ -13,16 +13,32 @@ from pathlib import Path
 from hybrid.models.robot import Robot
 
 _DATA = Path(__file__).resolve().parent.parent / "data"
-#: the UR5's URDF (Universal Robots' description as example-robot-data ships it)
+#: the path of the UR5's URDF, shipped in the package (Universal Robots' description as example-robot-data ships it)
 UR5_URDF = _DATA / "ur5_robot.urdf"
-#: the Panda's URDF (Franka Emika's description as example-robot-data ships it: arm, hand, fingers)
+#: the path of the Panda's URDF, shipped in the package (Franka Emika's description as example-robot-data ships
+#: it: arm, hand, fingers)
 PANDA_URDF = _DATA / "panda.urdf"
 #: the Panda's finger joints (prismatic, 0 to 0.04 m; the second mimics the first), locked closed
 PANDA_FINGERS = {"panda_finger_joint1": 0.0, "panda_finger_joint2": 0.0}
 
 
 def ur5() -> Robot:
-    """The UR5 of example-robot-data: 6 joints, tip ``tool0``, gravity on."""
+    """The UR5 of example-robot-data: 6 joints, tip ``tool0``, gravity on.
+
+    Returns
+    -------
+    Robot
+        The arm of :data:`UR5_URDF` from its base to ``tool0``.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> robot = hybrid.ur5()
+    >>> robot.name, robot.n, robot.gravity
+    ('ur5', 6, (0.0, 0.0, -9.81))
+    >>> robot.joint_names[:2]
+    ('shoulder_pan_joint', 'shoulder_lift_joint')
+    """
     return Robot.from_urdf(UR5_URDF, tip="tool0")
 
 
@@ -33,5 +49,17 @@ def panda() -> Robot:
     The fingers are locked closed and lumped into the hand, which the last joint carries. With 7
     joints and at most 6 task axes the arm is redundant: a :class:`~hybrid.Posture` task acts in
     the task's null space.
+
+    Returns
+    -------
+    Robot
+        The arm of :data:`PANDA_URDF` from its base to ``panda_hand_tcp``.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> robot = hybrid.panda()
+    >>> robot.name, robot.n
+    ('panda', 7)
     """
     return Robot.from_urdf(PANDA_URDF, tip="panda_hand_tcp", locked=PANDA_FINGERS)

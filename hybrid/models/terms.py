@@ -22,12 +22,40 @@ from hybrid.validate import SINGULAR_TOL, check_singular_tol
 def arm_terms(arm: Arm | Robot, q, qdot, *, backend: str = "sympy") -> dict[str, np.ndarray]:
     """Kinematic and dynamic terms of ``arm`` at one state, from the generated C.
 
-    For the planar :class:`Arm`: ``r`` [m], ``J`` (2x2), ``Jdot_qdot`` [m/s^2], ``B`` (2x2)
-    [kg m^2], ``n`` [N m]. For a :class:`Robot` with ``n`` joints (``q``, ``qdot`` of shape
-    ``(n,)``, or ``(N, n)`` for N states in one native call, every output then gaining a
-    leading N axis): ``r`` (3) [m] and ``rotation`` (3x3) of the tip frame in base axes, the
-    frame Jacobian ``J`` (6 x n, linear rows first, base axes), ``Jdot_qdot`` (6, the classical
-    acceleration at ``q'' = 0``), ``B`` (n x n), ``n`` (n): Coriolis/centrifugal, gravity, viscosity.
+    Parameters
+    ----------
+    arm : Arm or Robot
+        The paper's planar arm (its parameters) or any robot.
+    q : array_like
+        Joint positions [rad or m]: one per joint, or for a :class:`Robot` ``(N, n)`` for N states in
+        one native call (every output then gaining a leading N axis).
+    qdot : array_like
+        Joint velocities [rad/s or m/s], of the shape of ``q``.
+    backend : str
+        The planar arm's committed unit: ``"sympy"`` (default) or ``"casadi"``.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        For the planar :class:`Arm`: ``r`` [m], ``J`` (2x2), ``Jdot_qdot`` [m/s^2], ``B`` (2x2)
+        [kg m^2], ``n`` [N m]. For a :class:`Robot` with ``n`` joints: ``r`` (3) [m] and ``rotation``
+        (3x3) of the tip frame in base axes, the frame Jacobian ``J`` (6 x n, linear rows first, base
+        axes), ``Jdot_qdot`` (6, the classical acceleration at ``q'' = 0``), ``B`` (n x n), ``n`` (n):
+        Coriolis/centrifugal, gravity, viscosity.
+
+    Raises
+    ------
+    HybridError
+        ``arm`` is neither, or a state of the wrong size or not finite.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> terms = hybrid.arm_terms(hybrid.paper_arm(), [0.0, 1.5708], [0.0, 0.0])
+    >>> sorted(terms)
+    ['B', 'J', 'Jdot_qdot', 'n', 'r']
+    >>> terms["r"].round(4).tolist()
+    [0.45, 0.32]
     """
     if isinstance(arm, Robot):
         return robot_terms(arm, q, qdot)
@@ -43,13 +71,49 @@ def operational_space(arm: Arm | Robot, q, qdot, *, backend: str = "sympy", sing
                       coordinates: str = "twist"):
     """Khatib's operational-space model.
 
-    Planar :class:`Arm`: ``(B_o, n_o)``, ``B_o(r)`` [kg] (2x2) and ``n_o(r, r')`` [N].
-    :class:`Robot` (6 or more joints): an :class:`OperationalSpace`. With
-    ``coordinates="twist"`` (default), ``B_o = Lambda = (J B^-1 J^T)^-1`` and ``n_o = Jbar^T n -
+    With ``coordinates="twist"`` (default), ``B_o = Lambda = (J B^-1 J^T)^-1`` and ``n_o = Jbar^T n -
     Lambda J' q'`` for the twist ``v = (p', w)``, base axes: ``Lambda v' + n_o = F + F_c``. With
     ``coordinates="euler_zyx"``, the paper's ``r = (p, phi)`` with ZYX Euler angles:
     ``B_o(r) = T^T Lambda T``, ``n_o(r, r') = T^T (Lambda T' r' + n_o,twist)``, ``T = diag(I, T_A)``
     and ``T'``, so that ``B_o r'' + n_o = T^T (F + F_c)``.
+
+    Parameters
+    ----------
+    arm : Arm or Robot
+        The paper's planar arm (its parameters), or a robot of 6 joints or more.
+    q : array_like
+        Joint positions [rad or m], one per joint.
+    qdot : array_like
+        Joint velocities [rad/s or m/s], one per joint.
+    backend : str
+        The planar arm's committed unit: ``"sympy"`` (default) or ``"casadi"``.
+    singular_tol : float
+        The smallest distance from singularity accepted.
+    coordinates : str
+        A robot's coordinates: ``"twist"`` (default) or ``"euler_zyx"``.
+
+    Returns
+    -------
+    tuple of numpy.ndarray or OperationalSpace
+        Planar :class:`Arm`: ``(B_o, n_o)``, ``B_o(r)`` [kg] (2x2) and ``n_o(r, r')`` [N].
+        :class:`Robot`: an :class:`OperationalSpace`.
+
+    Raises
+    ------
+    SingularConfigurationError
+        The arm is at (or too near) a singularity.
+    HybridError
+        A robot of fewer than 6 joints, or unknown ``coordinates``.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> B_o, n_o = hybrid.operational_space(hybrid.paper_arm(), [0.0, 1.5708], [0.0, 0.0])
+    >>> B_o.shape, n_o.shape
+    ((2, 2), (2,))
+    >>> model = hybrid.operational_space(hybrid.ur5(), [0.0, -1.5, 1.5, 0.0, 1.5, 0.0], [0.0] * 6)
+    >>> model.coordinates, model.B_o.shape
+    ('twist', (6, 6))
     """
     if isinstance(arm, Robot):
         return robot_operational_space(arm, q, qdot, singular_tol, coordinates)
@@ -64,8 +128,26 @@ def operational_space(arm: Arm | Robot, q, qdot, *, backend: str = "sympy", sing
 class OperationalSpace:
     """A robot's operational-space model at one state (see :func:`operational_space`).
 
-    ``B_o`` (6x6) and ``n_o`` (6); in Euler coordinates also ``r = (p, alpha, beta, gamma)``,
-    ``rdot``, ``T`` and ``Tdot`` (6x6, ``v = T r'``).
+    Parameters
+    ----------
+    coordinates : str
+        ``"twist"`` or ``"euler_zyx"``.
+    B_o : numpy.ndarray
+        The operational-space inertia (6 x 6).
+    n_o : numpy.ndarray
+        The operational-space forces (6).
+    r, rdot : numpy.ndarray or None
+        In Euler coordinates, the pose ``r = (p, alpha, beta, gamma)`` and its rate.
+    T, Tdot : numpy.ndarray or None
+        In Euler coordinates, ``T`` (6 x 6, ``v = T r'``) and its rate.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> model = hybrid.operational_space(hybrid.ur5(), [0.0, -1.5, 1.5, 0.0, 1.5, 0.0], [0.0] * 6,
+    ...                                  coordinates="euler_zyx")
+    >>> type(model).__name__, model.coordinates, model.T.shape
+    ('OperationalSpace', 'euler_zyx', (6, 6))
     """
 
     coordinates: str

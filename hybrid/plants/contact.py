@@ -17,28 +17,47 @@ class Sensor:
     """The plant's elastic force sensor at the arm tip: a tip mass on an isotropic spring-damper
     (conventions §5, §10), and the signal it gives the controller (conventions §14).
 
+    With every signal option off (the defaults) the controller gets the spring-damper's force itself,
+    bit for bit.
+
     Parameters
     ----------
-    mass, stiffness, damping : the tip mass ``m_s`` [kg], the spring ``K_s`` [N/m] and damper
-        ``D_s`` [N s/m] between it and the arm tip; the sensor measures the spring-damper's force.
-    force_noise, moment_noise : the standard deviations [N] and [N m] of white Gaussian noise added
-        to each force and each moment component of every reading (one draw per control sample); 0:
-        none.
-    bias : a constant offset of the reading ``(f_x, f_y, f_z, m_x, m_y, m_z)`` [N, N m], base axes
-        (with an experiment's ``wrench_sensor`` the true sensor's bias is that sensor's own, in its
-        axes, and this stays 0).
-    bandwidth_hz : the corner frequency [Hz] of a first-order lag on the reading, discretised at the
-        sample time (below its Nyquist frequency); None: no lag.
-    delay_samples : the reading reaches the controller this many control samples late (a whole
-        number >= 0).
-    seed : the noise's seed: the same seed, the same noise, run after run.
-    dropout_at, dropout_duration : [s] the reading the controller gets is NaN from ``dropout_at`` for
-        ``dropout_duration`` (a dropped sensor, a cut cable), samples the controller refuses: its fault
-        reaction acts (:mod:`hybrid.control.fault`), and the run applies the torque each faulted
-        sample's error carries, as a real arm's loop does. ``dropout_duration`` 0 (the default): none.
+    mass, stiffness, damping : float
+        The tip mass ``m_s`` [kg], the spring ``K_s`` [N/m] and damper ``D_s`` [N s/m] between it and
+        the arm tip; the sensor measures the spring-damper's force.
+    force_noise, moment_noise : float
+        The standard deviations [N] and [N m] of white Gaussian noise added to each force and each
+        moment component of every reading (one draw per control sample); 0: none.
+    bias : tuple of float
+        A constant offset of the reading ``(f_x, f_y, f_z, m_x, m_y, m_z)`` [N, N m], base axes (with an
+        experiment's ``wrench_sensor`` the true sensor's bias is that sensor's own, in its axes, and
+        this stays 0).
+    bandwidth_hz : float or None
+        The corner frequency [Hz] of a first-order lag on the reading, discretised at the sample time
+        (below its Nyquist frequency); None: no lag.
+    delay_samples : int
+        The reading reaches the controller this many control samples late (a whole number >= 0).
+    seed : int
+        The noise's seed: the same seed, the same noise, run after run.
+    dropout_at, dropout_duration : float
+        [s] the reading the controller gets is NaN from ``dropout_at`` for ``dropout_duration`` (a
+        dropped sensor, a cut cable), samples the controller refuses: its fault reaction acts
+        (:mod:`hybrid.control.fault`), and the run applies the torque each faulted sample's error
+        carries, as a real arm's loop does. ``dropout_duration`` 0 (the default): none.
 
-    With every signal option off (the defaults) the controller gets the spring-damper's force itself,
-    as before these options existed, bit for bit.
+    Raises
+    ------
+    HybridError
+        A value out of its range (a mass or stiffness not positive, a negative noise, a delay not a
+        whole number).
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> noisy = hybrid.Sensor(force_noise=0.2, delay_samples=1)
+    >>> noisy.ideal, hybrid.Sensor().ideal
+    (False, True)
+    >>> experiment = hybrid.paper_experiment(sensor=noisy)
     """
 
     mass: float = 0.025       # m_s [kg]
@@ -100,7 +119,18 @@ class Sensor:
         return self.clean and not self.drops_out
 
     def dropped(self, t: float) -> bool:
-        """Whether the reading at ``t`` [s] is lost (``dropout_at``, ``dropout_duration``)."""
+        """Whether the reading at ``t`` is lost (``dropout_at``, ``dropout_duration``).
+
+        Parameters
+        ----------
+        t : float
+            The time [s].
+
+        Returns
+        -------
+        bool
+            True within the dropout.
+        """
         return self.dropout_at <= t < self.dropout_at + self.dropout_duration
 
     @property
@@ -109,7 +139,18 @@ class Sensor:
         return self.dropout_duration > 0
 
     def check_sampling(self, sample_time: float) -> None:
-        """Refuse a lag whose corner frequency is at or above the Nyquist frequency of ``sample_time`` [s]."""
+        """Refuse a lag whose corner frequency is at or above the Nyquist frequency of ``sample_time``.
+
+        Parameters
+        ----------
+        sample_time : float
+            The controller's sample time [s].
+
+        Raises
+        ------
+        HybridError
+            ``bandwidth_hz`` is at or above ``1 / (2 sample_time)``.
+        """
         if self.bandwidth_hz is not None and self.bandwidth_hz >= 0.5 / sample_time:
             raise HybridError(f"Sensor bandwidth_hz = {self.bandwidth_hz:g} Hz is at or above the Nyquist frequency "
                               f"{0.5 / sample_time:g} Hz of the sample time {sample_time:g} s; give a bandwidth "
@@ -134,7 +175,32 @@ def _numbers(name: str, value, size: int, what: str) -> tuple[float, ...]:
 
 @dataclass(frozen=True)
 class Contact:
-    """Rigid surface as a unilateral penalty ``N = max(0, k_e delta + d_e delta')``, Coulomb friction."""
+    """Rigid surface as a unilateral penalty ``N = max(0, k_e delta + d_e delta')``, Coulomb friction.
+
+    Parameters
+    ----------
+    stiffness : float
+        ``k_e`` [N/m], > 0.
+    damping : float
+        ``d_e`` [N s/m], >= 0.
+    friction : float
+        The Coulomb coefficient ``gamma``, >= 0.
+    friction_smoothing : float
+        ``v_eps`` of ``tanh(v_t / v_eps)`` [m/s], > 0.
+
+    Raises
+    ------
+    HybridError
+        A value out of its range, or not finite.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> slippery = hybrid.Contact(friction=0.05)
+    >>> slippery.stiffness, slippery.friction
+    (100000.0, 0.05)
+    >>> experiment = hybrid.paper_experiment(contact=slippery)
+    """
 
     stiffness: float = 1e5        # k_e [N/m]
     damping: float = 50.0         # d_e [N s/m]

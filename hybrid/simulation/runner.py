@@ -28,8 +28,21 @@ from hybrid.validate import shown
 class SimulationError(HybridError):
     """The simulation cannot go on (singular pose, non-finite state); says when and where.
 
-    ``time`` [s] is when it stopped; ``partial`` holds the run up to then (a
-    :class:`SimulationResult` without metrics), to see how it got there.
+    Parameters
+    ----------
+    message : str
+        What happened, when and where.
+    time : float or None
+        When the run stopped [s] (kept as ``time``).
+    partial : SimulationResult or None
+        The run up to then, without metrics, to see how it got there (kept as ``partial``).
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> error = hybrid.SimulationError("the arm reached a singular pose at t = 0.5 s", time=0.5)
+    >>> error.time, error.partial is None, isinstance(error, hybrid.HybridError)
+    (0.5, True, True)
     """
 
     def __init__(self, message: str, time: float | None = None, partial: SimulationResult | None = None):
@@ -45,11 +58,46 @@ class SimulationError(HybridError):
 
 def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> SimulationResult:
     """Run the experiment ``exp``: its controller sampled every ``sample_time`` under zero-order hold,
-    its plant advanced by RK4 every ``integration_step``. ``plant`` names one of :data:`hybrid.plants.registry.PLANTS`:
-    ``"generated"`` (the experiment's own: the paper's arm in closed form, else its rigid-body plant)
-    or ``"mujoco"`` (MuJoCo reading the arm's URDF, :mod:`hybrid.plants.mujoco`). With
-    ``compiled=False`` the Python runner runs it even where the compiled loop could (the reference
-    that loop is tested against; equal within rounding)."""
+    its plant advanced by RK4 every ``integration_step``.
+
+    Parameters
+    ----------
+    exp : Experiment
+        The experiment to run (e.g. :func:`hybrid.paper_experiment`).
+    plant : str
+        One of :data:`hybrid.plants.registry.PLANTS`: ``"generated"`` (default; the experiment's own:
+        the paper's arm in closed form, else its rigid-body plant) or ``"mujoco"`` (MuJoCo reading the
+        arm's URDF, :mod:`hybrid.plants.mujoco`).
+    compiled : bool
+        False: the Python runner runs it even where the compiled loop could (the reference that loop
+        is tested against; equal within rounding).
+
+    Returns
+    -------
+    SimulationResult
+        The run's signals, sampled at every integration step, and its metrics.
+
+    Raises
+    ------
+    HybridError
+        ``exp`` is not an experiment, or ``plant`` is not a plant's name.
+    SimulationError
+        The run cannot go on (a singular pose, a non-finite state); it carries the run up to then.
+
+    Warns
+    -----
+    JointLimitWarning
+        The run left the robot's joint limits.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> result = hybrid.simulate(hybrid.paper_experiment(duration=0.05))
+    >>> float(result.t[-1])
+    0.05
+    >>> result.metrics["contact_losses"]
+    0
+    """
     if not isinstance(exp, Experiment):
         raise HybridError(f"simulate() takes an experiment (see hybrid.paper_experiment() and "
                           f"hybrid.tracing_experiment()), got {type(exp).__name__}")

@@ -94,6 +94,7 @@ ESTIMATE = ("n_x", "n_y", "n_z", "ndot_x", "ndot_y", "ndot_z", "F_x", "F_y", "F_
 #: a wrench's six numbers: force, then moment
 WRENCH = ("f_x", "f_y", "f_z", "m_x", "m_y", "m_z")
 
+#: the control step's interface: its inputs (arguments, run-time parameters, state) and outputs, in argument order
 CONTROLLER_STEP = Interface(
     "controller_step",
     inputs=(

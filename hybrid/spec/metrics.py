@@ -28,6 +28,7 @@ class Metric:
         return f"{self.label} [{self.unit}]"
 
 
+#: the built-in metrics of a run, in order (the peak torques, one per joint, follow them)
 METRICS = (
     Metric("force_overshoot_N", "N", "force overshoot after the force step",
            "the normal force's peak past the force step's value, signed by the step"),

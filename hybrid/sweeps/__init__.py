@@ -72,23 +72,58 @@ def sweep(base, parameters: Mapping, *, samples: int | None = None, seed: int = 
           force: bool = False, progress: bool = False, connect_timeout: float = CONNECT_TIMEOUT):
     """Run ``base`` (an experiment) at every point of ``parameters``; one row of metrics per run.
 
+    The number of runs is checked against the machine's memory before any is made.
+
     Parameters
     ----------
-    base : :class:`hybrid.Experiment`
+    base : Experiment
         What every run starts from, e.g. ``hybrid.paper_experiment()``.
-    parameters : ``{setting name: values}`` (a mapping): a list (a full grid over the lists) or a
-        distribution (:class:`Uniform`, :class:`LogUniform`, :class:`Normal`, drawn ``samples`` times).
-        Names are the experiment's fields, the gains (``KPf``), ``F_d``/``v_d``, or dotted paths
+    parameters : Mapping
+        ``{setting name: values}``: a list (a full grid over the lists) or a distribution
+        (:class:`Uniform`, :class:`LogUniform`, :class:`Normal`, drawn ``samples`` times). Names are
+        the experiment's fields, the gains (``KPf``), ``F_d``/``v_d``, or dotted paths
         (``"contact.friction"``, ``"gains.KPf"``, ``"force_reference.after"``).
-    samples, seed : random draws instead of the grid, repeatable by ``seed``.
-    engine : ``"local"`` (processes on this machine; ``workers``, default every core) or ``"dask"``
-        (``client``: a ``dask.distributed.Client`` or a scheduler address; default a ``LocalCluster``).
-    out : a folder for incremental results and resuming (see the module docstring); with ``csv`` also
-        ``results.csv``. ``force`` starts a different sweep afresh in a folder that holds one, or
-        files of its names without its ``sweep.json``, and runs again the parts that are not its own.
-    connect_timeout : how long [s] to wait for a Dask scheduler (default :data:`CONNECT_TIMEOUT`).
+    samples : int or None
+        Random draws instead of the grid.
+    seed : int
+        The draws' seed: the same seed, the same draws.
+    engine : str
+        ``"local"`` (processes on this machine) or ``"dask"``.
+    client : object
+        For ``"dask"``, a ``dask.distributed.Client`` or a scheduler address; default a
+        ``LocalCluster``.
+    out : str or pathlib.Path or None
+        A folder for incremental results and resuming (see the module docstring).
+    workers : int or None
+        For ``"local"``, the processes (default every core).
+    chunk_size : int or None
+        Runs per task (default: about a quarter of each worker's share of the runs left).
+    csv : bool
+        With ``out``, also write ``results.csv``.
+    force : bool
+        Start a different sweep afresh in a folder that holds one, or files of its names without its
+        ``sweep.json``, and run again the parts that are not its own.
+    progress : bool
+        Report the progress on standard error.
+    connect_timeout : float
+        How long [s] to wait for a Dask scheduler (default :data:`CONNECT_TIMEOUT`).
 
-    The number of runs is checked against the machine's memory before any is made.
+    Returns
+    -------
+    pandas.DataFrame
+        One row per run: ``run``, the parameters, every metric, ``status`` and ``error``.
+
+    Raises
+    ------
+    HybridError
+        A setting or parameter refused, an unknown engine, or more runs than the memory holds.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> rows = hybrid.sweep(hybrid.paper_experiment(duration=0.05), {"KPf": [1.0, 2.0]}, workers=1)
+    >>> rows["KPf"].tolist(), rows["status"].tolist()
+    ([1.0, 2.0], ['ok', 'ok'])
     """
     if not isinstance(engine, str) or engine not in ENGINES:
         raise HybridError(f"engine = {shown(engine)}; choose one of {', '.join(ENGINES)}")
