@@ -187,12 +187,19 @@ class PathTask:
 
     def table(self, surface) -> tuple[np.ndarray, np.ndarray]:
         """The follower's table (one row of :data:`~hybrid.spec.path_follow.PATH_TABLE` per node) and settings
-        (:data:`~hybrid.spec.path_follow.PATH_SETTINGS`) on ``surface`` (the surface the controller is told).
+        (:data:`~hybrid.spec.path_follow.PATH_SETTINGS`) on ``surface``.
+
+        Parameters
+        ----------
+        surface : Surface
+            The surface the controller is told (the path's normals are its own, or this surface's).
 
         Returns
         -------
         table : ndarray, shape (rows, 13)
+            One node per row: arc length, point, tangent, normal, geodesic curvature, speed, force.
         settings : ndarray, shape (8,)
+            Rows, closed, length, start, distance to travel, start speed, acceleration, cross-track gain.
         """
         length, closed = self._shape()
         s = self._nodes(length)
