@@ -64,6 +64,7 @@ from hybrid.spec.interfaces import (
     TIMING_STATUSES,
     Dims,
 )
+from hybrid.spec.path_follow import PATH_OUTPUT, PATH_SETTINGS, PATH_STATE
 from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from .emit import GENERATOR_VERSION, Unit, _casadi_cores, comment_safe
@@ -150,7 +151,7 @@ def parameter_checks(dims: Dims, sample_time: str = "c->sample_time") -> list[di
 
 
 def build_standalone_controller(step: Kernel, stop: Kernel, prefix: str, what: str, info: dict, values: dict,
-                                stem: str | None = None) -> Unit:
+                                stem: str | None = None, path: dict | None = None) -> Unit:
     """C source, header and manifest of the standalone controller around ``step``, with ``stop`` (the
     :data:`~hybrid.spec.controller_step.SAFE_STOP` kernel, ``codegen.safe_stop``) its fault reaction:
     its symbols start ``prefix``, its files ``stem`` (default ``prefix``).
@@ -159,6 +160,11 @@ def build_standalone_controller(step: Kernel, stop: Kernel, prefix: str, what: s
     (a sequence of numbers), ``timing_tolerance`` and ``singular_tol``. The C is
     ``templates/standalone_controller.h.j2`` and ``.c.j2``'s; their context is the struct's fields by
     section, the statuses and the step kernel's arguments.
+
+    ``path``, for a path task (:mod:`hybrid.spec.path_follow`): ``measure`` (the ``task_measurement`` kernel,
+    whose tip position the follower is given), ``axes`` (the positions of ``t1``, ``t2`` and ``n`` among the
+    task axes), ``table`` and ``settings`` (the generated path's numbers); the C then includes the follower's
+    header (``hybrid_path.h``, shipped beside it) and its struct carries the path.
     """
     declared = [p.name for p in (*CONTROLLER_STEP.inputs, *CONTROLLER_STEP.outputs)]
     if [a.name for a in (*step.inputs, *step.outputs)] != declared:
@@ -198,10 +204,22 @@ def build_standalone_controller(step: Kernel, stop: Kernel, prefix: str, what: s
                "statuses": STATUSES, "nq": nq, "m": m, **sections,
                "fault_state": array_field(prefix, stop_state.name, stop_state.size, stop_state.unit, stop_state.names,
                                           SAFE_STOP.port("fault_state").doc)}
+    kernels = (step, stop)
+    if path is not None:
+        measure = path["measure"]
+        kernels += (measure,)
+        t1, t2, n = path["axes"]
+        context["path"] = {"measure": measure, "measure_outs": measure.core_outputs(), "t1": t1, "t2": t2, "n": n,
+                           "measure_call": {"q": "q", "qd": "qd", "Fc": "no_wrench"},
+                           "sizes": {"settings": len(PATH_SETTINGS), "state": len(PATH_STATE), "out": len(PATH_OUTPUT)},
+                           "table": [_number(float(x)) for x in path["table"]],
+                           "settings": [_number(float(x)) for x in path["settings"]]}
+    else:
+        context["path"] = None
     header = render("standalone_controller.h.j2", **context, wrench=info.get("wrench", _WRENCH),
                     tau_unit=_unit_text(out["tau"].unit))
     source = render("standalone_controller.c.j2", **context, tools=f"CasADi {ca.__version__}",
-                    cores=_casadi_cores(prefix, (step, stop)), step=step, outs=step.core_outputs(), packed=packed,
+                    cores=_casadi_cores(prefix, kernels), step=step, outs=step.core_outputs(), packed=packed,
                     call=_CALL, state_next=STATE_NEXT, held=HELD_STATUSES, tau=out["tau"], stop=stop,
                     served=[s for s in TIMING_STATUSES if s not in HELD_STATUSES],
                     fault=next(f for f in configuration if f["name"] == "fault"),

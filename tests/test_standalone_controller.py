@@ -32,7 +32,7 @@ class CController:
         ffi = cffi.FFI()
         body = header.split("*/", 1)[1]  # after the stamp
         body = "\n".join(line for line in body.splitlines()
-                         if not re.match(r"\s*#(ifndef|endif|define \w+_H\b)", line))
+                         if not re.match(r"\s*#(ifndef|endif|define \w+_H\b|include)", line))
         ffi.cdef(re.sub(r"/\*.*?\*/", "", body, flags=re.S))
         self.ffi, self.lib, self.prefix = ffi, ffi.dlopen(str(lib)), prefix
         self.c = ffi.new(f"{prefix}_controller *")

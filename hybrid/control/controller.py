@@ -13,7 +13,7 @@ from math import isfinite as _isfinite
 
 import numpy as np
 
-from hybrid.control.fault import FaultMonitor, FaultReaction, finite_time, time_passed
+from hybrid.control.fault import FaultMonitor, FaultReaction, finite_time, time_passed, timing_status
 from hybrid.control.loops import Gains
 from hybrid.control.measurement import Measurement, padded_vector, wrench_of
 from hybrid.control.options import ContactLoss, Posture, call_user, check_posture
@@ -382,7 +382,8 @@ class Controller:
         between samples), and ``<name>_controller_step(&c, t, q, qd, wrench, tau)`` runs one sample
         (``wrench``: six numbers, force and moment on the robot at the tip in base axes) and returns a
         status, where this class raises (see ``timing_tolerance``). References given as code are the
-        caller's: it writes them into ``c.yd_extra``, ``c.yd_rate`` and ``c.target`` each sample. C99,
+        caller's: it writes them into ``c.yd_extra``, ``c.yd_rate`` and ``c.target`` each sample; a path
+        task's follower writes them itself (``hybrid_path.h``, written beside). C99,
         no allocation, no globals, no I/O, reentrant; the same bytes for the same controller. Files in
         ``out`` with other content are refused unless ``force``."""
         return generate_controller(self, out, name, force)
@@ -522,7 +523,7 @@ class Controller:
             if refused is not None:  # nothing changes; the torque last written is the safe one
                 raise ParameterError(*refused, self._last[:-1] * self._last[-1])
             self._checked_settings = settings
-        clock, timing = self._clock, self._timing(t)
+        clock, timing = self._clock, timing_status(t, self._clock, self.sample_time, self.timing_tolerance)
         if self._binding is None:
             self._native()
         # late or early: the law's torque, the integrals as they were (the filter and the estimate advance);
@@ -559,23 +560,16 @@ class Controller:
             self._bind()
 
     @property
+    def path_references(self) -> PathReferences | None:
+        """The path task's follower (``.follower``: its table, settings and state) and where ``t1``, ``t2`` and
+        ``n`` are among the task axes (``.positions``); None without a path task."""
+        return self._path_task
+
+    @property
     def path_task(self) -> dict[str, float] | None:
         """The path task's last sample (the follower's outputs by name: progress ``s``, the path's point, the
         cross-track error, the references), None without a path task."""
         return None if self._path_task is None else self._path_task.last
-
-    def _timing(self, t: float) -> str | None:
-        """The timing status of a sample at ``t`` (None: on time, or no check, or no last sample)."""
-        if self._clock is None or self.timing_tolerance is None:
-            return None
-        dt, T, tol = t - self._clock, self.sample_time, self.timing_tolerance
-        if dt < 0:
-            return "SAMPLE_BACKWARDS"
-        if dt == 0:
-            return "SAMPLE_REPEATED"
-        if dt < T * (1 - tol):
-            return "SAMPLE_EARLY"
-        return "SAMPLE_LATE" if dt > T * (1 + tol) else None
 
     def _tick(self, t: float) -> None:
         """The sample clock after a sample at ``t``: it follows every sample that moves forward."""

@@ -196,6 +196,21 @@ def finite_time(t) -> float | None:
     return t if isfinite(t) else None
 
 
+def timing_status(t: float, clock: float | None, T: float, tolerance: float | None) -> str | None:
+    """The timing status of a sample at ``t`` after the last at ``clock`` (None: on time, or no check,
+    or no last sample) for the sample period ``T`` within the fraction ``tolerance``."""
+    if clock is None or tolerance is None:
+        return None
+    dt = t - clock
+    if dt < 0:
+        return "SAMPLE_BACKWARDS"
+    if dt == 0:
+        return "SAMPLE_REPEATED"
+    if dt < T * (1 - tolerance):
+        return "SAMPLE_EARLY"
+    return "SAMPLE_LATE" if dt > T * (1 + tolerance) else None
+
+
 def time_passed(t, clock: float | None) -> bool:
     """Whether time passed at a sample at ``t`` since the last served at ``clock``: not at a ``t`` at or
     before it (one that is not a finite number cannot tell)."""

@@ -329,7 +329,7 @@ class PathReferences:
             raise HybridError("path_task puts the loops in the frame at the tip, along the path: leave frame, "
                               "position_error and path at their defaults")
         self.follower = PathFollower(task, surface)
-        self._t1, self._t2, self._n = axes.index(0), axes.index(1), axes.index(2)
+        self._t1, self._t2, self._n = self.positions = axes.index(0), axes.index(1), axes.index(2)
 
     def write(self, p, e: np.ndarray, extra: np.ndarray, rate: np.ndarray) -> np.ndarray | None:
         """The references for the tip at ``p`` [m] into ``extra`` and ``rate``; the task frame's direction

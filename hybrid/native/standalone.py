@@ -51,10 +51,8 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
     """The standalone C of the controller ``ctrl`` by file name: its symbols start ``prefix``, its files
     ``stem`` (default ``prefix``); generated once per key (cached)."""
     stem = stem or prefix
-    if ctrl.path_task is not None:
-        raise HybridError("generate: the standalone C does not carry a path task's follower yet; generate the "
-                          "controller without path_task (its C takes e, yd_extra and yd_rate from the caller, which "
-                          "may run generated/hybrid_path.h's hybrid_path_follow), or run it in Python")
+    path = ctrl.path_references  # a path task's: its table and settings are the generated path's
+    follower = None if path is None else path.follower
     variant = ctrl.step_variant()
     values = {k: [float(x) for x in v] for k, v in ctrl.step_inputs().items()}
     values |= {"timing_tolerance": -1.0 if ctrl.timing_tolerance is None else ctrl.timing_tolerance,
@@ -69,16 +67,26 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
                        "field's mount, sign, tool, bias and filter turn it into the contact wrench)"
                        if compiled_in["wrench_sensor"] else
                        "the force and moment on the robot at the tip frame's origin, base axes [N, N m]")}
+    if follower is not None:
+        info["path_task"] = {"axes": list(path.positions), "rows": len(follower.table)}
     key = {"chain": units.chain_key(variant["chain"]), "surface": spec.key(), **info, "values": values,
            "generator": generator.fingerprint(), "prefix": prefix, **({"stem": stem} if stem != prefix else {})}
+    if follower is not None:
+        key["path"] = {"table": cache.digest(follower.table.tobytes()), "settings": follower.settings.tolist()}
 
     def make() -> dict[str, str]:
         api = generator.api()
-        step = {k.name: k for k in api.controller_kernels(variant["chain"], spec, axes, **compiled_in)}[variant["step"]]
+        kernels = {k.name: k for k in api.controller_kernels(variant["chain"], spec, axes, **compiled_in)}
         stop = api.safe_stop_kernel(variant["chain"])
         what = (f"the hybrid force/velocity controller ({ctrl.scheme.name} scheme) of the {ctrl.robot.n}-joint arm "
                 f"'{variant['name']}' on a {spec.kind}, task axes {', '.join(ctrl.axis_names)}")
-        return api.build_standalone_controller(step, stop, prefix, what, info, values, stem).files
+        task = None if follower is None else {"measure": kernels["task_measurement"], "axes": path.positions,
+                                              "table": follower.table.ravel(), "settings": follower.settings}
+        files = api.build_standalone_controller(kernels[variant["step"]], stop, prefix, what, info, values, stem,
+                                                task).files
+        if follower is not None:  # the follower's header, beside the controller that includes it
+            files[api.PATH_HEADER] = api.shared_headers()[api.PATH_HEADER]
+        return files
 
     return cache.generated_unit(stem, key, make)[1]
 
