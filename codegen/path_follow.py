@@ -31,4 +31,5 @@ def path_header() -> str:
                 spec.PATH_STATE),
                (_Group("OUT", "what a sample gives"), spec.PATH_OUTPUT)]
     return render("hybrid_path.h.j2", layouts=layouts, statuses=list(spec.PATH_STATUSES.items()),
+                  phases=spec.PATH_PHASES,
                   done_tol=repr(spec.PATH_DONE_TOL), newton_steps=spec.PATH_NEWTON_STEPS)

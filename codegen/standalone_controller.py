@@ -49,6 +49,7 @@ import casadi as ca
 from hybrid.spec.controller_step import (
     CONTROLLER_STEP,
     FAULT_DOCS,
+    LOOP_GAINS,
     OPTION_DOCS,
     SAFE_STOP,
     SETTING_CHECKS,
@@ -162,9 +163,11 @@ def build_standalone_controller(step: Kernel, stop: Kernel, prefix: str, what: s
     section, the statuses and the step kernel's arguments.
 
     ``path``, for a path task (:mod:`hybrid.spec.path_follow`): ``measure`` (the ``task_measurement`` kernel,
-    whose tip position the follower is given), ``axes`` (the positions of ``t1``, ``t2`` and ``n`` among the
-    task axes), ``table`` and ``settings`` (the generated path's numbers); the C then includes the follower's
-    header (``hybrid_path.h``, shipped beside it) and its struct carries the path.
+    whose tip position and contact force the follower is given), ``axes`` (the positions of ``t1``, ``t2`` and
+    ``n`` among the task axes), ``table`` and ``settings`` (the generated path's numbers), ``retreat_gains``
+    (the normal axis's loop gains in the retreat); the C then includes the follower's header
+    (``hybrid_path.h``, shipped beside it) and its struct carries the path. ``values`` are the
+    controller's at the path's start.
     """
     declared = [p.name for p in (*CONTROLLER_STEP.inputs, *CONTROLLER_STEP.outputs)]
     if [a.name for a in (*step.inputs, *step.outputs)] != declared:
@@ -210,7 +213,12 @@ def build_standalone_controller(step: Kernel, stop: Kernel, prefix: str, what: s
         kernels += (measure,)
         t1, t2, n = path["axes"]
         context["path"] = {"measure": measure, "measure_outs": measure.core_outputs(), "t1": t1, "t2": t2, "n": n,
-                           "measure_call": {"q": "q", "qd": "qd", "Fc": "no_wrench"},
+                           "measure_call": {"q": "q", "qd": "qd", "Fc": "wrench"},
+                           "gains_at": len(LOOP_GAINS) * n,
+                           "force_gains": [_number(x) for x in values["gains"][len(LOOP_GAINS) * n:
+                                                                             len(LOOP_GAINS) * (n + 1)]],
+                           "retreat_gains": [_number(float(x)) for x in path["retreat_gains"]],
+                           "start_e": [_number(x) for x in values["e"]],
                            "sizes": {"settings": len(PATH_SETTINGS), "state": len(PATH_STATE), "out": len(PATH_OUTPUT)},
                            "table": [_number(float(x)) for x in path["table"]],
                            "settings": [_number(float(x)) for x in path["settings"]]}

@@ -1,10 +1,10 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 350e705829b0dcd59d2829b97b2b4cc66b1e53bd59f44ff79f7c9ca704b81be3 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: aed2402bfb79faf7f73c99b6803569b438b69374a4c3769ab58b8ecc65918767 */
 #ifndef HYBRID_PATH_H
 #define HYBRID_PATH_H
 /* The path follower: a path on a surface as a table, followed from the tip's measured position.
    Standalone C99: no allocation, no globals, no I/O; reentrant (the state is the caller's).
 
-   Each sample: status = hybrid_path_follow(table, settings, state, p, out);
+   Each sample: status = hybrid_path_follow(table, settings, state, p, force, out);  (force: 3 numbers)
    then state = out[0 .. HYBRID_PATH_STATE_SIZE - 1] (the first outputs are the state after the sample), and
    out gives the task frame's direction e (HYBRID_PATH_OUT_E_X..Z) and the loops' references.
 
@@ -30,7 +30,7 @@
 #define HYBRID_PATH_TABLE_FORCE 12
 
 /* the follower's settings */
-#define HYBRID_PATH_SETTINGS_SIZE 8
+#define HYBRID_PATH_SETTINGS_SIZE 13
 #define HYBRID_PATH_SETTINGS_ROWS 0
 #define HYBRID_PATH_SETTINGS_CLOSED 1
 #define HYBRID_PATH_SETTINGS_LENGTH 2
@@ -39,42 +39,59 @@
 #define HYBRID_PATH_SETTINGS_SPEED_START 5
 #define HYBRID_PATH_SETTINGS_ACCELERATION 6
 #define HYBRID_PATH_SETTINGS_CROSS_TRACK_GAIN 7
+#define HYBRID_PATH_SETTINGS_TOUCH_FORCE 8
+#define HYBRID_PATH_SETTINGS_SAMPLE_TIME 9
+#define HYBRID_PATH_SETTINGS_UNLOAD_TIME 10
+#define HYBRID_PATH_SETTINGS_RETREAT_DISTANCE 11
+#define HYBRID_PATH_SETTINGS_RETREAT_SPEED 12
 
 /* the follower's state (the first outputs are the state after a sample) */
-#define HYBRID_PATH_STATE_SIZE 4
+#define HYBRID_PATH_STATE_SIZE 6
 #define HYBRID_PATH_STATE_S 0
 #define HYBRID_PATH_STATE_TRAVELLED 1
 #define HYBRID_PATH_STATE_ROW 2
 #define HYBRID_PATH_STATE_STARTED 3
+#define HYBRID_PATH_STATE_PHASE 4
+#define HYBRID_PATH_STATE_PHASE_TIME 5
 
 /* what a sample gives */
-#define HYBRID_PATH_OUT_SIZE 24
+#define HYBRID_PATH_OUT_SIZE 28
 #define HYBRID_PATH_OUT_S 0
 #define HYBRID_PATH_OUT_TRAVELLED 1
 #define HYBRID_PATH_OUT_ROW 2
 #define HYBRID_PATH_OUT_STARTED 3
-#define HYBRID_PATH_OUT_C_X 4
-#define HYBRID_PATH_OUT_C_Y 5
-#define HYBRID_PATH_OUT_C_Z 6
-#define HYBRID_PATH_OUT_T_X 7
-#define HYBRID_PATH_OUT_T_Y 8
-#define HYBRID_PATH_OUT_T_Z 9
-#define HYBRID_PATH_OUT_N_X 10
-#define HYBRID_PATH_OUT_N_Y 11
-#define HYBRID_PATH_OUT_N_Z 12
-#define HYBRID_PATH_OUT_E_X 13
-#define HYBRID_PATH_OUT_E_Y 14
-#define HYBRID_PATH_OUT_E_Z 15
-#define HYBRID_PATH_OUT_SPEED 16
-#define HYBRID_PATH_OUT_SPEED_RATE 17
-#define HYBRID_PATH_OUT_LATERAL_SPEED 18
-#define HYBRID_PATH_OUT_LATERAL_RATE 19
-#define HYBRID_PATH_OUT_FORCE 20
-#define HYBRID_PATH_OUT_CROSS_TRACK 21
-#define HYBRID_PATH_OUT_PATH_ERROR 22
-#define HYBRID_PATH_OUT_DONE 23
+#define HYBRID_PATH_OUT_PHASE 4
+#define HYBRID_PATH_OUT_PHASE_TIME 5
+#define HYBRID_PATH_OUT_C_X 6
+#define HYBRID_PATH_OUT_C_Y 7
+#define HYBRID_PATH_OUT_C_Z 8
+#define HYBRID_PATH_OUT_T_X 9
+#define HYBRID_PATH_OUT_T_Y 10
+#define HYBRID_PATH_OUT_T_Z 11
+#define HYBRID_PATH_OUT_N_X 12
+#define HYBRID_PATH_OUT_N_Y 13
+#define HYBRID_PATH_OUT_N_Z 14
+#define HYBRID_PATH_OUT_E_X 15
+#define HYBRID_PATH_OUT_E_Y 16
+#define HYBRID_PATH_OUT_E_Z 17
+#define HYBRID_PATH_OUT_SPEED 18
+#define HYBRID_PATH_OUT_SPEED_RATE 19
+#define HYBRID_PATH_OUT_LATERAL_SPEED 20
+#define HYBRID_PATH_OUT_LATERAL_RATE 21
+#define HYBRID_PATH_OUT_NORMAL_REFERENCE 22
+#define HYBRID_PATH_OUT_CROSS_TRACK 23
+#define HYBRID_PATH_OUT_PATH_ERROR 24
+#define HYBRID_PATH_OUT_HEIGHT 25
+#define HYBRID_PATH_OUT_DONE 26
+#define HYBRID_PATH_OUT_RETREAT 27
 
 #define HYBRID_PATH_COLUMNS HYBRID_PATH_TABLE_SIZE
+/* the phases (HYBRID_PATH_OUT_PHASE) */
+#define HYBRID_PATH_APPROACH 0
+#define HYBRID_PATH_FOLLOW 1
+#define HYBRID_PATH_UNLOAD 2
+#define HYBRID_PATH_RETREAT 3
+#define HYBRID_PATH_CLEAR 4
 #define HYBRID_PATH_OK 0
 #define HYBRID_PATH_INPUT_NONFINITE 1
 #define HYBRID_PATH_TABLE_INVALID 2
@@ -103,7 +120,13 @@ static inline int hybrid_path_settings_valid(const double *settings) {
         && isfinite(settings[HYBRID_PATH_SETTINGS_SPEED_START]) && settings[HYBRID_PATH_SETTINGS_SPEED_START] >= 0.0
         && isfinite(settings[HYBRID_PATH_SETTINGS_ACCELERATION]) && settings[HYBRID_PATH_SETTINGS_ACCELERATION] > 0.0
         && isfinite(settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_GAIN])
-        && settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_GAIN] >= 0.0;
+        && settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_GAIN] >= 0.0
+        && settings[HYBRID_PATH_SETTINGS_TOUCH_FORCE] < 1e300
+        && isfinite(settings[HYBRID_PATH_SETTINGS_SAMPLE_TIME]) && settings[HYBRID_PATH_SETTINGS_SAMPLE_TIME] > 0.0
+        && isfinite(settings[HYBRID_PATH_SETTINGS_UNLOAD_TIME]) && settings[HYBRID_PATH_SETTINGS_UNLOAD_TIME] >= 0.0
+        && isfinite(settings[HYBRID_PATH_SETTINGS_RETREAT_DISTANCE])
+        && settings[HYBRID_PATH_SETTINGS_RETREAT_DISTANCE] >= 0.0
+        && isfinite(settings[HYBRID_PATH_SETTINGS_RETREAT_SPEED]) && settings[HYBRID_PATH_SETTINGS_RETREAT_SPEED] >= 0.0;
 }
 
 /* 1: the whole table is finite, starts at arc length 0, grows strictly and ends at the length (a check for
@@ -168,33 +191,42 @@ static inline int hybrid_path_at(const double *table, long i, double s, double *
     return 1;
 }
 
-/* One sample: from the follower's state and the tip's position p [m, base axes], the outputs out
-   (HYBRID_PATH_OUT_*: the state after the sample first). Returns HYBRID_PATH_OK, or a status with out
-   unwritten: HYBRID_PATH_INPUT_NONFINITE (p or the state is not finite), HYBRID_PATH_TABLE_INVALID (the
-   settings, or the nodes the sample reads) */
-static inline int hybrid_path_follow(const double *table, const double *settings, const double *state, const double *p,
-                              double *out) {
+/* One sample: from the follower's state, the tip's position p [m, base axes] and the contact force on the
+   robot there (force, 3 numbers [N, base axes]: along n, positive pressing), the outputs out (HYBRID_PATH_OUT_*: the state
+   after the sample first). Returns HYBRID_PATH_OK, or a status with out unwritten: HYBRID_PATH_INPUT_NONFINITE
+   (p, the force or the state is not finite), HYBRID_PATH_TABLE_INVALID (the settings, or the nodes the sample
+   reads) */
+static inline int hybrid_path_follow(const double *table, const double *settings, const double *state,
+                                     const double *p, const double *force, double *out) {
     long rows, i;
-    int k, step, closed;
+    int k, step, closed, phase;
     double length, distance, s, travelled, c[3], t[3], n[3], e[3], r[3], u = 0.0, v, rate, a, d, rn, lateral;
-    double v_table, kappa_g, force, advance;
+    double v_table, kappa_g, normal, advance, phase_time, dt, touch, lateral_rate, retreat = 0.0, done;
     const double *na, *nb;
     if (!hybrid_path_settings_valid(settings)) return HYBRID_PATH_TABLE_INVALID;
     for (k = 0; k < 3; ++k)
         if (!isfinite(p[k])) return HYBRID_PATH_INPUT_NONFINITE;
     for (k = 0; k < HYBRID_PATH_STATE_SIZE; ++k)
         if (!isfinite(state[k])) return HYBRID_PATH_INPUT_NONFINITE;
+    for (k = 0; k < 3; ++k)
+        if (!isfinite(force[k])) return HYBRID_PATH_INPUT_NONFINITE;
     rows = (long)settings[HYBRID_PATH_SETTINGS_ROWS];
     closed = settings[HYBRID_PATH_SETTINGS_CLOSED] == 1.0;
     length = settings[HYBRID_PATH_SETTINGS_LENGTH];
     distance = settings[HYBRID_PATH_SETTINGS_DISTANCE];
     a = settings[HYBRID_PATH_SETTINGS_ACCELERATION];
+    dt = settings[HYBRID_PATH_SETTINGS_SAMPLE_TIME];
+    touch = settings[HYBRID_PATH_SETTINGS_TOUCH_FORCE];
     if (state[HYBRID_PATH_STATE_STARTED] == 1.0) {
         s = state[HYBRID_PATH_STATE_S];
         travelled = state[HYBRID_PATH_STATE_TRAVELLED];
+        phase = (int)fmax(fmin(state[HYBRID_PATH_STATE_PHASE], HYBRID_PATH_CLEAR), HYBRID_PATH_APPROACH);
+        phase_time = state[HYBRID_PATH_STATE_PHASE_TIME] + dt;
     } else {
         s = settings[HYBRID_PATH_SETTINGS_START];
         travelled = 0.0;
+        phase = HYBRID_PATH_APPROACH;
+        phase_time = 0.0;
     }
     if (s < 0.0) s = 0.0;
     if (s > length) s = length;
@@ -223,7 +255,7 @@ static inline int hybrid_path_follow(const double *table, const double *settings
     na = &HYBRID_PATH_AT(table, i, 0);
     nb = &HYBRID_PATH_AT(table, i + 1, 0);
     kappa_g = (1.0 - u) * na[HYBRID_PATH_TABLE_KAPPA_G] + u * nb[HYBRID_PATH_TABLE_KAPPA_G];
-    force = (1.0 - u) * na[HYBRID_PATH_TABLE_FORCE] + u * nb[HYBRID_PATH_TABLE_FORCE];
+    normal = (1.0 - u) * na[HYBRID_PATH_TABLE_FORCE] + u * nb[HYBRID_PATH_TABLE_FORCE];
     v_table = (1.0 - u) * na[HYBRID_PATH_TABLE_SPEED] + u * nb[HYBRID_PATH_TABLE_SPEED];
     /* e = n x t: the task frame's direction, so that t1 = e x n = t and t2 = n x t1 = e */
     e[0] = n[1] * t[2] - n[2] * t[1];
@@ -245,15 +277,46 @@ static inline int hybrid_path_follow(const double *table, const double *settings
     rn = hybrid_path_dot3(r, n);
     lateral = 0.0;
     for (k = 0; k < 3; ++k) lateral += (r[k] - rn * n[k]) * (r[k] - rn * n[k]);
-    out[HYBRID_PATH_OUT_DONE] = distance - travelled <= HYBRID_PATH_DONE_TOL;
-    if (out[HYBRID_PATH_OUT_DONE] == 1.0) {
+    lateral_rate = kappa_g * v * v;
+    done = distance - travelled <= HYBRID_PATH_DONE_TOL;
+    /* the phase: the touch starts the path, its end the release of the force, the release the retreat */
+    if (phase == HYBRID_PATH_APPROACH && hybrid_path_dot3(force, n) >= touch) {
+        phase = HYBRID_PATH_FOLLOW;
+        phase_time = 0.0;
+    }
+    if (phase == HYBRID_PATH_FOLLOW && done == 1.0 && settings[HYBRID_PATH_SETTINGS_RETREAT_DISTANCE] > 0.0) {
+        phase = HYBRID_PATH_UNLOAD;
+        phase_time = 0.0;
+    }
+    if (phase == HYBRID_PATH_UNLOAD && phase_time >= settings[HYBRID_PATH_SETTINGS_UNLOAD_TIME]) {
+        phase = HYBRID_PATH_RETREAT;
+        phase_time = 0.0;
+    }
+    if (phase == HYBRID_PATH_RETREAT && rn >= settings[HYBRID_PATH_SETTINGS_RETREAT_DISTANCE]) {
+        phase = HYBRID_PATH_CLEAR;
+        phase_time = 0.0;
+    }
+    if (phase != HYBRID_PATH_FOLLOW || done == 1.0) {
         v = 0.0;
         rate = 0.0;
+        lateral_rate = 0.0;
+    }
+    if (phase == HYBRID_PATH_UNLOAD) {
+        /* linearly from the path's force down to the touch force (at least 0) */
+        double floor_force = fmax(touch, 0.0), w = settings[HYBRID_PATH_SETTINGS_UNLOAD_TIME] > 0.0
+            ? fmax(1.0 - phase_time / settings[HYBRID_PATH_SETTINGS_UNLOAD_TIME], 0.0) : 0.0;
+        normal = floor_force + w * (normal - floor_force);
+    }
+    if (phase >= HYBRID_PATH_RETREAT) {
+        retreat = 1.0;
+        normal = phase == HYBRID_PATH_RETREAT ? settings[HYBRID_PATH_SETTINGS_RETREAT_SPEED] : 0.0;
     }
     out[HYBRID_PATH_OUT_S] = s;
     out[HYBRID_PATH_OUT_TRAVELLED] = travelled;
     out[HYBRID_PATH_OUT_ROW] = (double)i;
     out[HYBRID_PATH_OUT_STARTED] = 1.0;
+    out[HYBRID_PATH_OUT_PHASE] = (double)phase;
+    out[HYBRID_PATH_OUT_PHASE_TIME] = phase_time;
     for (k = 0; k < 3; ++k) {
         out[HYBRID_PATH_OUT_C_X + k] = c[k];
         out[HYBRID_PATH_OUT_T_X + k] = t[k];
@@ -263,10 +326,13 @@ static inline int hybrid_path_follow(const double *table, const double *settings
     out[HYBRID_PATH_OUT_SPEED] = v;
     out[HYBRID_PATH_OUT_SPEED_RATE] = rate;
     out[HYBRID_PATH_OUT_LATERAL_SPEED] = -settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_GAIN] * d;
-    out[HYBRID_PATH_OUT_LATERAL_RATE] = kappa_g * v * v;
-    out[HYBRID_PATH_OUT_FORCE] = force;
+    out[HYBRID_PATH_OUT_LATERAL_RATE] = lateral_rate;
+    out[HYBRID_PATH_OUT_NORMAL_REFERENCE] = normal;
     out[HYBRID_PATH_OUT_CROSS_TRACK] = d;
     out[HYBRID_PATH_OUT_PATH_ERROR] = sqrt(lateral);
+    out[HYBRID_PATH_OUT_HEIGHT] = rn;
+    out[HYBRID_PATH_OUT_DONE] = done;
+    out[HYBRID_PATH_OUT_RETREAT] = retreat;
     return HYBRID_PATH_OK;
 }
 
@@ -274,13 +340,13 @@ static inline int hybrid_path_follow(const double *table, const double *settings
    runtime's cffi module defines HYBRID_PATH_ENTRY_POINTS before it includes this header). */
 /* cdef-begin */
 int hybrid_path_follow_entry(const double *table, const double *settings, const double *state, const double *p,
-                             double *out);
+                             const double *force, double *out);
 int hybrid_path_table_entry(const double *table, const double *settings);
 /* cdef-end */
 #ifdef HYBRID_PATH_ENTRY_POINTS
 int hybrid_path_follow_entry(const double *table, const double *settings, const double *state, const double *p,
-                             double *out) {
-    return hybrid_path_follow(table, settings, state, p, out);
+                             const double *force, double *out) {
+    return hybrid_path_follow(table, settings, state, p, force, out);
 }
 int hybrid_path_table_entry(const double *table, const double *settings) {
     return hybrid_path_table_valid(table, settings);

@@ -14,7 +14,7 @@ import pytest
 import hybrid
 from hybrid.control.path_task import PathFollower
 from hybrid.geometry.paths import Path
-from hybrid.spec.path_follow import PATH_OUTPUT, PATH_SETTINGS, PATH_TABLE
+from hybrid.spec.path_follow import PATH_OUTPUT, PATH_PHASES, PATH_SETTINGS, PATH_TABLE
 
 PLANE = hybrid.Plane((0.4, 0.0, 0.1), (0.0, 0.6, 0.8))
 SPHERE = hybrid.Sphere((0.5, 0.0, 0.2), 0.15)
@@ -72,9 +72,9 @@ def test_the_follower_is_its_equations(path):
         n, t = path.normal_at(s), path.tangent_at(s)
         side = np.cross(n, t)
         tip = path.point_at(s) + 0.0007 * side + 0.0004 * n
-        follower.state[:] = [s + 0.002, 0.0, 0.0, 1.0]  # started, 2 mm ahead: Newton brings it back
+        follower.state[:] = [s + 0.002, 0.0, 0.0, 1.0, 1.0, 0.0]  # following, 2 mm ahead: Newton brings it back
         follower.state[1] = s + 0.002 - settings[PATH_SETTINGS.index("start")]
-        out = follower.follow(tip)
+        out = follower.follow(tip, 10.0 * n)
         assert out[OUT["s"]] == pytest.approx(path.arc_of(tip), abs=100 * bound)
         c, tc = hermite(table, out[OUT["s"]])
         assert np.allclose(out[OUT["c_x"]:OUT["c_z"] + 1], c, atol=1e-12)
@@ -89,7 +89,7 @@ def test_the_follower_is_its_equations(path):
         v = out[OUT["speed"]]
         assert out[OUT["lateral_rate"]] == pytest.approx(kappa_g * v * v, rel=2e-2, abs=1e-6)
         assert v ** 2 * abs(kappa_g) <= task.acceleration * 1.02  # the turns' limit
-        assert out[OUT["force"]] == 10.0
+        assert out[OUT["normal_reference"]] == 10.0
 
 
 def test_the_speed_is_a_trapezoid_in_arc_length():
@@ -98,8 +98,8 @@ def test_the_speed_is_a_trapezoid_in_arc_length():
     follower = PathFollower(task, PLANE)
     L = path.length
     for s in np.linspace(0.0, L, 57):
-        follower.state[:] = [s, s, 0.0, 1.0]
-        out = follower.follow(path.point_at(s))
+        follower.state[:] = [s, s, 0.0, 1.0, 1.0, 0.0]
+        out = follower.follow(path.point_at(s), np.zeros(3))
         expected = min(0.1, math.sqrt(0.02 ** 2 + 2 * 0.4 * s), math.sqrt(2 * 0.4 * max(L - s, 0.0)))
         assert out[OUT["speed"]] == pytest.approx(0.0 if L - s <= 1e-4 else expected, abs=1e-12)
         assert out[OUT["done"]] == float(L - s <= 1e-4)
@@ -282,3 +282,51 @@ def test_the_standalone_c_carries_the_path_task(tmp_path):
     assert c.step(t, q, qd, wrench)[0] == 0
     assert c.c.path_settings[PATH_SETTINGS.index("length")] == pytest.approx(other.task.path.length)
     assert c.c.path[OUT["speed"]] == pytest.approx(0.005)  # the other task's start speed, a tenth of 0.05
+
+
+def whole_task(duration: float = 4.6):
+    """From 5 mm above the path's start to 2 cm above its end: approach, touch, path, release, retreat."""
+    task = hybrid.PathTask(raster(passes=2, length=0.06), speed=0.1, force=10.0, retreat_distance=0.02)
+    return hybrid.tracing_experiment(surface=PLANE, path_task=task, duration=duration, start_gap=0.005,
+                                     approach_speed=0.05)
+
+
+def test_a_whole_task_from_free_space_to_the_retreat():
+    exp = whole_task()
+    res = hybrid.simulate(exp)
+    m = res.metrics
+    from hybrid.simulation.path_metrics import path_series
+
+    series = path_series(res)
+    phases = series["phase"]
+    assert phases[0] == 0 and phases[-1] == PATH_PHASES.index("clear")  # from the approach to clear of the part
+    assert np.all(np.diff(phases) >= 0)  # each phase once, in order
+    assert 0 < m["first_touch_time_s"] < 0.5
+    assert m["path_error_rms_m"] <= 1e-3 and m["path_contact_losses"] == 0
+    assert m["path_force_rms_error_N"] <= 0.02 * 10.0
+    assert m["path_end_peak_force_N"] <= 10.0 * 1.02  # the release and retreat: no force spike
+    tip = res.outputs[-1, [res.record["outputs"].index(c) for c in ("s_x", "s_y", "s_z")]]
+    height = (tip - np.asarray(PLANE.point)) @ np.asarray(PLANE.normal) / np.linalg.norm(PLANE.normal)
+    assert height == pytest.approx(0.02, abs=2e-3)  # it stopped 2 cm above the part
+
+
+def test_the_whole_task_in_standalone_c_equals_the_controller(tmp_path):
+    from test_standalone_controller import CController, recorded_samples
+
+    exp = whole_task()
+    py = exp.build_controller()
+    py.generate(tmp_path, "ur5_task")
+    c = CController(tmp_path, "ur5_task")
+    seen = set()
+    for t, q, qd, wrench in recorded_samples(exp):
+        tau_py = py(t, q, qd, wrench)
+        status, tau_c = c.step(t, q, qd, wrench)
+        assert status == 0, c.name(status)
+        assert np.max(np.abs(tau_c - tau_py)) <= 1e-12 * max(1.0, np.max(np.abs(tau_py)))
+        seen.add(py.path_task["phase"])
+        assert np.frombuffer(c.ffi.buffer(c.c.selection), float).tolist() == py.step_inputs()["selection"].tolist()
+    assert seen == set(range(len(PATH_PHASES)))
+    py.reset()
+    getattr(c.lib, "ur5_task_controller_reset")(c.c)
+    assert np.frombuffer(c.ffi.buffer(c.c.gains), float).tolist() == py.step_inputs()["gains"].tolist()
+    assert py.step_inputs()["selection"].tolist() == py.step_inputs(at_start=True)["selection"].tolist()

@@ -17,7 +17,7 @@ from hybrid.control.fault import FaultMonitor, FaultReaction, finite_time, time_
 from hybrid.control.loops import Gains
 from hybrid.control.measurement import Measurement, padded_vector, wrench_of
 from hybrid.control.options import ContactLoss, Posture, call_user, check_posture
-from hybrid.control.path_task import PathReferences, PathTask
+from hybrid.control.path_task import PATH_CHANGES, PathReferences, PathTask
 from hybrid.control.schemes import Scheme, scheme_of
 from hybrid.control.task_settings import axis_references, gain_array, gains_of, joint_limit, selection_of
 from hybrid.control.wrench_sensor import WrenchSensor
@@ -45,8 +45,6 @@ from hybrid.validate import _finite, check_singular_tol, shown
 _OFF = 1e300
 #: the compiled step's inputs a controller fixes, in the step's order (after the per-sample ones)
 PARAMETERS = CONTROLLER_STEP.parameters
-#: the wrench the path task's measurement of the tip is given (the tip's position does not depend on it)
-_NO_WRENCH = np.zeros(6)
 #: the step's per-sample inputs a call gives (its q, qdot and Fc); the others the controller holds
 _CALLED = ("q", "qd", "Fc")
 #: the states a sample the law served advances whether or not it was on time (the integrals only on time;
@@ -87,7 +85,8 @@ class Controller:
     integral_limit : anti-windup: the largest integral action per axis [m/s^2 or rad/s^2]; a sample
         that would exceed it keeps the axis's integrals (conditional integration). Off by default.
     contact_loss : a :class:`ContactLoss` rule for force axes; off by default.
-    frame_direction : the task frame's direction ``e`` (base axes): ``t1 = e x n / |e x n|``.
+    frame_direction : the task frame's direction ``e`` (base axes): ``t1 = e x n / |e x n|``; default base
+        z. With a path task, the path's at its start (``n x t``; another is refused): it sets ``e`` each sample.
     singular_tol : conditioning below which a sample raises :class:`SingularConfigurationError`.
     posture : a :class:`Posture` task in the null space of the task (off by default). It needs a
         redundant task (fewer axes than joints: a 7-joint Panda, or a UR5 on ``axes="position"``)
@@ -145,7 +144,7 @@ class Controller:
     def __init__(self, robot: Robot | Arm, surface, scheme: str | Scheme = "task", *, axes=None, selection=None,
                  gains: Gains | Mapping | None = None, force_reference=None, velocity_reference=None,
                  sample_time: float = 0.01, integral: bool = True, curvature: bool = False,
-                 frame: str = "actual", path: Callable | None = None, frame_direction=(0.0, 0.0, 1.0),
+                 frame: str = "actual", path: Callable | None = None, frame_direction=None,
                  position_error: bool = False, integral_limit: float | None = None,
                  contact_loss: ContactLoss | None = None, singular_tol: float = 1e-3,
                  posture: Posture | None = None, torque_limit="urdf", torque_step_limit=None,
@@ -181,7 +180,8 @@ class Controller:
                                   "not know the surface; use frame='actual' and position_error=False with it")
             self._spatial.check_sampling(sample_time)
         self.sample_time, self.integral, self.curvature, self.frame = float(sample_time), integral, curvature, frame
-        self.frame_direction = tuple(frame_direction_of(frame_direction))
+        self.frame_direction = tuple(frame_direction_of((0.0, 0.0, 1.0) if frame_direction is None
+                                                        else frame_direction))
         self.singular_tol, self.path = float(singular_tol), path
         self.selection = selection_of(self.axes, selection)
         self.gains = gains_of(self.axes, gains, integral)
@@ -206,11 +206,17 @@ class Controller:
         self._fault_reaction = fault_reaction or FaultReaction()
         self._fault_reaction.check_sampling(self.sample_time)
         self._path_task = None if path_task is None else PathReferences(
-            path_task, self._spatial, robot, self.axes, self.selection,
+            path_task, self._spatial, robot, self.axes, self.selection, self.gains, self.sample_time,
+            None if contact_loss is None else contact_loss.threshold,
             force_reference is not None or velocity_reference is not None,
             frame != "actual" or position_error or path is not None)
-        if path_task is not None:  # its references are the follower's, added to these
+        if path_task is not None:  # its references are the follower's, added to these; its direction the path's
             force_reference = {"n": 0.0}
+            start = tuple(self._path_task.start_direction)
+            if frame_direction is not None and not np.allclose(self.frame_direction, start, rtol=0, atol=1e-9):
+                raise HybridError(f"frame_direction = {shown(frame_direction, 60)}: with a path task the direction is "
+                                  f"the path's (n x t, {np.round(start, 6).tolist()} at its start); leave it out")
+            self.frame_direction = start
         self._references = axis_references(self.axes, self.selection, force_reference, velocity_reference)
         # a posture has its own generated step (the law plus tau0), so the law without one stays the very code
         # it was, bit for bit; both are in the same unit, and the posture's numbers are run-time inputs of both
@@ -234,6 +240,7 @@ class Controller:
             "steps": steps, "gains": gain_array(self.gains, self.selection), "selection": self.selection,
             "robot": robot_array, "surface": surface_array, "e": self.frame_direction, "options": options,
             "posture": posture_array, "limits": limits, "sensor": sensor, "fault": self._fault_reaction.as_array()})
+        self._start_params = self._params  # what a path task changes as it runs is restored from these at a reset
         self._fault = FaultMonitor(self._dims)
         # the step's other per-sample inputs, in its order: the states it keeps (the loops' integrals, the torque
         # last given to the arm and 1 once there is one, the sensor filter's, an estimated surface's), the sample
@@ -360,10 +367,11 @@ class Controller:
         (:mod:`hybrid.simulation.closed_loop`)."""
         return self._short and self.wrench_sensor is None and not self._estimated
 
-    def step_inputs(self) -> dict[str, np.ndarray]:
+    def step_inputs(self, at_start: bool = False) -> dict[str, np.ndarray]:
         """The compiled step's inputs this controller fixes (gains, references' steps, model,
-        options), by the manifest's names."""
-        return dict(zip(PARAMETERS, self._params))
+        options), by the manifest's names; ``at_start``: as at the start of a run (before a path task turned
+        ``e`` or retreated)."""
+        return dict(zip(PARAMETERS, self._start_params if at_start else self._params))
 
     def step_variant(self) -> dict:
         """What the compiled step is made of: the model's chain and name, the surface's spec, the task
@@ -402,8 +410,11 @@ class Controller:
         for name in ("integrals", "last_torque", *_ADVANCED):
             self._held[self._at[name]][:] = 0.0
         self._fault.reset()
-        if self._path_task is not None:
+        if self._path_task is not None:  # the path's start, and the normal axis force-controlled again
             self._path_task.follower.reset()
+            self._params = tuple(start if name in PATH_CHANGES else now
+                                 for name, start, now in zip(PARAMETERS, self._start_params, self._params))
+            self._bind()
         self._sampled = False
         self._clock = None
         if torque is not None:
@@ -535,7 +546,7 @@ class Controller:
             if self.path is not None:
                 self._target[:] = self._desired(t)
             if self._path_task is not None:
-                self._follow(q, qdot)
+                self._follow(q, qdot, Fc)
         done = self._into(self._binding, out, q, qdot, Fc, *self._held)
         if done is None:
             self._checked(q, qdot, Fc, out)
@@ -549,14 +560,15 @@ class Controller:
             raise SampleTimingError(timing, t, clock, self.sample_time, out[0].copy())
         return out[0].copy()
 
-    def _follow(self, q, qdot) -> None:
-        """The path task's direction and references for the tip at ``q`` (the step's binding follows ``e``)."""
+    def _follow(self, q, qdot, Fc) -> None:
+        """The path task's references for the tip at ``q`` under the wrench ``Fc``; the step's binding follows
+        the parameters it changes (``e``, and at the retreat the normal axis's selection and gains)."""
         p = self.step_inputs()
-        tip = self._measure(q, qdot, _NO_WRENCH, p["surface"], p["e"], p["robot"], p["sensor"], self._estimate)["p"]
-        at = PARAMETERS.index("e")
-        e = self._path_task.write(tip.ravel(), self._params[at], self._extra, self._rate)
-        if e is not None:  # a unit vector from the follower: the check of e holds
-            self._params = (*self._params[:at], e, *self._params[at + 1:])
+        m = self._measure(q, qdot, Fc, p["surface"], p["e"], p["robot"], p["sensor"], self._estimate)
+        changed = self._path_task.write(m["p"].ravel(), m["contact_wrench"].ravel()[:3], p, self._extra, self._rate,
+                                        self._z)
+        if changed:  # the follower's unit e, and a selection and gains of 0/1 and >= 0: their checks hold
+            self._params = tuple(changed.get(name, a) for name, a in zip(PARAMETERS, self._params))
             self._bind()
 
     @property

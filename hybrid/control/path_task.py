@@ -16,11 +16,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from hybrid.control.options import call_user
+from hybrid.control.task_settings import gain_array
 from hybrid.errors import HybridError, NonFiniteError
 from hybrid.geometry.paths import CirclePath, Path
 from hybrid.geometry.surface_points import project_points
 from hybrid.native import loader
-from hybrid.spec.controller_step import NO_LIMIT
+from hybrid.spec.controller_step import LOOP_GAINS, NO_LIMIT
 from hybrid.spec.path_follow import PATH_OUTPUT, PATH_SETTINGS, PATH_STATE, PATH_STATUSES, PATH_TABLE
 from hybrid.validate import _finite, shown
 
@@ -30,6 +31,8 @@ ON_SURFACE_TOL = 1e-4
 CURVATURE_STEP = 1e-4
 #: how far a path of one's own may be from an arc-length parametrisation between nodes (relative)
 ARC_LENGTH_TOL = 1e-2
+#: a touch force of minus this: touching from the start (the controller's "off", as its loss threshold's)
+NO_TOUCH = 1e300
 
 
 @dataclass(frozen=True)
@@ -62,6 +65,14 @@ class PathTask:
     laps : float, optional
         A closed path's number of laps (None: it runs until the experiment ends); an open path runs to
         its end.
+    retreat_distance : float
+        [m] at the end, the force is released over ``unload_time`` and the tip retreats along the normal at
+        ``retreat_speed`` [m/s] until it is this far from the surface, where it stops (the normal axis is
+        velocity-controlled from the retreat on); 0 (the default): the tip stays at the end, pressing.
+    unload_time : float
+        [s] the time over which the force is released before the retreat.
+    retreat_speed : float
+        [m/s] the speed of the retreat.
     spacing : float
         The longest distance [m] between the table's nodes (the interpolation's error is about
         ``spacing^4 kappa^3 / 384``: 1e-10 m at 1 mm on a curve of 1 cm radius).
@@ -85,6 +96,9 @@ class PathTask:
     cross_track_gain: float = 20.0
     laps: float | None = None
     spacing: float = 1e-3
+    retreat_distance: float = 0.0
+    unload_time: float = 0.2
+    retreat_speed: float = 0.02
 
     def __post_init__(self):
         if not isinstance(self.path, Path):
@@ -100,6 +114,14 @@ class PathTask:
             raise HybridError(f"PathTask.acceleration = {self.acceleration} m/s^2; give a positive acceleration limit")
         if self.cross_track_gain < 0:
             raise HybridError(f"PathTask.cross_track_gain = {self.cross_track_gain} 1/s; give a gain >= 0")
+        _finite("PathTask", retreat_distance=self.retreat_distance, unload_time=self.unload_time,
+                retreat_speed=self.retreat_speed)
+        if self.retreat_distance < 0 or self.unload_time < 0:
+            raise HybridError(f"PathTask: retreat_distance = {self.retreat_distance} m, unload_time = "
+                              f"{self.unload_time} s; give both >= 0 (retreat_distance 0: no retreat)")
+        if self.retreat_distance > 0 and not self.retreat_speed > 0:
+            raise HybridError(f"PathTask.retreat_speed = {self.retreat_speed} m/s; give a positive speed to retreat "
+                              f"{self.retreat_distance} m")
         if not 0 < self.spacing <= 0.1:
             raise HybridError(f"PathTask.spacing = {self.spacing} m; give a node spacing in (0, 0.1] m (1 mm: "
                               "the default)")
@@ -185,7 +207,8 @@ class PathTask:
             raise HybridError(f"PathTask.{name}({s[i]:.4g}) = {arr[i]}; give a finite {name} along the whole path")
         return arr
 
-    def table(self, surface) -> tuple[np.ndarray, np.ndarray]:
+    def table(self, surface, sample_time: float = 0.01,
+              touch_force: float | None = None) -> tuple[np.ndarray, np.ndarray]:
         """The follower's table (one row of :data:`~hybrid.spec.path_follow.PATH_TABLE` per node) and settings
         (:data:`~hybrid.spec.path_follow.PATH_SETTINGS`) on ``surface``.
 
@@ -193,6 +216,11 @@ class PathTask:
         ----------
         surface : Surface
             The surface the controller is told (the path's normals are its own, or this surface's).
+        sample_time : float
+            [s] the controller's sample period (the release's clock).
+        touch_force : float, optional
+            [N] the normal force from which the tip touches (the controller's contact-loss threshold); None:
+            touching from the start.
 
         Returns
         -------
@@ -240,7 +268,10 @@ class PathTask:
         table = np.column_stack([s, points, tangents, normals, kappa_g, speed, force])
         settings = {"rows": rows, "closed": float(closed), "length": length, "start": start, "distance": distance,
                     "speed_start": speed_start, "acceleration": self.acceleration,
-                    "cross_track_gain": self.cross_track_gain}
+                    "cross_track_gain": self.cross_track_gain,
+                    "touch_force": -NO_TOUCH if touch_force is None else float(touch_force),
+                    "sample_time": float(sample_time), "unload_time": self.unload_time,
+                    "retreat_distance": self.retreat_distance, "retreat_speed": self.retreat_speed}
         assert table.shape[1] == len(PATH_TABLE)
         return np.ascontiguousarray(table), np.array([settings[k] for k in PATH_SETTINGS], dtype=float)
 
@@ -261,13 +292,13 @@ def _turn_limited(speed: np.ndarray, kappa_g: np.ndarray, ds: np.ndarray, a: flo
 class PathFollower:
     """A :class:`PathTask` on a surface, followed sample by sample (the generated follower).
 
-    ``follow(p)`` gives the outputs (:data:`~hybrid.spec.path_follow.PATH_OUTPUT`, by index) for the tip at
-    ``p`` [m] without changing the state; ``advance()`` keeps the last sample's state; ``reset()`` starts
-    the run again."""
+    ``follow(p, force)`` gives the outputs (:data:`~hybrid.spec.path_follow.PATH_OUTPUT`, by index) for the
+    tip at ``p`` [m] under the contact force ``force`` [N, base axes] without changing the state; ``advance()``
+    keeps the last sample's state; ``reset()`` starts the run again."""
 
-    def __init__(self, task: PathTask, surface):
+    def __init__(self, task: PathTask, surface, sample_time: float = 0.01, touch_force: float | None = None):
         self.task = task
-        self.table, self.settings = task.table(surface)
+        self.table, self.settings = task.table(surface, sample_time, touch_force)
         module = loader.path_follower()
         self._ffi, self._lib = module.ffi, module.lib
         self._table_ptr = self._ffi.from_buffer("double[]", self.table)
@@ -277,18 +308,28 @@ class PathFollower:
                               "lengths do not grow); give a path defined along its whole length")
         self.state = np.zeros(len(PATH_STATE))
         self.out = np.zeros(len(PATH_OUTPUT))
-        self._p = np.zeros(3)
-        self._ptrs = [self._ffi.from_buffer("double[]", a) for a in (self.state, self._p, self.out)]
+        self._p, self._force = np.zeros(3), np.zeros(3)
+        self._ptrs = [self._ffi.from_buffer("double[]", a) for a in (self.state, self._p, self._force, self.out)]
 
-    def follow(self, p) -> np.ndarray:
-        """The outputs for the tip at ``p`` [m, base axes] (the state stays until :meth:`advance`)."""
-        self._p[:] = p
+    def follow(self, p, force) -> np.ndarray:
+        """The outputs for the tip at ``p`` [m, base axes] under the contact force ``force`` [N, base axes: the
+        wrench on the robot] (the state stays until :meth:`advance`)."""
+        self._p[:], self._force[:] = p, force
         status = self._lib.hybrid_path_follow_entry(self._table_ptr, self._settings_ptr, *self._ptrs)
         if status != PATH_STATUSES["PATH_OK"]:
             name = next(k for k, v in PATH_STATUSES.items() if v == status)
             raise NonFiniteError(f"the path follower refused the sample ({name}): tip {self._p.tolist()} m, state "
                                  f"{self.state.tolist()}")
         return self.out
+
+    def start_direction(self) -> np.ndarray:
+        """The task frame's direction ``e = n x t`` at the path's start (the outputs and state as they were)."""
+        start = self.settings[PATH_SETTINGS.index("start")]
+        state, out = self.state.copy(), self.out.copy()
+        self.state[:] = 0.0
+        e = self.follow(self.task.path.point_at(start), np.zeros(3))[_E].copy()
+        self.state[:], self.out[:] = state, out
+        return e
 
     def advance(self) -> None:
         """Keep the last sample's progress (a sample on time)."""
@@ -299,16 +340,29 @@ class PathFollower:
 
 
 _OUT = {name: i for i, name in enumerate(PATH_OUTPUT)}
+#: the step's parameters a path task changes as it runs
+PATH_CHANGES = ("e", "selection", "gains")
 _E = slice(_OUT["e_x"], _OUT["e_z"] + 1)
+
+
+def _fixed(a: np.ndarray) -> np.ndarray:
+    """``a`` read-only, as the step's parameters are (they change only by replacement)."""
+    a.flags.writeable = False
+    return a
 
 
 class PathReferences:
     """A :class:`PathTask` in a :class:`~hybrid.Controller`: each sample, the follower's task frame direction
     ``e`` and its references of ``t1`` (speed), ``t2`` (cross-track correction and the turn's feedforward)
-    and ``n`` (force), written into the step's inputs."""
+    and ``n`` (force; in the retreat, speed, the normal axis then velocity-controlled), written into the
+    step's inputs.
 
-    def __init__(self, task: PathTask, surface, robot, axes: tuple[int, ...], selection: tuple[int, ...],
-                 references_given: bool, loop_frame_given: bool):
+    ``follower`` holds the table, settings and state; ``positions`` where ``t1``, ``t2`` and ``n`` are among the
+    task axes; ``start_direction`` the task frame's direction at the path's start; ``retreat_gains`` the
+    normal axis's loop gains in the retreat (its velocity gains)."""
+
+    def __init__(self, task: PathTask, surface, robot, axes: tuple[int, ...], selection: tuple[int, ...], gains,
+                 sample_time: float, touch_force: float | None, references_given: bool, loop_frame_given: bool):
         if not isinstance(task, PathTask):
             raise HybridError(f"path_task = {shown(task, 60)}; give a hybrid.PathTask(path, speed=..., force=...) or "
                               "None")
@@ -328,21 +382,34 @@ class PathReferences:
         if loop_frame_given:
             raise HybridError("path_task puts the loops in the frame at the tip, along the path: leave frame, "
                               "position_error and path at their defaults")
-        self.follower = PathFollower(task, surface)
+        self.follower = PathFollower(task, surface, sample_time, touch_force)
         self._t1, self._t2, self._n = self.positions = axes.index(0), axes.index(1), axes.index(2)
+        retreat = tuple(0 if k == self._n else s for k, s in enumerate(selection))
+        k = len(LOOP_GAINS) * self._n
+        self.retreat_gains = gain_array(gains, retreat)[k:k + len(LOOP_GAINS)]
+        self.start_direction = self.follower.start_direction()
 
-    def write(self, p, e: np.ndarray, extra: np.ndarray, rate: np.ndarray) -> np.ndarray | None:
-        """The references for the tip at ``p`` [m] into ``extra`` and ``rate``; the task frame's direction
-        when it differs from ``e`` (a new array, read-only as the step's parameters are), else None."""
-        out = self.follower.follow(p)
+    def write(self, p, force, params: dict, extra: np.ndarray, rate: np.ndarray,
+              integrals: np.ndarray) -> dict[str, np.ndarray]:
+        """The references for the tip at ``p`` [m] under the contact force ``force`` [N, base axes] into
+        ``extra`` and ``rate``; the step's parameters that change (of ``params``, by name: ``e`` as the path
+        turns, ``selection`` and ``gains`` at the retreat, whose normal axis's ``integrals`` it zeroes), as new
+        read-only arrays."""
+        out = self.follower.follow(p, force)
         extra[self._t1], rate[self._t1] = out[_OUT["speed"]], out[_OUT["speed_rate"]]
         extra[self._t2], rate[self._t2] = out[_OUT["lateral_speed"]], out[_OUT["lateral_rate"]]
-        extra[self._n] = out[_OUT["force"]]
-        if np.array_equal(e, out[_E]):
-            return None
-        e = out[_E].copy()
-        e.flags.writeable = False
-        return e
+        extra[self._n] = out[_OUT["normal_reference"]]
+        changed = {}
+        if not np.array_equal(params["e"], out[_E]):
+            changed["e"] = _fixed(out[_E].copy())
+        if out[_OUT["retreat"]] == 1.0 and params["selection"][self._n] != 0.0:
+            selection, gains = params["selection"].copy(), params["gains"].copy()
+            selection[self._n] = 0.0
+            k = len(LOOP_GAINS) * self._n
+            gains[k:k + len(LOOP_GAINS)] = self.retreat_gains
+            changed.update(selection=_fixed(selection), gains=_fixed(gains))
+            integrals[2 * self._n:2 * self._n + 2] = 0.0
+        return changed
 
     @property
     def last(self) -> dict[str, float]:

@@ -90,7 +90,8 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     start_point : the sensor tip's start on the surface [m] (projected onto it when within
         1 mm); default the path's start.
     elbow : +1 (``q2 > 0``) or -1: the planar arm's start configuration.
-    frame_direction : the task frame's direction ``e`` (base axes): ``t1 = e x n / |e x n|``.
+    frame_direction : the task frame's direction ``e`` (base axes): ``t1 = e x n / |e x n|``; default base z,
+        with a path task the path's at its start (``n x t``), set here.
     axes : the controller's task axes (see :func:`hybrid.decoupling_law`); default the robot's.
     posture : a :class:`~hybrid.Posture` task in the null space of a redundant arm's task (its rest
         posture is also where the start's inverse kinematics begins); off by default.
@@ -132,7 +133,7 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     path_task: PathTask | None = None
     start_point: tuple[float, ...] | None = None
     elbow: int = 1
-    frame_direction: tuple[float, float, float] = (0.0, 0.0, 1.0)
+    frame_direction: tuple[float, float, float] | None = None
     axes: str | tuple[int, ...] | None = None
     posture: Posture | None = None
     q0: tuple[float, ...] | None = None

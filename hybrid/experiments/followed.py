@@ -14,10 +14,11 @@ import math
 
 import numpy as np
 
-from hybrid.control.path_task import PathTask
+from hybrid.control.path_task import PathFollower, PathTask
 from hybrid.control.references import Step
 from hybrid.errors import HybridError
 from hybrid.experiments.settings import START_TOL
+from hybrid.geometry.task_axes import frame_direction_of
 from hybrid.validate import shown
 
 #: the times along the run [s] where the path is compared with the tip's motion
@@ -45,7 +46,8 @@ def task_references(exp) -> None:
     refused); without one, the defaults where none is given."""
     task = exp.path_task
     if task is None:
-        for name, default in (("force_reference", DEFAULT_FORCE), ("speed_reference", DEFAULT_SPEED)):
+        for name, default in (("force_reference", DEFAULT_FORCE), ("speed_reference", DEFAULT_SPEED),
+                              ("frame_direction", (0.0, 0.0, 1.0))):
             if getattr(exp, name) is None:
                 object.__setattr__(exp, name, default)
         return
@@ -61,6 +63,14 @@ def task_references(exp) -> None:
             raise HybridError(f"{name} = {given}: with a path_task the task gives the force and the speed along the "
                               "path; leave force_reference and speed_reference out (give them in the PathTask)")
         object.__setattr__(exp, name, value)
+    # the task frame's direction: the path's at its start (the controller's follower sets it each sample)
+    surface = exp.surface if exp.controller_surface is None else exp.controller_surface
+    start = tuple(PathFollower(task, surface).start_direction().tolist())
+    given = exp.frame_direction
+    if given is not None and not np.allclose(frame_direction_of(given), start, rtol=0, atol=1e-9):
+        raise HybridError(f"frame_direction = {shown(given, 60)}: with a path_task the direction is the path's (n x t, "
+                          f"{np.round(start, 6).tolist()} at its start); leave frame_direction out")
+    object.__setattr__(exp, "frame_direction", start)
 
 
 def check_followed(exp) -> None:

@@ -54,7 +54,7 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
     path = ctrl.path_references  # a path task's: its table and settings are the generated path's
     follower = None if path is None else path.follower
     variant = ctrl.step_variant()
-    values = {k: [float(x) for x in v] for k, v in ctrl.step_inputs().items()}
+    values = {k: [float(x) for x in v] for k, v in ctrl.step_inputs(at_start=True).items()}
     values |= {"timing_tolerance": -1.0 if ctrl.timing_tolerance is None else ctrl.timing_tolerance,
                "singular_tol": ctrl.singular_tol}
     spec, axes = variant["spec"], variant["axes"]
@@ -81,7 +81,8 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
         what = (f"the hybrid force/velocity controller ({ctrl.scheme.name} scheme) of the {ctrl.robot.n}-joint arm "
                 f"'{variant['name']}' on a {spec.kind}, task axes {', '.join(ctrl.axis_names)}")
         task = None if follower is None else {"measure": kernels["task_measurement"], "axes": path.positions,
-                                              "table": follower.table.ravel(), "settings": follower.settings}
+                                              "table": follower.table.ravel(), "settings": follower.settings,
+                                              "retreat_gains": path.retreat_gains}
         files = api.build_standalone_controller(kernels[variant["step"]], stop, prefix, what, info, values, stem,
                                                 task).files
         if follower is not None:  # the follower's header, beside the controller that includes it

@@ -1,8 +1,10 @@
 """The metrics of a run along a path task (:class:`hybrid.PathTask`), from the follower replayed on the run.
 
-The generated follower (:mod:`hybrid.spec.path_follow`) is given the sensor tip's position at each control
-sample, as the controller's was given the arm tip's: its progress, its distance from the path (in the
-surface's tangent plane) and its references are the run's along the path.
+The generated follower (:mod:`hybrid.spec.path_follow`) is given the arm tip's position and the contact
+force at each control sample, as the controller was: its progress, phase and references are the
+controller's. The sensor tip, which touches the part, trails the arm tip by the sensor's deflection (under
+friction, up to centimetres at large forces): its distance from the path is that of the path's point
+nearest it, found from the table's nodes behind and ahead of the arm tip's progress.
 """
 
 from __future__ import annotations
@@ -11,47 +13,97 @@ import numpy as np
 
 from hybrid.control.path_task import PathFollower
 from hybrid.spec.metrics import PATH_METRICS
-from hybrid.spec.path_follow import PATH_OUTPUT, PATH_SETTINGS
+from hybrid.spec.path_follow import PATH_OUTPUT, PATH_PHASES, PATH_SETTINGS, PATH_STATE
 
 #: how near [m] the path's end the sensor tip completes it (it trails the arm tip the follower steers by the
 #: sensor's deflection under friction, a fraction of a millimetre)
 END_TOL = 1e-3
+FOLLOW, UNLOAD = PATH_PHASES.index("follow"), PATH_PHASES.index("unload")
+#: the force error's window starts once the force is within this fraction of its reference
+SETTLED = 0.05
 
 
 def path_series(res) -> dict[str, np.ndarray]:
     """At each control sample of the run ``res``: the follower's outputs by name
-    (:data:`~hybrid.spec.path_follow.PATH_OUTPUT`: ``s``, ``path_error``, ``speed``, ``force``, ``done``, ...)
-    for the sensor tip, and ``tip_speed``, the tip's speed along the path's tangent [m/s]."""
+    (:data:`~hybrid.spec.path_follow.PATH_OUTPUT`: ``s``, ``phase``, ``path_error``, ``speed``,
+    ``normal_reference``, ``done``, ...) for the sensor tip, ``tip_speed`` (the tip's speed along the path's
+    tangent [m/s]), ``normal_force`` (the measured force along the path's normal [N]) and ``t`` [s]."""
     exp = res.experiment
     surface = exp.surface if exp.controller_surface is None else exp.controller_surface
-    follower = PathFollower(exp.path_task, surface)
+    touch = exp.touch_threshold if exp.approach_speed > 0 else None
+    follower = PathFollower(exp.path_task, surface, exp.sample_time, touch)
     names = res.record["outputs"]
-    tip = [names.index(c) for c in ("s_x", "s_y", "s_z")]
     rows = res.outputs[::exp.steps_per_sample][:exp.n_samples]
+    arm_tips, tips = (rows[:, [names.index(c) for c in (f"{x}_x", f"{x}_y", f"{x}_z")]] for x in ("r", "s"))
+    forces = rows[:, [names.index(c) for c in ("Fc_x", "Fc_y", "Fc_z")]]
     nq = res.record["nq"]
     tip_velocity = res.state[::exp.steps_per_sample][:exp.n_samples, 2 * nq + 3:2 * nq + 6]
     out = np.empty((len(rows), len(PATH_OUTPUT)))
-    for k, p in enumerate(rows[:, tip]):
-        out[k] = follower.follow(p)
+    for k, (p, f) in enumerate(zip(arm_tips, forces)):
+        out[k] = follower.follow(p, f)
         follower.advance()
     series = {name: out[:, i] for i, name in enumerate(PATH_OUTPUT)}
+    series["path_error"] = _sensor_tip_errors(follower, tips, series["s"])
     tangent = out[:, [PATH_OUTPUT.index(c) for c in ("t_x", "t_y", "t_z")]]
+    normal = out[:, [PATH_OUTPUT.index(c) for c in ("n_x", "n_y", "n_z")]]
     series["tip_speed"] = np.einsum("ij,ij->i", tip_velocity, tangent)
+    series["normal_force"] = np.einsum("ij,ij->i", forces, normal)
+    series["t"] = res.sample_t[:len(rows)]
     return series
 
 
+_SEEDED = [PATH_STATE.index(k) for k in ("s", "row", "started", "phase")]
+#: where the sensor tip's nearest point is looked for: this far [m] behind the arm tip's progress and ahead of it
+BEHIND, AHEAD = 0.05, 0.01
+
+
+def _sensor_tip_errors(follower: PathFollower, tips: np.ndarray, s_arm: np.ndarray) -> np.ndarray:
+    """The sensor tips' distances [m] from the path (in the surface's tangent plane), each from the node nearest
+    it within ``BEHIND`` and ``AHEAD`` of the arm tip's progress, then the follower's Newton steps."""
+    nodes, points = follower.table[:, 0], follower.table[:, 1:4]
+    state = np.zeros_like(follower.state)
+    errors = np.empty(len(tips))
+    error = PATH_OUTPUT.index("path_error")
+    for k, (p, s) in enumerate(zip(tips, s_arm)):
+        lo, hi = np.searchsorted(nodes, [s - BEHIND, s + AHEAD])
+        near = lo + int(np.argmin(np.linalg.norm(points[lo:max(hi, lo + 1)] - p, axis=1)))
+        state[:] = 0.0
+        state[_SEEDED] = nodes[near], min(near, len(nodes) - 2), 1.0, FOLLOW
+        follower.state[:] = state
+        errors[k] = follower.follow(p, np.zeros(3))[error]
+    return errors
+
+
 def path_metrics(res) -> dict[str, float]:
-    """:data:`~hybrid.spec.metrics.PATH_METRICS` of a run along a path task (module docstring)."""
+    """:data:`~hybrid.spec.metrics.PATH_METRICS` of a run along a path task (module docstring): the path
+    error over the samples on the path (following it, and releasing the force at its end), the force and
+    speed errors and the contact losses while following it, the largest force from the release on."""
     exp = res.experiment
     series = path_series(res)
-    t = res.sample_t[:len(series["s"])]
+    t, phase = series["t"], series["phase"]
+    on = (phase == FOLLOW) | (phase == UNLOAD)
+    follow = phase == FOLLOW
     distance = exp.path_task.table(exp.surface)[1][PATH_SETTINGS.index("distance")]
     done = np.flatnonzero(series["travelled"] >= distance - END_TOL)
-    force = res.force_normal[::exp.steps_per_sample][:len(t)]
-    err = series["path_error"]
+    err = series["path_error"][on] if on.any() else np.full(1, np.nan)
+    # once in contact: from the first time the force is within SETTLED of its reference (the touch's transient
+    # is the first-touch metrics')
+    force_error = series["normal_force"] - series["normal_reference"]
+    settled = np.flatnonzero(follow & (np.abs(force_error) <= SETTLED * np.abs(series["normal_reference"])))
+    pressing = follow & (np.arange(len(t)) >= (settled[0] if len(settled) else len(t)))
+    force_error = force_error[pressing]
+    speed_error = (series["tip_speed"] - series["speed"])[follow]
+    touching = series["normal_force"] > 0
+    lost = follow[1:] & touching[:-1] & ~touching[1:]
+    after = phase >= UNLOAD
     values = {"path_error_rms_m": float(np.sqrt(np.mean(err ** 2))), "path_error_max_m": float(err.max()),
               "path_time_s": float(t[done[0]]) if len(done) else float("nan"),
               "path_travelled_m": float(series["travelled"][-1]),
-              "path_force_rms_error_N": float(np.sqrt(np.mean((force - series["force"]) ** 2))),
-              "path_speed_rms_error_m_per_s": float(np.sqrt(np.mean((series["tip_speed"] - series["speed"]) ** 2)))}
+              "path_force_rms_error_N": _rms(force_error), "path_speed_rms_error_m_per_s": _rms(speed_error),
+              "path_contact_losses": int(np.count_nonzero(lost)),
+              "path_end_peak_force_N": float(series["normal_force"][after].max()) if after.any() else float("nan")}
     return {m.name: values[m.name] for m in PATH_METRICS}
+
+
+def _rms(x: np.ndarray) -> float:
+    return float(np.sqrt(np.mean(x ** 2))) if len(x) else float("nan")

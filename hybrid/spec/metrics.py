@@ -67,16 +67,21 @@ METRICS = (
 #: a run along a path task's metrics (:class:`hybrid.PathTask`), after the others
 PATH_METRICS = (
     Metric("path_error_rms_m", "m", "RMS path error",
-           "the RMS of the sensor tip's distance from the path (in the surface's tangent plane) over the run"),
+           "the RMS of the sensor tip's distance from the path (in the surface's tangent plane) while on it"),
     Metric("path_error_max_m", "m", "largest path error", "the largest distance of the sensor tip from the path"),
     Metric("path_time_s", "s", "time to complete the path",
            "when the sensor tip came within 1 mm of the path's end (NaN: not within the run, or a closed path "
            "without laps)"),
     Metric("path_travelled_m", "m", "arc length travelled", "the arc length along the path the tip covered"),
     Metric("path_force_rms_error_N", "N", "RMS force error along the path",
-           "the RMS of the normal force's error from the task's force at the tip's place on the path"),
+           "the RMS of the normal force's error from the task's force at the tip's place, while following "
+           "the path once the force came within 5 % of it"),
     Metric("path_speed_rms_error_m_per_s", "m/s", "RMS speed error along the path",
-           "the RMS of the tip's speed along the path's tangent less the task's speed reference"),
+           "the RMS of the tip's speed along the path's tangent less the task's speed reference, while following it"),
+    Metric("path_contact_losses", "count", "contact losses along the path",
+           "how often the normal force dropped to 0 while following the path (the retreat's lift-off not counted)"),
+    Metric("path_end_peak_force_N", "N", "largest force from the release on",
+           "the largest normal force from the release of the force at the path's end on (NaN: never released)"),
 )
 #: the metrics' names, in order
 METRIC_NAMES = tuple(m.name for m in METRICS)

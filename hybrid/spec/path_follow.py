@@ -17,7 +17,12 @@ linearly. Each sample:
    ends; a closed one wraps), and ``travelled`` (the arc length since the start) with it;
 2. at ``c(s)``: the tangent ``t``, the surface's normal ``n`` and the cross-track direction
    ``e = n x t``, which, as the task frame's direction, makes ``t1 = e x n = t`` and ``t2 = n x t1 = e``;
-3. the speed along ``t1``: the table's speed bounded by the acceleration from ``speed_start`` since the
+3. the phase (:data:`PATH_PHASES`): before the first touch (the measured normal force below ``touch_force``)
+   the tip approaches and does not move along the path; in contact it follows it; at an open path's end
+   (or a closed one's last lap) the force is released over ``unload_time`` down to ``touch_force``, then,
+   with a ``retreat_distance``, the normal axis turns velocity-controlled and the tip leaves along ``n`` at
+   ``retreat_speed`` until it is that far from the surface, where it stops;
+4. the speed along ``t1``: the table's speed bounded by the acceleration from ``speed_start`` since the
    start and, on an open path, by the deceleration to 0 at its end (a trapezoid in arc length), and its
    rate ``v dv/ds``; on ``t2``: ``-cross_track_gain * d`` for the cross-track error ``d = (p - c) . e``,
    and the centripetal feedforward ``kappa_g v^2`` of the path's turn on the surface (the task frame's
@@ -32,20 +37,29 @@ from __future__ import annotations
 PATH_TABLE = ("s", "p_x", "p_y", "p_z", "t_x", "t_y", "t_z", "n_x", "n_y", "n_z", "kappa_g", "speed", "force")
 #: the follower's settings: the table's rows, 1 for a closed path, its length [m], the arc length where the
 #: run starts [m], the arc length to travel [m] (an open path: to its end), the speed at the start [m/s], the
-#: acceleration limit along the path [m/s^2], the cross-track gain [1/s]
+#: acceleration limit along the path [m/s^2], the cross-track gain [1/s], the normal force [N] from which the
+#: tip touches (-1e300: touching from the start), the sample period [s], the time [s] over which the force is
+#: released at the end, the distance [m] the tip retreats from the surface then (0: it stays, pressing) and its
+#: speed [m/s]
 PATH_SETTINGS = ("rows", "closed", "length", "start", "distance", "speed_start", "acceleration",
-                 "cross_track_gain")
+                 "cross_track_gain", "touch_force", "sample_time", "unload_time", "retreat_distance",
+                 "retreat_speed")
 #: the follower's state: the progress ``s`` [m] (the arc length of the path's point nearest the tip), the arc
-#: length travelled [m], the table's row that holds ``s`` (a hint), 1 once started
-PATH_STATE = ("s", "travelled", "row", "started")
+#: length travelled [m], the table's row that holds ``s`` (a hint), 1 once started, the phase
+#: (:data:`PATH_PHASES`) and the time in it [s]
+PATH_STATE = ("s", "travelled", "row", "started", "phase", "phase_time")
+#: the phases of a path task, by number: approaching the surface, following the path, releasing the force at
+#: its end, retreating along the normal, clear of the surface (stopped)
+PATH_PHASES = ("approach", "follow", "unload", "retreat", "clear")
 #: what it gives each sample: the state after it, the path's point ``c(s)`` [m], its tangent, the surface's
 #: normal, the cross-track direction ``e = n x t`` (the task frame's direction), the references of t1 (speed
 #: [m/s] and its rate [m/s^2]), of t2 (the cross-track correction [m/s] and the turn's feedforward [m/s^2]),
-#: of n (force [N]), the cross-track error ``d`` [m], the tip's distance from the path in the surface's tangent
-#: plane [m], and 1 once an open path is done
-PATH_OUTPUT = ("s", "travelled", "row", "started", "c_x", "c_y", "c_z", "t_x", "t_y", "t_z", "n_x", "n_y", "n_z",
-               "e_x", "e_y", "e_z", "speed", "speed_rate", "lateral_speed", "lateral_rate", "force", "cross_track",
-               "path_error", "done")
+#: of n (force [N]; in the retreat, speed [m/s]), the cross-track error ``d`` [m], the tip's distance from the
+#: path in the surface's tangent plane [m], its height above the path's point along ``n`` [m], 1 once the
+#: path is done (its end reached), 1 while the normal axis is velocity-controlled (the retreat)
+PATH_OUTPUT = (*PATH_STATE, "c_x", "c_y", "c_z", "t_x", "t_y", "t_z", "n_x", "n_y", "n_z", "e_x", "e_y", "e_z",
+               "speed", "speed_rate", "lateral_speed", "lateral_rate", "normal_reference", "cross_track", "path_error",
+               "height", "done", "retreat")
 #: the follower's statuses: 0 the outputs are written; otherwise nothing is (the state stays)
 PATH_STATUSES = {"PATH_OK": 0, "PATH_INPUT_NONFINITE": 1, "PATH_TABLE_INVALID": 2}
 #: how close [m] to an open path's end counts as done
