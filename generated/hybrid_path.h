@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: aed2402bfb79faf7f73c99b6803569b438b69374a4c3769ab58b8ecc65918767 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 2572d7add5f1f412a6c5abdd0d69bc8a01cfbedd1f8957e96b130a951f94597c */
 #ifndef HYBRID_PATH_H
 #define HYBRID_PATH_H
 /* The path follower: a path on a surface as a table, followed from the tip's measured position.
@@ -30,7 +30,7 @@
 #define HYBRID_PATH_TABLE_FORCE 12
 
 /* the follower's settings */
-#define HYBRID_PATH_SETTINGS_SIZE 13
+#define HYBRID_PATH_SETTINGS_SIZE 14
 #define HYBRID_PATH_SETTINGS_ROWS 0
 #define HYBRID_PATH_SETTINGS_CLOSED 1
 #define HYBRID_PATH_SETTINGS_LENGTH 2
@@ -39,11 +39,12 @@
 #define HYBRID_PATH_SETTINGS_SPEED_START 5
 #define HYBRID_PATH_SETTINGS_ACCELERATION 6
 #define HYBRID_PATH_SETTINGS_CROSS_TRACK_GAIN 7
-#define HYBRID_PATH_SETTINGS_TOUCH_FORCE 8
-#define HYBRID_PATH_SETTINGS_SAMPLE_TIME 9
-#define HYBRID_PATH_SETTINGS_UNLOAD_TIME 10
-#define HYBRID_PATH_SETTINGS_RETREAT_DISTANCE 11
-#define HYBRID_PATH_SETTINGS_RETREAT_SPEED 12
+#define HYBRID_PATH_SETTINGS_CROSS_TRACK_LIMIT 8
+#define HYBRID_PATH_SETTINGS_TOUCH_FORCE 9
+#define HYBRID_PATH_SETTINGS_SAMPLE_TIME 10
+#define HYBRID_PATH_SETTINGS_UNLOAD_TIME 11
+#define HYBRID_PATH_SETTINGS_RETREAT_DISTANCE 12
+#define HYBRID_PATH_SETTINGS_RETREAT_SPEED 13
 
 /* the follower's state (the first outputs are the state after a sample) */
 #define HYBRID_PATH_STATE_SIZE 6
@@ -121,6 +122,8 @@ static inline int hybrid_path_settings_valid(const double *settings) {
         && isfinite(settings[HYBRID_PATH_SETTINGS_ACCELERATION]) && settings[HYBRID_PATH_SETTINGS_ACCELERATION] > 0.0
         && isfinite(settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_GAIN])
         && settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_GAIN] >= 0.0
+        && isfinite(settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_LIMIT])
+        && settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_LIMIT] >= 0.0
         && settings[HYBRID_PATH_SETTINGS_TOUCH_FORCE] < 1e300
         && isfinite(settings[HYBRID_PATH_SETTINGS_SAMPLE_TIME]) && settings[HYBRID_PATH_SETTINGS_SAMPLE_TIME] > 0.0
         && isfinite(settings[HYBRID_PATH_SETTINGS_UNLOAD_TIME]) && settings[HYBRID_PATH_SETTINGS_UNLOAD_TIME] >= 0.0
@@ -151,6 +154,22 @@ static inline long hybrid_path_row(const double *table, long rows, long hint, do
     while (i < rows - 2 && s >= HYBRID_PATH_AT(table, i + 1, HYBRID_PATH_TABLE_S)) ++i;
     while (i > 0 && s < HYBRID_PATH_AT(table, i, HYBRID_PATH_TABLE_S)) --i;
     return i;
+}
+
+/* the row whose node is nearest p (a search of every node: where the follower starts, wherever the tip is) */
+static inline long hybrid_path_nearest(const double *table, long rows, const double *p) {
+    long i, best = 0;
+    double d, least = HUGE_VAL, r[3];
+    int k;
+    for (i = 0; i < rows; ++i) {
+        for (k = 0; k < 3; ++k) r[k] = p[k] - HYBRID_PATH_AT(table, i, HYBRID_PATH_TABLE_P_X + k);
+        d = hybrid_path_dot3(r, r);
+        if (d < least) {
+            least = d;
+            best = i;
+        }
+    }
+    return best;
 }
 
 /* the path at s within row i: its point c, unit tangent t and, with n given, the surface's unit normal
@@ -223,8 +242,10 @@ static inline int hybrid_path_follow(const double *table, const double *settings
         phase = (int)fmax(fmin(state[HYBRID_PATH_STATE_PHASE], HYBRID_PATH_CLEAR), HYBRID_PATH_APPROACH);
         phase_time = state[HYBRID_PATH_STATE_PHASE_TIME] + dt;
     } else {
-        s = settings[HYBRID_PATH_SETTINGS_START];
-        travelled = 0.0;
+        /* the first sample: from the path's node nearest the tip (on an open path, what lies before it counts as
+           travelled from the start) */
+        s = HYBRID_PATH_AT(table, hybrid_path_nearest(table, rows, p), HYBRID_PATH_TABLE_S);
+        travelled = closed ? 0.0 : s - settings[HYBRID_PATH_SETTINGS_START];
         phase = HYBRID_PATH_APPROACH;
         phase_time = 0.0;
     }
@@ -325,7 +346,9 @@ static inline int hybrid_path_follow(const double *table, const double *settings
     }
     out[HYBRID_PATH_OUT_SPEED] = v;
     out[HYBRID_PATH_OUT_SPEED_RATE] = rate;
-    out[HYBRID_PATH_OUT_LATERAL_SPEED] = -settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_GAIN] * d;
+    out[HYBRID_PATH_OUT_LATERAL_SPEED] = fmax(fmin(-settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_GAIN] * d,
+                                                   settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_LIMIT]),
+                                              -settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_LIMIT]);
     out[HYBRID_PATH_OUT_LATERAL_RATE] = lateral_rate;
     out[HYBRID_PATH_OUT_NORMAL_REFERENCE] = normal;
     out[HYBRID_PATH_OUT_CROSS_TRACK] = d;

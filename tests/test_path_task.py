@@ -327,6 +327,6 @@ def test_the_whole_task_in_standalone_c_equals_the_controller(tmp_path):
         assert np.frombuffer(c.ffi.buffer(c.c.selection), float).tolist() == py.step_inputs()["selection"].tolist()
     assert seen == set(range(len(PATH_PHASES)))
     py.reset()
-    getattr(c.lib, "ur5_task_controller_reset")(c.c)
+    c.lib.ur5_task_controller_reset(c.c)
     assert np.frombuffer(c.ffi.buffer(c.c.gains), float).tolist() == py.step_inputs()["gains"].tolist()
     assert py.step_inputs()["selection"].tolist() == py.step_inputs(at_start=True)["selection"].tolist()

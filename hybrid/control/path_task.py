@@ -20,6 +20,7 @@ from hybrid.control.task_settings import gain_array
 from hybrid.errors import HybridError, NonFiniteError
 from hybrid.geometry.paths import CirclePath, Path
 from hybrid.geometry.surface_points import project_points
+from hybrid.geometry.surfaces import Surface
 from hybrid.native import loader
 from hybrid.spec.controller_step import LOOP_GAINS, NO_LIMIT
 from hybrid.spec.path_follow import PATH_OUTPUT, PATH_SETTINGS, PATH_STATE, PATH_STATUSES, PATH_TABLE
@@ -33,6 +34,12 @@ CURVATURE_STEP = 1e-4
 ARC_LENGTH_TOL = 1e-2
 #: a touch force of minus this: touching from the start (the controller's "off", as its loss threshold's)
 NO_TOUCH = 1e300
+#: the most nodes a path's table may have (8 bytes times 13 numbers each: about 100 MB)
+MAX_ROWS = 1_000_000
+#: the least cosine of the turn between neighbouring nodes' tangents (a cusp reverses the tangent)
+MAX_TURN = 0.0
+#: the largest cross-track gain times the sample period: a correction sampled slower is not a first-order lag
+MAX_GAIN_SAMPLES = 0.5
 
 
 @dataclass(frozen=True)
@@ -61,7 +68,8 @@ class PathTask:
         default a tenth of the speed there.
     cross_track_gain : float
         [1/s] the cross-track error ``d`` is corrected by the velocity reference ``-gain d`` along ``t2``
-        (a time constant of ``1 / gain``).
+        (a time constant of ``1 / gain``), at most the task's speed in magnitude; ``gain`` times the sample
+        period at most 0.5.
     laps : float, optional
         A closed path's number of laps (None: it runs until the experiment ends); an open path runs to
         its end.
@@ -75,7 +83,9 @@ class PathTask:
         [m/s] the speed of the retreat.
     spacing : float
         The longest distance [m] between the table's nodes (the interpolation's error is about
-        ``spacing^4 kappa^3 / 384``: 1e-10 m at 1 mm on a curve of 1 cm radius).
+        ``spacing^4 kappa^3 / 384``: 1e-10 m at 1 mm on a curve of 1 cm radius); at most a million nodes.
+        A path whose tangent turns by more than 90 degrees between nodes (a cusp, or a turn the spacing
+        does not resolve) is refused.
 
     Examples
     --------
@@ -183,6 +193,10 @@ class PathTask:
     def _nodes(self, length: float) -> np.ndarray:
         """The table's arc lengths: at most ``spacing`` apart, with a node at every joint of the path's pieces
         (where its curvature may jump, which no cubic between nodes would follow)."""
+        if length / self.spacing > MAX_ROWS:
+            raise HybridError(f"PathTask.spacing = {self.spacing} m asks {length / self.spacing:.3g} nodes for a "
+                              f"{length:.4g} m path (at most {MAX_ROWS:.0e}); give a spacing of at least "
+                              f"{length / MAX_ROWS:.3g} m")
         joints = np.asarray(getattr(self.path, "joints", (0.0, length)), dtype=float)
         breaks = np.unique(np.clip(np.concatenate([[0.0, length], joints]), 0.0, length))
         breaks = breaks[np.concatenate([[True], np.diff(breaks) > 1e-9 * length])]
@@ -190,6 +204,10 @@ class PathTask:
         parts = [np.linspace(a, b, int(math.ceil((b - a) / self.spacing)) + 1)[:-1]
                  for a, b in zip(breaks[:-1], breaks[1:])]
         return np.concatenate([*parts, [length]])
+
+    def force_at(self, s: float) -> float:
+        """The force [N] at the arc length ``s`` [m] (``force``, checked)."""
+        return float(self._profile("force", np.array([float(s)]))[0])
 
     def _profile(self, name: str, s: np.ndarray) -> np.ndarray:
         value = getattr(self, name)
@@ -229,14 +247,33 @@ class PathTask:
         settings : ndarray, shape (8,)
             Rows, closed, length, start, distance to travel, start speed, acceleration, cross-track gain.
         """
+        if not isinstance(surface, Surface):
+            raise HybridError(f"PathTask.table: surface = {shown(surface, 60)}; give the hybrid surface the path is on")
+        _finite("PathTask.table", sample_time=sample_time)
+        if not sample_time > 0:
+            raise HybridError(f"PathTask.table: sample_time = {sample_time} s; give a positive sample period")
+        if self.cross_track_gain * sample_time > MAX_GAIN_SAMPLES:
+            raise HybridError(f"PathTask.cross_track_gain = {self.cross_track_gain} 1/s is too fast for the sample "
+                              f"period {sample_time} s (gain x period = {self.cross_track_gain * sample_time:.3g}, at "
+                              f"most {MAX_GAIN_SAMPLES}); give a gain up to {MAX_GAIN_SAMPLES / sample_time:.4g} 1/s")
         length, closed = self._shape()
         s = self._nodes(length)
         rows = len(s)
         points, tangents, normals, kappa = self._frames(surface, s)
         if closed:  # one point at both ends
             points[-1], tangents[-1], normals[-1], kappa[-1] = points[0], tangents[0], normals[0], kappa[0]
+        turn = np.einsum("ij,ij->i", tangents[:-1], tangents[1:])
+        if turn.min() < MAX_TURN:
+            i = int(np.argmin(turn))
+            raise HybridError(f"PathTask.path = {type(self.path).__name__} turns by "
+                              f"{math.degrees(math.acos(max(-1.0, turn[i]))):.0f} degrees from s = {s[i]:.4g} m to "
+                              f"{s[i + 1]:.4g} m: a cusp, or a turn the node spacing does not resolve; give a smooth "
+                              "path (a turn of some radius), or a smaller spacing")
+        # the chord of an arc turning by theta is ds (1 - theta^2 / 24): farther off, s is not the arc length
         chords = np.linalg.norm(np.diff(points, axis=0), axis=1)
-        stretch = np.abs(chords / np.diff(s) - 1)
+        ds = np.diff(s)
+        expected = ds * (1 - np.arccos(np.clip(turn, -1.0, 1.0)) ** 2 / 24)
+        stretch = np.abs(chords / expected - 1)
         if stretch.max() > ARC_LENGTH_TOL:
             i = int(np.argmax(stretch))
             raise HybridError(f"PathTask.path = {type(self.path).__name__} is not parametrised by arc length: from s = "
@@ -268,7 +305,7 @@ class PathTask:
         table = np.column_stack([s, points, tangents, normals, kappa_g, speed, force])
         settings = {"rows": rows, "closed": float(closed), "length": length, "start": start, "distance": distance,
                     "speed_start": speed_start, "acceleration": self.acceleration,
-                    "cross_track_gain": self.cross_track_gain,
+                    "cross_track_gain": self.cross_track_gain, "cross_track_limit": peak,
                     "touch_force": -NO_TOUCH if touch_force is None else float(touch_force),
                     "sample_time": float(sample_time), "unload_time": self.unload_time,
                     "retreat_distance": self.retreat_distance, "retreat_speed": self.retreat_speed}

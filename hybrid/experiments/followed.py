@@ -55,7 +55,7 @@ def task_references(exp) -> None:
         raise HybridError(f"path_task = {shown(task, 60)}; give a hybrid.PathTask(path, speed=..., force=...) or None")
     if exp.path is not None or exp.start_point is not None:
         raise HybridError("path_task runs its own path from its start: leave path and start_point out")
-    force = float(task.force(task.path.start) if callable(task.force) else task.force)
+    force = task.force_at(task.path.start)
     derived = {"force_reference": Step(force, force, 0.0), "speed_reference": Step(0.0, 0.0, 0.0)}
     for name, value in derived.items():
         given = getattr(exp, name)
@@ -65,7 +65,7 @@ def task_references(exp) -> None:
         object.__setattr__(exp, name, value)
     # the task frame's direction: the path's at its start (the controller's follower sets it each sample)
     surface = exp.surface if exp.controller_surface is None else exp.controller_surface
-    start = tuple(PathFollower(task, surface).start_direction().tolist())
+    start = tuple(PathFollower(task, surface, exp.sample_time).start_direction().tolist())
     given = exp.frame_direction
     if given is not None and not np.allclose(frame_direction_of(given), start, rtol=0, atol=1e-9):
         raise HybridError(f"frame_direction = {shown(given, 60)}: with a path_task the direction is the path's (n x t, "

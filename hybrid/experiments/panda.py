@@ -87,4 +87,7 @@ def panda_experiment(**overrides) -> Experiment:
     if isinstance(surface, Cylinder) and "start_point" not in overrides:
         # the default start, moved radially onto a cylinder of the caller's (the path runs through it)
         defaults["start_point"] = tuple(surface.project(START_POINT).tolist())
+    if "path_task" in overrides:  # the task gives the references and the start
+        for name in ("force_reference", "speed_reference", "start_point"):
+            defaults.pop(name, None)
     return with_overrides(Experiment, "panda_experiment", overrides, defaults)

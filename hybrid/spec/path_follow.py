@@ -13,8 +13,9 @@ curve of curvature ``kappa``); the normal, the geodesic curvature and the profil
 linearly. Each sample:
 
 1. the progress ``s`` moves to the path's point nearest the tip (Newton steps on ``(p - c(s)) . t(s)``
-   from the last sample's ``s``: the measured motion along the path), within the path (an open path
-   ends; a closed one wraps), and ``travelled`` (the arc length since the start) with it;
+   from the last sample's ``s``: the measured motion along the path; at the first sample, from the node
+   nearest the tip), within the path (an open path ends; a closed one wraps), and ``travelled`` (the arc
+   length since the start) with it;
 2. at ``c(s)``: the tangent ``t``, the surface's normal ``n`` and the cross-track direction
    ``e = n x t``, which, as the task frame's direction, makes ``t1 = e x n = t`` and ``t2 = n x t1 = e``;
 3. the phase (:data:`PATH_PHASES`): before the first touch (the measured normal force below ``touch_force``)
@@ -24,7 +25,8 @@ linearly. Each sample:
    ``retreat_speed`` until it is that far from the surface, where it stops;
 4. the speed along ``t1``: the table's speed bounded by the acceleration from ``speed_start`` since the
    start and, on an open path, by the deceleration to 0 at its end (a trapezoid in arc length), and its
-   rate ``v dv/ds``; on ``t2``: ``-cross_track_gain * d`` for the cross-track error ``d = (p - c) . e``,
+   rate ``v dv/ds``; on ``t2``: ``-cross_track_gain * d`` for the cross-track error ``d = (p - c) . e``
+   (at most ``cross_track_limit`` in magnitude),
    and the centripetal feedforward ``kappa_g v^2`` of the path's turn on the surface (the task frame's
    rate, computed for a fixed direction, does not carry it); on ``n``: the table's force.
 """
@@ -37,12 +39,13 @@ from __future__ import annotations
 PATH_TABLE = ("s", "p_x", "p_y", "p_z", "t_x", "t_y", "t_z", "n_x", "n_y", "n_z", "kappa_g", "speed", "force")
 #: the follower's settings: the table's rows, 1 for a closed path, its length [m], the arc length where the
 #: run starts [m], the arc length to travel [m] (an open path: to its end), the speed at the start [m/s], the
-#: acceleration limit along the path [m/s^2], the cross-track gain [1/s], the normal force [N] from which the
+#: acceleration limit along the path [m/s^2], the cross-track gain [1/s] and the largest correction [m/s] (the
+#: task's speed), the normal force [N] from which the
 #: tip touches (-1e300: touching from the start), the sample period [s], the time [s] over which the force is
 #: released at the end, the distance [m] the tip retreats from the surface then (0: it stays, pressing) and its
 #: speed [m/s]
 PATH_SETTINGS = ("rows", "closed", "length", "start", "distance", "speed_start", "acceleration",
-                 "cross_track_gain", "touch_force", "sample_time", "unload_time", "retreat_distance",
+                 "cross_track_gain", "cross_track_limit", "touch_force", "sample_time", "unload_time", "retreat_distance",
                  "retreat_speed")
 #: the follower's state: the progress ``s`` [m] (the arc length of the path's point nearest the tip), the arc
 #: length travelled [m], the table's row that holds ``s`` (a hint), 1 once started, the phase
