@@ -206,7 +206,18 @@ class PathTask:
         return np.concatenate([*parts, [length]])
 
     def force_at(self, s: float) -> float:
-        """The force [N] at the arc length ``s`` [m] (``force``, checked)."""
+        """The task's force at an arc length.
+
+        Parameters
+        ----------
+        s : float
+            The arc length [m].
+
+        Returns
+        -------
+        float
+            ``force`` there [N], checked to be a finite number.
+        """
         return float(self._profile("force", np.array([float(s)]))[0])
 
     def _profile(self, name: str, s: np.ndarray) -> np.ndarray:

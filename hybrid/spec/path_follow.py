@@ -45,8 +45,8 @@ PATH_TABLE = ("s", "p_x", "p_y", "p_z", "t_x", "t_y", "t_z", "n_x", "n_y", "n_z"
 #: released at the end, the distance [m] the tip retreats from the surface then (0: it stays, pressing) and its
 #: speed [m/s]
 PATH_SETTINGS = ("rows", "closed", "length", "start", "distance", "speed_start", "acceleration",
-                 "cross_track_gain", "cross_track_limit", "touch_force", "sample_time", "unload_time", "retreat_distance",
-                 "retreat_speed")
+                 "cross_track_gain", "cross_track_limit", "touch_force", "sample_time", "unload_time",
+                 "retreat_distance", "retreat_speed")
 #: the follower's state: the progress ``s`` [m] (the arc length of the path's point nearest the tip), the arc
 #: length travelled [m], the table's row that holds ``s`` (a hint), 1 once started, the phase
 #: (:data:`PATH_PHASES`) and the time in it [s]
