@@ -4,6 +4,7 @@ distance from the path and the force, the controller's state rules, and the refu
 
 from __future__ import annotations
 
+import json
 import math
 import shutil
 import subprocess
@@ -234,10 +235,25 @@ def test_bad_paths_and_experiments_are_refused():
         hybrid.Controller(hybrid.paper_arm(), hybrid.Circle((1.0, 1.0), 0.5), path_task=task)
 
 
-def test_a_saved_experiment_does_not_carry_a_path_task_yet():
-    exp = hybrid.tracing_experiment(surface=PLANE, path_task=hybrid.PathTask(raster()), duration=0.1)
+@pytest.mark.parametrize("path", [raster(), hybrid.SpiralPath(SPHERE, SPIRAL_CENTER, 0.01, 2.0, start_radius=0.01),
+                                  hybrid.WaypointPath(CYLINDER, on_cylinder([[0.62, -0.05, 0.1], [0.6, 0.0, 0.13],
+                                                                             [0.61, 0.05, 0.12]]), closed=True)],
+                         ids=["raster", "spiral", "waypoints"])
+def test_a_path_task_is_saved_and_loaded(tmp_path, path):
+    task = hybrid.PathTask(path, speed=0.08, force=12.0, retreat_distance=0.01, laps=1.0 if path.closed else None)
+    exp = hybrid.tracing_experiment(surface=path.surface, path_task=task, duration=0.3)
+    back = hybrid.Experiment.from_dict(json.loads(json.dumps(exp.to_dict())))
+    assert back.path_task.path.arguments() == path.arguments()
+    assert np.array_equal(back.path_task.table(path.surface)[0], task.table(path.surface)[0])  # the same path
+    res = hybrid.simulate(exp)
+    res.save(tmp_path / "run.npz")
+    loaded = hybrid.SimulationResult.load(tmp_path / "run.npz")
+    assert loaded.metrics["path_error_rms_m"] == res.metrics["path_error_rms_m"]
     with pytest.raises(hybrid.HybridError, match="not written to a file"):
-        exp.to_dict()
+        hybrid.tracing_experiment(surface=PLANE, duration=0.1,
+                                  path_task=hybrid.PathTask(raster(), force=lambda s: 10.0)).to_dict()
+    with pytest.raises(hybrid.HybridError, match="of one's own is not written"):
+        hybrid.tracing_experiment(surface=PLANE, duration=0.1, path_task=hybrid.PathTask(Arc())).to_dict()
 
 
 @pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")

@@ -315,5 +315,5 @@ def test_the_experiment_refuses_a_path_its_tip_does_not_follow(frame):
         exp = hybrid.tracing_experiment(path=path, frame=frame, start_point=tuple(start))
         r_d, _ = exp.desired_point(0.0)
         assert np.linalg.norm(r_d - start) < 1e-9
-    with pytest.raises(hybrid.HybridError, match="only a CirclePath or LinePath is written"):
+    with pytest.raises(hybrid.HybridError, match="a path of one.s own is not written"):
         hybrid.tracing_experiment(path=Latitude(), start_point=tuple(start)).to_dict()

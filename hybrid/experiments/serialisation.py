@@ -13,12 +13,15 @@ import numpy as np
 from hybrid.control.fault import FaultReaction
 from hybrid.control.loops import Gains
 from hybrid.control.options import Posture
+from hybrid.control.path_task import PathTask
 from hybrid.control.references import Step
 from hybrid.control.wrench_sensor import Tool, WrenchSensor
 from hybrid.deprecation import renamed_keys
 from hybrid.errors import HybridError
 from hybrid.geometry.paths import CirclePath, LinePath
+from hybrid.geometry.patterns import RasterPath, SpiralPath
 from hybrid.geometry.surfaces import SURFACE_KINDS, Circle, Plane, Surface
+from hybrid.geometry.waypoints import WaypointPath
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot
 from hybrid.models.urdf import JointLimits, LinkInertia
@@ -35,14 +38,11 @@ def experiment_to_dict(exp) -> dict:
     d["robot"] = robot_to_dict(exp.robot)
     d["surface"] = surface_to_dict(exp.surface)
     d["controller_surface"] = None if exp.controller_surface is None else surface_to_dict(exp.controller_surface)
-    if d.get("path_task") is not None:
-        raise HybridError("path_task: a path task's path is not written to a file; keep the experiment in Python "
-                          "(its results save)")
-    d.pop("path_task", None)  # None: as saved before experiments took one
-    if exp.path is not None and not isinstance(exp.path, (CirclePath, LinePath)):
-        raise HybridError(f"path = {type(exp.path).__name__}: only a CirclePath or LinePath is written to a file; "
-                          "give one of them, or keep the experiment in Python")
-    d["path"] = None if exp.path is None else {"kind": type(exp.path).__name__, **asdict(exp.path)}
+    if exp.path_task is None:
+        del d["path_task"]  # as saved before experiments took one
+    else:
+        d["path_task"] = path_task_to_dict(exp.path_task)
+    d["path"] = None if exp.path is None else path_to_dict(exp.path, "path")
     d["start_point"] = None if exp.start_point is None else list(exp.start_point)
     d["frame_direction"] = list(exp.frame_direction)
     d["axes"] = list(exp.axes) if isinstance(exp.axes, tuple) else exp.axes
@@ -88,8 +88,9 @@ def _settings(d: dict) -> dict:
     if d.get("controller_surface") is not None:
         d["controller_surface"] = surface_from_dict(d["controller_surface"])
     if d["path"] is not None:
-        path = dict(d["path"])
-        d["path"] = {"CirclePath": CirclePath, "LinePath": LinePath}[path.pop("kind")](**path)
+        d["path"] = path_from_dict(d["path"])
+    if d.get("path_task") is not None:
+        d["path_task"] = path_task_from_dict(d["path_task"])
     if d["posture"] is not None:
         d["posture"] = Posture(**d["posture"])
     for name in ("wrench_sensor", "controller_wrench_sensor"):
@@ -140,6 +141,47 @@ def robot_from_dict(d: dict) -> Robot:
     links = tuple(LinkInertia(lk["mass"], tuple(lk["com"]), rows(lk["inertia"])) for lk in d["links"])
     limits = None if d["limits"] is None else JointLimits(**{k: np.array(v, float) for k, v in d["limits"].items()})
     return Robot(d["name"], chain, links, tuple(d["damping"]), tuple(d["gravity"]), limits)
+
+
+#: the paths a file names, by kind: the closed forms (their fields) and the paths drawn on a surface (the
+#: surface and what they were made from)
+PATH_KINDS = {cls.__name__: cls for cls in (CirclePath, LinePath, WaypointPath, RasterPath, SpiralPath)}
+
+
+def path_to_dict(path, owner: str) -> dict:
+    """A path as JSON-ready data (its kind and what makes it); a path of one's own is refused."""
+    kind = type(path).__name__
+    if PATH_KINDS.get(kind) is not type(path):
+        raise HybridError(f"{owner} = {kind}: a path of one's own is not written to a file (only "
+                          f"{', '.join(PATH_KINDS)}); keep the experiment in Python")
+    if isinstance(path, (CirclePath, LinePath)):
+        return {"kind": kind, **asdict(path)}
+    return {"kind": kind, "surface": surface_to_dict(path.surface), **path.arguments()}
+
+
+def path_from_dict(d: dict):
+    """The path :func:`path_to_dict` wrote."""
+    d = dict(d)
+    cls = PATH_KINDS[d.pop("kind")]
+    if "surface" in d:
+        d["surface"] = surface_from_dict(d["surface"])
+    return cls(**d)
+
+
+def path_task_to_dict(task: PathTask) -> dict:
+    """A path task as JSON-ready data; one whose speed or force is a function is refused."""
+    d = {f.name: getattr(task, f.name) for f in fields(task)}
+    for name in ("speed", "force"):
+        if callable(d[name]):
+            raise HybridError(f"path_task.{name} is a function: a profile of one's own is not written to a file; "
+                              "give a number, or keep the experiment in Python")
+    d["path"] = path_to_dict(task.path, "path_task.path")
+    return d
+
+
+def path_task_from_dict(d: dict) -> PathTask:
+    """The path task :func:`path_task_to_dict` wrote."""
+    return PathTask(**{**d, "path": path_from_dict(d["path"])})
 
 
 def surface_to_dict(surface: Surface) -> dict:

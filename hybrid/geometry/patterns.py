@@ -54,6 +54,13 @@ def _count(owner: str, name: str, value) -> int:
     return int(value)
 
 
+def _plain(value):
+    """A given number or point as JSON-ready data (None stays None)."""
+    if value is None:
+        return None
+    return np.asarray(value, dtype=float).tolist()
+
+
 class _PlanarPieces(SurfacePath):
     """A path drawn in the tangent plane at ``origin`` (axes ``d``, ``c``) as lines and circular arcs,
     each parametrised by its own arc length in the plane."""
@@ -106,7 +113,11 @@ class RasterPath(_PlanarPieces):
         _finite(owner, start=start)
         self.surface, self.closed, self.start = surface, False, float(start)
         self.pass_length, self.spacing, self.passes, self.turn_radius = pass_length, spacing, passes, radius
+        given = {"origin": origin, "direction": direction}
         origin, d, c, _ = tangent_plane(owner, surface, origin, direction)
+        self._given = {**{k: _plain(v) for k, v in given.items()}, "pass_length": float(pass_length),
+                       "spacing": float(spacing), "passes": passes, "turn_radius": _plain(turn_radius),
+                       "start": self.start}
         gap = max(spacing - 2 * radius, 0.0)
         pieces, is_pass = [], []
         for k in range(passes):
@@ -148,12 +159,15 @@ class SpiralPath(SurfacePath):
             raise HybridError(f"SpiralPath.start_radius = {start_radius} m; give 0 or a positive radius")
         self.surface, self.closed, self.start = surface, False, float(start)
         self.pitch, self.turns, self.start_radius = pitch, turns, start_radius
+        given = {"center": center, "direction": direction}
         if direction is None:  # base x, or base y where the normal is along base x
             check_surface(owner, surface)
             p = np.array(_point(owner, "center", center, (3,)))
             (_,), (n,) = project_points(surface, p[None, :], owner)
             direction = (1.0, 0.0, 0.0) if abs(n[0]) < 0.9 else (0.0, 1.0, 0.0)
         self.center, self._d, self._c, _ = tangent_plane(owner, surface, center, direction)
+        self._given = {**{k: _plain(v) for k, v in given.items()}, "pitch": float(pitch), "turns": float(turns),
+                       "start_radius": float(start_radius), "start": self.start}
         self._tabulate([0.0, 2 * math.pi * turns])
 
     def _base(self, piece, u):

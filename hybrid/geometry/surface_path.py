@@ -176,6 +176,11 @@ class SurfacePath(Path):
         speed2 = float(d1 @ d1)
         return (d2 - (d2 @ d1) / speed2 * d1) / speed2
 
+    def arguments(self) -> dict:
+        """What the path was made from, but its surface, as JSON-ready data (its class takes them back:
+        ``type(path)(path.surface, **path.arguments())``)."""
+        return dict(self._given)
+
     @property
     def joints(self) -> np.ndarray:
         """The arc lengths [m] where the pieces meet (the curvature may jump there), from 0 to ``length``."""

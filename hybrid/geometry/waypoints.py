@@ -97,6 +97,7 @@ class WaypointPath(SurfacePath):
                               + ("leave the first point out at the end: closed=True returns to it" if last
                                  else "give each point once"))
         self.points = projected
+        self._given = {"points": given.tolist(), "closed": self.closed, "start": self.start}
         self.knots = np.concatenate([[0.0], np.cumsum(chord)])
         self._M = cubic_spline(self.knots, projected, self.closed)
         self._ring = ring
