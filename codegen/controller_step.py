@@ -441,8 +441,10 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
          Arg("task_velocity", R6 @ v, "m/s, rad/s", names=AXIS_NAMES),
          Arg("task_wrench", R6 @ at_tip, "N, N m", names=AXIS_NAMES),
          Arg("compensated", compensated, ("N",) * 3 + ("N m",) * 3, names=WRENCH),
-         Arg("contact_wrench", at_tip, ("N",) * 3 + ("N m",) * 3, names=WRENCH)),
-        "what the controller measures: tip position p and twist v = (p', w) in base axes; the sensor's "
+         Arg("contact_wrench", at_tip, ("N",) * 3 + ("N m",) * 3, names=WRENCH),
+         Arg("R", ca.vec(arm.frames.tip_R.T), "1", names=tuple(f"R_{i}{j}" for i in range(1, 4) for j in range(1, 4)))),
+        "what the controller measures: tip position p, the tip frame's rotation R (row by row; its third column "
+        "the tool's axis) and twist v = (p', w) in base axes; the sensor's "
         "reading less its bias and the tool's weight (sensor axes) and the wrench on the robot at the tip F_c "
         "(base axes, before the filter); on all six task axes at the tip the task velocity R v and the task "
         "wrench R F_c", batched=("q", "qd", "Fc"), guards=(frame_guard(tf_now.sine),))

@@ -212,7 +212,9 @@ def build_standalone_controller(step: Kernel, stop: Kernel, prefix: str, what: s
         measure = path["measure"]
         kernels += (measure,)
         t1, t2, n = path["axes"]
+        spins = path.get("spins")
         context["path"] = {"measure": measure, "measure_outs": measure.core_outputs(), "t1": t1, "t2": t2, "n": n,
+                           "spins": spins,
                            "measure_call": {"q": "q", "qd": "qd", "Fc": "wrench"},
                            "gains_at": len(LOOP_GAINS) * n,
                            "force_gains": [_number(x) for x in values["gains"][len(LOOP_GAINS) * n:

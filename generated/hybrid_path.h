@@ -1,10 +1,10 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 2572d7add5f1f412a6c5abdd0d69bc8a01cfbedd1f8957e96b130a951f94597c */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: a2ebd6dff01ea8d10eab45a295b142de4b5e7563f0ef184d82304625eb52ddea */
 #ifndef HYBRID_PATH_H
 #define HYBRID_PATH_H
 /* The path follower: a path on a surface as a table, followed from the tip's measured position.
    Standalone C99: no allocation, no globals, no I/O; reentrant (the state is the caller's).
 
-   Each sample: status = hybrid_path_follow(table, settings, state, p, force, out);  (force: 3 numbers)
+   Each sample: status = hybrid_path_follow(table, settings, state, p, R, force, out);  (R: 9, force: 3 numbers)
    then state = out[0 .. HYBRID_PATH_STATE_SIZE - 1] (the first outputs are the state after the sample), and
    out gives the task frame's direction e (HYBRID_PATH_OUT_E_X..Z) and the loops' references.
 
@@ -14,7 +14,7 @@
 #include <math.h>
 
 /* a node's numbers: one row of the table */
-#define HYBRID_PATH_TABLE_SIZE 13
+#define HYBRID_PATH_TABLE_SIZE 15
 #define HYBRID_PATH_TABLE_S 0
 #define HYBRID_PATH_TABLE_P_X 1
 #define HYBRID_PATH_TABLE_P_Y 2
@@ -28,9 +28,11 @@
 #define HYBRID_PATH_TABLE_KAPPA_G 10
 #define HYBRID_PATH_TABLE_SPEED 11
 #define HYBRID_PATH_TABLE_FORCE 12
+#define HYBRID_PATH_TABLE_TILT 13
+#define HYBRID_PATH_TABLE_LEAD 14
 
 /* the follower's settings */
-#define HYBRID_PATH_SETTINGS_SIZE 14
+#define HYBRID_PATH_SETTINGS_SIZE 15
 #define HYBRID_PATH_SETTINGS_ROWS 0
 #define HYBRID_PATH_SETTINGS_CLOSED 1
 #define HYBRID_PATH_SETTINGS_LENGTH 2
@@ -45,6 +47,7 @@
 #define HYBRID_PATH_SETTINGS_UNLOAD_TIME 11
 #define HYBRID_PATH_SETTINGS_RETREAT_DISTANCE 12
 #define HYBRID_PATH_SETTINGS_RETREAT_SPEED 13
+#define HYBRID_PATH_SETTINGS_ORIENTATION_GAIN 14
 
 /* the follower's state (the first outputs are the state after a sample) */
 #define HYBRID_PATH_STATE_SIZE 6
@@ -56,7 +59,7 @@
 #define HYBRID_PATH_STATE_PHASE_TIME 5
 
 /* what a sample gives */
-#define HYBRID_PATH_OUT_SIZE 28
+#define HYBRID_PATH_OUT_SIZE 31
 #define HYBRID_PATH_OUT_S 0
 #define HYBRID_PATH_OUT_TRAVELLED 1
 #define HYBRID_PATH_OUT_ROW 2
@@ -85,6 +88,9 @@
 #define HYBRID_PATH_OUT_HEIGHT 25
 #define HYBRID_PATH_OUT_DONE 26
 #define HYBRID_PATH_OUT_RETREAT 27
+#define HYBRID_PATH_OUT_SPIN_T1 28
+#define HYBRID_PATH_OUT_SPIN_T2 29
+#define HYBRID_PATH_OUT_TOOL_ANGLE_ERROR 30
 
 #define HYBRID_PATH_COLUMNS HYBRID_PATH_TABLE_SIZE
 /* the phases (HYBRID_PATH_OUT_PHASE) */
@@ -104,6 +110,20 @@
 #define HYBRID_PATH_AT(table, i, k) ((table)[(long)(i) * HYBRID_PATH_COLUMNS + (k)])
 
 static inline double hybrid_path_dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+static inline void hybrid_path_cross3(const double *a, const double *b, double *c) {
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* v turned by the angle (cos c, sin s) about the unit axis k (Rodrigues), into out */
+static inline void hybrid_path_turn(const double *v, const double *k, double c, double s, double *out) {
+    double kxv[3], kv = hybrid_path_dot3(k, v);
+    int i;
+    hybrid_path_cross3(k, v, kxv);
+    for (i = 0; i < 3; ++i) out[i] = c * v[i] + s * kxv[i] + (1.0 - c) * kv * k[i];
+}
 
 /* 1: the settings are values the follower can use: a whole number of rows >= 2, closed 0 or 1, a positive
    length, a start within it, a distance, a start speed and a cross-track gain >= 0, a positive acceleration */
@@ -129,7 +149,9 @@ static inline int hybrid_path_settings_valid(const double *settings) {
         && isfinite(settings[HYBRID_PATH_SETTINGS_UNLOAD_TIME]) && settings[HYBRID_PATH_SETTINGS_UNLOAD_TIME] >= 0.0
         && isfinite(settings[HYBRID_PATH_SETTINGS_RETREAT_DISTANCE])
         && settings[HYBRID_PATH_SETTINGS_RETREAT_DISTANCE] >= 0.0
-        && isfinite(settings[HYBRID_PATH_SETTINGS_RETREAT_SPEED]) && settings[HYBRID_PATH_SETTINGS_RETREAT_SPEED] >= 0.0;
+        && isfinite(settings[HYBRID_PATH_SETTINGS_RETREAT_SPEED]) && settings[HYBRID_PATH_SETTINGS_RETREAT_SPEED] >= 0.0
+        && isfinite(settings[HYBRID_PATH_SETTINGS_ORIENTATION_GAIN])
+        && settings[HYBRID_PATH_SETTINGS_ORIENTATION_GAIN] >= 0.0;
 }
 
 /* 1: the whole table is finite, starts at arc length 0, grows strictly and ends at the length (a check for
@@ -210,17 +232,19 @@ static inline int hybrid_path_at(const double *table, long i, double s, double *
     return 1;
 }
 
-/* One sample: from the follower's state, the tip's position p [m, base axes] and the contact force on the
-   robot there (force, 3 numbers [N, base axes]: along n, positive pressing), the outputs out (HYBRID_PATH_OUT_*: the state
+/* One sample: from the follower's state, the tip's position p [m, base axes], the tip frame's rotation R (9
+   numbers, row by row: its third column is the tool's axis) and the contact force on the robot there (force, 3
+   numbers [N, base axes]: along n, positive pressing), the outputs out (HYBRID_PATH_OUT_*: the state
    after the sample first). Returns HYBRID_PATH_OK, or a status with out unwritten: HYBRID_PATH_INPUT_NONFINITE
    (p, the force or the state is not finite), HYBRID_PATH_TABLE_INVALID (the settings, or the nodes the sample
    reads) */
 static inline int hybrid_path_follow(const double *table, const double *settings, const double *state,
-                                     const double *p, const double *force, double *out) {
+                                     const double *p, const double *R, const double *force, double *out) {
     long rows, i;
     int k, step, closed, phase;
     double length, distance, s, travelled, c[3], t[3], n[3], e[3], r[3], u = 0.0, v, rate, a, d, rn, lateral;
     double v_table, kappa_g, normal, advance, phase_time, dt, touch, lateral_rate, retreat = 0.0, done;
+    double tilt, lead, tool[3], z0[3], z1[3], zd[3], w[3], gain;
     const double *na, *nb;
     if (!hybrid_path_settings_valid(settings)) return HYBRID_PATH_TABLE_INVALID;
     for (k = 0; k < 3; ++k)
@@ -229,6 +253,8 @@ static inline int hybrid_path_follow(const double *table, const double *settings
         if (!isfinite(state[k])) return HYBRID_PATH_INPUT_NONFINITE;
     for (k = 0; k < 3; ++k)
         if (!isfinite(force[k])) return HYBRID_PATH_INPUT_NONFINITE;
+    for (k = 0; k < 9; ++k)
+        if (!isfinite(R[k])) return HYBRID_PATH_INPUT_NONFINITE;
     rows = (long)settings[HYBRID_PATH_SETTINGS_ROWS];
     closed = settings[HYBRID_PATH_SETTINGS_CLOSED] == 1.0;
     length = settings[HYBRID_PATH_SETTINGS_LENGTH];
@@ -278,6 +304,8 @@ static inline int hybrid_path_follow(const double *table, const double *settings
     kappa_g = (1.0 - u) * na[HYBRID_PATH_TABLE_KAPPA_G] + u * nb[HYBRID_PATH_TABLE_KAPPA_G];
     normal = (1.0 - u) * na[HYBRID_PATH_TABLE_FORCE] + u * nb[HYBRID_PATH_TABLE_FORCE];
     v_table = (1.0 - u) * na[HYBRID_PATH_TABLE_SPEED] + u * nb[HYBRID_PATH_TABLE_SPEED];
+    tilt = (1.0 - u) * na[HYBRID_PATH_TABLE_TILT] + u * nb[HYBRID_PATH_TABLE_TILT];
+    lead = (1.0 - u) * na[HYBRID_PATH_TABLE_LEAD] + u * nb[HYBRID_PATH_TABLE_LEAD];
     /* e = n x t: the task frame's direction, so that t1 = e x n = t and t2 = n x t1 = e */
     e[0] = n[1] * t[2] - n[2] * t[1];
     e[1] = n[2] * t[0] - n[0] * t[2];
@@ -324,9 +352,9 @@ static inline int hybrid_path_follow(const double *table, const double *settings
     }
     if (phase == HYBRID_PATH_UNLOAD) {
         /* linearly from the path's force down to the touch force (at least 0) */
-        double floor_force = fmax(touch, 0.0), w = settings[HYBRID_PATH_SETTINGS_UNLOAD_TIME] > 0.0
+        double floor_force = fmax(touch, 0.0), left = settings[HYBRID_PATH_SETTINGS_UNLOAD_TIME] > 0.0
             ? fmax(1.0 - phase_time / settings[HYBRID_PATH_SETTINGS_UNLOAD_TIME], 0.0) : 0.0;
-        normal = floor_force + w * (normal - floor_force);
+        normal = floor_force + left * (normal - floor_force);
     }
     if (phase >= HYBRID_PATH_RETREAT) {
         retreat = 1.0;
@@ -356,6 +384,18 @@ static inline int hybrid_path_follow(const double *table, const double *settings
     out[HYBRID_PATH_OUT_HEIGHT] = rn;
     out[HYBRID_PATH_OUT_DONE] = done;
     out[HYBRID_PATH_OUT_RETREAT] = retreat;
+    /* the tool's axis towards -n turned by the lead about t2 (= e), then by the tilt about t1 (= t) */
+    for (k = 0; k < 3; ++k) {
+        tool[k] = R[3 * k + 2];
+        z0[k] = -n[k];
+    }
+    hybrid_path_turn(z0, e, cos(lead), sin(lead), z1);
+    hybrid_path_turn(z1, t, cos(tilt), sin(tilt), zd);
+    hybrid_path_cross3(tool, zd, w);
+    gain = settings[HYBRID_PATH_SETTINGS_ORIENTATION_GAIN];
+    out[HYBRID_PATH_OUT_SPIN_T1] = gain * hybrid_path_dot3(w, t);
+    out[HYBRID_PATH_OUT_SPIN_T2] = gain * hybrid_path_dot3(w, e);
+    out[HYBRID_PATH_OUT_TOOL_ANGLE_ERROR] = atan2(sqrt(hybrid_path_dot3(w, w)), hybrid_path_dot3(tool, zd));
     return HYBRID_PATH_OK;
 }
 
@@ -363,13 +403,13 @@ static inline int hybrid_path_follow(const double *table, const double *settings
    runtime's cffi module defines HYBRID_PATH_ENTRY_POINTS before it includes this header). */
 /* cdef-begin */
 int hybrid_path_follow_entry(const double *table, const double *settings, const double *state, const double *p,
-                             const double *force, double *out);
+                             const double *R, const double *force, double *out);
 int hybrid_path_table_entry(const double *table, const double *settings);
 /* cdef-end */
 #ifdef HYBRID_PATH_ENTRY_POINTS
 int hybrid_path_follow_entry(const double *table, const double *settings, const double *state, const double *p,
-                             const double *force, double *out) {
-    return hybrid_path_follow(table, settings, state, p, force, out);
+                             const double *R, const double *force, double *out) {
+    return hybrid_path_follow(table, settings, state, p, R, force, out);
 }
 int hybrid_path_table_entry(const double *table, const double *settings) {
     return hybrid_path_table_valid(table, settings);

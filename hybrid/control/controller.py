@@ -565,8 +565,8 @@ class Controller:
         the parameters it changes (``e``, and at the retreat the normal axis's selection and gains)."""
         p = self.step_inputs()
         m = self._measure(q, qdot, Fc, p["surface"], p["e"], p["robot"], p["sensor"], self._estimate)
-        changed = self._path_task.write(m["p"].ravel(), m["contact_wrench"].ravel()[:3], p, self._extra, self._rate,
-                                        self._z)
+        changed = self._path_task.write(m["p"].ravel(), m["R"].ravel(), m["contact_wrench"].ravel()[:3], p,
+                                        self._extra, self._rate, self._z)
         if changed:  # the follower's unit e, and a selection and gains of 0/1 and >= 0: their checks hold
             self._params = tuple(changed.get(name, a) for name, a in zip(PARAMETERS, self._params))
             self._bind()

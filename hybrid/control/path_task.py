@@ -38,6 +38,8 @@ NO_TOUCH = 1e300
 MAX_ROWS = 1_000_000
 #: the least cosine of the turn between neighbouring nodes' tangents (a cusp reverses the tangent)
 MAX_TURN = 0.0
+#: the largest tilt or lead angle [rad] (80 degrees: the tool well off the surface's plane)
+MAX_ANGLE = math.radians(80.0)
 #: the largest cross-track gain times the sample period: a correction sampled slower is not a first-order lag
 MAX_GAIN_SAMPLES = 0.5
 
@@ -81,6 +83,15 @@ class PathTask:
         [s] the time over which the force is released before the retreat.
     retreat_speed : float
         [m/s] the speed of the retreat.
+    tilt, lead : float or callable
+        [rad] the tool's angles from the normal, numbers or functions of the arc length: its axis (the tip
+        frame's z) is ``-n`` turned by ``lead`` about ``t2`` (positive: its tip trails, the flange leads along
+        ``t1``), then by ``tilt`` about ``t1``; each below 80 degrees. They need the rotational task axes
+        about ``t1`` and ``t2`` (``axes="all"``), velocity-controlled.
+    orientation_gain : float
+        [1/s] the tool's axis turns towards the tilted one at this rate (angular velocity references about
+        ``t1`` and ``t2``), on a task with those rotational axes; its product with the sample period at
+        most 0.5.
     spacing : float
         The longest distance [m] between the table's nodes (the interpolation's error is about
         ``spacing^4 kappa^3 / 384``: 1e-10 m at 1 mm on a curve of 1 cm radius); at most a million nodes.
@@ -109,15 +120,21 @@ class PathTask:
     retreat_distance: float = 0.0
     unload_time: float = 0.2
     retreat_speed: float = 0.02
+    tilt: float | Callable[[float], float] = 0.0
+    lead: float | Callable[[float], float] = 0.0
+    orientation_gain: float = 10.0
 
     def __post_init__(self):
         if not isinstance(self.path, Path):
             raise HybridError(f"PathTask.path = {shown(self.path, 60)}; give a hybrid path (WaypointPath, RasterPath, "
                               "SpiralPath, CirclePath, or a subclass of hybrid.geometry.paths.Path)")
-        for name in ("speed", "force"):
+        for name in ("speed", "force", "tilt", "lead"):
             value = getattr(self, name)
             if not callable(value):
                 _finite("PathTask", **{name: value})
+        _finite("PathTask", orientation_gain=self.orientation_gain)
+        if self.orientation_gain < 0:
+            raise HybridError(f"PathTask.orientation_gain = {self.orientation_gain} 1/s; give a gain >= 0")
         _finite("PathTask", acceleration=self.acceleration, cross_track_gain=self.cross_track_gain,
                 spacing=self.spacing)
         if not self.acceleration > 0:
@@ -205,6 +222,22 @@ class PathTask:
                  for a, b in zip(breaks[:-1], breaks[1:])]
         return np.concatenate([*parts, [length]])
 
+    def angles_at(self, s: float) -> tuple[float, float]:
+        """The tool's angles at an arc length.
+
+        Parameters
+        ----------
+        s : float
+            The arc length [m].
+
+        Returns
+        -------
+        tuple of float
+            ``(tilt, lead)`` there [rad], each checked to be a finite number.
+        """
+        at = np.array([float(s)])
+        return float(self._profile("tilt", at)[0]), float(self._profile("lead", at)[0])
+
     def force_at(self, s: float) -> float:
         """The task's force at an arc length.
 
@@ -253,8 +286,8 @@ class PathTask:
 
         Returns
         -------
-        table : ndarray, shape (rows, 13)
-            One node per row: arc length, point, tangent, normal, geodesic curvature, speed, force.
+        table : ndarray, shape (rows, 15)
+            One node per row: arc length, point, tangent, normal, geodesic curvature, speed, force, tilt, lead.
         settings : ndarray, shape (8,)
             Rows, closed, length, start, distance to travel, start speed, acceleration, cross-track gain.
         """
@@ -263,10 +296,12 @@ class PathTask:
         _finite("PathTask.table", sample_time=sample_time)
         if not sample_time > 0:
             raise HybridError(f"PathTask.table: sample_time = {sample_time} s; give a positive sample period")
-        if self.cross_track_gain * sample_time > MAX_GAIN_SAMPLES:
-            raise HybridError(f"PathTask.cross_track_gain = {self.cross_track_gain} 1/s is too fast for the sample "
-                              f"period {sample_time} s (gain x period = {self.cross_track_gain * sample_time:.3g}, at "
-                              f"most {MAX_GAIN_SAMPLES}); give a gain up to {MAX_GAIN_SAMPLES / sample_time:.4g} 1/s")
+        for name in ("cross_track_gain", "orientation_gain"):
+            gain = getattr(self, name)
+            if gain * sample_time > MAX_GAIN_SAMPLES:
+                raise HybridError(f"PathTask.{name} = {gain} 1/s is too fast for the sample period {sample_time} "
+                                  f"s (gain x period = {gain * sample_time:.3g}, at most {MAX_GAIN_SAMPLES}); give a "
+                                  f"gain up to {MAX_GAIN_SAMPLES / sample_time:.4g} 1/s")
         length, closed = self._shape()
         s = self._nodes(length)
         rows = len(s)
@@ -292,6 +327,12 @@ class PathTask:
                               "at arc length s")
         kappa_g = np.einsum("ij,ij->i", kappa, np.cross(normals, tangents))
         speed, force = self._profile("speed", s), self._profile("force", s)
+        tilt, lead = self._profile("tilt", s), self._profile("lead", s)
+        for name, angle in (("tilt", tilt), ("lead", lead)):
+            if np.abs(angle).max() >= MAX_ANGLE:
+                i = int(np.argmax(np.abs(angle)))
+                raise HybridError(f"PathTask.{name} at s = {s[i]:.4g} m is {math.degrees(angle[i]):.1f} degrees; give "
+                                  f"an angle from the normal below {math.degrees(MAX_ANGLE):.0f} degrees (in rad)")
         if not (speed > 0).all():
             i = int(np.flatnonzero(~(speed > 0))[0])
             raise HybridError(f"PathTask.speed at s = {s[i]:.4g} m is {speed[i]} m/s; give a positive speed")
@@ -313,13 +354,14 @@ class PathTask:
             raise HybridError(f"PathTask: at {self.acceleration} m/s^2 the speed {peak} m/s is not reached within the "
                               f"path ({distance:.4g} m to travel, {need:.4g} m needed to speed up and stop); lower "
                               "the speed or raise the acceleration")
-        table = np.column_stack([s, points, tangents, normals, kappa_g, speed, force])
+        table = np.column_stack([s, points, tangents, normals, kappa_g, speed, force, tilt, lead])
         settings = {"rows": rows, "closed": float(closed), "length": length, "start": start, "distance": distance,
                     "speed_start": speed_start, "acceleration": self.acceleration,
                     "cross_track_gain": self.cross_track_gain, "cross_track_limit": peak,
                     "touch_force": -NO_TOUCH if touch_force is None else float(touch_force),
                     "sample_time": float(sample_time), "unload_time": self.unload_time,
-                    "retreat_distance": self.retreat_distance, "retreat_speed": self.retreat_speed}
+                    "retreat_distance": self.retreat_distance, "retreat_speed": self.retreat_speed,
+                    "orientation_gain": self.orientation_gain}
         assert table.shape[1] == len(PATH_TABLE)
         return np.ascontiguousarray(table), np.array([settings[k] for k in PATH_SETTINGS], dtype=float)
 
@@ -356,13 +398,16 @@ class PathFollower:
                               "lengths do not grow); give a path defined along its whole length")
         self.state = np.zeros(len(PATH_STATE))
         self.out = np.zeros(len(PATH_OUTPUT))
-        self._p, self._force = np.zeros(3), np.zeros(3)
-        self._ptrs = [self._ffi.from_buffer("double[]", a) for a in (self.state, self._p, self._force, self.out)]
+        self._p, self._R, self._force = np.zeros(3), np.eye(3).ravel(), np.zeros(3)
+        self._ptrs = [self._ffi.from_buffer("double[]", a) for a in (self.state, self._p, self._R, self._force,
+                                                                       self.out)]
 
-    def follow(self, p, force) -> np.ndarray:
+    def follow(self, p, force, R=None) -> np.ndarray:
         """The outputs for the tip at ``p`` [m, base axes] under the contact force ``force`` [N, base axes: the
-        wrench on the robot] (the state stays until :meth:`advance`)."""
+        wrench on the robot], the tip frame's rotation ``R`` (3 x 3 or 9 numbers row by row; default the
+        identity: the spin references then turn base z) (the state stays until :meth:`advance`)."""
         self._p[:], self._force[:] = p, force
+        self._R[:] = np.eye(3).ravel() if R is None else np.ravel(R)
         status = self._lib.hybrid_path_follow_entry(self._table_ptr, self._settings_ptr, *self._ptrs)
         if status != PATH_STATUSES["PATH_OK"]:
             name = next(k for k, v in PATH_STATUSES.items() if v == status)
@@ -432,21 +477,32 @@ class PathReferences:
                               "position_error and path at their defaults")
         self.follower = PathFollower(task, surface, sample_time, touch_force)
         self._t1, self._t2, self._n = self.positions = axes.index(0), axes.index(1), axes.index(2)
+        # the rotations about t1 and t2, where the task has them: the tool's tilt and lead
+        self.spins = tuple(axes.index(i) for i in (3, 4)) if 3 in axes and 4 in axes else None
+        tilted = np.any(self.follower.table[:, [PATH_TABLE.index("tilt"), PATH_TABLE.index("lead")]] != 0)
+        if tilted and self.spins is None:
+            raise HybridError("path_task: a tilt or lead angle turns the tool about t1 and t2, which are not task "
+                              "axes here; give axes='all' (or leave tilt and lead 0)")
+        if self.spins is not None and any(selection[k] for k in self.spins):
+            raise HybridError("path_task: the rotations about t1 and t2 turn the tool to its tilt and lead: keep "
+                              "them velocity-controlled (leave them out of selection)")
         retreat = tuple(0 if k == self._n else s for k, s in enumerate(selection))
         k = len(LOOP_GAINS) * self._n
         self.retreat_gains = gain_array(gains, retreat)[k:k + len(LOOP_GAINS)]
         self.start_direction = self.follower.start_direction()
 
-    def write(self, p, force, params: dict, extra: np.ndarray, rate: np.ndarray,
+    def write(self, p, R, force, params: dict, extra: np.ndarray, rate: np.ndarray,
               integrals: np.ndarray) -> dict[str, np.ndarray]:
-        """The references for the tip at ``p`` [m] under the contact force ``force`` [N, base axes] into
-        ``extra`` and ``rate``; the step's parameters that change (of ``params``, by name: ``e`` as the path
-        turns, ``selection`` and ``gains`` at the retreat, whose normal axis's ``integrals`` it zeroes), as new
-        read-only arrays."""
-        out = self.follower.follow(p, force)
+        """The references for the tip at ``p`` [m] with the rotation ``R`` (9 numbers, row by row) under the
+        contact force ``force`` [N, base axes] into ``extra`` and ``rate``; the step's parameters that change
+        (of ``params``, by name: ``e`` as the path turns, ``selection`` and ``gains`` at the retreat, whose
+        normal axis's ``integrals`` it zeroes), as new read-only arrays."""
+        out = self.follower.follow(p, force, R)
         extra[self._t1], rate[self._t1] = out[_OUT["speed"]], out[_OUT["speed_rate"]]
         extra[self._t2], rate[self._t2] = out[_OUT["lateral_speed"]], out[_OUT["lateral_rate"]]
         extra[self._n] = out[_OUT["normal_reference"]]
+        if self.spins is not None:
+            extra[self.spins[0]], extra[self.spins[1]] = out[_OUT["spin_t1"]], out[_OUT["spin_t2"]]
         changed = {}
         if not np.array_equal(params["e"], out[_E]):
             changed["e"] = _fixed(out[_E].copy())

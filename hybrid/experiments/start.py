@@ -65,12 +65,14 @@ def start_state(exp) -> np.ndarray:
                           f"point on it (within {START_TOL * 1000:g} mm){hint}")
     seeds = (exp.q0, None if exp.posture is None else exp.posture.q_rest, _bounds(exp.robot))
     p0 = tuple(np.asarray(p0).tolist())
+    # the tool's tilt and lead at a path task's start (its axis from -n, where the task turns it)
+    angles = (0.0, 0.0) if exp.path_task is None else exp.path_task.angles_at(exp.path_task.path.start)
     if exp.start_gap > 0:
         # the sensor tip's weight hangs on its spring where the plant gives it gravity (the 3-D plant's)
         weight = exp.sensor.mass * np.array(exp.robot.gravity) if exp.robot.kind.sensor_weighs else np.zeros(3)
-        return _free_start(exp.robot, geometry, p0, exp.elbow, seeds, exp.frame_direction, exp.singular_tol,
-                           exp.start_gap, tuple((weight[:len(p0)] / exp.sensor.stiffness).tolist()))
-    return _pressed_start(exp.robot, geometry, p0, exp.elbow, seeds, exp.frame_direction,
+        return _free_start(exp.robot, geometry, p0, exp.elbow, seeds, (exp.frame_direction, angles),
+                           exp.singular_tol, exp.start_gap, tuple((weight[:len(p0)] / exp.sensor.stiffness).tolist()))
+    return _pressed_start(exp.robot, geometry, p0, exp.elbow, seeds, (exp.frame_direction, angles),
                           exp.singular_tol, exp.force_reference(0.0), exp.contact.stiffness, exp.sensor.stiffness)
 
 
@@ -90,26 +92,28 @@ def _probe(exp, p: np.ndarray) -> np.ndarray:
 
 # the runs of a sweep mostly start alike: what they share is worked out once (from the values it reads)
 @lru_cache(maxsize=1024)
-def _pressed_start(robot, surface, p0, elbow, seeds, frame_direction, singular_tol, F0, k_e, K_s) -> np.ndarray:
+def _pressed_start(robot, surface, p0, elbow, seeds, tool, singular_tol, F0, k_e, K_s) -> np.ndarray:
     normal = surface.normal_at(p0)
     s, r = pressed(p0, normal, F0, k_e, K_s)
-    return _at_rest(robot, normal, p0, s, r, elbow, seeds, frame_direction, singular_tol)
+    return _at_rest(robot, normal, p0, s, r, elbow, seeds, tool, singular_tol)
 
 
 @lru_cache(maxsize=1024)
-def _free_start(robot, surface, p0, elbow, seeds, frame_direction, singular_tol, gap, sag) -> np.ndarray:
+def _free_start(robot, surface, p0, elbow, seeds, tool, singular_tol, gap, sag) -> np.ndarray:
     normal = surface.normal_at(p0)
     s, r = free(p0, normal, gap, np.array(sag))
-    return _at_rest(robot, normal, p0, s, r, elbow, seeds, frame_direction, singular_tol, gap)
+    return _at_rest(robot, normal, p0, s, r, elbow, seeds, tool, singular_tol, gap)
 
 
-def _at_rest(robot, normal, p0, s, r, elbow, seeds, frame_direction, singular_tol, gap: float = 0.0) -> np.ndarray:
+def _at_rest(robot, normal, p0, s, r, elbow, seeds, tool, singular_tol, gap: float = 0.0) -> np.ndarray:
     """The state at rest with the sensor tip at ``s`` and the arm tip at ``r`` (the start point ``p0`` on
     the surface, its ``normal``), the joints from the true arm's inverse kinematics; ``seeds``: the user's
-    ``q0``, the posture's rest (each or None) and the joint position limits (:func:`_bounds`)."""
+    ``q0``, the posture's rest (each or None) and the joint position limits (:func:`_bounds`); ``tool``: the
+    task frame's direction and the tool's tilt and lead there [rad]."""
+    frame_direction, (tilt, lead) = tool
     given, rest, bounds = seeds
     # the tool's orientation is set where the task controls it (the planar arm's follows from r)
-    rotation = robot.kind.tool_rotation(lambda: _tool_rotation(np.asarray(frame_direction), normal))
+    rotation = robot.kind.tool_rotation(lambda: _tool_rotation(np.asarray(frame_direction), normal, tilt, lead))
     where = (f"start_gap = {gap:g} m puts the arm tip at {np.round(r, 4).tolist()} m" if gap > 0 else
              f"the start point {np.round(p0, 4).tolist()} m")
     fix = ("give a smaller start_gap, or move the surface or start_point" if gap > 0 else
@@ -194,11 +198,20 @@ def _check_within(robot, q: np.ndarray, bounds, given, where: str) -> None:
                       f"point\n  the start found: q = {np.round(q, 4).tolist()}")
 
 
-def _tool_rotation(e: np.ndarray, normal: np.ndarray) -> np.ndarray:
-    """The tool's start orientation: its z axis along ``-n``, its x axis along ``t1 = e x n``."""
+def _tool_rotation(e: np.ndarray, normal: np.ndarray, tilt: float = 0.0, lead: float = 0.0) -> np.ndarray:
+    """The tool's start orientation: its z axis along ``-n``, its x axis along ``t1 = e x n``; then turned by
+    ``lead`` about ``t2 = n x t1`` and by ``tilt`` about ``t1`` [rad] (a path task's, as its follower turns
+    the tool's axis)."""
     x_tool = np.cross(e, normal)
     if np.linalg.norm(x_tool) < 1e-6:
         raise HybridError("the task frame's direction e is parallel to the surface normal at the start point: the "
                           "task frame is undefined there; choose another frame_direction or start_point")
     x_tool /= np.linalg.norm(x_tool)
-    return np.column_stack([x_tool, np.cross(-normal, x_tool), -normal])
+    frame = np.column_stack([x_tool, np.cross(-normal, x_tool), -normal])
+    return _turn(x_tool, tilt) @ _turn(np.cross(normal, x_tool), lead) @ frame
+
+
+def _turn(k: np.ndarray, angle: float) -> np.ndarray:
+    """The rotation by ``angle`` [rad] about the unit axis ``k`` (Rodrigues)."""
+    K = np.array([[0.0, -k[2], k[1]], [k[2], 0.0, -k[0]], [-k[1], k[0], 0.0]])
+    return np.eye(3) + math.sin(angle) * K + (1 - math.cos(angle)) * K @ K

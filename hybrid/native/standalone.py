@@ -68,7 +68,8 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
                        if compiled_in["wrench_sensor"] else
                        "the force and moment on the robot at the tip frame's origin, base axes [N, N m]")}
     if follower is not None:
-        info["path_task"] = {"axes": list(path.positions), "rows": len(follower.table)}
+        info["path_task"] = {"axes": list(path.positions), "rows": len(follower.table),
+                             "spins": None if path.spins is None else list(path.spins)}
     key = {"chain": units.chain_key(variant["chain"]), "surface": spec.key(), **info, "values": values,
            "generator": generator.fingerprint(), "prefix": prefix, **({"stem": stem} if stem != prefix else {})}
     if follower is not None:
@@ -82,7 +83,7 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
                 f"'{variant['name']}' on a {spec.kind}, task axes {', '.join(ctrl.axis_names)}")
         task = None if follower is None else {"measure": kernels["task_measurement"], "axes": path.positions,
                                               "table": follower.table.ravel(), "settings": follower.settings,
-                                              "retreat_gains": path.retreat_gains}
+                                              "retreat_gains": path.retreat_gains, "spins": path.spins}
         files = api.build_standalone_controller(kernels[variant["step"]], stop, prefix, what, info, values, stem,
                                                 task).files
         if follower is not None:  # the follower's header, beside the controller that includes it

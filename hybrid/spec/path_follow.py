@@ -23,7 +23,11 @@ linearly. Each sample:
    (or a closed one's last lap) the force is released over ``unload_time`` down to ``touch_force``, then,
    with a ``retreat_distance``, the normal axis turns velocity-controlled and the tip leaves along ``n`` at
    ``retreat_speed`` until it is that far from the surface, where it stops;
-4. the speed along ``t1``: the table's speed bounded by the acceleration from ``speed_start`` since the
+4. the tool's axis (the tip frame's z axis, from the tip's rotation ``R``) is turned towards ``-n`` turned
+   by the lead angle about ``t2`` and then by the tilt angle about ``t1``: with ``w = z x z_d``, the angular
+   velocity references ``orientation_gain * (w . t1)`` and ``orientation_gain * (w . t2)`` (for the
+   rotational task axes about ``t1`` and ``t2``);
+5. the speed along ``t1``: the table's speed bounded by the acceleration from ``speed_start`` since the
    start and, on an open path, by the deceleration to 0 at its end (a trapezoid in arc length), and its
    rate ``v dv/ds``; on ``t2``: ``-cross_track_gain * d`` for the cross-track error ``d = (p - c) . e``
    (at most ``cross_track_limit`` in magnitude),
@@ -35,18 +39,20 @@ from __future__ import annotations
 
 #: a node's numbers, one row of the path's table: its arc length [m], point [m], unit tangent and the
 #: surface's unit normal there (towards the robot), the path's geodesic curvature (its turn on the surface,
-#: positive towards ``n x t``) [1/m], the speed [m/s] and the normal force [N] there
-PATH_TABLE = ("s", "p_x", "p_y", "p_z", "t_x", "t_y", "t_z", "n_x", "n_y", "n_z", "kappa_g", "speed", "force")
+#: positive towards ``n x t``) [1/m], the speed [m/s], the normal force [N] and the tool's tilt and lead angles [rad]
+#: there (:data:`PATH_OUTPUT`'s ``spin_t1``, ``spin_t2``)
+PATH_TABLE = ("s", "p_x", "p_y", "p_z", "t_x", "t_y", "t_z", "n_x", "n_y", "n_z", "kappa_g", "speed", "force",
+              "tilt", "lead")
 #: the follower's settings: the table's rows, 1 for a closed path, its length [m], the arc length where the
 #: run starts [m], the arc length to travel [m] (an open path: to its end), the speed at the start [m/s], the
 #: acceleration limit along the path [m/s^2], the cross-track gain [1/s] and the largest correction [m/s] (the
 #: task's speed), the normal force [N] from which the
 #: tip touches (-1e300: touching from the start), the sample period [s], the time [s] over which the force is
 #: released at the end, the distance [m] the tip retreats from the surface then (0: it stays, pressing) and its
-#: speed [m/s]
+#: speed [m/s], the gain [1/s] of the tool axis's correction towards its tilt and lead
 PATH_SETTINGS = ("rows", "closed", "length", "start", "distance", "speed_start", "acceleration",
                  "cross_track_gain", "cross_track_limit", "touch_force", "sample_time", "unload_time",
-                 "retreat_distance", "retreat_speed")
+                 "retreat_distance", "retreat_speed", "orientation_gain")
 #: the follower's state: the progress ``s`` [m] (the arc length of the path's point nearest the tip), the arc
 #: length travelled [m], the table's row that holds ``s`` (a hint), 1 once started, the phase
 #: (:data:`PATH_PHASES`) and the time in it [s]
@@ -59,10 +65,12 @@ PATH_PHASES = ("approach", "follow", "unload", "retreat", "clear")
 #: [m/s] and its rate [m/s^2]), of t2 (the cross-track correction [m/s] and the turn's feedforward [m/s^2]),
 #: of n (force [N]; in the retreat, speed [m/s]), the cross-track error ``d`` [m], the tip's distance from the
 #: path in the surface's tangent plane [m], its height above the path's point along ``n`` [m], 1 once the
-#: path is done (its end reached), 1 while the normal axis is velocity-controlled (the retreat)
+#: path is done (its end reached), 1 while the normal axis is velocity-controlled (the retreat), the angular
+#: velocity references about t1 and t2 [rad/s] turning the tool's axis towards the one its tilt and lead give,
+#: and the angle between the two [rad]
 PATH_OUTPUT = (*PATH_STATE, "c_x", "c_y", "c_z", "t_x", "t_y", "t_z", "n_x", "n_y", "n_z", "e_x", "e_y", "e_z",
                "speed", "speed_rate", "lateral_speed", "lateral_rate", "normal_reference", "cross_track", "path_error",
-               "height", "done", "retreat")
+               "height", "done", "retreat", "spin_t1", "spin_t2", "tool_angle_error")
 #: the follower's statuses: 0 the outputs are written; otherwise nothing is (the state stays)
 PATH_STATUSES = {"PATH_OK": 0, "PATH_INPUT_NONFINITE": 1, "PATH_TABLE_INVALID": 2}
 #: how close [m] to an open path's end counts as done
