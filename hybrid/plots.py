@@ -11,6 +11,8 @@ Figures (each returns a :class:`matplotlib.figure.Figure`; nothing is shown or s
   deviation from the desired path [mm] and penetration [mm] over time;
 - :func:`plot_first_touch`: runs from free space: the measured normal force and the surface's force on
   the sensor tip against the time from the first touch;
+- :func:`plot_path_force`: a 3-D run's sensor-tip trace on a light wireframe of its surface, coloured by
+  the measured normal force [N];
 - :func:`plot_normal_estimate`: an estimated surface's normal against the true one (or the angle
   between them [deg]) over time [s];
 - :func:`plot_sweep`: a sweep's metric over two swept settings, a panel per value of up to two
@@ -33,11 +35,13 @@ import numpy as np
 from hybrid import files
 from hybrid.deprecation import RENAMED
 from hybrid.errors import HybridError
+from hybrid.geometry.surface_points import project_points
 from hybrid.spec.metrics import METRICS
 
 matplotlib.use("Agg")  # files only: no display needed
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib import colors, ticker  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Line3DCollection  # noqa: E402
 
 # ------------------------------------------------------------------ styles and labels
 
@@ -261,14 +265,7 @@ def plot_path(results: dict, title: str | None = None):
         u, v = np.meshgrid(np.linspace(0, 2 * np.pi, 37), np.linspace(0, np.pi / 2, 7))
         ax3.plot_wireframe(c[0] + surface.radius * np.cos(u) * np.sin(v), c[1] + surface.radius * np.sin(u) * np.sin(v),
                            c[2] + surface.radius * np.cos(v), color="0.85", lw=0.4)
-    points = np.vstack([*tips, desired])
-    mid, half = (points.max(0) + points.min(0)) / 2, (points.max(0) - points.min(0)).max() / 2 * 1.05
-    ax3.set(xlim=(mid[0] - half, mid[0] + half), ylim=(mid[1] - half, mid[1] + half),
-            zlim=(mid[2] - half, mid[2] + half))
-    ax3.set_box_aspect((1, 1, 1))  # equal scales: a cube of equal spans
-    for axis, name in (("x", "x [m]"), ("y", "y [m]"), ("z", "z [m]")):
-        getattr(ax3, f"set_{axis}label")(name, fontsize=FONT)
-    ax3.tick_params(labelsize=FONT - 2)
+    _equal_scales(ax3, np.vstack([*tips, desired]))
     ax3.legend(fontsize=FONT - 1, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=2, frameon=False)
     ax3.set_title("the sensor tip's path (equal scales)", fontsize=FONT)
     across_ax.set_ylabel("deviation across\nthe desired path [mm]", fontsize=FONT)
@@ -280,6 +277,71 @@ def plot_path(results: dict, title: str | None = None):
     if title:
         fig.suptitle(title, fontsize=FONT + 1)
     return fig
+
+
+def _equal_scales(ax3, points: np.ndarray) -> None:
+    """The 3-D axes ``ax3`` about ``points`` (N x 3) [m] with equal scales (a cube of equal spans), labelled."""
+    mid, half = (points.max(0) + points.min(0)) / 2, (points.max(0) - points.min(0)).max() / 2 * 1.05
+    ax3.set(xlim=(mid[0] - half, mid[0] + half), ylim=(mid[1] - half, mid[1] + half),
+            zlim=(mid[2] - half, mid[2] + half))
+    ax3.set_box_aspect((1, 1, 1))
+    for axis in "xyz":
+        getattr(ax3, f"set_{axis}label")(f"{axis} [m]", fontsize=FONT)
+    ax3.tick_params(labelsize=FONT - 2)
+
+
+def plot_path_force(res, ax=None, *, every: int | None = None, cmap: str = "viridis", vmin: float | None = None,
+                    vmax: float | None = None, colorbar: bool = True):
+    """A 3-D run's sensor-tip trace on its surface, coloured by the measured normal force.
+
+    Parameters
+    ----------
+    res : SimulationResult
+        A run of an arm in space (e.g. along a :class:`~hybrid.PathTask`).
+    ax : mpl_toolkits.mplot3d.axes3d.Axes3D, optional
+        The 3-D axes to draw on; a new figure's when None.
+    every : int, optional
+        Draw every ``every``-th record row (default: about 3,000 points).
+    cmap, vmin, vmax
+        The colour map and the force range [N] it spans (default the plotted forces' range).
+    colorbar : bool
+        Add a colour bar of the force.
+
+    Returns
+    -------
+    Axes3D
+        The axes: the trace is its last collection, one segment per plotted point to the next, its
+        ``get_array()`` the measured normal force ``res.force_normal`` [N] at each segment's first
+        point; the surface, a light wireframe about the trace, beneath it; equal scales.
+    """
+    if not is_spatial(res):
+        raise HybridError("plot_path_force draws a run in space; this run is planar (plot it with plot_result)")
+    if ax is None:
+        ax = plt.figure(figsize=(6.0, 5.0), layout="constrained").add_subplot(projection="3d")
+    rows = _rows(res, every)
+    tip = np.column_stack([res.output(c)[rows] for c in ("s_x", "s_y", "s_z")])
+    force = res.force_normal[rows]
+    # the wireframe: a grid in the tangent plane at the trace's middle, 20 % wider, moved onto the surface
+    surface, mid = res.experiment.surface, (tip.max(0) + tip.min(0)) / 2
+    (centre,), (n,) = project_points(surface, mid[None, :], "plot_path_force")
+    u = np.cross(n, (1.0, 0.0, 0.0) if abs(n[0]) < 0.9 else (0.0, 1.0, 0.0))
+    u /= np.linalg.norm(u)
+    v = np.cross(n, u)
+    a, b = (tip - centre) @ u, (tip - centre) @ v
+    half = 0.6 * max(np.ptp(a), np.ptp(b), 1e-3)
+    A, B = np.meshgrid(np.linspace(-half, half, 15), np.linspace(-half, half, 15))
+    grid = centre + A.reshape(-1, 1) * u + B.reshape(-1, 1) * v
+    on, _ = project_points(surface, grid, "plot_path_force")
+    ax.plot_wireframe(*(on[:, i].reshape(A.shape) for i in range(3)), color="0.8", lw=0.4)
+    trace = Line3DCollection(np.stack([tip[:-1], tip[1:]], axis=1), cmap=cmap, lw=1.6,
+                             norm=colors.Normalize(force.min() if vmin is None else vmin,
+                                                   force.max() if vmax is None else vmax))
+    trace.set_array(force[:-1])
+    ax.add_collection(trace)
+    _equal_scales(ax, np.vstack([tip, on]))
+    if colorbar:
+        ax.figure.colorbar(trace, ax=ax, shrink=0.7, label="measured normal force [N]")
+    return ax
 
 
 def plot_normal_estimate(result, ax=None, *, angle: bool = False, label: str | None = None, color=None):
