@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: a2ebd6dff01ea8d10eab45a295b142de4b5e7563f0ef184d82304625eb52ddea */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 2da6bfd14c604accb13d12842c6b77c0c76526706f2ade84b14ad7e1b5bdfbfb */
 #ifndef HYBRID_PATH_H
 #define HYBRID_PATH_H
 /* The path follower: a path on a surface as a table, followed from the tip's measured position.
@@ -108,6 +108,15 @@
 #define HYBRID_PATH_NEWTON_STEPS 3
 
 #define HYBRID_PATH_AT(table, i, k) ((table)[(long)(i) * HYBRID_PATH_COLUMNS + (k)])
+
+/* the follower's arithmetic as written, in every build: no contraction into fused multiply-adds (a build
+   for this processor would contract, a strict one not), so every caller's follower gives the same numbers */
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#elif defined(__GNUC__)
+#pragma GCC push_options
+#pragma GCC optimize("fp-contract=off")
+#endif
 
 static inline double hybrid_path_dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
@@ -350,6 +359,12 @@ static inline int hybrid_path_follow(const double *table, const double *settings
         rate = 0.0;
         lateral_rate = 0.0;
     }
+    if (done == 1.0 && phase == HYBRID_PATH_FOLLOW && !closed) {
+        /* at an open path's end the tip is held there: its overshoot along the tangent corrected as the
+           cross-track error is */
+        double limit = settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_LIMIT];
+        v = fmax(fmin(-settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_GAIN] * hybrid_path_dot3(r, t), limit), -limit);
+    }
     if (phase == HYBRID_PATH_UNLOAD) {
         /* linearly from the path's force down to the touch force (at least 0) */
         double floor_force = fmax(touch, 0.0), left = settings[HYBRID_PATH_SETTINGS_UNLOAD_TIME] > 0.0
@@ -398,6 +413,10 @@ static inline int hybrid_path_follow(const double *table, const double *settings
     out[HYBRID_PATH_OUT_TOOL_ANGLE_ERROR] = atan2(sqrt(hybrid_path_dot3(w, w)), hybrid_path_dot3(tool, zd));
     return HYBRID_PATH_OK;
 }
+
+#if !defined(__clang__) && defined(__GNUC__)
+#pragma GCC pop_options
+#endif
 
 /* Entry points with external linkage, for a caller that binds the follower from another language (the
    runtime's cffi module defines HYBRID_PATH_ENTRY_POINTS before it includes this header). */

@@ -399,9 +399,9 @@ def test_a_tilted_tool_in_standalone_c_equals_the_controller(tmp_path):
         tau_py = py(t, q, qd, wrench)
         status, tau_c = c.step(t, q, qd, wrench)
         assert status == 0, c.name(status)
-        # the same C compiled twice (the runtime's build contracts to fused multiply-adds, the strict one does
-        # not): the rounding of the measured rotation reaches the law through the spin references, about 1e-12
-        # of the torque (1.4e-12 measured on this run)
+        # the measurement compiled twice (the runtime's build for this processor contracts into fused
+        # multiply-adds, the strict one does not): the tip rotation's rounding reaches the law through the spin
+        # references, amplified by the Panda's wrist (2e-12 of the torque measured on this run)
         assert np.max(np.abs(tau_c - tau_py)) <= 1e-11 * max(1.0, np.max(np.abs(tau_py)))
     spins = [OUT["spin_t1"], OUT["spin_t2"]]
     assert np.allclose(np.frombuffer(c.ffi.buffer(c.c.path), float)[spins], py.path_references.follower.out[spins],
