@@ -90,7 +90,7 @@ def test_the_follower_is_its_equations(path):
         v = out[OUT["speed"]]
         assert out[OUT["lateral_rate"]] == pytest.approx(kappa_g * v * v, rel=2e-2, abs=1e-6)
         assert v ** 2 * abs(kappa_g) <= task.acceleration * 1.02  # the turns' limit
-        assert out[OUT["normal_reference"]] == 10.0
+        assert out[OUT["normal_reference"]] == pytest.approx(10.0, rel=1e-15)
 
 
 def test_the_speed_is_a_trapezoid_in_arc_length():
