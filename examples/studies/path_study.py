@@ -115,10 +115,10 @@ def arm_path_error(res, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The follower replayed on ``points`` (one per control sample): the distance from the path [m] and
     whether the path is done."""
     exp = res.experiment
-    follower = PathFollower(exp.path_task, exp.surface)
+    follower = PathFollower(exp.path_task, exp.surface, exp.sample_time)
     out = np.empty((len(points), 2))
     for k, p in enumerate(points):
-        got = follower.follow(p)
+        got = follower.follow(p, np.zeros(3))
         out[k] = got[PATH_OUTPUT.index("path_error")], got[PATH_OUTPUT.index("done")]
         follower.advance()
     return out[:, 0], out[:, 1]
@@ -130,8 +130,8 @@ def split(res) -> dict:
     trails the arm, and the arm's own distance from the path."""
     exp = res.experiment
     series = path_series(res)
-    n = len(series["s"])
-    force_error = res.force_normal[::exp.steps_per_sample][:n] - series["force"]
+    len(series["s"])
+    force_error = series["normal_force"] - series["normal_reference"]
     running = series["done"] == 0
     s = series["s"]
     passes = [running & (s >= a) & (s <= b) for a, b in exp.path_task.path.pass_arcs]
