@@ -106,7 +106,7 @@ class PathTask:
     >>> task = hybrid.PathTask(raster, speed=0.1, force=10.0)
     >>> table, settings = task.table(plane)
     >>> table.shape[1], bool(settings[1])
-    (13, False)
+    (15, False)
     """
 
     path: Path
