@@ -406,3 +406,10 @@ def test_a_tilted_tool_in_standalone_c_equals_the_controller(tmp_path):
     spins = [OUT["spin_t1"], OUT["spin_t2"]]
     assert np.allclose(np.frombuffer(c.ffi.buffer(c.c.path), float)[spins], py.path_references.follower.out[spins],
                        rtol=1e-12, atol=1e-12)
+
+
+def test_a_path_out_of_the_arms_reach_is_refused_before_the_run():
+    far = hybrid.WaypointPath(PLANE, [PLANE.project(np.array(p)) for p in [(0.45, 0.0, 0.1), (1.4, 0.0, 0.1)]])
+    exp = hybrid.tracing_experiment(surface=PLANE, path_task=hybrid.PathTask(far, speed=0.2), duration=8.0)
+    with pytest.raises(hybrid.HybridError, match="leaves the arm's reach near s = "):
+        hybrid.simulate(exp)

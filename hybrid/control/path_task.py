@@ -164,8 +164,16 @@ class PathTask:
 
     # ------------------------------------------------------------------ the path as a table
 
-    def _shape(self) -> tuple[float, bool]:
-        """The path's length [m] and whether it is closed."""
+    def extent(self) -> tuple[float, bool]:
+        """The path's length and whether it is closed.
+
+        Returns
+        -------
+        length : float
+            [m] the path's arc length (a closed path's: one lap).
+        closed : bool
+            True for a closed path (it wraps around; ``laps`` says how often it is run).
+        """
         path = self.path
         closed = bool(getattr(path, "closed", isinstance(path, CirclePath)))
         length = 2 * math.pi * path.radius if isinstance(path, CirclePath) else getattr(path, "length", None)
@@ -302,7 +310,7 @@ class PathTask:
                 raise HybridError(f"PathTask.{name} = {gain} 1/s is too fast for the sample period {sample_time} "
                                   f"s (gain x period = {gain * sample_time:.3g}, at most {MAX_GAIN_SAMPLES}); give a "
                                   f"gain up to {MAX_GAIN_SAMPLES / sample_time:.4g} 1/s")
-        length, closed = self._shape()
+        length, closed = self.extent()
         s = self._nodes(length)
         rows = len(s)
         points, tangents, normals, kappa = self._frames(surface, s)

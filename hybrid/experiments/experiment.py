@@ -29,7 +29,7 @@ from hybrid.control.schemes import SCHEMES, scheme_of
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import RENAMED, RenamedKeywords, renamed_attribute
 from hybrid.errors import HybridError
-from hybrid.experiments.followed import check_followed, task_references
+from hybrid.experiments.followed import check_followed, check_reach, task_references
 from hybrid.experiments.serialisation import experiment_from_dict, experiment_to_dict
 from hybrid.experiments.settings import (
     TOUCH_THRESHOLD,
@@ -340,7 +340,11 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         return x0
 
     def check_path(self) -> None:
-        """Refuse a run whose desired path leaves the arm's workspace (where the reach is known)."""
+        """Refuse a run whose desired path leaves the arm's workspace (where the reach is known; a path task's
+        path, everywhere: :func:`~hybrid.experiments.followed.check_reach`)."""
+        if self.path_task is not None:
+            check_reach(self, self.initial_state()[:self.robot.n])
+            return
         reach, path = self.robot.reach(), self.followed_path()
         if reach is not None and path is not None:
             _check_path(reach, path, path.arc_of(self.start()), self.speed_reference, self.n_samples,

@@ -127,3 +127,27 @@ def _normals(surface, points: np.ndarray) -> np.ndarray:
     with np.errstate(all="ignore"):
         grads = np.array([phi(p)[1] for p in points], dtype=float)
         return np.nan_to_num(grads / np.linalg.norm(grads, axis=1)[:, None])
+
+
+#: the longest step [m] between the points of a path task's path the reach check solves the arm's pose at
+REACH_STEP = 0.01
+
+
+def check_reach(exp, q_start: np.ndarray) -> None:
+    """Refuse a path task whose path leaves the arm's reach: the true arm's inverse kinematics (position only)
+    at points along it at most :data:`REACH_STEP` apart, each from the last one's joints (the first from the
+    start's), as the arm would go."""
+    path = exp.path_task.path
+    length, closed = exp.path_task.extent()
+    s0 = float(np.mod(path.start, length)) if closed else float(path.start)
+    end = s0 + length if closed else length
+    s = np.linspace(s0, end, max(2, int(math.ceil((end - s0) / REACH_STEP)) + 1))
+    s = np.mod(s, length) if closed else s
+    q = np.asarray(q_start, dtype=float)
+    for si, p in zip(s, np.asarray(path.points_at(s), dtype=float)):
+        try:
+            q = exp.robot.inverse_kinematics(p, None, q0=q)
+        except HybridError:
+            raise HybridError(f"path_task: the path leaves the arm's reach near s = {si:.4g} m (point "
+                              f"{np.round(p, 4).tolist()} m: no joint positions put the tip there from the path's "
+                              "way up to it); move the part or the path, or shorten it") from None
