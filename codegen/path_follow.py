@@ -24,7 +24,13 @@ class _Group:
 
 
 def path_header() -> str:
-    """The text of :data:`PATH_HEADER`."""
+    """The follower's header.
+
+    Returns
+    -------
+    str
+        The text of :data:`PATH_HEADER`, C99, its layouts' macros from :mod:`hybrid.spec.path_follow`.
+    """
     layouts = [(_Group("TABLE", "a node's numbers: one row of the table"), spec.PATH_TABLE),
                (_Group("SETTINGS", "the follower's settings"), spec.PATH_SETTINGS),
                (_Group("STATE", "the follower's state (the first outputs are the state after a sample)"),

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 2da6bfd14c604accb13d12842c6b77c0c76526706f2ade84b14ad7e1b5bdfbfb */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: e8c50fc5837c951b171152aa3fc306193186a2406198a81b5246f48243a5b942 */
 #ifndef HYBRID_PATH_H
 #define HYBRID_PATH_H
 /* The path follower: a path on a surface as a table, followed from the tip's measured position.
@@ -179,12 +179,21 @@ static inline int hybrid_path_table_valid(const double *table, const double *set
         && HYBRID_PATH_AT(table, rows - 1, HYBRID_PATH_TABLE_S) == settings[HYBRID_PATH_SETTINGS_LENGTH];
 }
 
-/* the row i (0 .. rows - 2) whose interval [s_i, s_i+1) holds s, searched from the hint */
+/* the row i (0 .. rows - 2) whose interval [s_i, s_i+1) holds s: from the hint where s is a row or two away
+   from it (a sample's motion), else by bisection (a jump: a closed path's wrap, a start) */
 static inline long hybrid_path_row(const double *table, long rows, long hint, double s) {
-    long i = hint < 0 ? 0 : hint > rows - 2 ? rows - 2 : hint;
-    while (i < rows - 2 && s >= HYBRID_PATH_AT(table, i + 1, HYBRID_PATH_TABLE_S)) ++i;
-    while (i > 0 && s < HYBRID_PATH_AT(table, i, HYBRID_PATH_TABLE_S)) --i;
-    return i;
+    long i = hint < 0 ? 0 : hint > rows - 2 ? rows - 2 : hint, lo = 0, hi = rows - 2, steps;
+    for (steps = 0; steps < 2 && i < rows - 2 && s >= HYBRID_PATH_AT(table, i + 1, HYBRID_PATH_TABLE_S); ++steps)
+        ++i;
+    for (steps = 0; steps < 2 && i > 0 && s < HYBRID_PATH_AT(table, i, HYBRID_PATH_TABLE_S); ++steps) --i;
+    if ((i == rows - 2 || s < HYBRID_PATH_AT(table, i + 1, HYBRID_PATH_TABLE_S))
+        && (i == 0 || s >= HYBRID_PATH_AT(table, i, HYBRID_PATH_TABLE_S)))
+        return i;
+    while (lo < hi) { /* the last row whose s_i <= s */
+        long mid = lo + (hi - lo + 1) / 2;
+        if (HYBRID_PATH_AT(table, mid, HYBRID_PATH_TABLE_S) <= s) lo = mid; else hi = mid - 1;
+    }
+    return lo;
 }
 
 /* the row whose node is nearest p (a search of every node: where the follower starts, wherever the tip is) */
@@ -277,9 +286,22 @@ static inline int hybrid_path_follow(const double *table, const double *settings
         phase = (int)fmax(fmin(state[HYBRID_PATH_STATE_PHASE], HYBRID_PATH_CLEAR), HYBRID_PATH_APPROACH);
         phase_time = state[HYBRID_PATH_STATE_PHASE_TIME] + dt;
     } else {
-        /* the first sample: from the path's node nearest the tip (on an open path, what lies before it counts as
-           travelled from the start) */
-        s = HYBRID_PATH_AT(table, hybrid_path_nearest(table, rows, p), HYBRID_PATH_TABLE_S);
+        /* the first sample: from the path's start, unless the tip is clearly nearer another node (by more than the
+           nodes' spacing there: a start off the path's start, a reset mid-run); on an open path what lies before
+           that node counts as travelled from the start */
+        long start = hybrid_path_row(table, rows, 0, settings[HYBRID_PATH_SETTINGS_START]);
+        long near = hybrid_path_nearest(table, rows, p);
+        double gap = HYBRID_PATH_AT(table, start + 1, HYBRID_PATH_TABLE_S)
+                     - HYBRID_PATH_AT(table, start, HYBRID_PATH_TABLE_S);
+        double to_start = 0.0, to_near = 0.0;
+        for (k = 0; k < 3; ++k) {
+            double from_start = p[k] - HYBRID_PATH_AT(table, start, HYBRID_PATH_TABLE_P_X + k);
+            double from_near = p[k] - HYBRID_PATH_AT(table, near, HYBRID_PATH_TABLE_P_X + k);
+            to_start += from_start * from_start;
+            to_near += from_near * from_near;
+        }
+        s = sqrt(to_start) <= sqrt(to_near) + gap ? settings[HYBRID_PATH_SETTINGS_START]
+                                                  : HYBRID_PATH_AT(table, near, HYBRID_PATH_TABLE_S);
         travelled = closed ? 0.0 : s - settings[HYBRID_PATH_SETTINGS_START];
         phase = HYBRID_PATH_APPROACH;
         phase_time = 0.0;
@@ -359,9 +381,9 @@ static inline int hybrid_path_follow(const double *table, const double *settings
         rate = 0.0;
         lateral_rate = 0.0;
     }
-    if (done == 1.0 && phase == HYBRID_PATH_FOLLOW && !closed) {
-        /* at an open path's end the tip is held there: its overshoot along the tangent corrected as the
-           cross-track error is */
+    if (done == 1.0 && phase == HYBRID_PATH_FOLLOW) {
+        /* at the end (an open path's, a closed one's last lap) the tip is held there: its overshoot along the
+           tangent corrected as the cross-track error is */
         double limit = settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_LIMIT];
         v = fmax(fmin(-settings[HYBRID_PATH_SETTINGS_CROSS_TRACK_GAIN] * hybrid_path_dot3(r, t), limit), -limit);
     }

@@ -182,19 +182,61 @@ def test_a_force_profile_along_the_path():
     assert res.metrics["path_force_rms_error_N"] <= 0.05 * 4.0  # within 5 % of the profile's range
 
 
-def test_a_refused_or_repeated_sample_keeps_the_progress():
-    task = hybrid.PathTask(raster(), speed=0.1, force=10.0)
-    exp = hybrid.tracing_experiment(surface=PLANE, path_task=task, duration=0.1)
+def held_state(ctrl) -> list:
+    """What a sample that is not served must leave as it was: the follower's state and last outputs, the step's
+    parameters, the loops' integrals."""
+    return [ctrl.path_references.follower.state.copy(), ctrl.path_references.follower.served.copy(),
+            {k: v.copy() for k, v in ctrl.step_inputs().items()}, ctrl.state.copy()]
+
+
+def assert_same(a, b):
+    for x, y in zip(a, b):
+        if isinstance(x, dict):
+            assert all(np.array_equal(x[k], y[k]) for k in x)
+        else:
+            assert np.array_equal(x, y)
+
+
+def test_a_refused_or_repeated_sample_changes_nothing():
+    exp = whole_task(duration=4.6)
     ctrl = exp.build_controller()
     x0 = exp.initial_state()
     q, qd = x0[:6], x0[6:12]
     ctrl(0.0, q, qd, np.zeros(3))
-    before = ctrl.path_task
+    moved = q + 0.05  # the tip elsewhere: the follower would move on, and turn e
+    before = held_state(ctrl)
     with pytest.raises(hybrid.SampleTimingError):
-        ctrl(0.0, q, qd, np.zeros(3))  # no time passed: nothing changes
-    assert ctrl.path_task["s"] == before["s"] and ctrl.path_references.follower.state[3] == 1.0
+        ctrl(0.0, moved, qd, np.zeros(3))  # no time passed: nothing changes
+    assert_same(before, held_state(ctrl))
+    with pytest.raises(hybrid.HybridError):
+        ctrl(0.01, moved, qd, np.array([np.nan, 0.0, 0.0]))  # refused
+    assert_same(before, held_state(ctrl))
+    # at the retreat's first sample, repeated: the normal axis stays force-controlled
+    from test_standalone_controller import recorded_samples
+
+    samples = recorded_samples(exp)
+    ctrl.reset()
+    n = ctrl.path_references.positions[2]
+    switched = None
+    for k, sample in enumerate(samples):
+        before = held_state(ctrl)
+        ctrl(*sample)
+        if ctrl.step_inputs()["selection"][n] == 0.0:
+            switched = k
+            break
+    assert switched is not None, "the run never retreated"
+    k = switched
+    replay = exp.build_controller()
+    for t, q, qd, wrench in samples[:k]:
+        replay(t, q, qd, wrench)
+    assert_same(before, held_state(replay))
+    _, q, qd, wrench = samples[k]
+    with pytest.raises(hybrid.SampleTimingError):
+        replay(samples[k - 1][0], q, qd, wrench)  # the retreat's sample, but at the last one's time
+    assert_same(before, held_state(replay))
     ctrl.reset()
     assert not ctrl.path_references.follower.state.any()
+    assert ctrl.step_inputs()["selection"][n] == 1.0
 
 
 @pytest.mark.parametrize("bad, message", [
@@ -285,7 +327,7 @@ def test_the_standalone_c_carries_the_path_task(tmp_path):
         assert status == 0, c.name(status)
         worst = max(worst, float(np.max(np.abs(tau_c - tau_py)) / max(1.0, np.max(np.abs(tau_py)))))
         path_c = np.frombuffer(c.ffi.buffer(c.c.path), float)
-        np.testing.assert_allclose(path_c, py.path_references.follower.out, rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(path_c, py.path_references.follower.served, rtol=1e-12, atol=1e-12)
     assert worst < 1e-12
     assert py.path_task["travelled"] > 0.1  # it went along the path
     # one build serves every path: the struct pointed at another path's table follows that one
@@ -404,7 +446,7 @@ def test_a_tilted_tool_in_standalone_c_equals_the_controller(tmp_path):
         # references, amplified by the Panda's wrist (2e-12 of the torque measured on this run)
         assert np.max(np.abs(tau_c - tau_py)) <= 1e-11 * max(1.0, np.max(np.abs(tau_py)))
     spins = [OUT["spin_t1"], OUT["spin_t2"]]
-    assert np.allclose(np.frombuffer(c.ffi.buffer(c.c.path), float)[spins], py.path_references.follower.out[spins],
+    assert np.allclose(np.frombuffer(c.ffi.buffer(c.c.path), float)[spins], py.path_references.follower.served[spins],
                        rtol=1e-12, atol=1e-12)
 
 

@@ -17,7 +17,7 @@ from hybrid.control.fault import FaultMonitor, FaultReaction, finite_time, time_
 from hybrid.control.loops import Gains
 from hybrid.control.measurement import Measurement, padded_vector, wrench_of
 from hybrid.control.options import ContactLoss, Posture, call_user, check_posture
-from hybrid.control.path_task import PATH_CHANGES, PathReferences, PathTask
+from hybrid.control.path_task import PATH_CHANGES, PATH_SAMPLE_TIME, PathReferences, PathTask
 from hybrid.control.schemes import Scheme, scheme_of
 from hybrid.control.task_settings import axis_references, gain_array, gains_of, joint_limit, selection_of
 from hybrid.control.wrench_sensor import WrenchSensor
@@ -212,11 +212,7 @@ class Controller:
             frame != "actual" or position_error or path is not None)
         if path_task is not None:  # its references are the follower's, added to these; its direction the path's
             force_reference = {"n": 0.0}
-            start = tuple(self._path_task.start_direction)
-            if frame_direction is not None and not np.allclose(self.frame_direction, start, rtol=0, atol=1e-9):
-                raise HybridError(f"frame_direction = {shown(frame_direction, 60)}: with a path task the direction is "
-                                  f"the path's (n x t, {np.round(start, 6).tolist()} at its start); leave it out")
-            self.frame_direction = start
+            self.frame_direction = path_task.frame_direction(self._spatial, frame_direction)
         self._references = axis_references(self.axes, self.selection, force_reference, velocity_reference)
         # a posture has its own generated step (the law plus tau0), so the law without one stays the very code
         # it was, bit for bit; both are in the same unit, and the posture's numbers are run-time inputs of both
@@ -541,15 +537,23 @@ class Controller:
         # repeated or backwards: no time passed, so nothing advances (every output into scratch arrays)
         held = timing in HELD_STATUSES
         out = self._out if timing is None else self._out_held if held else self._out_off_time
+        undo = None  # what a path task changed for this sample, undone unless it is served as time passes
         if not self._short:
             self._python_references(t)
             if self.path is not None:
                 self._target[:] = self._desired(t)
             if self._path_task is not None:
-                self._follow(q, qdot, Fc)
-        done = self._into(self._binding, out, q, qdot, Fc, *self._held)
-        if done is None:
-            self._checked(q, qdot, Fc, out)
+                undo = self._follow(q, qdot, Fc)
+        try:
+            done = self._into(self._binding, out, q, qdot, Fc, *self._held)
+            if done is None:
+                self._checked(q, qdot, Fc, out)
+        except HybridError:
+            if undo:
+                undo()
+            raise
+        if held and undo:
+            undo()
         if not held:
             if self._path_task is not None:
                 self._path_task.follower.advance()
@@ -560,16 +564,30 @@ class Controller:
             raise SampleTimingError(timing, t, clock, self.sample_time, out[0].copy())
         return out[0].copy()
 
-    def _follow(self, q, qdot, Fc) -> None:
+    def _follow(self, q, qdot, Fc):
         """The path task's references for the tip at ``q`` under the wrench ``Fc``; the step's binding follows
-        the parameters it changes (``e``, and at the retreat the normal axis's selection and gains)."""
+        the parameters it changes (``e``, and at the retreat the normal axis's selection and gains, its
+        integrals zero). Returns what undoes those changes (None: none), for a sample that is not served."""
+        self._check_joint_state(q, qdot)
+        self._path_task.follower.settings[PATH_SAMPLE_TIME] = self.sample_time  # one sample period: the step's
         p = self.step_inputs()
         m = self._measure(q, qdot, Fc, p["surface"], p["e"], p["robot"], p["sensor"], self._estimate)
         changed = self._path_task.write(m["p"].ravel(), m["R"].ravel(), m["contact_wrench"].ravel()[:3], p,
-                                        self._extra, self._rate, self._z)
-        if changed:  # the follower's unit e, and a selection and gains of 0/1 and >= 0: their checks hold
-            self._params = tuple(changed.get(name, a) for name, a in zip(PARAMETERS, self._params))
+                                        self._extra, self._rate)
+        if not changed:
+            return None
+        params, integrals = self._params, self._z.copy()
+        # the follower's unit e, and a selection and gains of 0/1 and >= 0: their checks hold
+        self._params = tuple(changed.get(name, a) for name, a in zip(PARAMETERS, self._params))
+        if "selection" in changed:  # the normal axis turns velocity-controlled: its loop starts afresh
+            n = self._path_task.positions[2]
+            self._z[2 * n:2 * n + 2] = 0.0
+        self._bind()
+
+        def undo():
+            self._params, self._z[:] = params, integrals
             self._bind()
+        return undo
 
     @property
     def path_references(self) -> PathReferences | None:
@@ -631,6 +649,16 @@ class Controller:
         here changes nothing (the outputs are written only when the step succeeds), the clock neither,
         as in the generated C."""
         t = self._t[0]
+        self._check_joint_state(q, qdot)
+        if np.isfinite(Fc).all() and not all(np.isfinite(v).all() for v in (self._extra, self._rate, self._target)):
+            raise HybridError(f"the references at t = {t} s are not finite; give references that return finite "
+                              f"numbers\n  values {self._extra}, rates {self._rate}, desired point {self._target}")
+        got = self._step(q, qdot, Fc, *self._held, *self._bound_refs, *self._params, singular_tol=self.singular_tol)
+        for (name, _, _), o in zip(self._step.outputs, out):
+            o[:] = got[name].ravel()
+
+    def _check_joint_state(self, q, qdot) -> None:
+        """Refuse joint positions or velocities that are not one finite number per joint."""
         for name, v in (("q", q), ("qdot", qdot)):
             try:
                 arr = np.asarray(v, dtype=float)
@@ -641,12 +669,6 @@ class Controller:
             if not np.isfinite(arr).all():
                 raise NonFiniteError(f"{name} = {arr.tolist()} is not finite; give finite joint positions and "
                                      "velocities [rad, rad/s or m, m/s]")
-        if np.isfinite(Fc).all() and not all(np.isfinite(v).all() for v in (self._extra, self._rate, self._target)):
-            raise HybridError(f"the references at t = {t} s are not finite; give references that return finite "
-                              f"numbers\n  values {self._extra}, rates {self._rate}, desired point {self._target}")
-        got = self._step(q, qdot, Fc, *self._held, *self._bound_refs, *self._params, singular_tol=self.singular_tol)
-        for (name, _, _), o in zip(self._step.outputs, out):
-            o[:] = got[name].ravel()
 
     def measure(self, q, qdot, Fc) -> Measurement:
         """What the controller measures at ``q, qdot, Fc`` (see :class:`Measurement`)."""

@@ -21,6 +21,7 @@ from hybrid.errors import HybridError, NonFiniteError
 from hybrid.geometry.paths import CirclePath, Path
 from hybrid.geometry.surface_points import project_points
 from hybrid.geometry.surfaces import Surface
+from hybrid.geometry.task_axes import frame_direction_of
 from hybrid.native import loader
 from hybrid.spec.controller_step import LOOP_GAINS, NO_LIMIT
 from hybrid.spec.path_follow import PATH_OUTPUT, PATH_SETTINGS, PATH_STATE, PATH_STATUSES, PATH_TABLE
@@ -34,7 +35,9 @@ CURVATURE_STEP = 1e-4
 ARC_LENGTH_TOL = 1e-2
 #: a touch force of minus this: touching from the start (the controller's "off", as its loss threshold's)
 NO_TOUCH = 1e300
-#: the most nodes a path's table may have (8 bytes times 13 numbers each: about 100 MB)
+#: what the settings left out are: the release's time [s], the retreat's speed [m/s], the tool's turn rate [1/s]
+DEFAULTS = {"unload_time": 0.2, "retreat_speed": 0.02, "orientation_gain": 10.0, "cross_track_gain": 20.0}
+#: the most nodes a path's table may have (8 bytes times 15 numbers each: about 120 MB)
 MAX_ROWS = 1_000_000
 #: the least cosine of the turn between neighbouring nodes' tangents (a cusp reverses the tangent)
 MAX_TURN = 0.0
@@ -79,19 +82,20 @@ class PathTask:
         [m] at the end, the force is released over ``unload_time`` and the tip retreats along the normal at
         ``retreat_speed`` [m/s] until it is this far from the surface, where it stops (the normal axis is
         velocity-controlled from the retreat on); 0 (the default): the tip stays at the end, pressing.
-    unload_time : float
-        [s] the time over which the force is released before the retreat.
-    retreat_speed : float
-        [m/s] the speed of the retreat.
+    unload_time : float, optional
+        [s] the time over which the force is released before the retreat (default 0.2 s); only with a
+        ``retreat_distance``.
+    retreat_speed : float, optional
+        [m/s] the speed of the retreat (default 0.02 m/s); only with a ``retreat_distance``.
     tilt, lead : float or callable
         [rad] the tool's angles from the normal, numbers or functions of the arc length: its axis (the tip
         frame's z) is ``-n`` turned by ``lead`` about ``t2`` (positive: its tip trails, the flange leads along
         ``t1``), then by ``tilt`` about ``t1``; each below 80 degrees. They need the rotational task axes
         about ``t1`` and ``t2`` (``axes="all"``), velocity-controlled.
-    orientation_gain : float
+    orientation_gain : float, optional
         [1/s] the tool's axis turns towards the tilted one at this rate (angular velocity references about
-        ``t1`` and ``t2``), on a task with those rotational axes; its product with the sample period at
-        most 0.5.
+        ``t1`` and ``t2``; default 10 1/s), on a task with those rotational axes only; its product with the
+        sample period at most 0.5.
     spacing : float
         The longest distance [m] between the table's nodes (the interpolation's error is about
         ``spacing^4 kappa^3 / 384``: 1e-10 m at 1 mm on a curve of 1 cm radius); at most a million nodes.
@@ -118,11 +122,11 @@ class PathTask:
     laps: float | None = None
     spacing: float = 1e-3
     retreat_distance: float = 0.0
-    unload_time: float = 0.2
-    retreat_speed: float = 0.02
+    unload_time: float | None = None
+    retreat_speed: float | None = None
     tilt: float | Callable[[float], float] = 0.0
     lead: float | Callable[[float], float] = 0.0
-    orientation_gain: float = 10.0
+    orientation_gain: float | None = None
 
     def __post_init__(self):
         if not isinstance(self.path, Path):
@@ -132,21 +136,29 @@ class PathTask:
             value = getattr(self, name)
             if not callable(value):
                 _finite("PathTask", **{name: value})
-        _finite("PathTask", orientation_gain=self.orientation_gain)
-        if self.orientation_gain < 0:
-            raise HybridError(f"PathTask.orientation_gain = {self.orientation_gain} 1/s; give a gain >= 0")
+        if self.orientation_gain is not None:
+            _finite("PathTask", orientation_gain=self.orientation_gain)
+            if self.orientation_gain < 0:
+                raise HybridError(f"PathTask.orientation_gain = {self.orientation_gain} 1/s; give a gain >= 0")
         _finite("PathTask", acceleration=self.acceleration, cross_track_gain=self.cross_track_gain,
                 spacing=self.spacing)
         if not self.acceleration > 0:
             raise HybridError(f"PathTask.acceleration = {self.acceleration} m/s^2; give a positive acceleration limit")
         if self.cross_track_gain < 0:
             raise HybridError(f"PathTask.cross_track_gain = {self.cross_track_gain} 1/s; give a gain >= 0")
-        _finite("PathTask", retreat_distance=self.retreat_distance, unload_time=self.unload_time,
-                retreat_speed=self.retreat_speed)
-        if self.retreat_distance < 0 or self.unload_time < 0:
-            raise HybridError(f"PathTask: retreat_distance = {self.retreat_distance} m, unload_time = "
-                              f"{self.unload_time} s; give both >= 0 (retreat_distance 0: no retreat)")
-        if self.retreat_distance > 0 and not self.retreat_speed > 0:
+        _finite("PathTask", retreat_distance=self.retreat_distance)
+        if self.retreat_distance < 0:
+            raise HybridError(f"PathTask.retreat_distance = {self.retreat_distance} m; give a distance >= 0 (0: no "
+                              "retreat)")
+        for name in ("unload_time", "retreat_speed"):
+            if getattr(self, name) is not None:
+                _finite("PathTask", **{name: getattr(self, name)})
+                if not self.retreat_distance > 0:
+                    raise HybridError(f"PathTask.{name} = {getattr(self, name)} acts at the retreat: give a "
+                                      "retreat_distance too, or leave it out")
+        if self.unload_time is not None and self.unload_time < 0:
+            raise HybridError(f"PathTask.unload_time = {self.unload_time} s; give a time >= 0")
+        if self.retreat_speed is not None and not self.retreat_speed > 0:
             raise HybridError(f"PathTask.retreat_speed = {self.retreat_speed} m/s; give a positive speed to retreat "
                               f"{self.retreat_distance} m")
         if not 0 < self.spacing <= 0.1:
@@ -230,6 +242,49 @@ class PathTask:
                  for a, b in zip(breaks[:-1], breaks[1:])]
         return np.concatenate([*parts, [length]])
 
+    def check_sampling(self, sample_time: float) -> None:
+        """Refuse gains too fast for the sample period ``sample_time`` [s]: a correction sampled slower than
+        :data:`MAX_GAIN_SAMPLES` times its time constant is no first-order lag.
+
+        Parameters
+        ----------
+        sample_time : float
+            The controller's sample period [s].
+        """
+        for name in ("cross_track_gain", "orientation_gain"):
+            gain = DEFAULTS[name] if getattr(self, name) is None else getattr(self, name)
+            if gain * sample_time > MAX_GAIN_SAMPLES:
+                raise HybridError(f"PathTask.{name} = {gain} 1/s is too fast for the sample period {sample_time} "
+                                  f"s (gain x period = {gain * sample_time:.3g}, at most {MAX_GAIN_SAMPLES}); give a "
+                                  f"gain up to {MAX_GAIN_SAMPLES / sample_time:.4g} 1/s")
+
+    def frame_direction(self, surface, given=None) -> tuple[float, float, float]:
+        """The task frame's direction at the path's start, ``e = n x t``, which a controller starts from (its
+        follower sets it each sample).
+
+        Parameters
+        ----------
+        surface : Surface
+            The surface the controller is told.
+        given : array_like, optional
+            A direction given besides the task (an experiment's or a controller's ``frame_direction``): refused
+            unless it is this one.
+
+        Returns
+        -------
+        tuple of float
+            ``e`` (base axes, a unit vector).
+        """
+        length, closed = self.extent()
+        start = float(np.mod(self.path.start, length)) if closed else float(self.path.start)
+        _, tangents, normals, _ = self._frames(surface, np.array([start]))
+        e = np.cross(normals[0], tangents[0])
+        e /= np.linalg.norm(e)
+        if given is not None and not np.allclose(frame_direction_of(given), e, rtol=0, atol=1e-9):
+            raise HybridError(f"frame_direction = {shown(given, 60)}: with a path task the direction is the path's "
+                              f"(n x t, {np.round(e, 6).tolist()} at its start); leave frame_direction out")
+        return tuple(e.tolist())
+
     def angles_at(self, s: float) -> tuple[float, float]:
         """The tool's angles at an arc length.
 
@@ -296,20 +351,15 @@ class PathTask:
         -------
         table : ndarray, shape (rows, 15)
             One node per row: arc length, point, tangent, normal, geodesic curvature, speed, force, tilt, lead.
-        settings : ndarray, shape (8,)
-            Rows, closed, length, start, distance to travel, start speed, acceleration, cross-track gain.
+        settings : ndarray, shape (15,)
+            :data:`~hybrid.spec.path_follow.PATH_SETTINGS`, in that order.
         """
         if not isinstance(surface, Surface):
             raise HybridError(f"PathTask.table: surface = {shown(surface, 60)}; give the hybrid surface the path is on")
         _finite("PathTask.table", sample_time=sample_time)
         if not sample_time > 0:
             raise HybridError(f"PathTask.table: sample_time = {sample_time} s; give a positive sample period")
-        for name in ("cross_track_gain", "orientation_gain"):
-            gain = getattr(self, name)
-            if gain * sample_time > MAX_GAIN_SAMPLES:
-                raise HybridError(f"PathTask.{name} = {gain} 1/s is too fast for the sample period {sample_time} "
-                                  f"s (gain x period = {gain * sample_time:.3g}, at most {MAX_GAIN_SAMPLES}); give a "
-                                  f"gain up to {MAX_GAIN_SAMPLES / sample_time:.4g} 1/s")
+        self.check_sampling(sample_time)
         length, closed = self.extent()
         s = self._nodes(length)
         rows = len(s)
@@ -367,9 +417,9 @@ class PathTask:
                     "speed_start": speed_start, "acceleration": self.acceleration,
                     "cross_track_gain": self.cross_track_gain, "cross_track_limit": peak,
                     "touch_force": -NO_TOUCH if touch_force is None else float(touch_force),
-                    "sample_time": float(sample_time), "unload_time": self.unload_time,
-                    "retreat_distance": self.retreat_distance, "retreat_speed": self.retreat_speed,
-                    "orientation_gain": self.orientation_gain}
+                    "sample_time": float(sample_time), "retreat_distance": self.retreat_distance,
+                    **{name: DEFAULTS[name] if getattr(self, name) is None else getattr(self, name)
+                       for name in ("unload_time", "retreat_speed", "orientation_gain")}}
         assert table.shape[1] == len(PATH_TABLE)
         return np.ascontiguousarray(table), np.array([settings[k] for k in PATH_SETTINGS], dtype=float)
 
@@ -406,6 +456,7 @@ class PathFollower:
                               "lengths do not grow); give a path defined along its whole length")
         self.state = np.zeros(len(PATH_STATE))
         self.out = np.zeros(len(PATH_OUTPUT))
+        self.served = np.zeros(len(PATH_OUTPUT))  # the outputs of the last sample served
         self._p, self._R, self._force = np.zeros(3), np.eye(3).ravel(), np.zeros(3)
         self._ptrs = [self._ffi.from_buffer("double[]", a) for a in (self.state, self._p, self._R, self._force,
                                                                        self.out)]
@@ -423,26 +474,22 @@ class PathFollower:
                                  f"{self.state.tolist()}")
         return self.out
 
-    def start_direction(self) -> np.ndarray:
-        """The task frame's direction ``e = n x t`` at the path's start (the outputs and state as they were)."""
-        start = self.settings[PATH_SETTINGS.index("start")]
-        state, out = self.state.copy(), self.out.copy()
-        self.state[:] = 0.0
-        e = self.follow(self.task.path.point_at(start), np.zeros(3))[_E].copy()
-        self.state[:], self.out[:] = state, out
-        return e
-
     def advance(self) -> None:
-        """Keep the last sample's progress (a sample on time)."""
+        """Keep the last sample's progress and outputs (a sample served as time passed)."""
         self.state[:] = self.out[:len(PATH_STATE)]
+        self.served[:] = self.out
 
     def reset(self) -> None:
+        """Back to the path's start: no progress, no outputs served."""
         self.state[:] = 0.0
+        self.served[:] = 0.0
 
 
 _OUT = {name: i for i, name in enumerate(PATH_OUTPUT)}
 #: the step's parameters a path task changes as it runs
 PATH_CHANGES = ("e", "selection", "gains")
+#: where the follower's settings hold the sample period (the controller's, written there each sample)
+PATH_SAMPLE_TIME = PATH_SETTINGS.index("sample_time")
 _E = slice(_OUT["e_x"], _OUT["e_z"] + 1)
 
 
@@ -459,7 +506,7 @@ class PathReferences:
     step's inputs.
 
     ``follower`` holds the table, settings and state; ``positions`` where ``t1``, ``t2`` and ``n`` are among the
-    task axes; ``start_direction`` the task frame's direction at the path's start; ``retreat_gains`` the
+    task axes; ``retreat_gains`` the
     normal axis's loop gains in the retreat (its velocity gains)."""
 
     def __init__(self, task: PathTask, surface, robot, axes: tuple[int, ...], selection: tuple[int, ...], gains,
@@ -488,6 +535,9 @@ class PathReferences:
         # the rotations about t1 and t2, where the task has them: the tool's tilt and lead
         self.spins = tuple(axes.index(i) for i in (3, 4)) if 3 in axes and 4 in axes else None
         tilted = np.any(self.follower.table[:, [PATH_TABLE.index("tilt"), PATH_TABLE.index("lead")]] != 0)
+        if task.orientation_gain is not None and self.spins is None:
+            raise HybridError(f"path_task.orientation_gain = {task.orientation_gain} turns the tool about t1 and t2, "
+                              "which are not task axes here; give axes='all' (or leave it out)")
         if tilted and self.spins is None:
             raise HybridError("path_task: a tilt or lead angle turns the tool about t1 and t2, which are not task "
                               "axes here; give axes='all' (or leave tilt and lead 0)")
@@ -497,14 +547,12 @@ class PathReferences:
         retreat = tuple(0 if k == self._n else s for k, s in enumerate(selection))
         k = len(LOOP_GAINS) * self._n
         self.retreat_gains = gain_array(gains, retreat)[k:k + len(LOOP_GAINS)]
-        self.start_direction = self.follower.start_direction()
 
-    def write(self, p, R, force, params: dict, extra: np.ndarray, rate: np.ndarray,
-              integrals: np.ndarray) -> dict[str, np.ndarray]:
+    def write(self, p, R, force, params: dict, extra: np.ndarray, rate: np.ndarray) -> dict[str, np.ndarray]:
         """The references for the tip at ``p`` [m] with the rotation ``R`` (9 numbers, row by row) under the
         contact force ``force`` [N, base axes] into ``extra`` and ``rate``; the step's parameters that change
-        (of ``params``, by name: ``e`` as the path turns, ``selection`` and ``gains`` at the retreat, whose
-        normal axis's ``integrals`` it zeroes), as new read-only arrays."""
+        (of ``params``, by name: ``e`` as the path turns, ``selection`` and ``gains`` at the retreat, where the
+        caller starts the normal axis's loop afresh), as new read-only arrays."""
         out = self.follower.follow(p, force, R)
         extra[self._t1], rate[self._t1] = out[_OUT["speed"]], out[_OUT["speed_rate"]]
         extra[self._t2], rate[self._t2] = out[_OUT["lateral_speed"]], out[_OUT["lateral_rate"]]
@@ -520,10 +568,10 @@ class PathReferences:
             k = len(LOOP_GAINS) * self._n
             gains[k:k + len(LOOP_GAINS)] = self.retreat_gains
             changed.update(selection=_fixed(selection), gains=_fixed(gains))
-            integrals[2 * self._n:2 * self._n + 2] = 0.0
         return changed
 
     @property
     def last(self) -> dict[str, float]:
-        """The follower's last outputs by name (:data:`~hybrid.spec.path_follow.PATH_OUTPUT`)."""
-        return dict(zip(PATH_OUTPUT, self.follower.out.tolist()))
+        """The follower's outputs at the last sample served, by name (:data:`~hybrid.spec.path_follow.PATH_OUTPUT`;
+        as the standalone C's ``path``)."""
+        return dict(zip(PATH_OUTPUT, self.follower.served.tolist()))

@@ -225,6 +225,8 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         if not isinstance(self.fault_reaction, FaultReaction):
             raise HybridError(f"fault_reaction = {shown(self.fault_reaction, 60)}; give a hybrid.FaultReaction(...)")
         self.fault_reaction.check_sampling(self.sample_time)
+        if self.path_task is not None:
+            self.path_task.check_sampling(self.sample_time)
 
     def with_physics(self, **changes) -> Experiment:
         """This experiment with other settings of :data:`PHYSICS`: what ``dataclasses.replace(self,

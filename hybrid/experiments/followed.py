@@ -14,11 +14,10 @@ import math
 
 import numpy as np
 
-from hybrid.control.path_task import PathFollower, PathTask
+from hybrid.control.path_task import PathTask
 from hybrid.control.references import Step
 from hybrid.errors import HybridError
 from hybrid.experiments.settings import START_TOL
-from hybrid.geometry.task_axes import frame_direction_of
 from hybrid.validate import shown
 
 #: the times along the run [s] where the path is compared with the tip's motion
@@ -65,12 +64,7 @@ def task_references(exp) -> None:
         object.__setattr__(exp, name, value)
     # the task frame's direction: the path's at its start (the controller's follower sets it each sample)
     surface = exp.surface if exp.controller_surface is None else exp.controller_surface
-    start = tuple(PathFollower(task, surface, exp.sample_time).start_direction().tolist())
-    given = exp.frame_direction
-    if given is not None and not np.allclose(frame_direction_of(given), start, rtol=0, atol=1e-9):
-        raise HybridError(f"frame_direction = {shown(given, 60)}: with a path_task the direction is the path's (n x t, "
-                          f"{np.round(start, 6).tolist()} at its start); leave frame_direction out")
-    object.__setattr__(exp, "frame_direction", start)
+    object.__setattr__(exp, "frame_direction", task.frame_direction(surface, exp.frame_direction))
 
 
 def check_followed(exp) -> None:

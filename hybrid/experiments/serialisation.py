@@ -171,7 +171,7 @@ def path_from_dict(d: dict):
 def path_task_to_dict(task: PathTask) -> dict:
     """A path task as JSON-ready data; one whose speed or force is a function is refused."""
     d = {f.name: getattr(task, f.name) for f in fields(task)}
-    for name in ("speed", "force"):
+    for name in ("speed", "force", "tilt", "lead"):
         if callable(d[name]):
             raise HybridError(f"path_task.{name} is a function: a profile of one's own is not written to a file; "
                               "give a number, or keep the experiment in Python")

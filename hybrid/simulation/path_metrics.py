@@ -23,15 +23,25 @@ FOLLOW, UNLOAD = PATH_PHASES.index("follow"), PATH_PHASES.index("unload")
 SETTLED = 0.05
 
 
-def path_series(res) -> dict[str, np.ndarray]:
-    """At each control sample of the run ``res``: the follower's outputs by name
-    (:data:`~hybrid.spec.path_follow.PATH_OUTPUT`: ``s``, ``phase``, ``path_error``, ``speed``,
-    ``normal_reference``, ``done``, ...) for the sensor tip, ``tip_speed`` (the tip's speed along the path's
-    tangent [m/s]), ``normal_force`` (the measured force along the path's normal [N]) and ``t`` [s]."""
+def follower_of(res) -> PathFollower:
+    """A follower of the run's path task as its controller had it (the surface it was told, its sample period
+    and touch force)."""
     exp = res.experiment
     surface = exp.surface if exp.controller_surface is None else exp.controller_surface
     touch = exp.touch_threshold if exp.approach_speed > 0 else None
-    follower = PathFollower(exp.path_task, surface, exp.sample_time, touch)
+    return PathFollower(exp.path_task, surface, exp.sample_time, touch)
+
+
+def path_series(res, follower: PathFollower | None = None) -> dict[str, np.ndarray]:
+    """At each control sample of the run ``res``: the follower's outputs by name
+    (:data:`~hybrid.spec.path_follow.PATH_OUTPUT`: ``s``, ``phase``, ``speed``, ``normal_reference``, ``done``,
+    ... as the controller had them, from the arm tip), but the tool's spin references (the record has no tip
+    rotation); ``path_error``, the sensor tip's distance from the path [m]; ``tip_speed`` (the sensor tip's
+    speed along the path's tangent [m/s]), ``normal_force`` (the measured force along the path's normal [N])
+    and ``t`` [s]. ``follower``: the run's (:func:`follower_of`), reset here."""
+    exp = res.experiment
+    follower = follower_of(res) if follower is None else follower
+    follower.reset()
     names = res.record["outputs"]
     rows = res.outputs[::exp.steps_per_sample][:exp.n_samples]
     arm_tips, tips = (rows[:, [names.index(c) for c in (f"{x}_x", f"{x}_y", f"{x}_z")]] for x in ("r", "s"))
@@ -42,7 +52,8 @@ def path_series(res) -> dict[str, np.ndarray]:
     for k, (p, f) in enumerate(zip(arm_tips, forces)):
         out[k] = follower.follow(p, f)
         follower.advance()
-    series = {name: out[:, i] for i, name in enumerate(PATH_OUTPUT)}
+    series = {name: out[:, i] for i, name in enumerate(PATH_OUTPUT)
+              if name not in ("spin_t1", "spin_t2", "tool_angle_error")}
     series["path_error"] = _sensor_tip_errors(follower, tips, series["s"])
     tangent = out[:, [PATH_OUTPUT.index(c) for c in ("t_x", "t_y", "t_z")]]
     normal = out[:, [PATH_OUTPUT.index(c) for c in ("n_x", "n_y", "n_z")]]
@@ -78,12 +89,12 @@ def path_metrics(res) -> dict[str, float]:
     """:data:`~hybrid.spec.metrics.PATH_METRICS` of a run along a path task (module docstring): the path
     error over the samples on the path (following it, and releasing the force at its end), the force and
     speed errors and the contact losses while following it, the largest force from the release on."""
-    exp = res.experiment
-    series = path_series(res)
+    follower = follower_of(res)
+    series = path_series(res, follower)
     t, phase = series["t"], series["phase"]
     on = (phase == FOLLOW) | (phase == UNLOAD)
     follow = phase == FOLLOW
-    distance = exp.path_task.table(exp.surface)[1][PATH_SETTINGS.index("distance")]
+    distance = follower.settings[PATH_SETTINGS.index("distance")]
     done = np.flatnonzero(series["travelled"] >= distance - END_TOL)
     err = series["path_error"][on] if on.any() else np.full(1, np.nan)
     # once in contact: from the first time the force is within SETTLED of its reference (the touch's transient

@@ -19,10 +19,11 @@ linearly. Each sample:
 2. at ``c(s)``: the tangent ``t``, the surface's normal ``n`` and the cross-track direction
    ``e = n x t``, which, as the task frame's direction, makes ``t1 = e x n = t`` and ``t2 = n x t1 = e``;
 3. the phase (:data:`PATH_PHASES`): before the first touch (the measured normal force below ``touch_force``)
-   the tip approaches and does not move along the path; in contact it follows it; at an open path's end
-   (or a closed one's last lap) the force is released over ``unload_time`` down to ``touch_force``, then,
-   with a ``retreat_distance``, the normal axis turns velocity-controlled and the tip leaves along ``n`` at
-   ``retreat_speed`` until it is that far from the surface, where it stops;
+   the tip approaches and does not move along the path; in contact it follows it; at the end (an open
+   path's, a closed one's last lap) it is held there, pressing, unless there is a ``retreat_distance``: then
+   the force is released over ``unload_time`` down to ``touch_force``, the normal axis turns
+   velocity-controlled and the tip leaves along ``n`` at ``retreat_speed`` until it is that far from the
+   surface, where it stops;
 4. the tool's axis (the tip frame's z axis, from the tip's rotation ``R``) is turned towards ``-n`` turned
    by the lead angle about ``t2`` and then by the tilt angle about ``t1``: with ``w = z x z_d``, the angular
    velocity references ``orientation_gain * (w . t1)`` and ``orientation_gain * (w . t2)`` (for the
@@ -73,7 +74,7 @@ PATH_OUTPUT = (*PATH_STATE, "c_x", "c_y", "c_z", "t_x", "t_y", "t_z", "n_x", "n_
                "height", "done", "retreat", "spin_t1", "spin_t2", "tool_angle_error")
 #: the follower's statuses: 0 the outputs are written; otherwise nothing is (the state stays)
 PATH_STATUSES = {"PATH_OK": 0, "PATH_INPUT_NONFINITE": 1, "PATH_TABLE_INVALID": 2}
-#: how close [m] to an open path's end counts as done
+#: how close [m] to the end of the distance to travel (an open path's end, a closed one's last lap) counts as done
 PATH_DONE_TOL = 1e-4
 #: Newton steps of the progress per sample (the tip moves far less than a node's spacing in one)
 PATH_NEWTON_STEPS = 3
