@@ -15,14 +15,15 @@ import numpy as np
 
 from hybrid.control.fault import FaultMonitor, FaultReaction, finite_time, time_passed, timing_status
 from hybrid.control.loops import Gains
-from hybrid.control.measurement import Measurement, padded_vector, wrench_of
-from hybrid.control.options import ContactLoss, Posture, call_user, check_posture
-from hybrid.control.path_task import PATH_CHANGES, PATH_SAMPLE_TIME, PathReferences, PathTask
+from hybrid.control.measurement import Measurement, wrench_of
+from hybrid.control.options import ContactLoss, Posture, check_posture
+from hybrid.control.path_task import PATH_CHANGES, PathReferences, PathTask
+from hybrid.control.sample_references import SampleReferences
 from hybrid.control.schemes import Scheme, scheme_of
 from hybrid.control.task_settings import axis_references, gain_array, gains_of, joint_limit, selection_of
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import renamed_attribute, renamed_keywords
-from hybrid.errors import HybridError, NonFiniteError, ParameterError, SampleTimingError
+from hybrid.errors import HybridError, ParameterError, SampleTimingError
 from hybrid.geometry.task_axes import check_axes, frame_direction_of, spatial_surface
 from hybrid.models.planar_arm import Arm
 from hybrid.models.robot import Robot, as_robot
@@ -52,7 +53,7 @@ _CALLED = ("q", "qd", "Fc")
 _ADVANCED = {k: v for k, v in STATE_NEXT.items() if k not in ("integrals", "last_torque")}
 
 
-class Controller:
+class Controller(SampleReferences):
     """A sampled hybrid force/velocity controller of ``robot`` in contact with ``surface``.
 
     Parameters
@@ -439,17 +440,6 @@ class Controller:
                               f"{', '.join(self.axis_names)}), got shape {arr.shape}")
         self._z[:] = arr.ravel()
 
-    def _python_references(self, t: float) -> None:
-        """The references given as code, at ``t``: into the step's ``yd_extra`` and ``yd_rate``."""
-        for target, calls, what in ((self._extra, self._varying, "reference"), (self._rate, self._rates, "rate")):
-            for i, f in calls:
-                name = f"the {self.axis_names[i]} {what}"
-                value = call_user(f, t, name)
-                if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
-                    raise HybridError(f"{name} gave {shown(value, 40)} at t = {t} s; a reference f(t) returns one "
-                                      "number (and its rate(t) one number)")
-                target[i] = value
-
     def __call__(self, t: float, q, qdot, Fc) -> np.ndarray:
         """``tau`` [N m or N] for the sample at time ``t`` [s], from the joint state and the measured
         wrench on the robot ``Fc`` (base axes: force [N] of 2 or 3 entries, or force and moment, 6);
@@ -564,43 +554,6 @@ class Controller:
             raise SampleTimingError(timing, t, clock, self.sample_time, out[0].copy())
         return out[0].copy()
 
-    def _follow(self, q, qdot, Fc):
-        """The path task's references for the tip at ``q`` under the wrench ``Fc``; the step's binding follows
-        the parameters it changes (``e``, and at the retreat the normal axis's selection and gains, its
-        integrals zero). Returns what undoes those changes (None: none), for a sample that is not served."""
-        self._check_joint_state(q, qdot)
-        self._path_task.follower.settings[PATH_SAMPLE_TIME] = self.sample_time  # one sample period: the step's
-        p = self.step_inputs()
-        m = self._measure(q, qdot, Fc, p["surface"], p["e"], p["robot"], p["sensor"], self._estimate)
-        changed = self._path_task.write(m["p"].ravel(), m["R"].ravel(), m["contact_wrench"].ravel()[:3], p,
-                                        self._extra, self._rate)
-        if not changed:
-            return None
-        params, integrals = self._params, self._z.copy()
-        # the follower's unit e, and a selection and gains of 0/1 and >= 0: their checks hold
-        self._params = tuple(changed.get(name, a) for name, a in zip(PARAMETERS, self._params))
-        if "selection" in changed:  # the normal axis turns velocity-controlled: its loop starts afresh
-            n = self._path_task.positions[2]
-            self._z[2 * n:2 * n + 2] = 0.0
-        self._bind()
-
-        def undo():
-            self._params, self._z[:] = params, integrals
-            self._bind()
-        return undo
-
-    @property
-    def path_references(self) -> PathReferences | None:
-        """The path task's follower (``.follower``: its table, settings and state) and where ``t1``, ``t2`` and
-        ``n`` are among the task axes (``.positions``); None without a path task."""
-        return self._path_task
-
-    @property
-    def path_task(self) -> dict[str, float] | None:
-        """The path task's last sample (the follower's outputs by name: progress ``s``, the path's point, the
-        cross-track error, the references), None without a path task."""
-        return None if self._path_task is None else self._path_task.last
-
     def _tick(self, t: float) -> None:
         """The sample clock after a sample at ``t``: it follows every sample that moves forward."""
         if self._clock is None or t > self._clock:
@@ -636,14 +589,6 @@ class Controller:
             return self._fc
         return wrench_of(Fc, self._force_size)
 
-    def _desired(self, t: float) -> np.ndarray:
-        got = call_user(self.path, t, "the path")
-        if not isinstance(got, tuple) or len(got) not in (2, 3):
-            raise HybridError(f"path({t}) returned {shown(got, 60)}; return (p_d, p_d') or (p_d, p_d', phi_d)")
-        d = self._force_size  # a point of the planar arm's plane, or of space
-        phi = padded_vector("path angles", got[2], 3) if len(got) == 3 else np.zeros(3)
-        return np.concatenate([padded_vector("path point", got[0], d), padded_vector("path velocity", got[1], d), phi])
-
     def _checked(self, q, qdot, Fc, out: list) -> None:
         """The general path: any array-like input, and the error that names the cause. A sample refused
         here changes nothing (the outputs are written only when the step succeeds), the clock neither,
@@ -656,19 +601,6 @@ class Controller:
         got = self._step(q, qdot, Fc, *self._held, *self._bound_refs, *self._params, singular_tol=self.singular_tol)
         for (name, _, _), o in zip(self._step.outputs, out):
             o[:] = got[name].ravel()
-
-    def _check_joint_state(self, q, qdot) -> None:
-        """Refuse joint positions or velocities that are not one finite number per joint."""
-        for name, v in (("q", q), ("qdot", qdot)):
-            try:
-                arr = np.asarray(v, dtype=float)
-            except (TypeError, ValueError):
-                arr = None
-            if arr is None or arr.shape != (self.robot.n,):
-                raise HybridError(f"{name} = {shown(v, 60)}; give {self.robot.n} numbers (one per joint)")
-            if not np.isfinite(arr).all():
-                raise NonFiniteError(f"{name} = {arr.tolist()} is not finite; give finite joint positions and "
-                                     "velocities [rad, rad/s or m, m/s]")
 
     def measure(self, q, qdot, Fc) -> Measurement:
         """What the controller measures at ``q, qdot, Fc`` (see :class:`Measurement`)."""

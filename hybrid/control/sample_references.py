@@ -1,0 +1,95 @@
+"""What a :class:`~hybrid.Controller` computes in Python before each sample's compiled step: the references
+given as code (``f(t)`` and its ``rate``), a desired path's point (``path(t)``), and a path task's direction and
+references (:mod:`hybrid.control.path_task`), with the checks of the joint state they read.
+
+:class:`SampleReferences` is the controller's part that does it; it reads the controller's references
+(``_varying``, ``_rates``), its step's per-sample inputs (``_extra``, ``_rate``, ``_target``, ``_z``), its
+parameters (``_params``, rebound by ``_bind``), its measurement (``_measure``, ``_estimate``) and settings.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from hybrid.control.measurement import padded_vector
+from hybrid.control.options import call_user
+from hybrid.control.path_task import PATH_SAMPLE_TIME, PathReferences
+from hybrid.errors import HybridError, NonFiniteError
+from hybrid.spec.controller_step import CONTROLLER_STEP
+from hybrid.validate import shown
+
+#: the step's parameters, in its order
+PARAMETERS = CONTROLLER_STEP.parameters
+
+
+class SampleReferences:
+    """The references a controller computes in Python at each sample (module docstring)."""
+
+    def _python_references(self, t: float) -> None:
+        """The references given as code, at ``t``: into the step's ``yd_extra`` and ``yd_rate``."""
+        for target, calls, what in ((self._extra, self._varying, "reference"), (self._rate, self._rates, "rate")):
+            for i, f in calls:
+                name = f"the {self.axis_names[i]} {what}"
+                value = call_user(f, t, name)
+                if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
+                    raise HybridError(f"{name} gave {shown(value, 40)} at t = {t} s; a reference f(t) returns one "
+                                      "number (and its rate(t) one number)")
+                target[i] = value
+
+    def _follow(self, q, qdot, Fc):
+        """The path task's references for the tip at ``q`` under the wrench ``Fc``; the step's binding follows
+        the parameters it changes (``e``, and at the retreat the normal axis's selection and gains, its
+        integrals zero). Returns what undoes those changes (None: none), for a sample that is not served."""
+        self._check_joint_state(q, qdot)
+        self._path_task.follower.settings[PATH_SAMPLE_TIME] = self.sample_time  # one sample period: the step's
+        p = self.step_inputs()
+        m = self._measure(q, qdot, Fc, p["surface"], p["e"], p["robot"], p["sensor"], self._estimate)
+        changed = self._path_task.write(m["p"].ravel(), m["R"].ravel(), m["contact_wrench"].ravel()[:3], p,
+                                        self._extra, self._rate)
+        if not changed:
+            return None
+        params, integrals = self._params, self._z.copy()
+        # the follower's unit e, and a selection and gains of 0/1 and >= 0: their checks hold
+        self._params = tuple(changed.get(name, a) for name, a in zip(PARAMETERS, self._params))
+        if "selection" in changed:  # the normal axis turns velocity-controlled: its loop starts afresh
+            n = self._path_task.positions[2]
+            self._z[2 * n:2 * n + 2] = 0.0
+        self._bind()
+
+        def undo():
+            self._params, self._z[:] = params, integrals
+            self._bind()
+        return undo
+
+    @property
+    def path_references(self) -> PathReferences | None:
+        """The path task's follower (``.follower``: its table, settings and state) and where ``t1``, ``t2`` and
+        ``n`` are among the task axes (``.positions``); None without a path task."""
+        return self._path_task
+
+    @property
+    def path_task(self) -> dict[str, float] | None:
+        """The path task's last sample (the follower's outputs by name: progress ``s``, the path's point, the
+        cross-track error, the references), None without a path task."""
+        return None if self._path_task is None else self._path_task.last
+
+    def _desired(self, t: float) -> np.ndarray:
+        got = call_user(self.path, t, "the path")
+        if not isinstance(got, tuple) or len(got) not in (2, 3):
+            raise HybridError(f"path({t}) returned {shown(got, 60)}; return (p_d, p_d') or (p_d, p_d', phi_d)")
+        d = self._force_size  # a point of the planar arm's plane, or of space
+        phi = padded_vector("path angles", got[2], 3) if len(got) == 3 else np.zeros(3)
+        return np.concatenate([padded_vector("path point", got[0], d), padded_vector("path velocity", got[1], d), phi])
+
+    def _check_joint_state(self, q, qdot) -> None:
+        """Refuse joint positions or velocities that are not one finite number per joint."""
+        for name, v in (("q", q), ("qdot", qdot)):
+            try:
+                arr = np.asarray(v, dtype=float)
+            except (TypeError, ValueError):
+                arr = None
+            if arr is None or arr.shape != (self.robot.n,):
+                raise HybridError(f"{name} = {shown(v, 60)}; give {self.robot.n} numbers (one per joint)")
+            if not np.isfinite(arr).all():
+                raise NonFiniteError(f"{name} = {arr.tolist()} is not finite; give finite joint positions and "
+                                     "velocities [rad, rad/s or m, m/s]")
