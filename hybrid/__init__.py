@@ -5,7 +5,9 @@ The public API, by subpackage:
 - robot models (:mod:`hybrid.models`): :class:`Robot`, the one robot model (any serial arm, e.g.
   from a URDF; the shipped :func:`ur5` and :func:`panda`, their files :data:`UR5_URDF` and
   :data:`PANDA_URDF`; the paper's planar arm as ``Robot.planar(paper_arm())``, with :class:`Arm` its
-  parameters), and their terms (:func:`arm_terms`, :func:`operational_space`);
+  parameters), and their terms (:func:`arm_terms`, :func:`operational_space`); the joint-torque
+  regressor ``tau = Y pi`` (:func:`regressor`) on the parameters the dynamics are linear in
+  (:func:`linear_parameters`);
 - geometry (:mod:`hybrid.geometry`): the surfaces :class:`Plane`, :class:`Circle`, :class:`Sphere`,
   :class:`Cylinder` and :class:`ImplicitSurface`; paths on them (:class:`CirclePath`,
   :class:`LinePath`; on any surface :class:`WaypointPath`, :class:`RasterPath`,
@@ -69,6 +71,7 @@ from hybrid.geometry.patterns import RasterPath, SpiralPath
 from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere
 from hybrid.geometry.waypoints import WaypointPath
 from hybrid.models.planar_arm import Arm, paper_arm
+from hybrid.models.regressor import linear_parameters, regressor
 from hybrid.models.robot import Robot
 from hybrid.models.shipped import PANDA_URDF, UR5_URDF, panda, ur5
 from hybrid.models.terms import OperationalSpace, arm_terms, operational_space
@@ -111,7 +114,7 @@ __all__ = [
     "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "SpiralPath", "Step",
     "TaskDecoupling",
     "TaskFrameError", "Tool", "ToolIdentification", "UR5_URDF", "URDFError", "WaypointPath", "WrenchSensor",
-    "__version__", "arm_terms", "decoupling_law", "identify_tool", "metrics", "operational_space", "panda",
-    "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config", "simulate", "sweep", "tare",
-    "task_frame", "tracing_experiment", "ur5",
+    "__version__", "arm_terms", "decoupling_law", "identify_tool", "linear_parameters", "metrics",
+    "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config",
+    "regressor", "simulate", "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
 ]
