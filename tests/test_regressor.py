@@ -74,3 +74,32 @@ def test_regressor_reads_structure_and_gravity_only(rng, robots):
     Y, _ = hybrid.regressor(sideways, q, zero, zero)
     np.testing.assert_allclose(Y @ hybrid.linear_parameters(sideways), hybrid.arm_terms(sideways, q, zero)["n"],
                                rtol=0, atol=1e-12)
+
+
+def test_base_parameters_give_the_full_torques(rng, robots):
+    """The base parameters (from ``Y`` at the function's own random states) give the torques of the full
+    ones at other states to 1e-10; every dropped column is its combination of the kept ones there; the
+    kept columns are independent, as many as the rank of Pinocchio's regressor stacked over those states
+    (plus a viscosity per joint); the choice and the combinations do not depend on the states."""
+    for robot, model, _ in robots.values():
+        n, data = robot.n, model.createData()
+        base = hybrid.base_parameters(robot)
+        pi = hybrid.linear_parameters(robot)
+        qs, qds, qdds = _states(rng, robot, 100)
+        Y, _ = hybrid.regressor(robot, qs, qds, qdds)
+        tau = Y @ pi
+        np.testing.assert_allclose(base.regressor(Y) @ base.of(pi), tau, rtol=0, atol=1e-10 * np.abs(tau).max())
+        W = Y.reshape(-1, 11 * n)
+        kept, dropped = W[:, list(base.independent)], W[:, list(base.dependent)]
+        assert np.abs(kept @ base.beta - dropped).max() < 1e-10 * np.abs(W).max()
+        singular = np.linalg.svd(kept, compute_uv=False)
+        assert singular[-1] > 1e-6 * singular[0]
+        W_pin = np.vstack([pin.computeJointTorqueRegressor(model, data, *x) for x in zip(qs, qds, qdds)])
+        s = np.linalg.svd(W_pin, compute_uv=False)
+        assert len(base.independent) == int((s > 1e-10 * s[0]).sum()) + n
+        other = hybrid.base_parameters(robot, states=150, seed=1)
+        assert other.independent == base.independent
+        np.testing.assert_allclose(other.beta, base.beta, rtol=0, atol=1e-12)
+        assert len(base.base_names()) == len(base.independent)
+        with pytest.raises(hybrid.HybridError, match="give the"):
+            base.of(pi[:-1])
