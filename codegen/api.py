@@ -9,6 +9,7 @@ names, flags and numbers) or kernels they returned, and give kernels or generate
 - the paper's planar arm in closed form: :func:`planar_kernels`, :func:`build_planar_unit` (one
   backend of ``BACKENDS``: the committed ``generated/hybrid_<backend>.*``);
 - any serial chain: :func:`build_robot_unit` (terms, dynamics, operational space),
+  :func:`build_regressor_unit` (the joint-torque regressor ``tau = Y pi``),
   :func:`law_kernels` / :func:`build_law_unit` (the decoupling law on a surface),
   :func:`build_frame_unit` (the task frame), :func:`controller_kernels` /
   :func:`build_controller_unit` (one control sample, and :func:`safe_stop_kernel`: its fault
@@ -36,6 +37,7 @@ from .emit import build_unit as build_planar_unit
 from .lanes import LANES_HEADER, lanes_header
 from .model import kernels as planar_kernels
 from .path_follow import PATH_HEADER, path_header
+from .regressor import build_regressor_unit
 from .robot_unit import build_controller_unit, build_frame_unit, build_law_unit, build_plant_unit, build_robot_unit
 from .safe_stop import safe_stop_kernel
 from .spatial_plant import plant_kernels
@@ -55,6 +57,7 @@ def shared_headers() -> dict[str, str]:
 
 __all__ = ["BACKENDS", "LANES_HEADER", "PATH_HEADER", "LoopSpec", "Unit", "build_closed_loop_unit",
            "build_controller_unit", "build_frame_unit", "build_law_unit", "build_planar_unit", "build_plant_unit",
-           "build_robot_unit", "build_standalone_controller", "build_standalone_plant", "controller_kernels",
+           "build_regressor_unit", "build_robot_unit", "build_standalone_controller", "build_standalone_plant",
+           "controller_kernels",
            "kernel_function", "law_kernels", "path_header", "phi_sx", "planar_kernels", "plant_kernels",
            "safe_stop_kernel", "shared_headers", "template_environment"]

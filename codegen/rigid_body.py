@@ -33,9 +33,12 @@ from hybrid.spec.chain import (  # noqa: F401  (the chain's data, re-exported fo
     INERTIAL,
     INERTIAL_UNITS,
     JOINT_UNITS,
+    LINEAR,
     Chain,
     Joint,
     joint_units,
+    linear_parameter_names,
+    linear_parameter_units,
     parameter_names,
     parameter_units,
 )

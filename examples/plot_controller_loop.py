@@ -55,7 +55,7 @@ print(f"largest difference from simulate: {np.abs(force - sampled).max():.1e} N"
 # references, and the torque's change bounded to 2 N m per sample on every joint. The call of
 # sample 50 is skipped (a missed deadline): the next sample comes late, is served with the law's
 # torque, and leaves the integrals as they were.
-mine = hybrid.Controller(exp.controller_robot(), exp.surface, "task", selection=("n",), gains=exp.gains,
+mine = hybrid.Controller(exp.controller_model(), exp.surface, "task", selection=("n",), gains=exp.gains,
                          force_reference=exp.force_reference, velocity_reference=exp.speed_reference,
                          sample_time=exp.sample_time, torque_step_limit=2.0)
 limited = run(mine, miss=50)

@@ -5,7 +5,9 @@ The public API, by subpackage:
 - robot models (:mod:`hybrid.models`): :class:`Robot`, the one robot model (any serial arm, e.g.
   from a URDF; the shipped :func:`ur5` and :func:`panda`, their files :data:`UR5_URDF` and
   :data:`PANDA_URDF`; the paper's planar arm as ``Robot.planar(paper_arm())``, with :class:`Arm` its
-  parameters), and their terms (:func:`arm_terms`, :func:`operational_space`);
+  parameters), and their terms (:func:`arm_terms`, :func:`operational_space`); the joint-torque
+  regressor ``tau = Y pi`` (:func:`regressor`) on the parameters the dynamics are linear in
+  (:func:`linear_parameters`), and its base parameters (:func:`base_parameters`, :class:`BaseParameters`);
 - geometry (:mod:`hybrid.geometry`): the surfaces :class:`Plane`, :class:`Circle`, :class:`Sphere`,
   :class:`Cylinder` and :class:`ImplicitSurface`; paths on them (:class:`CirclePath`,
   :class:`LinePath`; on any surface :class:`WaypointPath`, :class:`RasterPath`,
@@ -68,7 +70,9 @@ from hybrid.geometry.paths import CirclePath, LinePath
 from hybrid.geometry.patterns import RasterPath, SpiralPath
 from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere
 from hybrid.geometry.waypoints import WaypointPath
+from hybrid.models.base_parameters import BaseParameters, base_parameters
 from hybrid.models.planar_arm import Arm, paper_arm
+from hybrid.models.regressor import linear_parameters, regressor
 from hybrid.models.robot import Robot
 from hybrid.models.shipped import PANDA_URDF, UR5_URDF, panda, ur5
 from hybrid.models.terms import OperationalSpace, arm_terms, operational_space
@@ -103,15 +107,15 @@ def __dir__() -> list[str]:
 
 
 __all__ = [
-    "Arm", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder", "DecouplingLaw",
-    "EstimatedSurface", "Experiment", "FaultReaction", "Gains", "HybridError", "ImplicitSurface", "JointLimitWarning",
-    "Khatib", "LargeModelWarning", "LinePath", "Measurement", "NativeBuildError", "NonFiniteError",
+    "Arm", "BaseParameters", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder",
+    "DecouplingLaw", "EstimatedSurface", "Experiment", "FaultReaction", "Gains", "HybridError", "ImplicitSurface",
+    "JointLimitWarning", "Khatib", "LargeModelWarning", "LinePath", "Measurement", "NativeBuildError", "NonFiniteError",
     "OperationalSpace", "PANDA_URDF", "ParameterError", "PathTask", "Plane", "Posture", "RasterPath",
     "RedundancyWarning", "Reference", "Robot", "SCHEMES", "SafeStopError", "SampleTimingError", "Scheme", "Sensor",
     "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "SpiralPath", "Step",
     "TaskDecoupling",
     "TaskFrameError", "Tool", "ToolIdentification", "UR5_URDF", "URDFError", "WaypointPath", "WrenchSensor",
-    "__version__", "arm_terms", "decoupling_law", "identify_tool", "metrics", "operational_space", "panda",
-    "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config", "simulate", "sweep", "tare",
-    "task_frame", "tracing_experiment", "ur5",
+    "__version__", "arm_terms", "base_parameters", "decoupling_law", "identify_tool", "linear_parameters", "metrics",
+    "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config",
+    "regressor", "simulate", "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
 ]

@@ -264,7 +264,7 @@ class NumpyController:
     def __init__(self, exp):
         self.exp, self.g, self.T = exp, exp.effective_gains(), exp.sample_time
         self.kind = exp.section.kind
-        self.arm, self.surface = exp.controller_robot().closed_form.as_array(), exp.section.as_array()
+        self.arm, self.surface = exp.controller_model().closed_form.as_array(), exp.section.as_array()
         self.int_v = self.int2_v = self.int_f = 0.0
 
     def loops(self, t, v, f):

@@ -80,7 +80,7 @@ def test_controllers_coincide_when_the_force_equals_its_feedforward():
         ctrl.reset()
     Fc = Fc_ff + np.array([1.5, -0.7])
     diff = ctrls["khatib"](0.0, q, qdot, Fc) - ctrls["task"](0.0, q, qdot, Fc)
-    J = hybrid.arm_terms(exps["task"].controller_robot().closed_form, q, qdot)["J"]
+    J = hybrid.arm_terms(exps["task"].controller_model().closed_form, q, qdot)["J"]
     np.testing.assert_allclose(diff, J.T @ (Fc - Fc_ff), rtol=1e-9)
 
 

@@ -144,6 +144,8 @@ def model_error_note(exp) -> str:
     The controller's inertia is ``(1 + model_error)`` times the arm's, so the arm's task
     acceleration is about ``(1 + model_error) a``: every loop gain is scaled by that factor.
     """
+    if getattr(exp, "controller_robot", None) is not None:  # a model of its own: no model_error scales it
+        return ""
     scale = 1.0 + exp.model_error
     g = exp.effective_gains()
     scaled = replace(g, **{name: value * scale for name, value in asdict(g).items()})

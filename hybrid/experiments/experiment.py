@@ -44,7 +44,7 @@ from hybrid.geometry.paths import Path
 from hybrid.geometry.surfaces import Surface
 from hybrid.geometry.task_axes import check_axes, frame_direction_of
 from hybrid.models.planar_arm import Arm
-from hybrid.models.robot import Robot, as_robot
+from hybrid.models.robot import Robot, as_robot, structure_difference
 from hybrid.native.standalone import generate_experiment
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.plants.registry import generated_plant_class
@@ -68,8 +68,13 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     Parameters
     ----------
     robot : Robot
-        The true arm. The controller's model is ``robot.with_model_error(model_error,
-        viscous_compensation)``.
+        The true arm (the plant's). The controller's model is ``controller_robot`` when given, else
+        ``robot.with_model_error(model_error, viscous_compensation)`` (:meth:`controller_model`).
+    controller_robot : Robot, optional
+        The robot the controller is told, as it is (e.g. one identified from the arm's data): of the
+        kinematic structure of ``robot`` (the same joints, origins, axes and tip frame; refused
+        otherwise), its inertial parameters, viscosities and gravity its own. With it ``model_error``
+        and ``viscous_compensation`` do not apply: a value other than their defaults is refused.
     surface : Surface
         What the sensor tip touches (2-D for the planar arm, 3-D otherwise).
     controller_surface : Surface, optional
@@ -129,6 +134,7 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     robot: Robot | None = None
     surface: Surface | None = None
     controller_surface: Surface | None = None
+    controller_robot: Robot | None = None
     path: Path | None = None
     path_task: PathTask | None = None
     start_point: tuple[float, ...] | None = None
@@ -191,6 +197,12 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
             if self.controller_surface.spec().estimated and self.frame == "desired":
                 raise HybridError("frame='desired' puts the loops on the desired point of a surface the controller "
                                   "knows; with an EstimatedSurface give frame='actual'")
+        if self.controller_robot is not None:
+            object.__setattr__(self, "controller_robot", as_robot(self.controller_robot))
+            difference = structure_difference(self.robot, self.controller_robot)
+            if difference is not None:
+                raise HybridError(f"controller_robot has another kinematic structure than robot ({difference}); "
+                                  "give a model of the same arm (e.g. robot.with_link(...)), its parameters its own")
         self.robot.kind.check_surface(self.surface)
         if self.posture is not None and not isinstance(self.posture, Posture):
             raise HybridError(f"posture = {shown(self.posture, 60)}; give a hybrid.Posture(q_rest, stiffness, damping) "
@@ -271,14 +283,17 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         """The generated plant of this run (the true arm, sensor, contact on the surface)."""
         return self.plant_class(self)
 
-    def controller_robot(self) -> Robot:
-        """The controller's (wrong) model of the arm."""
+    def controller_model(self) -> Robot:
+        """The controller's model of the arm: ``controller_robot`` when given, else the true robot with
+        ``model_error`` and ``viscous_compensation``."""
+        if self.controller_robot is not None:
+            return self.controller_robot
         return self.robot.with_model_error(self.model_error, self.viscous_compensation)
 
     def build_controller(self) -> Controller:
         """Exactly the controller this run uses: its model of the arm, loops, references, options."""
         surface = self.surface if self.controller_surface is None else self.controller_surface
-        return Controller(self.controller_robot(), surface, self.controller, axes=self.axes,
+        return Controller(self.controller_model(), surface, self.controller, axes=self.axes,
                           frame_direction=self.frame_direction, posture=self.posture, **self.controller_settings())
 
     @cached_property

@@ -38,6 +38,10 @@ def experiment_to_dict(exp) -> dict:
     d["robot"] = robot_to_dict(exp.robot)
     d["surface"] = surface_to_dict(exp.surface)
     d["controller_surface"] = None if exp.controller_surface is None else surface_to_dict(exp.controller_surface)
+    if exp.controller_robot is None:
+        del d["controller_robot"]  # as saved before experiments took one (a sweep's saved base stays the same)
+    else:
+        d["controller_robot"] = robot_to_dict(exp.controller_robot)
     if exp.path_task is None:
         del d["path_task"]  # as saved before experiments took one
     else:
@@ -87,6 +91,8 @@ def _settings(d: dict) -> dict:
     d["robot"], d["surface"] = robot_from_dict(d["robot"]), surface_from_dict(d["surface"])
     if d.get("controller_surface") is not None:
         d["controller_surface"] = surface_from_dict(d["controller_surface"])
+    if d.get("controller_robot") is not None:
+        d["controller_robot"] = robot_from_dict(d["controller_robot"])
     if d["path"] is not None:
         d["path"] = path_from_dict(d["path"])
     if d.get("path_task") is not None:

@@ -158,6 +158,22 @@ def check_common_types(exp) -> None:
     check_singular_tol(owner, exp.singular_tol)
 
 
+def check_model_source(exp) -> None:
+    """One source of the controller's model of the arm: ``controller_robot`` as it is, or the true robot
+    scaled by ``model_error`` and ``viscous_compensation``; both given is refused (the scaling would have
+    no effect)."""
+    if getattr(exp, "controller_robot", None) is None:
+        return
+    defaults = {f.name: f.default for f in fields(exp)}
+    changed = [f"{name} = {getattr(exp, name)}" for name in ("model_error", "viscous_compensation")
+               if getattr(exp, name) != defaults[name]]
+    if changed:
+        raise HybridError(f"{' and '.join(changed)} scale the true robot into the controller's model, but "
+                          "controller_robot is that model as it is; give one or the other (leave model_error "
+                          f"= {defaults['model_error']} and viscous_compensation = "
+                          f"{defaults['viscous_compensation']}, their defaults, with a controller_robot)")
+
+
 def check_timing(exp) -> None:
     """The run's timing and physics settings, checked alike for every experiment: duration, integration
     step and sample time (whole multiples, fast enough for the contact), model error, stable loops."""
@@ -185,6 +201,7 @@ def check_timing(exp) -> None:
     if exp.model_error <= -1 or exp.viscous_compensation < 0:
         raise HybridError(f"model_error = {exp.model_error} must be > -1 and viscous_compensation = "
                           f"{exp.viscous_compensation} >= 0")
+    check_model_source(exp)
     if abs(exp.duration / exp.sample_time - round(exp.duration / exp.sample_time)) > 1e-9 * exp.n_samples:
         k = max(1, round(exp.duration / exp.sample_time))
         raise HybridError(f"duration = {exp.duration} s is not a whole number of samples of "

@@ -369,6 +369,28 @@ class Robot:
         return units.robot_unit(self.chain, self.name)
 
 
+def structure_difference(robot: Robot, other: Robot) -> str | None:
+    """How ``other``'s kinematic structure (what its C is compiled from) differs from ``robot``'s, in words,
+    or None when it is the same: the kind (the planar arm's closed form or a serial chain), the joints'
+    number, names and types, a joint's origin or axis, the tip frame."""
+    if (robot.closed_form is None) != (other.closed_form is None):
+        kinds = ["the planar arm's closed form" if r.closed_form is not None else "a serial chain"
+                 for r in (robot, other)]
+        return f"the robot is {kinds[0]} and the other {kinds[1]}"
+    a, b = robot.chain, other.chain
+    if a.n != b.n:
+        return f"{a.n} joints against {b.n}"
+    for i, (ja, jb) in enumerate(zip(a.joints, b.joints)):
+        for what, x, y in (("name", ja.name, jb.name), ("type", ja.kind, jb.kind), ("origin rotation", ja.rotation,
+                           jb.rotation), ("origin translation", ja.translation, jb.translation),
+                           ("axis", ja.axis, jb.axis)):
+            if x != y:
+                return f"joint {i + 1} ({ja.name}): {what} {x} against {y}"
+    if a.tip_rotation != b.tip_rotation or a.tip_translation != b.tip_translation:
+        return f"the tip frame: {a.tip_translation} {a.tip_rotation} against {b.tip_translation} {b.tip_rotation}"
+    return None
+
+
 def as_robot(robot) -> Robot:
     """``robot``, or the paper's planar arm when given its parameters (an :class:`Arm`); anything else is
     a HybridError."""

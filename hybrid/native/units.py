@@ -115,6 +115,14 @@ def robot_unit(chain, name: str) -> Unit:
 
 
 @cache
+def regressor_unit(chain, name: str) -> Unit:
+    """The joint-torque regressor of ``chain`` (``tau = Y pi``), compiled."""
+    prefix = c_identifier(f"hybrid_{name}_regressor")
+    return compiled(prefix, {"chain": chain_key(chain), "regressor": 1},
+                    lambda: generator.api().build_regressor_unit(chain, prefix, robot_info(chain, name)))
+
+
+@cache
 def law_unit(chain, name: str, spec, axes: tuple[int, ...]) -> Unit:
     """The task frame and decoupling law of ``chain`` on the surface ``spec``, compiled."""
     prefix = c_identifier(f"hybrid_{name}_{spec.kind}_law")

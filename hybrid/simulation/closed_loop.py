@@ -208,9 +208,11 @@ def prepare_alike(template: Prepared, exp, parts: Iterable[str], kept: dict | No
     values = {}
     if "model" in parts:  # the controller's ``robot`` input is its model's array (Controller.step_inputs)
         # by the arm and the settings the model is made of, their types and bits (-0.0 is not 0.0 there)
-        key = ("model", id(exp.robot), *((type(v), np.float64(v).tobytes())
-                                         for v in (exp.model_error, exp.viscous_compensation)))
-        values.update(_kept(kept, key, lambda: {"controller.robot": exp.controller_robot().as_array()}, exp.robot))
+        settings = (exp.model_error, exp.viscous_compensation)
+        key = ("model", id(exp.robot), id(exp.controller_robot),
+               *((type(v), np.float64(v).tobytes()) for v in settings))
+        values.update(_kept(kept, key, lambda: {"controller.robot": exp.controller_model().as_array()}, exp.robot,
+                            exp.controller_robot))
     if parts & {"start", "plant"}:  # made of the template's settings, the sensor and the contact
         key = ("plant", parts, id(template), id(exp.sensor), id(exp.contact))
         values.update(_kept(kept, key, lambda: _plant_values(exp, parts), template, exp.sensor, exp.contact))

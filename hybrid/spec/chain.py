@@ -54,6 +54,23 @@ def parameter_names(chain: Chain) -> tuple[str, ...]:
             + tuple(f"damping[{j.name}]" for j in chain.joints) + ("g_x", "g_y", "g_z"))
 
 
+#: the per-link parameters the dynamics are linear in (the regressor's): mass [kg], first moment
+#: ``m c`` [kg m] and the inertia about the joint frame's origin [kg m^2], all in the joint frame
+LINEAR = ("m", "mcx", "mcy", "mcz", "IOxx", "IOxy", "IOxz", "IOyy", "IOyz", "IOzz")
+LINEAR_UNITS = ("kg",) + ("kg m",) * 3 + ("kg m^2",) * 6
+
+
+def linear_parameter_names(chain: Chain) -> tuple[str, ...]:
+    """Names of the parameters ``pi`` of ``tau = Y(q, q', q'') pi``: per link the :data:`LINEAR` set,
+    then the joint viscosities."""
+    return (tuple(f"{p}[{j.name}]" for j in chain.joints for p in LINEAR)
+            + tuple(f"damping[{j.name}]" for j in chain.joints))
+
+
+def linear_parameter_units(chain: Chain) -> tuple[str, ...]:
+    return LINEAR_UNITS * chain.n + parameter_units(chain)[len(INERTIAL) * chain.n:-3]
+
+
 #: SI units of a joint's position, rate, acceleration and effort, by joint kind
 JOINT_UNITS = {"revolute": {"q": "rad", "qd": "rad/s", "qdd": "rad/s^2", "tau": "N m"},
                "prismatic": {"q": "m", "qd": "m/s", "qdd": "m/s^2", "tau": "N"}}
