@@ -36,7 +36,7 @@ ARC_LENGTH_TOL = 1e-2
 #: a touch force of minus this: touching from the start (the controller's "off", as its loss threshold's)
 NO_TOUCH = 1e300
 #: what the settings left out are: the release's time [s], the retreat's speed [m/s], the tool's turn rate [1/s]
-DEFAULTS = {"unload_time": 0.2, "retreat_speed": 0.02, "orientation_gain": 10.0, "cross_track_gain": 20.0}
+DEFAULTS = {"unload_time": 0.2, "retreat_speed": 0.02, "orientation_gain": 10.0}
 #: the most nodes a path's table may have (8 bytes times 15 numbers each: about 120 MB)
 MAX_ROWS = 1_000_000
 #: the least cosine of the turn between neighbouring nodes' tangents (a cusp reverses the tangent)

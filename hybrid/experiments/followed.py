@@ -6,6 +6,10 @@ sets the start, the desired point and the workspace check, but does not steer th
 normal to ``e`` (the frame's direction), the tip stays in the plane through its start normal to
 ``e``, running along ``t1``: on the planar arm, along the surface's cross-section. A path elsewhere
 would be accepted and silently not followed, so :func:`check_followed` refuses it.
+
+A path task (:class:`hybrid.PathTask`, the experiment's ``path_task``) follows any path: the task frame turns
+with it. :func:`task_references` sets what the experiment's references and direction are then, and
+:func:`check_reach` refuses a path the arm cannot reach.
 """
 
 from __future__ import annotations
@@ -40,9 +44,10 @@ DEFAULT_FORCE, DEFAULT_SPEED = Step(10.0, 20.0, 0.4), Step(0.3, 0.6, 1.0)
 
 
 def task_references(exp) -> None:
-    """The experiment's ``force_reference`` and ``speed_reference``: with a path task, its force at the start
-    (the start presses with it) and 0, the task giving both along the path (a value given otherwise is
-    refused); without one, the defaults where none is given."""
+    """The experiment's ``force_reference``, ``speed_reference`` and ``frame_direction``: with a path task,
+    its force at the start (the start presses with it), 0 and the path's direction at its start, the task
+    giving them along the path (a value given otherwise is refused); without one, the defaults where none
+    is given."""
     task = exp.path_task
     if task is None:
         for name, default in (("force_reference", DEFAULT_FORCE), ("speed_reference", DEFAULT_SPEED),
