@@ -48,9 +48,9 @@ def relative_errors(robot, surface, q_nominal, tau0=False):
 
 
 ur5_run, panda_run = hybrid.tracing_experiment(), hybrid.panda_experiment()  # their surfaces and start poses
-errors = {"UR5 on a sphere": relative_errors(hybrid.ur5(), ur5_run.surface, ur5_run.initial_state()[:6]),
+errors = {"UR5 on a sphere": relative_errors(hybrid.ur5(), ur5_run.surface, ur5_run.start_state().q),
           "Panda on a cylinder, any tau0": relative_errors(hybrid.panda(), panda_run.surface,
-                                                            panda_run.initial_state()[:7], tau0=True)}
+                                                            panda_run.start_state().q, tau0=True)}
 
 # %%
 # The paper's planar arm in closed form: two joints, the task axes ``(t1, n)`` of its plane.

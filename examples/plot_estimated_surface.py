@@ -20,7 +20,7 @@ import numpy as np
 import hybrid
 
 told = hybrid.tracing_experiment(v_d=0.15)  # the speed held at 0.15 m/s along t1
-start = told.initial_state()[12:15]  # the state is (q, q', s, s'): s the sensor tip [m]
+start = told.start_state().sensor_tip  # where the sensor tip starts [m]
 n_true = told.surface.normal_at(start)
 
 # %%

@@ -161,3 +161,18 @@ def test_metrics_refuse_what_is_not_a_series():
         hybrid.metrics(t, ["a"] * 11, t, t, t)
     down = hybrid.metrics(t, np.where(t < 0.5, 10.0, 0.0), t, np.where(t < 0.5, 10.0, 0.0), t)
     assert down["force_settling_time_2pct_s"] == 0.0  # a step to 0 N settles (band from the step size)
+
+
+@pytest.mark.parametrize("make", [hybrid.paper_experiment, hybrid.tracing_experiment, hybrid.panda_experiment],
+                         ids=["paper", "ur5", "panda"])
+def test_the_start_state_by_its_parts(make):
+    exp = make()
+    x0, parts = exp.initial_state(), exp.start_state()
+    n, d = exp.robot.n, (len(x0) - 2 * exp.robot.n) // 2
+    assert np.array_equal(parts.q, x0[:n]) and np.array_equal(parts.qdot, x0[n:2 * n])
+    assert np.array_equal(parts.sensor_tip, x0[2 * n:2 * n + d])
+    assert np.array_equal(parts.sensor_velocity, x0[2 * n + d:])
+    assert np.array_equal(parts.array, x0)
+    assert np.allclose(parts.sensor_tip, exp.start(), atol=1e-3)  # the sensor tip presses at the start point
+    parts.q[0] += 1.0  # the parts are copies
+    assert np.array_equal(exp.start_state().q, x0[:n])

@@ -39,7 +39,7 @@ from hybrid.experiments.settings import (
     check_timing,
     warn_redundancy,
 )
-from hybrid.experiments.start import check_seed, start_state
+from hybrid.experiments.start import StartState, check_seed, start_state
 from hybrid.geometry.paths import Path
 from hybrid.geometry.surfaces import Surface
 from hybrid.geometry.task_axes import check_axes, frame_direction_of
@@ -345,6 +345,11 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         rotational axes, the joints from inverse kinematics of the true arm. What a foreign loop starts
         from."""
         return start_state(self).copy()
+
+    def start_state(self) -> StartState:
+        """:meth:`initial_state` by its parts: ``q``, ``qdot``, ``sensor_tip``, ``sensor_velocity`` (and
+        ``array``, the whole)."""
+        return StartState.of(start_state(self), self.robot.n)
 
     def checked_start(self, record: dict | None = None) -> np.ndarray:
         """:meth:`initial_state`, after the checks every run of this experiment makes before anything

@@ -13,6 +13,7 @@ within them. A start that still leaves them is refused, naming the joint.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
@@ -39,6 +40,36 @@ def check_seed(robot, q0) -> tuple[float, ...] | None:
         raise HybridError(f"q0 = {shown(q0, 60)}; give one finite joint position per joint [rad or m], {robot.n} "
                           f"for {', '.join(robot.joint_names)}, or None (the start's default seed)")
     return tuple(map(float, q))
+
+
+@dataclass(frozen=True)
+class StartState:
+    """A run's start ``x0 = (q, q', s, s')`` by its parts (:meth:`hybrid.Experiment.start_state`).
+
+    Attributes
+    ----------
+    q, qdot : ndarray
+        The joints' positions [rad or m] and velocities [rad/s or m/s] (at rest: zero).
+    sensor_tip, sensor_velocity : ndarray
+        The sensor tip ``s`` [m] and its velocity [m/s], base axes (the planar arm's: in its plane).
+    """
+
+    q: np.ndarray
+    qdot: np.ndarray
+    sensor_tip: np.ndarray
+    sensor_velocity: np.ndarray
+
+    @classmethod
+    def of(cls, x0: np.ndarray, nq: int) -> StartState:
+        """The parts of the state ``x0`` of an arm of ``nq`` joints (copies)."""
+        x0 = np.asarray(x0, dtype=float)
+        d = (len(x0) - 2 * nq) // 2
+        return cls(x0[:nq].copy(), x0[nq:2 * nq].copy(), x0[2 * nq:2 * nq + d].copy(), x0[2 * nq + d:].copy())
+
+    @property
+    def array(self) -> np.ndarray:
+        """``x0`` as one array, the order the plants and :meth:`hybrid.Experiment.initial_state` use."""
+        return np.concatenate([self.q, self.qdot, self.sensor_tip, self.sensor_velocity])
 
 
 def start_state(exp) -> np.ndarray:
