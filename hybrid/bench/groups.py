@@ -8,6 +8,7 @@ from functools import partial
 
 from hybrid.bench.first_use import cold_benchmarks, import_benchmarks
 from hybrid.bench.law import PaperLaw
+from hybrid.bench.paths import path_benchmarks
 from hybrid.bench.robots import ROBOTS, robot_benchmarks, spatial_benchmarks
 from hybrid.bench.runs import loop_operation_benchmarks, sweep_benchmarks, trace_benchmarks
 from hybrid.bench.standalone import standalone_benchmarks
@@ -56,5 +57,7 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
                 partial(trace_benchmarks, quick, add)),
                ("the 3-D closed loop's generated operations per RK4 step", partial(loop_operation_benchmarks, add)),
                ("the standalone controller (generated C): each step call timed, code size, compile time",
-                partial(standalone_benchmarks, quick, add))]
+                partial(standalone_benchmarks, quick, add)),
+               ("path tasks: the follower per call, the controller's sample with one, a raster's run",
+                partial(path_benchmarks, quick, add))]
     return groups

@@ -53,6 +53,9 @@ TRACE_ONE = "3-D run (UR5 on the sphere, 3 s simulated) through hybrid.simulate"
 TRACE_RUN = "3-D run (UR5 on the sphere, 3 s simulated) in the compiled loop, as SIMD lanes, one core, per run"
 SWEEP_3D = "1,000 3-D runs (UR5 on the sphere) by hybrid.sweep (both cores)"
 LOOP_OPS = "3-D closed loop (UR5 on the sphere), generated operations per RK4 step"
+PATH_FOLLOW = "path follower (generated C), one call from Python, per call"
+PATH_SAMPLE = "UR5 controller sample with a path task (follower, measurement, step) from Python, per sample"
+PATH_RUN = "UR5 along a 3-pass raster (4 s simulated) through hybrid.simulate"
 #: LOOP_OPS before the body-frame algorithms: 4 x 2,593 (the plant's right-hand side) + 3,488 / 100 (the
 #: controller step, once a sample of 100 steps) = 10,406.9. A reference count, like a baseline: the target
 #: is a share of it
