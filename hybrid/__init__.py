@@ -7,7 +7,8 @@ The public API, by subpackage:
   :data:`PANDA_URDF`; the paper's planar arm as ``Robot.planar(paper_arm())``, with :class:`Arm` its
   parameters), and their terms (:func:`arm_terms`, :func:`operational_space`); the joint-torque
   regressor ``tau = Y pi`` (:func:`regressor`) on the parameters the dynamics are linear in
-  (:func:`linear_parameters`), and its base parameters (:func:`base_parameters`, :class:`BaseParameters`);
+  (:func:`linear_parameters`), its base parameters (:func:`base_parameters`, :class:`BaseParameters`)
+  and their identification from measured torques (:func:`identify_dynamics`, :class:`DynamicsIdentification`);
 - geometry (:mod:`hybrid.geometry`): the surfaces :class:`Plane`, :class:`Circle`, :class:`Sphere`,
   :class:`Cylinder` and :class:`ImplicitSurface`; paths on them (:class:`CirclePath`,
   :class:`LinePath`; on any surface :class:`WaypointPath`, :class:`RasterPath`,
@@ -71,6 +72,7 @@ from hybrid.geometry.patterns import RasterPath, SpiralPath
 from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere
 from hybrid.geometry.waypoints import WaypointPath
 from hybrid.models.base_parameters import BaseParameters, base_parameters
+from hybrid.models.dynamics_identification import DynamicsIdentification, identify_dynamics
 from hybrid.models.planar_arm import Arm, paper_arm
 from hybrid.models.regressor import linear_parameters, regressor
 from hybrid.models.robot import Robot
@@ -108,14 +110,16 @@ def __dir__() -> list[str]:
 
 __all__ = [
     "Arm", "BaseParameters", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder",
-    "DecouplingLaw", "EstimatedSurface", "Experiment", "FaultReaction", "Gains", "HybridError", "ImplicitSurface",
+    "DecouplingLaw", "DynamicsIdentification", "EstimatedSurface", "Experiment", "FaultReaction", "Gains",
+    "HybridError", "ImplicitSurface",
     "JointLimitWarning", "Khatib", "LargeModelWarning", "LinePath", "Measurement", "NativeBuildError", "NonFiniteError",
     "OperationalSpace", "PANDA_URDF", "ParameterError", "PathTask", "Plane", "Posture", "RasterPath",
     "RedundancyWarning", "Reference", "Robot", "SCHEMES", "SafeStopError", "SampleTimingError", "Scheme", "Sensor",
     "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "SpiralPath", "Step",
     "TaskDecoupling",
     "TaskFrameError", "Tool", "ToolIdentification", "UR5_URDF", "URDFError", "WaypointPath", "WrenchSensor",
-    "__version__", "arm_terms", "base_parameters", "decoupling_law", "identify_tool", "linear_parameters", "metrics",
+    "__version__", "arm_terms", "base_parameters", "decoupling_law", "identify_dynamics", "identify_tool",
+    "linear_parameters", "metrics",
     "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config",
     "regressor", "simulate", "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
 ]
