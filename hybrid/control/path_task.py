@@ -35,6 +35,8 @@ CURVATURE_STEP = 1e-4
 ARC_LENGTH_TOL = 1e-2
 #: a touch force of minus this: touching from the start (the controller's "off", as its loss threshold's)
 NO_TOUCH = 1e300
+#: the tip's rotation a follower is given when none is (its spin references then turn base z)
+_IDENTITY = np.eye(3).ravel()
 #: what the settings left out are: the release's time [s], the retreat's speed [m/s], the tool's turn rate [1/s]
 DEFAULTS = {"unload_time": 0.2, "retreat_speed": 0.02, "orientation_gain": 10.0}
 #: the most nodes a path's table may have (8 bytes times 15 numbers each: about 120 MB)
@@ -457,7 +459,7 @@ class PathFollower:
         self.state = np.zeros(len(PATH_STATE))
         self.out = np.zeros(len(PATH_OUTPUT))
         self.served = np.zeros(len(PATH_OUTPUT))  # the outputs of the last sample served
-        self._p, self._R, self._force = np.zeros(3), np.eye(3).ravel(), np.zeros(3)
+        self._p, self._R, self._force = np.zeros(3), _IDENTITY.copy(), np.zeros(3)
         self._ptrs = [self._ffi.from_buffer("double[]", a) for a in (self.state, self._p, self._R, self._force,
                                                                        self.out)]
 
@@ -466,7 +468,7 @@ class PathFollower:
         wrench on the robot], the tip frame's rotation ``R`` (3 x 3 or 9 numbers row by row; default the
         identity: the spin references then turn base z) (the state stays until :meth:`advance`)."""
         self._p[:], self._force[:] = p, force
-        self._R[:] = np.eye(3).ravel() if R is None else np.ravel(R)
+        self._R[:] = _IDENTITY if R is None else np.ravel(R)
         status = self._lib.hybrid_path_follow_entry(self._table_ptr, self._settings_ptr, *self._ptrs)
         if status != PATH_STATUSES["PATH_OK"]:
             name = next(k for k, v in PATH_STATUSES.items() if v == status)

@@ -29,7 +29,7 @@ from hybrid.control.schemes import SCHEMES, scheme_of
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import RENAMED, RenamedKeywords, renamed_attribute
 from hybrid.errors import HybridError
-from hybrid.experiments.followed import check_followed, check_reach, task_references
+from hybrid.experiments.followed import check_followed, check_reach, task_references, told_surface
 from hybrid.experiments.serialisation import experiment_from_dict, experiment_to_dict
 from hybrid.experiments.settings import (
     TOUCH_THRESHOLD,
@@ -290,10 +290,13 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
             return self.controller_robot
         return self.robot.with_model_error(self.model_error, self.viscous_compensation)
 
+    def told_surface(self) -> Surface:
+        """The surface the controller is told: ``controller_surface``, else the true one."""
+        return told_surface(self)
+
     def build_controller(self) -> Controller:
         """Exactly the controller this run uses: its model of the arm, loops, references, options."""
-        surface = self.surface if self.controller_surface is None else self.controller_surface
-        return Controller(self.controller_model(), surface, self.controller, axes=self.axes,
+        return Controller(self.controller_model(), self.told_surface(), self.controller, axes=self.axes,
                           frame_direction=self.frame_direction, posture=self.posture, **self.controller_settings())
 
     @cached_property

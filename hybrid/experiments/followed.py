@@ -15,6 +15,7 @@ with it. :func:`task_references` sets what the experiment's references and direc
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 
 import numpy as np
 
@@ -68,8 +69,13 @@ def task_references(exp) -> None:
                               "path; leave force_reference and speed_reference out (give them in the PathTask)")
         object.__setattr__(exp, name, value)
     # the task frame's direction: the path's at its start (the controller's follower sets it each sample)
-    surface = exp.surface if exp.controller_surface is None else exp.controller_surface
-    object.__setattr__(exp, "frame_direction", task.frame_direction(surface, exp.frame_direction))
+    object.__setattr__(exp, "frame_direction", task.frame_direction(told_surface(exp), exp.frame_direction))
+
+
+def told_surface(exp):
+    """The surface the experiment's controller is told: its ``controller_surface``, else the true one (what
+    the controller's frames and a path task's follower are on)."""
+    return exp.surface if exp.controller_surface is None else exp.controller_surface
 
 
 def check_followed(exp) -> None:
@@ -135,9 +141,14 @@ REACH_STEP = 0.01
 def check_reach(exp, q_start: np.ndarray) -> None:
     """Refuse a path task whose path leaves the arm's reach: the true arm's inverse kinematics (position only)
     at points along it at most :data:`REACH_STEP` apart, each from the last one's joints (the first from the
-    start's), as the arm would go."""
-    path = exp.path_task.path
-    length, closed = exp.path_task.extent()
+    start's), as the arm would go. Worked out once for a robot, task and start (a sweep's runs share them)."""
+    _check_reach(exp.robot, exp.path_task, tuple(np.asarray(q_start, dtype=float).tolist()))
+
+
+@lru_cache(maxsize=64)
+def _check_reach(robot, task: PathTask, q_start: tuple) -> None:
+    path = task.path
+    length, closed = task.extent()
     s0 = float(np.mod(path.start, length)) if closed else float(path.start)
     end = s0 + length if closed else length
     s = np.linspace(s0, end, max(2, int(math.ceil((end - s0) / REACH_STEP)) + 1))
@@ -145,7 +156,7 @@ def check_reach(exp, q_start: np.ndarray) -> None:
     q = np.asarray(q_start, dtype=float)
     for si, p in zip(s, np.asarray(path.points_at(s), dtype=float)):
         try:
-            q = exp.robot.inverse_kinematics(p, None, q0=q)
+            q = robot.inverse_kinematics(p, None, q0=q)
         except HybridError:
             raise HybridError(f"path_task: the path leaves the arm's reach near s = {si:.4g} m (point "
                               f"{np.round(p, 4).tolist()} m: no joint positions put the tip there from the path's "

@@ -27,9 +27,8 @@ def follower_of(res) -> PathFollower:
     """A follower of the run's path task as its controller had it (the surface it was told, its sample period
     and touch force)."""
     exp = res.experiment
-    surface = exp.surface if exp.controller_surface is None else exp.controller_surface
     touch = exp.touch_threshold if exp.approach_speed > 0 else None
-    return PathFollower(exp.path_task, surface, exp.sample_time, touch)
+    return PathFollower(exp.path_task, exp.told_surface(), exp.sample_time, touch)
 
 
 def path_series(res, follower: PathFollower | None = None) -> dict[str, np.ndarray]:
