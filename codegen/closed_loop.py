@@ -35,31 +35,43 @@ from dataclasses import dataclass
 import casadi as ca
 import sympy as sp
 
-from hybrid.spec.controller_step import CONTROLLER_STEP, FAULT, FAULT_STATE
+from hybrid.spec.controller_step import CONTROLLER_STEP, FAULT, FAULT_STATE, LOOP_GAINS
 from hybrid.spec.interfaces import STATE
 from hybrid.spec.metrics import METRIC_NAMES, SETTLING_BAND, STEADY_WINDOW_S, TOUCH_BAND, metric_names
+from hybrid.spec.path_follow import PATH_SETTINGS, path_axes
 
 from .emit import STATUS, Unit, comment_safe, manifest, stamp
 from .kernel import Arg, Kernel
 from .lanes import LANES_HEADER, lanes_function, libm_maps
+from .path_follow import path_header
 from .templates import render
 
 #: the record columns the loop reads besides the force: normal force, tangential speed, penetration and
 #: the surface's normal force (``hybrid.metrics``' force_normal, velocity_tangential, penetration,
 #: contact_force)
 SIGNALS = ("Fc_n", "v_t", "penetration", "N")
+
+
 @dataclass(frozen=True)
 class LoopSpec:
     """What one closed loop is made of: the plant's state derivative ``rhs(x, tau, ...)`` and output
     record ``outputs(x, ...)``, the controller ``step`` (:mod:`codegen.controller_step`), the
     record columns of the sensor's force on the robot (base axes) and the step's fault reaction
-    ``stop`` (:mod:`codegen.safe_stop`)."""
+    ``stop`` (:mod:`codegen.safe_stop`); for a path task, the controller's ``task_measurement`` kernel
+    (``measure``) and its task ``axes`` (the loop then follows each run's path: :mod:`hybrid.spec.path_follow`)."""
 
     rhs: Kernel
     outputs: Kernel
     step: Kernel
     force_columns: tuple[str, ...]
     stop: Kernel
+    measure: Kernel | None = None
+    axes: tuple[int, ...] | None = None
+
+    @property
+    def follows_path(self) -> bool:
+        """Whether the loop follows a path task (its runs' rows carry their paths)."""
+        return self.measure is not None
 
 
 def _rows(expr, index: list[int]):
@@ -95,11 +107,23 @@ def stepping_kernel(spec: LoopSpec) -> Kernel:
                   "the plant's state derivative, the record columns the closed loop reads and the whole record")
 
 
+def path_measurement_kernel(measure: Kernel) -> Kernel:
+    """What a path's follower reads of the controller's measurement (``task_measurement``): the tip's
+    position ``p`` and rotation ``R`` (row by row), from the joints and the controller's model of the arm
+    alone (the contact force the follower reads is the loop's reading itself)."""
+    inputs = tuple(a for a in measure.inputs if a.name in ("q", "robot"))
+    outputs = tuple(a for a in measure.outputs if a.name in ("p", "R"))
+    return Kernel("path_measurement", inputs, outputs, "the tip's position p and rotation R (row by row), base axes")
+
+
 def blocks(spec: LoopSpec) -> list[tuple[str, int]]:
     """``(name, size)`` of each block of a run's row: the initial state, the plant's parameter arrays
     (``plant.<input>``), the controller's (``controller.<input>``), the force and speed steps
     ``(before, after, at)`` the metrics read, then the sensor's ``dropout`` window ``(start, end)`` [s]
-    and the controller's ``timing_tolerance`` (-1: no timing check)."""
+    and the controller's ``timing_tolerance`` (-1: no timing check); for a path task, the follower's
+    settings (``path.settings``, :data:`~hybrid.spec.path_follow.PATH_SETTINGS`), where its table starts in
+    the loop's ``tables`` (``path.table``, a count of numbers) and the normal axis's loop gains in the
+    retreat (``path.retreat_gains``, :data:`~hybrid.spec.controller_step.LOOP_GAINS`)."""
     x = spec.rhs.inputs[0]
     out, sizes = [("x0", x.size)], {}
     for a in (*spec.rhs.inputs[2:], *spec.outputs.inputs[1:]):
@@ -107,7 +131,10 @@ def blocks(spec: LoopSpec) -> list[tuple[str, int]]:
             raise ValueError(f"plant input {a.name} has two sizes")
     out += [(f"plant.{n}", s) for n, s in sizes.items()]
     out += [(f"controller.{a.name}", a.size) for a in _parameters(spec.step)]
-    return out + [("force_step", 3), ("speed_step", 3), ("dropout", 2), ("timing_tolerance", 1)]
+    out += [("force_step", 3), ("speed_step", 3), ("dropout", 2), ("timing_tolerance", 1)]
+    if spec.follows_path:
+        out += [("path.settings", len(PATH_SETTINGS)), ("path.table", 1), ("path.retreat_gains", len(LOOP_GAINS))]
+    return out
 
 
 def _parameters(step: Kernel) -> list[Arg]:
@@ -142,8 +169,17 @@ def _driver(spec: LoopSpec, stepping: Kernel) -> dict:
     names = spec.outputs.outputs[0].names
     force, signals = ([names.index(c) for c in cols] for cols in (spec.force_columns, stepping.outputs[1].names))
     plant = {a.name: offset["plant." + a.name] for a in (*rhs.inputs[2:], *spec.outputs.inputs[1:])}
+    path = None
+    if spec.follows_path:
+        (t1, t2, n), spins = path_axes(spec.axes)
+        measure = path_measurement_kernel(spec.measure)
+        path = {"t1": t1, "t2": t2, "n": n, "spins": spins, "gains_at": len(LOOP_GAINS) * n, "ngains": len(LOOP_GAINS),
+                "settings": offset["path.settings"], "table": offset["path.table"],
+                "retreat_gains": offset["path.retreat_gains"], "e": offset["controller.e"],
+                "selection": offset["controller.selection"], "gains": offset["controller.gains"],
+                "measure": measure, "measure_params": [offset["controller." + a.name] for a in measure.inputs[1:]]}
     return dict(
-        step=step, outs=step.core_outputs(),
+        step=step, outs=step.core_outputs(), path=path,
         guards=step.guards, nx=nx, nq=nq, nb=at, m=sizes["integrals"] // 2, ns=nf + len(SIGNALS),
         nm=len(metric_names(nq)), ny=stepping.outputs[2].size, force=force, signals=signals,
         iF=nf, iv=nf + 1, ipen=nf + 2, iN=nf + 3, fs=offset["force_step"], vs=offset["speed_step"], x0=offset["x0"],
@@ -202,19 +238,24 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
     stages = [lanes_function(k, name, fixed, "HL_STAGE", near=nq, apart=True) for k, name, fixed in (
         (rhs, "plant_rhs_lanes", held), (stepping, "plant_rhs_signals_lanes", held + shown))]
     lines = sum(stage.count("\n") + 1 for stage in stages)
+    path = None
+    if spec.follows_path:  # the follower's C, and the tip's measurement in lanes
+        measure = path_measurement_kernel(spec.measure)
+        path = {"follower": path_header(), "measure_lanes": lanes_function(
+            measure, "path_measurement_lanes", tuple(a.name for a in measure.inputs[1:]), "HL_APART", apart=True)}
     body = render("closed_loop_unit.c.j2", **_driver(spec, stepping), prefix=prefix, what=what, comment=comment_safe,
                   width=ONE_RUN_LANES if lanes == 1 else lanes, lanes_header=LANES_HEADER, status=STATUS,
                   libm_maps=libm_maps(), small=int(lines <= _INLINE_LINES), stages=stages,
                   outputs_lanes=lanes_function(spec.outputs, "plant_outputs_lanes", shown, "HL_APART", apart=True),
                   step_lanes=lanes_function(spec.step, spec.step.name + "_lanes", params, "HL_APART", apart=True),
                   stop_lanes=lanes_function(spec.stop, "safe_stop_lanes", (*_STOP_ROW, "sample_time"), "HL_APART",
-                                            apart=True))
+                                            apart=True), path_code=path)
     header = render("closed_loop_unit.h.j2", prefix=prefix)
     loop = {"symbol": f"{prefix}_closed_loop", "lanes_symbol": f"{prefix}_lanes",
             "blocks": [{"name": n, "size": s} for n, s in blocks(spec)],
             "state": list(spec.rhs.inputs[0].names or ()), "nx": spec.rhs.inputs[0].size, "nq": nq,
             "metrics": list(metric_names(nq)),
             "signals": [*spec.force_columns, *SIGNALS],
-            "outputs": list(stepping.outputs[2].names)}
+            "outputs": list(stepping.outputs[2].names), "path_task": spec.follows_path}
     text = manifest(prefix, (), f"CasADi {ca.__version__}", {**info, "parts": N_PARTS, "closed_loop": loop})
     return Unit(prefix, stamp(body), stamp(header), text)

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 7060b68d792c4bf4d057a91f7069a487981554fe13d9f5f67097cf1754ed4f53 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 6181e02c7503ba5175b6c2d91d9f086a53265e78f20d8e76db0484c303ee2a31 */
 /* hybrid_planar_arm_circle_controller_4b54e1a71151: the paper's closed loop on a circle: controller_step.
    Emitted by hybrid's codegen/closed_loop.py; it includes hybrid_lanes.h (in generated/: compile with -I there). */
 #if !defined(__GNUC__)
@@ -2284,6 +2284,17 @@ static void record_outputs_row(double *outputs, int g, int used, long row, long 
     }
 }
 
+/* the state and the output record at control sample k of each lane still running (NaN for the others) */
+static void record_sample_row(double *samples, int g, int used, long k, long n_samples, const hl_v *x, const hl_v *y,
+                              hl_i alive) {
+    int l, j;
+    for (l = 0; l < used; ++l) {
+        double *at = samples + ((long)(g + l) * n_samples + k) * 22;
+        for (j = 0; j < 8; ++j) at[j] = alive[l] ? x[j][l] : NAN;
+        for (j = 0; j < 14; ++j) at[8 + j] = alive[l] ? y[j][l] : NAN;
+    }
+}
+
 /* what a run keeps, where it keeps it: the test inline, the copy out of line (a call spills every vector
    register the loop holds, so a run that keeps nothing makes none) */
 static inline void record(double *states, double *taus, int g, int used, long row, long rows, const hl_v *x,
@@ -2293,11 +2304,15 @@ static inline void record(double *states, double *taus, int g, int used, long ro
 static inline void record_outputs(double *outputs, int g, int used, long row, long rows, const hl_v *y, hl_i alive) {
     if (outputs) record_outputs_row(outputs, g, used, row, rows, y, alive);
 }
+static inline void record_sample(double *samples, int g, int used, long k, long n_samples, const hl_v *x, const hl_v *y,
+                                 hl_i alive) {
+    if (samples) record_sample_row(samples, g, used, k, n_samples, x, y, alive);
+}
 
 /* the runs g .. g + used - 1 as one group of HL_W lanes (unused lanes repeat run g) */
-static void run_lanes(int g, int used, const double *runs, int n_samples, int steps_per_sample, double h,
-                      double sample_time, double singular_tol, double *metrics, int *status, int *failed_sample,
-                      double *states, double *taus, double *outputs) {
+static void run_lanes(int g, int used, const double *runs, const double *tables, int n_samples, int steps_per_sample,
+                      double h, double sample_time, double singular_tol, double *metrics, int *status,
+                      int *failed_sample, double *states, double *taus, double *outputs, double *samples) {
     hl_v pre_rhs[PLANT_RHS_LANES_NPRE], pre_out[PLANT_OUTPUTS_LANES_NPRE], pre_both[PLANT_RHS_SIGNALS_LANES_NPRE],
         pre_step[CONTROLLER_STEP_LANES_NPRE];
     hl_v blk[134], x[8], xt[8], k1[8], k2[8], k3[8], k4[8], s[6], fc[6], z[4], tv[1],
@@ -2317,6 +2332,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     long row = 0;
     int i, j, l, k, steady;
     (void)singular_tol;
+    (void)tables;
     for (l = 0; l < HL_W; ++l) {
         for (j = 0; j < 134; ++j) blk[j][l] = runs[(long)(g + (l < used ? l : 0)) * 134 + j];
         run.status[l] = HYBRID_OK;
@@ -2351,6 +2367,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     for (k = 0; k < n_samples && hl_any(run.alive); ++k) {
         /* the sensor's reading at the sample instant (a row's signals come with its step's first stage) */
         plant_outputs_lanes(x, pre_out, y);
+        record_sample(samples, g, used, k, n_samples, x, y, run.alive);
         fc[0] = y[4];
         fc[1] = y[5];
 
@@ -2459,6 +2476,7 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
         metrics_row(&mt, blk, s, tq, row, h, end);
         record_outputs(outputs, g, used, row, rows, y, run.alive);
     }
+    for (i = k; i < n_samples; ++i) record_sample(samples, g, used, i, n_samples, x, y, run.alive);  /* all stopped */
     while (++row < rows) { /* all stopped */
         record(states, taus, g, used, row, rows, x, tq, run.alive, run.alive);
         record_outputs(outputs, g, used, row, rows, y, run.alive);
@@ -2470,11 +2488,11 @@ static void run_lanes(int g, int used, const double *runs, int n_samples, int st
     }
 }
 
-int hybrid_planar_arm_circle_controller_4b54e1a71151_closed_loop(int nruns, const double *runs, int n_samples, int steps_per_sample, double h, double sample_time, double singular_tol, double *metrics, int *status, int *failed_sample, double *states, double *taus, double *outputs) {
+int hybrid_planar_arm_circle_controller_4b54e1a71151_closed_loop(int nruns, const double *runs, const double *tables, int n_samples, int steps_per_sample, double h, double sample_time, double singular_tol, double *metrics, int *status, int *failed_sample, double *states, double *taus, double *outputs, double *samples) {
     int g;
     for (g = 0; g < nruns; g += HL_W) {
-        run_lanes(g, nruns - g < HL_W ? nruns - g : HL_W, runs, n_samples, steps_per_sample, h, sample_time,
-                  singular_tol, metrics, status, failed_sample, states, taus, outputs);
+        run_lanes(g, nruns - g < HL_W ? nruns - g : HL_W, runs, tables, n_samples, steps_per_sample, h, sample_time,
+                  singular_tol, metrics, status, failed_sample, states, taus, outputs, samples);
     }
     return HYBRID_OK;
 }
@@ -2483,6 +2501,6 @@ int hybrid_planar_arm_circle_controller_4b54e1a71151_lanes(void) {
     return HL_W;
 }
 #else
-int hybrid_planar_arm_circle_controller_4b54e1a71151_closed_loop(int nruns, const double *runs, int n_samples, int steps_per_sample, double h, double sample_time, double singular_tol, double *metrics, int *status, int *failed_sample, double *states, double *taus, double *outputs);
+int hybrid_planar_arm_circle_controller_4b54e1a71151_closed_loop(int nruns, const double *runs, const double *tables, int n_samples, int steps_per_sample, double h, double sample_time, double singular_tol, double *metrics, int *status, int *failed_sample, double *states, double *taus, double *outputs, double *samples);
 int hybrid_planar_arm_circle_controller_4b54e1a71151_lanes(void);
 #endif

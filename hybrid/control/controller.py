@@ -359,10 +359,11 @@ class Controller(SampleReferences):
 
     @property
     def runs_in_c(self) -> bool:
-        """True when every reference is a number or a :class:`Step`, no path is given and the wrench is
-        given as such (no sensor reading): then a whole run can be compiled C
+        """True when every reference is a number, a :class:`Step` or a path task's, no desired path is given and
+        the wrench is given as such (no sensor reading): then a whole run can be compiled C
         (:mod:`hybrid.simulation.closed_loop`)."""
-        return self._short and self.wrench_sensor is None and not self._estimated
+        given_as_code = self._varying or self._rates or self.path is not None
+        return not given_as_code and self.wrench_sensor is None and not self._estimated
 
     def step_inputs(self, at_start: bool = False) -> dict[str, np.ndarray]:
         """The compiled step's inputs this controller fixes (gains, references' steps, model,

@@ -24,7 +24,7 @@ from hybrid.geometry.surfaces import Surface
 from hybrid.geometry.task_axes import frame_direction_of
 from hybrid.native import loader
 from hybrid.spec.controller_step import LOOP_GAINS, NO_LIMIT
-from hybrid.spec.path_follow import PATH_OUTPUT, PATH_SETTINGS, PATH_STATE, PATH_STATUSES, PATH_TABLE
+from hybrid.spec.path_follow import PATH_OUTPUT, PATH_SETTINGS, PATH_STATE, PATH_STATUSES, PATH_TABLE, path_axes
 from hybrid.validate import _finite, shown
 
 #: how far [m] a path's node may be from the surface
@@ -533,9 +533,9 @@ class PathReferences:
             raise HybridError("path_task puts the loops in the frame at the tip, along the path: leave frame, "
                               "position_error and path at their defaults")
         self.follower = PathFollower(task, surface, sample_time, touch_force)
-        self._t1, self._t2, self._n = self.positions = axes.index(0), axes.index(1), axes.index(2)
         # the rotations about t1 and t2, where the task has them: the tool's tilt and lead
-        self.spins = tuple(axes.index(i) for i in (3, 4)) if 3 in axes and 4 in axes else None
+        self.positions, self.spins = path_axes(axes)
+        self._t1, self._t2, self._n = self.positions
         tilted = np.any(self.follower.table[:, [PATH_TABLE.index("tilt"), PATH_TABLE.index("lead")]] != 0)
         if task.orientation_gain is not None and self.spins is None:
             raise HybridError(f"path_task.orientation_gain = {task.orientation_gain} turns the tool about t1 and t2, "

@@ -24,7 +24,9 @@ import numpy as np
 from hybrid.errors import HybridError, NativeBuildError
 from hybrid.native import compiler, units
 from hybrid.native.binding import one_block, workers
+from hybrid.simulation.path_metrics import sampled_path_metrics
 from hybrid.spec.interfaces import STATUS_CODES
+from hybrid.spec.metrics import PATH_METRICS
 
 log = logging.getLogger("hybrid")
 
@@ -43,6 +45,7 @@ class Loop:
     nx: int
     nq: int
     outputs: tuple[str, ...]  # the output record's columns
+    path_task: bool  # its runs follow a path (each row's path.table block: where its table starts in tables)
 
     def row(self, values: dict[str, np.ndarray]) -> np.ndarray:
         """A run's row from its blocks by name (each of the manifest's size)."""
@@ -81,7 +84,7 @@ def _loop(plant, variant: tuple, lanes: int | None = None) -> Loop:
     return Loop(getattr(module.lib, loop["symbol"]), module.ffi, (plant, variant),
                 int(getattr(module.lib, loop["lanes_symbol"])()), lanes == 1,
                 tuple((b["name"], b["size"]) for b in loop["blocks"]), tuple(loop["metrics"]), loop["nx"], loop["nq"],
-                tuple(loop["outputs"]))
+                tuple(loop["outputs"]), bool(loop.get("path_task", False)))
 
 
 @cache
@@ -102,19 +105,23 @@ def _available_loop(plant, variant: tuple, lanes: int | None = None) -> Loop | N
 
 @dataclass(frozen=True)
 class Prepared:
-    """An experiment ready for the compiled loop: which loop, its integration settings, its row."""
+    """An experiment ready for the compiled loop: which loop, its integration settings, its row, and a path
+    task's table (:data:`~hybrid.spec.path_follow.PATH_TABLE` rows; None without one)."""
 
     experiment: object
     loop: Loop
     settings: tuple
     row: np.ndarray
+    table: np.ndarray | None = None
 
 
 def loop_of(exp, ctrl=None) -> tuple:
     """``(plant, variant)``: what the compiled loop of ``exp`` is built from (its loop plant, and its
-    controller's step variant as sorted items); ``ctrl``: its controller, when built already."""
+    controller's step variant as sorted items, with ``path_task`` where it follows one); ``ctrl``: its
+    controller, when built already."""
     ctrl = ctrl or exp.build_controller()
-    return exp.plant_class.loop_plant(exp), tuple(sorted(ctrl.step_variant().items()))
+    variant = ctrl.step_variant() | ({"path_task": True} if ctrl.path_references is not None else {})
+    return exp.plant_class.loop_plant(exp), tuple(sorted(variant.items()))
 
 
 def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None, ctrl=None) -> Prepared | None:
@@ -144,9 +151,13 @@ def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None, ctrl=No
     values = {"x0": x0, "force_step": (fs.before, fs.after, fs.at), "speed_step": (vs.before, vs.after, vs.at),
               "dropout": (start, start + sensor.dropout_duration),
               "timing_tolerance": -1.0 if ctrl.timing_tolerance is None else ctrl.timing_tolerance,
-              **given, **{f"controller.{k}": v for k, v in ctrl.step_inputs().items()}}
+              **given, **{f"controller.{k}": v for k, v in ctrl.step_inputs(at_start=True).items()}}
+    path, table = ctrl.path_references, None
+    if path is not None:  # its table's place in the loop's tables is the run's (run() writes it)
+        table = path.follower.table
+        values |= {"path.settings": path.follower.settings, "path.table": 0.0, "path.retreat_gains": path.retreat_gains}
     settings = (exp.n_samples, exp.steps_per_sample, exp.integration_step, exp.sample_time, exp.singular_tol)
-    return Prepared(exp, loop, settings, loop.row(values))
+    return Prepared(exp, loop, settings, loop.row(values), table)
 
 
 def build_side_by_side(experiments, lanes: int | None = 1) -> None:
@@ -216,7 +227,7 @@ def prepare_alike(template: Prepared, exp, parts: Iterable[str], kept: dict | No
     if parts & {"start", "plant"}:  # made of the template's settings, the sensor and the contact
         key = ("plant", parts, id(template), id(exp.sensor), id(exp.contact))
         values.update(_kept(kept, key, lambda: _plant_values(exp, parts), template, exp.sensor, exp.contact))
-    return Prepared(exp, template.loop, template.settings, template.loop.replaced(template.row, values))
+    return Prepared(exp, template.loop, template.settings, template.loop.replaced(template.row, values), template.table)
 
 
 def _plant_values(exp, parts: frozenset) -> dict[str, np.ndarray]:
@@ -235,7 +246,8 @@ def _kept(kept: dict, key: tuple, make, *objects):
 @dataclass
 class Outcome:
     """One compiled run: ``status`` (0 ok, else the C status code), the sample where it stopped
-    (-1), its metrics by name (NaN for a run that stopped), and with ``record`` its states, torques
+    (-1), its metrics by name (NaN for a run that stopped; a path task's
+    :data:`~hybrid.spec.metrics.PATH_METRICS` too), and with ``record`` its states, torques
     and output record per step (NaN after a stop)."""
 
     status: int
@@ -267,23 +279,50 @@ def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
         elif loop.alone:  # runs prepared one by one, run together: the lanes build
             loop = _available_loop(*loop.key) or loop
         runs = np.ascontiguousarray(np.stack([prepared[i].row for i in members]))
+        tables = _tables(loop, runs, [prepared[i].table for i in members])
         metrics = np.empty((n, len(loop.metrics)))
         status, failed = np.empty(n, np.intc), np.empty(n, np.intc)
         steps = n_samples * per_sample + 1
         # every row is written: NaN from where a run stopped
         states, taus, outputs = _records(n, steps, (loop.nx, loop.nq, len(loop.outputs))) if record else (None,) * 3
+        # a path task's metrics read the state and the record at each control sample
+        samples = np.empty((n, n_samples, loop.nx + len(loop.outputs))) if loop.path_task else None
         ffi = loop.ffi
-        loop.function(n, ffi.from_buffer("double[]", runs), n_samples, per_sample, h, sample_time, tol,
-                      ffi.from_buffer("double[]", metrics), ffi.from_buffer("int[]", status),
-                      ffi.from_buffer("int[]", failed),
-                      ffi.from_buffer("double[]", states) if record else ffi.NULL,
-                      ffi.from_buffer("double[]", taus) if record else ffi.NULL,
-                      ffi.from_buffer("double[]", outputs) if record else ffi.NULL)
+        loop.function(n, _buffer(ffi, runs), _buffer(ffi, tables), n_samples, per_sample, h, sample_time, tol,
+                      _buffer(ffi, metrics), ffi.from_buffer("int[]", status), ffi.from_buffer("int[]", failed),
+                      *(_buffer(ffi, a) for a in (states, taus, outputs, samples)))
         for j, i in enumerate(members):
             ok = status[j] == STATUS_CODES["OK"]
             m = dict(zip(loop.metrics, metrics[j].tolist() if ok else [math.nan] * len(loop.metrics)))
             if ok:
                 m["contact_losses"] = int(m["contact_losses"])
+            if loop.path_task:
+                m |= _path_metrics(prepared[i].experiment, loop, samples[j], ok)
             outcomes[i] = Outcome(int(status[j]), int(failed[j]), m, states[j] if record else None,
                                   taus[j] if record else None, outputs[j] if record else None)
     return outcomes
+
+
+def _buffer(ffi, a: np.ndarray | None):
+    """``a`` as a C array of doubles (NULL for None)."""
+    return ffi.NULL if a is None else ffi.from_buffer("double[]", a)
+
+
+def _tables(loop: Loop, runs: np.ndarray, tables: list) -> np.ndarray | None:
+    """The path tables of a group's runs, one after the other, each run's ``path.table`` block set to where
+    its own starts (a count of numbers); None for a loop without a path task."""
+    if not loop.path_task:
+        return None
+    at, _ = _spans(loop.blocks)["path.table"]
+    sizes = np.cumsum([0] + [t.size for t in tables])
+    runs[:, at] = sizes[:-1]
+    return np.ascontiguousarray(np.concatenate([t.ravel() for t in tables]), dtype=float)
+
+
+def _path_metrics(exp, loop: Loop, samples: np.ndarray, ok: bool) -> dict:
+    """A path task's metrics from the state and the output record at each control sample (NaN for a run
+    that stopped)."""
+    if not ok:
+        return dict.fromkeys((m.name for m in PATH_METRICS), math.nan)
+    states, outputs = samples[:, :loop.nx], samples[:, loop.nx:]
+    return sampled_path_metrics(exp, loop.outputs, outputs, states, loop.nq)

@@ -26,7 +26,11 @@ SETTLED = 0.05
 def follower_of(res) -> PathFollower:
     """A follower of the run's path task as its controller had it (the surface it was told, its sample period
     and touch force)."""
-    exp = res.experiment
+    return _follower(res.experiment)
+
+
+def _follower(exp) -> PathFollower:
+    """:func:`follower_of` a run of ``exp``."""
     touch = exp.touch_threshold if exp.approach_speed > 0 else None
     return PathFollower(exp.path_task, exp.told_surface(), exp.sample_time, touch)
 
@@ -39,14 +43,20 @@ def path_series(res, follower: PathFollower | None = None) -> dict[str, np.ndarr
     speed along the path's tangent [m/s]), ``normal_force`` (the measured force along the path's normal [N])
     and ``t`` [s]. ``follower``: the run's (:func:`follower_of`), reset here."""
     exp = res.experiment
-    follower = follower_of(res) if follower is None else follower
+    m, n = exp.steps_per_sample, exp.n_samples
+    return sampled_series(exp, res.record["outputs"], res.outputs[::m][:n], res.state[::m][:n], res.record["nq"],
+                          follower)
+
+
+def sampled_series(exp, names, rows: np.ndarray, states: np.ndarray, nq: int,
+                   follower: PathFollower | None = None) -> dict[str, np.ndarray]:
+    """:func:`path_series` of a run of ``exp`` from its output record (columns ``names``) and its states at
+    each control sample (``rows``, ``states``; ``nq`` joints)."""
+    follower = _follower(exp) if follower is None else follower
     follower.reset()
-    names = res.record["outputs"]
-    rows = res.outputs[::exp.steps_per_sample][:exp.n_samples]
     arm_tips, tips = (rows[:, [names.index(c) for c in (f"{x}_x", f"{x}_y", f"{x}_z")]] for x in ("r", "s"))
     forces = rows[:, [names.index(c) for c in ("Fc_x", "Fc_y", "Fc_z")]]
-    nq = res.record["nq"]
-    tip_velocity = res.state[::exp.steps_per_sample][:exp.n_samples, 2 * nq + 3:2 * nq + 6]
+    tip_velocity = states[:, 2 * nq + 3:2 * nq + 6]
     out = np.empty((len(rows), len(PATH_OUTPUT)))
     for k, (p, f) in enumerate(zip(arm_tips, forces)):
         out[k] = follower.follow(p, f)
@@ -58,7 +68,7 @@ def path_series(res, follower: PathFollower | None = None) -> dict[str, np.ndarr
     normal = out[:, [PATH_OUTPUT.index(c) for c in ("n_x", "n_y", "n_z")]]
     series["tip_speed"] = np.einsum("ij,ij->i", tip_velocity, tangent)
     series["normal_force"] = np.einsum("ij,ij->i", forces, normal)
-    series["t"] = res.sample_t[:len(rows)]
+    series["t"] = (np.arange(exp.n_samples) * exp.sample_time)[:len(rows)]
     return series
 
 
@@ -88,8 +98,17 @@ def path_metrics(res) -> dict[str, float]:
     """:data:`~hybrid.spec.metrics.PATH_METRICS` of a run along a path task (module docstring): the path
     error over the samples on the path (following it, and releasing the force at its end), the force and
     speed errors and the contact losses while following it, the largest force from the release on."""
-    follower = follower_of(res)
-    series = path_series(res, follower)
+    exp = res.experiment
+    m, n = exp.steps_per_sample, exp.n_samples
+    return sampled_path_metrics(exp, res.record["outputs"], res.outputs[::m][:n], res.state[::m][:n],
+                                res.record["nq"])
+
+
+def sampled_path_metrics(exp, names, rows: np.ndarray, states: np.ndarray, nq: int) -> dict[str, float]:
+    """:func:`path_metrics` of a run of ``exp`` from its output record (columns ``names``) and its states at
+    each control sample (``rows``, ``states``; ``nq`` joints): the compiled loop's record of them."""
+    follower = _follower(exp)
+    series = sampled_series(exp, names, rows, states, nq, follower)
     t, phase = series["t"], series["phase"]
     on = (phase == FOLLOW) | (phase == UNLOAD)
     follow = phase == FOLLOW

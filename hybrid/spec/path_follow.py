@@ -78,3 +78,20 @@ PATH_STATUSES = {"PATH_OK": 0, "PATH_INPUT_NONFINITE": 1, "PATH_TABLE_INVALID": 
 PATH_DONE_TOL = 1e-4
 #: Newton steps of the progress per sample (the tip moves far less than a node's spacing in one)
 PATH_NEWTON_STEPS = 3
+
+
+def path_axes(axes) -> tuple[tuple[int, int, int], tuple[int, int] | None]:
+    """Where a path task's axes are among the task ``axes`` (their numbers, 0-5 for t1, t2, n and the
+    rotations about them): ``(t1, t2, n)``, and the rotations about t1 and t2 (the tool's tilt and lead)
+    where the task has both, else None.
+
+    Examples
+    --------
+    >>> path_axes((0, 1, 2, 3, 4, 5))
+    ((0, 1, 2), (3, 4))
+    >>> path_axes((0, 1, 2))
+    ((0, 1, 2), None)
+    """
+    axes = tuple(axes)
+    return (axes.index(0), axes.index(1), axes.index(2)), \
+        (axes.index(3), axes.index(4)) if 3 in axes and 4 in axes else None
