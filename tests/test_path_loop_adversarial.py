@@ -265,7 +265,7 @@ def test_a_dropout_in_each_phase_runs_in_c_as_in_python(whole_task, phase, after
     clean = hybrid.simulate(exp)
     assert relative(compiled.state, clean.state) > 1e-6  # the dropout changed the run
     if samples >= 12:  # the safe state: the arm held where it was, the path left unfinished
-        assert compiled.metrics["path_travelled_m"] < 0.5 * clean.metrics["path_travelled_m"]
+        assert compiled.metrics["path_travelled_m"] < 0.75 * clean.metrics["path_travelled_m"]
         assert math.isnan(compiled.metrics["path_time_s"])
 
 
@@ -501,3 +501,58 @@ def test_a_path_task_with_a_noisy_sensor_runs_in_python_with_its_path_metrics():
     run = hybrid.simulate(exp)
     assert {m.name for m in PATH_METRICS} <= run.metrics.keys()
     assert run.metrics["path_travelled_m"] > 0.05
+
+
+# ------------------------------------------------------------------------- copies, metrics and messages
+
+
+def test_a_copy_with_another_path_task_works_out_its_references_again():
+    """The force and direction an experiment worked out from its path task are its task's: a copy with another
+    task (another force, another direction) works them out again, and a sweep over the task's force runs."""
+    exp = on_plane(force=10.0)
+    stronger = dataclasses.replace(exp, path_task=dataclasses.replace(exp.path_task, force=14.0))
+    assert stronger.force_reference == hybrid.Step(14.0, 14.0, 0.0)
+    across = hybrid.RasterPath(PLANE, PLANE.project(np.array([0.42, -0.02, 0.1])), (0.0, 0.6, -0.8), 0.03, 0.01, 2)
+    turned = dataclasses.replace(exp, path_task=hybrid.PathTask(across, retreat_distance=0.01))
+    assert not np.allclose(turned.frame_direction, exp.frame_direction)
+    assert hybrid.Experiment.from_dict(stronger.to_dict()).force_reference == stronger.force_reference
+    frame = hybrid.sweep(on_plane(duration=0.6), {"path_task.force": [8.0, 12.0]}, workers=1)
+    assert (frame["status"] == "ok").all()
+    # a reference given with the task, other than the task's, is still refused
+    with pytest.raises(hybrid.HybridError, match="leave force_reference"):
+        dataclasses.replace(exp, force_reference=hybrid.Step(12.0, 12.0, 0.0))
+
+
+def test_the_travelled_length_of_a_completed_path_is_its_length():
+    """The follower's progress falls back as the tip retreats past the path's end: what was travelled is the
+    most it reached."""
+    res = hybrid.simulate(on_plane(axes="position", retreat_distance=0.005, duration=1.8))
+    m = res.metrics
+    assert math.isfinite(m["path_time_s"])
+    length = res.experiment.path_task.path.length
+    assert m["path_travelled_m"] >= length - 1e-3
+
+
+def test_the_replayed_phases_are_the_controllers_through_a_dropout():
+    """A dropout in the release: the controller's follower holds through the lost samples, and so does the
+    follower the metrics replay (its retreat starts at the controller's sample)."""
+    exp = on_plane(duration=2.5)
+    first = int(np.flatnonzero(phases(hybrid.simulate(exp)) == PATH_PHASES.index("unload"))[0])
+    lost = with_dropout(exp, (first + 2) * exp.sample_time, 3 * exp.sample_time)
+    res = hybrid.simulate(lost)
+    ctrl, plant, m = lost.build_controller(), lost.plant(), lost.steps_per_sample
+    read = plant_reader(lost, plant) or plant.sensor_wrench
+    held = []
+    for k in range(lost.n_samples):
+        x = res.state[k * m]
+        try:
+            ctrl(k * lost.sample_time, x[:plant.nq], x[plant.nq:2 * plant.nq], read(x))
+        except hybrid.HybridError:
+            pass
+        held.append(ctrl.path_task["phase"])
+    np.testing.assert_array_equal(phases(res), held)
+
+
+def test_a_path_task_on_the_planar_arm_is_refused_for_what_it_is():
+    with pytest.raises(hybrid.HybridError, match="planar arm"):
+        hybrid.paper_experiment(path_task=hybrid.PathTask(short_raster()))

@@ -29,7 +29,7 @@ from hybrid.control.schemes import SCHEMES, scheme_of
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import RENAMED, RenamedKeywords, renamed_attribute
 from hybrid.errors import HybridError
-from hybrid.experiments.followed import check_followed, check_reach, task_references, told_surface
+from hybrid.experiments.followed import TaskDirection, check_followed, check_reach, task_references, told_surface
 from hybrid.experiments.serialisation import experiment_from_dict, experiment_to_dict
 from hybrid.experiments.settings import (
     TOUCH_THRESHOLD,
@@ -215,7 +215,9 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
                               "runs as hybrid.oracle.simulate(experiment))")
         if isinstance(self.elbow, bool) or not isinstance(self.elbow, (int, np.integer)) or self.elbow not in (1, -1):
             raise HybridError(f"elbow = {shown(self.elbow)}; give +1 (q2 > 0) or -1 (q2 < 0)")
-        object.__setattr__(self, "frame_direction", tuple(frame_direction_of(self.frame_direction)))
+        # (a direction worked out from the path task stays marked so: a copy with another task works it out again)
+        kind = TaskDirection if isinstance(self.frame_direction, TaskDirection) else tuple
+        object.__setattr__(self, "frame_direction", kind(frame_direction_of(self.frame_direction)))
         self.robot.kind.check_settings(self.robot, self.frame_direction, {"elbow": self.elbow, "backend": self.backend})
         # what the controller will refuse, refused now (building it compiles its step)
         axes = check_axes(self.robot, self.axes)

@@ -23,6 +23,7 @@ from hybrid.control.path_task import PathTask
 from hybrid.control.references import Step
 from hybrid.errors import HybridError
 from hybrid.experiments.settings import START_TOL
+from hybrid.models.robot import as_robot
 from hybrid.validate import shown
 
 #: the times along the run [s] where the path is compared with the tip's motion
@@ -44,12 +45,39 @@ _WHAT_WORKS = ("give a path the tip follows: leave path out (the surface's own, 
 DEFAULT_FORCE, DEFAULT_SPEED = Step(10.0, 20.0, 0.4), Step(0.3, 0.6, 1.0)
 
 
+class TaskStep(Step):
+    """A reference an experiment worked out from its path task: equal to, hashed and shown as the
+    :class:`~hybrid.Step` it is, and worked out again in a copy of the experiment with another path task
+    (``dataclasses.replace(exp, path_task=...)``, a sweep over the task's settings)."""
+
+    def __eq__(self, other):
+        if isinstance(other, Step):
+            return (self.before, self.after, self.at) == (other.before, other.after, other.at)
+        return NotImplemented
+
+    __hash__ = Step.__hash__
+
+    def __repr__(self) -> str:
+        return repr(Step(self.before, self.after, self.at))
+
+
+class TaskDirection(tuple):
+    """The frame direction an experiment worked out from its path task (a tuple of three numbers), worked out
+    again in a copy of the experiment with another path task."""
+
+    __slots__ = ()
+
+
 def task_references(exp) -> None:
     """The experiment's ``force_reference``, ``speed_reference`` and ``frame_direction``: with a path task,
     its force at the start (the start presses with it), 0 and the path's direction at its start, the task
     giving them along the path (a value given otherwise is refused); without one, the defaults where none
     is given."""
     task = exp.path_task
+    # what a copy of an experiment holds from its former path task is worked out again from its own
+    for name in ("force_reference", "speed_reference", "frame_direction"):
+        if isinstance(getattr(exp, name), (TaskStep, TaskDirection)):
+            object.__setattr__(exp, name, None)
     if task is None:
         for name, default in (("force_reference", DEFAULT_FORCE), ("speed_reference", DEFAULT_SPEED),
                               ("frame_direction", (0.0, 0.0, 1.0))):
@@ -58,10 +86,13 @@ def task_references(exp) -> None:
         return
     if not isinstance(task, PathTask):
         raise HybridError(f"path_task = {shown(task, 60)}; give a hybrid.PathTask(path, speed=..., force=...) or None")
+    if exp.robot is not None and as_robot(exp.robot).kind.force_size != 3:
+        raise HybridError("path_task: the planar arm's tip runs along its surface's cross-section; a path task is for "
+                          "an arm in space (hybrid.tracing_experiment, hybrid.panda_experiment)")
     if exp.path is not None or exp.start_point is not None:
         raise HybridError("path_task runs its own path from its start: leave path and start_point out")
     force = task.force_at(task.path.start)
-    derived = {"force_reference": Step(force, force, 0.0), "speed_reference": Step(0.0, 0.0, 0.0)}
+    derived = {"force_reference": TaskStep(force, force, 0.0), "speed_reference": TaskStep(0.0, 0.0, 0.0)}
     for name, value in derived.items():
         given = getattr(exp, name)
         if given is not None and given != value and not (not isinstance(given, Step) and given == value.before):
@@ -69,7 +100,8 @@ def task_references(exp) -> None:
                               "path; leave force_reference and speed_reference out (give them in the PathTask)")
         object.__setattr__(exp, name, value)
     # the task frame's direction: the path's at its start (the controller's follower sets it each sample)
-    object.__setattr__(exp, "frame_direction", task.frame_direction(told_surface(exp), exp.frame_direction))
+    object.__setattr__(exp, "frame_direction",
+                       TaskDirection(task.frame_direction(told_surface(exp), exp.frame_direction)))
 
 
 def told_surface(exp):

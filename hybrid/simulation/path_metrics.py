@@ -55,7 +55,15 @@ def sampled_series(exp, names, rows: np.ndarray, states: np.ndarray, nq: int,
     forces = rows[:, [names.index(c) for c in ("Fc_x", "Fc_y", "Fc_z")]]
     tip_velocity = states[:, 2 * nq + 3:2 * nq + 6]
     out = np.empty((len(rows), len(PATH_OUTPUT)))
+    # where the sensor's reading is lost the controller's follower is refused the sample: it holds what it had
+    t = np.arange(len(rows)) * exp.sample_time
+    sensor = exp.sensor
+    lost = (t >= sensor.dropout_at) & (t < sensor.dropout_at + sensor.dropout_duration) if sensor.drops_out else \
+        np.zeros(len(rows), bool)
     for k, (p, f) in enumerate(zip(arm_tips, forces)):
+        if lost[k]:
+            out[k] = follower.served
+            continue
         out[k] = follower.follow(p, f)
         follower.advance()
     series = {name: out[:, i] for i, name in enumerate(PATH_OUTPUT)
@@ -65,7 +73,7 @@ def sampled_series(exp, names, rows: np.ndarray, states: np.ndarray, nq: int,
     normal = out[:, [PATH_OUTPUT.index(c) for c in ("n_x", "n_y", "n_z")]]
     series["tip_speed"] = np.einsum("ij,ij->i", tip_velocity, tangent)
     series["normal_force"] = np.einsum("ij,ij->i", forces, normal)
-    series["t"] = (np.arange(exp.n_samples) * exp.sample_time)[:len(rows)]
+    series["t"] = t
     return series
 
 
@@ -127,7 +135,7 @@ def sampled_path_metrics(exp, names, rows: np.ndarray, states: np.ndarray, nq: i
     after = phase >= UNLOAD
     values = {"path_error_rms_m": float(np.sqrt(np.mean(err ** 2))), "path_error_max_m": float(err.max()),
               "path_time_s": float(t[done[0]]) if len(done) else float("nan"),
-              "path_travelled_m": float(series["travelled"][-1]),
+              "path_travelled_m": float(series["travelled"].max()),  # (it falls back in a retreat past the end)
               "path_force_rms_error_N": _rms(force_error), "path_speed_rms_error_m_per_s": _rms(speed_error),
               "path_contact_losses": int(np.count_nonzero(lost)),
               "path_end_peak_force_N": float(series["normal_force"][after].max()) if after.any() else float("nan")}
