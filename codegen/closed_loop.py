@@ -170,14 +170,13 @@ def _driver(spec: LoopSpec, stepping: Kernel) -> dict:
     force, signals = ([names.index(c) for c in cols] for cols in (spec.force_columns, stepping.outputs[1].names))
     plant = {a.name: offset["plant." + a.name] for a in (*rhs.inputs[2:], *spec.outputs.inputs[1:])}
     path = None
-    if spec.follows_path:
+    if spec.follows_path:  # where the follower's numbers and the parameters it changes are in a run's row
         (t1, t2, n), spins = path_axes(spec.axes)
-        measure = path_measurement_kernel(spec.measure)
         path = {"t1": t1, "t2": t2, "n": n, "spins": spins, "gains_at": len(LOOP_GAINS) * n, "ngains": len(LOOP_GAINS),
                 "settings": offset["path.settings"], "table": offset["path.table"],
                 "retreat_gains": offset["path.retreat_gains"], "e": offset["controller.e"],
                 "selection": offset["controller.selection"], "gains": offset["controller.gains"],
-                "measure": measure, "measure_params": [offset["controller." + a.name] for a in measure.inputs[1:]]}
+                "robot": offset["controller.robot"]}
     return dict(
         step=step, outs=step.core_outputs(), path=path,
         guards=step.guards, nx=nx, nq=nq, nb=at, m=sizes["integrals"] // 2, ns=nf + len(SIGNALS),
@@ -239,10 +238,9 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
         (rhs, "plant_rhs_lanes", held), (stepping, "plant_rhs_signals_lanes", held + shown))]
     lines = sum(stage.count("\n") + 1 for stage in stages)
     path = None
-    if spec.follows_path:  # the follower's C, and the tip's measurement in lanes
-        measure = path_measurement_kernel(spec.measure)
+    if spec.follows_path:  # the follower's C, and the tip's measurement in lanes (its model of the arm held)
         path = {"follower": path_header(), "measure_lanes": lanes_function(
-            measure, "path_measurement_lanes", tuple(a.name for a in measure.inputs[1:]), "HL_APART", apart=True)}
+            path_measurement_kernel(spec.measure), "path_measurement_lanes", ("robot",), "HL_APART", apart=True)}
     body = render("closed_loop_unit.c.j2", **_driver(spec, stepping), prefix=prefix, what=what, comment=comment_safe,
                   width=ONE_RUN_LANES if lanes == 1 else lanes, lanes_header=LANES_HEADER, status=STATUS,
                   libm_maps=libm_maps(), small=int(lines <= _INLINE_LINES), stages=stages,

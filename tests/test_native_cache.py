@@ -249,11 +249,11 @@ def test_a_loop_compiled_in_parts_computes_what_it_computes_whole(tmp_path, monk
         steps = exp.n_samples * exp.steps_per_sample + 1
         metrics, states = np.empty(18), np.empty((steps, 8))
         status, failed = np.empty(1, np.intc), np.empty(1, np.intc)
-        getattr(lib, f"{prefix}_closed_loop")(1, ffi.from_buffer("double[]", row), exp.n_samples, exp.steps_per_sample,
-                                              exp.integration_step, exp.sample_time, exp.singular_tol,
-                                              ffi.from_buffer("double[]", metrics), ffi.from_buffer("int[]", status),
-                                              ffi.from_buffer("int[]", failed), ffi.from_buffer("double[]", states),
-                                              ffi.NULL, ffi.NULL)
+        getattr(lib, f"{prefix}_closed_loop")(1, ffi.from_buffer("double[]", row), ffi.NULL, exp.n_samples,
+                                              exp.steps_per_sample, exp.integration_step, exp.sample_time,
+                                              exp.singular_tol, ffi.from_buffer("double[]", metrics),
+                                              ffi.from_buffer("int[]", status), ffi.from_buffer("int[]", failed),
+                                              ffi.from_buffer("double[]", states), ffi.NULL, ffi.NULL, ffi.NULL)
         assert status[0] == 0
         runs[parts] = metrics, states
     # the binding and both parts, each by its own compiler, once (the whole unit is one command)

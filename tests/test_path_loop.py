@@ -130,3 +130,30 @@ def test_a_dropout_during_a_path_is_a_refused_sample_in_c_as_in_python():
         assert compiled.metrics[name] == pytest.approx(value, rel=1e-6, abs=1e-10, nan_ok=True), name
     assert compiled.metrics["path_error_rms_m"] <= 1e-3
     assert not math.isnan(compiled.metrics["path_time_s"])
+
+
+def test_refused_samples_along_a_path_run_alike_in_c_and_in_python():
+    """On a spiral the follower turns ``e`` at every sample; where the law refuses a sample (the Jacobian's
+    conditioning below ``singular_tol``: a threshold among the run's own lowest values), a run that reacts to
+    faults holds its torque, its follower stays where it was and what it changed is undone (the next sample
+    sets it afresh), alike in the compiled loop and the Controller."""
+    spiral = hybrid.SpiralPath(SPHERE, SPHERE.project(np.array([0.45, 0.0, 0.4])), 0.01, 2.0, start_radius=0.01)
+    task = hybrid.PathTask(spiral, speed=0.08)
+    free = hybrid.tracing_experiment(surface=SPHERE, path_task=task, duration=1.0)
+    plant, m, nq = free.plant(), free.steps_per_sample, free.robot.n
+    run = hybrid.simulate(free)
+    conditioning = np.array([float(plant.conditioning(run.state[k * m, :nq])) for k in range(free.n_samples)])
+    assert conditioning[0] > np.percentile(conditioning, 5)  # the start is served
+    tolerant = hybrid.tracing_experiment(surface=SPHERE, path_task=task, duration=1.0,
+                                         singular_tol=float(np.percentile(conditioning, 5)),
+                                         fault_reaction=hybrid.FaultReaction(fault_samples=10 ** 6))
+    d = tolerant.to_dict()  # a dropout after the run's end: the run reacts to faults, and loses no reading
+    exp = tolerant.__class__.from_dict({**d, "sensor": {**d["sensor"], "dropout_at": 50.0, "dropout_duration": 0.01}})
+    compiled, python = hybrid.simulate(exp), hybrid.simulate(exp, compiled=False)
+    torques = compiled.tau[1::m]
+    held = np.all(torques[1:] == torques[:-1], axis=1)
+    assert held.sum() >= 2  # refused samples, each holding the torque last written
+    assert relative(compiled.state, python.state) < 1e-8
+    for name, value in python.metrics.items():
+        assert compiled.metrics[name] == pytest.approx(value, rel=1e-6, abs=1e-10, nan_ok=True), name
+    assert not np.array_equal(compiled.state, run.state)  # the refusals changed the run

@@ -272,35 +272,51 @@ def run(prepared: list[Prepared], record: bool = False) -> list[Outcome]:
     outcomes: list = [None] * len(prepared)
     for members in groups.values():
         first = prepared[members[0]]
-        loop, (n_samples, per_sample, h, sample_time, tol) = first.loop, first.settings
-        n = len(members)
-        if n == 1:  # one run alone: its own build (same row, same arithmetic), built on first use
+        loop = first.loop
+        if len(members) == 1:  # one run alone: its own build (same row, same arithmetic), built on first use
             loop = _available_loop(*loop.key, lanes=1) or loop
         elif loop.alone:  # runs prepared one by one, run together: the lanes build
             loop = _available_loop(*loop.key) or loop
-        runs = np.ascontiguousarray(np.stack([prepared[i].row for i in members]))
-        tables = _tables(loop, runs, [prepared[i].table for i in members])
-        metrics = np.empty((n, len(loop.metrics)))
-        status, failed = np.empty(n, np.intc), np.empty(n, np.intc)
-        steps = n_samples * per_sample + 1
-        # every row is written: NaN from where a run stopped
-        states, taus, outputs = _records(n, steps, (loop.nx, loop.nq, len(loop.outputs))) if record else (None,) * 3
-        # a path task's metrics read the state and the record at each control sample
-        samples = np.empty((n, n_samples, loop.nx + len(loop.outputs))) if loop.path_task else None
-        ffi = loop.ffi
-        loop.function(n, _buffer(ffi, runs), _buffer(ffi, tables), n_samples, per_sample, h, sample_time, tol,
-                      _buffer(ffi, metrics), ffi.from_buffer("int[]", status), ffi.from_buffer("int[]", failed),
-                      *(_buffer(ffi, a) for a in (states, taus, outputs, samples)))
-        for j, i in enumerate(members):
-            ok = status[j] == STATUS_CODES["OK"]
-            m = dict(zip(loop.metrics, metrics[j].tolist() if ok else [math.nan] * len(loop.metrics)))
-            if ok:
-                m["contact_losses"] = int(m["contact_losses"])
-            if loop.path_task:
-                m |= _path_metrics(prepared[i].experiment, loop, samples[j], ok)
-            outcomes[i] = Outcome(int(status[j]), int(failed[j]), m, states[j] if record else None,
-                                  taus[j] if record else None, outputs[j] if record else None)
+        # a path task's runs without a record keep the state and the record at each sample for its metrics: a
+        # group of lanes at a time, its memory that of the lanes' runs, not the sweep's
+        size = loop.lanes if loop.path_task and not record else len(members)
+        for at in range(0, len(members), size):
+            batch = members[at:at + size]
+            for i, outcome in zip(batch, _run_group(loop, [prepared[i] for i in batch], first.settings, record)):
+                outcomes[i] = outcome
     return outcomes
+
+
+def _run_group(loop: Loop, prepared: list[Prepared], settings: tuple, record: bool) -> list[Outcome]:
+    """The runs ``prepared`` of ``loop`` (its integration ``settings``) in one native call."""
+    n_samples, per_sample, h, sample_time, tol = settings
+    n = len(prepared)
+    runs = np.ascontiguousarray(np.stack([p.row for p in prepared]))
+    tables = _tables(loop, runs, [p.table for p in prepared])
+    metrics = np.empty((n, len(loop.metrics)))
+    status, failed = np.empty(n, np.intc), np.empty(n, np.intc)
+    steps = n_samples * per_sample + 1
+    # every row is written: NaN from where a run stopped
+    states, taus, outputs = _records(n, steps, (loop.nx, loop.nq, len(loop.outputs))) if record else (None,) * 3
+    # a path task's metrics read the state and the record at each control sample: the record's, where it is kept
+    samples = np.empty((n, n_samples, loop.nx + len(loop.outputs))) if loop.path_task and not record else None
+    ffi = loop.ffi
+    loop.function(n, _buffer(ffi, runs), _buffer(ffi, tables), n_samples, per_sample, h, sample_time, tol,
+                  _buffer(ffi, metrics), ffi.from_buffer("int[]", status), ffi.from_buffer("int[]", failed),
+                  *(_buffer(ffi, a) for a in (states, taus, outputs, samples)))
+    done = []
+    for j, p in enumerate(prepared):
+        ok = status[j] == STATUS_CODES["OK"]
+        m = dict(zip(loop.metrics, metrics[j].tolist() if ok else [math.nan] * len(loop.metrics)))
+        if ok:
+            m["contact_losses"] = int(m["contact_losses"])
+        if loop.path_task:
+            sampled = ((states[j][::per_sample][:n_samples], outputs[j][::per_sample][:n_samples]) if record else
+                       (samples[j][:, :loop.nx], samples[j][:, loop.nx:]))
+            m |= _path_metrics(p.experiment, loop, *sampled, ok)
+        done.append(Outcome(int(status[j]), int(failed[j]), m, states[j] if record else None,
+                            taus[j] if record else None, outputs[j] if record else None))
+    return done
 
 
 def _buffer(ffi, a: np.ndarray | None):
@@ -319,10 +335,9 @@ def _tables(loop: Loop, runs: np.ndarray, tables: list) -> np.ndarray | None:
     return np.ascontiguousarray(np.concatenate([t.ravel() for t in tables]), dtype=float)
 
 
-def _path_metrics(exp, loop: Loop, samples: np.ndarray, ok: bool) -> dict:
+def _path_metrics(exp, loop: Loop, states: np.ndarray, outputs: np.ndarray, ok: bool) -> dict:
     """A path task's metrics from the state and the output record at each control sample (NaN for a run
     that stopped)."""
     if not ok:
         return dict.fromkeys((m.name for m in PATH_METRICS), math.nan)
-    states, outputs = samples[:, :loop.nx], samples[:, loop.nx:]
     return sampled_path_metrics(exp, loop.outputs, outputs, states, loop.nq)

@@ -30,7 +30,7 @@ def follower_of(res) -> PathFollower:
 
 
 def _follower(exp) -> PathFollower:
-    """:func:`follower_of` a run of ``exp``."""
+    """The follower of ``exp``'s path task as its controller has it (:func:`follower_of`)."""
     touch = exp.touch_threshold if exp.approach_speed > 0 else None
     return PathFollower(exp.path_task, exp.told_surface(), exp.sample_time, touch)
 
@@ -42,10 +42,7 @@ def path_series(res, follower: PathFollower | None = None) -> dict[str, np.ndarr
     rotation); ``path_error``, the sensor tip's distance from the path [m]; ``tip_speed`` (the sensor tip's
     speed along the path's tangent [m/s]), ``normal_force`` (the measured force along the path's normal [N])
     and ``t`` [s]. ``follower``: the run's (:func:`follower_of`), reset here."""
-    exp = res.experiment
-    m, n = exp.steps_per_sample, exp.n_samples
-    return sampled_series(exp, res.record["outputs"], res.outputs[::m][:n], res.state[::m][:n], res.record["nq"],
-                          follower)
+    return sampled_series(res.experiment, *_at_samples(res), follower)
 
 
 def sampled_series(exp, names, rows: np.ndarray, states: np.ndarray, nq: int,
@@ -98,10 +95,13 @@ def path_metrics(res) -> dict[str, float]:
     """:data:`~hybrid.spec.metrics.PATH_METRICS` of a run along a path task (module docstring): the path
     error over the samples on the path (following it, and releasing the force at its end), the force and
     speed errors and the contact losses while following it, the largest force from the release on."""
-    exp = res.experiment
-    m, n = exp.steps_per_sample, exp.n_samples
-    return sampled_path_metrics(exp, res.record["outputs"], res.outputs[::m][:n], res.state[::m][:n],
-                                res.record["nq"])
+    return sampled_path_metrics(res.experiment, *_at_samples(res))
+
+
+def _at_samples(res) -> tuple:
+    """The record's columns, its rows and states at each control sample of ``res``, and its joints."""
+    m, n = res.experiment.steps_per_sample, res.experiment.n_samples
+    return res.record["outputs"], res.outputs[::m][:n], res.state[::m][:n], res.record["nq"]
 
 
 def sampled_path_metrics(exp, names, rows: np.ndarray, states: np.ndarray, nq: int) -> dict[str, float]:
