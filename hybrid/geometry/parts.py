@@ -22,7 +22,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.geometry.bspline import SplineGrid
 from hybrid.geometry.meshes import checked_mesh, face_normals, oriented_samples, read_mesh
 from hybrid.geometry.part_fit import SMOOTHING, fit_signed_distance
 from hybrid.geometry.surfaces import Surface, _unit_normal
@@ -135,7 +134,7 @@ class PartSurface(Surface):
         p = np.asarray(p, float).reshape(3)
         _, grad = self.phi_function()(p)
         if not np.isfinite(grad).all():
-            raise HybridError(self._off_band(p))
+            raise HybridError(self.off_band(p))
         return _unit_normal(grad, f"{self._what} at {p.tolist()}")
 
     def parameters_at(self, p) -> np.ndarray:
@@ -175,7 +174,8 @@ class PartSurface(Surface):
                 break
         return x
 
-    def _off_band(self, p) -> str:
+    def off_band(self, p) -> str:
+        """What to say of the point ``p`` beyond the fitted band (no surface there)."""
         return (f"{self._what}: the point {np.round(np.asarray(p, float), 5).tolist()} m is beyond the fitted band "
                 f"({self.band:g} m from the part); give a point nearer the part, or a wider band")
 
