@@ -104,6 +104,26 @@ def _second_differences(unknown: np.ndarray) -> list[tuple[np.ndarray, np.ndarra
     return rows
 
 
+def _offset_samples(points: np.ndarray, normals: np.ndarray, spacing: float, band: float,
+                    tree) -> tuple[np.ndarray, np.ndarray]:
+    """The samples the fit reads and the signed distance at each: the points (0), then their offsets along the
+    normal by a cell and each further cell to the band, on both sides (the tool's tip, behind its compliant
+    sensor, reaches into the part as far as the sensor deflects), each as far from the part as from its own
+    point; an offset nearer another point of the part (past a concave fold, across a thin wall: the medial
+    axis) is given the same point and distance 0 instead, a repeated row that adds nothing. Layer after
+    layer, each of ``len(points)`` rows."""
+    steps = spacing * np.arange(1, int(math.floor(band / spacing)) + 1)
+    layers = [0.0, *np.ravel(np.column_stack([steps, -steps]))]
+    at, value = [points], [np.zeros(len(points))]
+    for delta in layers[1:]:
+        moved = points + delta * normals
+        distance, _ = tree.query(moved)
+        own = distance >= (1.0 - 1e-3) * abs(delta)
+        at.append(np.where(own[:, None], moved, points))
+        value.append(np.where(own, delta, 0.0))
+    return np.concatenate(at), np.concatenate(value)
+
+
 def fit_signed_distance(points, normals, spacing: float, band: float, smoothing: float = SMOOTHING) -> SplineGrid:
     """The smooth signed distance of the oriented points (module docstring).
 
@@ -141,19 +161,20 @@ def fit_signed_distance(points, normals, spacing: float, band: float, smoothing:
     points, normals = np.asarray(points, float), np.asarray(normals, float)
     origin, cells = grid_for(points, spacing, band)
     shape = tuple(c + 3 for c in cells)
-    index, (w, wx, wy, wz) = _stencils(origin, spacing, cells, points)
-    # the unknowns: the points' coefficients and those within the band of them
+    tree = cKDTree(points)
+    at, value = _offset_samples(points, normals, spacing, band, tree)
+    index, (w, wx, wy, wz) = _stencils(origin, spacing, cells, at)
+    # the unknowns: the samples' coefficients and a cell's beyond them (a point within the band reads them all)
     touched = np.zeros(shape, bool)
     touched.flat[np.unique(index)] = True
-    reach = int(math.ceil(band / spacing)) + 2
-    unknown = ndimage.binary_dilation(touched, np.ones((3, 3, 3), bool), iterations=reach)
+    unknown = ndimage.binary_dilation(touched, np.ones((3, 3, 3), bool), iterations=2)
     column = np.full(unknown.size, -1, np.int64)
     column[unknown.ravel()] = np.arange(int(unknown.sum()))
     m = int(unknown.sum())
-    # rows: phi = 0, h grad phi = h n at the points; the second differences; the ridge
-    n = len(points)
+    # rows: phi = its distance, h grad phi = h n at the samples; the second differences; the ridge
+    along = np.tile(normals, (len(at) // len(points), 1))
     data, cols, rhs = [w, spacing * wx, spacing * wy, spacing * wz], [index] * 4, \
-        [np.zeros(n), spacing * normals[:, 0], spacing * normals[:, 1], spacing * normals[:, 2]]
+        [value, spacing * along[:, 0], spacing * along[:, 1], spacing * along[:, 2]]
     for terms, weights in _second_differences(unknown):
         data.append(math.sqrt(smoothing) * weights)
         cols.append(terms)
@@ -166,7 +187,7 @@ def fit_signed_distance(points, normals, spacing: float, band: float, smoothing:
     b = np.concatenate(rhs)
     # the ridge's target: the signed distance along the nearest point's normal, at each unknown's centre
     centres = origin + (np.argwhere(unknown) - 1.0) * spacing
-    _, nearest = cKDTree(points).query(centres)
+    _, nearest = tree.query(centres)
     target = np.einsum("ij,ij->i", centres - points[nearest], normals[nearest])
     # the normal equations applied as A^T (A x): A holds a sixth of the numbers A^T A would
     At = A.T.tocsr()

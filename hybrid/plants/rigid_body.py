@@ -75,9 +75,11 @@ class RigidBodyPlant(GeneratedPlant):
             len(states), len(self.record["outputs"]))
 
     def _record_row(self, x: np.ndarray) -> np.ndarray:
-        if self._part is not None:
-            self._about_tip(x)
-        return super()._record_row(x)
+        if self._part is None:
+            return super()._record_row(x)
+        # the one-state entry point holds the parameters it was bound with: the batch reads them as they are
+        self._about_tip(x)
+        return super().outputs(x[None, :])[0]
 
     @staticmethod
     def loop_plant(exp) -> LoopPlant:
