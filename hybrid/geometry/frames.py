@@ -97,7 +97,8 @@ def task_frame(surface: Surface, r, rdot, *, frame_direction=(0.0, 0.0, 1.0),
     frame = units.frame_unit(surface.spec()).function("task_frame")
     e = frame_direction_of(frame_direction)
     if surface.local:  # a part: its expansion about each point
-        rows = [frame(p, v, surface.parameters_at(p), e) for p, v in zip(np.reshape(r, (-1, 3)), np.reshape(rdot, (-1, 3)))]
+        points, rates = np.reshape(r, (-1, 3)), np.reshape(rdot, (-1, 3))
+        rows = [frame(p, v, surface.parameters_at(p), e) for p, v in zip(points, rates)]
         R, Rd = (np.stack([o[k] for o in rows]) for k in ("R", "Rd"))
         if not is_batch(r):
             R, Rd = R[0], Rd[0]

@@ -3,21 +3,24 @@
 The part's surface is the zero set of a tricubic B-spline ``phi`` (:class:`~hybrid.geometry.bspline.SplineGrid`),
 continuous to the second derivative, so the task frame ``R(r)`` (from ``grad phi``) and its rate ``R'`` (from
 the Hessian) are defined everywhere near the part, across the facets' edges. Its coefficients minimise, in
-the least-squares sense (the smooth signed distance of Calakli and Taubin, 2011),
+the least-squares sense (the smooth signed distance of Calakli and Taubin, 2011, with distance samples off
+the part),
 
-    sum_i phi(p_i)^2 + sum_i |h (grad phi(p_i) - n_i)|^2 + smoothing * sum_m |h^2 D^2 C_m|^2
-        + RIDGE * sum_m (C_m - d_m)^2
+    sum_i phi(p_i)^2 + sum_i |h (grad phi(p_i) - n_i)|^2 + sum_j (phi(q_j) - d_j)^2
+        + smoothing * sum_m |h^2 D^2 C_m|^2 + RIDGE * sum_m (C_m - d_m)^2
 
-over the oriented points ``(p_i, n_i)`` sampled on the part: ``phi`` is 0 on the part, its gradient the unit
-normal there (so ``phi`` is the signed distance near it, positive on the normals' side), and its second
-differences ``D^2 C`` (the Hessian's, on the coefficients ``C``) small, which smooths the facets' corners and
-the noise of a scan. The ridge pulls each coefficient weakly towards the signed distance ``d_m`` along the
-nearest point's normal: it fixes the coefficients no point reaches and starts the solver there.
+over the oriented points ``(p_i, n_i)`` sampled on the part and points ``q_j`` moved off it along their normals
+by ``d_j`` (to the band, on both sides, each only as far as the medial axis): ``phi`` is 0 on the part, its
+gradient the unit normal there, and the signed distance within the band (positive on the normals' side),
+where the tool's tip, behind its compliant sensor, evaluates the frame and its rate; its second differences
+``D^2 C`` (the Hessian's, on the coefficients ``C``) are small, which smooths the facets' corners and the
+noise of a scan. The ridge pulls each coefficient weakly towards the signed distance along the nearest
+point's normal: it fixes the coefficients no sample reaches and starts the solver there.
 
-Only the coefficients within the band reach a point (those of the points' cells, and ``band / spacing + 2``
-cells beyond): ``phi`` is defined within ``band`` of the part and not beyond (NaN coefficients), and the
-grid's size is checked before anything is allocated. The normal equations are solved by conjugate gradients
-(SciPy), preconditioned by their diagonal.
+Only the coefficients the samples reach, and a cell beyond them, are unknowns: ``phi`` is defined within
+``band`` of the part and not beyond (NaN coefficients), and the grid's size is checked before anything is
+allocated. The normal equations are solved by conjugate gradients (SciPy), preconditioned by their
+diagonal, applied as ``A^T (A x)``.
 """
 
 from __future__ import annotations
@@ -33,11 +36,22 @@ from hybrid.geometry.bspline import SplineGrid, basis
 MAX_COEFFICIENTS = 20_000_000
 #: the weight of the coefficients' pull towards the nearest point's signed distance (see the module docstring)
 RIDGE = 1e-6
+#: the points moved off the part, one in so many, for its signed distance within the band
+OFFSET_STRIDE = 4
 #: the conjugate gradients' relative residual (the fit's own error is far larger)
-TOLERANCE = 1e-5
-#: the default weight of the second differences (a sphere of 25 cells' radius, tessellated in facets of one
-#: cell, keeps its curvature within 1 % RMS and 4 % at worst)
-SMOOTHING = 0.1
+TOLERANCE = 1e-4
+#: the default weight of the second differences: on a sphere of 25 cells' radius tessellated in facets of a
+#: cell, the frame's rate within 4 % of the sphere's (a grid finer than the facets resolves their ripple)
+SMOOTHING = 0.2
+
+
+def kd_tree(points: np.ndarray):
+    """SciPy's k-d tree of ``points`` (the nearest points of a part's samples)."""
+    try:
+        from scipy.spatial import cKDTree
+    except ImportError:
+        raise HybridError("fitting a part's surface needs SciPy: pip install 'hybrid-decoupling[parts]'") from None
+    return cKDTree(points)
 
 
 def grid_for(points: np.ndarray, spacing: float, band: float) -> tuple[np.ndarray, tuple[int, int, int]]:
@@ -106,22 +120,21 @@ def _second_differences(unknown: np.ndarray) -> list[tuple[np.ndarray, np.ndarra
 
 def _offset_samples(points: np.ndarray, normals: np.ndarray, spacing: float, band: float,
                     tree) -> tuple[np.ndarray, np.ndarray]:
-    """The samples the fit reads and the signed distance at each: the points (0), then their offsets along the
+    """Points off the part and their signed distances: every :data:`OFFSET_STRIDE`-th point moved along its
     normal by a cell and each further cell to the band, on both sides (the tool's tip, behind its compliant
     sensor, reaches into the part as far as the sensor deflects), each as far from the part as from its own
-    point; an offset nearer another point of the part (past a concave fold, across a thin wall: the medial
-    axis) is given the same point and distance 0 instead, a repeated row that adds nothing. Layer after
-    layer, each of ``len(points)`` rows."""
+    point. An offset nearer another point of the part (past a concave fold, across a thin wall: the medial
+    axis) is left out."""
     steps = spacing * np.arange(1, int(math.floor(band / spacing)) + 1)
-    layers = [0.0, *np.ravel(np.column_stack([steps, -steps]))]
-    at, value = [points], [np.zeros(len(points))]
-    for delta in layers[1:]:
-        moved = points + delta * normals
+    base, along = points[::OFFSET_STRIDE], normals[::OFFSET_STRIDE]
+    at, value = [], []
+    for delta in np.ravel(np.column_stack([steps, -steps])):
+        moved = base + delta * along
         distance, _ = tree.query(moved)
         own = distance >= (1.0 - 1e-3) * abs(delta)
-        at.append(np.where(own[:, None], moved, points))
-        value.append(np.where(own, delta, 0.0))
-    return np.concatenate(at), np.concatenate(value)
+        at.append(moved[own])
+        value.append(np.full(int(own.sum()), delta))
+    return (np.concatenate(at), np.concatenate(value)) if at else (np.empty((0, 3)), np.empty(0))
 
 
 def fit_signed_distance(points, normals, spacing: float, band: float, smoothing: float = SMOOTHING) -> SplineGrid:
@@ -154,27 +167,28 @@ def fit_signed_distance(points, normals, spacing: float, band: float, smoothing:
     >>> round(float(phi[0]), 3), round(float(grad[0, 2]), 2)
     (0.005, 1.0)
     """
+    tree = kd_tree(np.asarray(points, float))  # (refused with the reason where SciPy is missing)
     from scipy import ndimage, sparse
     from scipy.sparse.linalg import LinearOperator, cg
-    from scipy.spatial import cKDTree
 
     points, normals = np.asarray(points, float), np.asarray(normals, float)
     origin, cells = grid_for(points, spacing, band)
     shape = tuple(c + 3 for c in cells)
-    tree = cKDTree(points)
-    at, value = _offset_samples(points, normals, spacing, band, tree)
-    index, (w, wx, wy, wz) = _stencils(origin, spacing, cells, at)
+    off, distance = _offset_samples(points, normals, spacing, band, tree)
+    index, (w, wx, wy, wz) = _stencils(origin, spacing, cells, points)
+    off_index, (off_w, *_) = _stencils(origin, spacing, cells, off)
     # the unknowns: the samples' coefficients and a cell's beyond them (a point within the band reads them all)
     touched = np.zeros(shape, bool)
     touched.flat[np.unique(index)] = True
+    touched.flat[np.unique(off_index)] = True
     unknown = ndimage.binary_dilation(touched, np.ones((3, 3, 3), bool), iterations=2)
     column = np.full(unknown.size, -1, np.int64)
     column[unknown.ravel()] = np.arange(int(unknown.sum()))
     m = int(unknown.sum())
-    # rows: phi = its distance, h grad phi = h n at the samples; the second differences; the ridge
-    along = np.tile(normals, (len(at) // len(points), 1))
-    data, cols, rhs = [w, spacing * wx, spacing * wy, spacing * wz], [index] * 4, \
-        [value, spacing * along[:, 0], spacing * along[:, 1], spacing * along[:, 2]]
+    # rows: phi = 0 and h grad phi = h n at the points, phi = the distance off them; the second differences;
+    # the ridge
+    data, cols = [w, spacing * wx, spacing * wy, spacing * wz, off_w], [index] * 4 + [off_index]
+    rhs = [np.zeros(len(points)), spacing * normals[:, 0], spacing * normals[:, 1], spacing * normals[:, 2], distance]
     for terms, weights in _second_differences(unknown):
         data.append(math.sqrt(smoothing) * weights)
         cols.append(terms)

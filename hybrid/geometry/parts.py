@@ -23,7 +23,7 @@ import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.geometry.meshes import checked_mesh, face_normals, oriented_samples, read_mesh
-from hybrid.geometry.part_fit import SMOOTHING, fit_signed_distance
+from hybrid.geometry.part_fit import SMOOTHING, fit_signed_distance, kd_tree
 from hybrid.geometry.surfaces import Surface, _unit_normal
 from hybrid.native import loader
 from hybrid.spec.part import PART_STATUSES
@@ -34,8 +34,11 @@ from hybrid.validate import _finite, shown
 SAMPLES_PER_CELL = 2.0
 #: the fewest and the most samples drawn on a part
 FEWEST_SAMPLES, MOST_SAMPLES = 2_000, 400_000
-#: how far [m] a point may lie off the fitted band for :meth:`PartSurface.project` to reach the part
+#: the Newton steps :meth:`PartSurface.project` takes at most
 PROJECTION_STEPS = 20
+#: how far from the part [m] its surface is defined by default (at least three cells): the arm tip reaches into
+#: the part as far as the sensor deflects (2 cm at 20 N on the default sensor of 1000 N/m)
+DEFAULT_BAND = 0.03
 
 
 @dataclass(frozen=True)
@@ -84,7 +87,7 @@ class PartSurface(Surface):
     def _fitted(self, points: np.ndarray, normals: np.ndarray, spacing, band, smoothing, what: str) -> None:
         extent = float(np.linalg.norm(np.ptp(points, axis=0)))
         spacing = _length(what, "spacing", extent / 50 if spacing is None else spacing)
-        band = _length(what, "band", 2 * spacing if band is None else band)
+        band = _length(what, "band", max(3 * spacing, DEFAULT_BAND) if band is None else band)
         _finite(what, smoothing=smoothing)
         if smoothing < 0:
             raise HybridError(f"{what}.smoothing = {smoothing}; give a weight >= 0")
@@ -179,6 +182,11 @@ class PartSurface(Surface):
         return (f"{self._what}: the point {np.round(np.asarray(p, float), 5).tolist()} m is beyond the fitted band "
                 f"({self.band:g} m from the part); give a point nearer the part, or a wider band")
 
+    def arguments(self) -> dict:
+        """What the part is made from, in base axes and metres (a saved experiment's surface: read, it is fitted
+        again to the same surface)."""
+        return dict(self._arguments)
+
     def spec(self) -> SurfaceSpec:
         """The generated code's surface: the second-order expansion about a point (``quadric``), its parameters
         given at each point (:meth:`parameters_at`)."""
@@ -219,7 +227,9 @@ class MeshSurface(PartSurface):
         The fit's grid spacing [m]: finer than the smallest radius of curvature to keep (a tenth of it keeps
         it within about 1 %); default a fiftieth of the part's size.
     band : float, optional
-        How far from the part [m] ``phi`` is defined (the tool's approach starts within it); default two cells.
+        How far from the part [m] ``phi`` is defined, on both sides (the tool's approach starts within it, and
+        the arm tip behind a compliant sensor reaches into the part as far as the sensor deflects): default
+        :data:`DEFAULT_BAND`, at least three cells.
     smoothing : float
         The weight of the fit's second differences (:data:`~hybrid.geometry.part_fit.SMOOTHING`).
 
@@ -244,6 +254,8 @@ class MeshSurface(PartSurface):
     True
     """
 
+    kind = "mesh"
+
     def __init__(self, vertices, faces, transform=None, scale: float = 1.0, flip: bool = False,
                  spacing: float | None = None, band: float | None = None, smoothing: float = SMOOTHING):
         what = "MeshSurface"
@@ -262,6 +274,8 @@ class MeshSurface(PartSurface):
                             MOST_SAMPLES))
         points, normals = oriented_samples(v, f, count)
         self._fitted(points, normals, spacing, band, smoothing, what)
+        self._arguments = {"vertices": v.tolist(), "faces": f.tolist(), "spacing": self.spacing, "band": self.band,
+                           "smoothing": self.smoothing}
         # the report: the distance at the vertices and the facets' centroids, the angle at the centroids
         centroids = v[f].mean(axis=1)
         self._report(np.vstack([v, centroids]), centroids, face_normals(v, f), count)
@@ -305,6 +319,8 @@ class PointCloudSurface(PartSurface):
         normals, a cloud too sparse for its spacing.
     """
 
+    kind = "point_cloud"
+
     def __init__(self, points, normals=None, viewpoint=None, neighbours: int = 12, spacing: float | None = None,
                  band: float | None = None, smoothing: float = SMOOTHING):
         what = "PointCloudSurface"
@@ -336,6 +352,8 @@ class PointCloudSurface(PartSurface):
             raise HybridError(f"{what}: points {gaps:.3g} m apart where the fit's cells are {self.spacing:.3g} m; "
                               f"give spacing >= {gaps / 2:.2g} m, or a denser cloud")
         self.points, self.normals = p, n
+        self._arguments = {"points": p.tolist(), "normals": n.tolist(), "spacing": self.spacing, "band": self.band,
+                           "smoothing": self.smoothing}
         self._report(p, p, n, len(p))
 
 
@@ -395,11 +413,9 @@ def _array(what: str, name: str, value) -> np.ndarray:
 
 def _estimated_normals(p: np.ndarray, k: int, viewpoint: np.ndarray, what: str) -> np.ndarray:
     """Each point's normal: the direction of least spread of its ``k`` nearest points, towards ``viewpoint``."""
-    from scipy.spatial import cKDTree
-
     if k < 6:
         raise HybridError(f"{what}.neighbours = {k}; give at least 6")
-    _, near = cKDTree(p).query(p, k=min(k, len(p)))
+    _, near = kd_tree(p).query(p, k=min(k, len(p)))
     local = p[near] - p[near].mean(axis=1, keepdims=True)
     _, vectors = np.linalg.eigh(np.einsum("nki,nkj->nij", local, local))
     n = vectors[:, :, 0]
@@ -408,7 +424,5 @@ def _estimated_normals(p: np.ndarray, k: int, viewpoint: np.ndarray, what: str) 
 
 def _sparsest(p: np.ndarray) -> float:
     """The largest distance from a point to its nearest neighbour [m] (the cloud's gaps)."""
-    from scipy.spatial import cKDTree
-
-    d, _ = cKDTree(p).query(p, k=2)
+    d, _ = kd_tree(p).query(p, k=2)
     return float(d[:, 1].max())
