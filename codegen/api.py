@@ -36,6 +36,7 @@ from .emit import BACKENDS, Unit
 from .emit import build_unit as build_planar_unit
 from .lanes import LANES_HEADER, lanes_header
 from .model import kernels as planar_kernels
+from .part_grid import PART_HEADER, part_header
 from .path_follow import PATH_HEADER, path_header
 from .regressor import build_regressor_unit
 from .robot_unit import build_controller_unit, build_frame_unit, build_law_unit, build_plant_unit, build_robot_unit
@@ -52,10 +53,10 @@ def shared_headers() -> dict[str, str]:
     """The headers the units include (the SIMD lanes', :data:`LANES_HEADER`; the path follower's,
     :data:`PATH_HEADER`), by file name, stamped as generated files: one copy beside the units in
     ``generated/``."""
-    return {LANES_HEADER: stamp(lanes_header()), PATH_HEADER: stamp(path_header())}
+    return {LANES_HEADER: stamp(lanes_header()), PATH_HEADER: stamp(path_header()), PART_HEADER: stamp(part_header())}
 
 
-__all__ = ["BACKENDS", "LANES_HEADER", "PATH_HEADER", "LoopSpec", "Unit", "build_closed_loop_unit",
+__all__ = ["BACKENDS", "LANES_HEADER", "PART_HEADER", "PATH_HEADER", "LoopSpec", "Unit", "build_closed_loop_unit",
            "build_controller_unit", "build_frame_unit", "build_law_unit", "build_planar_unit", "build_plant_unit",
            "build_regressor_unit", "build_robot_unit", "build_standalone_controller", "build_standalone_plant",
            "controller_kernels",

@@ -10,7 +10,8 @@ The public API, by subpackage:
   (:func:`linear_parameters`), its base parameters (:func:`base_parameters`, :class:`BaseParameters`)
   and their identification from measured torques (:func:`identify_dynamics`, :class:`DynamicsIdentification`);
 - geometry (:mod:`hybrid.geometry`): the surfaces :class:`Plane`, :class:`Circle`, :class:`Sphere`,
-  :class:`Cylinder` and :class:`ImplicitSurface`; paths on them (:class:`CirclePath`,
+  :class:`Cylinder` and :class:`ImplicitSurface`, and parts as they come (:class:`MeshSurface`,
+  :class:`PointCloudSurface`); paths on them (:class:`CirclePath`,
   :class:`LinePath`; on any surface :class:`WaypointPath`, :class:`RasterPath`,
   :class:`SpiralPath`); the task frame at points of any surface (:func:`task_frame`);
 - control (:mod:`hybrid.control`): the compiled law (:class:`DecouplingLaw`, :func:`decoupling_law`),
@@ -87,10 +88,12 @@ from hybrid.user_warnings import JointLimitWarning, RedundancyWarning
 if TYPE_CHECKING:  # type checkers see the lazy names' real signatures
     from hybrid.control.config import read_controller_config
     from hybrid.geometry.implicit import ImplicitSurface
+    from hybrid.geometry.parts import MeshSurface, PointCloudSurface
     from hybrid.sweeps import sweep
 
 #: public names loaded on first use (what they need is heavy: SymPy, pandas; a TOML parser and its schema)
-_LAZY = {"ImplicitSurface": "hybrid.geometry.implicit", "sweep": "hybrid.sweeps",
+_LAZY = {"ImplicitSurface": "hybrid.geometry.implicit", "MeshSurface": "hybrid.geometry.parts",
+         "PointCloudSurface": "hybrid.geometry.parts", "sweep": "hybrid.sweeps",
          "read_controller_config": "hybrid.control.config"}
 
 
@@ -112,8 +115,9 @@ __all__ = [
     "Arm", "BaseParameters", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder",
     "DecouplingLaw", "DynamicsIdentification", "EstimatedSurface", "Experiment", "FaultReaction", "Gains",
     "HybridError", "ImplicitSurface",
-    "JointLimitWarning", "Khatib", "LargeModelWarning", "LinePath", "Measurement", "NativeBuildError", "NonFiniteError",
-    "OperationalSpace", "PANDA_URDF", "ParameterError", "PathTask", "Plane", "Posture", "RasterPath",
+    "JointLimitWarning", "Khatib", "LargeModelWarning", "LinePath", "Measurement", "MeshSurface", "NativeBuildError",
+    "NonFiniteError", "OperationalSpace", "PANDA_URDF", "ParameterError", "PathTask", "Plane", "PointCloudSurface",
+    "Posture", "RasterPath",
     "RedundancyWarning", "Reference", "Robot", "SCHEMES", "SafeStopError", "SampleTimingError", "Scheme", "Sensor",
     "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "SpiralPath", "Step",
     "TaskDecoupling",

@@ -363,7 +363,7 @@ class Controller(SampleReferences):
         the wrench is given as such (no sensor reading): then a whole run can be compiled C
         (:mod:`hybrid.simulation.closed_loop`)."""
         given_as_code = self._varying or self._rates or self.path is not None
-        return not given_as_code and self.wrench_sensor is None and not self._estimated
+        return not given_as_code and self.wrench_sensor is None and not self._estimated and not self._spatial.local
 
     def step_inputs(self, at_start: bool = False) -> dict[str, np.ndarray]:
         """The compiled step's inputs this controller fixes (gains, references' steps, model,
@@ -528,23 +528,25 @@ class Controller(SampleReferences):
         # repeated or backwards: no time passed, so nothing advances (every output into scratch arrays)
         held = timing in HELD_STATUSES
         out = self._out if timing is None else self._out_held if held else self._out_off_time
-        undo = None  # what a path task changed for this sample, undone unless it is served as time passes
-        if not self._short:
-            self._python_references(t)
-            if self.path is not None:
-                self._target[:] = self._desired(t)
-            if self._path_task is not None:
-                undo = self._follow(q, qdot, Fc)
+        # what a part's surface and a path task change for this sample, undone unless it is served as time passes
+        kept = (self._params, self._z.copy()) if self._spatial.local or self._path_task is not None else None
         try:
+            if self._spatial.local:
+                self._localize(q, qdot, Fc)
+            if not self._short:
+                self._python_references(t)
+                if self.path is not None:
+                    self._target[:] = self._desired(t)
+                if self._path_task is not None:
+                    self._follow(q, qdot, Fc)
             done = self._into(self._binding, out, q, qdot, Fc, *self._held)
             if done is None:
                 self._checked(q, qdot, Fc, out)
         except HybridError:
-            if undo:
-                undo()
+            self._restore(kept)
             raise
-        if held and undo:
-            undo()
+        if held:
+            self._restore(kept)
         if not held:
             if self._path_task is not None:
                 self._path_task.follower.advance()

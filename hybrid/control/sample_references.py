@@ -14,7 +14,7 @@ import numpy as np
 from hybrid.control.measurement import padded_vector
 from hybrid.control.options import call_user
 from hybrid.control.path_task import PATH_SAMPLE_TIME, PathReferences
-from hybrid.errors import HybridError, NonFiniteError
+from hybrid.errors import HybridError, NonFiniteError, TaskFrameError
 from hybrid.spec.controller_step import CONTROLLER_STEP
 from hybrid.validate import shown
 
@@ -36,19 +36,35 @@ class SampleReferences:
                                       "number (and its rate(t) one number)")
                 target[i] = value
 
-    def _follow(self, q, qdot, Fc):
+    def _measured(self, q, qdot, Fc) -> dict[str, np.ndarray]:
+        """The controller's measurement at ``q, qdot`` under the wrench ``Fc`` (its parameters as they stand)."""
+        self._check_joint_state(q, qdot)
+        p = self.step_inputs()
+        return self._measure(q, qdot, Fc, p["surface"], p["e"], p["robot"], p["sensor"], self._estimate)
+
+    def _localize(self, q, qdot, Fc) -> None:
+        """A part's surface about the tip at ``q``: the step's ``surface`` parameters, its second-order expansion
+        there (:meth:`~hybrid.geometry.parts.PartSurface.parameters_at`), so the frame and its rate are the
+        part's own at the tip."""
+        p = self._measured(q, qdot, Fc)["p"].ravel()
+        theta = self._spatial.parameters_at(p)
+        if not np.isfinite(theta).all():
+            raise TaskFrameError(self._spatial.off_band(p))
+        theta.flags.writeable = False
+        self._params = tuple(theta if name == "surface" else a for name, a in zip(PARAMETERS, self._params))
+        self._bind()
+
+    def _follow(self, q, qdot, Fc) -> None:
         """The path task's references for the tip at ``q`` under the wrench ``Fc``; the step's binding follows
         the parameters it changes (``e``, and at the retreat the normal axis's selection and gains, its
-        integrals zero). Returns what undoes those changes (None: none), for a sample that is not served."""
-        self._check_joint_state(q, qdot)
+        integrals zero): :meth:`_restore` undoes them, for a sample that is not served."""
         self._path_task.follower.settings[PATH_SAMPLE_TIME] = self.sample_time  # one sample period: the step's
+        m = self._measured(q, qdot, Fc)
         p = self.step_inputs()
-        m = self._measure(q, qdot, Fc, p["surface"], p["e"], p["robot"], p["sensor"], self._estimate)
         changed = self._path_task.write(m["p"].ravel(), m["R"].ravel(), m["contact_wrench"].ravel()[:3], p,
                                         self._extra, self._rate)
         if not changed:
-            return None
-        params, integrals = self._params, self._z.copy()
+            return
         # the follower's unit e, and a selection and gains of 0/1 and >= 0: their checks hold
         self._params = tuple(changed.get(name, a) for name, a in zip(PARAMETERS, self._params))
         if "selection" in changed:  # the normal axis turns velocity-controlled: its loop starts afresh
@@ -56,10 +72,16 @@ class SampleReferences:
             self._z[2 * n:2 * n + 2] = 0.0
         self._bind()
 
-        def undo():
-            self._params, self._z[:] = params, integrals
+    def _restore(self, kept: tuple | None) -> None:
+        """The step's parameters and integrals as ``kept`` before a sample that is not served (None: nothing
+        was kept)."""
+        if kept is None:
+            return
+        params, integrals = kept
+        self._z[:] = integrals
+        if self._params is not params:
+            self._params = params
             self._bind()
-        return undo
 
     @property
     def path_references(self) -> PathReferences | None:

@@ -191,6 +191,9 @@ def path_task_from_dict(d: dict) -> PathTask:
 
 
 def surface_to_dict(surface: Surface) -> dict:
+    arguments = getattr(surface, "arguments", None)
+    if arguments is not None:  # a part: what it was made from (fitted again, the same, when read)
+        return {"kind": surface.kind, **arguments()}
     if surface.kind.startswith("implicit"):
         return {"kind": "implicit", "phi": str(surface.phi), "parameters": dict(surface.parameters)}
     return {"kind": surface.kind, **{k: list(v) if isinstance(v, tuple) else v for k, v in asdict(surface).items()}}

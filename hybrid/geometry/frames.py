@@ -96,9 +96,15 @@ def task_frame(surface: Surface, r, rdot, *, frame_direction=(0.0, 0.0, 1.0),
         r, rdot = (np.column_stack([x, np.zeros(len(x))]) for x in (r, rdot))
     frame = units.frame_unit(surface.spec()).function("task_frame")
     e = frame_direction_of(frame_direction)
-    call = frame.batch if is_batch(r) else frame
-    out = call(r, rdot, surface.as_array(), e)
-    R, Rd = out["R"], out["Rd"]
+    if surface.local:  # a part: its expansion about each point
+        points, rates = np.reshape(r, (-1, 3)), np.reshape(rdot, (-1, 3))
+        rows = [frame(p, v, surface.parameters_at(p), e) for p, v in zip(points, rates)]
+        R, Rd = (np.stack([o[k] for o in rows]) for k in ("R", "Rd"))
+        if not is_batch(r):
+            R, Rd = R[0], Rd[0]
+    else:
+        out = (frame.batch if is_batch(r) else frame)(r, rdot, surface.as_array(), e)
+        R, Rd = out["R"], out["Rd"]
     if d == 2:  # rows t1, n and columns x, y of the 3-D frame
         R, Rd = R[:, ::2, :2], Rd[:, ::2, :2]
     return R, Rd

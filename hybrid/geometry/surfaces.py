@@ -47,6 +47,10 @@ class Surface:
     dim = 3
     #: a built-in surface's run-time parameters, named in ``as_array`` order
     parameters_named: tuple[str, ...] = ()
+    #: whether the generated code's parameters depend on the point where it is evaluated (a part's local
+    #: expansion, :class:`~hybrid.geometry.parts.PartSurface`): then each call, each sample, gives them there
+    #: (:meth:`parameters_at`)
+    local = False
 
     def __init_subclass__(cls, **kwargs):
         super().__init_subclass__(**kwargs)
@@ -74,6 +78,11 @@ class Surface:
                               "as_array() (as hybrid.Plane does), or write it as a hybrid.ImplicitSurface")
         xyz = sp.symbols("x y z", real=True)
         return numpy_phi(self.formula(xyz, [sp.Float(v) for v in self.as_array()], sp.sqrt), xyz)
+
+    def parameters_at(self, p) -> np.ndarray:
+        """The generated code's run-time parameters for the point ``p`` [m]: :meth:`as_array` (the same
+        everywhere) but where the surface is :attr:`local`."""
+        return self.as_array()
 
     def undefined_at(self, points) -> int | None:
         """The index of the first of ``points`` (3 coordinates each) where the surface gives no contact:

@@ -272,32 +272,46 @@ def load_fastcall(src_dir: Path, prefix: str, manifest: dict):
                           write_source, [numpy.get_include()])
 
 
-# ------------------------------------------------------------------ the path follower
+# ------------------------------------------------------------------ the shared headers' entry points
 
 #: the committed header of the path follower (``codegen/path_follow.py``)
 PATH_HEADER = "hybrid_path.h"
-#: the runtime's module: the header with its entry points (``hybrid_path_follow_entry``, ``hybrid_path_table_entry``)
-_PATH_SOURCE = f'#define HYBRID_PATH_ENTRY_POINTS 1\n#include "{PATH_HEADER}"\n'
+#: the committed header of a part's surface (``codegen/part_grid.py``)
+PART_HEADER = "hybrid_part.h"
+
+
+def _header_module(header_name: str, macro: str, what: str):
+    """The committed header ``header_name`` compiled as a cffi module (``.ffi``, ``.lib``) with its entry points
+    (``macro`` defined), cached by the header's text; ``what`` names it in an error."""
+    folder = source_dir()
+    try:
+        header = (folder / header_name).read_text()
+    except OSError as exc:
+        raise NativeBuildError(f"{what}'s header {folder / header_name} cannot be read ({exc.strerror}); "
+                               "run `python -m hybrid regenerate` in a checkout of the project") from None
+    warn_if_hand_edited(folder, {header_name: header})
+    source = f'#define {macro} 1\n#include "{header_name}"\n'
+
+    def write_source(name: str, path: Path) -> None:
+        (path.parent / header_name).write_text(header)
+        ffi = cffi.FFI()
+        ffi.cdef(cdef_of(header))
+        ffi.set_source(name, source, compiler_verbose=0)
+        ffi.emit_c_code(str(path))
+
+    return _cached_module(f"_{header_name.removesuffix('.h')}", {"h": header, "c": source, "cffi": cffi.__version__},
+                          write_source, [])
 
 
 @cache
 def path_follower():
     """The path follower of ``generated/hybrid_path.h`` compiled as a cffi module (``.ffi``, ``.lib``: its
     entry points ``hybrid_path_follow_entry`` and ``hybrid_path_table_entry``), cached by the header's text."""
-    folder = source_dir()
-    try:
-        header = (folder / PATH_HEADER).read_text()
-    except OSError as exc:
-        raise NativeBuildError(f"the path follower's header {folder / PATH_HEADER} cannot be read ({exc.strerror}); "
-                               "run `python -m hybrid regenerate` in a checkout of the project") from None
-    warn_if_hand_edited(folder, {PATH_HEADER: header})
+    return _header_module(PATH_HEADER, "HYBRID_PATH_ENTRY_POINTS", "the path follower")
 
-    def write_source(name: str, path: Path) -> None:
-        (path.parent / PATH_HEADER).write_text(header)
-        ffi = cffi.FFI()
-        ffi.cdef(cdef_of(header))
-        ffi.set_source(name, _PATH_SOURCE, compiler_verbose=0)
-        ffi.emit_c_code(str(path))
 
-    return _cached_module("_hybrid_path", {"h": header, "c": _PATH_SOURCE, "cffi": cffi.__version__}, write_source,
-                          [])
+@cache
+def part_evaluator():
+    """A part's surface evaluator of ``generated/hybrid_part.h`` compiled as a cffi module (``.ffi``, ``.lib``:
+    its entry point ``hybrid_part_expansion_entry``), cached by the header's text."""
+    return _header_module(PART_HEADER, "HYBRID_PART_ENTRY_POINTS", "a part's surface evaluator")

@@ -44,6 +44,42 @@ class RigidBodyPlant(GeneratedPlant):
         super().__init__(unit, "plant_rhs", "plant_outputs", tuple(given[k] for k in ("robot", "plant", "surface")),
                          tuple(given.values()), exp.integration_step, ("Fc_x", "Fc_y", "Fc_z"))
         self._robot = exp.robot
+        # a part's surface: its expansion about the sensor tip, written into the held array at each step
+        self._part = exp.surface if exp.surface.local else None
+        self._theta = given["surface"]
+        self._tip = slice(self.record["state"].index("s_x"), self.record["state"].index("s_z") + 1)
+
+    def _about_tip(self, x: np.ndarray) -> None:
+        """A part's surface about the sensor tip of the state ``x`` (NaN beyond its band: the state that
+        follows is not finite, and the run says where the tip left the part)."""
+        self._theta[:] = self._part.parameters_at(x[self._tip])
+
+    def advance(self, x: np.ndarray, tau: np.ndarray, nsteps: int, trajectory: np.ndarray) -> int:
+        """As :meth:`GeneratedPlant.advance`; on a part, one RK4 step at a time, each with the part's surface
+        about the sensor tip at its start (it moves ``h |s'|``, a few micrometres, within the step: the
+        expansion's error there is of the order of its cube)."""
+        if self._part is None:
+            return super().advance(x, tau, nsteps, trajectory)
+        for i in range(nsteps):
+            self._about_tip(x)
+            if super().advance(x, tau, 1, trajectory[i:i + 1]) < 1:
+                return i
+        return nsteps
+
+    def outputs(self, states: np.ndarray) -> np.ndarray:
+        """As :meth:`GeneratedPlant.outputs`; on a part, each state's record with the surface about its own
+        sensor tip."""
+        if self._part is None:
+            return super().outputs(states)
+        return np.array([self._record_row(x) for x in np.ascontiguousarray(states)]).reshape(
+            len(states), len(self.record["outputs"]))
+
+    def _record_row(self, x: np.ndarray) -> np.ndarray:
+        if self._part is None:
+            return super()._record_row(x)
+        # the one-state entry point holds the parameters it was bound with: the batch reads them as they are
+        self._about_tip(x)
+        return super().outputs(x[None, :])[0]
 
     @staticmethod
     def loop_plant(exp) -> LoopPlant:

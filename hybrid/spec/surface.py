@@ -57,9 +57,22 @@ def cylinder_phi(p, theta, sqrt):
     return sqrt(sum((d[i] - u[i] * along) ** 2 for i in range(3))) - theta[6]
 
 
+def quadric_phi(p, theta, sqrt):
+    """A surface's second-order expansion about the point ``theta[0:3]``: its ``phi`` there ``theta[3]``, its
+    gradient ``theta[4:7]`` and its Hessian's upper triangle ``theta[7:13]`` (xx, xy, xz, yy, yz, zz):
+    ``phi_0 + g^T d + d^T H d / 2`` with ``d = p - p_0`` (a part's surface about the point of contact)."""
+    d = [p[i] - theta[i] for i in range(3)]
+    hxx, hxy, hxz, hyy, hyz, hzz = theta[7:13]
+    quadratic = (hxx * d[0] * d[0] + hyy * d[1] * d[1] + hzz * d[2] * d[2]
+                 + 2 * (hxy * d[0] * d[1] + hxz * d[0] * d[2] + hyz * d[1] * d[2]))
+    return theta[3] + sum(theta[4 + i] * d[i] for i in range(3)) + quadratic / 2
+
+
 #: each built-in surface's ``phi(p, theta, sqrt)``, by kind
-FORMULAS = {"plane": plane_phi, "sphere": sphere_phi, "cylinder": cylinder_phi}
+FORMULAS = {"plane": plane_phi, "sphere": sphere_phi, "cylinder": cylinder_phi, "quadric": quadric_phi}
 #: each built-in surface's run-time parameters, in ``as_array`` order, by kind
 PARAMETERS = {"plane": ("p_x", "p_y", "p_z", "n_x", "n_y", "n_z"), "sphere": ("c_x", "c_y", "c_z", "rho"),
-              "cylinder": ("p_x", "p_y", "p_z", "u_x", "u_y", "u_z", "rho")}
+              "cylinder": ("p_x", "p_y", "p_z", "u_x", "u_y", "u_z", "rho"),
+              "quadric": ("p_x", "p_y", "p_z", "phi", "g_x", "g_y", "g_z", "h_xx", "h_xy", "h_xz", "h_yy", "h_yz",
+                          "h_zz")}
 

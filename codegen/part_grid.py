@@ -1,0 +1,28 @@
+"""A part's fitted surface in C: one header (:data:`PART_HEADER`) rendered from its template with the layouts of
+:mod:`hybrid.spec.part`, so the C's index macros and the runtime's arrays name the same numbers.
+
+``generated/`` holds a copy, stamped, beside the units; the compiled loops and the standalone C of a run on a
+part include it, and the runtime compiles it for the :class:`hybrid.Controller` and the plant.
+"""
+
+from __future__ import annotations
+
+from hybrid.spec import part as spec
+from hybrid.spec.surface import PARAMETERS
+
+from .templates import render
+
+#: the evaluator's header (C99, every function static inline)
+PART_HEADER = "hybrid_part.h"
+
+
+def part_header() -> str:
+    """The evaluator's header.
+
+    Returns
+    -------
+    str
+        The text of :data:`PART_HEADER`, C99, its layouts' macros from :mod:`hybrid.spec.part`.
+    """
+    return render("hybrid_part.h.j2", grid=spec.PART_GRID, out=PARAMETERS["quadric"],
+                  statuses=list(spec.PART_STATUSES.items()))

@@ -1,0 +1,217 @@
+"""A smooth signed distance fitted to oriented points: the representation of a part (a mesh, a point cloud).
+
+The part's surface is the zero set of a tricubic B-spline ``phi`` (:class:`~hybrid.geometry.bspline.SplineGrid`),
+continuous to the second derivative, so the task frame ``R(r)`` (from ``grad phi``) and its rate ``R'`` (from
+the Hessian) are defined everywhere near the part, across the facets' edges. Its coefficients minimise, in
+the least-squares sense (the smooth signed distance of Calakli and Taubin, 2011, with distance samples off
+the part),
+
+    sum_i phi(p_i)^2 + sum_i |h (grad phi(p_i) - n_i)|^2 + sum_j (phi(q_j) - d_j)^2
+        + smoothing * sum_m |h^2 D^2 C_m|^2 + RIDGE * sum_m (C_m - d_m)^2
+
+over the oriented points ``(p_i, n_i)`` sampled on the part and points ``q_j`` moved off it along their normals
+by ``d_j`` (to the band, on both sides, each only as far as the medial axis): ``phi`` is 0 on the part, its
+gradient the unit normal there, and the signed distance within the band (positive on the normals' side),
+where the tool's tip, behind its compliant sensor, evaluates the frame and its rate; its second differences
+``D^2 C`` (the Hessian's, on the coefficients ``C``) are small, which smooths the facets' corners and the
+noise of a scan. The ridge pulls each coefficient weakly towards the signed distance along the nearest
+point's normal: it fixes the coefficients no sample reaches and starts the solver there.
+
+Only the coefficients the samples reach, and a cell beyond them, are unknowns: ``phi`` is defined within
+``band`` of the part and not beyond (NaN coefficients), and the grid's size is checked before anything is
+allocated. The normal equations are solved by conjugate gradients (SciPy), preconditioned by their
+diagonal, applied as ``A^T (A x)``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from hybrid.errors import HybridError
+from hybrid.geometry.bspline import SplineGrid, basis
+
+#: the most coefficients a part's grid may have (its bounding box over the spacing): 2e7 doubles, 160 MB
+MAX_COEFFICIENTS = 20_000_000
+#: the weight of the coefficients' pull towards the nearest point's signed distance (see the module docstring)
+RIDGE = 1e-6
+#: the points moved off the part, one in so many, for its signed distance within the band
+OFFSET_STRIDE = 4
+#: the conjugate gradients' relative residual (the fit's own error is far larger)
+TOLERANCE = 1e-4
+#: the default weight of the second differences: on a sphere of 25 cells' radius tessellated in facets of a
+#: cell, the frame's rate within 4 % of the sphere's (a grid finer than the facets resolves their ripple)
+SMOOTHING = 0.2
+
+
+def kd_tree(points: np.ndarray):
+    """SciPy's k-d tree of ``points`` (the nearest points of a part's samples)."""
+    try:
+        from scipy.spatial import cKDTree
+    except ImportError:
+        raise HybridError("fitting a part's surface needs SciPy: pip install 'hybrid-decoupling[parts]'") from None
+    return cKDTree(points)
+
+
+def grid_for(points: np.ndarray, spacing: float, band: float) -> tuple[np.ndarray, tuple[int, int, int]]:
+    """The origin and the cells of the grid that holds ``points`` with ``band`` [m] and two cells around them,
+    refused where its coefficients would exceed :data:`MAX_COEFFICIENTS`."""
+    pad = band + 2 * spacing
+    lo, hi = points.min(axis=0) - pad, points.max(axis=0) + pad
+    cells = np.ceil((hi - lo) / spacing).astype(int)
+    total = float(np.prod(cells + 3.0))
+    if total > MAX_COEFFICIENTS:
+        extent = hi - lo
+        wider = spacing * (total / MAX_COEFFICIENTS) ** (1 / 3)
+        raise HybridError(f"a part of {extent[0]:.3g} x {extent[1]:.3g} x {extent[2]:.3g} m at a spacing of "
+                          f"{spacing:g} m needs {total:.3g} coefficients (at most {MAX_COEFFICIENTS:.0e}); give "
+                          f"spacing >= {wider:.2g} m, or check the part's units (scale=1e-3 for millimetres)")
+    return lo, tuple(int(c) for c in cells)
+
+
+def _stencils(grid_origin, spacing, cells, points) -> tuple[np.ndarray, list[np.ndarray]]:
+    """Each point's 64 coefficients (flat indices, N x 64) and the weights of ``phi`` and of its gradient's
+    three components there (each N x 64; the gradient's in 1/m)."""
+    shape = np.array(cells) + 3
+    u = (points - grid_origin) / spacing
+    cell = np.clip(np.floor(u), 0, np.array(cells) - 1).astype(np.int64)
+    t = u - cell
+    b0, b1 = basis(t, 0), basis(t, 1) / spacing  # N x 3 x 4
+    a = np.arange(4)
+    index = ((cell[:, 0, None, None, None] + a[:, None, None]) * shape[1]
+             + (cell[:, 1, None, None, None] + a[None, :, None])) * shape[2] + (cell[:, 2, None, None, None] + a)
+
+    def product(bx, by, bz):
+        return (bx[:, :, None, None] * by[:, None, :, None] * bz[:, None, None, :]).reshape(len(points), 64)
+
+    weights = [product(b0[:, 0], b0[:, 1], b0[:, 2]), product(b1[:, 0], b0[:, 1], b0[:, 2]),
+               product(b0[:, 0], b1[:, 1], b0[:, 2]), product(b0[:, 0], b0[:, 1], b1[:, 2])]
+    return index.reshape(len(points), 64), weights
+
+
+def _second_differences(unknown: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The second differences of the coefficients (three along the axes, three mixed), as ``(indices, weights)``
+    of their terms (each K x terms), for the coefficients whose stencil is all unknowns."""
+    shape = unknown.shape
+    flat = np.arange(unknown.size).reshape(shape)
+    rows = []
+    axes = [np.eye(3, dtype=int)[i] for i in range(3)]
+    stencils = [([-e, 0 * e, e], [1.0, -2.0, 1.0]) for e in axes]
+    root2 = math.sqrt(2.0)  # a mixed second derivative appears twice in the Hessian's norm
+    for i in range(3):
+        for j in range(i + 1, 3):
+            ei, ej = axes[i], axes[j]
+            stencils.append(([ei + ej, ei - ej, -ei + ej, -ei - ej], [root2 / 4, -root2 / 4, -root2 / 4, root2 / 4]))
+    inner = (slice(1, -1),) * 3
+    centre = flat[inner].ravel()
+    for offsets, weights in stencils:
+        ok = unknown[inner].ravel().copy()
+        terms = []
+        for o in offsets:
+            shifted = tuple(slice(1 + d, shape[k] - 1 + d) for k, d in enumerate(o))
+            ok &= unknown[shifted].ravel()
+            terms.append(flat[shifted].ravel())
+        index = np.stack(terms, axis=1)[ok]
+        rows.append((index, np.broadcast_to(np.array(weights), index.shape)))
+    del centre
+    return rows
+
+
+def _offset_samples(points: np.ndarray, normals: np.ndarray, spacing: float, band: float,
+                    tree) -> tuple[np.ndarray, np.ndarray]:
+    """Points off the part and their signed distances: every :data:`OFFSET_STRIDE`-th point moved along its
+    normal by a cell and each further cell to the band, on both sides (the tool's tip, behind its compliant
+    sensor, reaches into the part as far as the sensor deflects), each as far from the part as from its own
+    point. An offset nearer another point of the part (past a concave fold, across a thin wall: the medial
+    axis) is left out."""
+    steps = spacing * np.arange(1, int(math.floor(band / spacing)) + 1)
+    base, along = points[::OFFSET_STRIDE], normals[::OFFSET_STRIDE]
+    at, value = [], []
+    for delta in np.ravel(np.column_stack([steps, -steps])):
+        moved = base + delta * along
+        distance, _ = tree.query(moved)
+        own = distance >= (1.0 - 1e-3) * abs(delta)
+        at.append(moved[own])
+        value.append(np.full(int(own.sum()), delta))
+    return (np.concatenate(at), np.concatenate(value)) if at else (np.empty((0, 3)), np.empty(0))
+
+
+def fit_signed_distance(points, normals, spacing: float, band: float, smoothing: float = SMOOTHING) -> SplineGrid:
+    """The smooth signed distance of the oriented points (module docstring).
+
+    Parameters
+    ----------
+    points, normals : numpy.ndarray
+        N x 3 points on the part [m] and their unit normals (towards the side where ``phi > 0``).
+    spacing : float
+        The grid's cells [m]: a few times finer than the smallest radius of curvature to keep.
+    band : float
+        How far from the points [m] ``phi`` is defined.
+    smoothing : float
+        The weight of the second differences (:data:`SMOOTHING`).
+
+    Returns
+    -------
+    SplineGrid
+        ``phi``, NaN beyond the band.
+
+    Examples
+    --------
+    A sphere of radius 0.1 m from 2,000 points on it:
+
+    >>> rng = np.random.default_rng(0)
+    >>> n = rng.normal(size=(2000, 3)); n /= np.linalg.norm(n, axis=1, keepdims=True)
+    >>> grid = fit_signed_distance(0.1 * n, n, spacing=0.01, band=0.01)
+    >>> phi, grad, _ = grid.evaluate([[0.0, 0.0, 0.105]])
+    >>> round(float(phi[0]), 3), round(float(grad[0, 2]), 2)
+    (0.005, 1.0)
+    """
+    tree = kd_tree(np.asarray(points, float))  # (refused with the reason where SciPy is missing)
+    from scipy import ndimage, sparse
+    from scipy.sparse.linalg import LinearOperator, cg
+
+    points, normals = np.asarray(points, float), np.asarray(normals, float)
+    origin, cells = grid_for(points, spacing, band)
+    shape = tuple(c + 3 for c in cells)
+    off, distance = _offset_samples(points, normals, spacing, band, tree)
+    index, (w, wx, wy, wz) = _stencils(origin, spacing, cells, points)
+    off_index, (off_w, *_) = _stencils(origin, spacing, cells, off)
+    # the unknowns: the samples' coefficients and a cell's beyond them (a point within the band reads them all)
+    touched = np.zeros(shape, bool)
+    touched.flat[np.unique(index)] = True
+    touched.flat[np.unique(off_index)] = True
+    unknown = ndimage.binary_dilation(touched, np.ones((3, 3, 3), bool), iterations=2)
+    column = np.full(unknown.size, -1, np.int64)
+    column[unknown.ravel()] = np.arange(int(unknown.sum()))
+    m = int(unknown.sum())
+    # rows: phi = 0 and h grad phi = h n at the points, phi = the distance off them; the second differences;
+    # the ridge
+    data, cols = [w, spacing * wx, spacing * wy, spacing * wz, off_w], [index] * 4 + [off_index]
+    rhs = [np.zeros(len(points)), spacing * normals[:, 0], spacing * normals[:, 1], spacing * normals[:, 2], distance]
+    for terms, weights in _second_differences(unknown):
+        data.append(math.sqrt(smoothing) * weights)
+        cols.append(terms)
+        rhs.append(np.zeros(len(terms)))
+    rows = np.concatenate([np.repeat(np.arange(len(c)), c.shape[1]) + sum(len(x) for x in cols[:k])
+                           for k, c in enumerate(cols)])
+    A = sparse.csr_matrix((np.concatenate([d.ravel() for d in data]),
+                           (rows, column[np.concatenate([c.ravel() for c in cols])])),
+                          shape=(sum(len(c) for c in cols), m))
+    b = np.concatenate(rhs)
+    # the ridge's target: the signed distance along the nearest point's normal, at each unknown's centre
+    centres = origin + (np.argwhere(unknown) - 1.0) * spacing
+    _, nearest = tree.query(centres)
+    target = np.einsum("ij,ij->i", centres - points[nearest], normals[nearest])
+    # the normal equations applied as A^T (A x): A holds a sixth of the numbers A^T A would
+    At = A.T.tocsr()
+    normal_matrix = LinearOperator((m, m), matvec=lambda x: At @ (A @ x) + RIDGE * x, dtype=float)
+    right = At @ b + RIDGE * target
+    diagonal = np.asarray(A.multiply(A).sum(axis=0)).ravel() + RIDGE
+    solution, info = cg(normal_matrix, right, x0=target, rtol=TOLERANCE, maxiter=5000,
+                        M=sparse.diags(1.0 / diagonal))
+    if info != 0 or not np.isfinite(solution).all():
+        raise HybridError(f"the part's fit did not converge ({info}); give a coarser spacing or more smoothing")
+    coefficients = np.full(shape, np.nan)
+    coefficients[unknown] = solution
+    return SplineGrid(origin, float(spacing), coefficients)

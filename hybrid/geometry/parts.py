@@ -1,0 +1,428 @@
+"""Parts as they come: a surface from a triangle mesh (:class:`MeshSurface`) or a point cloud
+(:class:`PointCloudSurface`), smooth to the second derivative.
+
+The part's ``phi`` is the smooth signed distance fitted to oriented points on it
+(:mod:`hybrid.geometry.part_fit`): positive on the side its normals point to (a closed mesh's outside), the
+distance from the part near it, its gradient the unit normal and its Hessian the curvature the law's ``R'``
+needs. Everything is in the base axes: a part is placed by ``transform`` (its frame in the base, 4 x 4) and
+``scale`` (1e-3 for a file in millimetres). :attr:`PartSurface.fit` says how well the smooth surface
+follows the part.
+
+The generated code takes a part as the surface's second-order expansion about a point
+(:func:`hybrid.spec.surface.quadric_phi`): :meth:`PartSurface.parameters_at` gives it about the point of
+contact, exact there (``phi``, its gradient and its Hessian are the fitted surface's).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from hybrid.errors import HybridError
+from hybrid.geometry.meshes import checked_mesh, face_normals, oriented_samples, read_mesh
+from hybrid.geometry.part_fit import SMOOTHING, fit_signed_distance, kd_tree
+from hybrid.geometry.surfaces import Surface, _unit_normal
+from hybrid.native import loader
+from hybrid.spec.part import PART_STATUSES
+from hybrid.spec.surface import FORMULAS, PARAMETERS, SurfaceSpec
+from hybrid.validate import _finite, shown
+
+#: the samples drawn per cell of the grid on the part's surface (area / spacing^2 of them, each)
+SAMPLES_PER_CELL = 2.0
+#: the fewest and the most samples drawn on a part
+FEWEST_SAMPLES, MOST_SAMPLES = 2_000, 400_000
+#: the Newton steps :meth:`PartSurface.project` takes at most
+PROJECTION_STEPS = 20
+#: how far from the part [m] its surface is defined by default (at least three cells): the arm tip reaches into
+#: the part as far as the sensor deflects (2 cm at 20 N on the default sensor of 1000 N/m)
+DEFAULT_BAND = 0.03
+
+
+@dataclass(frozen=True)
+class PartFit:
+    """How well a part's smooth surface follows the part.
+
+    Attributes
+    ----------
+    spacing_m, band_m : float
+        The fit's grid spacing, and how far from the part ``phi`` is defined [m].
+    samples : int
+        The oriented points it was fitted to.
+    distance_rms_m, distance_max_m : float
+        The smooth surface's distance from the part's own points (a mesh's vertices and facets' centroids, a
+        cloud's points) [m]: ``|phi| / |grad phi|`` there.
+    normal_angle_rms_deg, normal_angle_max_deg : float
+        The angle between the smooth surface's normal and the part's own (a mesh's facets' at their centroids,
+        away from its edges; a cloud's given or estimated normals) [deg].
+    """
+
+    spacing_m: float
+    band_m: float
+    samples: int
+    distance_rms_m: float
+    distance_max_m: float
+    normal_angle_rms_deg: float
+    normal_angle_max_deg: float
+
+
+class PartSurface(Surface):
+    """A surface fitted to a part (module docstring); built by :class:`MeshSurface` or :class:`PointCloudSurface`.
+
+    Attributes
+    ----------
+    grid : SplineGrid
+        The fitted ``phi`` (:class:`~hybrid.geometry.bspline.SplineGrid`), NaN beyond the band.
+    fit : PartFit
+        How well it follows the part.
+    """
+
+    kind = "part"
+    local = True
+    parameters_named = PARAMETERS["quadric"]
+    formula = staticmethod(FORMULAS["quadric"])
+
+    def _fitted(self, points: np.ndarray, normals: np.ndarray, spacing, band, smoothing, what: str) -> None:
+        extent = float(np.linalg.norm(np.ptp(points, axis=0)))
+        spacing = _length(what, "spacing", extent / 50 if spacing is None else spacing)
+        band = _length(what, "band", max(3 * spacing, DEFAULT_BAND) if band is None else band)
+        _finite(what, smoothing=smoothing)
+        if smoothing < 0:
+            raise HybridError(f"{what}.smoothing = {smoothing}; give a weight >= 0")
+        self.spacing, self.band, self.smoothing = spacing, band, float(smoothing)
+        self.grid = fit_signed_distance(points, normals, spacing, band, smoothing)
+        self._what = what
+        self._anchor = points[0].copy()
+        self._grid_numbers, self._coefficients = self.grid.as_arrays()
+        module = loader.part_evaluator()
+        self._evaluator = module.lib, module.ffi
+        self._grid_ptr = module.ffi.from_buffer("double[]", self._grid_numbers)
+        self._coefficients_ptr = module.ffi.from_buffer("double[]", self._coefficients)
+
+    def _report(self, points: np.ndarray, at: np.ndarray, normals: np.ndarray, samples: int) -> None:
+        """:attr:`fit`: the distance at the part's own ``points``, the normal's angle at ``at`` against the part's
+        ``normals`` there."""
+        phi, grad, _ = self.grid.evaluate(points)
+        distance = np.abs(phi) / np.linalg.norm(grad, axis=1)
+        _, grad, _ = self.grid.evaluate(at)
+        cos = np.einsum("ij,ij->i", grad, normals) / np.linalg.norm(grad, axis=1)
+        angle = np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
+        self.fit = PartFit(self.spacing, self.band, samples, float(np.sqrt(np.mean(distance ** 2))),
+                           float(distance.max()), float(np.sqrt(np.mean(angle ** 2))), float(angle.max()))
+
+    # ----------------------------------------------------------------- the surface's interface
+
+    def phi_function(self):
+        """``p -> (phi(p), grad phi(p))`` of the fitted surface (NaN beyond its band)."""
+        def evaluate(p):
+            phi, grad, _ = self.grid.evaluate(np.asarray(p, float).reshape(1, 3))
+            return float(phi[0]), grad[0]
+        return evaluate
+
+    def evaluate(self, points) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``phi`` (N), its gradient (N x 3) and its Hessian (N x 3 x 3) [1/m] at ``points`` (N x 3) [m]; NaN
+        beyond the band."""
+        return self.grid.evaluate(points)
+
+    def normal_at(self, p) -> np.ndarray:
+        """The unit normal towards the robot at ``p`` [m] (3 coordinates, within the band).
+
+        Raises
+        ------
+        HybridError
+            ``p`` beyond the band (no normal there).
+        """
+        p = np.asarray(p, float).reshape(3)
+        _, grad = self.phi_function()(p)
+        if not np.isfinite(grad).all():
+            raise HybridError(self.off_band(p))
+        return _unit_normal(grad, f"{self._what} at {p.tolist()}")
+
+    def parameters_at(self, p) -> np.ndarray:
+        """The generated code's parameters at the point ``p`` [m]: the fitted surface's second-order expansion
+        about it (:func:`~hybrid.spec.surface.quadric_phi`: ``p``, ``phi``, the gradient, the Hessian's upper
+        triangle), computed by the generated evaluator (``generated/hybrid_part.h``, as the compiled loop and
+        the standalone C compute it); NaN beyond the band."""
+        lib, ffi = self._evaluator
+        point = np.ascontiguousarray(np.asarray(p, float).reshape(3))
+        out = np.empty(len(PARAMETERS["quadric"]))
+        status = lib.hybrid_part_expansion_entry(self._grid_ptr, self._coefficients_ptr,
+                                                 ffi.from_buffer("double[]", point), ffi.from_buffer("double[]", out))
+        if status != PART_STATUSES["PART_OK"]:
+            out[:] = np.nan
+        return out
+
+    def as_array(self) -> np.ndarray:
+        """The parameters about the part's first point (each call and sample gives its own: :meth:`parameters_at`)."""
+        return self.parameters_at(self._anchor)
+
+    def data(self) -> tuple[np.ndarray, np.ndarray]:
+        """The generated C's run-time data of the part: the grid's numbers (:data:`~hybrid.spec.part.PART_GRID`)
+        and its coefficients (z fastest; NaN beyond the band)."""
+        return self._grid_numbers, self._coefficients
+
+    def project(self, p) -> np.ndarray | None:
+        """The point of the part nearest ``p`` [m] (Newton steps along the normal; ``p`` within the band), or
+        None beyond it."""
+        x = np.asarray(p, float).reshape(3).copy()
+        for _ in range(PROJECTION_STEPS):
+            phi, grad = self.phi_function()(x)
+            if not (math.isfinite(phi) and np.isfinite(grad).all()):
+                return None
+            step = phi * grad / float(grad @ grad)
+            x -= step
+            if float(np.linalg.norm(step)) <= 1e-13:
+                break
+        return x
+
+    def off_band(self, p) -> str:
+        """What to say of the point ``p`` beyond the fitted band (no surface there)."""
+        return (f"{self._what}: the point {np.round(np.asarray(p, float), 5).tolist()} m is beyond the fitted band "
+                f"({self.band:g} m from the part); give a point nearer the part, or a wider band")
+
+    def arguments(self) -> dict:
+        """What the part is made from, in base axes and metres (a saved experiment's surface: read, it is fitted
+        again to the same surface)."""
+        return dict(self._arguments)
+
+    def spec(self) -> SurfaceSpec:
+        """The generated code's surface: the second-order expansion about a point (``quadric``), its parameters
+        given at each point (:meth:`parameters_at`)."""
+        return SurfaceSpec("quadric", self.parameters_named, formula=self.formula)
+
+    def digest(self) -> str:
+        """What identifies the fitted surface (its grid's numbers)."""
+        h = hashlib.sha256()
+        h.update(np.asarray([*self.grid.origin, self.grid.spacing], float).tobytes())
+        h.update(np.ascontiguousarray(self.grid.coefficients).tobytes())
+        return h.hexdigest()
+
+    def __eq__(self, other) -> bool:
+        return type(other) is type(self) and other.digest() == self.digest()
+
+    def __hash__(self) -> int:
+        return hash(self.digest())
+
+
+class MeshSurface(PartSurface):
+    """A part given as a triangle mesh, its surface smooth to the second derivative.
+
+    Parameters
+    ----------
+    vertices : array_like
+        V x 3 vertex coordinates (in the mesh's units: ``scale`` makes them metres).
+    faces : array_like
+        F x 3 vertex indices, counter-clockwise seen from the side the normals point to (a closed mesh's
+        outside): the tool's side, where ``phi > 0``, unless ``flip``.
+    transform : array_like, optional
+        The part's frame in the base axes (4 x 4 homogeneous; a rotation and a translation [m]); default the
+        identity.
+    scale : float
+        Metres per mesh unit (1e-3 for millimetres), applied before ``transform``.
+    flip : bool
+        True: the tool works on the other side (against the facets' normals: the inside of a bowl).
+    spacing : float, optional
+        The fit's grid spacing [m]: finer than the smallest radius of curvature to keep (a tenth of it keeps
+        it within about 1 %); default a fiftieth of the part's size.
+    band : float, optional
+        How far from the part [m] ``phi`` is defined, on both sides (the tool's approach starts within it, and
+        the arm tip behind a compliant sensor reaches into the part as far as the sensor deflects): default
+        :data:`DEFAULT_BAND`, at least three cells.
+    smoothing : float
+        The weight of the fit's second differences (:data:`~hybrid.geometry.part_fit.SMOOTHING`).
+
+    Raises
+    ------
+    HybridError
+        A mesh that is empty, not a manifold, inconsistently oriented, with facets of no area or vertices
+        that are not numbers, out of a robot cell's scale; a transform that is not a rigid motion.
+
+    Examples
+    --------
+    A cube of 0.1 m (8 vertices, 12 facets), its top at z = 0.05 m:
+
+    >>> import hybrid, numpy as np
+    >>> v = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]) * 0.05
+    >>> f = [[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1], [2, 3, 7], [2, 7, 6],
+    ...      [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]]
+    >>> cube = hybrid.MeshSurface(v, f, spacing=0.01)
+    >>> np.round(cube.normal_at([0.0, 0.0, 0.052]), 3).tolist()
+    [0.0, 0.0, 1.0]
+    >>> cube.fit.distance_max_m < 1e-3
+    True
+    """
+
+    kind = "mesh"
+
+    def __init__(self, vertices, faces, transform=None, scale: float = 1.0, flip: bool = False,
+                 spacing: float | None = None, band: float | None = None, smoothing: float = SMOOTHING):
+        what = "MeshSurface"
+        _finite(what, scale=scale)
+        if scale <= 0:
+            raise HybridError(f"{what}.scale = {scale}; give the metres per mesh unit (> 0; 1e-3 for millimetres)")
+        try:
+            raw = np.asarray(vertices, float) * scale
+        except (TypeError, ValueError):
+            raise HybridError(f"{what}: vertices must be V x 3 numbers") from None
+        v, f = checked_mesh(_placed(raw, transform, what), faces, what)
+        if flip:
+            f = f[:, ::-1].copy()
+        self.vertices, self.faces = v, f
+        count = int(np.clip(SAMPLES_PER_CELL * _area(v, f) / _spacing_guess(v, spacing) ** 2, FEWEST_SAMPLES,
+                            MOST_SAMPLES))
+        points, normals = oriented_samples(v, f, count)
+        self._fitted(points, normals, spacing, band, smoothing, what)
+        self._arguments = {"vertices": v.tolist(), "faces": f.tolist(), "spacing": self.spacing, "band": self.band,
+                           "smoothing": self.smoothing}
+        # the report: the distance at the vertices and the facets' centroids, the angle at the centroids
+        centroids = v[f].mean(axis=1)
+        self._report(np.vstack([v, centroids]), centroids, face_normals(v, f), count)
+
+    @classmethod
+    def from_file(cls, path, transform=None, scale: float = 1.0, flip: bool = False, spacing: float | None = None,
+                  band: float | None = None, smoothing: float = SMOOTHING) -> MeshSurface:
+        """A part from a mesh file (STL, OBJ, PLY, ...; read by trimesh), placed by ``transform`` and ``scale``
+        (as :class:`MeshSurface` takes them).
+
+        Returns
+        -------
+        MeshSurface
+            The part's fitted surface.
+        """
+        vertices, faces = read_mesh(path)
+        return cls(vertices, faces, transform, scale, flip, spacing, band, smoothing)
+
+
+class PointCloudSurface(PartSurface):
+    """A part given as points on its surface (a scan), its surface smooth to the second derivative.
+
+    Parameters
+    ----------
+    points : array_like
+        N x 3 points on the part [m, base axes].
+    normals : array_like, optional
+        N x 3 normals there, pointing to the tool's side; without them each point's normal is the direction
+        of least spread of its ``neighbours`` nearest points, turned towards ``viewpoint``.
+    viewpoint : array_like, optional
+        A point on the tool's side (the scanner's position) [m]: needed without ``normals``.
+    neighbours : int
+        The points that give an estimated normal (at least 6).
+    spacing, band, smoothing
+        As :class:`MeshSurface` takes them.
+
+    Raises
+    ------
+    HybridError
+        Too few points, points or normals that are not numbers, normals of zero length, no viewpoint without
+        normals, a cloud too sparse for its spacing.
+    """
+
+    kind = "point_cloud"
+
+    def __init__(self, points, normals=None, viewpoint=None, neighbours: int = 12, spacing: float | None = None,
+                 band: float | None = None, smoothing: float = SMOOTHING):
+        what = "PointCloudSurface"
+        p = _array(what, "points", points)
+        if len(p) < 100:
+            raise HybridError(f"{what}: {len(p)} points; give at least 100 points on the part")
+        if normals is None:
+            if viewpoint is None:
+                raise HybridError(f"{what}: without normals, give viewpoint= (a point on the tool's side, the "
+                                  "scanner's position) to orient the estimated ones")
+            n = _estimated_normals(p, int(neighbours), np.asarray(viewpoint, float).reshape(3), what)
+        else:
+            n = _array(what, "normals", normals)
+            if n.shape != p.shape:
+                raise HybridError(f"{what}: {len(n)} normals for {len(p)} points; give one per point")
+            length = np.linalg.norm(n, axis=1)
+            if (length <= 1e-12).any():
+                raise HybridError(f"{what}: normal {int(np.argmax(length <= 1e-12))} has no length; give unit "
+                                  "normals towards the tool's side")
+            n = n / length[:, None]
+        extent = float(np.linalg.norm(np.ptp(p, axis=0)))
+        from hybrid.geometry.meshes import LARGEST_PART, SMALLEST_PART
+        if not SMALLEST_PART <= extent <= LARGEST_PART:
+            raise HybridError(f"{what} is {extent:.3g} m across; a part in a robot cell is {SMALLEST_PART:g} to "
+                              f"{LARGEST_PART:g} m: give its points in metres")
+        self._fitted(p, n, spacing, band, smoothing, what)
+        gaps = _sparsest(p)
+        if gaps > 2 * self.spacing:
+            raise HybridError(f"{what}: points {gaps:.3g} m apart where the fit's cells are {self.spacing:.3g} m; "
+                              f"give spacing >= {gaps / 2:.2g} m, or a denser cloud")
+        self.points, self.normals = p, n
+        self._arguments = {"points": p.tolist(), "normals": n.tolist(), "spacing": self.spacing, "band": self.band,
+                           "smoothing": self.smoothing}
+        self._report(p, p, n, len(p))
+
+
+def _placed(v: np.ndarray, transform, what: str) -> np.ndarray:
+    """``v`` (V x 3) moved by the rigid ``transform`` (4 x 4; None: as it is)."""
+    if transform is None:
+        return v
+    try:
+        T = np.asarray(transform, float)
+    except (TypeError, ValueError):
+        T = None
+    if T is None or T.shape != (4, 4) or not np.isfinite(T).all():
+        raise HybridError(f"{what}.transform = {shown(transform, 60)}; give the part's frame in the base as a 4 x 4 "
+                          "homogeneous matrix")
+    R = T[:3, :3]
+    if not (np.allclose(R.T @ R, np.eye(3), atol=1e-9) and np.linalg.det(R) > 0
+            and np.allclose(T[3], (0, 0, 0, 1))):
+        raise HybridError(f"{what}.transform is not a rigid motion (a rotation and a translation, last row 0 0 0 1); "
+                          "give scale for a change of units")
+    if v.ndim != 2 or v.shape[1:] != (3,):
+        return v  # checked_mesh says what is wrong
+    return v @ R.T + T[:3, 3]
+
+
+def _length(what: str, name: str, value) -> float:
+    _finite(what, **{name: value})
+    if value <= 0:
+        raise HybridError(f"{what}.{name} = {value} m; give a positive length")
+    return float(value)
+
+
+def _spacing_guess(v: np.ndarray, spacing) -> float:
+    """The spacing the samples are drawn for (the default's, where none is given)."""
+    if spacing is not None and isinstance(spacing, (int, float)) and spacing > 0:
+        return float(spacing)
+    return float(np.linalg.norm(np.ptp(v, axis=0))) / 50
+
+
+def _area(v: np.ndarray, f: np.ndarray) -> float:
+    from hybrid.geometry.meshes import face_areas
+
+    return float(face_areas(v, f).sum())
+
+
+def _array(what: str, name: str, value) -> np.ndarray:
+    try:
+        a = np.asarray(value, float)
+    except (TypeError, ValueError):
+        a = None
+    if a is None or a.ndim != 2 or a.shape[1] != 3:
+        raise HybridError(f"{what}.{name}: give N x 3 numbers")
+    if not np.isfinite(a).all():
+        raise HybridError(f"{what}.{name}: row {int(np.flatnonzero(~np.isfinite(a).all(axis=1))[0])} is not finite; "
+                          "give finite numbers")
+    return a
+
+
+def _estimated_normals(p: np.ndarray, k: int, viewpoint: np.ndarray, what: str) -> np.ndarray:
+    """Each point's normal: the direction of least spread of its ``k`` nearest points, towards ``viewpoint``."""
+    if k < 6:
+        raise HybridError(f"{what}.neighbours = {k}; give at least 6")
+    _, near = kd_tree(p).query(p, k=min(k, len(p)))
+    local = p[near] - p[near].mean(axis=1, keepdims=True)
+    _, vectors = np.linalg.eigh(np.einsum("nki,nkj->nij", local, local))
+    n = vectors[:, :, 0]
+    return n * np.where(np.einsum("ij,ij->i", n, viewpoint - p) < 0, -1.0, 1.0)[:, None]
+
+
+def _sparsest(p: np.ndarray) -> float:
+    """The largest distance from a point to its nearest neighbour [m] (the cloud's gaps)."""
+    d, _ = kd_tree(p).query(p, k=2)
+    return float(d[:, 1].max())

@@ -1,0 +1,245 @@
+"""Parts as surfaces (hybrid.MeshSurface, hybrid.PointCloudSurface): a sphere and a cylinder as meshes and as a
+point cloud against their formulas, the fit's report against trimesh's own closest points, the surface's
+continuity across the facets' edges, the generated evaluator against NumPy, the UR5 in closed loop on a mesh
+against the same run on the formula, and the refusals."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import hybrid
+from hybrid.geometry.parts import MeshSurface, PointCloudSurface
+
+trimesh = pytest.importorskip("trimesh")
+
+CENTRE, RADIUS = np.array([0.5, 0.0, 0.2]), 0.15
+SPHERE = hybrid.Sphere(tuple(CENTRE), RADIUS)
+AXIS_POINT, AXIS, CYLINDER_RADIUS = np.array([0.5, 0.0, 0.2]), np.array([0.0, 1.0, 0.0]), 0.1
+CYLINDER = hybrid.Cylinder(tuple(AXIS_POINT), tuple(AXIS), CYLINDER_RADIUS)
+
+
+def sphere_mesh():
+    """An icosphere of facets about 5.7 mm across (20,480 of them), about the sphere's centre."""
+    mesh = trimesh.creation.icosphere(subdivisions=5, radius=RADIUS)
+    mesh.apply_translation(CENTRE)
+    return mesh
+
+
+@pytest.fixture(scope="module")
+def mesh_sphere():
+    mesh = sphere_mesh()
+    return mesh, MeshSurface(mesh.vertices, mesh.faces, spacing=0.006)
+
+
+@pytest.fixture(scope="module")
+def mesh_cylinder():
+    """A cylinder of 110 sides (5.7 mm facets) and 0.3 m long along base y, its caps on."""
+    mesh = trimesh.creation.cylinder(radius=CYLINDER_RADIUS, height=0.3, sections=110)
+    mesh.apply_transform(trimesh.transformations.rotation_matrix(math.pi / 2, [1, 0, 0]))
+    mesh.apply_translation(AXIS_POINT)
+    return mesh, MeshSurface(mesh.vertices, mesh.faces, spacing=0.006)
+
+
+@pytest.fixture(scope="module")
+def cloud_sphere():
+    rng = np.random.default_rng(5)
+    n = rng.normal(size=(30000, 3))
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    return PointCloudSurface(CENTRE + RADIUS * n, n, spacing=0.006)
+
+
+def contacts(surface, rng, count: int = 200, offset: float = 0.001):
+    """Points ``offset`` off ``surface`` (a Sphere, or a Cylinder at least 7.5 cm, 12 cells, from the mesh's rims:
+    the fit rounds a machined edge, and its smoothing spreads that over a few cells) and tangent velocities."""
+    if isinstance(surface, hybrid.Sphere):
+        n = rng.normal(size=(count, 3))
+        n /= np.linalg.norm(n, axis=1, keepdims=True)
+        p = CENTRE + (RADIUS + offset) * n
+    else:
+        angle, along = rng.uniform(0, 2 * math.pi, count), rng.uniform(-0.075, 0.075, count)
+        n = np.column_stack([np.cos(angle), np.zeros(count), np.sin(angle)])
+        p = AXIS_POINT + along[:, None] * AXIS + (CYLINDER_RADIUS + offset) * n
+    v = np.cross(n, rng.normal(size=(count, 3)))
+    return p, 0.1 * v / np.linalg.norm(v, axis=1, keepdims=True)
+
+
+def frame_errors(exact, part, rng):
+    """The largest angle [deg] between the frames, and the largest error of R' relative to the rate the shape's
+    curvature gives (``|v| / radius``: on a cylinder moving along its axis R' is 0)."""
+    e = np.array([1.0, 0.3, 0.2]) / np.linalg.norm([1.0, 0.3, 0.2])
+    p, v = contacts(exact, rng, count=400)
+    # where the frame is well defined: the normal at least 30 degrees from e (t1 = e x n / |e x n|)
+    normals = np.array([exact.normal_at(x) for x in p])
+    keep = np.linalg.norm(np.cross(normals, e), axis=1) >= 0.5
+    p, v = p[keep], v[keep]
+    R, Rd = hybrid.task_frame(exact, p, v, frame_direction=tuple(e))
+    Rp, Rdp = hybrid.task_frame(part, p, v, frame_direction=tuple(e))
+    cos = np.clip((np.einsum("nij,nij->n", R, Rp) - 1) / 2, -1.0, 1.0)
+    radius = RADIUS if isinstance(exact, hybrid.Sphere) else CYLINDER_RADIUS
+    rate = np.linalg.norm(Rdp - Rd, axis=(1, 2)) / (np.linalg.norm(v, axis=1) / radius)
+    return float(np.degrees(np.arccos(cos)).max()), float(rate.max())
+
+
+@pytest.mark.parametrize("which", ["mesh sphere", "mesh cylinder", "cloud sphere"])
+def test_a_part_gives_its_shapes_frame_and_curvature(which, request, rng):
+    """The task frame within 0.5 degrees of the formula's, and its rate R' (the curvature term) within 5 %."""
+    part = {"mesh sphere": lambda: request.getfixturevalue("mesh_sphere")[1],
+            "mesh cylinder": lambda: request.getfixturevalue("mesh_cylinder")[1],
+            "cloud sphere": lambda: request.getfixturevalue("cloud_sphere")}[which]()
+    exact = CYLINDER if "cylinder" in which else SPHERE
+    angle, rate = frame_errors(exact, part, rng)
+    assert angle <= 0.5
+    assert rate <= 0.05
+
+
+def test_a_cloud_without_normals_is_oriented_by_its_viewpoint(rng):
+    n = rng.normal(size=(20000, 3))
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    # a cloud of the upper half, seen from above (its estimated normals turned towards the scanner)
+    top = n[n[:, 2] > 0.2]
+    part = PointCloudSurface(CENTRE + RADIUS * top, viewpoint=CENTRE + [0.0, 0.0, 1.0], spacing=0.008)
+    p = CENTRE + (RADIUS + 0.002) * np.array([0.3, 0.1, 0.95]) / np.linalg.norm([0.3, 0.1, 0.95])
+    assert part.normal_at(p) @ SPHERE.normal_at(p) >= math.cos(math.radians(0.5))
+    assert part.fit.normal_angle_rms_deg <= 1.0
+
+
+def test_the_fits_report_agrees_with_trimeshs_closest_points(mesh_sphere, rng):
+    """On 10^4 random points near the part, |phi| against trimesh's own distance to the mesh: within the fit's
+    reported distance error on the part, and a tenth of a millimetre within the band."""
+    mesh, part = mesh_sphere
+    n = rng.normal(size=(10000, 3))
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    points = CENTRE + (RADIUS + rng.uniform(-0.01, 0.01, (10000, 1))) * n
+    _, distance, _ = trimesh.proximity.closest_point(mesh, points)
+    phi = part.evaluate(points)[0]
+    assert np.isfinite(phi).all()
+    error = np.abs(np.abs(phi) - distance)
+    assert error.max() <= 1e-4
+    on = np.abs(distance) < 1e-3  # near the mesh: the reported error holds
+    assert error[on].max() <= part.fit.distance_max_m + 2e-5
+    # the report itself: at the mesh's vertices and centroids, |phi| / |grad phi| against 0 (they lie on it)
+    centroids = mesh.triangles_center
+    phi_c, grad_c, _ = part.evaluate(centroids)
+    assert np.max(np.abs(phi_c) / np.linalg.norm(grad_c, axis=1)) <= part.fit.distance_max_m * (1 + 1e-9)
+
+
+def test_the_surface_is_smooth_across_the_facets_edges(mesh_sphere):
+    """Across each edge of 500 facets, the gradient's central difference equals the Hessian's product with the step
+    (no jump of the normal at an edge: the fit is continuous to the second derivative)."""
+    mesh, part = mesh_sphere
+    edges = mesh.edges_unique[:500]
+    a, b = mesh.vertices[edges[:, 0]], mesh.vertices[edges[:, 1]]
+    mid = (a + b) / 2
+    normal = (mid - CENTRE) / np.linalg.norm(mid - CENTRE, axis=1, keepdims=True)
+    across = np.cross(normal, b - a)
+    across /= np.linalg.norm(across, axis=1, keepdims=True)
+    step = 1e-5
+    _, g_plus, _ = part.evaluate(mid + step * across)
+    _, g_minus, _ = part.evaluate(mid - step * across)
+    _, _, H = part.evaluate(mid)
+    difference = (g_plus - g_minus) / (2 * step)
+    expected = np.einsum("nij,nj->ni", H, across)
+    # the third derivative (piecewise continuous) bounds the difference's error: step * |H| / spacing
+    bound = step * np.abs(H).max() / part.spacing * 10
+    assert np.abs(difference - expected).max() <= bound
+
+
+def test_the_generated_evaluator_equals_numpy(mesh_sphere, rng):
+    _, part = mesh_sphere
+    n = rng.normal(size=(300, 3))
+    points = CENTRE + (RADIUS + rng.uniform(-0.02, 0.02, (300, 1))) * n / np.linalg.norm(n, axis=1, keepdims=True)
+    phi, grad, hess = part.evaluate(points)
+    for p, f, g, h in zip(points, phi, grad, hess):
+        got = part.parameters_at(p)
+        want = np.array([*p, f, *g, h[0, 0], h[0, 1], h[0, 2], h[1, 1], h[1, 2], h[2, 2]])
+        np.testing.assert_allclose(got, want, rtol=1e-12, atol=1e-12)
+    assert np.isnan(part.parameters_at(CENTRE)).all()  # the centre: beyond the band
+
+
+def test_the_ur5_on_a_mesh_runs_as_on_the_formula(mesh_sphere):
+    """The UR5 tracing the sphere, then the same run on the sphere's mesh: the normal force's RMS error within 5 %
+    of the formula's run, the tip's path alike."""
+    _, part = mesh_sphere
+    start = SPHERE.project(np.array([0.5, -0.05, 0.35]))
+    runs = [hybrid.simulate(hybrid.tracing_experiment(surface=s, duration=1.5, start_point=tuple(start)))
+            for s in (SPHERE, part)]
+    exact, mesh = (r.metrics for r in runs)
+    assert mesh["rms_force_error_N"] == pytest.approx(exact["rms_force_error_N"], rel=0.05)
+    assert mesh["contact_losses"] == 0
+    assert abs(mesh["steady_state_force_error_N"]) <= 0.05
+    tip = [r.outputs[:, [r.record["outputs"].index(c) for c in ("s_x", "s_y", "s_z")]] for r in runs]
+    assert np.abs(tip[0] - tip[1]).max() <= 1e-3
+
+
+# ------------------------------------------------------------------------------------------ bad input
+
+CUBE_V = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]) * 0.05
+CUBE_F = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1], [2, 3, 7], [2, 7, 6],
+                   [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
+
+
+@pytest.mark.parametrize("vertices, faces, message", [
+    (CUBE_V, np.empty((0, 3), int), "no facets"),
+    (np.where(np.arange(24).reshape(8, 3) == 4, np.nan, CUBE_V), CUBE_F, "finite"),
+    (CUBE_V, np.vstack([CUBE_F, [[0, 1, 3]]]), "not a manifold"),
+    (CUBE_V, np.vstack([CUBE_F[:-1], CUBE_F[-1:, ::-1]]), "inconsistently oriented"),
+    (CUBE_V, np.vstack([CUBE_F, [[0, 0, 1]]]), "no area"),
+    (CUBE_V * 1000, CUBE_F, "scale"),
+    (CUBE_V, CUBE_F + 20, "vertex"),
+])
+def test_bad_meshes_are_refused(vertices, faces, message):
+    with pytest.raises(hybrid.HybridError, match=message):
+        MeshSurface(vertices, faces, spacing=0.01)
+
+
+def test_bad_files_and_clouds_are_refused(tmp_path, monkeypatch):
+    text = tmp_path / "part.stl"
+    text.write_text("this is not a mesh")
+    with pytest.raises(hybrid.HybridError, match="part.stl"):
+        MeshSurface.from_file(text)
+    with pytest.raises(hybrid.HybridError, match="not a mesh file"):
+        MeshSurface.from_file(tmp_path / "part.txt")
+    with pytest.raises(hybrid.HybridError, match="cannot be read"):
+        MeshSurface.from_file(tmp_path / "missing.stl")
+    import hybrid.geometry.meshes as meshes
+
+    monkeypatch.setattr(meshes, "MAX_FILE_BYTES", 10)
+    with pytest.raises(hybrid.HybridError, match="MB"):
+        MeshSurface.from_file(text)
+    rng = np.random.default_rng(0)
+    n = rng.normal(size=(200, 3))
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    with pytest.raises(hybrid.HybridError, match="apart"):  # 200 points on a sphere of 0.15 m: too sparse
+        PointCloudSurface(CENTRE + RADIUS * n, n, spacing=0.005)
+    with pytest.raises(hybrid.HybridError, match="viewpoint"):
+        PointCloudSurface(CENTRE + RADIUS * n)
+    with pytest.raises(hybrid.HybridError, match="at least 100"):
+        PointCloudSurface(CENTRE + RADIUS * n[:50], n[:50])
+    with pytest.raises(hybrid.HybridError, match="rigid motion"):
+        MeshSurface(CUBE_V, CUBE_F, transform=np.diag([2.0, 1.0, 1.0, 1.0]), spacing=0.01)
+
+
+def test_a_tip_beyond_the_band_is_refused_with_the_reason(mesh_sphere):
+    _, part = mesh_sphere
+    ctrl = hybrid.Controller(hybrid.ur5(), part)
+    q = np.zeros(6)
+    with pytest.raises(hybrid.TaskFrameError, match="beyond the fitted band"):
+        ctrl(0.0, q, np.zeros(6), np.zeros(3))
+
+
+def test_a_run_on_a_part_is_saved_and_read_with_its_part(tmp_path):
+    """The experiment's file holds what the part is made of; read, it is fitted again to the same surface."""
+    mesh = trimesh.creation.icosphere(subdivisions=3, radius=RADIUS)
+    mesh.apply_translation(CENTRE)
+    part = MeshSurface(mesh.vertices, mesh.faces, spacing=0.012)
+    exp = hybrid.tracing_experiment(surface=part, duration=0.1,
+                                    start_point=tuple(SPHERE.project(np.array([0.5, -0.05, 0.35]))))
+    res = hybrid.simulate(exp)
+    res.save(tmp_path / "run.npz")
+    back = hybrid.SimulationResult.load(tmp_path / "run.npz")
+    assert back.experiment.surface == part
+    np.testing.assert_array_equal(back.state, res.state)
+    assert hybrid.simulate(back.experiment).metrics == pytest.approx(res.metrics, nan_ok=True)
