@@ -243,3 +243,20 @@ def test_a_run_on_a_part_is_saved_and_read_with_its_part(tmp_path):
     assert back.experiment.surface == part
     np.testing.assert_array_equal(back.state, res.state)
     assert hybrid.simulate(back.experiment).metrics == pytest.approx(res.metrics, nan_ok=True)
+
+
+def test_a_raster_across_a_part_runs_as_across_its_shape(mesh_sphere):
+    """A raster drawn on the sphere's mesh (projected onto the fitted surface) and followed with a whole task: the
+    path metrics of the same task on the sphere itself."""
+    _, part = mesh_sphere
+    runs = {}
+    for surface in (SPHERE, part):
+        origin = surface.project(np.array([0.47, -0.03, 0.345]))
+        path = hybrid.RasterPath(surface, origin, (1.0, 0.0, 0.0), 0.06, 0.01, 3)
+        task = hybrid.PathTask(path, speed=0.08, force=10.0, retreat_distance=0.01)
+        runs[surface.kind] = hybrid.simulate(hybrid.tracing_experiment(surface=surface, path_task=task,
+                                                                      duration=4.0)).metrics
+    exact, mesh = runs["sphere"], runs["mesh"]
+    assert mesh["path_error_rms_m"] <= 1e-3 and mesh["path_contact_losses"] == 0
+    assert mesh["path_travelled_m"] == pytest.approx(exact["path_travelled_m"], abs=1e-3)
+    assert mesh["path_force_rms_error_N"] == pytest.approx(exact["path_force_rms_error_N"], rel=0.05, abs=0.01)

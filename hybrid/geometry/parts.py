@@ -129,6 +129,11 @@ class PartSurface(Surface):
             return float(phi[0]), grad[0]
         return evaluate
 
+    def phi_and_gradient(self, points) -> tuple[np.ndarray, np.ndarray]:
+        """``phi`` (N) and its gradient (N x 3) at ``points`` (N x 3) [m]; NaN beyond the band."""
+        phi, grad, _ = self.grid.evaluate(points)
+        return phi, grad
+
     def evaluate(self, points) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``phi`` (N), its gradient (N x 3) and its Hessian (N x 3 x 3) [1/m] at ``points`` (N x 3) [m]; NaN
         beyond the band."""

@@ -22,7 +22,11 @@ MAX_STEPS = 50
 
 @lru_cache(maxsize=64)
 def _vectorised(surface):
-    """``P -> (phi(P), grad phi(P))`` for the points ``P`` (N x 3), NaN where ``phi`` is undefined."""
+    """``P -> (phi(P), grad phi(P))`` for the points ``P`` (N x 3), NaN where ``phi`` is undefined: the
+    surface's own where it evaluates many points itself (a part's fitted grid), else its formula's."""
+    own = getattr(surface, "phi_and_gradient", None)
+    if own is not None:
+        return own
     import sympy as sp
 
     xyz = sp.symbols("x y z", real=True)
