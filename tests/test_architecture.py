@@ -46,6 +46,8 @@ LAZY_IMPORTS = {
     ("hybrid.simulation.results", "hybrid.plots"): "matplotlib loads only when a result is drawn (res.plot())",
     ("hybrid.simulation.results", "hybrid.animation"): "matplotlib loads only when a result is animated",
     ("hybrid.plants.registry", "hybrid.plants.mujoco"): "MuJoCo is an optional extra: it loads when a run asks",
+    ("hybrid.plants.registry", "hybrid.plants.mujoco_contact"): "MuJoCo is an optional extra: it loads when a run "
+                                                               "asks",
     ("hybrid.experiments.serialisation", "hybrid.geometry.implicit"):
         "SymPy loads only when a file names a surface a user wrote down",
     ("hybrid.control.config", "hybrid.geometry.implicit"):

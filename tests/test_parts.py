@@ -260,3 +260,30 @@ def test_a_raster_across_a_part_runs_as_across_its_shape(mesh_sphere):
     assert mesh["path_error_rms_m"] <= 1e-3 and mesh["path_contact_losses"] == 0
     assert mesh["path_travelled_m"] == pytest.approx(exact["path_travelled_m"], abs=1e-3)
     assert mesh["path_force_rms_error_N"] == pytest.approx(exact["path_force_rms_error_N"], rel=0.05, abs=0.01)
+
+
+def test_mujocos_own_contact_against_the_mesh_gives_the_same_task(mesh_sphere):
+    """An independent check: MuJoCo's collision and soft contact against the mesh's own facets (the sensor tip a
+    sphere of 1 mm), not the fitted surface and its penalty, as the plant of a first touch and a pass. The force
+    settles on its reference as on the library's plant; the tip rides a tip radius off the fitted surface; the
+    differences (an earlier touch by the tip's radius, a ripple of the flat facets, MuJoCo's soft contact
+    breaking for single steps) are its contact model's."""
+    pytest.importorskip("mujoco")
+    from hybrid.plants.mujoco_contact import TIP_RADIUS
+
+    _, part = mesh_sphere
+    start = SPHERE.project(np.array([0.5, -0.05, 0.35]))
+    exp = hybrid.tracing_experiment(surface=part, start_point=tuple(start), duration=1.5, start_gap=0.003,
+                                    approach_speed=0.02, force_reference=10.0,
+                                    speed_reference=hybrid.Step(0.0, 0.1, 0.5))
+    ours, theirs = hybrid.simulate(exp), hybrid.simulate(exp, plant="mujoco_contact")
+    late = theirs.t > 1.2
+    assert theirs.force_normal[late].mean() == pytest.approx(10.0, abs=0.1)
+    assert theirs.force_normal[late].std() <= 0.1
+    assert theirs.metrics["first_touch_time_s"] < ours.metrics["first_touch_time_s"]  # the tip's radius earlier
+    tip = theirs.state[late][:, 12:15]
+    height = part.evaluate(tip)[0]
+    assert np.all(np.abs(height - TIP_RADIUS) <= 0.5e-3)
+    assert abs(theirs.metrics["steady_state_speed_error_m_per_s"]) <= 0.01
+    with pytest.raises(hybrid.HybridError, match="MeshSurface"):
+        hybrid.simulate(hybrid.tracing_experiment(duration=0.01), plant="mujoco_contact")

@@ -202,10 +202,10 @@ class MujocoPlant(Plant):
         opt = spec.option
         opt.timestep, opt.integrator = exp.integration_step, mj.mjtIntegrator.mjINT_RK4
         D = mj.mjtDisableBit
-        # our contact replaces MuJoCo's; no limits or friction loss (the generated plant has none); a bad
-        # state is reported, not reset
-        opt.disableflags |= (D.mjDSBL_CONSTRAINT | D.mjDSBL_CONTACT | D.mjDSBL_LIMIT | D.mjDSBL_EQUALITY
-                             | D.mjDSBL_FRICTIONLOSS | D.mjDSBL_AUTORESET)
+        # no limits or friction loss (the generated plant has none); a bad state is reported, not reset
+        opt.disableflags |= D.mjDSBL_LIMIT | D.mjDSBL_EQUALITY | D.mjDSBL_FRICTIONLOSS | D.mjDSBL_AUTORESET
+        if not self._collides(spec, sensor):  # our contact replaces MuJoCo's
+            opt.disableflags |= D.mjDSBL_CONSTRAINT | D.mjDSBL_CONTACT
         try:
             self.model = spec.compile()
         except ValueError as exc:
@@ -249,22 +249,33 @@ class MujocoPlant(Plant):
 
     # ------------------------------------------------------------------ physics
 
+    def _collides(self, spec, sensor) -> bool:
+        """Add what MuJoCo's own contact needs to ``spec`` (the sensor tip's body ``sensor``); False: none (the
+        contact is the generated plant's formula, :meth:`_passive`)."""
+        return False
+
     def _passive(self, model, data) -> None:
         """The sensor's spring-damper, the penalty contact and the friction, as passive forces."""
-        n, sensor, c = self.nq, self.exp.sensor, self.exp.contact
+        n, sensor = self.nq, self.exp.sensor
         self.mj.mj_jacSite(model, data, self._jac, None, self._site)
         J = self._jac[:, :n]
         qvel = data.qvel
         s, sd = data.qpos[n:], qvel[n:]
         Fc = sensor.stiffness * (s - data.site_xpos[self._site]) + sensor.damping * (sd - J @ qvel[:n])
-        force = -Fc
+        data.qfrc_passive[:n] += J.T @ Fc
+        data.qfrc_passive[n:] += self._surface_force(s, sd) - Fc
+
+    def _surface_force(self, s: np.ndarray, sd: np.ndarray) -> np.ndarray:
+        """The surface's penalty contact and friction on the sensor tip at ``s`` moving at ``sd`` (the generated
+        plant's formulas; NaN where no contact is defined)."""
+        c = self.exp.contact
+        force = np.zeros(len(s))
         phi, grad = self._phi(s)
         norm = math.sqrt(grad @ grad)
         if not (math.isfinite(phi) and 0.0 < norm <= sys.float_info.max):
             # no contact is defined here (the surface's formula is undefined at s, or it has no normal): the
             # state goes NaN, as the generated plant's does, and the runner says where
-            data.qfrc_passive[n:] = math.nan
-            return
+            return np.full(len(s), math.nan)
         normal = grad / norm
         delta, speed = -phi / norm, normal @ sd
         if delta > 0:
@@ -273,8 +284,7 @@ class MujocoPlant(Plant):
             # as the generated plant: |v_s| kept off 0 by far less than v_eps
             w = math.sqrt(slide @ slide + (1e-9 * c.friction_smoothing) ** 2)
             force += N * normal - (c.friction * N * math.tanh(w / c.friction_smoothing) / w) * slide
-        data.qfrc_passive[:n] += J.T @ Fc
-        data.qfrc_passive[n:] += force
+        return force
 
     def _set(self, x: np.ndarray) -> None:
         n, k, d = self.nq, self.dim, self.data

@@ -1,6 +1,7 @@
 """The plants a run can take, by name (``hybrid.simulate(exp, plant=name)``): ``"generated"`` (the
-experiment's own: :mod:`~hybrid.plants.planar` or :mod:`~hybrid.plants.rigid_body`) and ``"mujoco"``
-(:mod:`~hybrid.plants.mujoco`, an optional extra, loaded when a run asks for it). A new plant is one
+experiment's own: :mod:`~hybrid.plants.planar` or :mod:`~hybrid.plants.rigid_body`), ``"mujoco"``
+(:mod:`~hybrid.plants.mujoco`, an optional extra, loaded when a run asks for it) and ``"mujoco_contact"``
+(MuJoCo's own collision and contact against a part's mesh, :mod:`~hybrid.plants.mujoco_contact`). A new plant is one
 implementation of :class:`hybrid.plants.interface.Plant`, named with :func:`register_plant`.
 """
 
@@ -50,6 +51,15 @@ def mujoco_plant(exp):
     from hybrid.plants import mujoco  # an optional extra: its module loads when a run asks for it
 
     return mujoco.mujoco_plant(exp)
+
+
+@register_plant("mujoco_contact")
+def mujoco_contact_plant(exp):
+    """MuJoCo as the plant with its own collision and contact against the experiment's part
+    (:class:`hybrid.plants.mujoco_contact.MujocoContactPlant`)."""
+    from hybrid.plants import mujoco_contact  # an optional extra: its module loads when a run asks for it
+
+    return mujoco_contact.MujocoContactPlant(exp, exp.robot, sensor_gravity=exp.robot.kind.sensor_weighs)
 
 
 def plant_for(exp, name: str):
