@@ -38,11 +38,13 @@ import sympy as sp
 from hybrid.spec.controller_step import CONTROLLER_STEP, FAULT, FAULT_STATE, LOOP_GAINS
 from hybrid.spec.interfaces import STATE
 from hybrid.spec.metrics import METRIC_NAMES, SETTLING_BAND, STEADY_WINDOW_S, TOUCH_BAND, metric_names
+from hybrid.spec.part import PART_GRID
 from hybrid.spec.path_follow import PATH_SETTINGS, path_axes
 
 from .emit import STATUS, Unit, comment_safe, manifest, stamp
 from .kernel import Arg, Kernel
 from .lanes import LANES_HEADER, lanes_function, libm_maps
+from .part_grid import part_header
 from .path_follow import path_header
 from .templates import render
 
@@ -57,8 +59,10 @@ class LoopSpec:
     """What one closed loop is made of: the plant's state derivative ``rhs(x, tau, ...)`` and output
     record ``outputs(x, ...)``, the controller ``step`` (:mod:`codegen.controller_step`), the
     record columns of the sensor's force on the robot (base axes) and the step's fault reaction
-    ``stop`` (:mod:`codegen.safe_stop`); for a path task, the controller's ``task_measurement`` kernel
-    (``measure``) and its task ``axes`` (the loop then follows each run's path: :mod:`hybrid.spec.path_follow`)."""
+    ``stop`` (:mod:`codegen.safe_stop`); for a path task its task ``axes`` (the loop then follows each run's
+    path: :mod:`hybrid.spec.path_follow`); ``part`` where the surface is a part (each run's fitted grid,
+    expanded about the tip at each sample for the controller and about the sensor tip at each step for the
+    plant: :mod:`hybrid.spec.part`); for either, the controller's ``task_measurement`` kernel (``measure``)."""
 
     rhs: Kernel
     outputs: Kernel
@@ -67,11 +71,12 @@ class LoopSpec:
     stop: Kernel
     measure: Kernel | None = None
     axes: tuple[int, ...] | None = None
+    part: bool = False
 
     @property
     def follows_path(self) -> bool:
         """Whether the loop follows a path task (its runs' rows carry their paths)."""
-        return self.measure is not None
+        return self.axes is not None
 
 
 def _rows(expr, index: list[int]):
@@ -107,13 +112,13 @@ def stepping_kernel(spec: LoopSpec) -> Kernel:
                   "the plant's state derivative, the record columns the closed loop reads and the whole record")
 
 
-def path_measurement_kernel(measure: Kernel) -> Kernel:
-    """What a path's follower reads of the controller's measurement (``task_measurement``): the tip's
-    position ``p`` and rotation ``R`` (row by row), from the joints and the controller's model of the arm
-    alone (the contact force the follower reads is the loop's reading itself)."""
+def tip_measurement_kernel(measure: Kernel) -> Kernel:
+    """What a path's follower and a part's expansion read of the controller's measurement
+    (``task_measurement``): the tip's position ``p`` and rotation ``R`` (row by row), from the joints and the
+    controller's model of the arm alone (the contact force the follower reads is the loop's reading itself)."""
     inputs = tuple(a for a in measure.inputs if a.name in ("q", "robot"))
     outputs = tuple(a for a in measure.outputs if a.name in ("p", "R"))
-    return Kernel("path_measurement", inputs, outputs, "the tip's position p and rotation R (row by row), base axes")
+    return Kernel("tip_measurement", inputs, outputs, "the tip's position p and rotation R (row by row), base axes")
 
 
 def blocks(spec: LoopSpec) -> list[tuple[str, int]]:
@@ -134,7 +139,19 @@ def blocks(spec: LoopSpec) -> list[tuple[str, int]]:
     out += [("force_step", 3), ("speed_step", 3), ("dropout", 2), ("timing_tolerance", 1)]
     if spec.follows_path:
         out += [("path.settings", len(PATH_SETTINGS)), ("path.table", 1), ("path.retreat_gains", len(LOOP_GAINS))]
+    if spec.part:
+        out += [("part.grid", len(PART_GRID)), ("part.coefficients", 1)]
     return out
+
+
+#: the blocks of a run's row that say where its table starts in the loop's ``tables`` (a count of numbers)
+TABLE_BLOCKS = ("path.table", "part.coefficients")
+
+
+def _fixed(spec: LoopSpec, kernel: Kernel, first: int) -> tuple[str, ...]:
+    """The inputs of a plant's ``kernel`` from its ``first`` on that a run holds fixed: all but a part's surface,
+    which the loop expands about the sensor tip at each step."""
+    return tuple(a.name for a in kernel.inputs[first:] if not (spec.part and a.name == "surface"))
 
 
 def _parameters(step: Kernel) -> list[Arg]:
@@ -177,8 +194,13 @@ def _driver(spec: LoopSpec, stepping: Kernel) -> dict:
                 "retreat_gains": offset["path.retreat_gains"], "e": offset["controller.e"],
                 "selection": offset["controller.selection"], "gains": offset["controller.gains"],
                 "robot": offset["controller.robot"]}
+    part = None
+    if spec.part:  # where the grid and the surfaces the loop expands are in a run's row, and the sensor tip in x
+        part = {"grid": offset["part.grid"], "coefficients": offset["part.coefficients"],
+                "controller": offset["controller.surface"], "tip": rhs.inputs[0].names.index("s_x"),
+                "size": sizes["surface"]}
     return dict(
-        step=step, outs=step.core_outputs(), path=path,
+        step=step, outs=step.core_outputs(), path=path, part=part, robot=offset["controller.robot"],
         guards=step.guards, nx=nx, nq=nq, nb=at, m=sizes["integrals"] // 2, ns=nf + len(SIGNALS),
         nm=len(metric_names(nq)), ny=stepping.outputs[2].size, force=force, signals=signals,
         iF=nf, iv=nf + 1, ipen=nf + 2, iN=nf + 3, fs=offset["force_step"], vs=offset["speed_step"], x0=offset["x0"],
@@ -187,8 +209,8 @@ def _driver(spec: LoopSpec, stepping: Kernel) -> dict:
         fault=offset["controller.fault"], FS=_fault_state_places(nq),
         FO={name: i for i, name in enumerate(FAULT)}, nfs=len(FAULT_STATE.items) * nq + len(FAULT_STATE.tail),
         # where the run's arrays each kernel holds fixed start in its row
-        held=[plant[a.name] for a in rhs.inputs[2:]], shown=[plant[a.name] for a in spec.outputs.inputs[1:]],
-        both=[plant[a.name] for a in stepping.inputs[2:]],
+        held=[plant[n] for n in _fixed(spec, rhs, 2)], shown=[plant[n] for n in _fixed(spec, spec.outputs, 1)],
+        both=[plant[n] for n in _fixed(spec, stepping, 2)],
         params=[offset["controller." + a.name] for a in _parameters(step)],
         per_sample=[a for a in step.inputs if a.name in CONTROLLER_STEP.per_sample],
         M={name: i for i, name in enumerate(METRIC_NAMES)}, settling_band=repr(SETTLING_BAND),
@@ -230,30 +252,31 @@ def build_closed_loop_unit(spec: LoopSpec, prefix: str, what: str, info: dict,
     ``closed_loop_unit.h.j2``'s; the lanes functions in it are :func:`codegen.lanes.lanes_function`'s."""
     nq = spec.rhs.inputs[1].size
     rhs = Kernel("plant_rhs", spec.rhs.inputs, spec.rhs.outputs, spec.rhs.doc)
-    held = tuple(a.name for a in spec.rhs.inputs[2:])
-    shown = tuple(a.name for a in spec.outputs.inputs[1:])
+    held, shown = _fixed(spec, spec.rhs, 2), _fixed(spec, spec.outputs, 1)
     params = tuple(a.name for a in _parameters(spec.step))
     stepping = stepping_kernel(spec)
     stages = [lanes_function(k, name, fixed, "HL_STAGE", near=nq, apart=True) for k, name, fixed in (
         (rhs, "plant_rhs_lanes", held), (stepping, "plant_rhs_signals_lanes", held + shown))]
     lines = sum(stage.count("\n") + 1 for stage in stages)
-    path = None
-    if spec.follows_path:  # the follower's C, and the tip's measurement in lanes (its model of the arm held)
-        path = {"follower": path_header(), "measure_lanes": lanes_function(
-            path_measurement_kernel(spec.measure), "path_measurement_lanes", ("robot",), "HL_APART", apart=True)}
+    # a path's follower, a part's evaluator, and for either the tip's measurement in lanes (the arm's model held)
+    extra = {"follower": path_header() if spec.follows_path else None,
+             "part": part_header() if spec.part else None,
+             "measure_lanes": None if spec.measure is None else lanes_function(
+                 tip_measurement_kernel(spec.measure), "tip_measurement_lanes", ("robot",), "HL_APART", apart=True)}
     body = render("closed_loop_unit.c.j2", **_driver(spec, stepping), prefix=prefix, what=what, comment=comment_safe,
                   width=ONE_RUN_LANES if lanes == 1 else lanes, lanes_header=LANES_HEADER, status=STATUS,
                   libm_maps=libm_maps(), small=int(lines <= _INLINE_LINES), stages=stages,
                   outputs_lanes=lanes_function(spec.outputs, "plant_outputs_lanes", shown, "HL_APART", apart=True),
                   step_lanes=lanes_function(spec.step, spec.step.name + "_lanes", params, "HL_APART", apart=True),
                   stop_lanes=lanes_function(spec.stop, "safe_stop_lanes", (*_STOP_ROW, "sample_time"), "HL_APART",
-                                            apart=True), path_code=path)
+                                            apart=True), extra=extra)
     header = render("closed_loop_unit.h.j2", prefix=prefix)
     loop = {"symbol": f"{prefix}_closed_loop", "lanes_symbol": f"{prefix}_lanes",
             "blocks": [{"name": n, "size": s} for n, s in blocks(spec)],
             "state": list(spec.rhs.inputs[0].names or ()), "nx": spec.rhs.inputs[0].size, "nq": nq,
             "metrics": list(metric_names(nq)),
             "signals": [*spec.force_columns, *SIGNALS],
-            "outputs": list(stepping.outputs[2].names), "path_task": spec.follows_path}
+            "outputs": list(stepping.outputs[2].names), "path_task": spec.follows_path, "part": spec.part,
+            "tables": [b for b in TABLE_BLOCKS if b in dict(blocks(spec))]}
     text = manifest(prefix, (), f"CasADi {ca.__version__}", {**info, "parts": N_PARTS, "closed_loop": loop})
     return Unit(prefix, stamp(body), stamp(header), text)

@@ -287,3 +287,56 @@ def test_mujocos_own_contact_against_the_mesh_gives_the_same_task(mesh_sphere):
     assert abs(theirs.metrics["steady_state_speed_error_m_per_s"]) <= 0.01
     with pytest.raises(hybrid.HybridError, match="MeshSurface"):
         hybrid.simulate(hybrid.tracing_experiment(duration=0.01), plant="mujoco_contact")
+
+
+def relative(a: np.ndarray, b: np.ndarray) -> float:
+    return float(np.max(np.abs(a - b) / (np.abs(b).max(axis=0) + 1e-3)))
+
+
+def test_a_run_on_a_part_in_c_equals_the_python_runner(mesh_sphere, mesh_cylinder):
+    """The compiled loop expands the part as the Controller and the rigid-body plant do (the same generated
+    evaluator, about the measured tip at each sample and about the sensor tip at each step): runs on two parts
+    side by side as lanes (each its own grid) equal their Python runs, and a path on a part too."""
+    from hybrid.simulation import closed_loop
+
+    sphere, cylinder = mesh_sphere[1], mesh_cylinder[1]
+    exps = [hybrid.tracing_experiment(surface=sphere, duration=1.0,
+                                      start_point=tuple(sphere.project(np.array([0.5, -0.05, 0.35])))),
+            hybrid.tracing_experiment(surface=cylinder, duration=1.0, frame_direction=(0.0, 1.0, 0.0),
+                                      start_point=tuple(cylinder.project(np.array([0.5, 0.02, 0.31]))))]
+    prepared = [closed_loop.prepare(e) for e in exps]
+    assert all(p is not None and "part.coefficients" in p.loop.tables for p in prepared)
+    assert prepared[0].loop is prepared[1].loop  # one build serves every part
+    together = closed_loop.run(prepared, record=True)
+    for exp, got in zip(exps, together):
+        python = hybrid.simulate(exp, compiled=False)
+        assert got.status == 0
+        assert relative(got.states, python.state) < 1e-8
+        for name, value in python.metrics.items():
+            assert got.metrics[name] == pytest.approx(value, rel=1e-6, abs=1e-10, nan_ok=True), name
+    origin = sphere.project(np.array([0.47, -0.03, 0.345]))
+    task = hybrid.PathTask(hybrid.RasterPath(sphere, origin, (1.0, 0.0, 0.0), 0.04, 0.01, 2), retreat_distance=0.01)
+    exp = hybrid.tracing_experiment(surface=sphere, path_task=task, duration=2.0)
+    assert closed_loop.prepare(exp).loop.path_task
+    compiled, python = hybrid.simulate(exp), hybrid.simulate(exp, compiled=False)
+    assert relative(compiled.state, python.state) < 1e-8
+    for name, value in python.metrics.items():
+        assert compiled.metrics[name] == pytest.approx(value, rel=1e-6, abs=1e-10, nan_ok=True), name
+
+
+def test_a_tip_leaving_the_band_stops_the_run_alike_in_c_and_in_python():
+    """A part fitted with a narrow band and a start far enough that the tip leaves it: both runners stop at the
+    same sample with the same first line."""
+    mesh = sphere_mesh()
+    narrow = MeshSurface(mesh.vertices, mesh.faces, spacing=0.008, band=0.01)
+    start = SPHERE.project(np.array([0.5, -0.05, 0.35]))
+    exp = hybrid.tracing_experiment(surface=narrow, duration=1.0, start_point=tuple(start),
+                                    sensor=hybrid.Sensor(stiffness=300.0))  # the arm tip 3 cm behind the sensor's
+    errors = []
+    for compiled in (True, False):
+        with pytest.raises(hybrid.SimulationError) as info:
+            hybrid.simulate(exp, compiled=compiled)
+        errors.append(info.value)
+    assert errors[0].time == errors[1].time
+    assert str(errors[0]).splitlines()[0] == str(errors[1]).splitlines()[0]
+    assert "band" in str(errors[0])

@@ -363,7 +363,7 @@ class Controller(SampleReferences):
         the wrench is given as such (no sensor reading): then a whole run can be compiled C
         (:mod:`hybrid.simulation.closed_loop`)."""
         given_as_code = self._varying or self._rates or self.path is not None
-        return not given_as_code and self.wrench_sensor is None and not self._estimated and not self._spatial.local
+        return not given_as_code and self.wrench_sensor is None and not self._estimated
 
     def step_inputs(self, at_start: bool = False) -> dict[str, np.ndarray]:
         """The compiled step's inputs this controller fixes (gains, references' steps, model,

@@ -170,12 +170,12 @@ def loop_unit(plant, variant: dict, lanes: int | None) -> Unit:
 
 
 def _loop_key(plant, v: dict, lanes: int | None) -> tuple[str, dict]:
-    path = v.get("path_task", False)
-    prefix = c_identifier(f"hybrid_{v['name']}_{plant.name}_{v['step']}{'_path' if path else ''}_loop"
-                          f"{'_one' if lanes == 1 else ''}")
+    path, part = v.get("path_task", False), v.get("part", False)
+    prefix = c_identifier(f"hybrid_{v['name']}_{plant.name}_{v['step']}{'_path' if path else ''}"
+                          f"{'_part' if part else ''}_loop{'_one' if lanes == 1 else ''}")
     key = {"chain": chain_key(v["chain"]), "surface": v["spec"].key(), "axes": list(v["axes"]), "plant": plant.key(),
            **{k: v[k] for k in ("desired_frame", "position_error", "wrench_sensor", "step")}, "lanes": lanes,
-           **({"path_task": True} if path else {})}
+           **({"path_task": True} if path else {}), **({"part": True} if part else {})}
     return prefix, key
 
 
@@ -195,14 +195,16 @@ def loop_files(loops) -> dict[str, str]:
 def loop_spec(plant, variant: dict):
     """What the closed loop of ``plant`` and the controller step ``variant`` (as :func:`loop_unit`'s) is
     made of: a :class:`hybrid.codegen.api.LoopSpec` (the plant's kernels, the step's kernel; with
-    ``path_task`` true in ``variant``, the controller's measurement for the path's follower)."""
+    ``path_task`` true in ``variant``, the controller's measurement for the path's follower; with ``part`` true,
+    for the part's expansion)."""
     v, api = variant, generator.api()
     steps = {k.name: k for k in api.controller_kernels(
         v["chain"], v["spec"], v["axes"], v["desired_frame"], v["position_error"], v["wrench_sensor"])}
     rhs, outputs, force = plant.kernels(api)
-    path = v.get("path_task", False)
+    path, part = v.get("path_task", False), v.get("part", False)
     return api.LoopSpec(rhs, outputs, steps[v["step"]], force, api.safe_stop_kernel(v["chain"]),
-                        steps["task_measurement"] if path else None, tuple(v["axes"]) if path else None)
+                        steps["task_measurement"] if path or part else None, tuple(v["axes"]) if path else None,
+                        part)
 
 
 def _build_loop(prefix: str, plant, v: dict, lanes: int | None):

@@ -45,7 +45,8 @@ class Loop:
     nx: int
     nq: int
     outputs: tuple[str, ...]  # the output record's columns
-    path_task: bool  # its runs follow a path (each row's path.table block: where its table starts in tables)
+    path_task: bool  # its runs follow a path
+    tables: tuple[str, ...]  # the row's blocks that say where a run's tables start in the loop's tables
 
     def row(self, values: dict[str, np.ndarray]) -> np.ndarray:
         """A run's row from its blocks by name (each of the manifest's size)."""
@@ -84,7 +85,7 @@ def _loop(plant, variant: tuple, lanes: int | None = None) -> Loop:
     return Loop(getattr(module.lib, loop["symbol"]), module.ffi, (plant, variant),
                 int(getattr(module.lib, loop["lanes_symbol"])()), lanes == 1,
                 tuple((b["name"], b["size"]) for b in loop["blocks"]), tuple(loop["metrics"]), loop["nx"], loop["nq"],
-                tuple(loop["outputs"]), bool(loop.get("path_task", False)))
+                tuple(loop["outputs"]), bool(loop.get("path_task", False)), tuple(loop.get("tables", ())))
 
 
 @cache
@@ -105,22 +106,24 @@ def _available_loop(plant, variant: tuple, lanes: int | None = None) -> Loop | N
 
 @dataclass(frozen=True)
 class Prepared:
-    """An experiment ready for the compiled loop: which loop, its integration settings, its row, and a path
-    task's table (:data:`~hybrid.spec.path_follow.PATH_TABLE` rows; None without one)."""
+    """An experiment ready for the compiled loop: which loop, its integration settings, its row, and its
+    tables by the block that places them (a path task's ``path.table``, :data:`~hybrid.spec.path_follow.PATH_TABLE`
+    rows; a part's ``part.coefficients``)."""
 
     experiment: object
     loop: Loop
     settings: tuple
     row: np.ndarray
-    table: np.ndarray | None = None
+    tables: tuple = ()
 
 
 def loop_of(exp, ctrl=None) -> tuple:
     """``(plant, variant)``: what the compiled loop of ``exp`` is built from (its loop plant, and its
-    controller's step variant as sorted items, with ``path_task`` where it follows one); ``ctrl``: its
-    controller, when built already."""
+    controller's step variant as sorted items, with ``path_task`` where it follows one and ``part`` where its
+    surface is a part); ``ctrl``: its controller, when built already."""
     ctrl = ctrl or exp.build_controller()
-    variant = ctrl.step_variant() | ({"path_task": True} if ctrl.path_references is not None else {})
+    variant = ctrl.step_variant() | ({"path_task": True} if ctrl.path_references is not None else {}) | \
+        ({"part": True} if exp.surface.local else {})
     return exp.plant_class.loop_plant(exp), tuple(sorted(variant.items()))
 
 
@@ -138,6 +141,8 @@ def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None, ctrl=No
     ctrl = ctrl or exp.build_controller()
     if not ctrl.runs_in_c or not exp.sensor.clean:
         return None
+    if exp.controller_surface is not None and (exp.surface.local or exp.controller_surface.local):
+        return None  # a part the controller is told apart from the plant's: the Python runner
     if x0 is None:
         x0 = exp.checked_start()
     given = _plant_blocks(exp)
@@ -152,12 +157,15 @@ def prepare(exp, x0: np.ndarray | None = None, lanes: int | None = None, ctrl=No
               "dropout": (start, start + sensor.dropout_duration),
               "timing_tolerance": -1.0 if ctrl.timing_tolerance is None else ctrl.timing_tolerance,
               **given, **{f"controller.{k}": v for k, v in ctrl.step_inputs(at_start=True).items()}}
-    path, table = ctrl.path_references, None
+    path, tables = ctrl.path_references, {}
     if path is not None:  # its table's place in the loop's tables is the run's (run() writes it)
-        table = path.follower.table
+        tables["path.table"] = path.follower.table
         values |= {"path.settings": path.follower.settings, "path.table": 0.0, "path.retreat_gains": path.retreat_gains}
+    if exp.surface.local:  # a part: its grid's numbers, and its coefficients among the loop's tables
+        grid, tables["part.coefficients"] = exp.surface.data()
+        values |= {"part.grid": grid, "part.coefficients": 0.0}
     settings = (exp.n_samples, exp.steps_per_sample, exp.integration_step, exp.sample_time, exp.singular_tol)
-    return Prepared(exp, loop, settings, loop.row(values), table)
+    return Prepared(exp, loop, settings, loop.row(values), tuple(tables[b] for b in loop.tables))
 
 
 def build_side_by_side(experiments, lanes: int | None = 1) -> None:
@@ -227,7 +235,8 @@ def prepare_alike(template: Prepared, exp, parts: Iterable[str], kept: dict | No
     if parts & {"start", "plant"}:  # made of the template's settings, the sensor and the contact
         key = ("plant", parts, id(template), id(exp.sensor), id(exp.contact))
         values.update(_kept(kept, key, lambda: _plant_values(exp, parts), template, exp.sensor, exp.contact))
-    return Prepared(exp, template.loop, template.settings, template.loop.replaced(template.row, values), template.table)
+    row = template.loop.replaced(template.row, values)
+    return Prepared(exp, template.loop, template.settings, row, template.tables)
 
 
 def _plant_values(exp, parts: frozenset) -> dict[str, np.ndarray]:
@@ -292,7 +301,7 @@ def _run_group(loop: Loop, prepared: list[Prepared], settings: tuple, record: bo
     n_samples, per_sample, h, sample_time, tol = settings
     n = len(prepared)
     runs = np.ascontiguousarray(np.stack([p.row for p in prepared]))
-    tables = _tables(loop, runs, [p.table for p in prepared])
+    tables = _tables(loop, runs, [p.tables for p in prepared])
     metrics = np.empty((n, len(loop.metrics)))
     status, failed = np.empty(n, np.intc), np.empty(n, np.intc)
     steps = n_samples * per_sample + 1
@@ -324,15 +333,16 @@ def _buffer(ffi, a: np.ndarray | None):
     return ffi.NULL if a is None else ffi.from_buffer("double[]", a)
 
 
-def _tables(loop: Loop, runs: np.ndarray, tables: list) -> np.ndarray | None:
-    """The path tables of a group's runs, one after the other, each run's ``path.table`` block set to where
-    its own starts (a count of numbers); None for a loop without a path task."""
-    if not loop.path_task:
+def _tables(loop: Loop, runs: np.ndarray, tables: list[tuple]) -> np.ndarray | None:
+    """The tables of a group's runs (each run's, in the order of ``loop.tables``), one after the other, each
+    run's placing block set to where its own starts (a count of numbers); None for a loop without tables."""
+    if not loop.tables:
         return None
-    at, _ = _spans(loop.blocks)["path.table"]
-    sizes = np.cumsum([0] + [t.size for t in tables])
-    runs[:, at] = sizes[:-1]
-    return np.ascontiguousarray(np.concatenate([t.ravel() for t in tables]), dtype=float)
+    flat = [t.ravel() for run in tables for t in run]
+    starts = np.cumsum([0] + [t.size for t in flat])[:-1].reshape(len(tables), len(loop.tables))
+    for k, name in enumerate(loop.tables):
+        runs[:, _spans(loop.blocks)[name][0]] = starts[:, k]
+    return np.ascontiguousarray(np.concatenate(flat), dtype=float)
 
 
 def _path_metrics(exp, loop: Loop, states: np.ndarray, outputs: np.ndarray, ok: bool) -> dict:
