@@ -14,7 +14,7 @@ from pathlib import Path
 
 import jinja2
 import pytest
-from hybrid.codegen import closed_loop, path_follow, robot_unit, templates
+from hybrid.codegen import closed_loop, part_grid, path_follow, robot_unit, templates
 
 import hybrid
 from hybrid.native import standalone, units
@@ -53,6 +53,7 @@ def rendered(tmp_path_factory):
                                                                               cutoff=15.0, order=2))):
             files |= standalone.controller_files(hybrid.Controller(hybrid.ur5(), SPHERE, wrench_sensor=sensor), name)
         files[path_follow.PATH_HEADER] = path_follow.path_header()
+        files[part_grid.PART_HEADER] = part_grid.part_header()
     finally:
         mp.undo()
     return set(loaded), files, loop, unit
