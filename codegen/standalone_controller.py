@@ -152,7 +152,7 @@ def parameter_checks(dims: Dims, sample_time: str = "c->sample_time") -> list[di
 
 
 def build_standalone_controller(step: Kernel, stop: Kernel, prefix: str, what: str, info: dict, values: dict,
-                                stem: str | None = None, path: dict | None = None) -> Unit:
+                                stem: str | None = None, path: dict | None = None, part: dict | None = None) -> Unit:
     """C source, header and manifest of the standalone controller around ``step``, with ``stop`` (the
     :data:`~hybrid.spec.controller_step.SAFE_STOP` kernel, ``codegen.safe_stop``) its fault reaction:
     its symbols start ``prefix``, its files ``stem`` (default ``prefix``).
@@ -168,6 +168,11 @@ def build_standalone_controller(step: Kernel, stop: Kernel, prefix: str, what: s
     (the normal axis's loop gains in the retreat); the C then includes the follower's header
     (``hybrid_path.h``, shipped beside it) and its struct carries the path. ``values`` are the
     controller's at the path's start.
+
+    ``part``, for a part's surface (:mod:`hybrid.spec.part`): ``measure`` (the ``task_measurement`` kernel, whose
+    tip position the part is expanded about); the C then includes the evaluator's header (``hybrid_part.h``,
+    shipped beside it), its struct points at the part's grid and coefficients (the caller's), and each sample
+    sets the surface's parameters to the part's expansion about the tip.
     """
     declared = [p.name for p in (*CONTROLLER_STEP.inputs, *CONTROLLER_STEP.outputs)]
     if [a.name for a in (*step.inputs, *step.outputs)] != declared:
@@ -226,6 +231,13 @@ def build_standalone_controller(step: Kernel, stop: Kernel, prefix: str, what: s
                            "settings": [_number(float(x)) for x in path["settings"]]}
     else:
         context["path"] = None
+    context["part"] = None
+    if part is not None:
+        measure = part["measure"]
+        if measure not in kernels:
+            kernels += (measure,)
+        context["part"] = {"measure": measure, "measure_outs": measure.core_outputs(), "size": inputs["surface"].size,
+                           "measure_call": {"q": "q", "qd": "qd", "Fc": "wrench"}}
     header = render("standalone_controller.h.j2", **context, wrench=info.get("wrench", _WRENCH),
                     tau_unit=_unit_text(out["tau"].unit))
     source = render("standalone_controller.c.j2", **context, tools=f"CasADi {ca.__version__}",

@@ -340,3 +340,39 @@ def test_a_tip_leaving_the_band_stops_the_run_alike_in_c_and_in_python():
     assert errors[0].time == errors[1].time
     assert str(errors[0]).splitlines()[0] == str(errors[1]).splitlines()[0]
     assert "band" in str(errors[0])
+
+
+def test_the_standalone_c_on_a_part_equals_the_controller(mesh_sphere, tmp_path):
+    """The controller generated as standalone C for a part, given the part's data by its caller, gives the
+    Controller's torques along a run (it compiles warning-free with the strict flags); without the data it
+    refuses every sample, and a tip beyond the band is refused as the Controller refuses it."""
+    from test_standalone_controller import CController, recorded_samples
+
+    _, part = mesh_sphere
+    exp = hybrid.tracing_experiment(surface=part, duration=0.4,
+                                    start_point=tuple(part.project(np.array([0.5, -0.05, 0.35]))))
+    py = exp.build_controller()
+    written = py.generate(tmp_path, "part_task")
+    assert "hybrid_part.h" in {p.name for p in written}
+    c = CController(tmp_path, "part_task")
+    samples = recorded_samples(exp)
+    t, q, qd, wrench = samples[0]
+    status, _ = c.step(t, q, qd, wrench)
+    assert c.name(status) == "PARAMETER_INVALID"  # no part given yet
+    grid, coefficients = part.data()
+    c.c.part_grid = c.ffi.from_buffer("double[]", grid)
+    c.c.part_coefficients = c.ffi.from_buffer("double[]", coefficients)
+    worst = 0.0
+    for t, q, qd, wrench in samples:
+        tau_py = py(t, q, qd, wrench)
+        status, tau_c = c.step(t, q, qd, wrench)
+        assert status == 0, c.name(status)
+        worst = max(worst, float(np.max(np.abs(tau_c - tau_py)) / max(1.0, np.max(np.abs(tau_py)))))
+    assert worst <= 1e-11
+    np.testing.assert_allclose(np.frombuffer(c.ffi.buffer(c.c.surface), float), py.step_inputs()["surface"],
+                               rtol=1e-12, atol=1e-12)
+    far = np.zeros(6)  # the UR5 stretched out: its tip far beyond the part's band
+    status, _ = c.step(t + exp.sample_time, far, np.zeros(6), np.zeros(6))
+    assert c.name(status) == "FRAME_UNDEFINED"
+    with pytest.raises(hybrid.HybridError, match="not a part yet"):
+        exp.generate(tmp_path / "whole")

@@ -67,6 +67,10 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
                        "field's mount, sign, tool, bias and filter turn it into the contact wrench)"
                        if compiled_in["wrench_sensor"] else
                        "the force and moment on the robot at the tip frame's origin, base axes [N, N m]")}
+    part = ctrl.surface.local  # a part: the caller gives its grid, each sample expands it about the tip
+    if part:
+        info["part"] = ("the surface is a part: set part_grid and part_coefficients to its data "
+                        "(hybrid.MeshSurface.data()) before the first sample")
     if follower is not None:
         info["path_task"] = {"axes": list(path.positions), "rows": len(follower.table),
                              "spins": None if path.spins is None else list(path.spins)}
@@ -85,7 +89,9 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
                                               "table": follower.table.ravel(), "settings": follower.settings,
                                               "retreat_gains": path.retreat_gains, "spins": path.spins}
         files = api.build_standalone_controller(kernels[variant["step"]], stop, prefix, what, info, values, stem,
-                                                task).files
+                                                task, {"measure": kernels["task_measurement"]} if part else None).files
+        if part:  # the part evaluator's header, beside the controller that includes it
+            files[api.PART_HEADER] = api.shared_headers()[api.PART_HEADER]
         if follower is not None:  # the follower's header, beside the controller that includes it
             files[api.PATH_HEADER] = api.shared_headers()[api.PATH_HEADER]
         return files
@@ -105,6 +111,9 @@ def generate_experiment(exp, out, name: str | None = None, force: bool = False) 
         raise HybridError("the standalone plant gives its sensor's force as the reading: an experiment with a "
                           "sensor signal (noise, bias, lag, delay) or a wrench_sensor runs in Python only; leave them "
                           "out to generate it")
+    if exp.surface.local:
+        raise HybridError("the standalone plant takes a surface's formula, not a part yet: generate the controller "
+                          "alone (exp.build_controller().generate(...)) and give it the part's data")
     ctrl = exp.build_controller()
     x0 = exp.checked_start()  # the run the C makes: refused where simulate refuses it
     files = controller_files(ctrl, prefix, f"{prefix}_controller") | plant_files(exp, f"{prefix}_plant", x0)
