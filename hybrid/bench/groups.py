@@ -8,6 +8,7 @@ from functools import partial
 
 from hybrid.bench.first_use import cold_benchmarks, import_benchmarks
 from hybrid.bench.law import PaperLaw
+from hybrid.bench.parts import part_benchmarks
 from hybrid.bench.paths import path_benchmarks
 from hybrid.bench.robots import ROBOTS, robot_benchmarks, spatial_benchmarks
 from hybrid.bench.runs import loop_operation_benchmarks, sweep_benchmarks, trace_benchmarks
@@ -59,5 +60,7 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
                ("the standalone controller (generated C): each step call timed, code size, compile time",
                 partial(standalone_benchmarks, quick, add)),
                ("path tasks: the follower per call, the controller's sample with one, a raster's run",
-                partial(path_benchmarks, quick, add))]
+                partial(path_benchmarks, quick, add)),
+               ("parts: a fine mesh's fit, the controller's sample and the 3-D run on a part against the formula's",
+                partial(part_benchmarks, quick, add))]
     return groups
