@@ -376,3 +376,29 @@ def test_the_standalone_c_on_a_part_equals_the_controller(mesh_sphere, tmp_path)
     assert c.name(status) == "FRAME_UNDEFINED"
     with pytest.raises(hybrid.HybridError, match="not a part yet"):
         exp.generate(tmp_path / "whole")
+
+
+def test_a_part_nobody_here_designed_is_touched_and_followed():
+    """A CAD-derived mesh from example-robot-data (the Panda's fifth link, its collision mesh of 300 facets)
+    laid in the UR5's reach: fitted within its report's bounds (a millimetre from its flat facets, which the
+    smooth surface through its vertices rounds), touched from 3 mm and followed at 5 cm/s, the force held on its
+    10 N."""
+    from conftest import example_robot
+
+    link = example_robot("panda_description/meshes/collision/link5.stl")
+    place = trimesh.transformations.rotation_matrix(math.pi / 2, [1, 0, 0])
+    place[:3, 3] = (0.45, 0.0, 0.15)
+    part = MeshSurface.from_file(link, transform=place, spacing=0.005)
+    assert part.fit.distance_rms_m <= 1e-3 and part.fit.normal_angle_rms_deg <= 5.0
+    top = part.project(np.array([0.45, 0.0, 0.25]))
+    exp = hybrid.tracing_experiment(surface=part, start_point=tuple(top), duration=1.5, frame_direction=(1.0, 0.0, 0.0),
+                                    start_gap=0.003, approach_speed=0.02, force_reference=10.0,
+                                    speed_reference=hybrid.Step(0.0, 0.05, 0.5))
+    res = hybrid.simulate(exp)
+    m = res.metrics
+    assert m["contact_losses"] == 0 and math.isfinite(m["first_touch_time_s"])
+    late = res.t > 1.2
+    assert res.force_normal[late].mean() == pytest.approx(10.0, abs=0.2)
+    assert res.force_normal[late].std() <= 0.2
+    tip = res.state[:, 12:15]
+    assert np.linalg.norm(tip[-1] - tip[0]) >= 0.04  # it went along the part

@@ -36,7 +36,7 @@ from hybrid.geometry.surfaces import Surface, _unit_normal
 from hybrid.native import loader
 from hybrid.spec.part import PART_STATUSES
 from hybrid.spec.surface import FORMULAS, PARAMETERS, SurfaceSpec
-from hybrid.validate import _finite, shown
+from hybrid.validate import _finite, _point, shown
 
 #: the samples drawn per cell of the grid on the part's surface (area / spacing^2 of them, each)
 SAMPLES_PER_CELL = 2.0
@@ -147,7 +147,7 @@ class PartSurface(Surface):
         HybridError
             ``p`` beyond the band (no normal there).
         """
-        p = np.asarray(p, float).reshape(3)
+        p = np.array(_point(self._what, "point", p, (3,)))
         _, grad = self.phi_function()(p)
         if not np.isfinite(grad).all():
             raise HybridError(self.off_band(p))
