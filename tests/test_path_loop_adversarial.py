@@ -392,7 +392,7 @@ def test_runs_of_very_different_tables_side_by_side_as_lanes():
     }
     prepared = [closed_loop.prepare(e) for e in exps.values()]
     assert len({id(p.loop) for p in prepared}) == 1 and len({p.settings for p in prepared}) == 1
-    sizes = [len(p.table) for p in prepared]
+    sizes = [len(p.tables[0]) for p in prepared]  # the path tables
     assert min(sizes) < 10 and max(sizes) > 10_000
     other = closed_loop.prepare(hybrid.tracing_experiment(duration=2.0))
     together = closed_loop.run([other, *prepared], record=True)[1:]
