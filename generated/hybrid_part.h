@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 6d6e27b5800fb9050a739464e9454955c4d647488cb9d617190ff5e997446539 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 5dd9f58801720bed68651efa39e5d6f3f4c61a277ad0669d38816d705e33938f */
 #ifndef HYBRID_PART_H
 #define HYBRID_PART_H
 /* A part's surface: phi, a tricubic B-spline on a uniform grid (the part's fitted signed distance), expanded to
@@ -75,8 +75,10 @@ static inline int hybrid_part_expansion(const double *grid, const double *coeffi
     int a, k, l, m;
     const double h = grid[HYBRID_PART_GRID_SPACING];
     for (a = 0; a < 3; ++a) {
-        if (!isfinite(p[a]) || !isfinite(grid[a]) || !isfinite(grid[HYBRID_PART_GRID_CELLS_X + a]))
-            return HYBRID_PART_INPUT_NONFINITE;
+        const double c = grid[HYBRID_PART_GRID_CELLS_X + a];
+        if (!isfinite(p[a]) || !isfinite(grid[a])) return HYBRID_PART_INPUT_NONFINITE;
+        /* a count of cells: a whole number from 1 to 2^20 (no index past the caller's array's end it implies) */
+        if (!(c >= 1.0 && c <= 1048576.0 && c == floor(c))) return HYBRID_PART_INPUT_NONFINITE;
     }
     if (!(h > 0.0) || !isfinite(h)) return HYBRID_PART_INPUT_NONFINITE;
     for (a = 0; a < 3; ++a) {

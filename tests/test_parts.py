@@ -5,6 +5,7 @@ against the same run on the formula, and the refusals."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -285,8 +286,16 @@ def test_mujocos_own_contact_against_the_mesh_gives_the_same_task(mesh_sphere):
     height = part.evaluate(tip)[0]
     assert np.all(np.abs(height - TIP_RADIUS) <= 0.5e-3)
     assert abs(theirs.metrics["steady_state_speed_error_m_per_s"]) <= 0.01
+    # MuJoCo's contact as set: at rest its overlap is the penalty's, the force over the contact's stiffness
+    names = theirs.record["outputs"]
+    normal, overlap = (theirs.outputs[late, names.index(c)] for c in ("N", "penetration"))
+    assert overlap.mean() == pytest.approx(normal.mean() / exp.contact.stiffness, rel=0.25)
+    assert normal.mean() == pytest.approx(theirs.force_normal[late].mean(), abs=0.5)  # the tip's weight besides
     with pytest.raises(hybrid.HybridError, match="MeshSurface"):
         hybrid.simulate(hybrid.tracing_experiment(duration=0.01), plant="mujoco_contact")
+    bowl = MeshSurface(*(lambda m: (m.vertices, m.faces))(sphere_mesh()), flip=True, spacing=0.012)
+    with pytest.raises(hybrid.HybridError, match="convex"):
+        hybrid.simulate(dataclasses.replace(exp, surface=bowl), plant="mujoco_contact")
 
 
 def relative(a: np.ndarray, b: np.ndarray) -> float:
@@ -402,3 +411,80 @@ def test_a_part_nobody_here_designed_is_touched_and_followed():
     assert res.force_normal[late].std() <= 0.2
     tip = res.state[:, 12:15]
     assert np.linalg.norm(tip[-1] - tip[0]) >= 0.04  # it went along the part
+
+
+def test_a_saved_part_is_read_in_a_fresh_process_and_a_part_crosses_processes(tmp_path):
+    """A saved experiment on a part is read where nothing has loaded the parts' module yet; a part pickles (a
+    sweep's processes take it) and a sweep over two workers gives each run's numbers as one worker does."""
+    import json
+    import pickle
+    import subprocess
+    import sys
+
+    mesh = trimesh.creation.icosphere(subdivisions=3, radius=RADIUS)
+    mesh.apply_translation(CENTRE)
+    part = MeshSurface(mesh.vertices, mesh.faces, spacing=0.012)
+    exp = hybrid.tracing_experiment(surface=part, duration=0.1,
+                                    start_point=tuple(part.project(np.array([0.5, -0.05, 0.35]))))
+    saved = tmp_path / "exp.json"
+    saved.write_text(json.dumps(exp.to_dict()))
+    code = ("import json, sys, hybrid; e = hybrid.Experiment.from_dict(json.loads(open(sys.argv[1]).read())); "
+            "print(type(e.surface).__name__, e.surface.digest())")
+    done = subprocess.run([sys.executable, "-c", code, str(saved)], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert done.stdout.split() == ["MeshSurface", part.digest()]
+    copy = pickle.loads(pickle.dumps(part))
+    assert copy == part and np.array_equal(copy.parameters_at(CENTRE + [0, 0, RADIUS]),
+                                           part.parameters_at(CENTRE + [0, 0, RADIUS]))
+    grid = {"contact.friction": [0.1, 0.3]}
+    one, two = (hybrid.sweep(exp, grid, workers=w) for w in (1, 2))
+    assert (one["status"] == "ok").all()
+    assert one["rms_force_error_N"].tolist() == two["rms_force_error_N"].tolist()
+
+
+def test_a_cloud_is_read_back_the_same_and_a_sweep_holds_a_part_once():
+    from hybrid.simulation import closed_loop
+
+    rng = np.random.default_rng(3)
+    n = rng.normal(size=(6000, 3))
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    cloud = PointCloudSurface(CENTRE + RADIUS * n, 3.0 * n, spacing=0.012, band=0.02)  # normals of any length
+    from hybrid.experiments.serialisation import surface_from_dict, surface_to_dict
+
+    assert surface_from_dict(surface_to_dict(cloud)) == cloud
+    exp = hybrid.tracing_experiment(surface=cloud, duration=0.05,
+                                    start_point=tuple(cloud.project(np.array([0.5, -0.05, 0.35]))))
+    prepared = [closed_loop.prepare(dataclasses.replace(exp, contact=hybrid.Contact(friction=f))) for f in (0.1, 0.2)]
+    runs = np.stack([p.row for p in prepared])
+    tables = closed_loop._tables(prepared[0].loop, runs, [p.tables for p in prepared])
+    assert tables.size == cloud.data()[1].size  # one copy of the grid for both runs
+
+
+def test_a_part_refuses_what_it_cannot_do(mesh_sphere, monkeypatch):
+    _, part = mesh_sphere
+    with pytest.raises(hybrid.HybridError, match="frame='actual'"):
+        hybrid.Controller(hybrid.ur5(), part, position_error=True, path=lambda t: (np.zeros(3), np.zeros(3)))
+    with pytest.raises(hybrid.TaskFrameError, match="beyond the fitted band"):
+        hybrid.task_frame(part, [CENTRE + [0.0, 0.0, 0.5]], [[0.1, 0.0, 0.0]])
+    import hybrid.validate as validate
+
+    monkeypatch.setattr(validate, "MEMORY_FRACTION", 1e-9)
+    with pytest.raises(hybrid.HybridError, match="coarser spacing"):
+        MeshSurface(part.vertices, part.faces, spacing=0.01)
+
+
+def test_the_evaluator_refuses_a_grid_that_is_not_one(mesh_sphere):
+    """A caller's grid whose cell counts are not whole numbers in range is refused, not read past its end."""
+    from hybrid.native import loader
+
+    _, part = mesh_sphere
+    module = loader.part_evaluator()
+    grid, coefficients = (np.array(a) for a in part.data())
+    out = np.empty(13)
+    point = np.ascontiguousarray(CENTRE + [0.0, 0.0, RADIUS])
+    for cells in (10.5, 1e300, 0.0, -3.0):
+        bad = grid.copy()
+        bad[4] = cells
+        status = module.lib.hybrid_part_expansion_entry(*(module.ffi.from_buffer("double[]", a)
+                                                          for a in (bad, coefficients, point, out)))
+        assert status != 0, cells

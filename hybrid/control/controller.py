@@ -180,6 +180,9 @@ class Controller(SampleReferences):
                 raise HybridError("an EstimatedSurface has no desired point to put a frame on: the controller does "
                                   "not know the surface; use frame='actual' and position_error=False with it")
             self._spatial.check_sampling(sample_time)
+        if self._spatial.local and (frame == "desired" or position_error):
+            raise HybridError("a part is expanded about the tip at each sample, not about a desired point: use "
+                              "frame='actual' and position_error=False with it")
         self.sample_time, self.integral, self.curvature, self.frame = float(sample_time), integral, curvature, frame
         self.frame_direction = tuple(frame_direction_of((0.0, 0.0, 1.0) if frame_direction is None
                                                         else frame_direction))

@@ -206,4 +206,6 @@ def surface_from_dict(d: dict) -> Surface:
         from hybrid.geometry.implicit import ImplicitSurface  # SymPy: loaded only for a user's surface
 
         return ImplicitSurface(d["phi"], d["parameters"])
+    if kind not in SURFACE_KINDS:  # a part's kinds register when their module loads (SciPy: loaded for a part)
+        import hybrid.geometry.parts  # noqa: F401
     return SURFACE_KINDS[kind](**d)

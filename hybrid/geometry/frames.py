@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from hybrid.deprecation import renamed_keywords
-from hybrid.errors import HybridError, NonFiniteError
+from hybrid.errors import HybridError, NonFiniteError, TaskFrameError
 from hybrid.geometry.surfaces import Surface
 from hybrid.geometry.task_axes import frame_direction_of
 from hybrid.native import units
@@ -98,7 +98,11 @@ def task_frame(surface: Surface, r, rdot, *, frame_direction=(0.0, 0.0, 1.0),
     e = frame_direction_of(frame_direction)
     if surface.local:  # a part: its expansion about each point
         points, rates = np.reshape(r, (-1, 3)), np.reshape(rdot, (-1, 3))
-        rows = [frame(p, v, surface.parameters_at(p), e) for p, v in zip(points, rates)]
+        theta = [surface.parameters_at(p) for p in points]
+        beyond = [i for i, t in enumerate(theta) if not np.isfinite(t).all()]
+        if beyond:
+            raise TaskFrameError(surface.off_band(points[beyond[0]]))
+        rows = [frame(p, v, t, e) for p, v, t in zip(points, rates, theta)]
         R, Rd = (np.stack([o[k] for o in rows]) for k in ("R", "Rd"))
         if not is_batch(r):
             R, Rd = R[0], Rd[0]

@@ -17,7 +17,7 @@ where the tool's tip, behind its compliant sensor, evaluates the frame and its r
 noise of a scan. The ridge pulls each coefficient weakly towards the signed distance along the nearest
 point's normal: it fixes the coefficients no sample reaches and starts the solver there.
 
-Only the coefficients the samples reach, and a cell beyond them, are unknowns: ``phi`` is defined within
+Only the coefficients the samples reach, and two cells beyond them, are unknowns: ``phi`` is defined within
 ``band`` of the part and not beyond (NaN coefficients), and the grid's size is checked before anything is
 allocated. The normal equations are solved by conjugate gradients (SciPy), preconditioned by their
 diagonal, applied as ``A^T (A x)``.
@@ -31,6 +31,7 @@ import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.geometry.bspline import SplineGrid, basis
+from hybrid.validate import check_size
 
 #: the most coefficients a part's grid may have (its bounding box over the spacing): 2e7 doubles, 160 MB
 MAX_COEFFICIENTS = 20_000_000
@@ -38,11 +39,26 @@ MAX_COEFFICIENTS = 20_000_000
 RIDGE = 1e-6
 #: the points moved off the part, one in so many, for its signed distance within the band
 OFFSET_STRIDE = 4
+#: how much nearer [cells] than its own point another may be to an offset that is still its own point's
+OWN_MARGIN = 0.25
 #: the conjugate gradients' relative residual (the fit's own error is far larger)
 TOLERANCE = 1e-4
 #: the default weight of the second differences: on a sphere of 25 cells' radius tessellated in facets of a
 #: cell, the frame's rate within 4 % of the sphere's (a grid finer than the facets resolves their ripple)
 SMOOTHING = 0.2
+
+
+#: the bytes the fit holds per term of its least squares (the term, its row and column, their copies in the
+#: sparse matrix's assembly) and per coefficient of the grid (the masks and the solver's vectors)
+BYTES_PER_TERM, BYTES_PER_COEFFICIENT = 64, 80
+
+
+def _check_memory(points: int, offsets: int, coefficients: int) -> None:
+    """Refuse a fit whose least squares would need more than half the machine's memory, before it is built."""
+    terms = 64 * (4 * points + offsets) + 6 * 4 * coefficients
+    need = BYTES_PER_TERM * terms + BYTES_PER_COEFFICIENT * coefficients
+    check_size(f"the part's fit ({points:,} points, {offsets:,} off the part, a grid of {coefficients:,}) needs",
+               need, "give a coarser spacing, a narrower band or fewer points")
 
 
 def kd_tree(points: np.ndarray):
@@ -70,9 +86,9 @@ def grid_for(points: np.ndarray, spacing: float, band: float) -> tuple[np.ndarra
     return lo, tuple(int(c) for c in cells)
 
 
-def _stencils(grid_origin, spacing, cells, points) -> tuple[np.ndarray, list[np.ndarray]]:
-    """Each point's 64 coefficients (flat indices, N x 64) and the weights of ``phi`` and of its gradient's
-    three components there (each N x 64; the gradient's in 1/m)."""
+def _stencils(grid_origin, spacing, cells, points, gradient: bool = True) -> tuple[np.ndarray, list[np.ndarray]]:
+    """Each point's 64 coefficients (flat indices, N x 64) and the weights of ``phi`` and (``gradient``) of its
+    gradient's three components there (each N x 64; the gradient's in 1/m)."""
     shape = np.array(cells) + 3
     u = (points - grid_origin) / spacing
     cell = np.clip(np.floor(u), 0, np.array(cells) - 1).astype(np.int64)
@@ -85,36 +101,36 @@ def _stencils(grid_origin, spacing, cells, points) -> tuple[np.ndarray, list[np.
     def product(bx, by, bz):
         return (bx[:, :, None, None] * by[:, None, :, None] * bz[:, None, None, :]).reshape(len(points), 64)
 
-    weights = [product(b0[:, 0], b0[:, 1], b0[:, 2]), product(b1[:, 0], b0[:, 1], b0[:, 2]),
-               product(b0[:, 0], b1[:, 1], b0[:, 2]), product(b0[:, 0], b0[:, 1], b1[:, 2])]
+    weights = [product(b0[:, 0], b0[:, 1], b0[:, 2])]
+    if gradient:
+        weights += [product(b1[:, 0], b0[:, 1], b0[:, 2]), product(b0[:, 0], b1[:, 1], b0[:, 2]),
+                    product(b0[:, 0], b0[:, 1], b1[:, 2])]
     return index.reshape(len(points), 64), weights
 
 
 def _second_differences(unknown: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
     """The second differences of the coefficients (three along the axes, three mixed), as ``(indices, weights)``
-    of their terms (each K x terms), for the coefficients whose stencil is all unknowns."""
-    shape = unknown.shape
-    flat = np.arange(unknown.size).reshape(shape)
-    rows = []
-    axes = [np.eye(3, dtype=int)[i] for i in range(3)]
+    of their terms (each K x terms, flat indices), for the unknown coefficients whose stencil is all unknowns
+    (worked out over the unknowns alone, not the whole grid)."""
+    shape = np.array(unknown.shape)
+    centre = np.flatnonzero(unknown)
+    at = np.stack(np.unravel_index(centre, unknown.shape), axis=1)
+    strides = np.array([shape[1] * shape[2], shape[2], 1])
+    inside = np.all((at >= 1) & (at <= shape - 2), axis=1)  # a stencil reaches one coefficient each way
+    centre, at = centre[inside], at[inside]
+    axes = [np.eye(3, dtype=np.int64)[i] for i in range(3)]
     stencils = [([-e, 0 * e, e], [1.0, -2.0, 1.0]) for e in axes]
     root2 = math.sqrt(2.0)  # a mixed second derivative appears twice in the Hessian's norm
     for i in range(3):
         for j in range(i + 1, 3):
             ei, ej = axes[i], axes[j]
             stencils.append(([ei + ej, ei - ej, -ei + ej, -ei - ej], [root2 / 4, -root2 / 4, -root2 / 4, root2 / 4]))
-    inner = (slice(1, -1),) * 3
-    centre = flat[inner].ravel()
+    flat_unknown = unknown.ravel()
+    rows = []
     for offsets, weights in stencils:
-        ok = unknown[inner].ravel().copy()
-        terms = []
-        for o in offsets:
-            shifted = tuple(slice(1 + d, shape[k] - 1 + d) for k, d in enumerate(o))
-            ok &= unknown[shifted].ravel()
-            terms.append(flat[shifted].ravel())
-        index = np.stack(terms, axis=1)[ok]
+        terms = np.stack([centre + int(o @ strides) for o in offsets], axis=1)
+        index = terms[np.all(flat_unknown[terms], axis=1)]
         rows.append((index, np.broadcast_to(np.array(weights), index.shape)))
-    del centre
     return rows
 
 
@@ -131,7 +147,7 @@ def _offset_samples(points: np.ndarray, normals: np.ndarray, spacing: float, ban
     for delta in np.ravel(np.column_stack([steps, -steps])):
         moved = base + delta * along
         distance, _ = tree.query(moved)
-        own = distance >= (1.0 - 1e-3) * abs(delta)
+        own = distance >= abs(delta) - OWN_MARGIN * spacing  # (a scan's noise is a fraction of a cell)
         at.append(moved[own])
         value.append(np.full(int(own.sum()), delta))
     return (np.concatenate(at), np.concatenate(value)) if at else (np.empty((0, 3)), np.empty(0))
@@ -175,8 +191,9 @@ def fit_signed_distance(points, normals, spacing: float, band: float, smoothing:
     origin, cells = grid_for(points, spacing, band)
     shape = tuple(c + 3 for c in cells)
     off, distance = _offset_samples(points, normals, spacing, band, tree)
+    _check_memory(len(points), len(off), int(np.prod(np.array(cells, float) + 3)))
     index, (w, wx, wy, wz) = _stencils(origin, spacing, cells, points)
-    off_index, (off_w, *_) = _stencils(origin, spacing, cells, off)
+    off_index, (off_w,) = _stencils(origin, spacing, cells, off, gradient=False)
     # the unknowns: the samples' coefficients and a cell's beyond them (a point within the band reads them all)
     touched = np.zeros(shape, bool)
     touched.flat[np.unique(index)] = True
@@ -203,11 +220,10 @@ def fit_signed_distance(points, normals, spacing: float, band: float, smoothing:
     centres = origin + (np.argwhere(unknown) - 1.0) * spacing
     _, nearest = tree.query(centres)
     target = np.einsum("ij,ij->i", centres - points[nearest], normals[nearest])
-    # the normal equations applied as A^T (A x): A holds a sixth of the numbers A^T A would
-    At = A.T.tocsr()
-    normal_matrix = LinearOperator((m, m), matvec=lambda x: At @ (A @ x) + RIDGE * x, dtype=float)
-    right = At @ b + RIDGE * target
-    diagonal = np.asarray(A.multiply(A).sum(axis=0)).ravel() + RIDGE
+    # the normal equations applied as A^T (A x): A holds a sixth of the numbers A^T A would (A^T, a view)
+    normal_matrix = LinearOperator((m, m), matvec=lambda x: A.T @ (A @ x) + RIDGE * x, dtype=float)
+    right = A.T @ b + RIDGE * target
+    diagonal = np.bincount(A.indices, weights=A.data ** 2, minlength=m) + RIDGE
     solution, info = cg(normal_matrix, right, x0=target, rtol=TOLERANCE, maxiter=5000,
                         M=sparse.diags(1.0 / diagonal))
     if info != 0 or not np.isfinite(solution).all():

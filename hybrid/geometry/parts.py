@@ -87,12 +87,12 @@ class PartSurface(Surface):
         How well it follows the part.
     """
 
-    kind = "part"
     local = True
     parameters_named = PARAMETERS["quadric"]
     formula = staticmethod(FORMULAS["quadric"])
 
-    def _fitted(self, points: np.ndarray, normals: np.ndarray, spacing, band, smoothing, what: str) -> None:
+    def _settings(self, points: np.ndarray, spacing, band, smoothing, what: str) -> None:
+        """The fit's spacing, band and smoothing, checked (the defaults' where None)."""
         extent = float(np.linalg.norm(np.ptp(points, axis=0)))
         spacing = _length(what, "spacing", extent / 50 if spacing is None else spacing)
         band = _length(what, "band", max(3 * spacing, DEFAULT_BAND) if band is None else band)
@@ -100,14 +100,30 @@ class PartSurface(Surface):
         if smoothing < 0:
             raise HybridError(f"{what}.smoothing = {smoothing}; give a weight >= 0")
         self.spacing, self.band, self.smoothing = spacing, band, float(smoothing)
-        self.grid = fit_signed_distance(points, normals, spacing, band, smoothing)
+
+    def _fitted(self, points: np.ndarray, normals: np.ndarray, what: str) -> None:
+        """The fit to ``points`` and ``normals`` (its settings :meth:`_settings`'), and the evaluator's data."""
+        self.grid = fit_signed_distance(points, normals, self.spacing, self.band, self.smoothing)
         self._what = what
         self._anchor = points[0].copy()
         self._grid_numbers, self._coefficients = self.grid.as_arrays()
-        module = loader.part_evaluator()
-        self._evaluator = module.lib, module.ffi
-        self._grid_ptr = module.ffi.from_buffer("double[]", self._grid_numbers)
-        self._coefficients_ptr = module.ffi.from_buffer("double[]", self._coefficients)
+        for a in (self._grid_numbers, self._coefficients):
+            a.flags.writeable = False
+        self._digest = None
+        self._bound = None  # the generated evaluator and its pointers at the grid, made at the first expansion
+
+    def __getstate__(self) -> dict:
+        """What a copy (a sweep's process, pickled) needs: all but the evaluator's handles, made again there."""
+        return {**self.__dict__, "_bound": None}
+
+    @property
+    def _evaluator(self) -> tuple:
+        """``(lib, ffi, grid, coefficients)``: the generated evaluator and its pointers at this part's data."""
+        if self._bound is None:
+            module = loader.part_evaluator()
+            self._bound = (module.lib, module.ffi, module.ffi.from_buffer("double[]", self._grid_numbers),
+                           module.ffi.from_buffer("double[]", self._coefficients))
+        return self._bound
 
     def _report(self, points: np.ndarray, at: np.ndarray, normals: np.ndarray, samples: int) -> None:
         """:attr:`fit`: the distance at the part's own ``points``, the normal's angle at ``at`` against the part's
@@ -158,10 +174,10 @@ class PartSurface(Surface):
         about it (:func:`~hybrid.spec.surface.quadric_phi`: ``p``, ``phi``, the gradient, the Hessian's upper
         triangle), computed by the generated evaluator (``generated/hybrid_part.h``, as the compiled loop and
         the standalone C compute it); NaN beyond the band."""
-        lib, ffi = self._evaluator
+        lib, ffi, grid, coefficients = self._evaluator
         point = np.ascontiguousarray(np.asarray(p, float).reshape(3))
         out = np.empty(len(PARAMETERS["quadric"]))
-        status = lib.hybrid_part_expansion_entry(self._grid_ptr, self._coefficients_ptr,
+        status = lib.hybrid_part_expansion_entry(grid, coefficients,
                                                  ffi.from_buffer("double[]", point), ffi.from_buffer("double[]", out))
         if status != PART_STATUSES["PART_OK"]:
             out[:] = np.nan
@@ -206,11 +222,13 @@ class PartSurface(Surface):
         return SurfaceSpec("quadric", self.parameters_named, formula=self.formula)
 
     def digest(self) -> str:
-        """What identifies the fitted surface (its grid's numbers)."""
-        h = hashlib.sha256()
-        h.update(np.asarray([*self.grid.origin, self.grid.spacing], float).tobytes())
-        h.update(np.ascontiguousarray(self.grid.coefficients).tobytes())
-        return h.hexdigest()
+        """What identifies the fitted surface (its grid's numbers; worked out once: the grid never changes)."""
+        if self._digest is None:
+            h = hashlib.sha256()
+            h.update(self._grid_numbers.tobytes())
+            h.update(self._coefficients.tobytes())
+            self._digest = h.hexdigest()
+        return self._digest
 
     def __eq__(self, other) -> bool:
         return type(other) is type(self) and other.digest() == self.digest()
@@ -284,13 +302,14 @@ class MeshSurface(PartSurface):
         except (TypeError, ValueError):
             raise HybridError(f"{what}: vertices must be V x 3 numbers") from None
         v, f = checked_mesh(_placed(raw, transform, what), faces, what)
+        self.flip = bool(flip)
         if flip:
             f = f[:, ::-1].copy()
         self.vertices, self.faces = v, f
-        count = int(np.clip(SAMPLES_PER_CELL * _area(v, f) / _spacing_guess(v, spacing) ** 2, FEWEST_SAMPLES,
-                            MOST_SAMPLES))
+        self._settings(v, spacing, band, smoothing, what)
+        count = int(np.clip(SAMPLES_PER_CELL * _area(v, f) / self.spacing ** 2, FEWEST_SAMPLES, MOST_SAMPLES))
         points, normals = oriented_samples(v, f, count)
-        self._fitted(points, normals, spacing, band, smoothing, what)
+        self._fitted(points, normals, what)
         self._arguments = {"vertices": v.tolist(), "faces": f.tolist(), "spacing": self.spacing, "band": self.band,
                            "smoothing": self.smoothing}
         # the report: the distance at the vertices and the facets' centroids, the angle at the centroids
@@ -370,7 +389,11 @@ class PointCloudSurface(PartSurface):
             if viewpoint is None:
                 raise HybridError(f"{what}: without normals, give viewpoint= (a point on the tool's side, the "
                                   "scanner's position) to orient the estimated ones")
-            n = _estimated_normals(p, int(neighbours), np.asarray(viewpoint, float).reshape(3), what)
+            if isinstance(neighbours, bool) or not isinstance(neighbours, (int, np.integer)) or neighbours < 6:
+                raise HybridError(f"{what}.neighbours = {shown(neighbours, 30)}; give a whole number >= 6")
+            eye = np.array(_point(what, "viewpoint", viewpoint, (3,)))
+            n = _estimated_normals(p, int(neighbours), eye, what)
+            given = {"viewpoint": eye.tolist(), "neighbours": int(neighbours)}
         else:
             n = _array(what, "normals", normals)
             if n.shape != p.shape:
@@ -379,20 +402,24 @@ class PointCloudSurface(PartSurface):
             if (length <= 1e-12).any():
                 raise HybridError(f"{what}: normal {int(np.argmax(length <= 1e-12))} has no length; give unit "
                                   "normals towards the tool's side")
+            given = {"normals": np.asarray(normals, float).tolist()}  # as given: read, it is normalised alike
             n = n / length[:, None]
         extent = float(np.linalg.norm(np.ptp(p, axis=0)))
         if not SMALLEST_PART <= extent <= LARGEST_PART:
             raise HybridError(f"{what} is {extent:.3g} m across; a part in a robot cell is {SMALLEST_PART:g} to "
                               f"{LARGEST_PART:g} m: give its points in metres")
-        self._fitted(p, n, spacing, band, smoothing, what)
-        gaps = _sparsest(p)
+        self._settings(p, spacing, band, smoothing, what)
+        gaps = _sparsest(p)  # before the fit: a cloud too sparse for its cells is refused at once
         if gaps > 2 * self.spacing:
             raise HybridError(f"{what}: points {gaps:.3g} m apart where the fit's cells are {self.spacing:.3g} m; "
                               f"give spacing >= {gaps / 2:.2g} m, or a denser cloud")
+        # a dense scan: one point in so many, evenly, is fitted (the report reads them all)
+        every = max(1, -(-len(p) // MOST_SAMPLES))
+        self._fitted(p[::every], n[::every], what)
         self.points, self.normals = p, n
-        self._arguments = {"points": p.tolist(), "normals": n.tolist(), "spacing": self.spacing, "band": self.band,
+        self._arguments = {"points": p.tolist(), **given, "spacing": self.spacing, "band": self.band,
                            "smoothing": self.smoothing}
-        self._report(p, p, n, len(p))
+        self._report(p, p, n, min(len(p), MOST_SAMPLES))
 
 
 def _placed(v: np.ndarray, transform, what: str) -> np.ndarray:
@@ -421,13 +448,6 @@ def _length(what: str, name: str, value) -> float:
     if value <= 0:
         raise HybridError(f"{what}.{name} = {value} m; give a positive length")
     return float(value)
-
-
-def _spacing_guess(v: np.ndarray, spacing) -> float:
-    """The spacing the samples are drawn for (the default's, where none is given)."""
-    if spacing is not None and isinstance(spacing, (int, float)) and spacing > 0:
-        return float(spacing)
-    return float(np.linalg.norm(np.ptp(v, axis=0))) / 50
 
 
 def _area(v: np.ndarray, f: np.ndarray) -> float:

@@ -304,22 +304,30 @@ class MujocoPlant(Plant):
         self._set(x)
         d.qfrc_applied[:] = 0.0
         d.qfrc_applied[:self.nq] = tau
-        previous = mj.get_mjcb_passive(), mj.get_mju_user_warning()
-        mj.set_mjcb_passive(self._passive)
-        # a diverging state is the runner's to report (as the generated plant's): MuJoCo's printed
-        # warnings about it are silenced
-        mj.set_mju_user_warning(_ignore)
-        try:
+
+        def steps() -> int:
             for k in range(nsteps):
                 mj.mj_step(self.model, d)
                 state = self._state()
                 if not np.isfinite(state).all():
                     return k
                 x[:] = trajectory[k] = state
+            return nsteps
+        return self._with_passive(steps)
+
+    def _with_passive(self, run):
+        """``run()`` with this plant's passive forces installed as MuJoCo's callback (one for the whole process),
+        and MuJoCo's printed warnings silenced (a diverging state is the runner's to report, as the generated
+        plant's); both as they were after."""
+        mj = self.mj
+        previous = mj.get_mjcb_passive(), mj.get_mju_user_warning()
+        mj.set_mjcb_passive(self._passive)
+        mj.set_mju_user_warning(_ignore)
+        try:
+            return run()
         finally:
             mj.set_mjcb_passive(previous[0])
             mj.set_mju_user_warning(previous[1])
-        return nsteps
 
     def outputs(self, states: np.ndarray) -> np.ndarray:
         """The generated plant's output record of each state."""

@@ -335,14 +335,20 @@ def _buffer(ffi, a: np.ndarray | None):
 
 def _tables(loop: Loop, runs: np.ndarray, tables: list[tuple]) -> np.ndarray | None:
     """The tables of a group's runs (each run's, in the order of ``loop.tables``), one after the other, each
-    run's placing block set to where its own starts (a count of numbers); None for a loop without tables."""
+    table once however many runs share it (a sweep's runs on one part share its grid), each run's placing block
+    set to where its own starts (a count of numbers); None for a loop without tables."""
     if not loop.tables:
         return None
-    flat = [t.ravel() for run in tables for t in run]
-    starts = np.cumsum([0] + [t.size for t in flat])[:-1].reshape(len(tables), len(loop.tables))
+    distinct, start, at = [], {}, 0
+    for run in tables:
+        for t in run:
+            if id(t) not in start:
+                start[id(t)] = at
+                distinct.append(t.ravel())
+                at += t.size
     for k, name in enumerate(loop.tables):
-        runs[:, _spans(loop.blocks)[name][0]] = starts[:, k]
-    return np.ascontiguousarray(np.concatenate(flat), dtype=float)
+        runs[:, _spans(loop.blocks)[name][0]] = [start[id(run[k])] for run in tables]
+    return np.ascontiguousarray(np.concatenate(distinct), dtype=float)
 
 
 def _path_metrics(exp, loop: Loop, states: np.ndarray, outputs: np.ndarray, ok: bool) -> dict:

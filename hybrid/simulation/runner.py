@@ -226,6 +226,9 @@ def _undefined_surface(exp, points: dict) -> str:
     i = exp.surface.undefined_at([points[n] for n in names]) if names else None
     if i is None:
         return ""
+    off_band = getattr(exp.surface, "off_band", None)
+    if off_band is not None:  # a part: defined within its fitted band
+        return f"at {names[i]}, {off_band(points[names[i]])}"
     formula = getattr(exp.surface, "phi", None)
     what = f"the surface's phi = {shown(formula, 60)}" if formula is not None else f"the {exp.surface.kind}'s phi"
     return (f"{what} is undefined (or has no normal) at {names[i]} = {np.round(points[names[i]], 5).tolist()} m; "
