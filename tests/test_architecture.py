@@ -48,6 +48,8 @@ LAZY_IMPORTS = {
     ("hybrid.plants.registry", "hybrid.plants.mujoco"): "MuJoCo is an optional extra: it loads when a run asks",
     ("hybrid.plants.registry", "hybrid.plants.mujoco_contact"): "MuJoCo is an optional extra: it loads when a run "
                                                                "asks",
+    ("hybrid.experiments.serialisation", "hybrid.geometry.parts"): "a part needs SciPy (an extra): its kinds load "
+                                                                   "when a saved part is read",
     ("hybrid.experiments.serialisation", "hybrid.geometry.implicit"):
         "SymPy loads only when a file names a surface a user wrote down",
     ("hybrid.control.config", "hybrid.geometry.implicit"):
