@@ -488,3 +488,20 @@ def test_the_evaluator_refuses_a_grid_that_is_not_one(mesh_sphere):
         status = module.lib.hybrid_part_expansion_entry(*(module.ffi.from_buffer("double[]", a)
                                                           for a in (bad, coefficients, point, out)))
         assert status != 0, cells
+
+
+def test_inputs_of_the_wrong_kind_are_refused_with_the_reason(mesh_sphere):
+    _, part = mesh_sphere
+    for call, message in [(lambda: MeshSurface(CUBE_V, [["a", "b", "c"]]), "real numbers"),
+                          (lambda: MeshSurface(CUBE_V, [[0, 1, None]] * 12), "whole numbers"),
+                          (lambda: MeshSurface(CUBE_V + 1j, CUBE_F), "real numbers"),
+                          (lambda: MeshSurface(CUBE_V, CUBE_F, spacing=1e-300), "at least"),
+                          (lambda: MeshSurface(CUBE_V, CUBE_F, flip="yes"), "True or False"),
+                          (lambda: MeshSurface.from_file(None), "path"),
+                          (lambda: part.parameters_at([0.5, 0.0]), "point"),
+                          (lambda: part.evaluate([[0.5, 0.0]]), "N x 3"),
+                          (lambda: PointCloudSurface(CUBE_V.repeat(20, axis=0), viewpoint="up"), "viewpoint"),
+                          (lambda: PointCloudSurface(CUBE_V.repeat(20, axis=0), viewpoint=(0, 0, 1),
+                                                     neighbours="x"), "neighbours")]:
+        with pytest.raises(hybrid.HybridError, match=message):
+            call()

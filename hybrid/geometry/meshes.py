@@ -13,6 +13,7 @@ machined edge stays sharp until the fit rounds it at the grid's scale).
 from __future__ import annotations
 
 import math
+import os
 from pathlib import Path
 
 import numpy as np
@@ -48,10 +49,12 @@ def checked_mesh(vertices, faces, what: str = "the mesh") -> tuple[np.ndarray, n
     [[0, 1, 2]]
     """
     try:
+        if np.iscomplexobj(np.asarray(vertices)) or np.iscomplexobj(np.asarray(faces)):
+            raise TypeError
         v = np.asarray(vertices, float)
-        f = np.asarray(faces)
+        f = np.asarray(faces, float)
     except (TypeError, ValueError):
-        raise HybridError(f"{what}: vertices and faces must be arrays of numbers (V x 3 and F x 3)") from None
+        raise HybridError(f"{what}: vertices and faces must be arrays of real numbers (V x 3 and F x 3)") from None
     if v.ndim != 2 or v.shape[1] != 3 or f.ndim != 2 or f.shape[1] != 3:
         raise HybridError(f"{what}: vertices {v.shape} and faces {f.shape}; give V x 3 coordinates [m] and F x 3 "
                           "vertex indices (triangles)")
@@ -60,8 +63,8 @@ def checked_mesh(vertices, faces, what: str = "the mesh") -> tuple[np.ndarray, n
     if not np.isfinite(v).all():
         bad = int(np.flatnonzero(~np.isfinite(v).all(axis=1))[0])
         raise HybridError(f"{what}: vertex {bad} is {v[bad].tolist()}; give finite coordinates")
-    if not np.issubdtype(f.dtype, np.integer) and not np.array_equal(f, np.round(f)):
-        raise HybridError(f"{what}: faces must hold vertex indices (integers)")
+    if not (np.isfinite(f).all() and np.array_equal(f, np.round(f))):
+        raise HybridError(f"{what}: faces must hold vertex indices (whole numbers)")
     f = f.astype(np.int64)
     if f.min() < 0 or f.max() >= len(v):
         raise HybridError(f"{what}: a facet names vertex {int(f.max() if f.max() >= len(v) else f.min())}, of "
@@ -166,6 +169,8 @@ def oriented_samples(v: np.ndarray, f: np.ndarray, count: int, seed: int = 0) ->
 def read_mesh(path) -> tuple[np.ndarray, np.ndarray]:
     """The vertices and faces of a mesh file (STL, OBJ, PLY and the others of :data:`MESH_SUFFIXES`, read by
     trimesh), its size checked before it is read."""
+    if not isinstance(path, (str, os.PathLike)):
+        raise HybridError(f"path = {shown(path, 60)}; give a mesh file's path")
     path = Path(path)
     if path.suffix.lower() not in MESH_SUFFIXES:
         raise HybridError(f"{shown(str(path), 80)} is not a mesh file this reads; give one of "

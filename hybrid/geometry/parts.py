@@ -42,6 +42,8 @@ from hybrid.validate import _finite, _point, shown
 SAMPLES_PER_CELL = 2.0
 #: the fewest and the most samples drawn on a part
 FEWEST_SAMPLES, MOST_SAMPLES = 2_000, 400_000
+#: the shortest spacing and band [m] a fit takes
+SHORTEST = 1e-4
 #: the Newton steps :meth:`PartSurface.project` takes at most
 PROJECTION_STEPS = 20
 #: how far from the part [m] its surface is defined by default (at least three cells): the arm tip reaches into
@@ -153,7 +155,13 @@ class PartSurface(Surface):
     def evaluate(self, points) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``phi`` (N), its gradient (N x 3) and its Hessian (N x 3 x 3) [1/m] at ``points`` (N x 3) [m]; NaN
         beyond the band."""
-        return self.grid.evaluate(points)
+        try:
+            a = np.atleast_2d(np.asarray(points, float))
+        except (TypeError, ValueError):
+            a = None
+        if a is None or a.ndim != 2 or a.shape[1] != 3:
+            raise HybridError(f"{self._what}: points = {shown(points, 40)}; give N x 3 coordinates [m]")
+        return self.grid.evaluate(a)
 
     def normal_at(self, p) -> np.ndarray:
         """The unit normal towards the robot at ``p`` [m] (3 coordinates, within the band).
@@ -175,7 +183,7 @@ class PartSurface(Surface):
         triangle), computed by the generated evaluator (``generated/hybrid_part.h``, as the compiled loop and
         the standalone C compute it); NaN beyond the band."""
         lib, ffi, grid, coefficients = self._evaluator
-        point = np.ascontiguousarray(np.asarray(p, float).reshape(3))
+        point = np.array(_point(self._what, "point", p, (3,)))
         out = np.empty(len(PARAMETERS["quadric"]))
         status = lib.hybrid_part_expansion_entry(grid, coefficients,
                                                  ffi.from_buffer("double[]", point), ffi.from_buffer("double[]", out))
@@ -294,13 +302,17 @@ class MeshSurface(PartSurface):
     def __init__(self, vertices, faces, transform=None, scale: float = 1.0, flip: bool = False,
                  spacing: float | None = None, band: float | None = None, smoothing: float = SMOOTHING):
         what = "MeshSurface"
+        if not isinstance(flip, (bool, np.bool_)):
+            raise HybridError(f"{what}.flip = {shown(flip, 30)}; give True or False")
         _finite(what, scale=scale)
         if scale <= 0:
             raise HybridError(f"{what}.scale = {scale}; give the metres per mesh unit (> 0; 1e-3 for millimetres)")
         try:
+            if np.iscomplexobj(np.asarray(vertices)):
+                raise TypeError
             raw = np.asarray(vertices, float) * scale
         except (TypeError, ValueError):
-            raise HybridError(f"{what}: vertices must be V x 3 numbers") from None
+            raise HybridError(f"{what}: vertices must be V x 3 real numbers") from None
         v, f = checked_mesh(_placed(raw, transform, what), faces, what)
         self.flip = bool(flip)
         if flip:
@@ -445,8 +457,8 @@ def _placed(v: np.ndarray, transform, what: str) -> np.ndarray:
 
 def _length(what: str, name: str, value) -> float:
     _finite(what, **{name: value})
-    if value <= 0:
-        raise HybridError(f"{what}.{name} = {value} m; give a positive length")
+    if not value >= SHORTEST:
+        raise HybridError(f"{what}.{name} = {value} m; give a length of at least {SHORTEST:g} m")
     return float(value)
 
 
