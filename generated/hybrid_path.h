@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: e8c50fc5837c951b171152aa3fc306193186a2406198a81b5246f48243a5b942 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 14ea142a19aa8575649035557c80856a125077d63809b0eacca05761c94bb97a */
 #ifndef HYBRID_PATH_H
 #define HYBRID_PATH_H
 /* The path follower: a path on a surface as a table, followed from the tip's measured position.
@@ -436,7 +436,9 @@ static inline int hybrid_path_follow(const double *table, const double *settings
     return HYBRID_PATH_OK;
 }
 
-#if !defined(__clang__) && defined(__GNUC__)
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT DEFAULT
+#elif defined(__GNUC__)
 #pragma GCC pop_options
 #endif
 

@@ -534,14 +534,16 @@ class Controller(SampleReferences):
         # what a part's surface and a path task change for this sample, undone unless it is served as time passes
         kept = (self._params, self._z.copy()) if self._spatial.local or self._path_task is not None else None
         try:
+            # the tip, measured once for both (its position, rotation and wrench depend on neither's parameters)
+            tip = self._measured(q, qdot, Fc) if kept is not None else None
             if self._spatial.local:
-                self._localize(q, qdot, Fc)
+                self._localize(tip)
             if not self._short:
                 self._python_references(t)
                 if self.path is not None:
                     self._target[:] = self._desired(t)
                 if self._path_task is not None:
-                    self._follow(q, qdot, Fc)
+                    self._follow(tip)
             done = self._into(self._binding, out, q, qdot, Fc, *self._held)
             if done is None:
                 self._checked(q, qdot, Fc, out)

@@ -42,11 +42,11 @@ class SampleReferences:
         p = self.step_inputs()
         return self._measure(q, qdot, Fc, p["surface"], p["e"], p["robot"], p["sensor"], self._estimate)
 
-    def _localize(self, q, qdot, Fc) -> None:
-        """A part's surface about the tip at ``q``: the step's ``surface`` parameters, its second-order expansion
-        there (:meth:`~hybrid.geometry.parts.PartSurface.parameters_at`), so the frame and its rate are the
-        part's own at the tip."""
-        p = self._measured(q, qdot, Fc)["p"].ravel()
+    def _localize(self, tip: dict[str, np.ndarray]) -> None:
+        """A part's surface about the measured ``tip`` (:meth:`_measured`): the step's ``surface`` parameters, its
+        second-order expansion there (:meth:`~hybrid.geometry.parts.PartSurface.parameters_at`), so the frame
+        and its rate are the part's own at the tip."""
+        p = tip["p"].ravel()
         theta = self._spatial.parameters_at(p)
         if not np.isfinite(theta).all():
             raise TaskFrameError(self._spatial.off_band(p))
@@ -54,15 +54,14 @@ class SampleReferences:
         self._params = tuple(theta if name == "surface" else a for name, a in zip(PARAMETERS, self._params))
         self._bind()
 
-    def _follow(self, q, qdot, Fc) -> None:
-        """The path task's references for the tip at ``q`` under the wrench ``Fc``; the step's binding follows
-        the parameters it changes (``e``, and at the retreat the normal axis's selection and gains, its
-        integrals zero): :meth:`_restore` undoes them, for a sample that is not served."""
+    def _follow(self, tip: dict[str, np.ndarray]) -> None:
+        """The path task's references for the measured ``tip`` (:meth:`_measured`: its position, rotation and
+        wrench); the step's binding follows the parameters it changes (``e``, and at the retreat the normal
+        axis's selection and gains, its integrals zero): :meth:`_restore` undoes them, for a sample that is not
+        served."""
         self._path_task.follower.settings[PATH_SAMPLE_TIME] = self.sample_time  # one sample period: the step's
-        m = self._measured(q, qdot, Fc)
-        p = self.step_inputs()
-        changed = self._path_task.write(m["p"].ravel(), m["R"].ravel(), m["contact_wrench"].ravel()[:3], p,
-                                        self._extra, self._rate)
+        changed = self._path_task.write(tip["p"].ravel(), tip["R"].ravel(), tip["contact_wrench"].ravel()[:3],
+                                        self.step_inputs(), self._extra, self._rate)
         if not changed:
             return
         # the follower's unit e, and a selection and gains of 0/1 and >= 0: their checks hold
