@@ -83,6 +83,7 @@ from hybrid.plants.contact import Contact, Sensor
 from hybrid.simulation.metrics import metrics
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.runner import SimulationError, simulate
+from hybrid.stability.analysis import LoopStability, Stability, stability
 from hybrid.user_warnings import JointLimitWarning, RedundancyWarning
 
 if TYPE_CHECKING:  # type checkers see the lazy names' real signatures
@@ -115,15 +116,15 @@ __all__ = [
     "Arm", "BaseParameters", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder",
     "DecouplingLaw", "DynamicsIdentification", "EstimatedSurface", "Experiment", "FaultReaction", "Gains",
     "HybridError", "ImplicitSurface",
-    "JointLimitWarning", "Khatib", "LargeModelWarning", "LinePath", "Measurement", "MeshSurface", "NativeBuildError",
+    "JointLimitWarning", "Khatib", "LargeModelWarning", "LoopStability", "LinePath", "Measurement", "MeshSurface", "NativeBuildError",
     "NonFiniteError", "OperationalSpace", "PANDA_URDF", "ParameterError", "PathTask", "Plane", "PointCloudSurface",
     "Posture", "RasterPath",
     "RedundancyWarning", "Reference", "Robot", "SCHEMES", "SafeStopError", "SampleTimingError", "Scheme", "Sensor",
-    "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "SpiralPath", "Step",
+    "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "SpiralPath", "Stability", "Step",
     "TaskDecoupling",
     "TaskFrameError", "Tool", "ToolIdentification", "UR5_URDF", "URDFError", "WaypointPath", "WrenchSensor",
     "__version__", "arm_terms", "base_parameters", "decoupling_law", "identify_dynamics", "identify_tool",
     "linear_parameters", "metrics",
     "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config",
-    "regressor", "simulate", "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
+    "regressor", "simulate", "stability", "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
 ]

@@ -129,6 +129,9 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     fault_reaction : the controller's :class:`~hybrid.FaultReaction` (its defaults): what a run with a
         sensor's dropout (``Sensor.dropout_duration``) measures; a sweep varies its numbers by name
         (``fault_reaction.stop_time``).
+    allow_unstable : an experiment whose sampled loops are predicted unstable (:func:`hybrid.stability`)
+        is refused, saying which loop and why; True runs it anyway (a study that tests the prediction),
+        and its result says it was predicted so (:attr:`~hybrid.SimulationResult.predicted_stable`).
     """
 
     robot: Robot | None = None
@@ -165,6 +168,7 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     backend: str = "sympy"
     singular_tol: float = SINGULAR_TOL
     fault_reaction: FaultReaction = field(default_factory=FaultReaction)
+    allow_unstable: bool = False
 
     #: the old names of renamed settings (:mod:`hybrid.deprecation`): given, they warn and set the new ones
     _renamed = RENAMED

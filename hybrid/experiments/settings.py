@@ -7,7 +7,7 @@ from dataclasses import fields, replace
 
 import numpy as np
 
-from hybrid.control.loops import Gains, check_loops
+from hybrid.control.loops import Gains
 from hybrid.control.options import ContactLoss
 from hybrid.control.references import Step
 from hybrid.control.wrench_sensor import WrenchSensor
@@ -15,6 +15,7 @@ from hybrid.deprecation import RENAMED, renamed_settings
 from hybrid.errors import HybridError
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.spec.axes import AXIS_NAMES
+from hybrid.stability.analysis import check_stable
 from hybrid.user_warnings import RedundancyWarning, warn
 from hybrid.validate import _finite, check_singular_tol, check_size, shown
 
@@ -206,7 +207,10 @@ def check_timing(exp) -> None:
         k = max(1, round(exp.duration / exp.sample_time))
         raise HybridError(f"duration = {exp.duration} s is not a whole number of samples of "
                           f"{exp.sample_time} s; give duration = {k * exp.sample_time:g} s")
-    check_loops(exp)
+    if not isinstance(exp.allow_unstable, bool):
+        raise HybridError(f"allow_unstable = {shown(exp.allow_unstable, 40)}; give True (run loops predicted unstable) "
+                          "or False")
+    check_stable(exp)
 
 
 #: short names of the references

@@ -65,6 +65,14 @@ class SimulationResult:
         return np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
 
     @property
+    def predicted_stable(self) -> bool:
+        """Whether the run's sampled loops were predicted stable (:func:`hybrid.stability`); False only for
+        a run with ``allow_unstable=True`` (others are refused when they are not)."""
+        from hybrid.stability.analysis import stability
+
+        return stability(self.experiment, margins=False).stable
+
+    @property
     def limit_violations(self) -> dict:
         """Where the run left the robot's joint limits: ``{kind: LimitViolation}`` for each of
         ``"position"``, ``"velocity"``, ``"effort"`` it left (empty: within them all), from the

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from hybrid.control.loops import model_error_note
+from hybrid.stability.analysis import predicted_note
 from hybrid.errors import HybridError, NonFiniteError
 from hybrid.experiments.experiment import Experiment
 from hybrid.plants.registry import plant_for
@@ -190,7 +190,7 @@ def _divergence(partial: SimulationResult, plant, t: float, q, qdot, tau, x) -> 
     exp = partial.experiment
     t_fail = partial.t[-1] + exp.integration_step
     cond = plant.conditioning(q)
-    causes = [c.lstrip("; ") for c in (_left_the_surface(exp, x, len(q)), model_error_note(exp),
+    causes = [c.lstrip("; ") for c in (_left_the_surface(exp, x, len(q)), predicted_note(exp),
                                        _closest_singularity(partial, plant)) if c]
     causes = causes or ["reduce integration_step or check gains and parameters"]
     return SimulationError(

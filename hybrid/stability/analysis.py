@@ -1,0 +1,347 @@
+"""Whether an experiment's sampled loops are stable, and by what margin: :func:`stability`.
+
+The model is :mod:`hybrid.stability.model`'s, at the experiment's start (:mod:`hybrid.stability.experiment_loops`).
+Each task axis's loop is judged alone (the axis's own mobility, gain and viscosity: the decoupled loop
+the law makes), with its gain, phase and delay margins cut at the command ``a`` (python-control); the
+whole closed loop, every axis coupled through the arm's inertia between samples, gives the verdict.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from hybrid.errors import HybridError
+from hybrid.stability.experiment_loops import MATRICES, axis_names, loop_numbers
+from hybrid.stability.model import Structure, closed_loop
+
+
+@dataclass(frozen=True)
+class LoopStability:
+    """One task axis's sampled loop, judged alone.
+
+    Parameters
+    ----------
+    axis : str
+        The task axis (``"t1"``, ``"n"``, ``"rot_t1"``, ...).
+    loop : str
+        ``"force"`` or ``"velocity"``.
+    spectral_radius : float
+        The largest modulus of the loop's poles (stable below 1; ``inf`` when a gain overflows).
+    poles : numpy.ndarray
+        The closed loop's poles (``z``-plane).
+    damping, natural_frequency_hz : float
+        The dominant pole's damping ratio and natural frequency [Hz] (of ``s = ln(z) / T``).
+    gain_margin_db, phase_margin_deg : float
+        The loop's gain margin [dB] (how far its gain may rise: :func:`gain_margin`) and phase margin
+        [deg], cut at the command ``a`` (``inf``: none; NaN for an unstable loop or without margins).
+    delay_margin_samples : int
+        How many more whole samples the force reading may be late with the loop still stable (the law's
+        compensation is late with it): 0, not one more (and for an unstable loop).
+    """
+
+    axis: str
+    loop: str
+    spectral_radius: float
+    poles: np.ndarray
+    damping: float
+    natural_frequency_hz: float
+    gain_margin_db: float
+    phase_margin_deg: float
+    delay_margin_samples: int
+
+    @property
+    def stable(self) -> bool:
+        """Whether every pole lies inside the unit circle."""
+        return self.spectral_radius < 1.0
+
+
+@dataclass(frozen=True)
+class Stability:
+    """An experiment's sampled loops: each axis's (:class:`LoopStability`) and the whole's.
+
+    Parameters
+    ----------
+    loops : tuple of LoopStability
+        One per task axis, in the controller's order.
+    coupled_radius : float
+        The spectral radius of the whole closed loop (every axis, coupled through the arm).
+    sample_time : float
+        ``T`` [s].
+    """
+
+    loops: tuple[LoopStability, ...]
+    coupled_radius: float
+    sample_time: float
+
+    @property
+    def spectral_radius(self) -> float:
+        """The largest spectral radius over the loops, alone and coupled."""
+        return max([self.coupled_radius] + [loop.spectral_radius for loop in self.loops])
+
+    @property
+    def stable(self) -> bool:
+        """Whether every loop, and the whole, is stable."""
+        return self.spectral_radius < 1.0
+
+    def loop(self, axis: str) -> LoopStability:
+        """The loop of the task axis named ``axis``.
+
+        Raises
+        ------
+        HybridError
+            No task axis of that name.
+        """
+        for loop in self.loops:
+            if loop.axis == axis:
+                return loop
+        raise HybridError(f"no task axis {axis!r}; the loops are {', '.join(x.axis for x in self.loops)}")
+
+    def table(self):
+        """The loops as a :class:`pandas.DataFrame`, one row per axis."""
+        import pandas as pd
+
+        rows = [{k: getattr(loop, k) for k in ("axis", "loop", "spectral_radius", "damping", "natural_frequency_hz",
+                                               "gain_margin_db", "phase_margin_deg", "delay_margin_samples", "stable")}
+                for loop in self.loops]
+        return pd.DataFrame(rows).set_index("axis")
+
+    def __str__(self) -> str:
+        verdict = "stable" if self.stable else "UNSTABLE"
+        lines = [f"sampled loops at T = {self.sample_time:g} s: {verdict} (spectral radius "
+                 f"{self.spectral_radius:.4g}; coupled {self.coupled_radius:.4g})"]
+        for x in self.loops:
+            lines.append(f"  {x.axis:7s} {x.loop:8s} radius {x.spectral_radius:.4g}  damping {x.damping:.3g}  "
+                         f"{x.natural_frequency_hz:.3g} Hz  GM {x.gain_margin_db:.3g} dB  PM {x.phase_margin_deg:.3g} "
+                         f"deg  delay margin {x.delay_margin_samples} samples")
+        return "\n".join(lines)
+
+
+def stability(exp, *, margins: bool = True) -> Stability:
+    """The stability of ``exp``'s sampled loops and their margins, from their small-signal model.
+
+    Parameters
+    ----------
+    exp : Experiment
+        Any experiment with a force axis; its loops are taken in contact at its start.
+    margins : bool
+        Work out each loop's gain, phase and delay margins (python-control); False leaves them NaN
+        (faster).
+
+    Returns
+    -------
+    Stability
+        Per axis and for the whole closed loop.
+
+    Raises
+    ------
+    HybridError
+        The experiment's start cannot be worked out, or it has no force axis.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> report = hybrid.stability(hybrid.paper_experiment())
+    >>> report.stable, round(report.loop("n").spectral_radius, 3)
+    (True, 0.888)
+    """
+    st, p = loop_numbers(exp)
+    return stability_of(st, p, axis_names(_axes(exp)), margins=margins)
+
+
+def _axes(exp) -> tuple[int, ...]:
+    from hybrid.stability.experiment_loops import arm_terms_at_start
+
+    return arm_terms_at_start(exp)["axes"]
+
+
+def stability_of(st: Structure, p: dict, names, *, margins: bool = True) -> Stability:
+    """:func:`stability` from the model's numbers (one setting, no batch axes)."""
+    T = float(p["sample_time"])
+    loops = []
+    for i, name in enumerate(names):
+        sub, q = axis_alone(st, p, i)
+        with np.errstate(all="ignore"):
+            m = closed_loop(sub, q)
+        poles = _poles(m["A"])
+        radius = _radius(poles)
+        damping, frequency = _dominant(poles, T)
+        ok = margins and radius < 1.0
+        gm = 20 * math.log10(gain_margin(sub, q)) if ok else math.nan
+        pm = _phase_margin(m, T) if ok else math.nan
+        late = delay_margin(sub, q) if ok else 0
+        loops.append(LoopStability(name, "force" if st.force[i] else "velocity", radius, poles, damping, frequency,
+                                   gm, pm, late))
+    with np.errstate(all="ignore"):
+        whole = _radius(_poles(closed_loop(st, p)["A"]))
+    return Stability(tuple(loops), whole, T)
+
+
+def axis_alone(st: Structure, p: dict, i: int) -> tuple[Structure, dict]:
+    """The structure and numbers of task axis ``i`` alone (its diagonal entries of the matrices)."""
+    sub = replace(st, force=(st.force[i],), linear=(st.linear[i],), integrals=(st.integrals[i],))
+    q = dict(p)
+    for k in MATRICES:
+        if k in q:
+            M = np.asarray(q[k], float)
+            q[k] = M[..., i:i + 1, i:i + 1]
+    return sub, q
+
+
+def _poles(A: np.ndarray) -> np.ndarray:
+    if not np.isfinite(A).all():
+        return np.full(A.shape[:-1], np.inf, dtype=complex)
+    try:
+        return np.linalg.eigvals(A)
+    except np.linalg.LinAlgError:  # no convergence: entries near overflow, unstable by far
+        return np.full(A.shape[:-1], np.inf, dtype=complex)
+
+
+def _radius(poles: np.ndarray) -> float:
+    r = np.max(np.abs(poles), axis=-1)
+    return np.where(np.isfinite(r), r, np.inf) if np.ndim(r) else (float(r) if math.isfinite(r) else math.inf)
+
+
+def _dominant(poles: np.ndarray, T: float) -> tuple[float, float]:
+    """The damping ratio and natural frequency [Hz] of the pole of largest modulus."""
+    if not np.isfinite(poles).all():
+        return math.nan, math.nan
+    z = poles[np.argmax(np.abs(poles))]
+    if abs(z) == 0:
+        return 1.0, math.inf
+    s = np.log(complex(z)) / T
+    wn = abs(s)
+    return (-s.real / wn if wn else 1.0), wn / (2 * math.pi)
+
+
+def _phase_margin(m: dict, T: float) -> float:
+    """The phase margin [deg] of one axis's loop cut at its command (python-control); ``inf``: none."""
+    import control
+
+    A, B, C = m["A_open"], m["B_open"], m["command"][..., :m["A_open"].shape[-1]]
+    loop = control.ss(A, -B, C, np.zeros((1, 1)), dt=T)  # the loop closes with u = C X: positive feedback
+    with np.errstate(all="ignore"):
+        _, pm, _, _, _, _ = control.stability_margins(loop, returnall=True)
+    phases = [abs(p) for p in np.atleast_1d(pm) if np.isfinite(p)]
+    return min(phases) if phases else math.inf
+
+
+#: the largest loop gain factor :func:`gain_margin` looks for
+MOST_GAIN = 1e3
+
+
+def gain_margin(st: Structure, p: dict) -> float:
+    """The factor by which the loop's gain may rise with the loop still stable: the command ``a`` times
+    it (``M``, a controller's model that much heavier than the arm); ``inf`` past :data:`MOST_GAIN`.
+
+    Found on the model itself (bisection on the spectral radius), exact where a loop transfer
+    function's phase crossings (at the Nyquist frequency among them) are easily missed.
+    """
+    def radius(k: float) -> float:
+        with np.errstate(all="ignore"):
+            return _radius(_poles(closed_loop(st, dict(p, gain=np.asarray(p["gain"], float) * k))["A"]))
+
+    lo, hi = 1.0, 1.25
+    while radius(hi) < 1.0:
+        lo, hi = hi, hi * 1.25
+        if hi > MOST_GAIN:
+            return math.inf
+    for _ in range(40):
+        mid = math.sqrt(lo * hi)
+        lo, hi = (mid, hi) if radius(mid) < 1.0 else (lo, mid)
+    return lo
+
+
+#: how many extra samples of the reading's delay :func:`delay_margin` tries
+MOST_DELAY = 20
+
+
+def delay_margin(st: Structure, p: dict) -> int:
+    """How many more whole samples the reading may be late with the loop still stable (0: not one more;
+    :data:`MOST_DELAY` at most)."""
+    for extra in range(1, MOST_DELAY + 1):
+        with np.errstate(all="ignore"):
+            radius = _radius(_poles(closed_loop(replace(st, delay=st.delay + extra), p)["A"]))
+        if not radius < 1.0:
+            return extra - 1
+    return MOST_DELAY
+
+
+#: what each kind of loop needs to be stable (conventions §4, §15), said when one is not
+NEEDS = {"force": "needs KDf*KPf > KIf, KDf*T well below 2 and sqrt(KPf*k)*T well below 2 (k the sensor and the "
+                  "contact in series)",
+         "velocity": "needs KPv*KIv > KI2v and KPv*T well below 2"}
+
+
+def check_stable(exp) -> None:
+    """Refuse ``exp`` when its sampled loops are predicted unstable, unless ``exp.allow_unstable``.
+
+    Raises
+    ------
+    HybridError
+        A loop, or the loops coupled, with a spectral radius of at least 1: which, why, what to change.
+    """
+    if exp.allow_unstable:
+        return
+    try:
+        st, p = loop_numbers(exp)
+        names = axis_names(_axes(exp))
+    except HybridError:
+        return  # no start to take the loops at: the run refuses it, saying why
+    report = _verdict(st, p, names)
+    if report.stable:
+        return
+    unstable = [x for x in report.loops if not x.stable]
+    g, T = exp.effective_gains(), exp.sample_time
+    if unstable:
+        x = max(unstable, key=lambda loop: loop.spectral_radius)
+        what, rule = f"the {x.loop} loop on {x.axis}", NEEDS[x.loop]
+        radius = x.spectral_radius
+    else:
+        what, rule = "the loops coupled through the arm", "each is stable alone: lower the gains or sample_time"
+        radius = report.coupled_radius
+    why = (f"spectral radius {radius:.3g} >= 1" if math.isfinite(radius) else
+           f"a gain times sample_time or the stiffness overflows: {_largest(g)}")
+    scale = np.diag(np.asarray(p["gain"], float))
+    note = (f"; the controller's model scales every loop's gain by {scale.max():.3g} (model_error)"
+            if abs(scale.max() - 1.0) > 1e-6 else "")
+    raise HybridError(
+        f"{what} is unstable at sample_time {T} s ({why}); it {rule}{note}. Lower the gains, soften the sensor or "
+        "shorten sample_time (hybrid.stability(exp) gives the margins), or give allow_unstable=True to run it anyway\n"
+        f"  gains {g}, sensor {exp.sensor.stiffness:g} N/m, contact {exp.contact.stiffness:g} N/m")
+
+
+def _verdict(st: Structure, p: dict, names) -> Stability:
+    """:func:`stability_of` without margins, remembered: a sweep's runs mostly share their loops."""
+    key = (st, tuple(names), tuple((k, np.asarray(v, float).tobytes()) for k, v in sorted(p.items())))
+    found = _VERDICTS.get(key)
+    if found is None:
+        found = _VERDICTS[key] = stability_of(st, p, names, margins=False)
+        if len(_VERDICTS) > 4096:
+            _VERDICTS.pop(next(iter(_VERDICTS)))
+    return found
+
+
+_VERDICTS: dict = {}
+
+
+def _largest(g) -> str:
+    name, value = max(vars(g).items(), key=lambda item: item[1])
+    return f"{name} = {value:.3g}"
+
+
+def predicted_note(exp) -> str:
+    """Why a run diverged, when its loops were predicted unstable (run with ``allow_unstable``), or ``""``."""
+    if not exp.allow_unstable:
+        return ""
+    try:
+        st, p = loop_numbers(exp)
+        report = _verdict(st, p, axis_names(_axes(exp)))
+    except HybridError:
+        return ""
+    if report.stable:
+        return ""
+    return (f"its loops were predicted unstable (spectral radius {report.spectral_radius:.3g}; it ran with "
+            "allow_unstable=True): hybrid.stability(exp) says which")
