@@ -17,7 +17,7 @@ from hypothesis import strategies as st
 
 import hybrid
 from hybrid import oracle
-from hybrid.control.loops import model_error_note
+from hybrid.stability.analysis import predicted_note
 
 ROOT = Path(__file__).resolve().parent.parent
 ARM = hybrid.paper_arm()
@@ -80,8 +80,8 @@ def test_singular_jacobian(law, q2, as_input):
     (lambda: hybrid.paper_experiment(integration_step=1e-3, sample_time=1e-2), "too large for the contact"),
     (lambda: hybrid.paper_experiment(duration=0.0), "positive duration"),
     (lambda: hybrid.paper_experiment(duration=-1.0), "positive duration"),
-    (lambda: hybrid.paper_experiment(KDf=1.0), "force \\(normal\\) loop is unstable"),
-    (lambda: hybrid.paper_experiment(KPv=400.0), "velocity \\(tangent\\) loop is unstable"),
+    (lambda: hybrid.paper_experiment(KDf=1.0), "force loop on n is unstable"),
+    (lambda: hybrid.paper_experiment(KPv=400.0), "velocity loop on t1 is unstable"),
     (lambda: hybrid.paper_experiment(KPf=-2.0), "KPf = -2.0 is negative"),
     (lambda: hybrid.paper_experiment(kpv=40), "unknown setting\\(s\\) kpv"),
     (lambda: hybrid.simulate(hybrid.paper_experiment(surface=hybrid.Circle((2.0, 0.0), 0.2),
@@ -214,21 +214,24 @@ def test_singularity_mid_run_stops_at_the_first_sample_past_the_tolerance(backen
 
 
 def test_diverging_run_stops_with_time_place_and_cause():
-    # stable nominal loops, but a controller that believes the arm 3x heavier triples every loop gain
-    exp = hybrid.paper_experiment(model_error=2.0)
+    # a controller that believes the arm 3x heavier triples every loop gain: predicted unstable, refused,
+    # and run anyway with allow_unstable it diverges, the error saying it was predicted so
+    with pytest.raises(hybrid.HybridError, match=r"force loop on n is unstable.*model_error.*allow_unstable=True"):
+        hybrid.paper_experiment(model_error=2.0)
+    exp = hybrid.paper_experiment(model_error=2.0, allow_unstable=True)
     with pytest.raises(hybrid.SimulationError, match=r"NaN or infinite at t = \d") as info:
         hybrid.simulate(exp)
     err = info.value
     assert 0 < err.time < exp.duration and f"t = {err.time:.5f} s" in str(err)
-    assert "model_error = 2.0" in str(err) and "force (normal) loop" in str(err)
+    assert "predicted unstable" in str(err) and "allow_unstable=True" in str(err)
     part = err.partial
     assert np.isfinite(part.state).all() and part.t[-1] == pytest.approx(err.time - exp.integration_step)
     assert np.abs(part.qdot[-1]).max() > 1e6 * max(np.abs(part.qdot[:100]).max(), 1e-3)
-    # the note's claim, checked on its own: the same loops with tripled gains fail the up-front check
+    # the model's claim, checked on its own: the exact model with tripled gains fails the check alike
     tripled = {name: 3.0 * value for name, value in vars(exp.gains).items()}
-    with pytest.raises(hybrid.HybridError, match="force \\(normal\\) loop is unstable"):
+    with pytest.raises(hybrid.HybridError, match="force loop on n is unstable"):
         hybrid.paper_experiment(model_error=0.0, **tripled)
-    assert model_error_note(hybrid.paper_experiment()) == ""
+    assert predicted_note(hybrid.paper_experiment()) == ""
 
 
 def test_run_driven_through_a_singularity_between_samples_says_where():

@@ -15,6 +15,7 @@ from hybrid.errors import HybridError
 from hybrid.experiments.experiment import Experiment
 from hybrid.plants.planar import planar_record
 from hybrid.simulation.limits import limit_violations
+from hybrid.stability.analysis import stability
 
 
 @dataclass
@@ -68,8 +69,6 @@ class SimulationResult:
     def predicted_stable(self) -> bool:
         """Whether the run's sampled loops were predicted stable (:func:`hybrid.stability`); False only for
         a run with ``allow_unstable=True`` (others are refused when they are not)."""
-        from hybrid.stability.analysis import stability
-
         return stability(self.experiment, margins=False).stable
 
     @property

@@ -10,12 +10,12 @@ the true arm's ``B`` and viscosities ``V_q``, the controller's model's. So ``G =
 from __future__ import annotations
 
 import math
-from functools import lru_cache
 
 import numpy as np
 
 from hybrid.control.wrench_sensor import filter_coefficients
 from hybrid.errors import HybridError
+from hybrid.models.terms import arm_terms
 from hybrid.stability.model import Structure
 
 #: task-axis indices below this are linear (t1, t2, n), the rest rotations
@@ -47,8 +47,6 @@ def arm_terms_at_start(exp) -> dict[str, np.ndarray]:
 
 def arm_terms_of(robot, q) -> np.ndarray:
     """The arm tip's position [m] at ``q`` (2 coordinates for the planar arm, else 3)."""
-    from hybrid.models.terms import arm_terms
-
     return np.asarray(arm_terms(robot, q, np.zeros_like(q))["r"], float)
 
 
@@ -66,8 +64,6 @@ _TERMS: dict = {}
 
 
 def _worked_out(robot, model, q: np.ndarray, wrench: np.ndarray, controller) -> dict:
-    from hybrid.models.terms import arm_terms
-
     n = robot.n
     axes = tuple(controller.axes)
     # J_t: the controller's task velocities (its frame, its axes) per unit joint velocity
@@ -87,8 +83,6 @@ def _worked_out(robot, model, q: np.ndarray, wrench: np.ndarray, controller) -> 
 def _held_stiffness(robot, q: np.ndarray, wrench: np.ndarray, step: float = 1e-6) -> np.ndarray:
     """``d(J^T F_0 - g)/dq`` [N m/rad] at ``q`` (central differences): what the arm feels between samples
     as its configuration leaves the sample's, whose ``J^T F_0`` and gravity the held torque carries."""
-    from hybrid.models.terms import arm_terms
-
     n = robot.n
     Q = q + step * np.concatenate([np.eye(n), -np.eye(n)])
     terms = arm_terms(robot, Q, np.zeros_like(Q))
