@@ -90,12 +90,16 @@ if TYPE_CHECKING:  # type checkers see the lazy names' real signatures
     from hybrid.control.config import read_controller_config
     from hybrid.geometry.implicit import ImplicitSurface
     from hybrid.geometry.parts import MeshSurface, PointCloudSurface
+    from hybrid.stability.gains import GainSuggestion, suggest_gains
+    from hybrid.stability.maps import StabilityMap, stability_map
     from hybrid.sweeps import sweep
 
 #: public names loaded on first use (what they need is heavy: SymPy, pandas; a TOML parser and its schema)
 _LAZY = {"ImplicitSurface": "hybrid.geometry.implicit", "MeshSurface": "hybrid.geometry.parts",
          "PointCloudSurface": "hybrid.geometry.parts", "sweep": "hybrid.sweeps",
-         "read_controller_config": "hybrid.control.config"}
+         "read_controller_config": "hybrid.control.config", "stability_map": "hybrid.stability.maps",
+         "StabilityMap": "hybrid.stability.maps", "suggest_gains": "hybrid.stability.gains",
+         "GainSuggestion": "hybrid.stability.gains"}
 
 
 def __getattr__(name: str):
@@ -114,17 +118,19 @@ def __dir__() -> list[str]:
 
 __all__ = [
     "Arm", "BaseParameters", "Circle", "CirclePath", "Contact", "ContactLoss", "Controller", "Cylinder",
-    "DecouplingLaw", "DynamicsIdentification", "EstimatedSurface", "Experiment", "FaultReaction", "Gains",
+    "DecouplingLaw", "DynamicsIdentification", "EstimatedSurface", "Experiment", "FaultReaction", "GainSuggestion",
+    "Gains",
     "HybridError", "ImplicitSurface",
     "JointLimitWarning", "Khatib", "LargeModelWarning", "LoopStability", "LinePath", "Measurement", "MeshSurface", "NativeBuildError",
     "NonFiniteError", "OperationalSpace", "PANDA_URDF", "ParameterError", "PathTask", "Plane", "PointCloudSurface",
     "Posture", "RasterPath",
     "RedundancyWarning", "Reference", "Robot", "SCHEMES", "SafeStopError", "SampleTimingError", "Scheme", "Sensor",
-    "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "SpiralPath", "Stability", "Step",
+    "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "SpiralPath", "Stability",
+    "StabilityMap", "Step",
     "TaskDecoupling",
     "TaskFrameError", "Tool", "ToolIdentification", "UR5_URDF", "URDFError", "WaypointPath", "WrenchSensor",
     "__version__", "arm_terms", "base_parameters", "decoupling_law", "identify_dynamics", "identify_tool",
     "linear_parameters", "metrics",
     "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config",
-    "regressor", "simulate", "stability", "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
+    "regressor", "simulate", "stability", "stability_map", "suggest_gains", "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
 ]

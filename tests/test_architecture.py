@@ -52,6 +52,7 @@ LAZY_IMPORTS = {
                                                                    "when a saved part is read",
     ("hybrid.experiments.serialisation", "hybrid.geometry.implicit"):
         "SymPy loads only when a file names a surface a user wrote down",
+    ("hybrid.stability.maps", "hybrid.stability.figures"): "matplotlib loads only when a map is drawn",
     ("hybrid.control.config", "hybrid.geometry.implicit"):
         "SymPy loads only when a controller file writes its surface as a formula",
 }

@@ -150,7 +150,8 @@ def test_errors_that_carry_a_state_keep_it_off_the_first_line():
     for call in (lambda: law(np.zeros(6), np.zeros(6), np.zeros(6), np.zeros(6)),  # stretched out: singular
                  lambda: hybrid.decoupling_law(robot, hybrid.Plane((0, 0, 0.1), (0, 0, 1)))(
                      Q_UR5, np.zeros(6), np.zeros(6), np.zeros(6)),  # e = z parallel to the normal
-                 lambda: hybrid.simulate(hybrid.paper_experiment(model_error=2.0)),
+                 lambda: hybrid.simulate(hybrid.paper_experiment(model_error=2.0, allow_unstable=True)),
+                 lambda: hybrid.paper_experiment(model_error=2.0),  # refused: predicted unstable
                  lambda: hybrid.simulate(hybrid.paper_experiment(duration=2.0, singular_tol=0.9)),
                  lambda: hybrid.Controller(robot, SPHERE, velocity_reference=lambda t: np.nan)(
                      0.0, Q_UR5, np.zeros(6), np.zeros(6))):

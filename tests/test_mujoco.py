@@ -184,7 +184,7 @@ def test_a_model_mujoco_reads_otherwise_is_refused(monkeypatch):
 
 
 def test_a_diverging_run_stops_where_the_generated_one_does():
-    exp = hybrid.paper_experiment(model_error=2.0)  # the force loop unstable
+    exp = hybrid.paper_experiment(model_error=2.0, allow_unstable=True)  # the force loop unstable
     stops = []
     for plant in ("generated", "mujoco"):
         with pytest.raises(hybrid.SimulationError, match="NaN or infinite") as info:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 import os
@@ -103,7 +104,11 @@ def test_grid_is_the_product_and_names_are_kept():
 
 
 def test_a_failing_run_is_a_row_with_its_cause():
-    table = sweep(BASE, {"model_error": [0.0, 5.0, 0.1], "gains.KPv": [40.0, -1.0]}, workers=2)
+    # predicted unstable, a run is refused (an invalid row saying so); allowed, it diverges (a failed one)
+    refused = sweep(BASE, {"model_error": [5.0]}, workers=1)
+    assert (refused["status"] == "invalid").all() and refused["error"].str.contains("unstable").all()
+    table = sweep(dataclasses.replace(BASE, allow_unstable=True), {"model_error": [0.0, 5.0, 0.1],
+                                                                  "gains.KPv": [40.0, -1.0]}, workers=2)
     assert len(table) == 6
     bad_gain = table[table["gains.KPv"] < 0]
     assert (bad_gain["status"] == "invalid").all() and bad_gain["error"].str.contains("negative").all()

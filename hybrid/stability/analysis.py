@@ -14,7 +14,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.stability.experiment_loops import MATRICES, axis_names, loop_numbers
+from hybrid.stability.experiment_loops import MATRICES, arm_terms_at_start, axis_names, loop_numbers
 from hybrid.stability.model import Structure, closed_loop
 
 
@@ -40,6 +40,13 @@ class LoopStability:
     delay_margin_samples : int
         How many more whole samples the force reading may be late with the loop still stable (the law's
         compensation is late with it): 0, not one more (and for an unstable loop).
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> force = hybrid.stability(hybrid.paper_experiment()).loop("n")
+    >>> force.loop, force.stable, force.delay_margin_samples >= 1
+    ('force', True, True)
     """
 
     axis: str
@@ -70,6 +77,17 @@ class Stability:
         The spectral radius of the whole closed loop (every axis, coupled through the arm).
     sample_time : float
         ``T`` [s].
+
+    Examples
+    --------
+    A stiffer sensor on the paper's experiment (10 ms samples):
+
+    >>> import hybrid
+    >>> stiff = hybrid.stability(hybrid.paper_experiment(sensor=hybrid.Sensor(stiffness=2e4), allow_unstable=True))
+    >>> stiff.stable, round(stiff.spectral_radius, 2)
+    (False, 1.24)
+    >>> sorted(stiff.table().columns)[:3]
+    ['damping', 'delay_margin_samples', 'gain_margin_db']
     """
 
     loops: tuple[LoopStability, ...]
@@ -87,7 +105,17 @@ class Stability:
         return self.spectral_radius < 1.0
 
     def loop(self, axis: str) -> LoopStability:
-        """The loop of the task axis named ``axis``.
+        """The loop of one task axis.
+
+        Parameters
+        ----------
+        axis : str
+            The axis's name (``"n"``, ``"t1"``, ...).
+
+        Returns
+        -------
+        LoopStability
+            Its loop.
 
         Raises
         ------
@@ -100,7 +128,13 @@ class Stability:
         raise HybridError(f"no task axis {axis!r}; the loops are {', '.join(x.axis for x in self.loops)}")
 
     def table(self):
-        """The loops as a :class:`pandas.DataFrame`, one row per axis."""
+        """The loops as a table.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One row per task axis (its index), a column per :class:`LoopStability` number.
+        """
         import pandas as pd
 
         rows = [{k: getattr(loop, k) for k in ("axis", "loop", "spectral_radius", "damping", "natural_frequency_hz",
@@ -152,8 +186,6 @@ def stability(exp, *, margins: bool = True) -> Stability:
 
 
 def _axes(exp) -> tuple[int, ...]:
-    from hybrid.stability.experiment_loops import arm_terms_at_start
-
     return arm_terms_at_start(exp)["axes"]
 
 
@@ -308,8 +340,9 @@ def check_stable(exp) -> None:
     note = (f"; the controller's model scales every loop's gain by {scale.max():.3g} (model_error)"
             if abs(scale.max() - 1.0) > 1e-6 else "")
     raise HybridError(
-        f"{what} is unstable at sample_time {T} s ({why}); it {rule}{note}. Lower the gains, soften the sensor or "
-        "shorten sample_time (hybrid.stability(exp) gives the margins), or give allow_unstable=True to run it anyway\n"
+        f"{what} is unstable at sample_time {T} s ({why}): lower the gains, soften the sensor or shorten sample_time, "
+        "or give allow_unstable=True to run it anyway\n"
+        f"  it {rule}{note}; hybrid.stability(exp) gives the margins\n"
         f"  gains {g}, sensor {exp.sensor.stiffness:g} N/m, contact {exp.contact.stiffness:g} N/m")
 
 

@@ -153,14 +153,39 @@ def plant_matrices(st: Structure, p: dict) -> tuple[np.ndarray, np.ndarray]:
 
 def held(A: np.ndarray, B: np.ndarray, T) -> tuple[np.ndarray, np.ndarray]:
     """``(Phi, Gamma)``: the exact discretisation of ``X' = A X + B u`` with ``u`` held over ``T`` [s]."""
-    from scipy.linalg import expm  # batched over leading axes
-
     n, m = A.shape[-1], B.shape[-1]
     aug = np.zeros(A.shape[:-2] + (n + m, n + m))
     aug[..., :n, :n] = A
     aug[..., :n, n:] = B
     E = expm(aug * np.asarray(T, float)[..., None, None])
     return E[..., :n, :n], E[..., :n, n:]
+
+
+#: the Taylor series' order and the norm it is summed at in :func:`expm` (its remainder below 1e-20)
+TAYLOR_ORDER, TAYLOR_NORM = 18, 0.5
+
+
+def expm(M: np.ndarray) -> np.ndarray:
+    """``exp(M)`` of each matrix of a stack (``... x n x n``): scaling and squaring of a Taylor series.
+
+    Each matrix is scaled by ``2^-s`` to a norm below :data:`TAYLOR_NORM`, summed to
+    :data:`TAYLOR_ORDER` terms and squared ``s`` times: a few batched products for the whole stack
+    (SciPy's ``expm`` takes the matrices one by one). Non-finite entries give a non-finite result.
+    """
+    M = np.asarray(M, float)
+    norm = np.abs(M).sum(axis=-2).max(axis=-1)                     # the 1-norm of each
+    with np.errstate(divide="ignore", invalid="ignore"):
+        s = np.where(norm > TAYLOR_NORM, np.ceil(np.log2(norm / TAYLOR_NORM)), 0.0)
+    s = np.where(np.isfinite(s), s, 0.0).astype(int)
+    X = M * np.exp2(-s)[..., None, None]
+    eye = np.broadcast_to(np.eye(M.shape[-1]), M.shape)
+    E = eye + X / TAYLOR_ORDER
+    for k in range(TAYLOR_ORDER - 1, 0, -1):                       # Horner: I + X/1 (I + X/2 (I + ...))
+        E = eye + (X @ E) / k
+    for i in range(int(s.max(initial=0))):
+        squared = E @ E
+        E = np.where((s > i)[..., None, None], squared, E)
+    return E
 
 
 class _Rows:

@@ -1,0 +1,196 @@
+"""Gains that place the sampled loops' poles: :func:`suggest_gains`.
+
+The command of a loop is linear in its gains, ``a = sum_j g_j c_j X``, and it closes the loop through the
+plant's way in ``Gamma``: ``A(g) = A_o + Gamma c(g)``. A pole ``z`` of the closed loop is then a root of
+``1 = c(g) (z I - A_o)^-1 Gamma``, an equation linear in the gains. Three poles (a pair of natural
+frequency ``omega_n`` and damping ``zeta``, and the integral's real pole at ``ratio * omega_n``, all
+taken from ``s`` to ``z = exp(s T)``) give three real equations for the loop's three gains, solved
+exactly on the full sampled model: the sensor's mass and compliance, the arm, the hold, the reading's
+lag, delay and filter.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from hybrid.errors import HybridError
+from hybrid.stability.analysis import Stability, _poles, axis_alone, stability
+from hybrid.stability.experiment_loops import loop_numbers
+from hybrid.stability.model import closed_loop
+from hybrid.validate import shown
+
+#: each loop's gains, in the order of its equations: proportional (or damping), then the integrals
+LOOP_GAINS = {"force": ("KPf", "KDf", "KIf"), "velocity": ("KPv", "KIv", "KI2v")}
+
+
+@dataclass(frozen=True)
+class GainSuggestion:
+    """Gains that place a loop's poles, and what they give.
+
+    Parameters
+    ----------
+    gains : Gains
+        The experiment's gains with the placed loops' replaced.
+    poles : dict of str to numpy.ndarray
+        Per loop placed (``"force"``, ``"velocity"``), the requested poles (``z``-plane).
+    stability : Stability
+        The experiment's loops with these gains (:func:`hybrid.stability`).
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> s = hybrid.suggest_gains(hybrid.paper_experiment(), bandwidth_hz=3.0, damping=1.0, integral_ratio=0.0)
+    >>> s.gains.KIf, len(s.poles["force"])
+    (0.0, 2)
+    """
+
+    gains: object
+    poles: dict
+    stability: Stability
+
+
+def suggest_gains(exp, bandwidth_hz, damping: float = 0.7, integral_ratio: float = 0.25) -> GainSuggestion:
+    """Gains whose sampled loops have the requested poles, on the experiment's own model.
+
+    Parameters
+    ----------
+    exp : Experiment
+        The experiment (its sensor, contact, sample time, delay, filter, arm).
+    bandwidth_hz : float or mapping
+        The natural frequency ``f_n`` [Hz] of the force loop's dominant pole pair, or a mapping
+        ``{"force": f_n, "velocity": f_n}`` placing either or both loops (the velocity loop's pair on
+        its first velocity axis).
+    damping : float
+        The pair's damping ratio ``zeta`` (> 0).
+    integral_ratio : float
+        The integral's real pole at ``integral_ratio * 2 pi f_n`` [rad/s] (> 0); 0: the force loop
+        without its integral (``KIf = 0``), the velocity loop without its double integral (``KI2v = 0``).
+
+    Returns
+    -------
+    GainSuggestion
+        The gains, the poles requested, the loops' stability with them.
+
+    Raises
+    ------
+    HybridError
+        A request that cannot be met at this sample time: a bandwidth at or above the Nyquist
+        frequency, gains that come out negative, or other poles slower than the placed ones (the
+        message says the largest bandwidth met).
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> s = hybrid.suggest_gains(hybrid.paper_experiment(), bandwidth_hz=5.0, damping=0.8)
+    >>> round(s.gains.KPf, 3), s.stability.stable
+    (0.937, True)
+    """
+    wanted = _wanted(bandwidth_hz)
+    if isinstance(damping, bool) or not isinstance(damping, (int, float)) or not math.isfinite(damping) \
+            or damping <= 0:
+        raise HybridError(f"damping = {shown(damping, 40)}; give the pole pair's damping ratio, a number > 0")
+    if isinstance(integral_ratio, bool) or not isinstance(integral_ratio, (int, float)) \
+            or not math.isfinite(integral_ratio) or integral_ratio < 0:
+        raise HybridError(f"integral_ratio = {shown(integral_ratio, 40)}; give the integral pole over the pair's "
+                          "natural frequency, a number >= 0 (0: no integral action)")
+    if integral_ratio > 0 and not exp.integral:
+        raise HybridError("the experiment runs without integral action (integral=False); give integral_ratio=0, or "
+                          "the experiment integral=True")
+    T = exp.sample_time
+    values = dict(vars(exp.gains))
+    requested = {}
+    for loop, f_n in wanted.items():
+        if f_n >= 0.5 / T:
+            raise HybridError(f"bandwidth_hz = {f_n:g} Hz for the {loop} loop is at or above the Nyquist frequency "
+                              f"{0.5 / T:g} Hz of sample_time {T:g} s; give a lower bandwidth or a shorter sample_time")
+        poles = _requested(f_n, damping, integral_ratio, T)
+        values.update(_placed(exp, loop, poles, f_n, damping, integral_ratio))
+        requested[loop] = poles
+    gains = type(exp.gains)(**values)
+    placed = replace(exp, gains=gains, allow_unstable=True)
+    return GainSuggestion(gains, requested, stability(placed))
+
+
+def _wanted(bandwidth_hz) -> dict[str, float]:
+    given = bandwidth_hz if isinstance(bandwidth_hz, dict) else {"force": bandwidth_hz}
+    if not given or set(given) - set(LOOP_GAINS):
+        raise HybridError(f"bandwidth_hz = {shown(bandwidth_hz, 60)}; give the force loop's in Hz, or a mapping "
+                          "{'force': ..., 'velocity': ...}")
+    for loop, f in given.items():
+        if isinstance(f, bool) or not isinstance(f, (int, float)) or not math.isfinite(f) or f <= 0:
+            raise HybridError(f"bandwidth_hz for the {loop} loop = {shown(f, 40)}; give a frequency in Hz, > 0")
+    return {loop: float(f) for loop, f in given.items()}
+
+
+def _requested(f_n: float, zeta: float, ratio: float, T: float) -> np.ndarray:
+    """The poles ``z = exp(s T)`` of the pair (``f_n`` [Hz], ``zeta``) and the integral's real pole."""
+    w = 2 * math.pi * f_n
+    root = np.sqrt(complex(zeta * zeta - 1.0))
+    s = [w * (-zeta + root), w * (-zeta - root)] + ([-ratio * w] if ratio > 0 else [])
+    return np.exp(np.array(s, complex) * T)
+
+
+def _placed(exp, loop: str, poles: np.ndarray, f_n: float, zeta: float, ratio: float) -> dict[str, float]:
+    """The loop's gains that make ``poles`` poles of its axis's sampled loop (alone)."""
+    names = LOOP_GAINS[loop][:len(poles)]
+    st, p = loop_numbers(replace(exp, allow_unstable=True))
+    axis = next(i for i, f in enumerate(st.force) if f == (loop == "force"))
+    sub, q = axis_alone(st, p, axis)
+    sub = replace(sub, integrals=(len(names) - (loop == "force") - 1,))  # the integrators the placed gains use
+    # the command's row for each gain alone, and the open loop (neither depends on the gains)
+    rows = {}
+    for name in names:
+        m = closed_loop(sub, {**q, **{k: float(k == name) for k in LOOP_GAINS[loop]}})
+        rows[name] = m["command"][0, :m["A_open"].shape[-1]]
+    A_o, B = m["A_open"], m["B_open"][:, 0]
+    N = A_o.shape[0]
+    equations, rhs = [], []
+    for z, times in _distinct(poles):  # one of each conjugate pair: its real and imaginary parts
+        R = np.linalg.inv(z * np.eye(N) - A_o)
+        x = R @ B
+        for k in range(times):  # a repeated pole: the equation's derivatives in z vanish too
+            coeff = np.array([rows[name] @ x for name in names])
+            equations.append(coeff.real)
+            rhs.append(1.0 if k == 0 else 0.0)
+            if z.imag > 0:
+                equations.append(coeff.imag)
+                rhs.append(0.0)
+            x = R @ x
+    g = np.linalg.solve(np.array(equations), np.array(rhs))
+    gains = {name: float(v) for name, v in zip(names, g)}
+    gains.update({k: 0.0 for k in LOOP_GAINS[loop][len(names):]})
+    _check_met(exp, loop, gains, poles, sub, q, f_n, zeta)
+    return gains
+
+
+def _distinct(poles: np.ndarray) -> list[tuple[complex, int]]:
+    """The poles in the upper half plane (one of each conjugate pair), each with its multiplicity
+    (poles within 1e-9 of each other count as one, repeated)."""
+    out: list[list] = []
+    for z in poles[np.imag(poles) >= 0]:
+        for entry in out:
+            if abs(entry[0] - z) <= 1e-9:
+                entry[1] += 1
+                break
+        else:
+            out.append([complex(z), 1])
+    return [(z, k) for z, k in out]
+
+
+def _check_met(exp, loop: str, gains: dict, poles: np.ndarray, sub, q: dict, f_n: float, zeta: float) -> None:
+    """Refuse gains that come out negative, or leave another pole as slow as the placed ones."""
+    with np.errstate(all="ignore"):
+        found = _poles(closed_loop(sub, {**q, **gains})["A"])
+    placed = max(abs(poles))
+    slower = [z for z in found if min(abs(z - poles)) > 1e-4 * max(1.0, placed) and abs(z) >= placed]
+    negative = [k for k, v in gains.items() if v < 0]
+    if negative or slower:
+        why = (f"it needs {', '.join(f'{k} = {gains[k]:.3g}' for k in negative)} < 0" if negative else
+               f"another pole of the loop, of modulus {max(abs(z) for z in slower):.3g}, is as slow as the placed "
+               f"ones ({placed:.3g})")
+        raise HybridError(f"a {loop} loop of {f_n:g} Hz and damping {zeta:g} cannot be met at sample_time "
+                          f"{exp.sample_time:g} s with this sensor and arm: {why}; lower bandwidth_hz (or damping), "
+                          "or shorten sample_time")
