@@ -121,7 +121,8 @@ __all__ = [
     "DecouplingLaw", "DynamicsIdentification", "EstimatedSurface", "Experiment", "FaultReaction", "GainSuggestion",
     "Gains",
     "HybridError", "ImplicitSurface",
-    "JointLimitWarning", "Khatib", "LargeModelWarning", "LoopStability", "LinePath", "Measurement", "MeshSurface", "NativeBuildError",
+    "JointLimitWarning", "Khatib", "LargeModelWarning", "LinePath", "LoopStability", "Measurement", "MeshSurface",
+    "NativeBuildError",
     "NonFiniteError", "OperationalSpace", "PANDA_URDF", "ParameterError", "PathTask", "Plane", "PointCloudSurface",
     "Posture", "RasterPath",
     "RedundancyWarning", "Reference", "Robot", "SCHEMES", "SafeStopError", "SampleTimingError", "Scheme", "Sensor",
@@ -132,5 +133,6 @@ __all__ = [
     "__version__", "arm_terms", "base_parameters", "decoupling_law", "identify_dynamics", "identify_tool",
     "linear_parameters", "metrics",
     "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config",
-    "regressor", "simulate", "stability", "stability_map", "suggest_gains", "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
+    "regressor", "simulate", "stability", "stability_map", "suggest_gains",
+    "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
 ]

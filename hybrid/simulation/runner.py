@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from hybrid.stability.analysis import predicted_note
 from hybrid.errors import HybridError, NonFiniteError
 from hybrid.experiments.experiment import Experiment
 from hybrid.plants.registry import plant_for
@@ -22,6 +21,7 @@ from hybrid.simulation.metrics import run_metrics
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.sensing import plant_reader
 from hybrid.spec.interfaces import STATUS_CODES
+from hybrid.stability.analysis import predicted_note
 from hybrid.validate import shown
 
 
