@@ -53,6 +53,8 @@ LAZY_IMPORTS = {
     ("hybrid.experiments.serialisation", "hybrid.geometry.implicit"):
         "SymPy loads only when a file names a surface a user wrote down",
     ("hybrid.stability.maps", "hybrid.stability.figures"): "matplotlib loads only when a map is drawn",
+    ("hybrid.cli.stability", "hybrid.stability.figures"): "matplotlib loads only when the command draws a map",
+    ("hybrid.stability.figures", "hybrid.plots"): "pyplot loads only when a map is written to a file",
     ("hybrid.control.config", "hybrid.geometry.implicit"):
         "SymPy loads only when a controller file writes its surface as a formula",
 }

@@ -152,8 +152,13 @@ def add_generate_arguments(g) -> None:
     g.add_argument("--experiment", choices=tuple(FACTORIES),
                    help="write this experiment's controller and plant (NAME_controller.c/.h/.json, "
                         "NAME_plant.c/.h/.json) instead of a URDF arm's kernels")
-    g.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", dest="settings",
-                   help="with --experiment: override a setting, as a sweep file's [base] or parameters name it "
+    add_setting_argument(g, "with --experiment: ")
+
+
+def add_setting_argument(p, when: str = "") -> None:
+    """``--set KEY=VALUE``: an experiment's setting overridden (:func:`experiment_of`)."""
+    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", dest="settings",
+                   help=f"{when}override a setting, as a sweep file's [base] or parameters name it "
                         "(duration=3.0, controller=khatib, KPf=3, F_d=15, contact.friction=0.1, "
                         "force_reference.after=25); VALUE is a TOML value, or else text; repeatable")
 

@@ -19,6 +19,7 @@ from hybrid import bench
 from hybrid.cli import common, progress
 from hybrid.cli import experiments as experiment_cli
 from hybrid.cli import regenerate as regenerate_cli
+from hybrid.cli import stability as stability_cli
 from hybrid.cli import sweep as sweep_cli
 from hybrid.control.config import read_controller_config
 from hybrid.deprecation import MESSAGE
@@ -147,6 +148,7 @@ def build_parser(prog: str = "hybrid") -> argparse.ArgumentParser:
 
     experiment_cli.add_parser(sub)
     sweep_cli.add_parser(sub)
+    stability_cli.add_parser(sub)
     bench.add_parser(sub)
     return p
 

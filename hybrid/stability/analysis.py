@@ -9,6 +9,7 @@ whole closed loop, every axis coupled through the arm's inertia between samples,
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -149,7 +150,7 @@ class Stability:
         for x in self.loops:
             lines.append(f"  {x.axis:7s} {x.loop:8s} radius {x.spectral_radius:.4g}  damping {x.damping:.3g}  "
                          f"{x.natural_frequency_hz:.3g} Hz  GM {x.gain_margin_db:.3g} dB  PM {x.phase_margin_deg:.3g} "
-                         f"deg  delay margin {x.delay_margin_samples} samples")
+                         f"deg  delay margin {'>= ' * (x.delay_margin_samples == MOST_DELAY)}{x.delay_margin_samples} samples")
         return "\n".join(lines)
 
 
@@ -254,7 +255,8 @@ def _phase_margin(m: dict, T: float) -> float:
 
     A, B, C = m["A_open"], m["B_open"], m["command"][..., :m["A_open"].shape[-1]]
     loop = control.ss(A, -B, C, np.zeros((1, 1)), dt=T)  # the loop closes with u = C X: positive feedback
-    with np.errstate(all="ignore"):
+    with np.errstate(all="ignore"), warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # its note that it computes on the frequency response: the same margin
         _, pm, _, _, _, _ = control.stability_margins(loop, returnall=True)
     phases = [abs(p) for p in np.atleast_1d(pm) if np.isfinite(p)]
     return min(phases) if phases else math.inf

@@ -45,6 +45,13 @@ def stability_map_figure(smap, title: str | None = None) -> Figure:
     return fig
 
 
+def save_map(smap, stem, formats=("png",)) -> list:
+    """Draw ``smap`` and write it as ``stem.<format>`` for each of ``formats``, atomically; the paths."""
+    from hybrid.plots import save
+
+    return save(stability_map_figure(smap), stem, formats)
+
+
 def _curve(table, name: str, title: str | None) -> Figure:
     fig = Figure(figsize=(6.0, 3.6), layout="constrained")
     ax = fig.subplots()

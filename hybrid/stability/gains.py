@@ -78,8 +78,8 @@ def suggest_gains(exp, bandwidth_hz, damping: float = 0.7, integral_ratio: float
     ------
     HybridError
         A request that cannot be met at this sample time: a bandwidth at or above the Nyquist
-        frequency, gains that come out negative, or other poles slower than the placed ones (the
-        message says the largest bandwidth met).
+        frequency, gains that come out negative, or other poles as slow as the placed ones (the
+        message says about the largest bandwidth met); a bad value.
 
     Examples
     --------
@@ -107,7 +107,14 @@ def suggest_gains(exp, bandwidth_hz, damping: float = 0.7, integral_ratio: float
             raise HybridError(f"bandwidth_hz = {f_n:g} Hz for the {loop} loop is at or above the Nyquist frequency "
                               f"{0.5 / T:g} Hz of sample_time {T:g} s; give a lower bandwidth or a shorter sample_time")
         poles = _requested(f_n, damping, integral_ratio, T)
-        values.update(_placed(exp, loop, poles, f_n, damping, integral_ratio))
+        try:
+            values.update(_placed(exp, loop, poles, integral_ratio))
+        except _NotMet as why:
+            best = _largest_met(exp, loop, f_n, damping, integral_ratio)
+            met = f"the largest met is about {best:.3g} Hz" if best else "none is met down to 0.01 Hz"
+            raise HybridError(f"a {loop} loop of {f_n:g} Hz and damping {damping:g} cannot be met at sample_time "
+                              f"{T:g} s with this sensor and arm ({met}): lower bandwidth_hz, or shorten sample_time\n"
+                              f"  {why}") from None
         requested[loop] = poles
     gains = type(exp.gains)(**values)
     placed = replace(exp, gains=gains, allow_unstable=True)
@@ -133,7 +140,34 @@ def _requested(f_n: float, zeta: float, ratio: float, T: float) -> np.ndarray:
     return np.exp(np.array(s, complex) * T)
 
 
-def _placed(exp, loop: str, poles: np.ndarray, f_n: float, zeta: float, ratio: float) -> dict[str, float]:
+class _NotMet(Exception):
+    """Placed gains that do not meet the request (the reason)."""
+
+
+def _largest_met(exp, loop: str, f_n: float, zeta: float, ratio: float) -> float | None:
+    """About the largest natural frequency [Hz] below ``f_n`` whose poles can be placed (a log grid from
+    0.01 Hz, then bisection past its last one met: low frequencies fail too, where the arm's own damping
+    exceeds the pair's); None when none is met."""
+    def met(f: float) -> bool:
+        try:
+            _placed(exp, loop, _requested(f, zeta, ratio, exp.sample_time), ratio)
+            return True
+        except (_NotMet, np.linalg.LinAlgError):
+            return False
+
+    grid = np.geomspace(0.01, f_n, 60)[:-1]
+    found = [f for f in grid if met(f)]
+    if not found:
+        return None
+    lo = found[-1]
+    hi = grid[list(grid).index(lo) + 1] if lo != grid[-1] else f_n
+    for _ in range(20):
+        mid = math.sqrt(lo * hi)
+        lo, hi = (mid, hi) if met(mid) else (lo, mid)
+    return lo
+
+
+def _placed(exp, loop: str, poles: np.ndarray, ratio: float) -> dict[str, float]:
     """The loop's gains that make ``poles`` poles of its axis's sampled loop (alone)."""
     names = LOOP_GAINS[loop][:len(poles)]
     st, p = loop_numbers(replace(exp, allow_unstable=True))
@@ -159,10 +193,13 @@ def _placed(exp, loop: str, poles: np.ndarray, f_n: float, zeta: float, ratio: f
                 equations.append(coeff.imag)
                 rhs.append(0.0)
             x = R @ x
-    g = np.linalg.solve(np.array(equations), np.array(rhs))
+    try:
+        g = np.linalg.solve(np.array(equations), np.array(rhs))
+    except np.linalg.LinAlgError:  # a requested pole the gains cannot reach (a pole of the open loop)
+        raise _NotMet("the gains cannot move the loop's poles there (a pole of the loop without feedback)") from None
     gains = {name: float(v) for name, v in zip(names, g)}
     gains.update({k: 0.0 for k in LOOP_GAINS[loop][len(names):]})
-    _check_met(exp, loop, gains, poles, sub, q, f_n, zeta)
+    _check_met(gains, poles, sub, q)
     return gains
 
 
@@ -180,8 +217,9 @@ def _distinct(poles: np.ndarray) -> list[tuple[complex, int]]:
     return [(z, k) for z, k in out]
 
 
-def _check_met(exp, loop: str, gains: dict, poles: np.ndarray, sub, q: dict, f_n: float, zeta: float) -> None:
-    """Refuse gains that come out negative, or leave another pole as slow as the placed ones."""
+def _check_met(gains: dict, poles: np.ndarray, sub, q: dict) -> None:
+    """Raise :class:`_NotMet` for gains that come out negative, or leave another pole as slow as the placed
+    ones."""
     with np.errstate(all="ignore"):
         found = _poles(closed_loop(sub, {**q, **gains})["A"])
     placed = max(abs(poles))
@@ -191,6 +229,4 @@ def _check_met(exp, loop: str, gains: dict, poles: np.ndarray, sub, q: dict, f_n
         why = (f"it needs {', '.join(f'{k} = {gains[k]:.3g}' for k in negative)} < 0" if negative else
                f"another pole of the loop, of modulus {max(abs(z) for z in slower):.3g}, is as slow as the placed "
                f"ones ({placed:.3g})")
-        raise HybridError(f"a {loop} loop of {f_n:g} Hz and damping {zeta:g} cannot be met at sample_time "
-                          f"{exp.sample_time:g} s with this sensor and arm: {why}; lower bandwidth_hz (or damping), "
-                          "or shorten sample_time")
+        raise _NotMet(why)
