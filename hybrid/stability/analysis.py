@@ -148,9 +148,10 @@ class Stability:
         lines = [f"sampled loops at T = {self.sample_time:g} s: {verdict} (spectral radius "
                  f"{self.spectral_radius:.4g}; coupled {self.coupled_radius:.4g})"]
         for x in self.loops:
+            late = f"{'>= ' * (x.delay_margin_samples == MOST_DELAY)}{x.delay_margin_samples}"
             lines.append(f"  {x.axis:7s} {x.loop:8s} radius {x.spectral_radius:.4g}  damping {x.damping:.3g}  "
                          f"{x.natural_frequency_hz:.3g} Hz  GM {x.gain_margin_db:.3g} dB  PM {x.phase_margin_deg:.3g} "
-                         f"deg  delay margin {'>= ' * (x.delay_margin_samples == MOST_DELAY)}{x.delay_margin_samples} samples")
+                         f"deg  delay margin {late} samples")
         return "\n".join(lines)
 
 
