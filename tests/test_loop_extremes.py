@@ -20,7 +20,7 @@ T = 1e-3
 def _radii(**gains) -> dict[str, float]:
     exp = hybrid.paper_experiment(sample_time=T, integration_step=T / 10, allow_unstable=True, **gains)
     report = hybrid.stability(exp, margins=False)
-    return {loop.axis: loop.spectral_radius for loop in report.loops} | {"coupled": report.coupled_radius}
+    return {loop.axis: loop.spectral_radius for loop in report.loops} | {"coupled": report.spectral_radius}
 
 
 @pytest.mark.parametrize("name", GAINS_FIELDS)

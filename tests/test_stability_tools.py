@@ -42,7 +42,7 @@ def test_every_point_of_a_map_is_the_experiments_own_verdict():
             continue
         point = apply(dataclasses.replace(exp, allow_unstable=True),
                       {**settings, "sample_time": T, "integration_step": T / 100, "duration": 100 * T})
-        own = hybrid.stability(point, margins=False).coupled_radius
+        own = hybrid.stability(point, margins=False).spectral_radius
         assert row["spectral_radius"] == pytest.approx(own, rel=1e-9), settings
         assert bool(row["stable"]) == hybrid.stability(point, margins=False).stable
     assert 0 < invalid < 40

@@ -9,6 +9,7 @@ from functools import partial
 from hybrid.bench.first_use import cold_benchmarks, import_benchmarks
 from hybrid.bench.law import PaperLaw
 from hybrid.bench.parts import part_benchmarks
+from hybrid.bench.stability import stability_benchmarks
 from hybrid.bench.paths import path_benchmarks
 from hybrid.bench.robots import ROBOTS, robot_benchmarks, spatial_benchmarks
 from hybrid.bench.runs import loop_operation_benchmarks, sweep_benchmarks, trace_benchmarks
@@ -62,5 +63,7 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
                ("path tasks: the follower per call, the controller's sample with one, a raster's run",
                 partial(path_benchmarks, quick, add)),
                ("parts: a fine mesh's fit, the controller's sample and the 3-D run on a part against the formula's",
-                partial(part_benchmarks, quick, add))]
+                partial(part_benchmarks, quick, add)),
+               ("stability: a map of 10^4 points of the paper's loops, one report with its margins",
+                partial(stability_benchmarks, quick, add))]
     return groups

@@ -110,7 +110,7 @@ def _as_data(report) -> dict:
         return v if math.isfinite(v) else str(v)  # "inf", "nan"
 
     return {"sample_time": report.sample_time, "spectral_radius": number(report.spectral_radius),
-            "coupled_radius": number(report.coupled_radius), "stable": report.stable,
+            "stable": report.stable,
             "loops": [{"axis": x.axis, "loop": x.loop, "spectral_radius": number(x.spectral_radius),
                        "damping": number(x.damping), "natural_frequency_hz": number(x.natural_frequency_hz),
                        "gain_margin_db": number(x.gain_margin_db), "phase_margin_deg": number(x.phase_margin_deg),

@@ -74,8 +74,9 @@ class Stability:
     ----------
     loops : tuple of LoopStability
         One per task axis, in the controller's order.
-    coupled_radius : float
-        The spectral radius of the whole closed loop (every axis, coupled through the arm).
+    spectral_radius : float
+        The spectral radius of the whole closed loop (every axis, coupled through the arm): the verdict
+        (each loop alone is its own :class:`LoopStability`).
     sample_time : float
         ``T`` [s].
 
@@ -92,17 +93,12 @@ class Stability:
     """
 
     loops: tuple[LoopStability, ...]
-    coupled_radius: float
+    spectral_radius: float
     sample_time: float
 
     @property
-    def spectral_radius(self) -> float:
-        """The largest spectral radius over the loops, alone and coupled."""
-        return max([self.coupled_radius] + [loop.spectral_radius for loop in self.loops])
-
-    @property
     def stable(self) -> bool:
-        """Whether every loop, and the whole, is stable."""
+        """Whether the whole closed loop is stable (its spectral radius below 1)."""
         return self.spectral_radius < 1.0
 
     def loop(self, axis: str) -> LoopStability:
@@ -146,7 +142,7 @@ class Stability:
     def __str__(self) -> str:
         verdict = "stable" if self.stable else "UNSTABLE"
         lines = [f"sampled loops at T = {self.sample_time:g} s: {verdict} (spectral radius "
-                 f"{self.spectral_radius:.4g}; coupled {self.coupled_radius:.4g})"]
+                 f"{self.spectral_radius:.4g})"]
         for x in self.loops:
             late = f"{'>= ' * (x.delay_margin_samples == MOST_DELAY)}{x.delay_margin_samples}"
             lines.append(f"  {x.axis:7s} {x.loop:8s} radius {x.spectral_radius:.4g}  damping {x.damping:.3g}  "
@@ -336,7 +332,7 @@ def check_stable(exp) -> None:
         radius = x.spectral_radius
     else:
         what, rule = "the loops coupled through the arm", "each is stable alone: lower the gains or sample_time"
-        radius = report.coupled_radius
+        radius = report.spectral_radius
     why = (f"spectral radius {radius:.3g} >= 1" if math.isfinite(radius) else
            f"a gain times sample_time or the stiffness overflows: {_largest(g)}")
     scale = np.diag(np.asarray(p["gain"], float))
