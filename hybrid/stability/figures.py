@@ -22,7 +22,7 @@ def stability_map_figure(smap, title: str | None = None) -> Figure:
     fig = Figure(figsize=(4.2 * len(levels) + 1.2, 4.0), layout="constrained")
     axes = fig.subplots(1, len(levels), squeeze=False)[0]
     mesh = None
-    low = float(np.clip(np.nanmin(table["spectral_radius"], initial=0.0), 0.0, 0.99))
+    low = float(np.clip(np.nanmin(table["spectral_radius"], initial=1.0), 0.0, 0.99))
     norm = TwoSlopeNorm(1.0, low, TOP)  # stable greens from the map's smallest radius, unstable reds
     for ax, level in zip(axes, levels):
         part = table if level is None else table[table[third] == level]
@@ -36,8 +36,8 @@ def stability_map_figure(smap, title: str | None = None) -> Figure:
         for axis, values in (("x", x), ("y", y)):
             if _logarithmic(values):
                 getattr(ax, f"set_{axis}scale")("log")
-        ax.set_xlabel(names[0])
-        ax.set_ylabel(names[1])
+        ax.set_xlabel(_label(names[0]))
+        ax.set_ylabel(_label(names[1]))
         if level is not None:
             ax.set_title(f"{third} = {level:g}")
     fig.colorbar(mesh, ax=list(axes), label="spectral radius (stable below 1; black: the boundary)")
@@ -63,11 +63,22 @@ def _curve(table, name: str, title: str | None) -> Figure:
     if _logarithmic(x):
         ax.set_xscale("log")
     ax.set_ylim(0.0, min(TOP, max(1.1, np.nanmax(r, initial=1.0) * 1.05)))
-    ax.set_xlabel(name)
+    ax.set_xlabel(_label(name))
     ax.set_ylabel("spectral radius")
     ax.legend(loc="best")
     ax.set_title(title or "stability of the sampled loops")
     return fig
+
+
+#: the unit of each setting a map varies, by the end of its name
+UNITS = {"stiffness": "N/m", "damping": "N s/m", "mass": "kg", "sample_time": "s", "delay_samples": "samples",
+         "bandwidth_hz": "Hz", "cutoff": "Hz", "KPv": "1/s", "KIv": "1/s^2", "KI2v": "1/s^3", "KPf": "1/kg",
+         "KDf": "1/s", "KIf": "1/(kg s)"}
+
+
+def _label(name: str) -> str:
+    unit = UNITS.get(name.rsplit(".", 1)[-1])
+    return f"{name} [{unit}]" if unit else name
 
 
 def _logarithmic(values) -> bool:

@@ -138,7 +138,8 @@ def stability_map(exp, over: Mapping) -> StabilityMap:
             radius[chunk] = _radii(st, p, base, paths, {n: grid[n][chunk] for n in names})
     import pandas as pd
 
-    table = pd.DataFrame({**grid, "spectral_radius": radius, "stable": radius < 1.0})
+    whole = {name: grid[name].astype(int) if paths[name] == "sensor.delay_samples" else grid[name] for name in names}
+    table = pd.DataFrame({**whole, "spectral_radius": radius, "stable": radius < 1.0})
     return StabilityMap(table, names)
 
 
