@@ -9,10 +9,10 @@ from functools import partial
 from hybrid.bench.first_use import cold_benchmarks, import_benchmarks
 from hybrid.bench.law import PaperLaw
 from hybrid.bench.parts import part_benchmarks
-from hybrid.bench.stability import stability_benchmarks
 from hybrid.bench.paths import path_benchmarks
 from hybrid.bench.robots import ROBOTS, robot_benchmarks, spatial_benchmarks
 from hybrid.bench.runs import loop_operation_benchmarks, sweep_benchmarks, trace_benchmarks
+from hybrid.bench.stability import stability_benchmarks
 from hybrid.bench.standalone import standalone_benchmarks
 from hybrid.errors import HybridError
 
