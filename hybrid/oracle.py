@@ -13,6 +13,7 @@ from functools import cache
 import numpy as np
 
 from hybrid.errors import HybridError, NonFiniteError, SingularConfigurationError
+from hybrid.models.planar_arm import dynamics, kinematics  # the arm's closed form in NumPy
 from hybrid.plants.planar import planar_record
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.runner import run
@@ -21,38 +22,10 @@ from hybrid.validate import shown
 SURFACE_KINDS = ("plane", "circle")
 
 
-def kinematics(q, qd, arm):
-    """``r`` [m], ``J`` (2x2), ``J'(q, q') q'`` [m/s^2] of the two-link arm."""
-    L1, L2 = arm[0], arm[1]
-    c1, s1, c12, s12 = np.cos(q[0]), np.sin(q[0]), np.cos(q[0] + q[1]), np.sin(q[0] + q[1])
-    r = np.array([L1 * c1 + L2 * c12, L1 * s1 + L2 * s12])
-    J = np.array([[-L1 * s1 - L2 * s12, -L2 * s12], [L1 * c1 + L2 * c12, L2 * c12]])
-    w1, w12 = qd[0], qd[0] + qd[1]
-    Jdqd = -np.array([L1 * c1 * w1**2 + L2 * c12 * w12**2, L1 * s1 * w1**2 + L2 * s12 * w12**2])
-    return r, J, Jdqd
-
-
 def conditioning(q, arm):
     """Distance of ``J(q)`` from singularity, ``2 |det J| / ||J||_F^2`` in [0, 1] (about ``|sin q2|``)."""
     J = kinematics(q, (0.0, 0.0), arm)[1]
     return 2.0 * abs(np.linalg.det(J)) / float(np.sum(J * J))
-
-
-def dynamics(q, qd, arm):
-    """``B(q)`` [kg m^2] and ``n(q, q')`` [N m]: Coriolis/centrifugal, viscous, gravity (-y)."""
-    L1, _, m1, m2, d1, d2, I1, I2, V1, V2, g = arm
-    c2, s2 = np.cos(q[1]), np.sin(q[1])
-    b22 = I2 + m2 * d2**2
-    b12 = b22 + m2 * L1 * d2 * c2
-    b11 = I1 + m1 * d1**2 + b22 + m2 * L1**2 + 2 * m2 * L1 * d2 * c2
-    B = np.array([[b11, b12], [b12, b22]])
-    h = m2 * L1 * d2 * s2
-    c1, c12 = np.cos(q[0]), np.cos(q[0] + q[1])
-    grav2 = g * m2 * d2 * c12
-    grav1 = g * (m1 * d1 + m2 * L1) * c1 + grav2
-    n = np.array([-h * (2 * qd[0] * qd[1] + qd[1] ** 2) + V1 * qd[0] + grav1,
-                  h * qd[0] ** 2 + V2 * qd[1] + grav2])
-    return B, n
 
 
 def frame(kind, r, rd, surface):

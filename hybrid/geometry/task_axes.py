@@ -68,3 +68,22 @@ def frame_direction_of(e) -> np.ndarray:
 @lru_cache(maxsize=256)
 def _unit_direction(e: tuple) -> tuple:
     return unit_vector("decoupling_law", "frame_direction", e)
+
+
+def frame_rows(normal, e) -> np.ndarray:
+    """The task frame's rows ``t1 = e x n / |e x n|``, ``t2 = n x t1``, ``n`` (3 x 3, base axes) for the unit
+    normal ``n`` and the direction ``e``; a normal of 2 coordinates is in the base xy-plane.
+
+    Raises
+    ------
+    HybridError
+        ``e`` parallel to ``n``: the frame is undefined.
+    """
+    n = np.zeros(3)
+    n[:len(normal)] = normal
+    c = np.cross(np.asarray(e, float), n)
+    if np.linalg.norm(c) < 1e-12:
+        raise HybridError("the task frame's direction e is parallel to the surface normal: the frame is undefined; "
+                          "choose another frame_direction")
+    t1 = c / np.linalg.norm(c)
+    return np.array([t1, np.cross(n, t1), n])

@@ -18,7 +18,7 @@ from hybrid.errors import HybridError
 from hybrid.geometry.surfaces import Surface
 from hybrid.geometry.task_axes import AXES
 from hybrid.models.chain_terms import robot_terms
-from hybrid.models.planar_arm import Arm
+from hybrid.models.planar_arm import Arm, dynamics, kinematics
 from hybrid.validate import finite_array, shown
 
 
@@ -53,6 +53,14 @@ class SerialChain:
 
     def reach(self) -> tuple[float, float] | None:
         return None
+
+    def rest_terms(self, robot, q) -> dict[str, np.ndarray]:
+        """At rest at each row of ``q`` (N x n): the tip ``r`` [m] (its coordinates in the robot's space: 3,
+        the planar arm's 2), the frame Jacobian ``J`` (N x 6 x n, linear rows first, base axes), ``B``
+        and the gravity torque ``g`` [N m]."""
+        rows = np.atleast_2d(np.asarray(q, float))
+        t = robot_terms(robot, rows, np.zeros_like(rows))
+        return {"r": t["r"], "J": t["J"], "B": t["B"], "g": t["n"]}  # at rest n is gravity's alone
 
     def inverse_kinematics(self, robot, position, rotation, q0, tol: float, elbow: int) -> np.ndarray:
         """Damped least squares from ``q0`` (default: mid-range of the limits) to the tip's ``position``
@@ -137,6 +145,19 @@ class ClosedFormArm(SerialChain):
 
     def reach(self) -> tuple[float, float]:
         return self.arm.reach()
+
+    def rest_terms(self, robot, q) -> dict[str, np.ndarray]:
+        # the closed form in NumPy (no native unit to build): its plane's rows of the frame Jacobian, both
+        # joints turning about base z
+        rows = np.atleast_2d(np.asarray(q, float))
+        p = self.arm.as_array()
+        kin = [kinematics(row, (0.0, 0.0), p) for row in rows]
+        dyn = [dynamics(row, (0.0, 0.0), p) for row in rows]
+        J = np.zeros((len(rows), 6, 2))
+        J[:, :2] = [k[1] for k in kin]
+        J[:, 5] = 1.0
+        return {"r": np.array([k[0] for k in kin]), "J": J, "B": np.array([d[0] for d in dyn]),
+                "g": np.array([d[1] for d in dyn])}
 
     def inverse_kinematics(self, robot, position, rotation, q0, tol: float, elbow: int) -> np.ndarray:
         """In closed form (``elbow`` +1 for ``q2 > 0``, -1 for ``q2 < 0``; the orientation follows from the

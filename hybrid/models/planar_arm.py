@@ -97,11 +97,7 @@ class Arm:
         numpy.ndarray
             ``B(q)``, 2 x 2.
         """
-        c = math.cos(q2)
-        b22 = self.I2 + self.m2 * self.d2**2
-        b12 = b22 + self.m2 * self.L1 * self.d2 * c
-        b11 = self.I1 + self.m1 * self.d1**2 + b22 + self.m2 * self.L1**2 + 2 * self.m2 * self.L1 * self.d2 * c
-        return np.array([[b11, b12], [b12, b22]])
+        return dynamics((0.0, q2), (0.0, 0.0), self.as_array())[0]
 
     def as_array(self) -> np.ndarray:
         """The ``arm[11]`` array of the generated C.
@@ -221,3 +217,34 @@ def paper_arm() -> Arm:
     [[1.67, 0.475], [0.475, 0.2388]]
     """
     return Arm(L1=0.45, L2=0.32, m1=0.0, m2=3.5, d1=0.0, d2=0.15, I1=0.25, I2=0.16, V1=1.3, V2=0.2)
+
+
+# ------------------------------------------------------------ the closed form in NumPy
+
+
+def kinematics(q, qd, arm):
+    """``r`` [m], ``J`` (2x2), ``J'(q, q') q'`` [m/s^2] of the two-link arm."""
+    L1, L2 = arm[0], arm[1]
+    c1, s1, c12, s12 = np.cos(q[0]), np.sin(q[0]), np.cos(q[0] + q[1]), np.sin(q[0] + q[1])
+    r = np.array([L1 * c1 + L2 * c12, L1 * s1 + L2 * s12])
+    J = np.array([[-L1 * s1 - L2 * s12, -L2 * s12], [L1 * c1 + L2 * c12, L2 * c12]])
+    w1, w12 = qd[0], qd[0] + qd[1]
+    Jdqd = -np.array([L1 * c1 * w1**2 + L2 * c12 * w12**2, L1 * s1 * w1**2 + L2 * s12 * w12**2])
+    return r, J, Jdqd
+
+
+def dynamics(q, qd, arm):
+    """``B(q)`` [kg m^2] and ``n(q, q')`` [N m]: Coriolis/centrifugal, viscous, gravity (-y)."""
+    L1, _, m1, m2, d1, d2, I1, I2, V1, V2, g = arm
+    c2, s2 = np.cos(q[1]), np.sin(q[1])
+    b22 = I2 + m2 * d2**2
+    b12 = b22 + m2 * L1 * d2 * c2
+    b11 = I1 + m1 * d1**2 + b22 + m2 * L1**2 + 2 * m2 * L1 * d2 * c2
+    B = np.array([[b11, b12], [b12, b22]])
+    h = m2 * L1 * d2 * s2
+    c1, c12 = np.cos(q[0]), np.cos(q[0] + q[1])
+    grav2 = g * m2 * d2 * c12
+    grav1 = g * (m1 * d1 + m2 * L1) * c1 + grav2
+    n = np.array([-h * (2 * qd[0] * qd[1] + qd[1] ** 2) + V1 * qd[0] + grav1,
+                  h * qd[0] ** 2 + V2 * qd[1] + grav2])
+    return B, n

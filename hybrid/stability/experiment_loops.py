@@ -1,10 +1,11 @@
 """An experiment's sampled loops as the numbers of :mod:`hybrid.stability.model`, at its start.
 
-The arm's terms are taken where the run starts (the contact at rest): the task Jacobian ``J_t`` from the
-controller's own measurement (the task velocities per unit joint velocity, in its task frame and axes),
-the true arm's ``B`` and viscosities ``V_q``, the controller's model's. So ``G = J_t B^-1 J_t^T``,
-``M = G Lambda_hat`` with ``Lambda_hat = (J_t B_hat^-1 J_t^T)^-1``, ``V = J_t B^-1 V_q J_t^+`` (and
-``V_hat`` of the model's ``V_q``), ``K = J_t B^-1 d(J^T F_0 - g)/dq J_t^+``.
+The arm's terms are taken where the run starts (the contact at rest), from the robot's kind
+(:meth:`~hybrid.models.kinds.SerialChain.rest_terms`: no controller is built for it): the task Jacobian
+``J_t`` (the frame Jacobian's rows in the task frame at the start point, the controller's axes), the true
+arm's ``B`` and viscosities ``V_q``, the controller's model's. So ``G = J_t B^-1 J_t^T``, ``M = G
+Lambda_hat`` with ``Lambda_hat = (J_t B_hat^-1 J_t^T)^-1``, ``V = J_t B^-1 V_q J_t^+`` (and ``V_hat`` of
+the model's ``V_q``), ``K = J_t B^-1 d(J^T F_0 - g)/dq J_t^+``.
 """
 
 from __future__ import annotations
@@ -15,19 +16,21 @@ import numpy as np
 
 from hybrid.control.wrench_sensor import filter_coefficients
 from hybrid.errors import HybridError
-from hybrid.models.terms import arm_terms
+from hybrid.geometry.task_axes import check_axes, frame_rows
 from hybrid.stability.model import Structure
 
 #: task-axis indices below this are linear (t1, t2, n), the rest rotations
 LINEAR_AXES = 3
+#: the task axis a force loop acts on (the experiments' selection: the normal)
+FORCE_AXIS = 2
 
 #: the model's numbers that are matrices over the task axes
 MATRICES = ("mobility", "gain", "viscosity", "compensated_viscosity", "held_stiffness")
 
 
 def arm_terms_at_start(exp) -> dict[str, np.ndarray]:
-    """The task-axis matrices (:data:`MATRICES`) of ``exp`` at its start, with the
-    controller's ``axes`` (indices 0-5) and ``selection`` (1: a force axis).
+    """The task-axis matrices (:data:`MATRICES`) of ``exp`` at its start, with the controller's ``axes``
+    (indices 0-5) and which of them are ``force`` axes.
 
     Raises
     ------
@@ -36,47 +39,38 @@ def arm_terms_at_start(exp) -> dict[str, np.ndarray]:
     """
     x0 = exp.initial_state()
     n = exp.robot.n
-    model = exp.controller_model()
-    controller = exp.build_controller()
-    tip = arm_terms_of(exp.robot, x0[:n])
-    d = len(tip)  # the sensor's spring force on the robot at the start, base axes
-    wrench = exp.sensor.stiffness * (x0[2 * n:2 * n + d] - tip)
-    key = (exp.robot, model, tuple(x0[:n].tolist()), tuple(wrench.tolist()))
-    return _terms(key, controller)
-
-
-def arm_terms_of(robot, q) -> np.ndarray:
-    """The arm tip's position [m] at ``q`` (2 coordinates for the planar arm, else 3)."""
-    return np.asarray(arm_terms(robot, q, np.zeros_like(q))["r"], float)
-
-
-def _terms(key, controller) -> dict:
-    cached = _TERMS.get(key)
-    if cached is None:
-        robot, model, q, wrench = key
-        cached = _TERMS[key] = _worked_out(robot, model, np.array(q), np.array(wrench), controller)
+    R = frame_rows(exp._geometry().normal_at(tuple(np.asarray(exp.start()).tolist())), exp.frame_direction)
+    axes = check_axes(exp.robot, exp.axes)
+    key = (exp.robot, exp.controller_model(), tuple(x0[:n].tolist()), tuple(x0[2 * n:].tolist()),
+           exp.sensor.stiffness, tuple(R.ravel().tolist()), axes)
+    found = _TERMS.get(key)
+    if found is None:
+        found = _TERMS[key] = _worked_out(exp.robot, exp.controller_model(), x0, R, axes, exp.sensor.stiffness)
         if len(_TERMS) > 1024:
             _TERMS.pop(next(iter(_TERMS)))
-    return cached
+    return found
 
 
 _TERMS: dict = {}
 
 
-def _worked_out(robot, model, q: np.ndarray, wrench: np.ndarray, controller) -> dict:
+def _worked_out(robot, model, x0: np.ndarray, R: np.ndarray, axes: tuple, K_s: float) -> dict:
     n = robot.n
-    axes = tuple(controller.axes)
-    # J_t: the controller's task velocities (its frame, its axes) per unit joint velocity
-    Jt = np.stack([controller.measure(q, e, np.zeros(6)).task_velocity[list(axes)] for e in np.eye(n)], axis=1)
-    B = arm_terms(robot, q, np.zeros(n))["B"]
-    B_hat = arm_terms(model, q, np.zeros(n))["B"]
+    q = x0[:n]
+    here = robot.kind.rest_terms(robot, q)
+    tip = here["r"][0]
+    wrench = K_s * (x0[2 * n:2 * n + len(tip)] - tip)  # the sensor's spring on the robot at the start, base axes
+    rotate = np.kron(np.eye(2), R)                     # twists into the task frame, linear then angular
+    Jt = (rotate @ here["J"][0])[list(axes)]
+    B = here["B"][0]
+    B_hat = model.kind.rest_terms(model, q)["B"][0]
     G = Jt @ np.linalg.solve(B, Jt.T)
     Lambda_hat = np.linalg.inv(Jt @ np.linalg.solve(B_hat, Jt.T))
     pinv = np.linalg.pinv(Jt)
     viscosity = {name: Jt @ np.linalg.solve(B, np.diag(np.asarray(arm.damping, float)) @ pinv)
                  for name, arm in (("viscosity", robot), ("compensated_viscosity", model))}
     K = Jt @ np.linalg.solve(B, _held_stiffness(robot, q, wrench) @ pinv)
-    force = tuple(bool(s) for s in controller.selection)
+    force = tuple(axis == FORCE_AXIS for axis in axes)
     return {"mobility": G, "gain": G @ Lambda_hat, **viscosity, "held_stiffness": K, "axes": axes, "force": force}
 
 
@@ -85,11 +79,10 @@ def _held_stiffness(robot, q: np.ndarray, wrench: np.ndarray, step: float = 1e-6
     as its configuration leaves the sample's, whose ``J^T F_0`` and gravity the held torque carries."""
     n = robot.n
     Q = q + step * np.concatenate([np.eye(n), -np.eye(n)])
-    terms = arm_terms(robot, Q, np.zeros_like(Q))
-    J, g = np.asarray(terms["J"]), np.asarray(terms["n"])
-    W = np.zeros(J.shape[1])
+    terms = robot.kind.rest_terms(robot, Q)
+    W = np.zeros(6)
     W[:len(wrench)] = wrench
-    held = np.einsum("kij,i->kj", J, W) - g
+    held = np.einsum("kij,i->kj", terms["J"], W) - terms["g"]
     return ((held[:n] - held[n:]) / (2 * step)).T
 
 

@@ -172,7 +172,11 @@ def expm(M: np.ndarray) -> np.ndarray:
     :data:`TAYLOR_ORDER` terms and squared ``s`` times: a few batched products for the whole stack
     (SciPy's ``expm`` takes the matrices one by one). Non-finite entries give a non-finite result.
     """
-    M = np.asarray(M, float)
+    with np.errstate(over="ignore", invalid="ignore"):  # a matrix beyond the floats' range gives inf or NaN
+        return _expm(np.asarray(M, float))
+
+
+def _expm(M: np.ndarray) -> np.ndarray:
     norm = np.abs(M).sum(axis=-2).max(axis=-1)                     # the 1-norm of each
     with np.errstate(divide="ignore", invalid="ignore"):
         s = np.where(norm > TAYLOR_NORM, np.ceil(np.log2(norm / TAYLOR_NORM)), 0.0)
