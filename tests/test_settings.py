@@ -125,13 +125,13 @@ WITH_PHYSICS_BASES = [hybrid.paper_experiment(), hybrid.tracing_experiment(frame
 
 
 @pytest.mark.parametrize("base", WITH_PHYSICS_BASES)
-def test_only_three_checks_read_an_experiments_physics(base, monkeypatch):
-    """What Experiment.with_physics rests on: of the checks, only these three read PHYSICS."""
+def test_only_four_checks_read_an_experiments_physics(base, monkeypatch):
+    """What Experiment.with_physics rests on: of the checks, only these four read PHYSICS."""
     import dataclasses
 
     from hybrid.experiments import experiment
 
-    for name in ("check_common_types", "check_sensing", "check_timing"):
+    for name in ("check_common_types", "check_sensing", "check_timing", "check_stable"):
         monkeypatch.setattr(experiment, name, lambda exp: None)
     dataclasses.replace(base, **{name: _Untouched() for name in experiment.PHYSICS})
 

@@ -49,13 +49,14 @@ from hybrid.native.standalone import generate_experiment
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.plants.registry import generated_plant_class
 from hybrid.spec.interfaces import PRINTERS
+from hybrid.stability.analysis import check_stable
 from hybrid.validate import SINGULAR_TOL, _point, shown
 
 #: the committed units that can run the closed-form plant and law (the same equations, two printers)
 BACKENDS = PRINTERS  # the closed form's units the plant and the law may take
 
 #: an experiment's physics: the controller's model error, the plant's sensor and contact. Of the
-#: experiment's checks only ``check_common_types``, ``check_sensing`` and ``check_timing`` read them
+#: experiment's checks only ``check_common_types``, ``check_sensing``, ``check_timing`` and ``check_stable`` read them
 #: (:meth:`Experiment.with_physics` runs those alone)
 PHYSICS = frozenset({"model_error", "viscous_compensation", "sensor", "contact"})
 
@@ -178,8 +179,8 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     step = renamed_attribute("step", "integration_step")
 
     def __post_init__(self):
-        # the checks that read PHYSICS are check_common_types, check_sensing and check_timing: keep it so
-        # (with_physics runs them alone)
+        # the checks that read PHYSICS are check_common_types, check_sensing, check_timing and check_stable: keep
+        # it so (with_physics runs them alone). check_stable, which judges the whole, comes last
         task_references(self)
         check_common_types(self)
         if self.controller not in SCHEMES:
@@ -245,6 +246,7 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         self.fault_reaction.check_sampling(self.sample_time)
         if self.path_task is not None:
             self.path_task.check_sampling(self.sample_time)
+        check_stable(self)
 
     def with_physics(self, **changes) -> Experiment:
         """This experiment with other settings of :data:`PHYSICS`: what ``dataclasses.replace(self,
@@ -262,6 +264,7 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         check_common_types(exp)  # in __post_init__'s order: the first refusal is the one it would raise
         check_sensing(exp)
         check_timing(exp)
+        check_stable(exp)
         return exp
 
     @classmethod

@@ -15,7 +15,6 @@ from hybrid.deprecation import RENAMED, renamed_settings
 from hybrid.errors import HybridError
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.spec.axes import AXIS_NAMES
-from hybrid.stability.analysis import check_stable
 from hybrid.user_warnings import RedundancyWarning, warn
 from hybrid.validate import _finite, check_singular_tol, check_size, shown
 
@@ -210,7 +209,6 @@ def check_timing(exp) -> None:
     if not isinstance(exp.allow_unstable, bool):
         raise HybridError(f"allow_unstable = {shown(exp.allow_unstable, 40)}; give True (run loops predicted unstable) "
                           "or False")
-    check_stable(exp)
 
 
 #: short names of the references
