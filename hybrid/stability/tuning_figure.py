@@ -43,7 +43,7 @@ def _history(ax, result) -> None:
     finite = value[np.isfinite(value)]
     if len(finite) and finite.min() > 0 and finite.max() / finite.min() > 20:
         ax.set_yscale("log")
-    ax.legend(loc="upper right", fontsize="small")
+    ax.legend(loc="center right", fontsize="small")
     ax.grid(True, alpha=0.3)
 
 
@@ -62,7 +62,11 @@ def _scenarios(ax, result) -> None:
     ax.set_xticks(x, [str(i) for i in part["scenario"].drop_duplicates().sort_values().to_numpy()[order]],
                   fontsize="small")
     ax.set_xlabel(f"{'held-out' if where == 'held_out' else 'training'} scenario")
-    ax.set_ylabel("a run's objective")
+    (metric,) = result.objective if len(result.objective) == 1 else ("objective",)
+    ax.set_ylabel(f"a run's {metric}")
+    top = np.nanmax(np.where(np.isfinite(np.r_[tuned, before]), np.r_[tuned, before], np.nan), initial=0.0)
+    if top > 0:
+        ax.set_ylim(0.0, 1.3 * top)  # room for the legend above the bars
     summary = (f"{result.aggregate}: {result.held_out_before:.4g} -> {result.held_out:.4g}" if where == "held_out"
                else f"{result.aggregate}: {result.training_before:.4g} -> {result.training:.4g}")
     ax.set_title(summary, fontsize="medium")
