@@ -23,7 +23,7 @@ The public API, by subpackage:
 - experiments and simulation: the one :class:`Experiment` type and its factories
   (:func:`paper_experiment`, :func:`tracing_experiment`, :func:`panda_experiment`), the plant's
   :class:`Sensor` and :class:`Contact`, :func:`simulate`, :class:`SimulationResult`, :func:`metrics`;
-  sweeps (:func:`sweep`);
+  sweeps (:func:`sweep`); gains tuned across scenarios with a stability margin kept (:func:`tune`);
 - :class:`HybridError`, the base of every error raised on bad input; :class:`LargeModelWarning`,
   warned for a chain whose code takes minutes to generate; :class:`JointLimitWarning`, for a run that
   left the robot's joint limits; :class:`RedundancyWarning`, for a redundant arm without a posture task.
@@ -92,6 +92,7 @@ if TYPE_CHECKING:  # type checkers see the lazy names' real signatures
     from hybrid.geometry.parts import MeshSurface, PointCloudSurface
     from hybrid.stability.gains import GainSuggestion, suggest_gains
     from hybrid.stability.maps import StabilityMap, stability_map
+    from hybrid.stability.tuning import Tuning, tune
     from hybrid.sweeps import sweep
 
 #: public names loaded on first use (what they need is heavy: SymPy, pandas; a TOML parser and its schema)
@@ -99,7 +100,8 @@ _LAZY = {"ImplicitSurface": "hybrid.geometry.implicit", "MeshSurface": "hybrid.g
          "PointCloudSurface": "hybrid.geometry.parts", "sweep": "hybrid.sweeps",
          "read_controller_config": "hybrid.control.config", "stability_map": "hybrid.stability.maps",
          "StabilityMap": "hybrid.stability.maps", "suggest_gains": "hybrid.stability.gains",
-         "GainSuggestion": "hybrid.stability.gains"}
+         "GainSuggestion": "hybrid.stability.gains",
+         "tune": "hybrid.stability.tuning", "Tuning": "hybrid.stability.tuning"}
 
 
 def __getattr__(name: str):
@@ -135,4 +137,5 @@ __all__ = [
     "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config",
     "regressor", "simulate", "stability", "stability_map", "suggest_gains",
     "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
+    "Tuning", "tune",
 ]

@@ -55,6 +55,8 @@ LAZY_IMPORTS = {
     ("hybrid.stability.maps", "hybrid.stability.figures"): "matplotlib loads only when a map is drawn",
     ("hybrid.cli.stability", "hybrid.stability.figures"): "matplotlib loads only when the command draws a map",
     ("hybrid.stability.figures", "hybrid.plots"): "pyplot loads only when a map is written to a file",
+    ("hybrid.stability.tuning", "hybrid.stability.tuning_figure"): "matplotlib loads only when a tuning is drawn",
+    ("hybrid.cli.tune", "hybrid.plots"): "matplotlib loads only when a tuning draws its figure",
     ("hybrid.control.config", "hybrid.geometry.implicit"):
         "SymPy loads only when a controller file writes its surface as a formula",
 }

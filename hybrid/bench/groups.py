@@ -14,6 +14,7 @@ from hybrid.bench.robots import ROBOTS, robot_benchmarks, spatial_benchmarks
 from hybrid.bench.runs import loop_operation_benchmarks, sweep_benchmarks, trace_benchmarks
 from hybrid.bench.stability import stability_benchmarks
 from hybrid.bench.standalone import standalone_benchmarks
+from hybrid.bench.tuning import tuning_benchmarks
 from hybrid.errors import HybridError
 
 
@@ -65,5 +66,7 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
                ("parts: a fine mesh's fit, the controller's sample and the 3-D run on a part against the formula's",
                 partial(part_benchmarks, quick, add)),
                ("stability: a map of 10^4 points of the paper's loops, one report with its margins",
-                partial(stability_benchmarks, quick, add))]
+                partial(stability_benchmarks, quick, add)),
+               ("tuning: the paper's force gains by hybrid.tune over 20 scenarios, a 6 dB margin kept",
+                partial(tuning_benchmarks, quick, add))]
     return groups

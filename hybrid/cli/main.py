@@ -21,6 +21,7 @@ from hybrid.cli import experiments as experiment_cli
 from hybrid.cli import regenerate as regenerate_cli
 from hybrid.cli import stability as stability_cli
 from hybrid.cli import sweep as sweep_cli
+from hybrid.cli import tune as tune_cli
 from hybrid.control.config import read_controller_config
 from hybrid.deprecation import MESSAGE
 from hybrid.errors import HybridError
@@ -149,6 +150,7 @@ def build_parser(prog: str = "hybrid") -> argparse.ArgumentParser:
     experiment_cli.add_parser(sub)
     sweep_cli.add_parser(sub)
     stability_cli.add_parser(sub)
+    tune_cli.add_parser(sub)
     bench.add_parser(sub)
     return p
 

@@ -5,11 +5,14 @@ Each engine yields the rows of each chunk (:func:`~hybrid.sweeps.plan.run_points
 
 from __future__ import annotations
 
+import contextlib
 import importlib
+from collections.abc import Iterator
 
 from hybrid.errors import HybridError
+from hybrid.native.binding import workers as cores
 from hybrid.simulation import closed_loop
-from hybrid.sweeps.plan import run_points
+from hybrid.sweeps.plan import _chunks, run_points
 from hybrid.sweeps.space import apply
 from hybrid.validate import shown
 
@@ -136,6 +139,37 @@ def _dask(base, chunks, client, workers: int, timeout: float = CONNECT_TIMEOUT):
                 raise HybridError(f"a Dask task of the sweep failed ({type(exc).__name__}); finished chunks are "
                                   f"kept with out=, run it again to resume\n  {exc}") from None
             yield rows
+    finally:
+        if own:
+            cluster = client.cluster
+            client.close()
+            if cluster is not None:
+                cluster.close()
+
+
+def run_batch(base, todo: list[tuple[int, dict]], *, workers: int | None = None, client=None,
+              timeout: float = CONNECT_TIMEOUT) -> list[dict]:
+    """The rows of the runs ``todo`` (``(index, settings)``, settings applied to ``base`` as a sweep applies
+    them) in the order given, run as one batch: in chunks on this machine's processes (``workers``, default
+    every core), or on the Dask cluster of ``client`` (a connected ``dask.distributed.Client``, left open:
+    :func:`dask_client`). Every run is a row, as in a sweep (:func:`~hybrid.sweeps.plan.run_points`)."""
+    if not todo:
+        return []
+    workers = max(1, min(workers or cores(), len(todo)))
+    chunks = _chunks(todo, workers)
+    results = _local(base, chunks, workers) if client is None else _dask(base, chunks, client, workers, timeout)
+    rows = {int(row["run"]): row for chunk in results for row in chunk}
+    return [rows[index] for index, _ in todo]
+
+
+@contextlib.contextmanager
+def dask_client(client, workers: int, timeout: float = CONNECT_TIMEOUT) -> Iterator:
+    """A connected Dask client for many batches (:func:`run_batch`): ``client`` itself, one to the scheduler
+    at the address ``client``, or one of a new local cluster of ``workers`` processes for None; those made
+    here are closed at the end."""
+    client, own = _connect(client, workers, timeout)
+    try:
+        yield client
     finally:
         if own:
             cluster = client.cluster
