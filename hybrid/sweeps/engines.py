@@ -124,8 +124,7 @@ def _dask(base, chunks, client, workers: int, timeout: float = CONNECT_TIMEOUT):
     """Chunks as Dask tasks (retried when a worker dies), as they finish."""
     from dask.distributed import as_completed
 
-    client, own = _connect(client, workers, timeout)
-    try:
+    with dask_client(client, workers, timeout) as client:
         try:
             base_future = client.scatter(base, broadcast=True, timeout=timeout)
             futures = client.map(run_points, [base_future] * len(chunks), chunks, pure=False, retries=3)
@@ -139,12 +138,6 @@ def _dask(base, chunks, client, workers: int, timeout: float = CONNECT_TIMEOUT):
                 raise HybridError(f"a Dask task of the sweep failed ({type(exc).__name__}); finished chunks are "
                                   f"kept with out=, run it again to resume\n  {exc}") from None
             yield rows
-    finally:
-        if own:
-            cluster = client.cluster
-            client.close()
-            if cluster is not None:
-                cluster.close()
 
 
 def run_batch(base, todo: list[tuple[int, dict]], *, workers: int | None = None, client=None,
