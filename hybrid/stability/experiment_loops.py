@@ -14,6 +14,7 @@ import math
 
 import numpy as np
 
+from hybrid.control.schemes import scheme_of
 from hybrid.control.wrench_sensor import filter_coefficients
 from hybrid.errors import HybridError
 from hybrid.geometry.task_axes import check_axes, frame_rows
@@ -103,7 +104,7 @@ def loop_numbers(exp, terms: dict | None = None) -> tuple[Structure, dict]:
                       for f in terms["force"])
     st = Structure(force=terms["force"], linear=tuple(i < LINEAR_AXES for i in terms["axes"]),
                    delay=sensor.delay_samples, lag=sensor.bandwidth_hz is not None, filtered=cutoff is not None,
-                   integrals=integrals)
+                   integrals=integrals, feeds_desired_force=scheme_of(exp.controller).feeds_desired_force)
     p = {"sample_time": T, **{k: terms[k] for k in MATRICES},
          "sensor_mass": sensor.mass, "sensor_stiffness": sensor.stiffness, "sensor_damping": sensor.damping,
          "contact_stiffness": contact.stiffness, "contact_damping": contact.damping,
