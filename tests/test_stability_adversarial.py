@@ -79,3 +79,48 @@ def test_khatibs_scheme_turns_unstable_where_the_task_law_holds():
     with pytest.raises(hybrid.HybridError, match="force loop on n is unstable"):
         hybrid.paper_experiment(sensor=sensor, controller="khatib")
     hybrid.paper_experiment(sensor=sensor)
+
+
+@pytest.mark.filterwarnings("ignore::hybrid.RedundancyWarning")  # the UR5 on its normal axis alone
+@pytest.mark.parametrize("kwargs, match", [
+    ({"bandwidth_hz": {"velocity": 2.0}}, "no velocity axis"),
+    ({"bandwidth_hz": 1e-6}, "none is met from 1e-07 Hz up to it.*give another bandwidth_hz or damping"),
+    ({"bandwidth_hz": np.float64(np.nan)}, "give a frequency in Hz"),
+    ({"bandwidth_hz": np.bool_(True)}, "give a frequency in Hz"),
+    ({"bandwidth_hz": 3.0, "damping": np.bool_(True)}, "damping ratio"),
+])
+def test_bad_gain_requests_are_refused_in_words(kwargs, match):
+    exp = hybrid.tracing_experiment(axes=(2,)) if "velocity" in str(kwargs) else hybrid.paper_experiment()
+    with pytest.raises(hybrid.HybridError, match=match):
+        hybrid.suggest_gains(exp, **kwargs)
+
+
+def test_numpy_numbers_and_any_mapping_ask_for_the_same_gains():
+    from types import MappingProxyType
+
+    exp = hybrid.paper_experiment()
+    plain = hybrid.suggest_gains(exp, bandwidth_hz=3.0, damping=0.8, integral_ratio=0.25).gains
+    for f, zeta, ratio in ((np.int64(3), np.float32(0.8), np.float64(0.25)), (np.float32(3.0), 0.8, np.int8(0))):
+        got = hybrid.suggest_gains(exp, bandwidth_hz=f, damping=zeta, integral_ratio=ratio).gains
+        same = hybrid.suggest_gains(exp, bandwidth_hz=float(f), damping=float(zeta), integral_ratio=float(ratio)).gains
+        assert got == same
+    assert hybrid.suggest_gains(exp, bandwidth_hz=MappingProxyType({"force": 3.0}), damping=0.8).gains == plain
+
+
+def test_suggested_gains_on_the_3d_arms_place_both_loops_and_are_accepted():
+    from hybrid.stability.analysis import _poles, axis_alone
+
+    for factory in (hybrid.tracing_experiment, hybrid.panda_experiment):
+        s = hybrid.suggest_gains(factory(), bandwidth_hz={"force": 4.0, "velocity": 2.0}, damping=0.7)
+        placed = factory(gains=s.gains)  # accepted by the experiment's own check
+        st, p = loop_numbers(placed)
+        for i in range(st.n):
+            found = _poles(closed_loop(*axis_alone(st, p, i))["A"])
+            wanted = s.poles["force" if st.force[i] else "velocity"]
+            off = max(min(abs(found - z)) for z in wanted)
+            # the loop placed (n, and t1 for the velocity loops) exactly; the other velocity axes differ from t1
+            # only in the arm's viscosity and gravity along them
+            assert off < (1e-9 if i in (0, 2) else 1e-2), (factory.__name__, i, off)
+        # from the poles' definition: the pair's damping and frequency, read back from the loop's dominant pole
+        w = 2 * np.pi * 4.0
+        assert min(abs(s.poles["force"] - np.exp(w * (-0.7 + 1j * np.sqrt(1 - 0.49)) * placed.sample_time))) < 1e-12
