@@ -124,3 +124,21 @@ def test_suggested_gains_on_the_3d_arms_place_both_loops_and_are_accepted():
         # from the poles' definition: the pair's damping and frequency, read back from the loop's dominant pole
         w = 2 * np.pi * 4.0
         assert min(abs(s.poles["force"] - np.exp(w * (-0.7 + 1j * np.sqrt(1 - 0.49)) * placed.sample_time))) < 1e-12
+
+
+# ------------------------------------------------------------------------------------------ the edges
+
+def test_a_delay_beyond_what_the_model_takes_is_refused_at_once():
+    import time
+
+    start = time.perf_counter()
+    for d in (101, 10**4, 10**9):
+        with pytest.raises(hybrid.HybridError, match=f"delay_samples = {d} is beyond the 100 samples"):
+            hybrid.paper_experiment(sensor=hybrid.Sensor(delay_samples=d))
+    assert time.perf_counter() - start < 2.0  # (10^4 samples took minutes and gigabytes, 10^9 ran out of memory)
+    late = hybrid.paper_experiment(sensor=hybrid.Sensor(delay_samples=10**4), allow_unstable=True)
+    with pytest.raises(hybrid.HybridError, match="beyond the 100 samples"):
+        hybrid.stability(late)
+    # at the bound itself, judged: the paper's loops do not hold a reading a second late
+    with pytest.raises(hybrid.HybridError, match="force loop on n is unstable"):
+        hybrid.paper_experiment(sensor=hybrid.Sensor(delay_samples=100))

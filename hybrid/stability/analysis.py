@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.stability.experiment_loops import MATRICES, arm_terms_at_start, axis_names, loop_numbers
+from hybrid.stability.experiment_loops import MATRICES, arm_terms_at_start, axis_names, check_delay, loop_numbers
 from hybrid.stability.model import Structure, closed_loop
 
 
@@ -170,7 +170,8 @@ def stability(exp, *, margins: bool = True) -> Stability:
     Raises
     ------
     HybridError
-        The experiment's start cannot be worked out, or it has no force axis.
+        The experiment's start cannot be worked out, it has no force axis, or its reading is later than the
+        model takes (:data:`~hybrid.stability.experiment_loops.MOST_DELAY_SAMPLES`).
 
     Examples
     --------
@@ -312,10 +313,12 @@ def check_stable(exp) -> None:
     Raises
     ------
     HybridError
-        A loop, or the loops coupled, with a spectral radius of at least 1: which, why, what to change.
+        A loop, or the loops coupled, with a spectral radius of at least 1: which, why, what to change; a
+        reading later than the model takes.
     """
     if exp.allow_unstable:
         return
+    check_delay(exp.sensor.delay_samples)
     try:
         st, p = loop_numbers(exp)
         names = axis_names(_axes(exp))

@@ -28,6 +28,18 @@ FORCE_AXIS = 2
 #: the model's numbers that are matrices over the task axes
 MATRICES = ("mobility", "gain", "viscosity", "compensated_viscosity", "held_stiffness")
 
+#: the longest delay of the reading the model takes [samples]: each sample of it adds a state per sensed axis,
+#: and the eigenvalues' cost grows as its cube (a second at 100 samples on the 3-D arms; margins, tens)
+MOST_DELAY_SAMPLES = 100
+
+
+def check_delay(delay: int) -> None:
+    """Refuse a reading's delay longer than the model takes (:data:`MOST_DELAY_SAMPLES`)."""
+    if delay > MOST_DELAY_SAMPLES:
+        raise HybridError(f"Sensor delay_samples = {delay} is beyond the {MOST_DELAY_SAMPLES} samples the sampled "
+                          "loops' model takes (hybrid.stability, and the experiment's check: give a shorter delay, "
+                          "or allow_unstable=True to run it unchecked)")
+
 
 def arm_terms_at_start(exp) -> dict[str, np.ndarray]:
     """The task-axis matrices (:data:`MATRICES`) of ``exp`` at its start, with the controller's ``axes``
@@ -95,6 +107,7 @@ def axis_names(axes) -> tuple[str, ...]:
 
 def loop_numbers(exp, terms: dict | None = None) -> tuple[Structure, dict]:
     """The coupled model's :class:`~hybrid.stability.model.Structure` and numbers for ``exp``."""
+    check_delay(exp.sensor.delay_samples)
     terms = arm_terms_at_start(exp) if terms is None else terms
     g = exp.effective_gains()
     sensor, contact, T = exp.sensor, exp.contact, exp.sample_time

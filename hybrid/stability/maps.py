@@ -19,7 +19,7 @@ from hybrid.control.wrench_sensor import filter_coefficients
 from hybrid.errors import HybridError
 from hybrid.experiments.settings import setting_path
 from hybrid.stability.analysis import _poles, _radius
-from hybrid.stability.experiment_loops import loop_numbers
+from hybrid.stability.experiment_loops import check_delay, loop_numbers
 from hybrid.stability.model import closed_loop
 from hybrid.sweeps.space import apply
 from hybrid.validate import check_size, shown
@@ -188,6 +188,8 @@ def _check_value(exp, name: str, path: str, v: float) -> None:
         value = int(v) if tail == "delay_samples" and v == int(v) else v
         try:
             replace(part, **{tail: value})
+            if path == "sensor.delay_samples":
+                check_delay(value)
         except HybridError as exc:
             raise HybridError(f"{name} = {v:g} in the map: {str(exc).splitlines()[0]}") from None
 
