@@ -81,6 +81,70 @@ def test_khatibs_scheme_turns_unstable_where_the_task_law_holds():
     hybrid.paper_experiment(sensor=sensor)
 
 
+# ------------------------------------------------------------------------------------ bad input, in words
+
+@pytest.mark.parametrize("over, match", [
+    ({"KPf": [True, False]}, "list of finite numbers"),
+    ({"KPf": [1.0, True]}, "list of finite numbers"),
+    ({"KPf": np.array([True, False])}, "list of finite numbers"),
+    ({"KPf": ["1", "2"]}, "list of finite numbers"),
+    ({"KPf": "12"}, "list of finite numbers"),
+    ({"KPf": {1.0, 2.0}}, "list of finite numbers"),
+    ({"KPf": [1.0, None]}, "list of finite numbers"),
+    ({"KPf": [[1.0], [2.0, 3.0]]}, "list of finite numbers"),
+    ({"KPf": [-np.inf]}, "list of finite numbers"),
+    ({"sensor.delay_samples": [1e6]}, "beyond the 100 samples"),
+    ({"sensor.delay_samples": [2, 10**9]}, "beyond the 100 samples"),
+    ({"sensor.stiffness": [1e300]}, "the map's point sensor.stiffness = 1e"),
+    ({"contact.stiffness": [1e3, 1e300]}, "the map's point contact.stiffness = 1e"),
+])
+def test_bad_map_values_are_refused_in_words_before_anything_is_made(over, match):
+    with pytest.raises(hybrid.HybridError, match=match):
+        hybrid.stability_map(hybrid.paper_experiment(), over)
+
+
+def test_a_map_of_every_point_invalid_one_point_or_repeated_values():
+    exp = hybrid.paper_experiment()
+    invalid = hybrid.stability_map(exp, {"sensor.bandwidth_hz": [50.0, 70.0], "KPf": [1.0, 2.0]})
+    assert invalid.table["spectral_radius"].isna().all() and invalid.stable_share == 0.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # no warning of NaN leaks out of the figure
+        invalid.figure()
+        hybrid.stability_map(exp, {"sensor.bandwidth_hz": [50.0, 70.0]}).figure()
+    one = hybrid.stability_map(exp, {"KPf": [2.0], "KDf": [90.0]})
+    assert len(one.table) == 1 and one.table["spectral_radius"][0] == hybrid.stability(exp).spectral_radius
+    one.figure()
+    repeated = hybrid.stability_map(exp, {"KPf": [3.0, 3.0, 1.0, 3.0]}).table["spectral_radius"].to_numpy()
+    assert repeated[0] == repeated[1] == repeated[3] != repeated[2]
+
+
+def test_a_sweep_takes_allow_unstable_and_says_why_a_row_is_refused():
+    rows = hybrid.sweep(hybrid.paper_experiment(duration=0.05), {"sensor.stiffness": [1e3, 2e4],
+                                                                 "allow_unstable": [False, True],
+                                                                 "sensor.delay_samples": [0, 101]}, workers=1)
+    status = {(k, a, d): (s, e) for k, a, d, s, e in rows[["sensor.stiffness", "allow_unstable", "sensor.delay_samples",
+                                                          "status", "error"]].itertuples(index=False)}
+    assert status[(1e3, False, 0)][0] == status[(1e3, True, 0)][0] == status[(2e4, True, 0)][0] == "ok"
+    assert status[(2e4, False, 0)][0] == "invalid" and "force loop on n is unstable" in status[(2e4, False, 0)][1]
+    assert status[(1e3, False, 101)][0] == "invalid" and "beyond the 100 samples" in status[(1e3, False, 101)][1]
+    assert status[(1e3, True, 101)][0] == "ok"
+
+
+def test_the_command_line_refuses_odd_values_before_making_them(tmp_path, capsys):
+    import time
+
+    from hybrid.cli.main import main
+
+    for over in ("KPf=nan", "KPf=1,inf", "KPf=1:nan:3", "KPf=1:inf:3:log", "KPf=1:2:100000000000", "KPf=1:2:0"):
+        start = time.perf_counter()
+        assert main(["stability", "--over", over, "--out", str(tmp_path / "o")]) == 2
+        assert time.perf_counter() - start < 5.0  # nothing of the grid's size made
+        assert "finite numbers" in capsys.readouterr().err
+        assert not (tmp_path / "o").exists()
+    assert main(["stability", "--over", "sensor.delay_samples=0,1e7", "--out", str(tmp_path / "d")]) == 2
+    assert "beyond the 100 samples" in capsys.readouterr().err
+
+
 @pytest.mark.filterwarnings("ignore::hybrid.RedundancyWarning")  # the UR5 on its normal axis alone
 @pytest.mark.parametrize("kwargs, match", [
     ({"bandwidth_hz": {"velocity": 2.0}}, "no velocity axis"),

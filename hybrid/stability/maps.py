@@ -166,15 +166,27 @@ def _path(exp, name) -> str:
 def _values(exp, name: str, path: str, values) -> np.ndarray:
     """``values`` as a 1-D array of finite numbers, each a valid value of the setting (checked as the
     experiment's parts check it)."""
-    try:
-        arr = np.asarray(values, dtype=float)
-    except (TypeError, ValueError):
-        arr = np.full(1, np.nan)
-    if arr.ndim != 1 or not len(arr) or not np.isfinite(arr).all():
+    arr = _numbers(values)
+    if arr is None or arr.ndim != 1 or not len(arr) or not np.isfinite(arr).all():
         raise HybridError(f"the values of {name!r} = {shown(values, 60)}; give a non-empty list of finite numbers")
     for v in np.unique(arr):
         _check_value(exp, name, path, float(v))
     return arr
+
+
+def _numbers(values) -> np.ndarray | None:
+    """``values`` as floats when it is a sequence of real numbers (not text, not True/False), else None."""
+    if isinstance(values, (str, bytes, Mapping)) or not hasattr(values, "__len__"):
+        return None
+    try:
+        arr = np.asarray(values)
+    except (TypeError, ValueError):  # ragged
+        return None
+    if arr.dtype.kind not in "iuf":
+        return None
+    if not isinstance(values, np.ndarray) and any(isinstance(v, (bool, np.bool_)) for v in values):
+        return None  # a bool among numbers (NumPy made them numbers)
+    return arr.astype(float)
 
 
 def _check_value(exp, name: str, path: str, v: float) -> None:
@@ -212,7 +224,12 @@ def _group_base(exp, paths: dict, point: dict):
     stiffness.update({paths[k]: v for k, v in changes.items() if paths[k] in stiffness})
     rate = max(math.sqrt(sum(stiffness.values()) / sensor.mass), (contact.damping + sensor.damping) / sensor.mass)
     steps = max(exp.steps_per_sample, math.ceil(exp.sample_time * rate))
-    return apply(replace(exp, allow_unstable=True, integration_step=exp.sample_time / steps), changes)
+    try:
+        return apply(replace(exp, allow_unstable=True, integration_step=exp.sample_time / steps), changes)
+    except HybridError as exc:
+        point = ", ".join(f"{name} = {value:g}" for name, value in changes.items())
+        raise HybridError(f"the map's point {point} is no experiment: {str(exc).splitlines()[0]}; give values an "
+                          "experiment takes") from None
 
 
 def _radii(st, p: dict, base, paths: dict, grid: dict) -> np.ndarray:
