@@ -206,3 +206,19 @@ def test_a_delay_beyond_what_the_model_takes_is_refused_at_once():
     # at the bound itself, judged: the paper's loops do not hold a reading a second late
     with pytest.raises(hybrid.HybridError, match="force loop on n is unstable"):
         hybrid.paper_experiment(sensor=hybrid.Sensor(delay_samples=100))
+
+
+def test_a_printed_radius_tells_stable_from_unstable():
+    # a radius within 5e-5 of 1 printed to four digits reads "1": the stable side must not, nor the refusal's
+    reports = [hybrid.stability(hybrid.paper_experiment(sample_time=1e-5, integration_step=1e-6, duration=0.01)),
+               hybrid.stability(hybrid.paper_experiment(sensor=hybrid.Sensor(delay_samples=100), allow_unstable=True),
+                                margins=False)]
+    for report in reports:
+        lines = str(report).splitlines()
+        head = float(lines[0].split("spectral radius ")[1].rstrip(")"))
+        assert (head < 1.0) == report.stable and ("UNSTABLE" not in lines[0]) == report.stable
+        for line, loop in zip(lines[1:], report.loops):
+            assert (float(line.split("radius ")[1].split()[0]) < 1.0) == loop.stable, line
+    with pytest.raises(hybrid.HybridError) as refusal:
+        hybrid.paper_experiment(sensor=hybrid.Sensor(delay_samples=100))
+    assert float(str(refusal.value).split("spectral radius ")[1].split()[0]) > 1.0

@@ -142,13 +142,23 @@ class Stability:
     def __str__(self) -> str:
         verdict = "stable" if self.stable else "UNSTABLE"
         lines = [f"sampled loops at T = {self.sample_time:g} s: {verdict} (spectral radius "
-                 f"{self.spectral_radius:.4g})"]
+                 f"{shown_radius(self.spectral_radius)})"]
         for x in self.loops:
             late = f"{'>= ' * (x.delay_margin_samples == MOST_DELAY)}{x.delay_margin_samples}"
-            lines.append(f"  {x.axis:7s} {x.loop:8s} radius {x.spectral_radius:.4g}  damping {x.damping:.3g}  "
-                         f"{x.natural_frequency_hz:.3g} Hz  GM {x.gain_margin_db:.3g} dB  PM {x.phase_margin_deg:.3g} "
-                         f"deg  delay margin {late} samples")
+            lines.append(f"  {x.axis:7s} {x.loop:8s} radius {shown_radius(x.spectral_radius)}  damping "
+                         f"{x.damping:.3g}  {x.natural_frequency_hz:.3g} Hz  GM {x.gain_margin_db:.3g} dB  PM "
+                         f"{x.phase_margin_deg:.3g} deg  delay margin {late} samples")
         return "\n".join(lines)
+
+
+def shown_radius(radius: float, digits: int = 4) -> str:
+    """``radius`` to ``digits`` significant digits, or as many more as tell it from 1 (a radius of
+    0.99999 is stable, and does not print as 1)."""
+    for d in range(digits, 18):
+        text = f"{radius:.{d}g}"
+        if radius == 1.0 or not math.isfinite(radius) or float(text) != 1.0:
+            break
+    return text
 
 
 def stability(exp, *, margins: bool = True) -> Stability:
@@ -336,7 +346,7 @@ def check_stable(exp) -> None:
     else:
         what, rule = "the loops coupled through the arm", "each is stable alone: lower the gains or sample_time"
         radius = report.spectral_radius
-    why = (f"spectral radius {radius:.3g} >= 1" if math.isfinite(radius) else
+    why = (f"spectral radius {shown_radius(radius, 3)} >= 1" if math.isfinite(radius) else
            f"a gain times sample_time or the stiffness overflows: {_largest(g)}")
     scale = np.diag(np.asarray(p["gain"], float))
     note = (f"; the controller's model scales every loop's gain by {scale.max():.3g} (model_error)"
@@ -378,5 +388,5 @@ def predicted_note(exp) -> str:
         return ""
     if report.stable:
         return ""
-    return (f"its loops were predicted unstable (spectral radius {report.spectral_radius:.3g}; it ran with "
-            "allow_unstable=True): hybrid.stability(exp) says which")
+    return (f"its loops were predicted unstable (spectral radius {shown_radius(report.spectral_radius, 3)}; it ran "
+            "with allow_unstable=True): hybrid.stability(exp) says which")
