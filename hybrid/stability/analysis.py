@@ -190,12 +190,16 @@ def stability(exp, *, margins: bool = True) -> Stability:
     >>> report.stable, round(report.loop("n").spectral_radius, 3)
     (True, 0.888)
     """
-    st, p = loop_numbers(exp)
-    return stability_of(st, p, axis_names(_axes(exp)), margins=margins)
+    st, p, names = _loops(exp)
+    return stability_of(st, p, names, margins=margins)
 
 
-def _axes(exp) -> tuple[int, ...]:
-    return arm_terms_at_start(exp)["axes"]
+def _loops(exp) -> tuple[Structure, dict, tuple[str, ...]]:
+    """``exp``'s model (:func:`~hybrid.stability.experiment_loops.loop_numbers`) and its axes' names, the arm's
+    terms at the start worked out once."""
+    terms = arm_terms_at_start(exp)
+    st, p = loop_numbers(exp, terms)
+    return st, p, axis_names(terms["axes"])
 
 
 def stability_of(st: Structure, p: dict, names, *, margins: bool = True) -> Stability:
@@ -330,13 +334,12 @@ def check_stable(exp) -> None:
         return
     check_delay(exp.sensor.delay_samples)
     try:
-        st, p = loop_numbers(exp)
-        names = axis_names(_axes(exp))
+        st, p, names = _loops(exp)
     except HybridError:
         return  # no start to take the loops at: the run refuses it, saying why
-    report = _verdict(st, p, names)
-    if report.stable:
+    if _whole_radius(st, p) < 1.0:
         return
+    report = stability_of(st, p, names, margins=False)  # which loop, to say so
     unstable = [x for x in report.loops if not x.stable]
     g, T = exp.effective_gains(), exp.sample_time
     if unstable:
@@ -358,18 +361,20 @@ def check_stable(exp) -> None:
         f"  gains {g}, sensor {exp.sensor.stiffness:g} N/m, contact {exp.contact.stiffness:g} N/m")
 
 
-def _verdict(st: Structure, p: dict, names) -> Stability:
-    """:func:`stability_of` without margins, remembered: a sweep's runs mostly share their loops."""
-    key = (st, tuple(names), tuple((k, np.asarray(v, float).tobytes()) for k, v in sorted(p.items())))
-    found = _VERDICTS.get(key)
+def _whole_radius(st: Structure, p: dict) -> float:
+    """The whole closed loop's spectral radius (the verdict: each loop alone is worked out only to say which
+    is unstable), remembered: a sweep's runs mostly share their loops."""
+    key = (st, tuple((k, np.asarray(v, float).tobytes()) for k, v in sorted(p.items())))
+    found = _RADII.get(key)
     if found is None:
-        found = _VERDICTS[key] = stability_of(st, p, names, margins=False)
-        if len(_VERDICTS) > 4096:
-            _VERDICTS.pop(next(iter(_VERDICTS)))
+        with np.errstate(all="ignore"):
+            found = _RADII[key] = _radius(_poles(closed_loop(st, p)["A"]))
+        if len(_RADII) > 4096:
+            _RADII.pop(next(iter(_RADII)))
     return found
 
 
-_VERDICTS: dict = {}
+_RADII: dict = {}
 
 
 def _largest(g) -> str:
@@ -382,11 +387,11 @@ def predicted_note(exp) -> str:
     if not exp.allow_unstable:
         return ""
     try:
-        st, p = loop_numbers(exp)
-        report = _verdict(st, p, axis_names(_axes(exp)))
+        st, p, _ = _loops(exp)
     except HybridError:
         return ""
-    if report.stable:
+    radius = _whole_radius(st, p)
+    if radius < 1.0:
         return ""
-    return (f"its loops were predicted unstable (spectral radius {shown_radius(report.spectral_radius, 3)}; it ran "
+    return (f"its loops were predicted unstable (spectral radius {shown_radius(radius, 3)}; it ran "
             "with allow_unstable=True): hybrid.stability(exp) says which")

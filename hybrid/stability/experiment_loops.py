@@ -54,8 +54,10 @@ def arm_terms_at_start(exp) -> dict[str, np.ndarray]:
     n = exp.robot.n
     R = frame_rows(exp._geometry().normal_at(tuple(np.asarray(exp.start()).tolist())), exp.frame_direction)
     axes = check_axes(exp.robot, exp.axes)
-    key = (exp.robot, exp.controller_model(), tuple(x0[:n].tolist()), tuple(x0[2 * n:].tolist()),
-           exp.sensor.stiffness, tuple(R.ravel().tolist()), axes)
+    # the controller's model by what makes it (controller_model() builds a robot: most of a cache hit's cost)
+    model = (exp.controller_robot,) if exp.controller_robot is not None else (exp.model_error, exp.viscous_compensation)
+    key = (exp.robot, model, tuple(x0[:n].tolist()), tuple(x0[2 * n:].tolist()), exp.sensor.stiffness,
+           tuple(R.ravel().tolist()), axes)
     found = _TERMS.get(key)
     if found is None:
         found = _TERMS[key] = _worked_out(exp.robot, exp.controller_model(), x0, R, axes, exp.sensor.stiffness)
