@@ -199,6 +199,7 @@ def test_every_kind_of_experiment_gets_a_verdict():
     ({"sensor.delay_samples": [2, 10**9]}, "beyond the 100 samples"),
     ({"sensor.stiffness": [1e300]}, "the map's point sensor.stiffness = 1e"),
     ({"contact.stiffness": [1e3, 1e300]}, "the map's point contact.stiffness = 1e"),
+    ({"KPf": [1.0, 2.0], "gains.KPf": [3.0]}, "'KPf' and 'gains.KPf' name the same setting"),
 ])
 def test_bad_map_values_are_refused_in_words_before_anything_is_made(over, match):
     with pytest.raises(hybrid.HybridError, match=match):

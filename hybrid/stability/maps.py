@@ -120,6 +120,10 @@ def stability_map(exp, over: Mapping) -> StabilityMap:
                           "{'sensor.stiffness': [1e3, 1e4, 1e5], 'sample_time': [0.001, 0.01]}")
     names = tuple(over)
     paths = {name: _path(exp, name) for name in names}
+    for path in set(paths.values()):
+        same = [name for name in names if paths[name] == path]
+        if len(same) > 1:
+            raise HybridError(f"{' and '.join(map(repr, same))} name the same setting ({path}); give it once")
     values = {name: _values(exp, name, paths[name], over[name]) for name in names}
     size = math.prod(len(v) for v in values.values())
     if size > MOST_POINTS:
@@ -228,8 +232,7 @@ def _group_base(exp, paths: dict, point: dict):
         return apply(replace(exp, allow_unstable=True, integration_step=exp.sample_time / steps), changes)
     except HybridError as exc:
         point = ", ".join(f"{name} = {value:g}" for name, value in changes.items())
-        raise HybridError(f"the map's point {point} is no experiment: {str(exc).splitlines()[0]}; give values an "
-                          "experiment takes") from None
+        raise HybridError(f"the map's point {point} is no experiment: {str(exc).splitlines()[0]}") from None
 
 
 def _radii(st, p: dict, base, paths: dict, grid: dict) -> np.ndarray:
