@@ -312,10 +312,11 @@ def test_numpy_numbers_and_any_mapping_ask_for_the_same_gains():
 def test_the_map_is_the_experiments_own_verdict_over_every_setting_on_the_3d_arms():
     from hybrid.sweeps import apply
 
-    over = {"contact.stiffness": [2e3, 1e5], "contact.damping": [0.0, 200.0], "sensor.mass": [0.01, 0.1],
-            "sensor.damping": [0.0, 20.0], "sensor.stiffness": [800.0, 5000.0], "model_error": [-0.3, 0.5],
-            "sensor.bandwidth_hz": [5.0, 40.0], "wrench_sensor.cutoff": [10.0, 45.0], "KPv": [20.0, 60.0],
-            "KIv": [0.0, 300.0], "KI2v": [0.0, 2000.0], "KDf": [30.0, 120.0], "KIf": [0.0, 40.0]}
+    over = {"sample_time": [0.002, 0.01], "contact.stiffness": [2e3, 1e5], "contact.damping": [0.0, 200.0],
+            "sensor.mass": [0.01, 0.1], "sensor.damping": [0.0, 20.0], "sensor.stiffness": [800.0, 5000.0],
+            "model_error": [-0.3, 0.5], "sensor.bandwidth_hz": [5.0, 40.0], "wrench_sensor.cutoff": [10.0, 45.0],
+            "KPv": [20.0, 60.0], "KIv": [0.0, 300.0], "KI2v": [0.0, 2000.0], "KPf": [0.5, 4.0], "KDf": [30.0, 120.0],
+            "KIf": [0.0, 40.0]}
     rng = np.random.default_rng(7)
     for factory in (hybrid.tracing_experiment, hybrid.panda_experiment):
         exp = factory(wrench_sensor=hybrid.WrenchSensor(cutoff=25.0, order=1), sensor=hybrid.Sensor(bandwidth_hz=30.0))
