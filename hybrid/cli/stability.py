@@ -15,7 +15,7 @@ from hybrid.cli.experiments import add_setting_argument, experiment_of
 from hybrid.errors import HybridError
 from hybrid.experiments import FACTORIES
 from hybrid.stability.analysis import stability
-from hybrid.stability.maps import stability_map
+from hybrid.stability.maps import MOST_POINTS, stability_map
 
 STABILITY = ("Judge an experiment's sampled loops, map their stable region. Prints each task axis's loop: its "
              "spectral radius (stable below 1), the dominant pole's damping and frequency, the gain and phase "
@@ -51,17 +51,21 @@ def _over(text: str) -> tuple[str, np.ndarray]:
             raise ValueError
         if len(parts) in (3, 4):
             start, stop, count = float(parts[0]), float(parts[1]), int(parts[2])
-            if count < 1 or (len(parts) == 4 and (parts[3] != "log" or start <= 0 or stop <= 0)):
-                raise ValueError
+            if not (1 <= count <= MOST_POINTS and math.isfinite(start) and math.isfinite(stop)) \
+                    or (len(parts) == 4 and (parts[3] != "log" or start <= 0 or stop <= 0)):
+                raise ValueError  # (a count past the map's most points, refused before its values are made)
             grid = np.geomspace(start, stop, count) if len(parts) == 4 else np.linspace(start, stop, count)
         elif len(parts) == 1:
             grid = np.array([float(v) for v in values.split(",")])
         else:
             raise ValueError
+        if not np.isfinite(grid).all():
+            raise ValueError
     except ValueError:
         raise argparse.ArgumentTypeError(
-            f"--over {text!r}: give NAME=v1,v2,... or NAME=START:STOP:COUNT or NAME=START:STOP:COUNT:log (positive "
-            "ends), e.g. sensor.stiffness=1e3:1e5:30:log") from None
+            f"--over {text!r}: give NAME=v1,v2,... or NAME=START:STOP:COUNT or NAME=START:STOP:COUNT:log (finite "
+            f"numbers, positive ends for log, COUNT 1 to {MOST_POINTS:,}), e.g. sensor.stiffness=1e3:1e5:30:log"
+        ) from None
     return name.strip(), grid
 
 

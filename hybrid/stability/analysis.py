@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.stability.experiment_loops import MATRICES, arm_terms_at_start, axis_names, loop_numbers
+from hybrid.stability.experiment_loops import MATRICES, arm_terms_at_start, axis_names, check_delay, loop_numbers
 from hybrid.stability.model import Structure, closed_loop
 
 
@@ -142,13 +142,23 @@ class Stability:
     def __str__(self) -> str:
         verdict = "stable" if self.stable else "UNSTABLE"
         lines = [f"sampled loops at T = {self.sample_time:g} s: {verdict} (spectral radius "
-                 f"{self.spectral_radius:.4g})"]
+                 f"{shown_radius(self.spectral_radius)})"]
         for x in self.loops:
             late = f"{'>= ' * (x.delay_margin_samples == MOST_DELAY)}{x.delay_margin_samples}"
-            lines.append(f"  {x.axis:7s} {x.loop:8s} radius {x.spectral_radius:.4g}  damping {x.damping:.3g}  "
-                         f"{x.natural_frequency_hz:.3g} Hz  GM {x.gain_margin_db:.3g} dB  PM {x.phase_margin_deg:.3g} "
-                         f"deg  delay margin {late} samples")
+            lines.append(f"  {x.axis:7s} {x.loop:8s} radius {shown_radius(x.spectral_radius)}  damping "
+                         f"{x.damping:.3g}  {x.natural_frequency_hz:.3g} Hz  GM {x.gain_margin_db:.3g} dB  PM "
+                         f"{x.phase_margin_deg:.3g} deg  delay margin {late} samples")
         return "\n".join(lines)
+
+
+def shown_radius(radius: float, digits: int = 4) -> str:
+    """``radius`` to ``digits`` significant digits, or as many more as tell it from 1 (a radius of
+    0.99999 is stable, and does not print as 1)."""
+    for d in range(digits, 18):
+        text = f"{radius:.{d}g}"
+        if radius == 1.0 or not math.isfinite(radius) or float(text) != 1.0:
+            break
+    return text
 
 
 def stability(exp, *, margins: bool = True) -> Stability:
@@ -170,7 +180,8 @@ def stability(exp, *, margins: bool = True) -> Stability:
     Raises
     ------
     HybridError
-        The experiment's start cannot be worked out, or it has no force axis.
+        The experiment's start cannot be worked out, it has no force axis, or its reading is later than the
+        model takes (:data:`~hybrid.stability.experiment_loops.MOST_DELAY_SAMPLES`).
 
     Examples
     --------
@@ -179,12 +190,16 @@ def stability(exp, *, margins: bool = True) -> Stability:
     >>> report.stable, round(report.loop("n").spectral_radius, 3)
     (True, 0.888)
     """
-    st, p = loop_numbers(exp)
-    return stability_of(st, p, axis_names(_axes(exp)), margins=margins)
+    st, p, names = _loops(exp)
+    return stability_of(st, p, names, margins=margins)
 
 
-def _axes(exp) -> tuple[int, ...]:
-    return arm_terms_at_start(exp)["axes"]
+def _loops(exp) -> tuple[Structure, dict, tuple[str, ...]]:
+    """``exp``'s model (:func:`~hybrid.stability.experiment_loops.loop_numbers`) and its axes' names, the arm's
+    terms at the start worked out once."""
+    terms = arm_terms_at_start(exp)
+    st, p = loop_numbers(exp, terms)
+    return st, p, axis_names(terms["axes"])
 
 
 def stability_of(st: Structure, p: dict, names, *, margins: bool = True) -> Stability:
@@ -312,18 +327,19 @@ def check_stable(exp) -> None:
     Raises
     ------
     HybridError
-        A loop, or the loops coupled, with a spectral radius of at least 1: which, why, what to change.
+        A loop, or the loops coupled, with a spectral radius of at least 1: which, why, what to change; a
+        reading later than the model takes.
     """
     if exp.allow_unstable:
         return
+    check_delay(exp.sensor.delay_samples)
     try:
-        st, p = loop_numbers(exp)
-        names = axis_names(_axes(exp))
+        st, p, names = _loops(exp)
     except HybridError:
         return  # no start to take the loops at: the run refuses it, saying why
-    report = _verdict(st, p, names)
-    if report.stable:
+    if _whole_radius(st, p) < 1.0:
         return
+    report = stability_of(st, p, names, margins=False)  # which loop, to say so
     unstable = [x for x in report.loops if not x.stable]
     g, T = exp.effective_gains(), exp.sample_time
     if unstable:
@@ -333,7 +349,7 @@ def check_stable(exp) -> None:
     else:
         what, rule = "the loops coupled through the arm", "each is stable alone: lower the gains or sample_time"
         radius = report.spectral_radius
-    why = (f"spectral radius {radius:.3g} >= 1" if math.isfinite(radius) else
+    why = (f"spectral radius {shown_radius(radius, 3)} >= 1" if math.isfinite(radius) else
            f"a gain times sample_time or the stiffness overflows: {_largest(g)}")
     scale = np.diag(np.asarray(p["gain"], float))
     note = (f"; the controller's model scales every loop's gain by {scale.max():.3g} (model_error)"
@@ -345,18 +361,20 @@ def check_stable(exp) -> None:
         f"  gains {g}, sensor {exp.sensor.stiffness:g} N/m, contact {exp.contact.stiffness:g} N/m")
 
 
-def _verdict(st: Structure, p: dict, names) -> Stability:
-    """:func:`stability_of` without margins, remembered: a sweep's runs mostly share their loops."""
-    key = (st, tuple(names), tuple((k, np.asarray(v, float).tobytes()) for k, v in sorted(p.items())))
-    found = _VERDICTS.get(key)
+def _whole_radius(st: Structure, p: dict) -> float:
+    """The whole closed loop's spectral radius (the verdict: each loop alone is worked out only to say which
+    is unstable), remembered: a sweep's runs mostly share their loops."""
+    key = (st, tuple((k, np.asarray(v, float).tobytes()) for k, v in sorted(p.items())))
+    found = _RADII.get(key)
     if found is None:
-        found = _VERDICTS[key] = stability_of(st, p, names, margins=False)
-        if len(_VERDICTS) > 4096:
-            _VERDICTS.pop(next(iter(_VERDICTS)))
+        with np.errstate(all="ignore"):
+            found = _RADII[key] = _radius(_poles(closed_loop(st, p)["A"]))
+        if len(_RADII) > 4096:
+            _RADII.pop(next(iter(_RADII)))
     return found
 
 
-_VERDICTS: dict = {}
+_RADII: dict = {}
 
 
 def _largest(g) -> str:
@@ -369,11 +387,11 @@ def predicted_note(exp) -> str:
     if not exp.allow_unstable:
         return ""
     try:
-        st, p = loop_numbers(exp)
-        report = _verdict(st, p, axis_names(_axes(exp)))
+        st, p, _ = _loops(exp)
     except HybridError:
         return ""
-    if report.stable:
+    radius = _whole_radius(st, p)
+    if radius < 1.0:
         return ""
-    return (f"its loops were predicted unstable (spectral radius {report.spectral_radius:.3g}; it ran with "
-            "allow_unstable=True): hybrid.stability(exp) says which")
+    return (f"its loops were predicted unstable (spectral radius {shown_radius(radius, 3)}; it ran "
+            "with allow_unstable=True): hybrid.stability(exp) says which")

@@ -14,6 +14,7 @@ import math
 
 import numpy as np
 
+from hybrid.control.schemes import scheme_of
 from hybrid.control.wrench_sensor import filter_coefficients
 from hybrid.errors import HybridError
 from hybrid.geometry.task_axes import check_axes, frame_rows
@@ -26,6 +27,18 @@ FORCE_AXIS = 2
 
 #: the model's numbers that are matrices over the task axes
 MATRICES = ("mobility", "gain", "viscosity", "compensated_viscosity", "held_stiffness")
+
+#: the longest delay of the reading the model takes [samples]: each sample of it adds a state per sensed axis,
+#: and the eigenvalues' cost grows as its cube (a second at 100 samples on the 3-D arms; margins, tens)
+MOST_DELAY_SAMPLES = 100
+
+
+def check_delay(delay: int) -> None:
+    """Refuse a reading's delay longer than the model takes (:data:`MOST_DELAY_SAMPLES`)."""
+    if delay > MOST_DELAY_SAMPLES:
+        raise HybridError(f"Sensor delay_samples = {delay} is beyond the {MOST_DELAY_SAMPLES} samples the sampled "
+                          "loops' model takes (hybrid.stability, and the experiment's check: give a shorter delay, "
+                          "or allow_unstable=True to run it unchecked)")
 
 
 def arm_terms_at_start(exp) -> dict[str, np.ndarray]:
@@ -41,8 +54,10 @@ def arm_terms_at_start(exp) -> dict[str, np.ndarray]:
     n = exp.robot.n
     R = frame_rows(exp._geometry().normal_at(tuple(np.asarray(exp.start()).tolist())), exp.frame_direction)
     axes = check_axes(exp.robot, exp.axes)
-    key = (exp.robot, exp.controller_model(), tuple(x0[:n].tolist()), tuple(x0[2 * n:].tolist()),
-           exp.sensor.stiffness, tuple(R.ravel().tolist()), axes)
+    # the controller's model by what makes it (controller_model() builds a robot: most of a cache hit's cost)
+    model = (exp.controller_robot,) if exp.controller_robot is not None else (exp.model_error, exp.viscous_compensation)
+    key = (exp.robot, model, tuple(x0[:n].tolist()), tuple(x0[2 * n:].tolist()), exp.sensor.stiffness,
+           tuple(R.ravel().tolist()), axes)
     found = _TERMS.get(key)
     if found is None:
         found = _TERMS[key] = _worked_out(exp.robot, exp.controller_model(), x0, R, axes, exp.sensor.stiffness)
@@ -94,6 +109,7 @@ def axis_names(axes) -> tuple[str, ...]:
 
 def loop_numbers(exp, terms: dict | None = None) -> tuple[Structure, dict]:
     """The coupled model's :class:`~hybrid.stability.model.Structure` and numbers for ``exp``."""
+    check_delay(exp.sensor.delay_samples)
     terms = arm_terms_at_start(exp) if terms is None else terms
     g = exp.effective_gains()
     sensor, contact, T = exp.sensor, exp.contact, exp.sample_time
@@ -103,7 +119,7 @@ def loop_numbers(exp, terms: dict | None = None) -> tuple[Structure, dict]:
                       for f in terms["force"])
     st = Structure(force=terms["force"], linear=tuple(i < LINEAR_AXES for i in terms["axes"]),
                    delay=sensor.delay_samples, lag=sensor.bandwidth_hz is not None, filtered=cutoff is not None,
-                   integrals=integrals)
+                   integrals=integrals, feeds_desired_force=scheme_of(exp.controller).feeds_desired_force)
     p = {"sample_time": T, **{k: terms[k] for k in MATRICES},
          "sensor_mass": sensor.mass, "sensor_stiffness": sensor.stiffness, "sensor_damping": sensor.damping,
          "contact_stiffness": contact.stiffness, "contact_damping": contact.damping,

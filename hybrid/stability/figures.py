@@ -22,7 +22,8 @@ def stability_map_figure(smap, title: str | None = None) -> Figure:
     fig = Figure(figsize=(4.2 * len(levels) + 1.2, 4.0), layout="constrained")
     axes = fig.subplots(1, len(levels), squeeze=False)[0]
     mesh = None
-    low = float(np.clip(np.nanmin(table["spectral_radius"], initial=1.0), 0.0, 0.99))
+    radius = table["spectral_radius"].to_numpy()
+    low = float(np.clip(np.min(radius[~np.isnan(radius)], initial=1.0), 0.0, 0.99))
     norm = TwoSlopeNorm(1.0, low, TOP)  # stable greens from the map's smallest radius, unstable reds
     for ax, level in zip(axes, levels):
         part = table if level is None else table[table[third] == level]
@@ -31,7 +32,8 @@ def stability_map_figure(smap, title: str | None = None) -> Figure:
         R = grid.reindex(index=y, columns=x).to_numpy()
         shown = np.clip(np.nan_to_num(R, nan=TOP), 0.0, TOP)
         mesh = ax.pcolormesh(x, y, shown, shading="nearest", cmap="RdYlGn_r", norm=norm)
-        if len(x) > 1 and len(y) > 1 and np.nanmin(R) < 1.0 < np.nanmax(R):
+        judged = R[~np.isnan(R)]  # NaN: no such loop (a lag past the Nyquist frequency)
+        if len(x) > 1 and len(y) > 1 and judged.size and judged.min() < 1.0 < judged.max():
             ax.contour(x, y, np.nan_to_num(R, nan=TOP), levels=[1.0], colors="k", linewidths=1.5)
         for axis, values in (("x", x), ("y", y)):
             if _logarithmic(values):

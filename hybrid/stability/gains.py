@@ -12,7 +12,9 @@ lag, delay and filter.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, replace
+from numbers import Real
 
 import numpy as np
 
@@ -89,13 +91,12 @@ def suggest_gains(exp, bandwidth_hz, damping: float = 0.7, integral_ratio: float
     (0.937, True)
     """
     wanted = _wanted(bandwidth_hz)
-    if isinstance(damping, bool) or not isinstance(damping, (int, float)) or not math.isfinite(damping) \
-            or damping <= 0:
+    if not _number(damping) or damping <= 0:
         raise HybridError(f"damping = {shown(damping, 40)}; give the pole pair's damping ratio, a number > 0")
-    if isinstance(integral_ratio, bool) or not isinstance(integral_ratio, (int, float)) \
-            or not math.isfinite(integral_ratio) or integral_ratio < 0:
+    if not _number(integral_ratio) or integral_ratio < 0:
         raise HybridError(f"integral_ratio = {shown(integral_ratio, 40)}; give the integral pole over the pair's "
                           "natural frequency, a number >= 0 (0: no integral action)")
+    damping, integral_ratio = float(damping), float(integral_ratio)
     if integral_ratio > 0 and not exp.integral:
         raise HybridError("the experiment runs without integral action (integral=False); give integral_ratio=0, or "
                           "the experiment integral=True")
@@ -111,23 +112,28 @@ def suggest_gains(exp, bandwidth_hz, damping: float = 0.7, integral_ratio: float
             values.update(_placed(exp, loop, poles, integral_ratio))
         except _NotMet as why:
             best = _largest_met(exp, loop, f_n, damping, integral_ratio)
-            met = f"the largest met is about {best:.3g} Hz" if best else "none is met down to 0.01 Hz"
+            met = (f"the largest met is about {best:.3g} Hz): lower bandwidth_hz" if best else
+                   f"none is met from {_lowest(f_n):.3g} Hz up to it): give another bandwidth_hz or damping")
             raise HybridError(f"a {loop} loop of {f_n:g} Hz and damping {damping:g} cannot be met at sample_time "
-                              f"{T:g} s with this sensor and arm ({met}): lower bandwidth_hz, or shorten sample_time\n"
-                              f"  {why}") from None
+                              f"{T:g} s with this sensor and arm ({met}, or shorten sample_time\n  {why}") from None
         requested[loop] = poles
     gains = type(exp.gains)(**values)
     placed = replace(exp, gains=gains, allow_unstable=True)
     return GainSuggestion(gains, requested, stability(placed))
 
 
+def _number(v) -> bool:
+    """Whether ``v`` is a finite real number (NumPy's too; not a bool)."""
+    return isinstance(v, Real) and not isinstance(v, (bool, np.bool_)) and math.isfinite(v)
+
+
 def _wanted(bandwidth_hz) -> dict[str, float]:
-    given = bandwidth_hz if isinstance(bandwidth_hz, dict) else {"force": bandwidth_hz}
+    given = dict(bandwidth_hz) if isinstance(bandwidth_hz, Mapping) else {"force": bandwidth_hz}
     if not given or set(given) - set(LOOP_GAINS):
         raise HybridError(f"bandwidth_hz = {shown(bandwidth_hz, 60)}; give the force loop's in Hz, or a mapping "
                           "{'force': ..., 'velocity': ...}")
     for loop, f in given.items():
-        if isinstance(f, bool) or not isinstance(f, (int, float)) or not math.isfinite(f) or f <= 0:
+        if not _number(f) or f <= 0:
             raise HybridError(f"bandwidth_hz for the {loop} loop = {shown(f, 40)}; give a frequency in Hz, > 0")
     return {loop: float(f) for loop, f in given.items()}
 
@@ -146,7 +152,7 @@ class _NotMet(Exception):
 
 def _largest_met(exp, loop: str, f_n: float, zeta: float, ratio: float) -> float | None:
     """About the largest natural frequency [Hz] below ``f_n`` whose poles can be placed (a log grid from
-    0.01 Hz, then bisection past its last one met: low frequencies fail too, where the arm's own damping
+    :func:`_lowest`, then bisection past its last one met: low frequencies fail too, where the arm's own damping
     exceeds the pair's); None when none is met."""
     def met(f: float) -> bool:
         try:
@@ -155,7 +161,7 @@ def _largest_met(exp, loop: str, f_n: float, zeta: float, ratio: float) -> float
         except (_NotMet, np.linalg.LinAlgError):
             return False
 
-    grid = np.geomspace(0.01, f_n, 60)[:-1]
+    grid = np.geomspace(_lowest(f_n), f_n, 60)[:-1]
     found = [f for f in grid if met(f)]
     if not found:
         return None
@@ -167,11 +173,19 @@ def _largest_met(exp, loop: str, f_n: float, zeta: float, ratio: float) -> float
     return lo
 
 
+def _lowest(f_n: float) -> float:
+    """Where :func:`_largest_met` starts looking [Hz]: 0.01 Hz, or a decade below a lower request."""
+    return min(0.01, f_n / 10)
+
+
 def _placed(exp, loop: str, poles: np.ndarray, ratio: float) -> dict[str, float]:
     """The loop's gains that make ``poles`` poles of its axis's sampled loop (alone)."""
     names = LOOP_GAINS[loop][:len(poles)]
     st, p = loop_numbers(replace(exp, allow_unstable=True))
-    axis = next(i for i, f in enumerate(st.force) if f == (loop == "force"))
+    axis = next((i for i, f in enumerate(st.force) if f == (loop == "force")), None)
+    if axis is None:
+        raise HybridError(f"bandwidth_hz places the {loop} loop, and the experiment has no {loop} axis (axes = "
+                          f"{exp.axes!r}); place the {'velocity' if loop == 'force' else 'force'} loop alone")
     sub, q = axis_alone(st, p, axis)
     sub = replace(sub, integrals=(len(names) - (loop == "force") - 1,))  # the integrators the placed gains use
     # the command's row for each gain alone, and the open loop (neither depends on the gains)

@@ -19,7 +19,7 @@ from hybrid.control.wrench_sensor import filter_coefficients
 from hybrid.errors import HybridError
 from hybrid.experiments.settings import setting_path
 from hybrid.stability.analysis import _poles, _radius
-from hybrid.stability.experiment_loops import loop_numbers
+from hybrid.stability.experiment_loops import check_delay, loop_numbers
 from hybrid.stability.model import closed_loop
 from hybrid.sweeps.space import apply
 from hybrid.validate import check_size, shown
@@ -120,6 +120,10 @@ def stability_map(exp, over: Mapping) -> StabilityMap:
                           "{'sensor.stiffness': [1e3, 1e4, 1e5], 'sample_time': [0.001, 0.01]}")
     names = tuple(over)
     paths = {name: _path(exp, name) for name in names}
+    for path in set(paths.values()):
+        same = [name for name in names if paths[name] == path]
+        if len(same) > 1:
+            raise HybridError(f"{' and '.join(map(repr, same))} name the same setting ({path}); give it once")
     values = {name: _values(exp, name, paths[name], over[name]) for name in names}
     size = math.prod(len(v) for v in values.values())
     if size > MOST_POINTS:
@@ -166,15 +170,27 @@ def _path(exp, name) -> str:
 def _values(exp, name: str, path: str, values) -> np.ndarray:
     """``values`` as a 1-D array of finite numbers, each a valid value of the setting (checked as the
     experiment's parts check it)."""
-    try:
-        arr = np.asarray(values, dtype=float)
-    except (TypeError, ValueError):
-        arr = np.full(1, np.nan)
-    if arr.ndim != 1 or not len(arr) or not np.isfinite(arr).all():
+    arr = _numbers(values)
+    if arr is None or arr.ndim != 1 or not len(arr) or not np.isfinite(arr).all():
         raise HybridError(f"the values of {name!r} = {shown(values, 60)}; give a non-empty list of finite numbers")
     for v in np.unique(arr):
         _check_value(exp, name, path, float(v))
     return arr
+
+
+def _numbers(values) -> np.ndarray | None:
+    """``values`` as floats when it is a sequence of real numbers (not text, not True/False), else None."""
+    if isinstance(values, (str, bytes, Mapping)) or not hasattr(values, "__len__"):
+        return None
+    try:
+        arr = np.asarray(values)
+    except (TypeError, ValueError):  # ragged
+        return None
+    if arr.dtype.kind not in "iuf":
+        return None
+    if not isinstance(values, np.ndarray) and any(isinstance(v, (bool, np.bool_)) for v in values):
+        return None  # a bool among numbers (NumPy made them numbers)
+    return arr.astype(float)
 
 
 def _check_value(exp, name: str, path: str, v: float) -> None:
@@ -188,6 +204,8 @@ def _check_value(exp, name: str, path: str, v: float) -> None:
         value = int(v) if tail == "delay_samples" and v == int(v) else v
         try:
             replace(part, **{tail: value})
+            if path == "sensor.delay_samples":
+                check_delay(value)
         except HybridError as exc:
             raise HybridError(f"{name} = {v:g} in the map: {str(exc).splitlines()[0]}") from None
 
@@ -210,7 +228,11 @@ def _group_base(exp, paths: dict, point: dict):
     stiffness.update({paths[k]: v for k, v in changes.items() if paths[k] in stiffness})
     rate = max(math.sqrt(sum(stiffness.values()) / sensor.mass), (contact.damping + sensor.damping) / sensor.mass)
     steps = max(exp.steps_per_sample, math.ceil(exp.sample_time * rate))
-    return apply(replace(exp, allow_unstable=True, integration_step=exp.sample_time / steps), changes)
+    try:
+        return apply(replace(exp, allow_unstable=True, integration_step=exp.sample_time / steps), changes)
+    except HybridError as exc:
+        point = ", ".join(f"{name} = {value:g}" for name, value in changes.items())
+        raise HybridError(f"the map's point {point} is no experiment: {str(exc).splitlines()[0]}") from None
 
 
 def _radii(st, p: dict, base, paths: dict, grid: dict) -> np.ndarray:

@@ -55,6 +55,9 @@ class Structure:
     integrals : tuple of int
         Per task axis, the integrators its gains use (velocity: 0-2, force: 0-1): an integrator whose
         gain is 0 feeds nothing back, and its eigenvalue 1 is left out.
+    feeds_desired_force : bool
+        The law's contact term is the desired force ``F_d`` on the force axes (Khatib's scheme, nothing on
+        the others) rather than the measured force ``F_m`` it cancels (the task law).
     """
 
     force: tuple[bool, ...]
@@ -63,6 +66,7 @@ class Structure:
     lag: bool = False
     filtered: bool = False
     integrals: tuple[int, ...] = ()
+    feeds_desired_force: bool = False
 
     @property
     def n(self) -> int:
@@ -303,9 +307,16 @@ def closed_loop(st: Structure, p: dict) -> dict[str, np.ndarray]:
         command[..., i, :] = a
 
     open_next = nxt.copy()
-    # the plant over the sample, fed the command and the measured force it compensates
+    # the plant over the sample, fed the command and the force the law compensates: the measured one, or
+    # (Khatib's scheme) the desired one on the force axes, fed forward
+    fed = z
+    if st.feeds_desired_force:
+        fed = rows.zeros(nl)
+        for j, axis in enumerate(L):
+            if st.force[axis]:
+                fed[..., j, :] = reference[..., axis, :]
     plant_rows = rows.unit(plant)
-    open_next[..., plant, :] = Phi @ plant_rows + Gam[..., :, n:n + nl] @ z + Gam[..., :, n + nl:] @ xdot
+    open_next[..., plant, :] = Phi @ plant_rows + Gam[..., :, n:n + nl] @ fed + Gam[..., :, n + nl:] @ xdot
     nxt[..., plant, :] = open_next[..., plant, :] + Gam[..., :, :n] @ command
     B_open = np.zeros(batch + (N, n))
     B_open[..., plant, :] = Gam[..., :, :n]
