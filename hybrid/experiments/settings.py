@@ -13,7 +13,7 @@ from hybrid.control.references import Step
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import RENAMED, renamed_settings
 from hybrid.errors import HybridError
-from hybrid.plants.contact import Contact, Sensor
+from hybrid.plants.contact import Contact, Sensor, fastest_mode
 from hybrid.spec.axes import AXIS_NAMES
 from hybrid.user_warnings import RedundancyWarning, warn
 from hybrid.validate import _finite, check_singular_tol, check_size, shown
@@ -192,8 +192,7 @@ def check_timing(exp) -> None:
         raise HybridError(f"sample_time = {exp.sample_time} s is not a whole multiple of integration_step = "
                           f"{h} s; choose integration_step = sample_time / k for a whole k")
     # fastest plant mode: sensor mass on the contact (and sensor) spring-dampers
-    rate = max(math.sqrt((exp.contact.stiffness + exp.sensor.stiffness) / exp.sensor.mass),
-               (exp.contact.damping + exp.sensor.damping) / exp.sensor.mass)
+    rate = fastest_mode(exp.sensor, exp.contact)
     if h * rate > 1.0:
         raise HybridError(
             f"integration_step = {h} s is too large for the contact: its fastest mode is {rate:.3g} rad/s "

@@ -157,6 +157,24 @@ class Sensor:
                               "below it, or None for no lag")
 
 
+def lag_pole(bandwidth_hz, sample_time):
+    """The pole ``a = exp(-2 pi f_b T)`` of the sensor's first-order lag discretised at the sample time
+    (conventions §14); 0 (no lag) for a ``bandwidth_hz`` of None. Arrays give arrays."""
+    if bandwidth_hz is None:
+        return 0.0
+    return np.exp(-2 * np.pi * np.asarray(bandwidth_hz, float) * np.asarray(sample_time, float))
+
+
+def fastest_mode(sensor: Sensor, contact: Contact, sensor_stiffness: float | None = None,
+                 contact_stiffness: float | None = None) -> float:
+    """The plant's fastest mode [rad/s]: the sensor's tip mass on the contact's and the sensor's springs
+    (their stiffnesses, or the ones given), or on their dampers, whichever is faster. RK4 resolves it at
+    an integration step of at most its inverse."""
+    k = (contact.stiffness if contact_stiffness is None else contact_stiffness) \
+        + (sensor.stiffness if sensor_stiffness is None else sensor_stiffness)
+    return max(math.sqrt(k / sensor.mass), (contact.damping + sensor.damping) / sensor.mass)
+
+
 def _real(v) -> bool:
     return isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool)
 

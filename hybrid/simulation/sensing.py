@@ -25,14 +25,13 @@ chain for an experiment's runs, or says there is none (the controller then gets 
 
 from __future__ import annotations
 
-import math
 from collections import deque
 
 import numpy as np
 
 from hybrid.control.wrench_sensor import reading_of
 from hybrid.models.chain_terms import robot_terms
-from hybrid.plants.contact import Sensor
+from hybrid.plants.contact import Sensor, lag_pole
 
 
 class SensorSignal:
@@ -45,7 +44,7 @@ class SensorSignal:
             raise TypeError(f"a SensorSignal needs a hybrid.Sensor, got {type(sensor).__name__}")
         sensor.check_sampling(sample_time)
         #: the lag's pole ``a`` (0: no lag)
-        self.pole = 0.0 if sensor.bandwidth_hz is None else math.exp(-2 * math.pi * sensor.bandwidth_hz * sample_time)
+        self.pole = float(lag_pole(sensor.bandwidth_hz, sample_time))
         self.bias = np.array(sensor.bias)
         self.scale = np.repeat([sensor.force_noise, sensor.moment_noise], 3)
         self.delay = sensor.delay_samples

@@ -219,9 +219,7 @@ def stability_of(st: Structure, p: dict, names, *, margins: bool = True) -> Stab
         late = delay_margin(sub, q) if ok else 0
         loops.append(LoopStability(name, "force" if st.force[i] else "velocity", radius, poles, damping, frequency,
                                    gm, pm, late))
-    with np.errstate(all="ignore"):
-        whole = _radius(_poles(closed_loop(st, p)["A"]))
-    return Stability(tuple(loops), whole, T)
+    return Stability(tuple(loops), _whole_radius(st, p), T)
 
 
 def axis_alone(st: Structure, p: dict, i: int) -> tuple[Structure, dict]:
@@ -233,6 +231,21 @@ def axis_alone(st: Structure, p: dict, i: int) -> tuple[Structure, dict]:
             M = np.asarray(q[k], float)
             q[k] = M[..., i:i + 1, i:i + 1]
     return sub, q
+
+
+def loop_radius(st: Structure, p: dict):
+    """The spectral radius of the closed loop of ``st`` and ``p`` (a float), or of each of a batch of them
+    (an array): ``inf`` for a loop whose matrix overflows, that one alone."""
+    with np.errstate(all="ignore"):
+        A = closed_loop(st, p)["A"]
+    finite = np.isfinite(A).all(axis=(-2, -1))
+    radius = np.full(A.shape[:-2], np.inf)
+    if finite.any():
+        try:
+            radius[finite] = np.abs(np.linalg.eigvals(A[finite])).max(axis=-1)
+        except np.linalg.LinAlgError:  # no convergence somewhere (entries near overflow): each alone
+            radius[finite] = [_radius(_poles(a)) for a in A[finite]]
+    return float(radius) if radius.ndim == 0 else radius
 
 
 def _poles(A: np.ndarray) -> np.ndarray:
@@ -286,8 +299,7 @@ def gain_margin(st: Structure, p: dict) -> float:
     function's phase crossings (at the Nyquist frequency among them) are easily missed.
     """
     def radius(k: float) -> float:
-        with np.errstate(all="ignore"):
-            return _radius(_poles(closed_loop(st, dict(p, gain=np.asarray(p["gain"], float) * k))["A"]))
+        return loop_radius(st, dict(p, gain=np.asarray(p["gain"], float) * k))
 
     lo, hi = 1.0, 1.25
     while radius(hi) < 1.0:
@@ -308,9 +320,7 @@ def delay_margin(st: Structure, p: dict) -> int:
     """How many more whole samples the reading may be late with the loop still stable (0: not one more;
     :data:`MOST_DELAY` at most)."""
     for extra in range(1, MOST_DELAY + 1):
-        with np.errstate(all="ignore"):
-            radius = _radius(_poles(closed_loop(replace(st, delay=st.delay + extra), p)["A"]))
-        if not radius < 1.0:
+        if not loop_radius(replace(st, delay=st.delay + extra), p) < 1.0:
             return extra - 1
     return MOST_DELAY
 
@@ -367,8 +377,7 @@ def _whole_radius(st: Structure, p: dict) -> float:
     key = (st, tuple((k, np.asarray(v, float).tobytes()) for k, v in sorted(p.items())))
     found = _RADII.get(key)
     if found is None:
-        with np.errstate(all="ignore"):
-            found = _RADII[key] = _radius(_poles(closed_loop(st, p)["A"]))
+        found = _RADII[key] = loop_radius(st, p)
         if len(_RADII) > 4096:
             _RADII.pop(next(iter(_RADII)))
     return found

@@ -10,14 +10,13 @@ the model's ``V_q``), ``K = J_t B^-1 d(J^T F_0 - g)/dq J_t^+``.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from hybrid.control.schemes import scheme_of
 from hybrid.control.wrench_sensor import filter_coefficients
 from hybrid.errors import HybridError
 from hybrid.geometry.task_axes import check_axes, frame_rows
+from hybrid.plants.contact import lag_pole
 from hybrid.stability.model import Structure
 
 #: task-axis indices below this are linear (t1, t2, n), the rest rotations
@@ -123,7 +122,7 @@ def loop_numbers(exp, terms: dict | None = None) -> tuple[Structure, dict]:
     p = {"sample_time": T, **{k: terms[k] for k in MATRICES},
          "sensor_mass": sensor.mass, "sensor_stiffness": sensor.stiffness, "sensor_damping": sensor.damping,
          "contact_stiffness": contact.stiffness, "contact_damping": contact.damping,
-         "lag": 0.0 if sensor.bandwidth_hz is None else math.exp(-2 * math.pi * sensor.bandwidth_hz * T),
+         "lag": float(lag_pole(sensor.bandwidth_hz, T)),
          "filter": filter_coefficients(cutoff, 1 if told is None else told.order, T),
          **{k: float(v) for k, v in vars(g).items()}}
     if not any(st.force):

@@ -18,9 +18,9 @@ from hybrid.control.loops import Gains
 from hybrid.control.wrench_sensor import filter_coefficients
 from hybrid.errors import HybridError
 from hybrid.experiments.settings import setting_path
-from hybrid.stability.analysis import _poles, _radius
+from hybrid.plants.contact import fastest_mode, lag_pole
+from hybrid.stability.analysis import loop_radius
 from hybrid.stability.experiment_loops import check_delay, loop_numbers
-from hybrid.stability.model import closed_loop
 from hybrid.sweeps.space import apply
 from hybrid.validate import check_size, shown
 
@@ -223,10 +223,8 @@ def _group_base(exp, paths: dict, point: dict):
     fine enough for its contact (the loops do not depend on it)."""
     changes = {name: (int(point[name]) if path == "sensor.delay_samples" else float(point[name]))
                for name, path in paths.items() if path in GROUPED or path.startswith("gains.")}
-    sensor, contact = exp.sensor, exp.contact
-    stiffness = {"contact.stiffness": contact.stiffness, "sensor.stiffness": sensor.stiffness}
-    stiffness.update({paths[k]: v for k, v in changes.items() if paths[k] in stiffness})
-    rate = max(math.sqrt(sum(stiffness.values()) / sensor.mass), (contact.damping + sensor.damping) / sensor.mass)
+    given = {paths[k]: v for k, v in changes.items()}
+    rate = fastest_mode(exp.sensor, exp.contact, given.get("sensor.stiffness"), given.get("contact.stiffness"))
     steps = max(exp.steps_per_sample, math.ceil(exp.sample_time * rate))
     try:
         return apply(replace(exp, allow_unstable=True, integration_step=exp.sample_time / steps), changes)
@@ -262,7 +260,7 @@ def _radii(st, p: dict, base, paths: dict, grid: dict) -> np.ndarray:
     q["gain"] = q["gain"] * scale[:, None, None]
     valid = np.ones(size, bool)
     if st.lag or np.isfinite(bandwidth).any():
-        q["lag"] = np.exp(-2 * np.pi * np.nan_to_num(bandwidth) * T)
+        q["lag"] = lag_pole(np.nan_to_num(bandwidth), T)
         valid &= ~(bandwidth >= 0.5 / T)
     if st.filtered or np.isfinite(cutoff).any():
         order = 1 if told is None else told.order
@@ -271,8 +269,7 @@ def _radii(st, p: dict, base, paths: dict, grid: dict) -> np.ndarray:
         valid &= ~(cutoff >= 0.5 / T)
     st = replace(st, lag=st.lag or bool(np.isfinite(bandwidth).any()),
                  filtered=st.filtered or bool(np.isfinite(cutoff).any()))
-    with np.errstate(all="ignore"):
-        radius = np.asarray(_radius(_poles(closed_loop(st, q)["A"])), float).reshape(size)
+    radius = np.asarray(loop_radius(st, q), float).reshape(size)
     radius[~valid] = np.nan
     return radius
 

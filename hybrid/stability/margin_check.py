@@ -18,9 +18,9 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.stability.analysis import MOST_DELAY, MOST_GAIN, _poles, _radius, axis_alone
+from hybrid.stability.analysis import MOST_DELAY, MOST_GAIN, axis_alone, loop_radius
 from hybrid.stability.experiment_loops import loop_numbers
-from hybrid.stability.model import Structure, closed_loop
+from hybrid.stability.model import Structure
 
 #: the gain factor's step of :func:`~hybrid.stability.analysis.gain_margin`'s search
 STEP = 1.25
@@ -106,25 +106,12 @@ class MarginCheck:
         q = {k: np.broadcast_to(v[:, None], (m, n) + v.shape[1:]).copy() for k, v in p.items()}
         for name, values in gains.items():
             q[name] = np.broadcast_to(np.asarray(values, float)[None, :], (m, n)).copy()
-        worst = _radii(st, q)
+        worst = loop_radius(st, q)
         for i in range(st.n):
             sub, qi = axis_alone(st, q, i)
             for k in self.factors:
-                worst = np.maximum(worst, _radii(sub, dict(qi, gain=qi["gain"] * k)))
+                worst = np.maximum(worst, loop_radius(sub, dict(qi, gain=qi["gain"] * k)))
             for extra in range(1, self.min_delay_margin_samples + 1):
-                worst = np.maximum(worst, _radii(replace(sub, delay=sub.delay + extra), qi))
+                worst = np.maximum(worst, loop_radius(replace(sub, delay=sub.delay + extra), qi))
         return worst
 
-
-def _radii(st: Structure, q: dict) -> np.ndarray:
-    """The spectral radius of each closed loop of a batch (``inf`` for one that overflows, that one alone)."""
-    with np.errstate(all="ignore"):
-        A = closed_loop(st, q)["A"]
-    finite = np.isfinite(A).all(axis=(-2, -1))
-    radius = np.full(A.shape[:-2], np.inf)
-    if finite.any():
-        try:
-            radius[finite] = np.abs(np.linalg.eigvals(A[finite])).max(axis=-1)
-        except np.linalg.LinAlgError:  # no convergence somewhere: each alone
-            radius[finite] = [_radius(_poles(a)) for a in A[finite]]
-    return radius
