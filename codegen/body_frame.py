@@ -43,7 +43,8 @@ from .rigid_body import (
     _unit_axis,
     _vec,
     cross,
-    gravity_and_damping,
+    gravity,
+    joint_friction,
     split_rotation,
     turned_rotation,
 )
@@ -349,13 +350,13 @@ def links(tree: Tree, params) -> list[Link]:
 def rnea(tree: Tree, params, qd, qdd=None, f_ext=None, velocities=None, bodies=None) -> ca.SX:
     """``tau = B q'' + n(q, q') - sum_i J_i^T f_ext_i`` by the recursive Newton-Euler algorithm in
     body coordinates (Featherstone table 5.1; ``q'' = 0`` when ``qdd`` is None): Coriolis and
-    centrifugal terms, gravity (the base's fictitious acceleration ``-g``) and joint viscosity
-    ``damping_i q'_i``. ``f_ext`` maps a link's index to the force ``(n, f)`` the environment
+    centrifugal terms, gravity (the base's fictitious acceleration ``-g``) and joint friction
+    (:func:`.rigid_body.joint_friction`). ``f_ext`` maps a link's index to the force ``(n, f)`` the environment
     exerts on it, in its coordinates. ``velocities`` reuses :func:`link_velocities`'. ``bodies``
     (anything with ``wrench``, one per link in the tree's frames) stands for the links of ``params``,
-    whose viscosities and gravity are still read."""
+    whose friction and gravity are still read."""
     n = tree.n
-    damping, g = gravity_and_damping(tree.chain, params)
+    friction, g = joint_friction(tree.chain, params, qd), gravity(tree.chain, params)
     bodies = bodies or links(tree, params)
     vs = velocities or link_velocities(tree, qd)
     zero = ca.SX.zeros(3, 1)
@@ -371,7 +372,7 @@ def rnea(tree: Tree, params, qd, qdd=None, f_ext=None, velocities=None, bodies=N
         forces.append(f)
     tau = [None] * n
     for i in reversed(range(n)):
-        tau[i] = _dot(tree.S[i], forces[i]) + damping[i] * qd[i]
+        tau[i] = _dot(tree.S[i], forces[i]) + friction[i]
         if i > 0:
             forces[i - 1] = _add(forces[i - 1], tree.X[i].force(forces[i]))
     return ca.vertcat(*tau)
@@ -399,9 +400,9 @@ def crba(tree: Tree, params) -> ca.SX:
 def aba(tree: Tree, params, qd, tau, f_ext=None, velocities=None) -> ca.SX:
     """``q''`` of ``B q'' + n(q, q') = tau + sum_i J_i^T f_ext_i`` by the articulated-body algorithm
     in body coordinates (Featherstone table 7.1), with gravity (the base's acceleration ``-g``) and
-    joint viscosity (``tau_i - damping_i q'_i`` drives joint ``i``); ``f_ext`` as :func:`rnea`'s."""
+    joint friction (``tau_i`` less joint ``i``'s friction drives it); ``f_ext`` as :func:`rnea`'s."""
     n = tree.n
-    damping, g = gravity_and_damping(tree.chain, params)
+    friction, g = joint_friction(tree.chain, params, qd), gravity(tree.chain, params)
     bodies = links(tree, params)
     vs = velocities or link_velocities(tree, qd)
     IA, pA, c = [], [], []
@@ -419,7 +420,7 @@ def aba(tree: Tree, params, qd, tau, f_ext=None, velocities=None) -> ca.SX:
     for i in reversed(range(n)):
         U[i] = IA[i].apply(tree.S[i])
         Dinv[i] = reciprocal(_dot(tree.S[i], U[i]))
-        u[i] = tau[i] - damping[i] * qd[i] - _dot(tree.S[i], pA[i])
+        u[i] = tau[i] - friction[i] - _dot(tree.S[i], pA[i])
         if i > 0:  # I^a = I^A - U D^-1 U^T, p^a = p^A + I^a c + U D^-1 u, carried to the parent
             Ia = IA[i].less(U[i], Dinv[i])
             pa = _add(_add(pA[i], Ia.apply(c[i])), _scale(U[i], Dinv[i] * u[i]))

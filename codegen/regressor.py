@@ -4,10 +4,11 @@ The ``robot`` array holds each link's centre of mass ``c`` and its inertia about
 dynamics are not linear in those (``m c`` and ``m c c^T`` appear). They are linear in each link's
 mass ``m``, first moment ``h = m c`` and inertia ``I_O = I_c + m (|c|^2 1 - c c^T)`` about the
 joint frame's origin, all in the joint frame (:data:`hybrid.spec.chain.LINEAR`), and in the joint
-viscosities. With those as ``pi`` (:func:`hybrid.spec.chain.linear_parameter_names`), the
+friction's viscosities, Coulomb frictions and offsets (:data:`hybrid.spec.chain.LINEAR_FRICTION`). With those as ``pi`` (:func:`hybrid.spec.chain.linear_parameter_names`), the
 recursive Newton-Euler algorithm of :mod:`.body_frame` is written on symbols ``pi`` and ``Y`` is
 its Jacobian with respect to them: exact, since ``tau`` is linear in ``pi``, and checked to be free
-of them. Gravity stays an input: ``tau`` is linear in ``pi`` for a given ``g``.
+of them. Gravity and the Coulomb friction's smooth-sign speeds stay inputs: ``tau`` is linear in ``pi``
+for given ``g`` and ``v_s``.
 """
 
 from __future__ import annotations
@@ -39,7 +40,8 @@ def link_inertias(tree: bf.Tree, pi) -> list[rb.Inertia]:
 
 
 def regressor_kernel(chain: rb.Chain) -> Kernel:
-    """``regressor``: ``Y`` (n x 11 n, row-major) of ``tau = Y pi`` at each state, gravity an input.
+    """``regressor``: ``Y`` (n x 13 n, row-major) of ``tau = Y pi`` at each state, gravity and the smooth
+    sign's speeds inputs.
 
     Raises
     ------
@@ -49,11 +51,12 @@ def regressor_kernel(chain: rb.Chain) -> Kernel:
     n = chain.n
     names = tuple(j.name for j in chain.joints)
     q, qd, qdd = (ca.SX.sym(s, n) for s in ("q", "qd", "qdd"))
-    g = ca.SX.sym("g", 3)
+    g, vs = ca.SX.sym("g", 3), ca.SX.sym("coulomb_speed", n)
     pi = ca.SX.sym("pi", len(rb.linear_parameter_names(chain)))
     tree = bf.link_transforms(chain, q)
-    # the robot array the RNEA reads its viscosities and gravity from; its inertial entries are unused
-    robot = ca.vertcat(ca.SX.zeros(len(rb.INERTIAL) * n), pi[len(rb.LINEAR) * n:], g)
+    # the robot array the RNEA reads its friction and gravity from (the FRICTION blocks: the linear ones,
+    # then the smooth sign's speeds); its inertial entries are unused
+    robot = ca.vertcat(ca.SX.zeros(len(rb.INERTIAL) * n), pi[len(rb.LINEAR) * n:], vs, g)
     tau = bf.rnea(tree, robot, qd, qdd, bodies=link_inertias(tree, pi))
     Y = ca.jacobian(tau, pi)
     if ca.depends_on(Y, pi):
@@ -61,11 +64,13 @@ def regressor_kernel(chain: rb.Chain) -> Kernel:
     return Kernel(
         "regressor",
         (Arg("q", q, rb.joint_units(chain, "q"), names=names), Arg("qd", qd, rb.joint_units(chain, "qd"), names=names),
-         Arg("qdd", qdd, rb.joint_units(chain, "qdd"), names=names), Arg("g", g, "m/s^2")),
+         Arg("qdd", qdd, rb.joint_units(chain, "qdd"), names=names), Arg("g", g, "m/s^2"),
+         Arg("coulomb_speed", vs, rb.joint_units(chain, "qd"), names=names)),
         (Arg("Y", rb.row_major(Y), "the joint's effort unit per the parameter's (joint rows, parameter columns)",
              (n, Y.shape[1])),),
         "joint-torque regressor Y(q, q', q'') of tau = Y pi, pi per link (m, m c, I about the joint frame's "
-        "origin), then the joint viscosities; gravity g in base axes", batched=("q", "qd", "qdd"))
+        "origin), then the joints' viscosities, Coulomb frictions (smooth sign tanh(q'/coulomb_speed)) and offsets; "
+        "gravity g in base axes", batched=("q", "qd", "qdd"))
 
 
 def build_regressor_unit(chain: rb.Chain, prefix: str, info: dict) -> Unit:

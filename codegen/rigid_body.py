@@ -30,6 +30,7 @@ import casadi as ca
 import numpy as np
 
 from hybrid.spec.chain import (  # noqa: F401  (the chain's data, re-exported for the generator)
+    FRICTION,
     INERTIAL,
     INERTIAL_UNITS,
     JOINT_UNITS,
@@ -312,11 +313,18 @@ def link_inertias(chain: Chain, frames: Frames, params) -> list[Inertia]:
     return [b.about_origin() for b in link_bodies(chain, frames, params)]
 
 
-def gravity_and_damping(chain: Chain, params):
-    base = len(INERTIAL) * chain.n
-    damping = [params[base + i] for i in range(chain.n)]
-    g = ca.vertcat(*(params[base + chain.n + i] for i in range(3)))
-    return damping, g
+def gravity(chain: Chain, params) -> ca.SX:
+    """Gravity ``g`` [m/s^2] in base axes: the ``robot`` array's last three entries."""
+    base = (len(INERTIAL) + len(FRICTION)) * chain.n
+    return ca.vertcat(*(params[base + i] for i in range(3)))
+
+
+def joint_friction(chain: Chain, params, qd) -> list:
+    """Each joint's friction torque ``F_v q' + F_c tanh(q' / v_s) + tau_0`` (the :data:`FRICTION` blocks of
+    the ``robot`` array): viscous, Coulomb with a smooth sign of speed ``v_s > 0``, and an offset."""
+    base, n = len(INERTIAL) * chain.n, chain.n
+    Fv, Fc, tau0, vs = ([params[base + b * n + i] for i in range(n)] for b in range(len(FRICTION)))
+    return [Fv[i] * qd[i] + Fc[i] * ca.tanh(qd[i] / vs[i]) + tau0[i] for i in range(n)]
 
 
 def crba(chain: Chain, frames: Frames, params, inertias: list[Inertia] | None = None) -> ca.SX:
@@ -335,9 +343,9 @@ def crba(chain: Chain, frames: Frames, params, inertias: list[Inertia] | None = 
 
 def rnea(chain: Chain, frames: Frames, params, qd, qdd=None, bodies=None) -> ca.SX:
     """``tau = B q'' + n(q, q')`` by recursive Newton-Euler (``q'' = 0`` when ``qdd`` is None):
-    Coriolis/centrifugal, gravity and joint viscosity ``damping_i q'_i``. ``bodies`` (anything with
+    Coriolis/centrifugal, gravity and joint friction (:func:`joint_friction`). ``bodies`` (anything with
     ``wrench``) reuses inertias already formed, e.g. the CRBA's."""
-    damping, g = gravity_and_damping(chain, params)
+    friction, g = joint_friction(chain, params, qd), gravity(chain, params)
     inertias = bodies or link_bodies(chain, frames, params)
     vs, bias = velocities_and_bias(frames, qd)
     # a_i = c_i + sum_{j <= i} S_j q''_j + a_0, with gravity as the base's fictitious acceleration
@@ -352,5 +360,5 @@ def rnea(chain: Chain, frames: Frames, params, qd, qdd=None, bodies=None) -> ca.
     for i in reversed(range(chain.n)):
         f = inertias[i].wrench(vs[i], accs[i])
         total = f if total is None else _add(total, f)
-        tau[i] = _dot(frames.S[i], total) + damping[i] * qd[i]
+        tau[i] = _dot(frames.S[i], total) + friction[i]
     return ca.vertcat(*tau)

@@ -63,7 +63,7 @@ def plant_kernels(chain: rb.Chain, spec: SurfaceSpec) -> tuple[Kernel, ...]:
     # |v_s| kept away from 0 by far less than v_eps: tanh(w / v_eps) / w stays finite (1 / v_eps)
     w = ca.sqrt(ca.dot(slide, slide) + (1e-9 * v_eps) ** 2)
     friction = gamma * N * ca.tanh(w / v_eps)
-    _, g = rb.gravity_and_damping(chain, params)
+    g = rb.gravity(chain, params)
     sdd = (N * n_s - friction / w * slide - Fc) / m_s + g
     B = bf.crba(tree, params)
     # n(q, q') - J_p^T F_c: the sensor's force on the arm enters the Newton-Euler pass

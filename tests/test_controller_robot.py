@@ -79,3 +79,21 @@ def test_saved_and_read_back(tracing):
     again = hybrid.Experiment.from_dict(told.to_dict())
     assert again.controller_robot == model and again == told
     assert "controller_robot" not in tracing.to_dict()  # saved as before when not given
+
+
+def test_joint_friction_is_compensated_when_known():
+    """A plant with Coulomb friction and offsets on its joints: the controller told them runs close to the
+    frictionless run (the law cancels them at each sample's velocity; within the sample the plant's friction
+    moves on), told the robot without them it runs several times further from it."""
+    base = hybrid.tracing_experiment(duration=0.6)
+    robot = dataclasses.replace(base.robot, coulomb=(3.0, 4.0, 2.0, 0.8, 0.6, 0.4),
+                                offset=(0.5, -0.8, 0.4, 0.1, -0.1, 0.05), coulomb_speed=(0.2,) * 6)
+    frictionless = hybrid.simulate(dataclasses.replace(base, **EXACT))
+    told = hybrid.simulate(dataclasses.replace(base, robot=robot, controller_robot=robot))
+    untold = hybrid.simulate(dataclasses.replace(base, robot=robot, controller_robot=base.robot))
+
+    def apart(res, what):
+        return float(np.sqrt(np.mean((getattr(res, what) - getattr(frictionless, what)) ** 2)))
+
+    for what in ("force_normal", "velocity_tangential"):  # measured: 6.5x and 15x further
+        assert apart(told, what) < 0.25 * apart(untold, what)

@@ -283,3 +283,14 @@ def test_a_surface_without_phi_is_refused():
 
     with pytest.raises(hybrid.HybridError, match=r"^a Bare gives no phi: define its formula\(p, theta, sqrt\)"):
         Bare().phi_function()
+
+
+def test_joint_friction_agrees():
+    """A UR5 with Coulomb friction and offsets on its joints (MuJoCo's passive forces and the generated ABA
+    under the same friction formula) and the controller told it: the two plants agree."""
+    import dataclasses
+
+    robot = dataclasses.replace(hybrid.ur5(), coulomb=(2.0, 2.5, 1.5, 0.5, 0.4, 0.3),
+                                offset=(0.3, -0.5, 0.2, 0.05, -0.05, 0.02), coulomb_speed=(0.2,) * 6)
+    exp = hybrid.tracing_experiment(duration=0.3, robot=robot, controller_robot=robot)
+    assert_agrees(exp)

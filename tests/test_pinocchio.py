@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 from conftest import random_arm
@@ -44,17 +46,31 @@ def _relative(got, want) -> float:
     return float(np.abs(np.asarray(got) - want).max() / np.abs(want).max())
 
 
+def with_friction(robot, rng):
+    """``robot`` with random viscosities, Coulomb frictions, offsets and smooth-sign speeds."""
+    n = robot.n
+    return dataclasses.replace(robot, damping=tuple(rng.uniform(0, 2, n)), coulomb=rng.uniform(0, 3, n),
+                               offset=rng.normal(0, 1, n), coulomb_speed=rng.uniform(0.05, 2.0, n))
+
+
+def friction(robot, qd):
+    """The joints' friction torques from their formula, ``F_v q' + F_c tanh(q' / v_s) + tau_0``."""
+    return (np.array(robot.damping) * qd + np.array(robot.coulomb) * np.tanh(qd / np.array(robot.coulomb_speed))
+            + np.array(robot.offset))
+
+
 def test_body_frame_algorithms_against_pinocchio(rng, robots):
     """Featherstone's algorithms in body coordinates (codegen.body_frame: RNEA with q'' and a force on
     the tip, CRBA, ABA) on the UR5 and the Panda with their real inertial parameters, against
-    Pinocchio's rnea, crba and aba on the same URDF; the base-axes RNEA and CRBA (codegen.rigid_body)
-    too."""
+    Pinocchio's rnea, crba and aba on the same URDF, their joint friction (viscous, Coulomb with a smooth
+    sign, an offset; random) added as its formula; the base-axes RNEA and CRBA (codegen.rigid_body) too."""
     ca = pytest.importorskip("casadi")
     from hybrid.codegen import body_frame as bf
     from hybrid.codegen import rigid_body as rb
 
     for robot, model, fid in robots.values():
         n, data = robot.n, model.createData()
+        robot = with_friction(robot, rng)
         q, qd, qdd, tau, F = (ca.SX.sym(name, size) for name, size in
                               (("q", n), ("qd", n), ("qdd", n), ("tau", n), ("F", 3)))
         params = ca.SX.sym("robot", len(robot.as_array()))
@@ -66,7 +82,6 @@ def test_body_frame_algorithms_against_pinocchio(rng, robots):
                          bf.aba(tree, params, qd, tau, f_ext), bf.tip_position(tree),
                          bf.tip_velocity(tree, bf.link_velocities(tree, qd)),
                          rb.rnea(robot.chain, frames, params, qd, qdd), rb.crba(robot.chain, frames, params)])
-        damping = np.array(robot.damping)
         for _ in range(50):
             x = (rng.uniform(robot.limits.lower, robot.limits.upper), rng.normal(0, 1, n), rng.normal(0, 3, n),
                  rng.normal(0, 20, n), rng.normal(0, 20, 3))
@@ -76,21 +91,21 @@ def test_body_frame_algorithms_against_pinocchio(rng, robots):
             J = pin.computeFrameJacobian(model, data, x[0], fid, pin.LOCAL_WORLD_ALIGNED)[:3]
             assert _relative(r, data.oMf[fid].translation) < 1e-14
             assert _relative(rd, J @ x[1]) < 1e-13
-            want = pin.rnea(model, data, x[0], x[1], x[2]) + damping * x[1]
+            want = pin.rnea(model, data, x[0], x[1], x[2]) + friction(robot, x[1])
             assert _relative(inverse, want - J.T @ x[4]) < 1e-13
             assert _relative(inverse_base, want) < 1e-13
             want = pin.crba(model, data, x[0])
             want = np.triu(want) + np.triu(want, 1).T
             assert _relative(B, want) < 1e-13
             assert _relative(B_base, want) < 1e-13
-            want = pin.aba(model, data, x[0], x[1], x[3] + J.T @ x[4] - damping * x[1])
+            want = pin.aba(model, data, x[0], x[1], x[3] + J.T @ x[4] - friction(robot, x[1]))
             assert _relative(forward, want) < 1e-12
 
 
 def test_spatial_plant_rhs_against_pinocchio_aba(rng, robots):
     """The 3-D plant's state derivative (conventions §10, the generated C) on random states of the UR5
     and the Panda with their real parameters: the joint accelerations against Pinocchio's ABA on the
-    same URDF under tau + J_p^T F_c - viscosity, the sensor tip's from its forces written out here."""
+    same URDF under tau + J_p^T F_c - joint friction, the sensor tip's from its forces written out here."""
     from hybrid.native import units
 
     exp = hybrid.tracing_experiment()
@@ -98,7 +113,8 @@ def test_spatial_plant_rhs_against_pinocchio_aba(rng, robots):
     m_s, K_s, D_s, k_e, d_e, gamma, v_eps = plant
     center, radius = np.array(sphere.center), sphere.radius
     for robot, model, fid in robots.values():
-        n, data, damping = robot.n, model.createData(), np.array(robot.damping)
+        n, data = robot.n, model.createData()
+        robot = with_friction(robot, rng)
         g = np.array(robot.gravity)
         rhs = units.plant_unit(robot.chain, robot.name, sphere.spec()).function("plant_rhs")
         contacts = 0
@@ -114,7 +130,7 @@ def test_spatial_plant_rhs_against_pinocchio_aba(rng, robots):
             pin.updateFramePlacements(model, data)
             J = pin.computeFrameJacobian(model, data, q, fid, pin.LOCAL_WORLD_ALIGNED)[:3]
             Fc = K_s * (s - data.oMf[fid].translation) + D_s * (sd - J @ qd)
-            qdd = pin.aba(model, data, q, qd, tau + J.T @ Fc - damping * qd)
+            qdd = pin.aba(model, data, q, qd, tau + J.T @ Fc - friction(robot, qd))
             normal = (s - center) / np.linalg.norm(s - center)
             delta = radius - np.linalg.norm(s - center)
             N = max(0.0, k_e * delta - d_e * normal @ sd) if delta > 0 else 0.0

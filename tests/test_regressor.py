@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -35,25 +37,30 @@ def test_parameters_are_pinocchios(robots):
         want = np.concatenate([model.inertias[i + 1].toDynamicParameters()[FROM_PINOCCHIO]
                                for i in range(robot.n)])
         assert _relative(pi[:10 * robot.n], want) < 1e-12
-        np.testing.assert_array_equal(pi[10 * robot.n:], robot.damping)
+        np.testing.assert_array_equal(pi[10 * robot.n:], [*robot.damping, *robot.coulomb, *robot.offset])
 
 
 def test_regressor_against_pinocchio(rng, robots):
     """``Y`` against ``pin.computeJointTorqueRegressor`` (its columns put in hybrid's order; the
-    viscosities' columns are ``diag(q')``) to 1e-10, one state at a time and N in one call; ``Y pi``
-    is the inverse dynamics ``B q'' + n`` of :func:`hybrid.arm_terms`."""
-    for robot, model, _ in robots.values():
+    friction's columns are ``diag(q')``, ``diag(tanh(q' / v_s))`` and the identity) to 1e-10, one state at a
+    time and N in one call; ``Y pi`` is the inverse dynamics ``B q'' + n`` of :func:`hybrid.arm_terms`, of
+    robots given Coulomb friction, offsets and smooth-sign speeds of their own."""
+    for name, (robot, model, _) in robots.items():
         n, data = robot.n, model.createData()
+        robot = dataclasses.replace(robot, coulomb=rng.uniform(0, 3, n), offset=rng.normal(0, 1, n),
+                                    coulomb_speed=rng.uniform(0.01, 0.5, n))
         qs, qds, qdds = _states(rng, robot, 20)
+        qds[:5] *= 0.02  # speeds within the smooth sign's too
         Ys, names = hybrid.regressor(robot, qs, qds, qdds)
-        assert Ys.shape == (20, n, 11 * n) and len(names) == 11 * n
-        assert names[10 * n:] == tuple(f"damping[{j}]" for j in robot.joint_names)
+        assert Ys.shape == (20, n, 13 * n) and len(names) == 13 * n
+        assert names[10 * n:] == tuple(f"{p}[{j}]" for p in ("damping", "coulomb", "offset") for j in robot.joint_names)
         pi = hybrid.linear_parameters(robot)
         for q, qd, qdd, Y_batch in zip(qs, qds, qdds, Ys):
             Y, _ = hybrid.regressor(robot, q, qd, qdd)
             np.testing.assert_array_equal(Y, Y_batch)
             Y_pin = pin.computeJointTorqueRegressor(model, data, q, qd, qdd)
-            want = np.hstack([Y_pin[:, 10 * i:10 * (i + 1)][:, FROM_PINOCCHIO] for i in range(n)] + [np.diag(qd)])
+            want = np.hstack([Y_pin[:, 10 * i:10 * (i + 1)][:, FROM_PINOCCHIO] for i in range(n)]
+                             + [np.diag(qd), np.diag(np.tanh(qd / np.array(robot.coulomb_speed))), np.eye(n)])
             np.testing.assert_allclose(Y, want, rtol=0, atol=1e-10 * max(1.0, np.abs(want).max()))
             terms = hybrid.arm_terms(robot, q, qd)
             tau = terms["B"] @ qdd + terms["n"]
@@ -64,11 +71,9 @@ def test_regressor_reads_structure_and_gravity_only(rng, robots):
     """Another robot of the same structure has the same ``Y`` (its parameters are in ``pi``), and ``Y``
     changes with gravity as the gravity torque does: ``Y(q, 0, 0) pi`` is the gravity torque."""
     robot = robots["ur5"][0]
-    other = robot.with_link(robot.joint_names[2], mass=3.0, com=(0.1, 0.0, 0.2))
+    other = robot.with_link(robot.joint_names[2], mass=3.0, com=(0.1, 0.0, 0.2), coulomb=2.0, offset=-0.5)
     q, qd, qdd = (x[0] for x in _states(rng, robot, 1))
     np.testing.assert_array_equal(hybrid.regressor(robot, q, qd, qdd)[0], hybrid.regressor(other, q, qd, qdd)[0])
-    import dataclasses
-
     sideways = dataclasses.replace(robot, gravity=(3.0, -2.0, -9.0))
     zero = np.zeros(robot.n)
     Y, _ = hybrid.regressor(sideways, q, zero, zero)
@@ -80,7 +85,7 @@ def test_base_parameters_give_the_full_torques(rng, robots):
     """The base parameters (from ``Y`` at the function's own random states) give the torques of the full
     ones at other states to 1e-10; every dropped column is its combination of the kept ones there; the
     kept columns are independent, as many as the rank of Pinocchio's regressor stacked over those states
-    (plus a viscosity per joint); the choice and the combinations do not depend on the states."""
+    (plus a viscosity, a Coulomb friction and an offset per joint); the choice and the combinations do not depend on the states."""
     for robot, model, _ in robots.values():
         n, data = robot.n, model.createData()
         base = hybrid.base_parameters(robot)
@@ -89,14 +94,14 @@ def test_base_parameters_give_the_full_torques(rng, robots):
         Y, _ = hybrid.regressor(robot, qs, qds, qdds)
         tau = Y @ pi
         np.testing.assert_allclose(base.regressor(Y) @ base.of(pi), tau, rtol=0, atol=1e-10 * np.abs(tau).max())
-        W = Y.reshape(-1, 11 * n)
+        W = Y.reshape(-1, 13 * n)
         kept, dropped = W[:, list(base.independent)], W[:, list(base.dependent)]
         assert np.abs(kept @ base.beta - dropped).max() < 1e-10 * np.abs(W).max()
         singular = np.linalg.svd(kept, compute_uv=False)
         assert singular[-1] > 1e-6 * singular[0]
         W_pin = np.vstack([pin.computeJointTorqueRegressor(model, data, *x) for x in zip(qs, qds, qdds)])
         s = np.linalg.svd(W_pin, compute_uv=False)
-        assert len(base.independent) == int((s > 1e-10 * s[0]).sum()) + n
+        assert len(base.independent) == int((s > 1e-10 * s[0]).sum()) + 3 * n
         other = hybrid.base_parameters(robot, states=150, seed=1)
         assert other.independent == base.independent
         np.testing.assert_allclose(other.beta, base.beta, rtol=0, atol=1e-12)

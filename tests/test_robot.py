@@ -199,7 +199,44 @@ def test_robot_description(rng):
     np.testing.assert_array_equal(robot.limits.lower, model.lowerPositionLimit[:7])
     np.testing.assert_array_equal(robot.limits.upper, model.upperPositionLimit[:7])
     np.testing.assert_array_equal(robot.damping, model.damping[:7])
-    assert len(robot.as_array()) == len(robot.parameter_names()) == 11 * 7 + 3
+    np.testing.assert_array_equal(robot.coulomb, model.friction[:7])
+    assert len(robot.as_array()) == len(robot.parameter_names()) == 14 * 7 + 3
     slider = hybrid.Robot.from_urdf(DATA / "slider_arm.urdf", "tool")
     assert slider.joint_names == ("slide", "shoulder", "elbow")  # the gripper is off the chain
     assert slider.chain.joints[0].kind == "prismatic" and np.isinf(slider.limits.upper[2])
+
+
+def test_joint_friction_is_checked_and_kept():
+    """Coulomb friction, offsets and smooth-sign speeds: one per joint, physical, refused otherwise (and on the
+    planar arm's closed form); kept through the model error's share, a link change and a save and read."""
+    import dataclasses
+
+    from hybrid.experiments.serialisation import robot_from_dict, robot_to_dict
+
+    robot = hybrid.ur5()
+    assert robot.coulomb == (0.0,) * 6 and robot.offset == (0.0,) * 6
+    rough = dataclasses.replace(robot, coulomb=[1.0] * 6, offset=np.arange(6.0), coulomb_speed=[0.1] * 6)
+    np.testing.assert_allclose(rough.rest_viscosity, np.array(robot.damping) + 10.0)
+    assert robot_from_dict(robot_to_dict(rough)) == rough
+    assert robot_to_dict(robot)["digest"] == robot_to_dict(dataclasses.replace(robot, coulomb=(0.0,) * 6))["digest"]
+    model = rough.with_model_error(0.0, 0.5)
+    assert model.coulomb == (0.5,) * 6 and model.offset == tuple(np.arange(6.0) * 0.5)
+    assert rough.with_link(robot.joint_names[1], coulomb=2.0).coulomb[1] == 2.0
+    for bad, match in (({"coulomb": [-1.0] * 6}, "Coulomb friction >= 0"), ({"coulomb": [1.0] * 5}, "coulomb"),
+                       ({"coulomb_speed": [0.0] * 6}, "speed > 0"), ({"offset": [np.nan] * 6}, "offset")):
+        with pytest.raises(hybrid.HybridError, match=match):
+            dataclasses.replace(robot, **bad)
+    with pytest.raises(hybrid.HybridError, match="closed form has joint viscosity only"):
+        dataclasses.replace(hybrid.Robot.planar(hybrid.paper_arm()), coulomb=(1.0, 1.0))
+
+
+def test_an_integration_step_too_long_for_the_coulomb_friction_is_refused():
+    """About rest the smooth sign is a viscosity F_c / v_s: a sharp one on the UR5's wrist is a mode faster than
+    the integration step resolves, refused saying the step or the speed to use; a gentler one runs."""
+    import dataclasses
+
+    sharp = dataclasses.replace(hybrid.ur5(), coulomb=(2.0,) * 6, coulomb_speed=(1e-4,) * 6)
+    with pytest.raises(hybrid.HybridError, match="too large for the joints' Coulomb friction"):
+        hybrid.tracing_experiment(robot=sharp, controller_robot=sharp)
+    gentle = dataclasses.replace(sharp, coulomb_speed=(0.2,) * 6)
+    hybrid.tracing_experiment(robot=gentle, controller_robot=gentle)

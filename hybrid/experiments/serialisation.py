@@ -23,7 +23,7 @@ from hybrid.geometry.patterns import RasterPath, SpiralPath
 from hybrid.geometry.surfaces import SURFACE_KINDS, Circle, Plane, Surface
 from hybrid.geometry.waypoints import WaypointPath
 from hybrid.models.planar_arm import Arm
-from hybrid.models.robot import Robot
+from hybrid.models.robot import COULOMB_SPEED, Robot
 from hybrid.models.urdf import JointLimits, LinkInertia
 from hybrid.plants.contact import Contact, Sensor
 from hybrid.spec.chain import Chain, Joint
@@ -129,6 +129,9 @@ def robot_to_dict(robot: Robot) -> dict:
         limits = None if robot.limits is None else {k: np.asarray(v).tolist() for k, v in vars(robot.limits).items()}
         d = {"name": robot.name, "chain": asdict(robot.chain), "links": [asdict(lk) for lk in robot.links],
              "damping": list(robot.damping), "gravity": list(robot.gravity), "limits": limits}
+        if any(robot.coulomb) or any(robot.offset) or any(v != COULOMB_SPEED for v in robot.coulomb_speed):
+            # only then: a robot without them is saved (and its digest made) as before they existed
+            d.update(coulomb=list(robot.coulomb), offset=list(robot.offset), coulomb_speed=list(robot.coulomb_speed))
     d["digest"] = hashlib.sha256(json.dumps(d, sort_keys=True).encode()).hexdigest()[:16]
     return d
 
@@ -146,7 +149,8 @@ def robot_from_dict(d: dict) -> Robot:
     chain = Chain(joints, rows(c["tip_rotation"]), tuple(c["tip_translation"]))
     links = tuple(LinkInertia(lk["mass"], tuple(lk["com"]), rows(lk["inertia"])) for lk in d["links"])
     limits = None if d["limits"] is None else JointLimits(**{k: np.array(v, float) for k, v in d["limits"].items()})
-    return Robot(d["name"], chain, links, tuple(d["damping"]), tuple(d["gravity"]), limits)
+    friction = {k: tuple(d[k]) for k in ("coulomb", "offset", "coulomb_speed") if k in d}
+    return Robot(d["name"], chain, links, tuple(d["damping"]), tuple(d["gravity"]), limits, **friction)
 
 
 #: the paths a file names, by kind: the closed forms (their fields) and the paths drawn on a surface (the

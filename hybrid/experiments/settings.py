@@ -197,6 +197,7 @@ def check_timing(exp) -> None:
         raise HybridError(
             f"integration_step = {h} s is too large for the contact: its fastest mode is {rate:.3g} rad/s "
             f"and RK4 needs integration_step * rate <= 1 for accuracy; use integration_step <= {1.0 / rate:.2e} s")
+    check_friction_mode(exp)
     if exp.model_error <= -1 or exp.viscous_compensation < 0:
         raise HybridError(f"model_error = {exp.model_error} must be > -1 and viscous_compensation = "
                           f"{exp.viscous_compensation} >= 0")
@@ -208,6 +209,27 @@ def check_timing(exp) -> None:
     if not isinstance(exp.allow_unstable, bool):
         raise HybridError(f"allow_unstable = {shown(exp.allow_unstable, 40)}; give True (run loops predicted unstable) "
                           "or False")
+
+
+def check_friction_mode(exp) -> None:
+    """Refuse an integration step too long for the joints' Coulomb friction: about rest its smooth sign is a
+    viscosity ``F_c / v_s`` (:attr:`hybrid.Robot.rest_viscosity`), whose fastest mode at the start is the
+    largest eigenvalue of ``B^-1 V``. Checked only for a robot with Coulomb friction (viscosities alone are
+    far slower than the contact)."""
+    robot, h = exp.robot, exp.integration_step
+    if not any(robot.coulomb):
+        return
+    try:
+        q = exp.initial_state()[:robot.n]
+    except HybridError:
+        return  # no start to take it at: the run refuses it, saying why
+    B = robot.kind.rest_terms(robot, q)["B"][0]
+    rate = float(np.max(np.linalg.eigvals(np.linalg.solve(B, np.diag(robot.rest_viscosity))).real))
+    if h * rate > 1.0:
+        raise HybridError(
+            f"integration_step = {h} s is too large for the joints' Coulomb friction: about rest it is a viscosity "
+            f"F_c / v_s whose fastest mode is {rate:.3g} rad/s; use integration_step <= {1.0 / rate:.2e} s or a "
+            "larger Robot coulomb_speed")
 
 
 #: short names of the references

@@ -1,7 +1,7 @@
 """Any serial arm as a validated dataclass: structure, inertial parameters, and its compiled terms.
 
 A :class:`Robot` holds the kinematic chain (compiled into the generated C) and the run-time
-parameters (inertial parameters, joint viscosities, gravity: the ``robot`` array). It is data:
+parameters (inertial parameters, joint friction, gravity: the ``robot`` array). It is data:
 its C is generated and compiled on first use and kept in a cache keyed by the kinematic
 structure (:mod:`hybrid.native.units`), so changing only inertial parameters or gravity never
 regenerates.
@@ -27,6 +27,11 @@ from hybrid.spec import chain as rb
 from hybrid.validate import _finite, check_model_error, finite_array, inertia_problem, shown
 
 
+#: the default speed [rad/s or m/s] of the Coulomb friction's smooth sign ``tanh(q' / v_s)``: 0.99 of the
+#: friction acts from ``2.6 v_s``, and the joint's linear slope about rest is ``F_c / v_s``
+COULOMB_SPEED = 0.05
+
+
 def _gravity(g) -> tuple[float, float, float]:
     try:
         arr = np.asarray(g, dtype=float)
@@ -39,7 +44,11 @@ def _gravity(g) -> tuple[float, float, float]:
 
 @dataclass(frozen=True)
 class Robot:
-    """A serial arm: its kinematic chain, inertial parameters, joint viscosities, gravity and joint limits.
+    """A serial arm: its kinematic chain, inertial parameters, joint friction, gravity and joint limits.
+
+    Joint ``i``'s friction torque is ``F_v q'_i + F_c tanh(q'_i / v_s) + tau_0`` (``damping``,
+    ``coulomb``, ``coulomb_speed``, ``offset``): viscous, Coulomb with a smooth sign, and a constant
+    offset. The plant feels it; a controller told this robot compensates it.
 
     Build it with :meth:`from_urdf` or :meth:`planar`. Terms come from :func:`hybrid.arm_terms`.
 
@@ -63,12 +72,23 @@ class Robot:
         gravity are derived from it (one place for its numbers).
     source : tuple or None
         Where :meth:`from_urdf` read it.
+    coulomb : tuple of float
+        The joints' Coulomb friction ``F_c`` [N m or N], ``>= 0`` (a URDF's ``<dynamics friction>``);
+        empty: none.
+    offset : tuple of float
+        The joints' constant friction offset ``tau_0`` [N m or N] (e.g. a torque reading's bias); empty:
+        none.
+    coulomb_speed : tuple of float
+        The speed ``v_s > 0`` [rad/s or m/s] of each joint's smooth sign ``tanh(q' / v_s)``; empty:
+        :data:`COULOMB_SPEED` each. A smaller one is closer to a true sign and a stiffer plant (the
+        experiment's check says when its integration step is too long for it).
 
     Raises
     ------
     HybridError
-        A link or viscosity per joint missing, a value not physical (a negative mass, an inertia not
-        symmetric or not a rigid body's), or a last link without mass and inertia.
+        A link or friction value per joint missing, a value not physical (a negative mass, viscosity or
+        Coulomb friction, an inertia not symmetric or not a rigid body's), or a last link without mass
+        and inertia; Coulomb friction or offsets on the planar arm's closed form.
 
     Examples
     --------
@@ -90,6 +110,9 @@ class Robot:
     #: where :meth:`from_urdf` read it, ``(path, tip, ((locked joint, position), ...))``, for a plant
     #: that reads the file itself (MuJoCo); None for a robot built otherwise
     source: tuple | None = field(default=None, compare=False, repr=False)
+    coulomb: tuple[float, ...] = ()
+    offset: tuple[float, ...] = ()
+    coulomb_speed: tuple[float, ...] = ()
 
     def __post_init__(self):
         if self.closed_form is not None:  # the planar arm's parameters are its closed form's, in one place
@@ -100,9 +123,11 @@ class Robot:
                 object.__setattr__(self, name, value)
         else:  # a closed form's parts come from an Arm, which checked the same (B(q) positive definite)
             self._check_parts()
+        self._check_friction()
         # the one place that tells the kinds apart: what depends on it, the kind does (hybrid.models.kinds)
         object.__setattr__(self, "kind", SERIAL_CHAIN if self.closed_form is None else ClosedFormArm(self.closed_form))
-        params = np.concatenate([*(link.as_array() for link in self.links), self.damping, self.gravity])
+        params = np.concatenate([*(link.as_array() for link in self.links), self.damping, self.coulomb, self.offset,
+                                 self.coulomb_speed, self.gravity])
         params.setflags(write=False)  # frozen: built once, read-only like the fields it comes from
         object.__setattr__(self, "_params", params)
 
@@ -122,6 +147,25 @@ class Robot:
             _finite(f"Robot damping[{name}]", damping=d)
             if d < 0:
                 raise HybridError(f"damping of joint '{name}' is {d}; give a viscosity >= 0")
+
+    def _check_friction(self) -> None:
+        """Coulomb friction, offsets and smooth-sign speeds: one per joint (empty: none, the default speed),
+        Coulomb friction >= 0, speeds > 0; none on the planar arm's closed form, whose terms know viscosity
+        only."""
+        n = self.chain.n
+        for name, default in (("coulomb", 0.0), ("offset", 0.0), ("coulomb_speed", COULOMB_SPEED)):
+            value = getattr(self, name)
+            arr = np.full(n, default) if isinstance(value, tuple) and not value else finite_array(
+                f"Robot {name}", value, (n,))
+            object.__setattr__(self, name, tuple(float(v) + 0.0 for v in arr))
+        for joint, c, v in zip(self.joint_names, self.coulomb, self.coulomb_speed):
+            if c < 0:
+                raise HybridError(f"coulomb of joint '{joint}' is {c}; give a Coulomb friction >= 0")
+            if v <= 0:
+                raise HybridError(f"coulomb_speed of joint '{joint}' is {v}; give the smooth sign's speed > 0")
+        if self.closed_form is not None and (any(self.coulomb) or any(self.offset)):
+            raise HybridError("the planar arm's closed form has joint viscosity only; give Coulomb friction and "
+                              "offsets to a serial-chain Robot (hybrid.Robot(name, chain, links, damping, ...))")
 
     # ------------------------------------------------------------- construction
 
@@ -168,7 +212,8 @@ class Robot:
             raise HybridError(f"locked must be a {{joint name: position}} dict, got {type(locked).__name__}")
         parsed = read_chain(path, tip, locked)
         source = (str(Path(path).resolve()), tip, tuple(sorted((locked or {}).items())))
-        return cls(parsed.name, parsed.chain, parsed.links, parsed.damping, gravity, parsed.limits, source=source)
+        return cls(parsed.name, parsed.chain, parsed.links, parsed.damping, gravity, parsed.limits, source=source,
+                   coulomb=parsed.coulomb)
 
     @classmethod
     def planar(cls, arm: Arm) -> Robot:
@@ -197,6 +242,12 @@ class Robot:
         return self.chain.n
 
     @property
+    def rest_viscosity(self) -> np.ndarray:
+        """Each joint's friction slope about rest, ``F_v + F_c / v_s`` [N m s/rad or N s/m]: the viscosity
+        the joint's friction acts as for speeds well below ``v_s``."""
+        return np.asarray(self.damping) + np.asarray(self.coulomb) / np.asarray(self.coulomb_speed)
+
+    @property
     def joint_names(self) -> tuple[str, ...]:
         return tuple(j.name for j in self.chain.joints)
 
@@ -216,7 +267,8 @@ class Robot:
         Returns
         -------
         numpy.ndarray
-            Per link ``m, c (3), I (6)``, then the viscosities, then gravity (read-only).
+            Per link ``m, c (3), I (6)``, then per joint the viscosities, Coulomb frictions, offsets and
+            smooth-sign speeds, then gravity (read-only).
         """
         return self._params
 
@@ -231,7 +283,7 @@ class Robot:
             The relative error of the masses and inertias: ``(1 + inertial)`` times the true ones
             (centres of mass unchanged).
         viscous_compensation : float
-            The share of the joints' viscosities the model knows.
+            The share of the joints' friction (viscosities, Coulomb frictions and offsets) the model knows.
 
         Returns
         -------
@@ -244,10 +296,12 @@ class Robot:
         k = check_model_error(inertial, viscous_compensation)
         links = tuple(LinkInertia(lk.mass * k, lk.com, tuple(tuple(v * k for v in r) for r in lk.inertia))
                       for lk in self.links)
-        return dataclasses.replace(self, links=links, damping=tuple(d * viscous_compensation for d in self.damping))
+        share = {name: tuple(v * viscous_compensation for v in getattr(self, name))
+                 for name in ("damping", "coulomb", "offset")}
+        return dataclasses.replace(self, links=links, **share)
 
     def with_link(self, joint: str, *, mass: float | None = None, com=None, inertia=None,
-                  damping: float | None = None) -> Robot:
+                  damping: float | None = None, coulomb: float | None = None, offset: float | None = None) -> Robot:
         """This robot with the body moved by ``joint`` given new parameters (the others kept).
 
         The planar arm's parameters are its ``closed_form``'s: change them there
@@ -265,6 +319,8 @@ class Robot:
             Its inertia (3 x 3, about the centre of mass) [kg m^2], in the joint's frame.
         damping : float or None
             The joint's viscosity [N m s/rad or N s/m].
+        coulomb, offset : float or None
+            The joint's Coulomb friction and friction offset [N m or N].
 
         Returns
         -------
@@ -287,8 +343,10 @@ class Robot:
         inertia = old.inertia if inertia is None else inertia
         new = LinkInertia(old.mass if mass is None else mass, com, inertia)
         links = self.links[:i] + (new,) + self.links[i + 1:]
-        damp = self.damping if damping is None else self.damping[:i] + (damping,) + self.damping[i + 1:]
-        return dataclasses.replace(self, links=links, damping=damp)
+        friction = {name: getattr(self, name)[:i] + (value,) + getattr(self, name)[i + 1:]
+                    for name, value in (("damping", damping), ("coulomb", coulomb), ("offset", offset))
+                    if value is not None}
+        return dataclasses.replace(self, links=links, **friction)
 
     # ---------------------------------------------------------------- compiled
 

@@ -1,4 +1,4 @@
-"""Read a serial chain from a URDF file: structure, inertial parameters, limits, damping.
+"""Read a serial chain from a URDF file: structure, inertial parameters, limits, damping, Coulomb friction.
 
 The chain runs from the URDF's root link to the ``tip`` link. Fixed joints are merged;
 joints off the chain (and any joint named in ``locked``) are locked at 0 or at the given
@@ -100,6 +100,7 @@ class ParsedChain:
     links: tuple[LinkInertia, ...]
     damping: tuple[float, ...]
     limits: JointLimits
+    coulomb: tuple[float, ...] = ()
 
 
 def _floats(node: Node, attr: str, n: int, default, where: str) -> np.ndarray:
@@ -308,7 +309,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
                 stack.append((ends[jn][1], T_link @ _joint_transform(tree, jn, locked.get(jn, 0.0)), None))
 
     # walk the chain, merging fixed and locked joints into the next origin
-    chain_joints, bodies, damping, lims = [], [], [], []
+    chain_joints, bodies, damping, coulomb, lims = [], [], [], [], []
     T_acc = np.eye(4)
     body = _Body()  # the base body: its mass does not move, but keep the structure uniform
     for idx, jn in enumerate(path_joints):
@@ -341,6 +342,10 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
         if d < 0:
             raise URDFError(f"{at}: damping {d} is negative; give a viscosity >= 0")
         damping.append(d)
+        c = _scalar(dyn, "friction", 0.0, where)
+        if c < 0:
+            raise URDFError(f"{at}: friction {c} is negative; give a Coulomb friction >= 0")
+        coulomb.append(c)
         lims.append(_limits(j, kind, where))
         T_acc = np.eye(4)
         merge_subtree(body, ends[jn][1], T_acc, next_on_path)
@@ -360,7 +365,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
                   tuple(map(float, T_acc[:3, 3])))
     lo, hi, vel, eff = (np.array(c, dtype=float) for c in zip(*lims))
     return ParsedChain(root.attrib.get("name", Path(path).stem), chain, tuple(b.inertia() for b in bodies),
-                       tuple(damping), JointLimits(lo, hi, vel, eff))
+                       tuple(damping), JointLimits(lo, hi, vel, eff), tuple(coulomb))
 
 
 def _limits(j: Node, kind: str, where: str) -> tuple[float, float, float, float]:

@@ -7,7 +7,8 @@ The model (:func:`arm_spec`, :class:`MujocoPlant`):
   (``robot.source``), edited with ``mujoco.MjSpec``: geoms and meshes removed (nothing collides, and
   mesh files need not be found), the joints the robot does not keep removed after placing their
   bodies at the locked positions, limits and friction loss off, joint viscosity the robot's
-  ``damping``, gravity the robot's ``gravity``. The inertial parameters are MuJoCo's reading of the
+  ``damping`` (its Coulomb friction and offsets, the generated plant's formula, are passive forces
+  below), gravity the robot's ``gravity``. The inertial parameters are MuJoCo's reading of the
   file, and the plant refuses a model whose mass matrix or tip differs from the robot's. A robot
   built otherwise (:meth:`hybrid.Robot.planar`, or changed after it was read) is given to MuJoCo as
   a URDF written from its own chain and parameters (:func:`robot_urdf`);
@@ -184,6 +185,8 @@ class MujocoPlant(Plant):
     def __init__(self, exp, robot: Robot, sensor_gravity: bool = True):
         self.mj = mj = _mujoco()
         self.exp, self.robot = exp, robot
+        self._coulomb, self._coulomb_speed, self._offset = (np.array(getattr(robot, k), float)
+                                                            for k in ("coulomb", "coulomb_speed", "offset"))
         self.generated = exp.plant()  # the record, the sensor's reading and the conditioning
         self.record, self.nq = self.generated.record, robot.n
         self.conditioning, self.conditioning_name = self.generated.conditioning, self.generated.conditioning_name
@@ -255,14 +258,15 @@ class MujocoPlant(Plant):
         return False
 
     def _passive(self, model, data) -> None:
-        """The sensor's spring-damper, the penalty contact and the friction, as passive forces."""
+        """The sensor's spring-damper, the penalty contact and the friction, and the joints' Coulomb friction
+        and offsets (the generated plant's ``F_c tanh(q' / v_s) + tau_0``), as passive forces."""
         n, sensor = self.nq, self.exp.sensor
         self.mj.mj_jacSite(model, data, self._jac, None, self._site)
         J = self._jac[:, :n]
         qvel = data.qvel
         s, sd = data.qpos[n:], qvel[n:]
         Fc = sensor.stiffness * (s - data.site_xpos[self._site]) + sensor.damping * (sd - J @ qvel[:n])
-        data.qfrc_passive[:n] += J.T @ Fc
+        data.qfrc_passive[:n] += J.T @ Fc - self._coulomb * np.tanh(qvel[:n] / self._coulomb_speed) - self._offset
         data.qfrc_passive[n:] += self._surface_force(s, sd) - Fc
 
     def _surface_force(self, s: np.ndarray, sd: np.ndarray) -> np.ndarray:

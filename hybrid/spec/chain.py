@@ -1,7 +1,7 @@
 """The kinematic structure of a serial arm as plain data: joints, the tip frame, parameter names.
 
 A :class:`Chain` is what the code generator compiles into a robot's C (joint origins, axes,
-types); the inertial parameters, viscosities and gravity stay run-time numbers, named here in
+types); the inertial parameters, joint friction and gravity stay run-time numbers, named here in
 the order of the generated code's ``robot`` array.
 """
 
@@ -14,6 +14,14 @@ from dataclasses import dataclass
 #: in the joint frame [m], inertia about the centre of mass in the joint frame's axes [kg m^2]
 INERTIAL = ("m", "cx", "cy", "cz", "Ixx", "Ixy", "Ixz", "Iyy", "Iyz", "Izz")
 INERTIAL_UNITS = ("kg", "m", "m", "m") + ("kg m^2",) * 6
+
+#: the per-joint friction parameters in the ``robot`` array, each a block of one per joint, in order:
+#: the viscosity ``F_v``, the Coulomb friction ``F_c`` and the constant offset ``tau_0`` (effort
+#: units), whose torque on joint ``i`` is ``F_v q'_i + F_c tanh(q'_i / v_s) + tau_0`` (the first
+#: three are linear parameters of the dynamics), and the smooth sign's speed ``v_s`` (joint rate units)
+FRICTION = ("damping", "coulomb", "offset", "coulomb_speed")
+#: the friction parameters the dynamics are linear in (the regressor's columns after the links')
+LINEAR_FRICTION = FRICTION[:3]
 
 
 @dataclass(frozen=True)
@@ -48,10 +56,15 @@ class Chain:
 
 
 def parameter_names(chain: Chain) -> tuple[str, ...]:
-    """Names of the ``robot`` array: per link the :data:`INERTIAL` set, then the joint
-    viscosities, then gravity ``g_x, g_y, g_z`` [m/s^2] in base axes."""
+    """Names of the ``robot`` array: per link the :data:`INERTIAL` set, then the :data:`FRICTION`
+    blocks (one entry per joint each), then gravity ``g_x, g_y, g_z`` [m/s^2] in base axes."""
     return (tuple(f"{p}[{j.name}]" for j in chain.joints for p in INERTIAL)
-            + tuple(f"damping[{j.name}]" for j in chain.joints) + ("g_x", "g_y", "g_z"))
+            + friction_names(chain, FRICTION) + ("g_x", "g_y", "g_z"))
+
+
+def friction_names(chain: Chain, blocks) -> tuple[str, ...]:
+    """``block[joint]`` for each of ``blocks`` (names of :data:`FRICTION`), each over the joints."""
+    return tuple(f"{p}[{j.name}]" for p in blocks for j in chain.joints)
 
 
 #: the per-link parameters the dynamics are linear in (the regressor's): mass [kg], first moment
@@ -62,13 +75,14 @@ LINEAR_UNITS = ("kg",) + ("kg m",) * 3 + ("kg m^2",) * 6
 
 def linear_parameter_names(chain: Chain) -> tuple[str, ...]:
     """Names of the parameters ``pi`` of ``tau = Y(q, q', q'') pi``: per link the :data:`LINEAR` set,
-    then the joint viscosities."""
+    then the :data:`LINEAR_FRICTION` blocks (viscosities, Coulomb frictions, offsets)."""
     return (tuple(f"{p}[{j.name}]" for j in chain.joints for p in LINEAR)
-            + tuple(f"damping[{j.name}]" for j in chain.joints))
+            + friction_names(chain, LINEAR_FRICTION))
 
 
 def linear_parameter_units(chain: Chain) -> tuple[str, ...]:
-    return LINEAR_UNITS * chain.n + parameter_units(chain)[len(INERTIAL) * chain.n:-3]
+    start = len(INERTIAL) * chain.n
+    return LINEAR_UNITS * chain.n + parameter_units(chain)[start:start + len(LINEAR_FRICTION) * chain.n]
 
 
 #: SI units of a joint's position, rate, acceleration and effort, by joint kind
@@ -84,7 +98,7 @@ def joint_units(chain: Chain, what: str) -> tuple[str, ...]:
 def parameter_units(chain: Chain) -> tuple[str, ...]:
     viscosity = {"revolute": "N m s/rad", "prismatic": "N s/m"}
     return (INERTIAL_UNITS * chain.n + tuple(viscosity[j.kind] for j in chain.joints)
-            + ("m/s^2",) * 3)
+            + joint_units(chain, "tau") * 2 + joint_units(chain, "qd") + ("m/s^2",) * 3)
 
 
 def rotation_rpy(roll: float, pitch: float, yaw: float) -> tuple[tuple[float, float, float], ...]:

@@ -81,7 +81,7 @@ def _worked_out(robot, model, x0: np.ndarray, R: np.ndarray, axes: tuple, K_s: f
     G = Jt @ np.linalg.solve(B, Jt.T)
     Lambda_hat = np.linalg.inv(Jt @ np.linalg.solve(B_hat, Jt.T))
     pinv = np.linalg.pinv(Jt)
-    viscosity = {name: Jt @ np.linalg.solve(B, np.diag(np.asarray(arm.damping, float)) @ pinv)
+    viscosity = {name: Jt @ np.linalg.solve(B, np.diag(arm.rest_viscosity) @ pinv)
                  for name, arm in (("viscosity", robot), ("compensated_viscosity", model))}
     K = Jt @ np.linalg.solve(B, _held_stiffness(robot, q, wrench) @ pinv)
     force = tuple(axis == FORCE_AXIS for axis in axes)
