@@ -45,7 +45,7 @@ def test_regressor_against_pinocchio(rng, robots):
     friction's columns are ``diag(q')``, ``diag(tanh(q' / v_s))`` and the identity) to 1e-10, one state at a
     time and N in one call; ``Y pi`` is the inverse dynamics ``B q'' + n`` of :func:`hybrid.arm_terms`, of
     robots given Coulomb friction, offsets and smooth-sign speeds of their own."""
-    for name, (robot, model, _) in robots.items():
+    for robot, model, _ in robots.values():
         n, data = robot.n, model.createData()
         robot = dataclasses.replace(robot, coulomb=rng.uniform(0, 3, n), offset=rng.normal(0, 1, n),
                                     coulomb_speed=rng.uniform(0.01, 0.5, n))
@@ -85,7 +85,8 @@ def test_base_parameters_give_the_full_torques(rng, robots):
     """The base parameters (from ``Y`` at the function's own random states) give the torques of the full
     ones at other states to 1e-10; every dropped column is its combination of the kept ones there; the
     kept columns are independent, as many as the rank of Pinocchio's regressor stacked over those states
-    (plus a viscosity, a Coulomb friction and an offset per joint); the choice and the combinations do not depend on the states."""
+    (plus a viscosity, a Coulomb friction and an offset per joint); the choice and the combinations do not
+    depend on the states."""
     for robot, model, _ in robots.values():
         n, data = robot.n, model.createData()
         base = hybrid.base_parameters(robot)

@@ -26,7 +26,6 @@ from hybrid.native.binding import Unit
 from hybrid.spec import chain as rb
 from hybrid.validate import _finite, check_model_error, finite_array, inertia_problem, shown
 
-
 #: the default speed [rad/s or m/s] of the Coulomb friction's smooth sign ``tanh(q' / v_s)``: 0.99 of the
 #: friction acts from ``2.6 v_s``, and the joint's linear slope about rest is ``F_c / v_s``
 COULOMB_SPEED = 0.05
