@@ -5,9 +5,9 @@ dynamics are not linear in those (``m c`` and ``m c c^T`` appear). They are line
 mass ``m``, first moment ``h = m c`` and inertia ``I_O = I_c + m (|c|^2 1 - c c^T)`` about the
 joint frame's origin, all in the joint frame (:data:`hybrid.spec.chain.LINEAR`), and in the joint
 friction's viscosities, Coulomb frictions and offsets (:data:`hybrid.spec.chain.LINEAR_FRICTION`).
-With those as ``pi`` (:func:`hybrid.spec.chain.linear_parameter_names`), the recursive Newton-Euler algorithm of :mod:`.body_frame` is written on symbols ``pi`` and ``Y`` is
-its Jacobian with respect to them: exact, since ``tau`` is linear in ``pi``, and checked to be free
-of them. Gravity and the Coulomb friction's smooth-sign speeds stay inputs: ``tau`` is linear in ``pi``
+With those as ``pi`` (:func:`hybrid.spec.chain.linear_parameter_names`), the recursive Newton-Euler
+algorithm of :mod:`.body_frame` is written on symbols ``pi`` and ``Y`` is its Jacobian with respect
+to them: exact, since ``tau`` is linear in ``pi``, and checked to be free of them. Gravity and the Coulomb friction's smooth-sign speeds stay inputs: ``tau`` is linear in ``pi``
 for given ``g`` and ``v_s``.
 """
 
