@@ -7,8 +7,8 @@ joint frame's origin, all in the joint frame (:data:`hybrid.spec.chain.LINEAR`),
 friction's viscosities, Coulomb frictions and offsets (:data:`hybrid.spec.chain.LINEAR_FRICTION`).
 With those as ``pi`` (:func:`hybrid.spec.chain.linear_parameter_names`), the recursive Newton-Euler
 algorithm of :mod:`.body_frame` is written on symbols ``pi`` and ``Y`` is its Jacobian with respect
-to them: exact, since ``tau`` is linear in ``pi``, and checked to be free of them. Gravity and the Coulomb friction's smooth-sign speeds stay inputs: ``tau`` is linear in ``pi``
-for given ``g`` and ``v_s``.
+to them: exact, since ``tau`` is linear in ``pi``, and checked to be free of them. Gravity and the
+Coulomb friction's smooth-sign speeds stay inputs: ``tau`` is linear in ``pi`` for given ``g`` and ``v_s``.
 """
 
 from __future__ import annotations
