@@ -75,7 +75,9 @@ def test_body_frame_dynamics_equal_the_base_axes_algorithms():
                 A = rng.normal(size=(3, 3))
                 Ic = A @ A.T + 0.1 * np.eye(3)
                 values += [rng.uniform(0.5, 3), *rng.normal(0, 0.1, 3), *Ic[np.triu_indices(3)]]
-            values += [*rng.uniform(0, 1, n), 0.1, -0.3, -9.81]
+            # viscosities, Coulomb frictions, offsets, smooth-sign speeds; gravity
+            values += [*rng.uniform(0, 1, n), *rng.uniform(0, 2, n), *rng.normal(0, 1, n), *rng.uniform(0.05, 1, n),
+                       0.1, -0.3, -9.81]
             x = (rng.uniform(-2, 2, n), rng.normal(size=n), rng.normal(size=n), values, rng.normal(size=6))
             out = [np.array(v).ravel() for v in f(*x)]
             for k, (want, got) in enumerate(zip(out[0:8:2], out[1:8:2])):
