@@ -63,7 +63,7 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
         return kernels
     values = Arg("robot", ca.SX(ca.DM([float(v) for v in defaults])), a_p.unit, names=a_p.names)
     urdf = Kernel("urdf_parameters", (), (values,),
-                  "the robot array as the URDF gives it (inertial parameters, viscosities, gravity)")
+                  "the robot array as the URDF gives it (inertial parameters, joint friction, gravity)")
     return (*kernels, urdf)
 
 
