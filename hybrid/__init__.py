@@ -9,6 +9,7 @@ The public API, by subpackage:
   regressor ``tau = Y pi`` (:func:`regressor`) on the parameters the dynamics are linear in
   (:func:`linear_parameters`), its base parameters (:func:`base_parameters`, :class:`BaseParameters`)
   and their identification from measured torques (:func:`identify_dynamics`, :class:`DynamicsIdentification`);
+  a robot's inertial parameters perturbed at random, each link still a rigid body (:func:`perturbed_robot`);
 - geometry (:mod:`hybrid.geometry`): the surfaces :class:`Plane`, :class:`Circle`, :class:`Sphere`,
   :class:`Cylinder` and :class:`ImplicitSurface`, and parts as they come (:class:`MeshSurface`,
   :class:`PointCloudSurface`); paths on them (:class:`CirclePath`,
@@ -74,6 +75,7 @@ from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere
 from hybrid.geometry.waypoints import WaypointPath
 from hybrid.models.base_parameters import BaseParameters, base_parameters
 from hybrid.models.dynamics_identification import DynamicsIdentification, identify_dynamics
+from hybrid.models.perturbation import perturbed_robot
 from hybrid.models.planar_arm import Arm, paper_arm
 from hybrid.models.regressor import linear_parameters, regressor
 from hybrid.models.robot import Robot
@@ -134,7 +136,8 @@ __all__ = [
     "TaskFrameError", "Tool", "ToolIdentification", "UR5_URDF", "URDFError", "WaypointPath", "WrenchSensor",
     "__version__", "arm_terms", "base_parameters", "decoupling_law", "identify_dynamics", "identify_tool",
     "linear_parameters", "metrics",
-    "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment", "read_controller_config",
+    "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment", "perturbed_robot",
+    "read_controller_config",
     "regressor", "simulate", "stability", "stability_map", "suggest_gains",
     "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
     "Tuning", "tune",
