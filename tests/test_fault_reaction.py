@@ -212,24 +212,28 @@ def test_the_compiled_loop_reacts_as_the_controller(make, dropout):
     """The compiled loop's fault reaction is the controller's: a run with a dropout (long enough for the safe
     state, and too short for it) equals the Python runner's within rounding. Rounding is measured, not
     assumed: at rest against the part in the safe state, sticking friction amplifies it, and the Python
-    runner from a start one ulp away differs as much."""
+    runner from a start one ulp away differs as much (the largest of three such starts: one alone may land
+    closer than rounding lands elsewhere)."""
     exp = make(sensor=hybrid.Sensor(dropout_at=dropout[0], dropout_duration=dropout[1]))
     compiled, python = hybrid.simulate(exp), hybrid.simulate(exp, compiled=False)
-    x0 = exp.initial_state()
-    x0[1] = np.nextafter(x0[1], 1.0)
-    nudged = run(exp, plant_for(exp, "generated"), exp.build_controller(), x0)
+    nudged = []
+    for joint in range(3 if exp.robot.n > 2 else 2):
+        x0 = exp.initial_state()
+        x0[joint] = np.nextafter(x0[joint], 1.0)
+        nudged.append(run(exp, plant_for(exp, "generated"), exp.build_controller(), x0))
 
     def spread(a, b):
         return np.abs(np.asarray(a) - np.asarray(b)).max()
 
     for what in (lambda r: r.q, lambda r: r.output("N"), lambda r: r.tau):
-        assert spread(what(compiled), what(python)) <= 10 * spread(what(nudged), what(python)) + 1e-9
+        rounding = max(spread(what(r), what(python)) for r in nudged)
+        assert spread(what(compiled), what(python)) <= 10 * rounding + 1e-9
     for name, value in python.metrics.items():
         if np.isfinite(value):
-            tol = 10 * abs(nudged.metrics[name] - value) + 1e-9 * max(1.0, abs(value))
+            tol = 10 * max(abs(r.metrics[name] - value) for r in nudged) + 1e-9 * max(1.0, abs(value))
             assert abs(compiled.metrics[name] - value) <= tol, name
     # the runs differ from one without the dropout by more than rounding (the checks above can fail)
-    rounding = spread(nudged.output("N"), python.output("N"))
+    rounding = max(spread(r.output("N"), python.output("N")) for r in nudged)
     assert spread(compiled.output("N"), hybrid.simulate(make()).output("N")) > 100 * rounding + 1e-6
 
 
