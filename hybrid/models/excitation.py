@@ -41,7 +41,7 @@ from hybrid.errors import HybridError
 from hybrid.models import fourier
 from hybrid.models.base_parameters import base_parameters
 from hybrid.models.dynamics_identification import UNEXCITED, unexcited
-from hybrid.models.excitation_design import DENSE, Design, Limits
+from hybrid.models.excitation_design import DENSE, Design, Limits, extreme_singular_values, grid
 from hybrid.models.regressor import regressor
 from hybrid.models.robot import Robot, as_robot
 from hybrid.models.terms import arm_terms
@@ -164,12 +164,13 @@ class ExcitationTrajectory:
 
     @cached_property
     def condition(self) -> float:
-        """The condition number of the stacked base regressor over one period, ``samples * 10`` points."""
-        q, qd, qdd = self.sample(np.arange(self.samples * DENSE) * (self.period / (self.samples * DENSE)))
+        """The condition number of the stacked base regressor over one period: ``samples * 10`` times ``t =
+        (k + 1/2) period / (samples * 10)``."""
+        q, qd, qdd = self.sample(grid(self.period, self.samples * DENSE))
         Y, _ = regressor(self.robot, q, qd, qdd)
         Wb = base_parameters(self.robot).regressor(Y)
-        s = np.linalg.svd(Wb.reshape(-1, Wb.shape[-1]), compute_uv=False)
-        return float(s[0] / s[-1]) if s[-1] > 0 else math.inf
+        largest, smallest = extreme_singular_values(Wb.reshape(-1, Wb.shape[-1]))
+        return largest / smallest if smallest > 0 else math.inf
 
     def to_csv(self, path, rate: float = 100.0, *, periods: int = 1, overwrite: bool = False) -> Path:
         """Write the trajectory sampled at ``rate`` as CSV: columns ``t``, ``q[joint]``, ``qd[joint]``,
@@ -199,7 +200,7 @@ class ExcitationTrajectory:
         """
         rate = _positive("rate", rate, "the samples per second in Hz")
         periods = _whole("periods", periods, 1, 10_000)
-        count = math.ceil(periods * self.period * rate - 1e-9)
+        count = max(1, math.ceil(periods * self.period * rate - 1e-9))
         if count > 10**7:
             raise HybridError(f"{count} rows ({periods} periods of {self.period} s at {rate} Hz); give a lower rate "
                               "or fewer periods (at most 10^7 rows)")
@@ -351,7 +352,7 @@ def excitation_trajectory(robot: Robot, *, period: float = 10.0, harmonics: int 
         raise HybridError("the tool cannot move in the box from the start: any motion of the joints leaves it; "
                           "give a larger box (it must leave room on every side) or another start")
     W = design.stacked(X, dense=True)
-    s = np.linalg.svd(W, compute_uv=False)
+    s = extreme_singular_values(W)
     if s[-1] < UNEXCITED * s[0]:
         raise HybridError(f"within these limits the trajectory does not excite the base parameters "
                           f"{', '.join(unexcited(W, names))}; give wider limits or box, a longer period or more "

@@ -46,6 +46,9 @@ DENSE = 10
 STEP = 1e-6
 #: the most bytes of the regressor of one batched call of the gradient's
 CHUNK_BYTES = 2**26
+#: below this condition number the Gram matrix's eigenvalues give the singular values to 1e-8 (its rounding,
+#: 1e-16 of the largest eigenvalue, is 1e-8 of the smallest)
+GRAM_CONDITION = 1e4
 #: the smoothing of the largest of a limit's values at the samples (they are in units of the limit: the
 #: smooth maximum overestimates the largest by at most 0.005 log(samples), a few per cent)
 TEMPERATURE = 0.005
@@ -80,8 +83,7 @@ class Design:
         self.center, self.limits, self.n = center, limits, robot.n
         self.N = fourier.rest_basis(period, harmonics) if rest else np.eye(2 * harmonics)
         self.m = self.N.shape[1]
-        self.t = np.arange(samples) * (period / samples)
-        self.dense_t = np.arange(samples * DENSE) * (period / (samples * DENSE))
+        self.t, self.dense_t = grid(period, samples), grid(period, samples * DENSE)
         self.B = [P @ self.N for P in fourier.basis(period, harmonics, self.t)]  # (S, m) each
         self.dense_B = [P @ self.N for P in fourier.basis(period, harmonics, self.dense_t)]
         if limits.box is not None:  # the box's grid: denser again
@@ -113,11 +115,9 @@ class Design:
         return Wb.reshape(*lead[:-1], lead[-1] * self.n, Wb.shape[-1])
 
     def condition(self, X: np.ndarray) -> float:
-        """The condition number of ``W`` on the dense grid (from its Gram matrix: exact enough to rank
-        trajectories, and no threaded BLAS)."""
-        W = self.stacked(X, dense=True)
-        eigenvalues = np.linalg.eigvalsh(np.einsum("rp,rq->pq", W, W))
-        return float(np.sqrt(eigenvalues[-1] / eigenvalues[0])) if eigenvalues[0] > 0 else float("inf")
+        """The condition number of ``W`` on the dense grid."""
+        largest, smallest = extreme_singular_values(self.stacked(X, dense=True))
+        return largest / smallest if smallest > 0 else float("inf")
 
     # ------------------------------------------------------------------ objective
 
@@ -205,6 +205,13 @@ class Design:
             else:
                 out.append(1.0 - value)
         return np.array(out)
+
+    def bounds(self) -> list[tuple[float, float]]:
+        """Bounds on the variables that every trajectory within the acceleration limits meets, so that no
+        step of the search runs away: by Parseval, the mean of ``q''^2`` is ``sum_k (w k r_k)^2 / 2``, at most
+        ``acc^2``, so ``|X_i|^2 = sum_k r_k^2 <= 2 acc^2 / w^2 sum_k 1 / k^2 < (2 acc / w)^2``."""
+        largest = 2.0 * self.limits.acceleration / fourier.fundamental(self.period)
+        return [(-x, x) for x in np.repeat(largest, self.m)]
 
     def constraints(self) -> list[dict]:
         """SLSQP's constraints: the joint limits and the box (``>= 0`` where kept) with their Jacobians."""
@@ -296,7 +303,7 @@ class Design:
                 continue
             start = self.condition(X0)
             found = minimize(self.objective, X0.ravel(), jac=self.gradient, method="SLSQP", constraints=constraints,
-                             options={"maxiter": iterations, "ftol": 1e-9})
+                             bounds=self.bounds(), options={"maxiter": iterations, "ftol": 1e-9})
             X = found.x.reshape(self.n, self.m) if np.isfinite(found.x).all() else X0
             X, scale = self.certified(X)
             smallest = min(smallest, scale)
@@ -308,6 +315,23 @@ class Design:
         if best is None:
             return np.zeros((self.n, self.m)), float("inf"), float("inf"), 0.0
         return (*best, smallest)
+
+
+def extreme_singular_values(W: np.ndarray) -> tuple[float, float]:
+    """The largest and smallest singular values of ``W``: from its Gram matrix's eigenvalues (a small
+    product and problem, no threaded BLAS) where they are exact to 1e-8, that is where the condition number
+    is below :data:`GRAM_CONDITION`; else from ``W``'s singular value decomposition."""
+    eigenvalues = np.linalg.eigvalsh(np.einsum("rp,rq->pq", W, W))
+    if eigenvalues[0] > eigenvalues[-1] / GRAM_CONDITION**2:
+        return float(np.sqrt(eigenvalues[-1])), float(np.sqrt(eigenvalues[0]))
+    s = np.linalg.svd(W, compute_uv=False)
+    return float(s[0]), float(s[-1])
+
+
+def grid(period: float, count: int) -> np.ndarray:
+    """``count`` times evenly spread over a period, half a spacing off its start: there a trajectory made at
+    rest has ``q' = 0`` to rounding, where a Coulomb friction column's sign would be rounding's."""
+    return (np.arange(count) + 0.5) * (period / count)
 
 
 def _smooth_max(values: np.ndarray) -> tuple[float, np.ndarray]:
