@@ -26,7 +26,6 @@ scaled down where a bound passes a limit, so no limit holds only at the samples.
 from __future__ import annotations
 
 import csv
-import io
 import math
 import types
 from collections.abc import Mapping
@@ -66,6 +65,8 @@ MAX_RESTARTS = 100
 MAX_ITERATIONS = 100_000
 #: the folder of the C template
 C_FOLDER = Path(__file__).resolve().parent / "c"
+#: the rows of a CSV file computed and written at a time
+CSV_BLOCK = 10_000
 #: the limits a trajectory takes, by name
 LIMIT_NAMES = ("lower", "upper", "velocity", "acceleration")
 
@@ -204,12 +205,16 @@ class ExcitationTrajectory:
         if count > 10**7:
             raise HybridError(f"{count} rows ({periods} periods of {self.period} s at {rate} Hz); give a lower rate "
                               "or fewer periods (at most 10^7 rows)")
-        t = np.arange(count) / rate
         columns = ["t", *(f"{kind}[{name}]" for kind in ("q", "qd", "qdd") for name in self.robot.joint_names)]
-        text = io.StringIO()
-        csv.writer(text, lineterminator="\n").writerow(columns)
-        np.savetxt(text, np.column_stack([t, *self.sample(t)]), delimiter=",", fmt="%.17g")
-        return files.write_text(path, text.getvalue(), overwrite)
+
+        def write(tmp: Path) -> None:  # in blocks of rows: the table is never whole in memory
+            with open(tmp, "w", newline="") as f:
+                csv.writer(f, lineterminator="\n").writerow(columns)
+                for first in range(0, count, CSV_BLOCK):
+                    t = np.arange(first, min(first + CSV_BLOCK, count)) / rate
+                    np.savetxt(f, np.column_stack([t, *self.sample(t)]), delimiter=",", fmt="%.17g")
+
+        return files.write_with(path, write, overwrite)
 
     def to_c(self, path, prefix: str = "excitation", *, overwrite: bool = False) -> Path:
         """Write a C99 header for a controller: the coefficients and ``static inline void

@@ -50,7 +50,7 @@ CHUNK_BYTES = 2**26
 #: 1e-16 of the largest eigenvalue, is 1e-8 of the smallest)
 GRAM_CONDITION = 1e4
 #: the smoothing of the largest of a limit's values at the samples (they are in units of the limit: the
-#: smooth maximum overestimates the largest by at most 0.005 log(samples), a few per cent)
+#: smooth maximum overestimates the largest by at most 0.005 log(2 samples), a few per cent)
 TEMPERATURE = 0.005
 #: the points per period of the grid the box is checked on (at least the dense grid's)
 BOX_GRID = 10_000
@@ -87,7 +87,7 @@ class Design:
         self.B = [P @ self.N for P in fourier.basis(period, harmonics, self.t)]  # (S, m) each
         self.dense_B = [P @ self.N for P in fourier.basis(period, harmonics, self.dense_t)]
         if limits.box is not None:  # the box's grid: denser again
-            box_t = np.arange(max(BOX_GRID, len(self.dense_t))) * (period / max(BOX_GRID, len(self.dense_t)))
+            box_t = grid(period, max(BOX_GRID, len(self.dense_t)))
             self.box_B = [P @ self.N for P in fourier.basis(period, harmonics, box_t)[:2]]
         self.start_tip = arm_terms(robot, center[None], np.zeros((1, self.n)))["r"][0]
         self._family = self._families()
