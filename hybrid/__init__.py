@@ -8,7 +8,8 @@ The public API, by subpackage:
   parameters), and their terms (:func:`arm_terms`, :func:`operational_space`); the joint-torque
   regressor ``tau = Y pi`` (:func:`regressor`) on the parameters the dynamics are linear in
   (:func:`linear_parameters`), its base parameters (:func:`base_parameters`, :class:`BaseParameters`)
-  and their identification from measured torques (:func:`identify_dynamics`, :class:`DynamicsIdentification`);
+  and their identification from measured torques (:func:`identify_dynamics`, :class:`DynamicsIdentification`)
+  along trajectories that excite them well (:func:`excitation_trajectory`, :class:`ExcitationTrajectory`);
   a robot's inertial parameters perturbed at random, each link still a rigid body (:func:`perturbed_robot`);
 - geometry (:mod:`hybrid.geometry`): the surfaces :class:`Plane`, :class:`Circle`, :class:`Sphere`,
   :class:`Cylinder` and :class:`ImplicitSurface`, and parts as they come (:class:`MeshSurface`,
@@ -30,9 +31,9 @@ The public API, by subpackage:
   left the robot's joint limits; :class:`RedundancyWarning`, for a redundant arm without a posture task.
 
 Importing the package loads neither SymPy nor CasADi and reads no file: the code generator
-runs only when a unit must be built, and :class:`ImplicitSurface` (a SymPy expression) and
-:func:`sweep` (pandas) and :func:`read_controller_config` (a TOML parser) load what they need on
-first use.
+runs only when a unit must be built, and :class:`ImplicitSurface` (a SymPy expression),
+:func:`sweep` (pandas), :func:`read_controller_config` (a TOML parser) and
+:func:`excitation_trajectory` (SciPy's optimisers) load what they need on first use.
 """
 
 from __future__ import annotations
@@ -92,18 +93,21 @@ if TYPE_CHECKING:  # type checkers see the lazy names' real signatures
     from hybrid.control.config import read_controller_config
     from hybrid.geometry.implicit import ImplicitSurface
     from hybrid.geometry.parts import MeshSurface, PointCloudSurface
+    from hybrid.models.excitation import ExcitationTrajectory, excitation_trajectory
     from hybrid.stability.gains import GainSuggestion, suggest_gains
     from hybrid.stability.maps import StabilityMap, stability_map
     from hybrid.stability.tuning import Tuning, tune
     from hybrid.sweeps import sweep
 
-#: public names loaded on first use (what they need is heavy: SymPy, pandas; a TOML parser and its schema)
+#: public names loaded on first use (what they need is heavy: SymPy, pandas, SciPy's optimisers; a TOML parser and
+#: its schema)
 _LAZY = {"ImplicitSurface": "hybrid.geometry.implicit", "MeshSurface": "hybrid.geometry.parts",
          "PointCloudSurface": "hybrid.geometry.parts", "sweep": "hybrid.sweeps",
          "read_controller_config": "hybrid.control.config", "stability_map": "hybrid.stability.maps",
          "StabilityMap": "hybrid.stability.maps", "suggest_gains": "hybrid.stability.gains",
          "GainSuggestion": "hybrid.stability.gains",
-         "tune": "hybrid.stability.tuning", "Tuning": "hybrid.stability.tuning"}
+         "tune": "hybrid.stability.tuning", "Tuning": "hybrid.stability.tuning",
+         "excitation_trajectory": "hybrid.models.excitation", "ExcitationTrajectory": "hybrid.models.excitation"}
 
 
 def __getattr__(name: str):
@@ -141,4 +145,5 @@ __all__ = [
     "regressor", "simulate", "stability", "stability_map", "suggest_gains",
     "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
     "Tuning", "tune",
+    "ExcitationTrajectory", "excitation_trajectory",
 ]

@@ -36,7 +36,7 @@ ROOT = Path(__file__).resolve().parent.parent
 GENERATED = ROOT / "generated"
 #: the generator and the libraries only some commands need: none may load with ``import hybrid`` (nor the
 #: reader of a controller's file and its schema)
-HEAVY = ("sympy", "casadi", "hybrid.codegen", "pandas", "matplotlib", "mujoco", "hybrid.control.config")
+HEAVY = ("sympy", "casadi", "hybrid.codegen", "pandas", "matplotlib", "mujoco", "hybrid.control.config", "scipy")
 REFUSAL = "error: regenerate needs a checkout of the project's repository"
 
 #: Imports of the project's own modules made inside a function, and why each is not at module level.
@@ -492,6 +492,7 @@ def test_installed_package_refuses_regenerate_and_writes_nothing(tmp_path):
     assert (site / "hybrid" / "codegen" / "api.py").is_file()
     assert (site / "hybrid" / "codegen" / "templates" / "closed_loop.c.j2").is_file()  # the C templates
     assert (site / "hybrid" / "bench" / "c" / "driver.c.j2").is_file()  # the benchmarks' C
+    assert (site / "hybrid" / "models" / "c" / "excitation.h.j2").is_file()  # an excitation trajectory's header
     assert (site / "hybrid" / "_generated" / "hybrid_sympy.c").is_file()
     assert (site / "hybrid" / "_generated" / "loops" / "index.json").is_file()  # the committed closed loops
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from functools import partial
 
+from hybrid.bench.excitation import excitation_benchmarks
 from hybrid.bench.first_use import cold_benchmarks, import_benchmarks
 from hybrid.bench.law import PaperLaw
 from hybrid.bench.parts import part_benchmarks
@@ -68,5 +69,7 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
                ("stability: a map of 10^4 points of the paper's loops, one report with its margins",
                 partial(stability_benchmarks, quick, add)),
                ("tuning: the paper's force gains by hybrid.tune over 20 scenarios, a 6 dB margin kept",
-                partial(tuning_benchmarks, quick, add))]
+                partial(tuning_benchmarks, quick, add)),
+               ("excitation: the Panda's identification trajectory by hybrid.excitation_trajectory",
+                partial(excitation_benchmarks, quick, add))]
     return groups

@@ -115,12 +115,13 @@ def _samples(name: str, value, n: int) -> np.ndarray:
     return arr
 
 
-def unexcited(W: np.ndarray, names) -> tuple[str, ...]:
+def unexcited(W: np.ndarray, names, below: float = UNEXCITED) -> tuple[str, ...]:
     """The ``names`` of ``W``'s columns that lie in its singular directions (relative singular value
-    below :data:`UNEXCITED`): the parameters the data cannot tell from combinations of the others."""
+    below ``below``, default :data:`UNEXCITED`): the parameters the data cannot tell from combinations of
+    the others (with a larger ``below``: those they tell apart worst)."""
     _, s, Vt = np.linalg.svd(W, full_matrices=True)
     s = np.concatenate([s, np.zeros(W.shape[1] - len(s))])  # fewer rows than columns: those directions too
-    null = Vt[s < UNEXCITED * max(s[0], np.finfo(float).tiny)]
+    null = Vt[s < below * max(s[0], np.finfo(float).tiny)]
     share = np.linalg.norm(null, axis=0)
     return tuple(name for name, x in zip(names, share) if x > UNEXCITED_SHARE)
 
