@@ -273,10 +273,16 @@ REFUSED = [
 
 
 def test_a_poorly_conditioned_trajectory_is_warned_of_naming_the_parameters():
+    # joint 2 kept well below its Coulomb friction's smooth-sign speed (0.05 rad/s): its viscous and Coulomb
+    # columns nearly proportional
     with pytest.warns(UserWarning, match="condition number is .*barely excites the base parameters .*joint2") as w:
         hybrid.excitation_trajectory(PLANAR, period=4.0, harmonics=2, samples=12, restarts=1, iterations=10,
-                                     limits={"velocity": [2.0, 1e-4], "acceleration": 5.0})
+                                     limits={"velocity": [2.0, 3e-3], "acceleration": 5.0})
     assert w[0].filename == __file__  # told at the caller's line
+    # far below it they are proportional to rounding: refused, naming the parameter
+    with pytest.raises(hybrid.HybridError, match=r"does not excite the base parameters damping\[joint2\]"):
+        hybrid.excitation_trajectory(PLANAR, period=4.0, harmonics=2, samples=12, restarts=1, iterations=10,
+                                     limits={"velocity": [2.0, 1e-4], "acceleration": 5.0})
 
 
 @pytest.mark.parametrize(("kwargs", "message"), REFUSED, ids=[str(m)[:40] for _, m in REFUSED])
