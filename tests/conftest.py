@@ -54,20 +54,25 @@ UR5 = ("ur_description/urdf/ur5_robot.urdf", "tool0")
 PANDA = ("panda_description/urdf/panda.urdf", "panda_hand_tcp")
 
 
+def pinocchio_model(urdf, joint_names):
+    """Pinocchio's model of a URDF with only ``joint_names`` moving, the others locked at their neutral
+    position (0, where :meth:`hybrid.Robot.from_urdf` holds them)."""
+    pin = pytest.importorskip("pinocchio")
+    model = pin.buildModelFromUrdf(str(urdf))
+    extra = [model.getJointId(name) for name in model.names[1:] if name not in joint_names]
+    return pin.buildReducedModel(model, extra, pin.neutral(model)) if extra else model
+
+
 @pytest.fixture(scope="module")
 def robots():
     """The UR5 and the Panda of example-robot-data, viscosity on every joint, with Pinocchio's models."""
-    pin = pytest.importorskip("pinocchio")
     out = {}
     for key, (path, tip) in {"ur5": UR5, "panda": PANDA}.items():
         urdf = example_robot(path)
         robot = hybrid.Robot.from_urdf(urdf, tip=tip)
         robot = hybrid.Robot(robot.name, robot.chain, robot.links, tuple(np.linspace(0.1, 0.6, robot.n)),
                              robot.gravity, robot.limits)  # viscosity on every joint
-        model = pin.buildModelFromUrdf(str(urdf))
-        if model.nq != robot.n:
-            extra = [model.getJointId(n) for n in model.names[1:] if n not in robot.joint_names]
-            model = pin.buildReducedModel(model, extra, pin.neutral(model))
+        model = pinocchio_model(urdf, robot.joint_names)
         out[key] = (robot, model, model.getFrameId(tip))
     return out
 
@@ -113,10 +118,7 @@ def pinocchio_panda():
     from hybrid.models.shipped import PANDA_URDF
 
     pin = pytest.importorskip("pinocchio")
-    model = pin.buildModelFromUrdf(str(PANDA_URDF))
-    names = hybrid.panda().joint_names
-    model = pin.buildReducedModel(model, [model.getJointId(n) for n in model.names[1:] if n not in names],
-                                  pin.neutral(model))
+    model = pinocchio_model(PANDA_URDF, hybrid.panda().joint_names)
     return pin, model, model.createData(), model.getFrameId(PANDA[1])
 
 
