@@ -7,6 +7,7 @@ from collections.abc import Callable
 from functools import partial
 
 from hybrid.bench.first_use import cold_benchmarks, import_benchmarks
+from hybrid.bench.identification import identification_benchmarks
 from hybrid.bench.law import PaperLaw
 from hybrid.bench.parts import part_benchmarks
 from hybrid.bench.paths import path_benchmarks
@@ -68,5 +69,7 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
                ("stability: a map of 10^4 points of the paper's loops, one report with its margins",
                 partial(stability_benchmarks, quick, add)),
                ("tuning: the paper's force gains by hybrid.tune over 20 scenarios, a 6 dB margin kept",
-                partial(tuning_benchmarks, quick, add))]
+                partial(tuning_benchmarks, quick, add)),
+               ("identification: the Panda's dynamics from a log of 10^5 samples",
+                partial(identification_benchmarks, quick, add))]
     return groups

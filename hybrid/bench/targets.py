@@ -63,6 +63,7 @@ PART_SAMPLE = "UR5 controller sample on a part (its expansion about the tip, mea
 PART_RUN = "3-D run on a part (UR5 on the sphere's mesh, 3 s simulated) through hybrid.simulate"
 STABILITY_MAP = "stability map of 10^4 points (paper's experiment: sensor stiffness x sample time)"
 STABILITY_REPORT = "hybrid.stability of the paper's experiment, with its margins"
+IDENTIFY = "dynamics identified from a log of 10^5 samples (Panda, 1 kHz): filtered, fitted, made consistent"
 #: LOOP_OPS before the body-frame algorithms: 4 x 2,593 (the plant's right-hand side) + 3,488 / 100 (the
 #: controller step, once a sample of 100 steps) = 10,406.9. A reference count, like a baseline: the target
 #: is a share of it
@@ -135,6 +136,7 @@ TARGETS = (
     Target(PART_FIT, "<= 10 s", 10),
     Target(PART_RUN, "<= 2x the run on the sphere", 2, field="of_formula"),
     Target(STABILITY_MAP, "<= 1 s", 1),
+    Target(IDENTIFY, "<= 10 s", 10),
 )
 
 
