@@ -111,6 +111,9 @@ def test_the_default_filter_on_a_1khz_log_of_positions_and_torques(arms, base):
     assert np.abs(found.consistent - found.estimate).max() < 1e-6 * np.abs(want).max()
     edge, step = 290, 25  # the slowest pole of the 20 Hz filter at 1 kHz decays to 1e-6 in 288 samples, + 4
     assert abs(found.samples - (20_000 - 2 * edge) / step) < 5 and found.log_samples == 20_000
+    # the identified robot is a controller's model (the same structure as the arm's)
+    exp = hybrid.tracing_experiment(robot=true, duration=0.2, controller_robot=found.robot)
+    assert exp.controller_model() == found.robot and hybrid.simulate(exp).metrics["rms_force_error_N"] < 1.0
     # with qd, qdd given they are filtered alike, and come as close
     again = hybrid.identify_dynamics(nominal, t, q, torques(true, q, qd, qdd), qd=qd, qdd=qdd)
     assert np.abs(again.estimate - want).max() < 3e-5 * np.abs(want).max()
@@ -259,7 +262,7 @@ def test_with_linear_parameters_refuses_what_no_body_has(arms, change, words):
         pi[names.index(name)] = value
     with pytest.raises(hybrid.HybridError, match=words):
         hybrid.with_linear_parameters(nominal, pi)
-    with pytest.raises(hybrid.HybridError, match="pi must be 66 finite numbers"):
+    with pytest.raises(hybrid.HybridError, match=f"pi must be {len(names)} finite numbers"):
         hybrid.with_linear_parameters(nominal, pi[:-1])
     with pytest.raises(hybrid.HybridError, match="closed form"):
         hybrid.with_linear_parameters(hybrid.paper_arm(), hybrid.linear_parameters(hybrid.paper_arm()))
@@ -297,6 +300,10 @@ def test_bad_logs_are_refused_saying_what_to_do(arms, log):
     refused(r"t\[100\] = 0.099 repeats t\[99\] = 0.099; give strictly increasing times", late, q, tau)
     gap = np.concatenate([t[:2000], t[2000:] + 0.01])
     refused(r"the log's times are not uniform: .* resample the log onto uniform times", gap, q, tau)
+    jitter = t + np.random.default_rng(0).uniform(-0.005, 0.005, len(t)) * 1e-3  # within 1 % of a step: taken
+    epoch = t + 1.7e9  # a clock's epoch: uniform to its rounding (4e-7 s)
+    for times in (jitter, epoch):
+        assert hybrid.identify_dynamics(nominal, times, q, tau, consistent=False).sample_time == pytest.approx(1e-3)
     refused(r"cutoff_hz = 600 Hz is not below the log's Nyquist frequency 500 Hz", t, q, tau, cutoff_hz=600.0)
     refused(r"cutoff_hz = -1; give the filter's cutoff in Hz, a positive number", t, q, tau, cutoff_hz=-1)
     refused(r"cutoff_hz = 10.0 with smooth=False; give one of them", t, q, tau, cutoff_hz=10.0, smooth=False)

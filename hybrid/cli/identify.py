@@ -120,7 +120,7 @@ def report(found: DynamicsIdentification, log: str) -> str:
     lines.append(f"{'base parameter':<{width}}  {'estimate':>12}  {'+- std':>10}  {'consistent':>12}  "
                  f"{'nominal':>12}  unit")
     for name, e, s, c, n in zip(found.names, found.estimate, found.std, consistent, found.nominal):
-        lines.append(f"{name:<{width}}  {e:>12.6g}  {s:>10.3g}  {c:>12.6g}  {n:>12.6g}  {units[name]}")
+        lines.append(f"{name:<{width}}  {e:>12.6g}  {s:>10.3g}  {c:>12.6g}  {n:>12.6g}  {units.get(name, '')}")
     lines += ["(each base parameter is the one named plus the parameters the torques cannot tell from it: "
               "hybrid.base_parameters(robot).base_names())", "", "residual RMS per joint (least squares, consistent):"]
     joint_width = max(len(j) for j in robot.joint_names)

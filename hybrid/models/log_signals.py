@@ -139,8 +139,9 @@ def times(t) -> np.ndarray:
         raise HybridError(f"t[{k}] = {float(t[k])!r} {how} t[{k - 1}] = {float(t[k - 1])!r}; give strictly increasing "
                           "times (sort the log by time, drop repeated rows)")
     k = np.arange(len(t))
-    slope, offset = np.polyfit(k, t, 1)
-    off = np.abs(t - (offset + slope * k))
+    since = t - t[0]  # (a clock's epoch would cost the fit its precision)
+    slope, offset = np.polyfit(k, since, 1)
+    off = np.abs(since - (offset + slope * k))
     if off.max() > JITTER * slope:
         worst = int(np.argmax(off))
         raise HybridError(f"the log's times are not uniform: t[{worst}] = {float(t[worst])!r} is "
