@@ -62,6 +62,12 @@ def test_a_log_is_identified_reported_and_its_robot_written(capsys, tmp_path, ta
     assert code == 2 and err == f"error: --out {out} exists; choose another name or pass --force to overwrite it\n"
     code, text, _ = _run(capsys, log, "--out", out, "--force", "--cutoff", "30")
     assert code == 0 and "filtered at 30 Hz" in text
+    urdf = tmp_path / "robot.urdf"  # the same robot as a URDF, read back by the library
+    assert _run(capsys, log, "--out", urdf)[0] == 0
+    again = hybrid.Robot.from_urdf(urdf, tip="tip")
+    assert again.chain == robot.chain and again.damping == pytest.approx(robot.damping, abs=1e-12)
+    np.testing.assert_allclose(base.of(hybrid.linear_parameters(again)), list(want.values()), rtol=0,
+                               atol=1e-4 * max(abs(v) for v in want.values()))
 
 
 def test_bad_logs_and_options_are_refused_in_one_line(capsys, tmp_path, table):
@@ -87,12 +93,14 @@ def test_bad_logs_and_options_are_refused_in_one_line(capsys, tmp_path, table):
     holes = frame.copy()
     holes.loc[412, "tau[wrist_1_joint]"] = np.nan
     refused(holes, match="tau[412, 3] = nan (sample 412, joint wrist_1_joint); give finite numbers")
+    refused(frame.assign(**{"qd[shoulder_pan_joint]": 0.0}),
+            match="has qd[JOINT] columns but no qd[shoulder_lift_joint]; give qd for every joint, or for none")
     refused(frame.iloc[:300], match="the log has 300 samples; filtering at 20 Hz drops 292 at each end")
     refused(frame, "--cutoff", "700", match="cutoff_hz = 700 Hz is not below the log's Nyquist frequency 500 Hz")
     (tmp_path / "log.txt").write_text("t\n0\n")
     refused(tmp_path / "log.txt", match="is neither .csv nor .parquet")
     refused(tmp_path / "missing.csv", match="cannot read the log")
-    refused(frame, "--out", tmp_path / "robot.urdf", match="is not a .json file; give FILE.json")
+    refused(frame, "--out", tmp_path / "robot.txt", match="is neither .urdf nor .json; give FILE.urdf or FILE.json")
     code, _, err = _run(capsys, tmp_path / "bad.csv", "--cutoff", "-3")
     assert code == 2 and "--cutoff: '-3': give the cutoff in Hz, a positive number" in err
 

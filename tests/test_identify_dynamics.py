@@ -354,3 +354,18 @@ def test_the_pandas_log_of_the_benchmark():
     assert np.abs(found.estimate - want).max() < 1e-4 * np.abs(want).max()
     assert np.abs(found.consistent - want).max() < 1e-4 * np.abs(want).max()
     assert all(np.linalg.eigvalsh(J).min() > 0 for J in pseudo_inertias(found.parameters, robot.n))
+
+
+def test_a_robot_written_as_a_urdf_reads_back_as_itself(tmp_path, arms):
+    """The UR5 changed, the Panda and the paper's arm (as a chain): the chain equal (the joints' frames,
+    axes, names, the tip), the parameters, viscosities and limits equal to rounding."""
+    from hybrid.models.urdf_writer import robot_urdf_text
+
+    for robot in (arms[1], hybrid.panda(), hybrid.Robot.planar(hybrid.paper_arm())):
+        path = tmp_path / f"{robot.name}.urdf"
+        path.write_text(robot_urdf_text(robot))
+        again = hybrid.Robot.from_urdf(path, tip="tip", gravity=robot.gravity)
+        assert again.name == robot.name and again.chain == robot.chain
+        np.testing.assert_allclose(again.as_array(), robot.as_array(), rtol=1e-12, atol=1e-15)
+        for field in ("lower", "upper", "velocity", "effort"):
+            np.testing.assert_array_equal(getattr(again.limits, field), getattr(robot.limits, field))

@@ -16,6 +16,7 @@ from hybrid.errors import HybridError
 from hybrid.experiments.serialisation import robot_to_dict
 from hybrid.models.dynamics_identification import DynamicsIdentification, identify_dynamics
 from hybrid.models.robot import Robot
+from hybrid.models.urdf_writer import robot_urdf_text
 from hybrid.spec.chain import linear_parameter_units
 
 IDENTIFY = ("Identify a robot's dynamics from a log of its torques. LOG is a CSV or Parquet table "
@@ -27,8 +28,10 @@ IDENTIFY = ("Identify a robot's dynamics from a log of its torques. LOG is a CSV
             "identified robot.")
 #: the table formats read, by file suffix
 READERS = {".csv": "csv", ".parquet": "parquet", ".pq": "parquet"}
-#: the robot file formats written, by file suffix
-WRITERS = (".json",)
+#: the robot file formats written, by file suffix: a URDF (``Robot.from_urdf(FILE, tip="tip")`` reads it) or
+#: the JSON of an experiment's file
+WRITERS = {".urdf": lambda robot: robot_urdf_text(robot),
+           ".json": lambda robot: json.dumps(robot_to_dict(robot), indent=2) + "\n"}
 
 
 def add_parser(sub) -> None:
@@ -41,8 +44,9 @@ def add_parser(sub) -> None:
                    help="the low-pass filter's cutoff [Hz], below the log's Nyquist frequency (default: 20 Hz, at "
                         "most a quarter of the sampling rate; 5 to 10 times the excitation's highest frequency)")
     p.add_argument("--out", metavar="FILE",
-                   help="write the identified robot (physically consistent) to FILE, a .json file that "
-                        "hybrid.experiments.serialisation.robot_from_dict reads")
+                   help="write the identified robot (physically consistent) to FILE: a .urdf file (its tip link "
+                        "named tip: hybrid.Robot.from_urdf(FILE, tip='tip') reads it) or a .json file (an "
+                        "experiment's file's robot: hybrid.experiments.serialisation.robot_from_dict)")
     p.add_argument("--force", action="store_true", help="overwrite --out")
     common.add_verbose(p)
 
@@ -90,8 +94,12 @@ def read_log(path, joints) -> dict[str, np.ndarray]:
                           f"for the joints {', '.join(joints)}")
     out: dict[str, np.ndarray | None] = {}
     for what, names in wanted.items():
-        if not all(n in columns for n in names):
-            out[what] = None  # velocities and accelerations: all the joints' or none
+        present = [n in columns for n in names]
+        if not all(present):
+            if any(present):  # velocities and accelerations: all the joints' or none
+                raise HybridError(f"the log has {what}[JOINT] columns but no {names[present.index(False)]}; give "
+                                  f"{what} for every joint, or for none")
+            out[what] = None
             continue
         arrays = []
         for name in names:
@@ -138,7 +146,7 @@ def run(args) -> int:
     if args.out is not None:
         out = files.output_path(args.out)
         if out.suffix.lower() not in WRITERS:
-            raise HybridError(f"--out {out} is not a .json file; give FILE.json")
+            raise HybridError(f"--out {out} is neither .urdf nor .json; give FILE.urdf or FILE.json")
         if out.exists() and not args.force:  # before the work, not after it
             raise HybridError(f"--out {out} exists; choose another name or pass --force to overwrite it")
     with args.report.step(f"reading the robot of {args.urdf} and the log {args.log}"):
@@ -149,7 +157,6 @@ def run(args) -> int:
                                   cutoff_hz=args.cutoff)
     print(report(found, Path(args.log).name))
     if out is not None:
-        text = json.dumps(robot_to_dict(found.robot), indent=2) + "\n"
-        files.write_text(out, text, overwrite=args.force)
+        files.write_text(out, WRITERS[out.suffix.lower()](found.robot), overwrite=args.force)
         print(f"wrote {out}")
     return 0
