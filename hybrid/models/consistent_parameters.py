@@ -17,8 +17,8 @@ Coulomb frictions ``>= 0``: a convex semidefinite program (cvxpy, solved by Clar
   least-squares estimate; ``|W_b B pi - t|^2 = |R (B pi - pi_b)|^2 + |t - W_b pi_b|^2``, where ``B`` maps
   ``pi`` to its base parameters. ``s^2`` is the estimate's residual variance per row: a base parameter
   moved by one standard deviation costs 1. It is at least :data:`NOISE_FLOOR` squared times the
-  torques' sum of squares (exact data, a simulation's: the program's numbers then span a range its
-  solver resolves, and the base parameters still move by a relative 1e-10 at most).
+  torques' sum of squares (for exact data, a simulation's: the program's numbers then span a range its
+  solver resolves).
 - **The prior fixes what the data cannot see.** ``P`` is the squared distance from the robot's nominal
   (URDF) parameters: each link's pseudo-inertia difference scaled by its size ``S = diag(m l^2, m l^2,
   m l^2, m)`` (nominal mass; ``l`` the RMS distance of its mass from the joint frame's origin), each

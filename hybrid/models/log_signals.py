@@ -12,7 +12,7 @@ The choices, and why:
 - **Derivatives by central differences of the filtered q**, on a stencil of ``2 m + 1`` samples
   (:data:`STENCIL` ``= m = 4``: exact for polynomials of degree 8). On a sinusoid of angular frequency
   ``w`` sampled every ``h`` its relative error is ``(w h)^8 / 630`` for ``q'`` (less for ``q''``):
-  1e-9 at 3 Hz sampled at 100 Hz, far less at 1 kHz. Differences amplify noise at high frequencies,
+  3e-9 at 3 Hz sampled at 100 Hz, far less at 1 kHz. Differences amplify noise at high frequencies,
   and the filter has removed it there. A Savitzky-Golay derivative was not taken: it is a low-pass of
   its own whose bandwidth is set by its window in samples, so ``q'`` would have another bandwidth
   than ``tau`` (or be filtered twice).
