@@ -7,10 +7,11 @@ The public API, by subpackage:
   :data:`PANDA_URDF`; the paper's planar arm as ``Robot.planar(paper_arm())``, with :class:`Arm` its
   parameters), and their terms (:func:`arm_terms`, :func:`operational_space`); the joint-torque
   regressor ``tau = Y pi`` (:func:`regressor`) on the parameters the dynamics are linear in
-  (:func:`linear_parameters`), its base parameters (:func:`base_parameters`, :class:`BaseParameters`)
-  and their identification from measured torques (:func:`identify_dynamics`, :class:`DynamicsIdentification`)
-  along trajectories that excite them well (:func:`excitation_trajectory`, :class:`ExcitationTrajectory`);
-  a robot's inertial parameters perturbed at random, each link still a rigid body (:func:`perturbed_robot`);
+  (:func:`linear_parameters`, and back: :func:`with_linear_parameters`), its base parameters
+  (:func:`base_parameters`, :class:`BaseParameters`) and the dynamics identified from a log of measured
+  torques (:func:`identify_dynamics`, :class:`DynamicsIdentification`) along trajectories that excite them
+  well (:func:`excitation_trajectory`, :class:`ExcitationTrajectory`); a robot's inertial parameters
+  perturbed at random, each link still a rigid body (:func:`perturbed_robot`);
 - geometry (:mod:`hybrid.geometry`): the surfaces :class:`Plane`, :class:`Circle`, :class:`Sphere`,
   :class:`Cylinder` and :class:`ImplicitSurface`, and parts as they come (:class:`MeshSurface`,
   :class:`PointCloudSurface`); paths on them (:class:`CirclePath`,
@@ -78,7 +79,7 @@ from hybrid.models.base_parameters import BaseParameters, base_parameters
 from hybrid.models.dynamics_identification import DynamicsIdentification, identify_dynamics
 from hybrid.models.perturbation import perturbed_robot
 from hybrid.models.planar_arm import Arm, paper_arm
-from hybrid.models.regressor import linear_parameters, regressor
+from hybrid.models.regressor import linear_parameters, regressor, with_linear_parameters
 from hybrid.models.robot import Robot
 from hybrid.models.shipped import PANDA_URDF, UR5_URDF, panda, ur5
 from hybrid.models.terms import OperationalSpace, arm_terms, operational_space
@@ -143,7 +144,7 @@ __all__ = [
     "operational_space", "panda", "panda_experiment", "paper_arm", "paper_experiment", "perturbed_robot",
     "read_controller_config",
     "regressor", "simulate", "stability", "stability_map", "suggest_gains",
-    "sweep", "tare", "task_frame", "tracing_experiment", "ur5",
+    "sweep", "tare", "task_frame", "tracing_experiment", "ur5", "with_linear_parameters",
     "Tuning", "tune",
     "ExcitationTrajectory", "excitation_trajectory",
 ]

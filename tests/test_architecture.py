@@ -36,7 +36,8 @@ ROOT = Path(__file__).resolve().parent.parent
 GENERATED = ROOT / "generated"
 #: the generator and the libraries only some commands need: none may load with ``import hybrid`` (nor the
 #: reader of a controller's file and its schema)
-HEAVY = ("sympy", "casadi", "hybrid.codegen", "pandas", "matplotlib", "mujoco", "hybrid.control.config", "scipy")
+HEAVY = ("sympy", "casadi", "hybrid.codegen", "pandas", "matplotlib", "mujoco", "hybrid.control.config", "scipy",
+         "cvxpy")
 REFUSAL = "error: regenerate needs a checkout of the project's repository"
 
 #: Imports of the project's own modules made inside a function, and why each is not at module level.

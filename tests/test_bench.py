@@ -29,7 +29,7 @@ def test_bench_quick_reports_every_benchmark():
                  targets.FIRST_SIMULATE, targets.COLD_PAPER, targets.ONE_RUN, targets.LOOP_RUN, targets.TRACE_ONE,
                  targets.TRACE_RUN, targets.SWEEP_3D, targets.LOOP_OPS, f"ur5: {targets.LAW_BATCHED}",
                  targets.PATH_FOLLOW, targets.PATH_SAMPLE, targets.PATH_RUN, targets.PART_FIT, targets.PART_SAMPLE,
-                 targets.PART_RUN, targets.EXCITATION_QUICK):
+                 targets.PART_RUN, targets.EXCITATION_QUICK, targets.IDENTIFY):
         assert part in names
     if hasattr(os, "sched_setaffinity"):
         assert f"ur5: {targets.LAW_BATCHED_ONE_CORE}" in names
@@ -62,7 +62,8 @@ def _marked(rows: list[dict]) -> dict:
     (targets.ONE_RUN, 2.3, 2.31), (targets.SWEEP_10000, 2.8, 2.9), (targets.SWEEP_1000, 0.9, 1.1),
     (targets.TRACE_ONE, 24.0, 26.0), (targets.SWEEP_3D, 3.0, 3.1), (targets.FIRST_SIMULATE, 1.5, 1.6),
     (targets.COLD_PAPER, 7.9, 8.1), (f"ur5: {targets.LAW_BATCHED_ONE_CORE}", 120.0, 121.0),
-    (targets.LOOP_OPS, targets.LOOP_OPS_REFERENCE * 2 / 3, targets.LOOP_OPS_REFERENCE * 2 / 3 + 1)])
+    (targets.LOOP_OPS, targets.LOOP_OPS_REFERENCE * 2 / 3, targets.LOOP_OPS_REFERENCE * 2 / 3 + 1),
+    (targets.IDENTIFY, 10.0, 10.1)])
 def test_a_target_is_met_up_to_its_bound_and_missed_past_it(name, met, missed):
     for median, expected in ((met, True), (missed, False)):
         row = _marked([{"name": name, "median": median, "unit": "ms"}])[name]

@@ -8,6 +8,7 @@ from functools import partial
 
 from hybrid.bench.excitation import excitation_benchmarks
 from hybrid.bench.first_use import cold_benchmarks, import_benchmarks
+from hybrid.bench.identification import identification_benchmarks
 from hybrid.bench.law import PaperLaw
 from hybrid.bench.parts import part_benchmarks
 from hybrid.bench.paths import path_benchmarks
@@ -71,5 +72,7 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
                ("tuning: the paper's force gains by hybrid.tune over 20 scenarios, a 6 dB margin kept",
                 partial(tuning_benchmarks, quick, add)),
                ("excitation: the Panda's identification trajectory by hybrid.excitation_trajectory",
-                partial(excitation_benchmarks, quick, add))]
+                partial(excitation_benchmarks, quick, add)),
+               ("identification: the Panda's dynamics from a log of 10^5 samples",
+                partial(identification_benchmarks, quick, add))]
     return groups

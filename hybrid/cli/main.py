@@ -18,6 +18,7 @@ from pathlib import Path
 from hybrid import bench
 from hybrid.cli import common, progress
 from hybrid.cli import experiments as experiment_cli
+from hybrid.cli import identify as identify_cli
 from hybrid.cli import regenerate as regenerate_cli
 from hybrid.cli import stability as stability_cli
 from hybrid.cli import sweep as sweep_cli
@@ -151,6 +152,7 @@ def build_parser(prog: str = "hybrid") -> argparse.ArgumentParser:
     sweep_cli.add_parser(sub)
     stability_cli.add_parser(sub)
     tune_cli.add_parser(sub)
+    identify_cli.add_parser(sub)
     bench.add_parser(sub)
     return p
 

@@ -1,25 +1,36 @@
-"""A robot's base parameters identified from measured joint torques by ordinary least squares.
+"""A robot's dynamics identified from a log of its motion and joint torques.
 
-The dynamics are linear in the base parameters (:func:`hybrid.base_parameters`): at each of N samples
-``tau_k = Y_b(q_k, q'_k, q''_k) pi_b``. Stacked, ``W pi_b = t`` (``W``: ``N n`` rows, one column per
-base parameter) is solved by least squares through ``W``'s singular value decomposition; the residual's
-variance ``sigma^2 = |t - W pi_b|^2 / (N n - p)`` gives the estimate's covariance ``sigma^2 (W^T W)^-1``
-(independent torque errors of one variance, the model exact). A trajectory that does not excite every
-base parameter leaves ``W`` rank deficient: the parameters of its singular directions are refused by
-name rather than given an arbitrary value.
+The log's times, positions and torques (velocities and accelerations when measured) are filtered,
+differentiated and thinned (:mod:`hybrid.models.log_signals`). The dynamics are linear in the base
+parameters (:func:`hybrid.base_parameters`): at each sample kept ``tau_k = Y_b(q_k, q'_k, q''_k) pi_b``.
+Stacked, ``W pi_b = t`` (``W``: ``M n`` rows, one column per base parameter) is solved by least squares
+through a QR factorisation taken a block of samples at a time (memory bounded for any log): per joint
+the triangular factor of ``[W_j t_j]`` (its rows), then of them all, ``R``. ``R`` gives the estimate, the
+condition number, the residual of each joint for any parameters, and the estimate's covariance
+``(W^T W)^-1 (sum_j s_j^2 W_j^T W_j) (W^T W)^-1`` (independent torque errors, each joint's of its own
+variance ``s_j^2``, from its residual). A trajectory that does not excite every base parameter leaves
+``W`` rank deficient: the parameters of its singular directions are refused by name rather than given an
+arbitrary value.
+
+The full parameters come from :func:`~hybrid.models.consistent_parameters.consistent_parameters`
+(every link a rigid body, frictions >= 0; ``consistent=True``) or, without it, from the estimate with the
+parameters the torques do not see at their nominal values.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.models.base_parameters import BaseParameters, base_parameters
-from hybrid.models.regressor import linear_parameters, regressor
+from hybrid.models.consistent_parameters import consistent_parameters, link_scales, link_sizes
+from hybrid.models.log_signals import LogSignals, log_signals
+from hybrid.models.regressor import linear_parameters, regressor, with_linear_parameters
 from hybrid.models.robot import Robot, as_robot
-from hybrid.validate import shown
 
 #: a singular value of the stacked base regressor below this fraction of the largest is a direction the
 #: data did not excite (rounding leaves about 1e-16; a parameter excited at all is far above 1e-8)
@@ -27,17 +38,26 @@ UNEXCITED = 1e-8
 #: a base parameter is named as not excited when this much of it (the norm of its unit vector's
 #: projection on the singular directions) lies in them
 UNEXCITED_SHARE = 0.1
+#: a base parameter is poorly excited when its standard deviation is more than this share of its size
+#: (the largest of its estimate, its nominal value and :data:`SIZE_FLOOR` of its link's scale)
+POORLY_EXCITED = 0.1
+#: the least size of a link's base parameter, as a share of its link's scale (the nominal mass ``m``,
+#: ``m l``, ``m l^2`` for a mass, a first moment, an inertia): one whose value is nearly zero (a product of
+#: inertia of a symmetric link) is judged against that, not against zero
+SIZE_FLOOR = 1e-2
+#: samples per native regressor call and QR block: memory bounded whatever the log's length
+CHUNK = 8192
 
 
 @dataclass(frozen=True)
 class DynamicsIdentification:
-    """What :func:`identify_dynamics` found: the base parameters ``pi_b`` of ``tau = Y_b pi_b``.
+    """What :func:`identify_dynamics` found: the base parameters ``pi_b`` of ``tau = Y_b pi_b`` by least
+    squares, and the full parameters ``pi`` of a robot.
 
     Parameters
     ----------
-    robot : Robot
-        The arm identified (its structure and gravity give the regressor; its own parameters are the
-        nominal model).
+    nominal_robot : Robot
+        The arm given (its structure and gravity give the regressor; its parameters are the nominal model).
     base : BaseParameters
         The base parameters (:func:`hybrid.base_parameters`); ``base.base_names()`` says which
         combination of :func:`hybrid.linear_parameters` each stands for.
@@ -46,16 +66,34 @@ class DynamicsIdentification:
     estimate : numpy.ndarray
         The base parameters' least-squares estimate (SI units of ``pi``).
     std : numpy.ndarray
-        Their standard deviations, from the residual's variance and ``(W^T W)^-1`` (NaN where the fit
-        leaves no residual: a one-joint arm with exactly as many samples as base parameters).
+        Their standard deviations (NaN where the fit leaves no residual to judge by).
     nominal : numpy.ndarray
-        The base parameters of the robot's own model, ``base.of(linear_parameters(robot))``.
+        The base parameters of the nominal model, ``base.of(linear_parameters(nominal_robot))``.
+    parameters : numpy.ndarray
+        The full ``pi``: the physically consistent estimate, or (``consistent=False``) the estimate with
+        the parameters the torques do not see at their nominal values.
+    consistent : numpy.ndarray or None
+        The consistent estimate's base parameters, ``base.of(parameters)``; None with ``consistent=False``.
     residual_rms : numpy.ndarray
-        The RMS over the samples of the torque the fit leaves unexplained, per joint [N m or N].
+        Per joint, the RMS over the samples of the torque the least-squares fit leaves [N m or N].
+    consistent_residual_rms : numpy.ndarray or None
+        The same of the consistent estimate.
     condition : float
-        The condition number of the stacked base regressor ``W``.
+        The condition number of the stacked base regressor.
+    poorly_excited : tuple of str
+        The base parameters whose standard deviation is more than 10 % of their size: the largest of the
+        estimate, the nominal value and, for a link's parameter, 1 % of the link's scale (its nominal mass
+        ``m``, ``m l``, ``m l^2`` for a mass, first moment, inertia; ``l`` the RMS distance of its mass from
+        the joint's origin). A friction parameter whose nominal value is zero and estimate nearly so is
+        listed when its standard deviation is above 10 % of the estimate.
     samples : int
-        How many samples the fit used.
+        The samples the fit used (the log's, less the filter's edges, thinned).
+    log_samples : int
+        The log's samples.
+    cutoff_hz : float or None
+        The filter's cutoff [Hz]; None for a log taken as it is.
+    sample_time : float
+        The log's step [s].
 
     Examples
     --------
@@ -66,18 +104,39 @@ class DynamicsIdentification:
     'DynamicsIdentification'
     """
 
-    robot: Robot
+    nominal_robot: Robot
     base: BaseParameters
     names: tuple[str, ...]
     estimate: np.ndarray
     std: np.ndarray
     nominal: np.ndarray
+    parameters: np.ndarray
+    consistent: np.ndarray | None
     residual_rms: np.ndarray
+    consistent_residual_rms: np.ndarray | None
     condition: float
+    poorly_excited: tuple[str, ...]
     samples: int
+    log_samples: int
+    cutoff_hz: float | None
+    sample_time: float
+
+    @cached_property
+    def robot(self) -> Robot:
+        """The identified arm: the nominal one with :attr:`parameters` (:func:`hybrid.with_linear_parameters`),
+        for a controller or a plant (``hybrid.Experiment(controller_robot=found.robot)``).
+
+        Raises
+        ------
+        HybridError
+            The parameters are not physical (``consistent=False`` on poor data): identify with
+            ``consistent=True``.
+        """
+        return with_linear_parameters(self.nominal_robot, self.parameters)
 
     def torque(self, q, qd, qdd) -> np.ndarray:
-        """The joint torques the identified model predicts, ``Y_b(q, q', q'') pi_b``.
+        """The joint torques the identified model predicts, ``Y_b(q, q', q'') pi_b`` (the consistent
+        estimate's base parameters; the least-squares one's with ``consistent=False``).
 
         Parameters
         ----------
@@ -94,25 +153,8 @@ class DynamicsIdentification:
         HybridError
             A state of the wrong size or not finite.
         """
-        Y, _ = regressor(self.robot, q, qd, qdd)
-        return self.base.regressor(Y) @ self.estimate
-
-
-def _samples(name: str, value, n: int) -> np.ndarray:
-    """``value`` as an ``(N, n)`` array of finite numbers."""
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise HybridError(f"{name} = {shown(value, 60)}; give an (N, {n}) array of numbers, one row per sample") \
-            from None
-    if arr.ndim != 2 or arr.shape[1] != n:
-        raise HybridError(f"{name} has shape {arr.shape}; give an (N, {n}) array, one row of {n} joint values per "
-                          "sample")
-    if not np.isfinite(arr).all():
-        k, j = np.argwhere(~np.isfinite(arr))[0]
-        raise HybridError(f"{name}[{k}, {j}] = {arr[k, j]}; give finite numbers (drop the samples where the "
-                          "measurement failed)")
-    return arr
+        Y, _ = regressor(self.nominal_robot, q, qd, qdd)
+        return self.base.regressor(Y) @ (self.estimate if self.consistent is None else self.consistent)
 
 
 def unexcited(W: np.ndarray, names, below: float = UNEXCITED) -> tuple[str, ...]:
@@ -126,73 +168,146 @@ def unexcited(W: np.ndarray, names, below: float = UNEXCITED) -> tuple[str, ...]
     return tuple(name for name, x in zip(names, share) if x > UNEXCITED_SHARE)
 
 
-def identify_dynamics(robot: Robot, q, qd, qdd, tau) -> DynamicsIdentification:
-    """The base parameters of ``robot`` that fit measured joint torques, by ordinary least squares.
+def joint_factors(robot: Robot, base: BaseParameters, signals: LogSignals) -> np.ndarray:
+    """``(n, p + 1, p + 1)``: per joint ``j`` the triangular factor of ``[W_j t_j]`` (its rows of the
+    base regressor and its torques), folded in a block of :data:`CHUNK` samples at a time; ``|F_j [x, -1]|``
+    is the joint's residual norm for the base parameters ``x``."""
+    n, p = robot.n, len(base.independent)
+    factors = [np.zeros((0, p + 1))] * n
+    for start in range(0, len(signals.q), CHUNK):
+        part = slice(start, start + CHUNK)
+        Y, _ = regressor(robot, signals.q[part], signals.qd[part], signals.qdd[part])
+        rows = np.concatenate([base.regressor(Y).transpose(1, 0, 2), signals.tau[part].T[..., None]], axis=2)
+        # one joint at a time: NumPy's batched QR is many times slower than its calls one by one
+        factors = [np.linalg.qr(np.vstack([f, r]), mode="r") for f, r in zip(factors, rows)]
+    return np.stack([np.vstack([f, np.zeros((p + 1 - len(f), p + 1))]) for f in factors])
+
+
+def _scales(robot: Robot, base: BaseParameters) -> np.ndarray:
+    """Each base parameter's link scale (its independent parameter's: ``m``, ``m l`` or ``m l^2`` of the
+    nominal link), 0 for a joint's parameter."""
+    per_link = link_scales(*link_sizes(linear_parameters(robot), robot.n)).ravel()
+    full = np.concatenate([per_link, np.zeros(len(base.names) - len(per_link))])
+    return full[list(base.independent)]
+
+
+def _residual_rms(factors: np.ndarray, x: np.ndarray, samples: int) -> np.ndarray:
+    """Per joint, the RMS over ``samples`` of the torque the base parameters ``x`` leave."""
+    return np.linalg.norm(factors @ np.append(x, -1.0), axis=1) / math.sqrt(samples)
+
+
+def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=None, smooth: bool = True,
+                      consistent: bool = True) -> DynamicsIdentification:
+    """The dynamics of ``robot`` identified from a log of its motion and joint torques.
+
+    The log is filtered, differentiated and thinned (:mod:`hybrid.models.log_signals`: a zero-phase
+    Butterworth low-pass on ``q`` and ``tau`` alike, central differences, the filter's edges dropped), the
+    base parameters fitted by least squares, and (``consistent=True``) the full parameters found nearest
+    the data with every link a rigid body and frictions ``>= 0``
+    (:mod:`hybrid.models.consistent_parameters`).
 
     Parameters
     ----------
     robot : Robot
         The arm: its structure and gravity give the regressor, its parameters the nominal model the
-        estimate is reported beside.
-    q, qd, qdd : array_like
-        ``(N, n)`` each: the joint positions, velocities and accelerations of N samples (a trajectory
-        that moves every joint over its range, with varied speeds and accelerations).
+        estimate is reported beside (and the consistent estimate is regularised toward).
+    t : array_like
+        ``(N,)``: the samples' times [s], uniform (within 2 % of a step).
+    q : array_like
+        ``(N, n)``: the joint positions [rad or m] of a trajectory that moves every joint over its range,
+        with varied speeds and accelerations.
     tau : array_like
-        ``(N, n)``: the joint torques measured at those samples [N m or N].
+        ``(N, n)``: the joint torques measured [N m or N].
+    qd, qdd : array_like or None
+        ``(N, n)``: measured velocities and accelerations; None: differences of the filtered ``q``.
+    cutoff_hz : float or None
+        The low-pass filter's cutoff [Hz], below the Nyquist frequency; None: 20 Hz (at most a quarter of
+        the sampling rate), for trajectories of a few hertz. Give 5 to 10 times the excitation's highest
+        frequency for another.
+    smooth : bool
+        False: the log is taken as it is (no filter, no samples dropped but those the differences need):
+        signals already filtered, or exact ones.
+    consistent : bool
+        Find the physically consistent full parameters (a convex program with cvxpy); False: least
+        squares alone (``.robot`` then refuses parameters that are not physical).
 
     Returns
     -------
     DynamicsIdentification
-        The estimate, its standard deviations, the residual and the conditioning.
+        The estimates, their standard deviations, the residuals, the conditioning and the identified
+        robot (``.robot``).
 
     Raises
     ------
     HybridError
-        Arrays of the wrong shape or different lengths, not finite, fewer samples than base parameters, or
-        samples that do not excite every base parameter (named).
+        Arrays of the wrong shape or lengths, a sample not finite (named by its row and joint), times not
+        strictly increasing or not uniform, a cutoff not below the Nyquist frequency, a log too short for
+        the filter and the parameters, or a trajectory that does not excite every base parameter (named).
 
     Examples
     --------
-    Torques of the UR5's own model at random states give back its base parameters:
+    A UR5 whose links are 20 % heavier than its URDF says, logged at 1 kHz along a few sines:
 
     >>> import numpy as np
     >>> import hybrid
     >>> robot = hybrid.ur5()
-    >>> rng = np.random.default_rng(0)
-    >>> q, qd, qdd = rng.uniform(-3, 3, (100, 6)), rng.normal(0, 1, (100, 6)), rng.normal(0, 1, (100, 6))
+    >>> heavier = robot.with_model_error(inertial=0.2)
+    >>> t = np.arange(0, 20, 1e-3)[:, None]
+    >>> w = 2 * np.pi * np.array([0.2, 0.5, 0.9, 1.4, 2.0, 2.7])
+    >>> q, qd, qdd = (np.sin(w * t) + np.sin(0.7 * w * t + 1), w * np.cos(w * t) + 0.7 * w * np.cos(0.7 * w * t + 1),
+    ...               -w**2 * np.sin(w * t) - (0.7 * w) ** 2 * np.sin(0.7 * w * t + 1))
     >>> Y, _ = hybrid.regressor(robot, q, qd, qdd)
-    >>> found = hybrid.identify_dynamics(robot, q, qd, qdd, Y @ hybrid.linear_parameters(robot))
-    >>> bool(np.allclose(found.estimate, found.nominal))
-    True
-    >>> bool(np.allclose(found.torque(q[0], qd[0], qdd[0]), Y[0] @ hybrid.linear_parameters(robot)))
+    >>> tau = Y @ hybrid.linear_parameters(heavier)
+    >>> found = hybrid.identify_dynamics(robot, t[:, 0], q, tau)
+    >>> want = found.base.of(hybrid.linear_parameters(heavier))
+    >>> bool(np.abs(found.estimate - want).max() < 1e-3 * np.abs(want).max()), found.cutoff_hz
+    (True, 20.0)
+    >>> model = found.robot                      # physically consistent: a controller's or a plant's robot
+    >>> bool(np.abs(found.torque(q, qd, qdd) - tau).max() < 2e-3 * np.abs(tau).max())
     True
     """
     robot = as_robot(robot)
-    n = robot.n
-    arrays = {name: _samples(name, value, n) for name, value in (("q", q), ("qd", qd), ("qdd", qdd), ("tau", tau))}
-    lengths = {name: len(a) for name, a in arrays.items()}
-    if len(set(lengths.values())) > 1:
-        raise HybridError(f"q, qd, qdd and tau have {', '.join(map(str, lengths.values()))} samples; give one row "
-                          "of each per sample, all the same length")
+    if not isinstance(consistent, (bool, np.bool_)):
+        raise HybridError(f"consistent = {consistent!r}; give True (physically consistent parameters) or False")
     base = base_parameters(robot)
-    p, N = len(base.independent), lengths["q"]
+    p, n = len(base.independent), robot.n
     names = tuple(base.names[i] for i in base.independent)
-    if N < p:
-        raise HybridError(f"{N} samples for {p} base parameters; give at least {p} samples, several times as many "
-                          "for a precise estimate")
-    Y, _ = regressor(robot, arrays["q"], arrays["qd"], arrays["qdd"])
-    W, t = base.regressor(Y).reshape(N * n, p), arrays["tau"].reshape(N * n)
-    U, s, Vt = np.linalg.svd(W, full_matrices=False)
+    signals = log_signals(robot.joint_names, t, q, tau, qd=qd, qdd=qdd, cutoff_hz=cutoff_hz, smooth=smooth, least=p)
+    M = len(signals.q)
+    factors = joint_factors(robot, base, signals)
+    whole = np.linalg.qr(factors.reshape(-1, p + 1), mode="r")
+    R, z = whole[:p, :p], whole[:p, p]
+    s = np.linalg.svd(R, compute_uv=False)
     if s[-1] < UNEXCITED * s[0]:
-        missing = unexcited(W, names)
+        missing = unexcited(R, names)
         raise HybridError(f"the samples do not excite the base parameters {', '.join(missing)}; excite the arm more "
                           "(a richer trajectory: every joint over its range, varied speeds and accelerations)")
-    estimate = Vt.T @ ((U.T @ t) / s)
-    residual = (t - W @ estimate).reshape(N, n)
-    dof = N * n - p  # at least p (n - 1) >= 0; a one-joint arm with N = p fits exactly and has none
-    variance = float(residual.ravel() @ residual.ravel()) / dof if dof > 0 else float("nan")
-    std = np.sqrt(variance * ((Vt.T / s) ** 2).sum(axis=1))
-    rms, nominal = np.sqrt((residual**2).mean(axis=0)), base.of(linear_parameters(robot))
-    for a in (estimate, std, rms, nominal):
-        a.setflags(write=False)
-    return DynamicsIdentification(robot, base, names, estimate, std, nominal, rms, float(s[0] / s[-1]), N)
+    estimate = np.linalg.solve(R, z)
+    rss = _residual_rms(factors, estimate, M) ** 2 * M
+    dof = M - p / n  # each joint's share of the M n - p degrees of freedom
+    variance = rss / dof if dof > 0 else np.full(n, np.nan)
+    inverse = np.linalg.inv(R)
+    bread = inverse @ inverse.T  # (W^T W)^-1
+    meat = np.einsum("j,jai,jak->ik", variance, factors[:, :, :p], factors[:, :, :p])
+    std = np.sqrt(np.clip(np.diag(bread @ meat @ bread), 0.0, None))
+    nominal = base.of(linear_parameters(robot))
+    size = np.maximum(np.maximum(np.abs(estimate), np.abs(nominal)), SIZE_FLOOR * _scales(robot, base))
+    poorly = tuple(name for name, sd, v in zip(names, std, size) if sd > POORLY_EXCITED * v)
+    if consistent:
+        parameters = consistent_parameters(
+            robot, base, R, estimate, noise_variance=float(rss.sum()) / max(M * n - p, 1), rows=M * n,
+            torque_rms=np.sqrt((signals.tau**2).mean(axis=0)), speed_rms=np.sqrt((signals.qd**2).mean(axis=0)))
+        fitted = base.of(parameters)
+    else:
+        parameters = linear_parameters(robot)
+        parameters[list(base.independent)] = estimate - base.beta @ parameters[list(base.dependent)]
+        fitted = None
+    found = {"estimate": estimate, "std": std, "nominal": nominal, "parameters": parameters, "consistent": fitted,
+             "residual_rms": np.sqrt(rss / M),
+             "consistent_residual_rms": None if fitted is None else _residual_rms(factors, fitted, M)}
+    for a in found.values():
+        if a is not None:
+            a.setflags(write=False)
+    return DynamicsIdentification(robot, base, names, **found, condition=float(s[0] / s[-1]), poorly_excited=poorly,
+                                  samples=M, log_samples=signals.log_samples,
+                                  cutoff_hz=signals.cutoff_hz, sample_time=signals.sample_time)

@@ -3,19 +3,29 @@
 A robot's ``robot`` array holds each link's centre of mass and its inertia about it: the dynamics are
 not linear in those. They are linear in ``pi``: per link the mass ``m``, the first moment ``m c`` and
 the inertia ``I_O = I_c + m (|c|^2 1 - c c^T)`` about the joint frame's origin (joint-frame axes), then
-the joints' viscosities, Coulomb frictions and offsets (:func:`linear_parameters` maps a robot to them).
-The regressor is compiled once per kinematic structure (:mod:`hybrid.codegen.regressor`); gravity and
-the Coulomb friction's smooth-sign speeds are inputs of it.
+the joints' viscosities, Coulomb frictions and offsets (:func:`linear_parameters` maps a robot to them,
+:func:`with_linear_parameters` back). The regressor is compiled once per kinematic structure
+(:mod:`hybrid.codegen.regressor`); gravity and the Coulomb friction's smooth-sign speeds are inputs of it.
 """
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
+from hybrid.errors import HybridError
 from hybrid.models.robot import Robot, as_robot
+from hybrid.models.urdf import LinkInertia
 from hybrid.native import units
 from hybrid.native.binding import is_batch
 from hybrid.spec.chain import linear_parameter_names
+from hybrid.validate import inertia_problem
+
+#: the parameters of ``pi`` per link, in its order: mass, first moment, inertia about the joint frame's origin
+LINK_PARAMETERS = 10
+#: the joint parameters (by the name before ``[``) that are physical only when >= 0: friction opposes motion
+NONNEGATIVE = ("damping", "coulomb")
 
 
 def linear_parameters(robot: Robot) -> np.ndarray:
@@ -106,3 +116,82 @@ def regressor(robot: Robot, q, qd, qdd) -> tuple[np.ndarray, tuple[str, ...]]:
     call = fn.batch if is_batch(q) else fn
     speeds = np.array(robot.coulomb_speed)
     return call(q, qd, qdd, np.array(robot.gravity), speeds)["Y"], linear_parameter_names(robot.chain)
+
+
+def with_linear_parameters(robot: Robot, pi) -> Robot:
+    """``robot`` with the parameters ``pi`` of :func:`linear_parameters`: its inverse.
+
+    Per link the mass ``m``, the centre of mass ``c = (m c) / m`` and the inertia about it
+    ``I_c = I_O - m (|c|^2 1 - c c^T)``; each parameter after the links' sets the :class:`Robot` field its
+    name begins with (``damping[joint]``: the joint's viscosity), joint by joint.
+
+    Parameters
+    ----------
+    robot : Robot
+        The arm: its structure, gravity and limits are kept.
+    pi : array_like
+        The parameters, in the order of :func:`regressor`'s names.
+
+    Returns
+    -------
+    Robot
+        The arm with those parameters (not tied to a URDF file any more: ``source`` is None).
+
+    Raises
+    ------
+    HybridError
+        ``pi`` of the wrong length or not finite, or not physical: a negative mass, a first moment
+        without mass, an inertia about the centre of mass no rigid body has (its pseudo-inertia not
+        positive semi-definite), a negative viscosity; or the paper's planar arm (its parameters are its
+        ``Arm``'s).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import hybrid
+    >>> robot = hybrid.ur5()
+    >>> pi = hybrid.linear_parameters(robot)
+    >>> again = hybrid.with_linear_parameters(robot, pi)
+    >>> bool(np.allclose(hybrid.linear_parameters(again), pi))
+    True
+    >>> pi[0] = -1.0
+    >>> hybrid.with_linear_parameters(robot, pi)
+    Traceback (most recent call last):
+    ...
+    hybrid.errors.HybridError: pi gives the link moved by 'shoulder_pan_joint' a mass of -1 kg; give physical ...
+    """
+    robot = as_robot(robot)
+    robot.kind.check_link_change()
+    names = linear_parameter_names(robot.chain)
+    try:
+        pi = np.asarray(pi, dtype=float)
+    except (TypeError, ValueError):
+        pi = np.array([])
+    if pi.shape != (len(names),) or not np.isfinite(pi).all():
+        raise HybridError(f"pi must be {len(names)} finite numbers (hybrid.regressor's parameters of this robot), got "
+                          f"shape {pi.shape}")
+    fix = "give physical parameters (hybrid.identify_dynamics(..., consistent=True) finds them)"
+    links = []
+    for joint, p in zip(robot.joint_names, pi[:LINK_PARAMETERS * robot.n].reshape(robot.n, LINK_PARAMETERS)):
+        m, h = float(p[0]), p[1:4]
+        xx, xy, xz, yy, yz, zz = p[4:]
+        I_O = np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])
+        scale = max(abs(m), float(np.abs(h).max()), 1e-300)
+        if m < 0 or (m == 0 and np.abs(h).max() > 1e-12 * scale):
+            what = f"a mass of {m:.6g} kg" if m < 0 else f"a first moment {h.tolist()} kg m without mass"
+            raise HybridError(f"pi gives the link moved by '{joint}' {what}; {fix}")
+        c = h / m if m > 0 else np.zeros(3)
+        I_c = I_O - m * (c @ c * np.eye(3) - np.outer(c, c))  # parallel axes: from the frame's origin to c
+        problem = inertia_problem(I_c)
+        if problem:
+            raise HybridError(f"pi gives the link moved by '{joint}' an inertia about its centre of mass that "
+                              f"{problem} (its pseudo-inertia is not positive semi-definite); {fix}")
+        links.append(LinkInertia(m, tuple(map(float, c)), tuple(tuple(map(float, row)) for row in I_c)))
+    fields = {}
+    for k, name in enumerate(names[LINK_PARAMETERS * robot.n:], start=LINK_PARAMETERS * robot.n):
+        fields.setdefault(name.partition("[")[0], []).append(float(pi[k]))
+    for field, values in fields.items():
+        if field in NONNEGATIVE and min(values) < 0:
+            joint = robot.joint_names[next(i for i, v in enumerate(values) if v < 0)]
+            raise HybridError(f"pi gives joint '{joint}' a {field} of {min(values):.6g}; give a {field} >= 0 ({fix})")
+    return dataclasses.replace(robot, links=tuple(links), source=None, **{f: tuple(v) for f, v in fields.items()})

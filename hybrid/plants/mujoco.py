@@ -40,6 +40,7 @@ from hybrid.errors import HybridError
 from hybrid.models.chain_terms import robot_terms
 from hybrid.models.robot import Robot
 from hybrid.models.urdf import read_chain
+from hybrid.models.urdf_writer import rpy_of
 from hybrid.plants.interface import Plant
 
 #: the mass [kg] (and inertia [kg m^2]) given to a moving body without, which MuJoCo refuses: it changes
@@ -61,14 +62,6 @@ def _mujoco():
 # -------------------------------------------------------------------------- robots
 
 
-def _rpy(R: np.ndarray) -> tuple[float, float, float]:
-    """URDF roll, pitch, yaw of the rotation ``R = Rz(yaw) Ry(pitch) Rx(roll)``."""
-    pitch = math.atan2(-R[2, 0], math.hypot(R[0, 0], R[1, 0]))
-    if math.hypot(R[0, 0], R[1, 0]) < 1e-12:  # gimbal lock: roll taken as 0
-        return 0.0, pitch, math.atan2(-R[0, 1], R[1, 1])
-    return math.atan2(R[2, 1], R[2, 2]), pitch, math.atan2(R[1, 0], R[0, 0])
-
-
 def robot_urdf(robot: Robot) -> str:
     """A URDF of ``robot`` written from its chain and parameters (joints under their names, link
     ``i`` the body joint ``i`` moves; a massless link gets :data:`TINY`, which MuJoCo needs)."""
@@ -83,7 +76,7 @@ def robot_urdf(robot: Robot) -> str:
         inertia = " ".join(f'{k}="{float(I[a, b])!r}"' for k, (a, b) in zip(
             ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"), ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))))
         parts += [f'<joint name="{escape(joint.name)}" type="{kind}"><parent link="{parent}"/><child link="link{i}"/>'
-                  f'<origin xyz="{v(joint.translation)}" rpy="{v(_rpy(np.asarray(joint.rotation)))}"/>'
+                  f'<origin xyz="{v(joint.translation)}" rpy="{v(rpy_of(joint.rotation))}"/>'
                   f'<axis xyz="{v(joint.axis)}"/>{limit}</joint>',
                   f'<link name="link{i}"><inertial><origin xyz="{v(link.com)}"/>'
                   f'<mass value="{max(float(link.mass), TINY)!r}"/><inertia {inertia}/></inertial></link>']
