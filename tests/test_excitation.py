@@ -182,9 +182,11 @@ def test_the_searchs_gradients_are_those_of_its_objective_and_constraints():
 
 def test_its_data_identify_the_ur5s_base_parameters(ur5_trajectory):
     robot = hybrid.ur5()
-    q, qd, qdd = ur5_trajectory.sample(np.arange(200) * ur5_trajectory.period / 200)
+    t = np.arange(200) * ur5_trajectory.period / 200
+    q, qd, qdd = ur5_trajectory.sample(t)
     Y, _ = hybrid.regressor(robot, q, qd, qdd)
-    found = hybrid.identify_dynamics(robot, q, qd, qdd, Y @ hybrid.linear_parameters(robot))
+    found = hybrid.identify_dynamics(robot, t, q, Y @ hybrid.linear_parameters(robot), qd=qd, qdd=qdd, smooth=False,
+                                     consistent=False)
     assert np.allclose(found.estimate, found.nominal, rtol=1e-7, atol=1e-9)
     assert found.condition == pytest.approx(_condition(robot, q, qd, qdd), rel=1e-9)
 

@@ -287,8 +287,8 @@ def test_bad_logs_are_refused_saying_what_to_do(arms, log):
             hybrid.identify_dynamics(nominal, *args, **kw)
         assert len(str(e.value).splitlines()[0]) <= 240
 
-    refused(r"the log has 400 samples; filtering at 20 Hz drops 292 at each end and the fit needs 42 more: give at "
-            r"least 626 samples \(a longer log\), or a higher cutoff_hz", t[:400], q[:400], tau[:400])
+    refused(r"the log has 400 samples; filtering at 20 Hz drops 292 at each end and the fit needs 54 more: give at "
+            r"least 638 samples \(a longer log\), or a higher cutoff_hz", t[:400], q[:400], tau[:400])
     refused(r"t, q, tau have 5000, 5000, 4999 samples; give one row of each per time", t, q, tau[:-1])
     bad = q.copy()
     bad[412, 2] = np.nan

@@ -1,5 +1,5 @@
 """The dynamics identified from a log: 10^5 samples of the Panda (100 s at 1 kHz along a multi-sine), filtered,
-differentiated, fitted and made physically consistent."""
+differentiated, fitted and made physically consistent; and the Panda's regressor in C, per state."""
 
 from __future__ import annotations
 
@@ -7,7 +7,8 @@ import time
 
 import numpy as np
 
-from hybrid.bench.targets import IDENTIFY
+from hybrid.bench.harness import median_ns
+from hybrid.bench.targets import IDENTIFY, REGRESSOR
 from hybrid.models.dynamics_identification import identify_dynamics
 from hybrid.models.regressor import linear_parameters, regressor
 from hybrid.models.shipped import panda
@@ -38,6 +39,10 @@ def identification_benchmarks(quick: bool, add) -> None:
     solve, cvxpy's import, made beforehand)."""
     robot, t, q, tau = panda_log()
     identify_dynamics(robot, t[:5000], q[:5000], tau[:5000])  # cvxpy, SciPy's filters, the native regressor
+    states = 10_000
+    qd, qdd = np.gradient(q[:states], axis=0) * RATE, np.zeros((states, robot.n))
+    per_state = median_ns(lambda: regressor(robot, q[:states], qd, qdd), 1, 3 if quick else 9) / states
+    add(REGRESSOR, per_state, "ns", ratio=f"{states:,} states a call, {robot.n} x {13 * robot.n} each")
     times = []
     for _ in range(1 if quick else 3):
         t0 = time.perf_counter()

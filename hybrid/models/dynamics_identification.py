@@ -41,9 +41,10 @@ UNEXCITED_SHARE = 0.1
 #: a base parameter is poorly excited when its standard deviation is more than this share of its size
 #: (the largest of its estimate, its nominal value and :data:`SIZE_FLOOR` of its link's scale)
 POORLY_EXCITED = 0.1
-#: the least size of a link's base parameter, as a share of its link's scale (the nominal mass ``m``,
-#: ``m l``, ``m l^2`` for a mass, a first moment, an inertia): one whose value is nearly zero (a product of
-#: inertia of a symmetric link) is judged against that, not against zero
+#: the least size of a base parameter, as a share of its scale (a link's: the nominal mass ``m``, ``m l``,
+#: ``m l^2`` for a mass, a first moment, an inertia; a joint's friction: the value that makes the joint's RMS
+#: torque): one whose value is nearly zero (a product of inertia of a symmetric link, a friction the arm does
+#: not have) is judged against that, not against zero
 SIZE_FLOOR = 1e-2
 #: samples per native regressor call and QR block: memory bounded whatever the log's length
 CHUNK = 8192
@@ -82,10 +83,10 @@ class DynamicsIdentification:
         The condition number of the stacked base regressor.
     poorly_excited : tuple of str
         The base parameters whose standard deviation is more than 10 % of their size: the largest of the
-        estimate, the nominal value and, for a link's parameter, 1 % of the link's scale (its nominal mass
+        estimate, the nominal value and 1 % of its scale: for a link's parameter the link's (its nominal mass
         ``m``, ``m l``, ``m l^2`` for a mass, first moment, inertia; ``l`` the RMS distance of its mass from
-        the joint's origin). A friction parameter whose nominal value is zero and estimate nearly so is
-        listed when its standard deviation is above 10 % of the estimate.
+        the joint's origin), for a joint's friction parameter the value that alone would make the joint's
+        RMS torque in the log (a friction the arm does not have is not judged against zero).
     samples : int
         The samples the fit used (the log's, less the filter's edges, thinned).
     log_samples : int
@@ -183,12 +184,19 @@ def joint_factors(robot: Robot, base: BaseParameters, signals: LogSignals) -> np
     return np.stack([np.vstack([f, np.zeros((p + 1 - len(f), p + 1))]) for f in factors])
 
 
-def _scales(robot: Robot, base: BaseParameters) -> np.ndarray:
-    """Each base parameter's link scale (its independent parameter's: ``m``, ``m l`` or ``m l^2`` of the
-    nominal link), 0 for a joint's parameter."""
+def _scales(robot: Robot, base: BaseParameters, signals: LogSignals) -> np.ndarray:
+    """Each base parameter's scale: its independent parameter's link scale (``m``, ``m l`` or ``m l^2`` of the
+    nominal link), or for a joint's friction parameter the value that makes the joint's RMS torque in the
+    log (its viscosity's RMS speed, its Coulomb friction's RMS smooth sign, its offset's 1)."""
     per_link = link_scales(*link_sizes(linear_parameters(robot), robot.n)).ravel()
-    full = np.concatenate([per_link, np.zeros(len(base.names) - len(per_link))])
-    return full[list(base.independent)]
+    n = robot.n
+    torque = np.sqrt((signals.tau**2).mean(axis=0))
+    sign = np.tanh(signals.qd / np.asarray(robot.coulomb_speed))
+    column = {"damping": np.sqrt((signals.qd**2).mean(axis=0)), "coulomb": np.sqrt((sign**2).mean(axis=0)),
+              "offset": np.ones(n)}
+    joint = [torque[k % n] / max(column[name.partition("[")[0]][k % n], 1e-300)
+             for k, name in enumerate(base.names[len(per_link):])]
+    return np.concatenate([per_link, joint])[list(base.independent)]
 
 
 def _residual_rms(factors: np.ndarray, x: np.ndarray, samples: int) -> np.ndarray:
@@ -197,12 +205,14 @@ def _residual_rms(factors: np.ndarray, x: np.ndarray, samples: int) -> np.ndarra
 
 
 def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=None, smooth: bool = True,
-                      consistent: bool = True) -> DynamicsIdentification:
+                      weighted: bool = True, consistent: bool = True) -> DynamicsIdentification:
     """The dynamics of ``robot`` identified from a log of its motion and joint torques.
 
     The log is filtered, differentiated and thinned (:mod:`hybrid.models.log_signals`: a zero-phase
     Butterworth low-pass on ``q`` and ``tau`` alike, central differences, the filter's edges dropped), the
-    base parameters fitted by least squares, and (``consistent=True``) the full parameters found nearest
+    base parameters fitted by least squares (weighted: each joint's rows by the inverse of its torque
+    noise's standard deviation, which an unweighted fit's residual estimates, as Gautier and Khalil's
+    weighted least squares), and (``consistent=True``) the full parameters found nearest
     the data with every link a rigid body and frictions ``>= 0``
     (:mod:`hybrid.models.consistent_parameters`).
 
@@ -227,6 +237,11 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
     smooth : bool
         False: the log is taken as it is (no filter, no samples dropped but those the differences need):
         signals already filtered, or exact ones.
+    weighted : bool
+        Weight each joint's torques by the inverse of its noise's standard deviation (estimated from the
+        unweighted fit's residual); False: ordinary least squares. Weighting matters where the joints'
+        torques differ in size (a wrist's are a tenth of a shoulder's), and their noise with them: measured
+        on the study of the how-to, the wrists' inertial parameters come out several times as accurate.
     consistent : bool
         Find the physically consistent full parameters (a convex program with cvxpy); False: least
         squares alone (``.robot`` then refuses parameters that are not physical).
@@ -267,8 +282,10 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
     True
     """
     robot = as_robot(robot)
-    if not isinstance(consistent, (bool, np.bool_)):
-        raise HybridError(f"consistent = {consistent!r}; give True (physically consistent parameters) or False")
+    for flag, value, meaning in (("consistent", consistent, "physically consistent parameters"),
+                                 ("weighted", weighted, "each joint weighted by its noise")):
+        if not isinstance(value, (bool, np.bool_)):
+            raise HybridError(f"{flag} = {value!r}; give True ({meaning}) or False")
     base = base_parameters(robot)
     p, n = len(base.independent), robot.n
     names = tuple(base.names[i] for i in base.independent)
@@ -286,17 +303,34 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
     rss = _residual_rms(factors, estimate, M) ** 2 * M
     dof = M - p / n  # each joint's share of the M n - p degrees of freedom
     variance = rss / dof if dof > 0 else np.full(n, np.nan)
+    torque_rms = np.sqrt((signals.tau**2).mean(axis=0))
+    if weighted and dof > 0 and (np.sqrt(variance) > 1e-9 * torque_rms).all():  # else the log is exact: no noise
+        # each joint's rows over its noise's standard deviation
+        # relative to their geometric mean (the rows keep their scale: the consistent program's solver needs
+        # it), at most a million times apart
+        sigma = np.sqrt(variance)
+        sigma = np.maximum(sigma, 1e-6 * sigma.max())
+        weights = np.exp(np.log(sigma).mean()) / sigma
+        whole = np.linalg.qr((factors * weights[:, None, None]).reshape(-1, p + 1), mode="r")
+        R, z = whole[:p, :p], whole[:p, p]
+        estimate = np.linalg.solve(R, z)
+        rss = _residual_rms(factors, estimate, M) ** 2 * M
+        variance = rss / dof
+    else:
+        weights = np.ones(n)
+    # the estimate's covariance (W^T O W)^-1 W^T O Sigma O W (W^T O W)^-1: O the weights squared (R's rows),
+    # Sigma each joint's noise variance
     inverse = np.linalg.inv(R)
-    bread = inverse @ inverse.T  # (W^T W)^-1
-    meat = np.einsum("j,jai,jak->ik", variance, factors[:, :, :p], factors[:, :, :p])
+    bread = inverse @ inverse.T
+    meat = np.einsum("j,jai,jak->ik", variance * weights**4, factors[:, :, :p], factors[:, :, :p])
     std = np.sqrt(np.clip(np.diag(bread @ meat @ bread), 0.0, None))
     nominal = base.of(linear_parameters(robot))
-    size = np.maximum(np.maximum(np.abs(estimate), np.abs(nominal)), SIZE_FLOOR * _scales(robot, base))
+    size = np.maximum(np.maximum(np.abs(estimate), np.abs(nominal)), SIZE_FLOOR * _scales(robot, base, signals))
     poorly = tuple(name for name, sd, v in zip(names, std, size) if sd > POORLY_EXCITED * v)
     if consistent:
         parameters = consistent_parameters(
-            robot, base, R, estimate, noise_variance=float(rss.sum()) / max(M * n - p, 1), rows=M * n,
-            torque_rms=np.sqrt((signals.tau**2).mean(axis=0)), speed_rms=np.sqrt((signals.qd**2).mean(axis=0)))
+            robot, base, R, estimate, noise_variance=float((rss * weights**2).sum()) / max(M * n - p, 1), rows=M * n,
+            torque_rms=torque_rms, speed_rms=np.sqrt((signals.qd**2).mean(axis=0)))
         fitted = base.of(parameters)
     else:
         parameters = linear_parameters(robot)

@@ -24,11 +24,8 @@ from hybrid.models.urdf import JointLimits, LinkInertia, read_chain
 from hybrid.native import units
 from hybrid.native.binding import Unit
 from hybrid.spec import chain as rb
+from hybrid.spec.chain import COULOMB_SPEED
 from hybrid.validate import _finite, check_model_error, finite_array, inertia_problem, shown
-
-#: the default speed [rad/s or m/s] of the Coulomb friction's smooth sign ``tanh(q' / v_s)``: 0.99 of the
-#: friction acts from ``2.6 v_s``, and the joint's linear slope about rest is ``F_c / v_s``
-COULOMB_SPEED = 0.05
 
 
 def _gravity(g) -> tuple[float, float, float]:
@@ -212,7 +209,7 @@ class Robot:
         parsed = read_chain(path, tip, locked)
         source = (str(Path(path).resolve()), tip, tuple(sorted((locked or {}).items())))
         return cls(parsed.name, parsed.chain, parsed.links, parsed.damping, gravity, parsed.limits, source=source,
-                   coulomb=parsed.coulomb)
+                   coulomb=parsed.coulomb, offset=parsed.offset, coulomb_speed=parsed.coulomb_speed)
 
     @classmethod
     def planar(cls, arm: Arm) -> Robot:

@@ -19,7 +19,7 @@ import numpy as np
 
 from hybrid.errors import LargeModelWarning, URDFError
 from hybrid.files import read_user_text
-from hybrid.spec.chain import Chain, Joint, rotation_rpy
+from hybrid.spec.chain import COULOMB_SPEED, Chain, Joint, rotation_rpy
 from hybrid.validate import inertia_problem, shown
 
 MOVING = ("revolute", "continuous", "prismatic")
@@ -101,6 +101,8 @@ class ParsedChain:
     damping: tuple[float, ...]
     limits: JointLimits
     coulomb: tuple[float, ...] = ()
+    offset: tuple[float, ...] = ()
+    coulomb_speed: tuple[float, ...] = ()
 
 
 def _floats(node: Node, attr: str, n: int, default, where: str) -> np.ndarray:
@@ -309,7 +311,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
                 stack.append((ends[jn][1], T_link @ _joint_transform(tree, jn, locked.get(jn, 0.0)), None))
 
     # walk the chain, merging fixed and locked joints into the next origin
-    chain_joints, bodies, damping, coulomb, lims = [], [], [], [], []
+    chain_joints, bodies, damping, coulomb, offset, speeds, lims = [], [], [], [], [], [], []
     T_acc = np.eye(4)
     body = _Body()  # the base body: its mass does not move, but keep the structure uniform
     for idx, jn in enumerate(path_joints):
@@ -346,6 +348,12 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
         if c < 0:
             raise URDFError(f"{at}: friction {c} is negative; give a Coulomb friction >= 0")
         coulomb.append(c)
+        # the library's own attributes (hybrid.models.urdf_writer writes them; other readers pass over them)
+        offset.append(_scalar(dyn, "offset", 0.0, where))
+        v = _scalar(dyn, "coulomb_speed", COULOMB_SPEED, where)
+        if v <= 0:
+            raise URDFError(f"{at}: coulomb_speed {v} is not positive; give the smooth sign's speed > 0")
+        speeds.append(v)
         lims.append(_limits(j, kind, where))
         T_acc = np.eye(4)
         merge_subtree(body, ends[jn][1], T_acc, next_on_path)
@@ -365,7 +373,7 @@ def read_chain(path, tip: str, locked: dict | None = None) -> ParsedChain:
                   tuple(map(float, T_acc[:3, 3])))
     lo, hi, vel, eff = (np.array(c, dtype=float) for c in zip(*lims))
     return ParsedChain(root.attrib.get("name", Path(path).stem), chain, tuple(b.inertia() for b in bodies),
-                       tuple(damping), JointLimits(lo, hi, vel, eff), tuple(coulomb))
+                       tuple(damping), JointLimits(lo, hi, vel, eff), tuple(coulomb), tuple(offset), tuple(speeds))
 
 
 def _limits(j: Node, kind: str, where: str) -> tuple[float, float, float, float]:

@@ -1,9 +1,12 @@
 """A robot written as a URDF file that :meth:`hybrid.Robot.from_urdf` reads back as the same robot.
 
 Each moving joint under its name, the link it moves named after it (``<joint>_link``) with the robot's
-mass, centre of mass and inertia about it (joint-frame axes), the joint's viscosity and limits, and the
+mass, centre of mass and inertia about it (joint-frame axes), the joint's friction and limits, and the
 tip frame as a fixed joint to a massless link ``tip``: ``Robot.from_urdf(path, tip="tip")`` gives the
-robot again, its chain's rotations to rounding (they go through roll, pitch and yaw).
+robot again, its chain's rotations to rounding (they go through roll, pitch and yaw). The friction is
+``<dynamics damping friction>`` (viscosity and Coulomb friction, as any URDF reader takes them) and two
+attributes of the library's own, ``offset`` and ``coulomb_speed``, which other readers (Pinocchio's,
+MuJoCo's) pass over.
 """
 
 from __future__ import annotations
@@ -70,7 +73,8 @@ def robot_urdf_text(robot: Robot) -> str:
                   f'    <parent link="{escape(parent)}"/><child link="{escape(child)}"/>',
                   f"    {_origin(joint.translation, joint.rotation)}",
                   f'    <axis xyz="{_numbers(joint.axis)}"/>',
-                  f'    <dynamics damping="{float(robot.damping[i])!r}"/>',
+                  f'    <dynamics damping="{float(robot.damping[i])!r}" friction="{float(robot.coulomb[i])!r}" '
+                  f'offset="{float(robot.offset[i])!r}" coulomb_speed="{float(robot.coulomb_speed[i])!r}"/>',
                   *([f"    <limit {' '.join(attributes)}/>"] if attributes or kind != "continuous" else []),
                   "  </joint>",
                   f'  <link name="{escape(child)}">',

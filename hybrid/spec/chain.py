@@ -22,6 +22,9 @@ INERTIAL_UNITS = ("kg", "m", "m", "m") + ("kg m^2",) * 6
 FRICTION = ("damping", "coulomb", "offset", "coulomb_speed")
 #: the friction parameters the dynamics are linear in (the regressor's columns after the links')
 LINEAR_FRICTION = FRICTION[:3]
+#: the default speed [rad/s or m/s] of the Coulomb friction's smooth sign ``tanh(q' / v_s)``: 0.99 of the
+#: friction acts from ``2.6 v_s``, and the joint's linear slope about rest is ``F_c / v_s``
+COULOMB_SPEED = 0.05
 
 
 @dataclass(frozen=True)
