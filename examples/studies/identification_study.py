@@ -22,13 +22,15 @@ joint's effort limit on the torques and 1e-4 rad on the positions.
    (2 s), sampled at 1 kHz: the controller told the real arm (exact), the identified model, the URDF's;
    the normal force's and the speed's RMS errors.
 
-Writes ``study.json`` (settings and numbers), ``table.md`` and ``identification.png`` (the closed loop's
-normal force per model; the validation's torque error per joint) into ``--out``.
+Writes ``runs.csv`` (one row per arm and model told), ``study.json`` (the same and the validation's numbers),
+``table.md`` and ``identification.png`` (the closed loop's normal force per model; the validation's torque
+error per joint) into ``--out``.
 """
 
 from __future__ import annotations
 
 import argparse
+import csv
 import dataclasses
 import json
 import time
@@ -194,6 +196,12 @@ def main(argv=None) -> None:
     results = [study_arm(name, args.quick) for name in ARMS]
     figure(results, args.out / "identification.png")
     (args.out / "table.md").write_text(table(results))
+    with open(args.out / "runs.csv", "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["arm", "model_told", "rms_force_error_N", "rms_speed_error_m_per_s"])
+        for r in results:
+            for model, run in r["closed_loop"].items():
+                writer.writerow([r["robot"], model, run["rms_force_error_N"], run["rms_speed_error_m_per_s"]])
     for r in results:
         del r["pseudo_inertias"]
         for run in r["closed_loop"].values():
