@@ -12,12 +12,12 @@ a force vector ``(n_O, f)``. Joint ``i``'s motion subspace is then ``S_i = (z_i,
 - :func:`frame_classical_acceleration`: ``J' q'``, the tip origin's classical acceleration at ``q'' = 0``;
 - :func:`crba`: the joint-space inertia ``B(q)`` by the composite-rigid-body algorithm;
 - :func:`rnea`: inverse dynamics ``tau = B q'' + n(q, q')`` by recursive Newton-Euler,
-  gravity and joint viscosity included;
+  gravity and joint friction included;
 
 :mod:`.body_frame` has the same algorithms in body coordinates (fewer operations: the 3-D plant's).
 
 The kinematic structure (joint origins, axes, types) is numbers compiled into the
-expressions; the inertial parameters, joint viscosities and gravity are symbols, so one
+expressions; the inertial parameters, joint friction and gravity are symbols, so one
 build serves every model error and parameter sweep.
 """
 

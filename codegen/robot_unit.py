@@ -1,7 +1,7 @@
 """Kernels of one serial arm (from its URDF), emitted by the CasADi backend.
 
 The kinematic structure (joint origins, axes, types, the tip frame) is compiled in; the
-``robot`` array (inertial parameters, joint viscosities, gravity) is a run-time input, so a
+``robot`` array (inertial parameters, joint friction, gravity) is a run-time input, so a
 model error or a parameter sweep never recompiles. Every solve is a factorisation.
 """
 

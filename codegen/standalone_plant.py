@@ -51,7 +51,7 @@ _SCALAR_DOC = {"m_s": "the sensor tip's mass", "K_s": "the sensor's stiffness", 
                "k_e": "the contact's stiffness", "d_e": "the contact's damping", "gamma": "the friction coefficient",
                "v_eps": "the speed of the friction's tanh smoothing"}
 #: what each parameter array holds, for the header
-_DOC = {"robot": "the true arm's inertial parameters, joint viscosities and gravity",
+_DOC = {"robot": "the true arm's inertial parameters, joint friction and gravity",
         "arm": "the planar arm's lengths, masses, inertias, viscosities",
         "plant": "the sensor and the contact", "surface": "the surface's parameters",
         "e": "the task frame's reference direction (the output record's task axes)"}

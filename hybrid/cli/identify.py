@@ -14,7 +14,7 @@ from hybrid import files
 from hybrid.cli import common
 from hybrid.errors import HybridError
 from hybrid.experiments.serialisation import robot_to_dict
-from hybrid.models.dynamics_identification import DynamicsIdentification, identify_dynamics
+from hybrid.models.dynamics_identification import POORLY_EXCITED, DynamicsIdentification, identify_dynamics
 from hybrid.models.robot import Robot
 from hybrid.models.urdf_writer import robot_urdf_text
 from hybrid.spec.chain import linear_parameter_units
@@ -137,7 +137,7 @@ def report(found: DynamicsIdentification, log: str) -> str:
     for joint, kind, a, b in zip(robot.joint_names, (j.kind for j in robot.chain.joints), found.residual_rms, rms):
         lines.append(f"  {joint:<{joint_width}}  {a:.4g}  {b:.4g} {effort[kind]}")
     poorly = ", ".join(found.poorly_excited) if found.poorly_excited else "none"
-    lines.append(f"poorly excited (standard deviation over 10 % of the size): {poorly}")
+    lines.append(f"poorly excited (standard deviation over {100 * POORLY_EXCITED:g} % of the size): {poorly}")
     return "\n".join(lines)
 
 

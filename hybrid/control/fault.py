@@ -7,7 +7,7 @@ samples (refused: a bad input or parameter, the law failing; or served off time:
 enters its safe state and stays there until ``reset``. The safe state (``codegen.safe_stop``, the same
 compiled kernel in C and Python) stops the arm and holds it where it was at the entry, by its model's
 inverse dynamics for a critically damped hold of time constant ``stop_time`` (gravity, the velocity
-terms and the joints' viscosity compensated), and releases the difference between the torque the arm
+terms and the joints' friction compensated), and releases the difference between the torque the arm
 had and the hold's linearly over ``unload_time``, within the torque limits: a controlled stop with the
 drives on (IEC 60204-1's stop category 2, as an industrial arm's protective stop), neither a fall
 (power off) nor a rebound of the tool onto the part; the pressing the law added decays at a bounded

@@ -81,7 +81,7 @@ class Posture:
     per joint, are a joint acceleration's gains: weighted by ``B(q)`` one pair suits a light wrist
     and a heavy shoulder joint alike (plain torque gains [N m/rad] would not); ``sqrt(K_p)`` is the
     null-space motion's natural frequency [rad/s] and ``K_d / (2 sqrt(K_p))`` its damping ratio (the
-    defaults: 5 rad/s, critically damped). ``n`` (gravity, velocity terms, viscosity) is cancelled
+    defaults: 5 rad/s, critically damped). ``n`` (gravity, velocity terms, joint friction) is cancelled
     in the null space too, where the law alone leaves it: without a posture a redundant arm's null
     space falls under gravity, and with gains 0 it coasts.
 

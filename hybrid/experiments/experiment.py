@@ -74,7 +74,7 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     controller_robot : Robot, optional
         The robot the controller is told, as it is (e.g. one identified from the arm's data): of the
         kinematic structure of ``robot`` (the same joints, origins, axes and tip frame; refused
-        otherwise), its inertial parameters, viscosities and gravity its own. With it ``model_error``
+        otherwise), its inertial parameters, joint friction and gravity its own. With it ``model_error``
         and ``viscous_compensation`` do not apply: a value other than their defaults is refused.
     surface : Surface
         What the sensor tip touches (2-D for the planar arm, 3-D otherwise).

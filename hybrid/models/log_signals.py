@@ -202,7 +202,8 @@ def log_signals(robot_joints, t, q, tau, *, qd=None, qdd=None, cutoff_hz=None, s
     smooth : bool
         False: no filter and no thinning (a log already filtered, or exact).
     least : int
-        The samples the fit needs at the least (its parameters' count over the joints').
+        The samples the fit must keep at the least, after the edges and the thinning (the fit passes its
+        base parameters' count: a margin over the ``p / n`` samples its ``p`` unknowns need).
 
     Returns
     -------

@@ -142,8 +142,8 @@ def with_linear_parameters(robot: Robot, pi) -> Robot:
     HybridError
         ``pi`` of the wrong length or not finite, or not physical: a negative mass, a first moment
         without mass, an inertia about the centre of mass no rigid body has (its pseudo-inertia not
-        positive semi-definite), a negative viscosity; or the paper's planar arm (its parameters are its
-        ``Arm``'s).
+        positive semi-definite), a negative viscosity or Coulomb friction; or the paper's planar arm (its
+        parameters are its ``Arm``'s).
 
     Examples
     --------

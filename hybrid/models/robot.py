@@ -186,7 +186,7 @@ class Robot:
         Returns
         -------
         Robot
-            The chain, its links' inertial parameters, viscosities and limits as the file gives them.
+            The chain, its links' inertial parameters, joint friction and limits as the file gives them.
 
         Raises
         ------

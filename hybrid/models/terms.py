@@ -41,7 +41,7 @@ def arm_terms(arm: Arm | Robot, q, qdot, *, backend: str = "sympy") -> dict[str,
         [kg m^2], ``n`` [N m]. For a :class:`Robot` with ``n`` joints: ``r`` (3) [m] and ``rotation``
         (3x3) of the tip frame in base axes, the frame Jacobian ``J`` (6 x n, linear rows first, base
         axes), ``Jdot_qdot`` (6, the classical acceleration at ``q'' = 0``), ``B`` (n x n), ``n`` (n):
-        Coriolis/centrifugal, gravity, viscosity.
+        Coriolis/centrifugal, gravity, joint friction.
 
     Raises
     ------

@@ -124,8 +124,9 @@ def _lock(mj, spec, keep: tuple[str, ...], locked: dict) -> None:
 
 def arm_spec(robot: Robot):
     """MuJoCo's model of ``robot`` as a ``mujoco.MjSpec``, and the URDF file it read (None: one written
-    by :func:`robot_urdf`): MuJoCo's inertial parameters, the robot's joints, viscosities and gravity,
-    no geoms, meshes, limits or friction loss (module docstring)."""
+    by :func:`robot_urdf`): MuJoCo's inertial parameters, the robot's joints, viscosities and gravity (its
+    Coulomb friction and offsets are :class:`MujocoPlant`'s passive forces), no geoms, meshes, limits or
+    friction loss (module docstring)."""
     mj = _mujoco()
     found = _file_of(robot)
     try:
