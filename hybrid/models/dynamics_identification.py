@@ -80,7 +80,8 @@ class DynamicsIdentification:
     consistent_residual_rms : numpy.ndarray or None
         The same of the consistent estimate.
     condition : float
-        The condition number of the stacked base regressor.
+        The condition number of the stacked base regressor, unweighted (the motion's, as
+        :func:`hybrid.excitation_trajectory` reports it, whatever the weights).
     poorly_excited : tuple of str
         The base parameters whose standard deviation is more than 10 % of their size: the largest of the
         estimate, the nominal value and 1 % of its scale: for a link's parameter the link's (its nominal mass
