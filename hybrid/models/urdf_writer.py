@@ -40,13 +40,16 @@ def _origin(translation, rotation) -> str:
     return f'<origin xyz="{_numbers(translation)}" rpy="{_numbers(rpy_of(rotation))}"/>'
 
 
-def robot_urdf_text(robot: Robot) -> str:
+def robot_urdf_text(robot: Robot, *, least_mass: float = 0.0) -> str:
     """The URDF of ``robot`` (see the module's description).
 
     Parameters
     ----------
     robot : Robot
         The arm (a serial chain: the planar arm's closed form too, as its chain).
+    least_mass : float
+        A link's mass written at least this [kg], and a link without inertia given this much about each
+        axis [kg m^2] (MuJoCo refuses a moving body without them; the default 0 writes the robot as it is).
 
     Returns
     -------
@@ -66,7 +69,7 @@ def robot_urdf_text(robot: Robot) -> str:
         kind = joint.kind if bounded or joint.kind == "prismatic" else "continuous"
         attributes = [f'{k}="{v!r}"' for k, v in (("lower", lower), ("upper", upper)) if bounded]
         attributes += [f'{k}="{v!r}"' for k, v in (("effort", effort), ("velocity", velocity)) if math.isfinite(v)]
-        I = np.asarray(link.inertia, float)  # noqa: E741
+        I = np.asarray(link.inertia, float) + least_mass * np.eye(3) * (not np.any(link.inertia))  # noqa: E741
         inertia = " ".join(f'{k}="{float(I[a, b]) + 0.0!r}"' for k, (a, b) in zip(
             ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"), ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))))
         parts += [f'  <joint name="{escape(joint.name)}" type="{kind}">',
@@ -78,7 +81,8 @@ def robot_urdf_text(robot: Robot) -> str:
                   *([f"    <limit {' '.join(attributes)}/>"] if attributes or kind != "continuous" else []),
                   "  </joint>",
                   f'  <link name="{escape(child)}">',
-                  f'    <inertial><origin xyz="{_numbers(link.com)}"/><mass value="{float(link.mass)!r}"/>'
+                  f'    <inertial><origin xyz="{_numbers(link.com)}"/>'
+                  f'<mass value="{max(float(link.mass), least_mass)!r}"/>'
                   f"<inertia {inertia}/></inertial>",
                   "  </link>"]
         parent = child

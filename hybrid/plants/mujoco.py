@@ -32,7 +32,6 @@ from __future__ import annotations
 
 import math
 import sys
-from html import escape
 
 import numpy as np
 
@@ -40,7 +39,7 @@ from hybrid.errors import HybridError
 from hybrid.models.chain_terms import robot_terms
 from hybrid.models.robot import Robot
 from hybrid.models.urdf import read_chain
-from hybrid.models.urdf_writer import rpy_of
+from hybrid.models.urdf_writer import robot_urdf_text
 from hybrid.plants.interface import Plant
 
 #: the mass [kg] (and inertia [kg m^2]) given to a moving body without, which MuJoCo refuses: it changes
@@ -63,25 +62,9 @@ def _mujoco():
 
 
 def robot_urdf(robot: Robot) -> str:
-    """A URDF of ``robot`` written from its chain and parameters (joints under their names, link
-    ``i`` the body joint ``i`` moves; a massless link gets :data:`TINY`, which MuJoCo needs)."""
-    def v(values):
-        return " ".join(repr(float(c)) for c in values)
-
-    parts, parent = [f'<robot name="{escape(robot.name)}">', '<link name="base"/>'], "base"
-    for i, (joint, link) in enumerate(zip(robot.chain.joints, robot.links)):
-        kind = "continuous" if joint.kind == "revolute" else "prismatic"
-        limit = '<limit lower="-1e6" upper="1e6" effort="0" velocity="0"/>' if kind == "prismatic" else ""
-        I = np.asarray(link.inertia, float) + TINY * np.eye(3) * (not np.any(link.inertia))  # noqa: E741
-        inertia = " ".join(f'{k}="{float(I[a, b])!r}"' for k, (a, b) in zip(
-            ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"), ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))))
-        parts += [f'<joint name="{escape(joint.name)}" type="{kind}"><parent link="{parent}"/><child link="link{i}"/>'
-                  f'<origin xyz="{v(joint.translation)}" rpy="{v(rpy_of(joint.rotation))}"/>'
-                  f'<axis xyz="{v(joint.axis)}"/>{limit}</joint>',
-                  f'<link name="link{i}"><inertial><origin xyz="{v(link.com)}"/>'
-                  f'<mass value="{max(float(link.mass), TINY)!r}"/><inertia {inertia}/></inertial></link>']
-        parent = f"link{i}"
-    return "\n".join([*parts, "</robot>"])
+    """A URDF of ``robot`` written from its chain and parameters (:func:`hybrid.models.urdf_writer.robot_urdf_text`;
+    a massless link gets :data:`TINY`, which MuJoCo needs)."""
+    return robot_urdf_text(robot, least_mass=TINY)
 
 
 def _file_of(robot: Robot) -> tuple[str, dict] | None:
