@@ -206,12 +206,33 @@ def plot_result(res, title: str | None = None, scheme: str | None = None):
                            path=is_spatial(res))
 
 
+#: the pair a comparison draws the difference of, when both ran: the task law minus Khatib's scheme, whose curves
+#: nearly coincide on the signals' own scale
+DIFFERENCE = ("task", "khatib")
+
+
+def conditions(exp) -> str:
+    """The conditions of a run in a few words, for a figure's title: the surface, the contact's friction, the
+    controller's model, the sample time."""
+    model = ("the controller told its own robot" if exp.controller_robot is not None
+             else f"model {100 * exp.model_error:+.0f} %" if exp.model_error else "exact model")
+    return (f"{exp.surface.kind}, friction {exp.contact.friction:g}, {model}, "
+            f"T = {1e3 * exp.sample_time:g} ms")
+
+
 def plot_comparison(results: dict, title: str | None = None, path: bool = False):
     """Runs on shared axes, ``{scheme name: SimulationResult}``: speed [m/s] and force [N] against the
-    (first run's) references over time [s]; with ``path`` (3-D runs) also the deviation across the
+    (first run's) references over time [s]; where the task law and Khatib's scheme both ran, their
+    difference (task law minus Khatib) under each; with ``path`` (3-D runs) also the deviation across the
     desired path [mm] and the penetration [mm]. Returns the Figure."""
-    panels = 4 if path else 2
+    pair = all(name in results for name in DIFFERENCE) and len(results[DIFFERENCE[0]].t) == len(
+        results[DIFFERENCE[1]].t)
+    panels = (4 if path else 2) + (2 if pair else 0)
     fig, axes = plt.subplots(panels, 1, figsize=(7.0, 2.3 * panels + 0.6), sharex=True, layout="constrained")
+    if pair:  # the difference under its signal: speed, its difference, force, its difference, then the rest
+        signal_axes = [axes[0], axes[2], *axes[4:]]
+        _differences(axes[1], axes[3], *(results[name] for name in DIFFERENCE))
+        axes = signal_axes
     first = next(iter(results.values()))
     rows = _rows(first)
     axes[0].plot(first.t[rows], first.speed_reference[rows], **REFERENCE)
@@ -230,8 +251,17 @@ def plot_comparison(results: dict, title: str | None = None, path: bool = False)
     if path:
         axes[2].set_ylabel("deviation across\nthe desired path [mm]", fontsize=FONT)
         axes[3].set_ylabel("penetration [mm]", fontsize=FONT)
-    axes[-1].set_xlabel("time [s]", fontsize=FONT)
-    return _finished(fig, axes, title)
+    fig.axes[-1].set_xlabel("time [s]", fontsize=FONT)
+    return _finished(fig, fig.axes, title)
+
+
+def _differences(ax_speed, ax_force, a, b) -> None:
+    """The task law's speed and force minus Khatib's, at the same times (their runs share the time grid)."""
+    rows = _rows(a)
+    for ax, what, unit in ((ax_speed, "velocity_tangential", "m/s"), (ax_force, "force_normal", "N")):
+        ax.plot(a.t[rows], (getattr(a, what) - getattr(b, what))[rows], color="0.25", lw=1.0)
+        ax.axhline(0.0, color="0.6", lw=0.6)
+        ax.set_ylabel(f"{SHORT[DIFFERENCE[0]]} - {SHORT[DIFFERENCE[1]]}\n[{unit}]", fontsize=FONT)
 
 
 def plot_path(results: dict, title: str | None = None):
@@ -566,18 +596,21 @@ def paper_figures(results: dict, out: Path, formats=("png",)) -> list[Path]:
         ax.set_ylabel("tangential speed [m/s]" if which == "speed" else "normal force [N]", fontsize=FONT)
         ax.set_xlabel("time [s]", fontsize=FONT)
         ax.set_title(f"Figure {num}: {'tangential velocity' if which == 'speed' else 'normal force'}, "
-                     f"{TITLES[scheme]}", fontsize=FONT)
+                     f"{TITLES[scheme]}\n{conditions(res.experiment)}", fontsize=FONT)
         _style(ax)
         ax.legend(fontsize=FONT - 1, loc="lower right")
         written += save(fig, out / f"figure{num}_{scheme}_{which}", formats)
-    fig = plot_comparison(results, "the schemes compared (circle, friction, 10 % model error)")
+    first = next(iter(results.values()))
+    fig = plot_comparison(results, f"the schemes compared ({conditions(first.experiment)})")
     return written + save(fig, out / "overlay_speed_force", formats)
 
 
 def trace_figures(results: dict, out: Path, formats=("png",)) -> list[Path]:
     """The 3-D experiment: speed and force of every scheme, and the paths (in space, and as deviation
     from the desired path, with the penetration); returns the files."""
-    fig = plot_comparison(results, "3-D experiment (UR5 on a sphere): speed along t1 and normal force")
+    first = next(iter(results.values()))
+    fig = plot_comparison(results, f"3-D experiment (UR5 on a sphere; {conditions(first.experiment)}): speed along t1 "
+                          "and normal force")
     written = save(fig, out / "trace_speed_force", formats)
     fig = plot_path(results, "3-D experiment: the sensor tip's path on the sphere")
     return written + save(fig, out / "trace_path_3d", formats)

@@ -269,6 +269,23 @@ def test_the_comparison_draws_the_task_law_on_top_with_distinct_styles(runs):
     assert len(styles) == 3  # told apart without colour
 
 
+def test_the_comparison_draws_the_task_law_minus_khatib_under_each_signal(runs):
+    """Their curves nearly coincide on the signals' scale: the difference panels hold exactly the task law's
+    speed and force minus Khatib's; a comparison without both has none; the paper's figures say their
+    conditions."""
+    paper, _ = runs
+    fig = plots.plot_comparison(paper)
+    labels = [ax.get_ylabel() for ax in fig.axes]
+    assert labels == ["tangential speed [m/s]", "task law - Khatib\n[m/s]", "normal force [N]",
+                      "task law - Khatib\n[N]"]
+    for ax, what in ((fig.axes[1], "velocity_tangential"), (fig.axes[3], "force_normal")):
+        want = (getattr(paper["task"], what) - getattr(paper["khatib"], what))[plots._rows(paper["task"])]
+        assert np.abs(ax.get_lines()[0].get_ydata() - want).max() == 0 and np.abs(want).max() > 0
+    assert len(plots.plot_comparison({"task": paper["task"]}).axes) == 2
+    exp = paper["task"].experiment
+    assert plots.conditions(exp).startswith(f"{exp.surface.kind}, friction {exp.contact.friction:g}, model +10 %")
+
+
 def test_the_path_plot_has_equal_scales_and_the_deviation(runs):
     _, spatial = runs
     fig = plots.plot_path(spatial)
