@@ -73,8 +73,10 @@ LIMIT_NAMES = ("lower", "upper", "velocity", "acceleration")
 
 @dataclass(frozen=True, eq=False)
 class ExcitationTrajectory:
-    """A periodic excitation trajectory: per joint ``q_i(t) = q0_i + sum_k a_ik / (w k) sin(w k t) -
-    b_ik / (w k) cos(w k t)``, ``k = 1 .. K``, ``w = 2 pi / period`` (:func:`excitation_trajectory` makes one).
+    """A periodic excitation trajectory, a Fourier series per joint (:func:`excitation_trajectory` makes one).
+
+    Joint ``i`` follows ``q_i(t) = q0_i + sum_k a_ik / (w k) sin(w k t) - b_ik / (w k) cos(w k t)`` over the
+    harmonics ``k`` from 1 to ``K``, ``w = 2 pi / period``.
 
     Parameters
     ----------
