@@ -327,6 +327,20 @@ def test_a_log_that_does_not_excite_every_base_parameter_is_refused_naming_them(
     assert "damping[wrist_3_joint]" in names and all(n.endswith("[wrist_3_joint]") for n in names)
 
 
+def test_many_unexcited_parameters_are_named_in_a_short_first_line(arms, log):
+    """The arm at rest excites none but gravity's: the first line names a few and counts the rest, the next
+    names them all."""
+    nominal, _ = arms
+    t, q, _ = log
+    still = np.broadcast_to(q[0], q.shape)
+    with pytest.raises(hybrid.HybridError, match=r"do not excite the base parameters .* and \d+ more; excite") as e:
+        hybrid.identify_dynamics(nominal, t, still, torques(nominal, still, 0 * still, 0 * still))
+    first, *rest = str(e.value).splitlines()
+    assert len(first) <= 240 and len(rest) == 1
+    named = rest[0].split(": ", 1)[1].split(", ")
+    assert rest[0].strip().startswith(f"all {len(named)}:") and "damping[wrist_3_joint]" in named
+
+
 def test_the_stencil_is_exact_to_degree_eight():
     """The central differences' weights differentiate polynomials of degree 8 exactly (rounding aside),
     and a sinusoid to (w h)^8 / 630 (first derivative)."""

@@ -31,6 +31,7 @@ from hybrid.models.consistent_parameters import consistent_parameters, link_scal
 from hybrid.models.log_signals import LogSignals, log_signals
 from hybrid.models.regressor import linear_parameters, regressor, with_linear_parameters
 from hybrid.models.robot import Robot, as_robot
+from hybrid.validate import listed, listed_in_full
 
 #: a singular value of the stacked base regressor below this fraction of the largest is a direction the
 #: data did not excite (rounding leaves about 1e-16; a parameter excited at all is far above 1e-8)
@@ -297,8 +298,9 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
     s = np.linalg.svd(R, compute_uv=False)
     if s[-1] < UNEXCITED * s[0]:
         missing = unexcited(R, names)
-        raise HybridError(f"the samples do not excite the base parameters {', '.join(missing)}; excite the arm more "
-                          "(a richer trajectory: every joint over its range, varied speeds and accelerations)")
+        raise HybridError(f"the samples do not excite the base parameters {listed(missing)}; excite the arm more (a "
+                          "richer trajectory: every joint over its range, varied speeds and accelerations)"
+                          + listed_in_full(missing))
     estimate = np.linalg.solve(R, z)
     rss = _residual_rms(factors, estimate, M) ** 2 * M
     dof = M - p / n  # each joint's share of the M n - p degrees of freedom
