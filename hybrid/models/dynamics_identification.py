@@ -223,7 +223,7 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
         The arm: its structure and gravity give the regressor, its parameters the nominal model the
         estimate is reported beside (and the consistent estimate is regularised toward).
     t : array_like
-        ``(N,)``: the samples' times [s], uniform (within 2 % of a step).
+        ``(N,)``: the samples' times [s], uniform (within 2 % of a step), at least 10 Hz.
     q : array_like
         ``(N, n)``: the joint positions [rad or m] of a trajectory that moves every joint over its range,
         with varied speeds and accelerations.
@@ -256,9 +256,11 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
     Raises
     ------
     HybridError
-        Arrays of the wrong shape or lengths, a sample not finite (named by its row and joint), times not
-        strictly increasing or not uniform, a cutoff not below the Nyquist frequency, a log too short for
-        the filter and the parameters, or a trajectory that does not excite every base parameter (named).
+        Arrays of the wrong shape or lengths, or not of real numbers (complex, boolean, text), a table (a
+        DataFrame) of the joints in another order than the robot's, a sample not finite (named by its row and
+        joint), times not strictly increasing or not uniform or sampled below 10 Hz (times in milliseconds),
+        a cutoff not below the Nyquist frequency, a log too short for the filter and the parameters, or a
+        trajectory that does not excite every base parameter (named).
 
     Examples
     --------
