@@ -363,6 +363,36 @@ def test_many_unexcited_parameters_are_named_in_a_short_first_line(arms, log):
     assert rest[0].strip().startswith(f"all {len(named)}:") and "damping[wrist_3_joint]" in named
 
 
+def test_the_planar_arms_closed_form_says_how_to_identify_a_robot():
+    """The closed form's parameters are its Arm's: the fit is reported, ``.robot`` says to identify the serial
+    chain, whose ``.robot`` is the arm again."""
+    import dataclasses
+
+    planar = hybrid.Robot.planar(hybrid.paper_arm())
+    t, q, qd, qdd = multisine(planar, 200.0, 10.0, seed=2)
+    tau = torques(planar, q, qd, qdd)
+    found = hybrid.identify_dynamics(planar, t, q, tau, qd=qd, qdd=qdd, smooth=False)
+    with pytest.raises(hybrid.HybridError, match=r"closed form takes no identified parameters.*closed_form=None\)$"):
+        _ = found.robot
+    serial = dataclasses.replace(planar, closed_form=None)
+    again = hybrid.identify_dynamics(serial, t, q, tau, qd=qd, qdd=qdd, smooth=False).robot
+    np.testing.assert_allclose(torques(again, q, qd, qdd), tau, atol=1e-6 * np.abs(tau).max())
+
+
+def test_a_log_that_does_not_excite_every_base_parameter_is_refused_naming_them(arms, log):
+    """One joint held still: the base parameters of its motion are not excited, and named."""
+    nominal, true = arms
+    t, q, _ = log
+    still = q.copy()
+    still[:, 5] = 0.3
+    qd, qdd = (log_signals.derivative(still, t[1] - t[0], k) for k in (1, 2))
+    inner = slice(log_signals.STENCIL, -log_signals.STENCIL)
+    with pytest.raises(hybrid.HybridError, match=r"do not excite the base parameters .*\]; excite the arm more") as e:
+        hybrid.identify_dynamics(nominal, t[inner], still[inner], torques(true, still[inner], qd[inner], qdd[inner]))
+    names = str(e.value).split("base parameters ")[1].split("; ")[0].split(", ")
+    assert "damping[wrist_3_joint]" in names and all(n.endswith("[wrist_3_joint]") for n in names)
+
+
 def test_the_stencil_is_exact_to_degree_eight():
     """The central differences' weights differentiate polynomials of degree 8 exactly (rounding aside),
     and a sinusoid to (w h)^8 / 630 (first derivative)."""

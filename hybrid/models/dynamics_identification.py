@@ -132,8 +132,13 @@ class DynamicsIdentification:
         ------
         HybridError
             The parameters are not physical (``consistent=False`` on poor data): identify with
-            ``consistent=True``.
+            ``consistent=True``; or the nominal arm is the planar arm's closed form, whose parameters are its
+            ``Arm``'s: identify its serial chain, ``dataclasses.replace(robot, closed_form=None)``.
         """
+        if self.nominal_robot.closed_form is not None:
+            raise HybridError("the planar arm's closed form takes no identified parameters (they are its Arm's); "
+                              "for an identified robot, identify its serial chain: "
+                              "dataclasses.replace(robot, closed_form=None)")
         return with_linear_parameters(self.nominal_robot, self.parameters)
 
     def torque(self, q, qd, qdd) -> np.ndarray:
