@@ -435,3 +435,30 @@ def test_a_robot_written_as_a_urdf_reads_back_as_itself(tmp_path, arms):
         np.testing.assert_allclose(again.as_array(), robot.as_array(), rtol=1e-12, atol=1e-15)
         for field in ("lower", "upper", "velocity", "effort"):
             np.testing.assert_array_equal(getattr(again.limits, field), getattr(robot.limits, field))
+
+
+def test_a_long_log_takes_a_few_times_its_own_memory():
+    """A log of 20 kHz is thinned to a few hundred samples a second: its signals are filtered a column at a time
+    and differentiated at the samples kept alone, so the peak is a few copies of ``q`` (it was six), and the
+    derivatives at the kept rows are those of the whole filtered log."""
+    import tracemalloc
+
+    from scipy import signal
+
+    robot = hybrid.ur5()
+    t, q, _, _ = multisine(robot, 20000.0, 10.0, seed=3)
+    tau = q.copy()
+    log_signals.log_signals(robot.joint_names, t[:30000], q[:30000], tau[:30000], least=60)  # imports, caches
+    tracemalloc.start()
+    try:
+        signals = log_signals.log_signals(robot.joint_names, t, q, tau, least=60)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert peak < 4 * q.nbytes, peak / q.nbytes
+    h = t[1] - t[0]
+    whole = signal.sosfiltfilt(signal.butter(log_signals.ORDER, signals.cutoff_hz, fs=1 / h, output="sos"), q, axis=0)
+    np.testing.assert_allclose(signals.q, whole[signals.rows], rtol=0, atol=1e-12)
+    for order, got in ((1, signals.qd), (2, signals.qdd)):
+        np.testing.assert_allclose(got, log_signals.derivative(whole, h, order)[signals.rows], rtol=1e-9,
+                                   atol=1e-9 * np.abs(got).max())

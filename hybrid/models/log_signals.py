@@ -179,16 +179,20 @@ def default_cutoff(sample_rate: float) -> float:
     return min(DEFAULT_CUTOFF_HZ, DEFAULT_RATE_SHARE * sample_rate)
 
 
-def derivative(x: np.ndarray, h: float, order: int) -> np.ndarray:
+def derivative(x: np.ndarray, h: float, order: int, rows=None) -> np.ndarray:
     """The ``order``-th derivative of the uniformly sampled ``x`` (along axis 0, step ``h``) by central
     differences on ``2 m + 1`` samples (:data:`STENCIL` ``= m``); the ``m`` samples at each end, which
-    the stencil does not cover, are NaN."""
+    the stencil does not cover, are NaN. With ``rows`` (each within ``[m, len(x) - m)``): at those rows
+    alone, so a long log thinned to a few of its samples is not differentiated whole."""
     m = STENCIL
     offsets = np.arange(-m, m + 1, dtype=float)
     # the weights w with sum_k w_k k^j = order! [j == order], j = 0..2m: exact for polynomials of degree 2m
     rhs = np.zeros(2 * m + 1)
     rhs[order] = math.factorial(order)
     w = np.linalg.solve(np.vander(offsets, increasing=True).T, rhs) / h**order
+    if rows is not None:
+        rows = np.asarray(rows)
+        return sum(wk * x[rows + k - m] for k, wk in enumerate(w))
     out = np.full_like(x, np.nan)
     out[m:len(x) - m] = sum(wk * x[k:len(x) - 2 * m + k] for k, wk in enumerate(w))
     return out
@@ -276,18 +280,28 @@ def log_signals(robot_joints, t, q, tau, *, qd=None, qdd=None, cutoff_hz=None, s
     if sos is not None:
         from scipy import signal
 
-        arrays = {name: signal.sosfiltfilt(sos, a, axis=0) for name, a in arrays.items()}
-    if "qd" not in arrays:
-        arrays["qd"] = derivative(arrays["q"], h, 1)
-    if "qdd" not in arrays:
-        arrays["qdd"] = derivative(arrays["qd"], h, 1) if qd is not None else derivative(arrays["q"], h, 2)
+        arrays = {name: _filtered(signal, sos, a) for name, a in arrays.items()}
     step = 1
     if fc is not None:
         step = max(1, min(int(rate / (KEPT_RATE * fc)), (N - 2 * edge) // max(least, 1)))
     rows = np.arange(edge, N - edge, step)
-    picked = {name: np.ascontiguousarray(arrays[name][rows]) for name in ("q", "qd", "qdd", "tau")}
+    picked = {name: np.ascontiguousarray(a[rows]) for name, a in arrays.items()}
+    # differentiated at the rows kept alone (the edge covers the stencil): memory of the samples kept, not the log's
+    if "qd" not in picked:
+        picked["qd"] = derivative(arrays["q"], h, 1, rows)
+    if "qdd" not in picked:
+        picked["qdd"] = derivative(arrays["qd"], h, 1, rows) if qd is not None else derivative(arrays["q"], h, 2, rows)
     return LogSignals(**picked, rows=rows, sample_time=h, cutoff_hz=fc, edge=edge, step=step,
                       log_samples=N)
+
+
+def _filtered(signal, sos: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """``x`` filtered forward and backward by ``sos`` along axis 0, a column at a time: the filter's
+    padded copies and passes are a column's, not the log's."""
+    out = np.empty_like(x)
+    for j in range(x.shape[1]):
+        out[:, j] = signal.sosfiltfilt(sos, x[:, j])
+    return out
 
 
 def _cutoff(value, rate: float) -> float:
