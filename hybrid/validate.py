@@ -139,7 +139,41 @@ def shown(value, limit: int = 60) -> str:
         text = r.repr(value)
     except Exception:  # a user's object whose __repr__ fails: name its type instead
         text = f"<{type(value).__name__}>"
+    text = " ".join(text.split())  # one line (an array's repr spans several): a message's first line says it all
     return text if len(text) <= limit else text[:limit - 3] + "..."
+
+
+def _shown_names(names, most: int, width: int) -> int:
+    """How many of ``names`` :func:`listed` names: at most ``most``, in about ``width`` characters, at least one."""
+    count, length = 0, 0
+    for name in names[:most]:
+        length += len(str(name)) + 2
+        if count and length > width:
+            break
+        count += 1
+    return count
+
+
+def listed(names, most: int = 4, width: int = 80) -> str:
+    """``names`` joined by commas, at most ``most`` of them in about ``width`` characters, and how many more: a
+    list that keeps a message's first line short however many and however long they are."""
+    names = [str(name) for name in names]
+    count = _shown_names(names, most, width)
+    return ", ".join(names[:count]) + (f" and {len(names) - count} more" if len(names) > count else "")
+
+
+def listed_in_full(names, most: int = 4, width: int = 80) -> str:
+    """A message's further line naming every one of ``names`` when :func:`listed` (with the same ``most`` and
+    ``width``) named only some (empty otherwise)."""
+    names = [str(name) for name in names]
+    return f"\n  all {len(names)}: {', '.join(names)}" if _shown_names(names, most, width) < len(names) else ""
+
+
+def whole_number(name: str, value, least: int, most: int) -> int:
+    """``value`` as a whole number in ``[least, most]`` (not a bool), else a HybridError naming ``name``."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not least <= value <= most:
+        raise HybridError(f"{name} = {shown(value, 40)}; give a whole number from {least} to {most}")
+    return int(value)
 
 
 #: the deepest nesting of tables and lists read from a user's file

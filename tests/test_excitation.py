@@ -309,3 +309,13 @@ def test_bad_files_and_hand_made_trajectories_are_refused(planar_trajectory, tmp
         with pytest.raises(hybrid.HybridError, match=message):
             call()
     assert not list(tmp_path.iterdir())
+
+
+def test_many_unexcited_parameters_are_named_in_a_short_first_line():
+    """Limits that leave the UR5 hardly any motion excite few of its base parameters: the first line names some
+    and counts the rest, the next names them all."""
+    with pytest.raises(hybrid.HybridError, match=r"does not excite the base parameters .* and \d+ more; give") as e:
+        hybrid.excitation_trajectory(hybrid.ur5(), period=4.0, harmonics=2, samples=12, restarts=1, iterations=0,
+                                     safety=1e-9)
+    first, *rest = str(e.value).splitlines()
+    assert len(first) <= 240 and len(rest) == 1 and "damping[wrist_3_joint]" in rest[0]

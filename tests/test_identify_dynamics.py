@@ -311,6 +311,72 @@ def test_bad_logs_are_refused_saying_what_to_do(arms, log):
     refused(r"t has shape \(5000, 1\); give the samples' times", t[:, None], q, tau)
     with pytest.raises(hybrid.HybridError, match="robot must be"):
         hybrid.identify_dynamics("ur5", t, q, tau)
+    # the filter settles slowly near the Nyquist frequency as near 0: the fix there is a lower cutoff
+    refused(r"filtering at 499 Hz drops \d+ at each end .* \(a longer log\), or a lower cutoff_hz$", t, q, tau,
+            cutoff_hz=499.0)
+    refused(r"the log is sampled at 1 Hz \(a step of 1 s\), too slowly .* give the times in seconds", t * 1000, q, tau)
+
+
+@pytest.mark.parametrize("kind", ["complex", "bool", "text"])
+def test_torques_that_are_not_real_numbers_are_refused_in_their_first_line(arms, log, kind):
+    """A cast to float would drop complex torques' imaginary part and take booleans as 0 and 1: refused, the
+    array shown on one line (its repr spans several) before what to give."""
+    nominal, _ = arms
+    t, q, tau = log
+    text = tau.astype(object)
+    text[7, 2] = "about 1"
+    bad = {"complex": tau + 1j, "bool": tau > 0, "text": text}[kind]
+    with pytest.raises(hybrid.HybridError) as e:
+        hybrid.identify_dynamics(nominal, t, q, bad)
+    first = str(e.value).splitlines()[0]
+    assert first.startswith("tau = array(") and first.endswith("; give an (N, 6) array of real numbers, one row per "
+                                                                "sample"), first
+
+
+def test_a_table_of_the_joints_in_another_order_is_refused(arms, log):
+    """A DataFrame's columns are taken by position: named after the joints in another order they would be
+    other joints' values."""
+    pd = pytest.importorskip("pandas")
+    nominal, _ = arms
+    t, q, tau = log
+    names = list(nominal.joint_names)
+    frame = pd.DataFrame(q, columns=names)
+    assert hybrid.identify_dynamics(nominal, t, frame, tau, consistent=False).samples > 0
+    with pytest.raises(hybrid.HybridError, match=r"q's columns .* are the robot's joints in another order; give them"):
+        hybrid.identify_dynamics(nominal, t, frame[names[::-1]], tau, consistent=False)
+    with pytest.raises(hybrid.HybridError, match=r"tau's columns .* in another order"):
+        hybrid.identify_dynamics(nominal, t, q, pd.DataFrame(tau, columns=[f"tau[{j}]" for j in names])
+                                 [[f"tau[{j}]" for j in names[1:] + names[:1]]], consistent=False)
+
+
+def test_many_unexcited_parameters_are_named_in_a_short_first_line(arms, log):
+    """The arm at rest excites none but gravity's: the first line names a few and counts the rest, the next
+    names them all."""
+    nominal, _ = arms
+    t, q, _ = log
+    still = np.broadcast_to(q[0], q.shape)
+    with pytest.raises(hybrid.HybridError, match=r"do not excite the base parameters .* and \d+ more; excite") as e:
+        hybrid.identify_dynamics(nominal, t, still, torques(nominal, still, 0 * still, 0 * still))
+    first, *rest = str(e.value).splitlines()
+    assert len(first) <= 240 and len(rest) == 1
+    named = rest[0].split(": ", 1)[1].split(", ")
+    assert rest[0].strip().startswith(f"all {len(named)}:") and "damping[wrist_3_joint]" in named
+
+
+def test_the_planar_arms_closed_form_says_how_to_identify_a_robot():
+    """The closed form's parameters are its Arm's: the fit is reported, ``.robot`` says to identify the serial
+    chain, whose ``.robot`` is the arm again."""
+    import dataclasses
+
+    planar = hybrid.Robot.planar(hybrid.paper_arm())
+    t, q, qd, qdd = multisine(planar, 200.0, 10.0, seed=2)
+    tau = torques(planar, q, qd, qdd)
+    found = hybrid.identify_dynamics(planar, t, q, tau, qd=qd, qdd=qdd, smooth=False)
+    with pytest.raises(hybrid.HybridError, match=r"closed form takes no identified parameters.*closed_form=None\)$"):
+        _ = found.robot
+    serial = dataclasses.replace(planar, closed_form=None)
+    again = hybrid.identify_dynamics(serial, t, q, tau, qd=qd, qdd=qdd, smooth=False).robot
+    np.testing.assert_allclose(torques(again, q, qd, qdd), tau, atol=1e-6 * np.abs(tau).max())
 
 
 def test_a_log_that_does_not_excite_every_base_parameter_is_refused_naming_them(arms, log):
@@ -369,3 +435,30 @@ def test_a_robot_written_as_a_urdf_reads_back_as_itself(tmp_path, arms):
         np.testing.assert_allclose(again.as_array(), robot.as_array(), rtol=1e-12, atol=1e-15)
         for field in ("lower", "upper", "velocity", "effort"):
             np.testing.assert_array_equal(getattr(again.limits, field), getattr(robot.limits, field))
+
+
+def test_a_long_log_takes_a_few_times_its_own_memory():
+    """A log of 20 kHz is thinned to a few hundred samples a second: its signals are filtered a column at a time
+    and differentiated at the samples kept alone, so the peak is a few copies of ``q`` (it was six), and the
+    derivatives at the kept rows are those of the whole filtered log."""
+    import tracemalloc
+
+    from scipy import signal
+
+    robot = hybrid.ur5()
+    t, q, _, _ = multisine(robot, 20000.0, 10.0, seed=3)
+    tau = q.copy()
+    log_signals.log_signals(robot.joint_names, t[:30000], q[:30000], tau[:30000], least=60)  # imports, caches
+    tracemalloc.start()
+    try:
+        signals = log_signals.log_signals(robot.joint_names, t, q, tau, least=60)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert peak < 4 * q.nbytes, peak / q.nbytes
+    h = t[1] - t[0]
+    whole = signal.sosfiltfilt(signal.butter(log_signals.ORDER, signals.cutoff_hz, fs=1 / h, output="sos"), q, axis=0)
+    np.testing.assert_allclose(signals.q, whole[signals.rows], rtol=0, atol=1e-12)
+    for order, got in ((1, signals.qd), (2, signals.qdd)):
+        np.testing.assert_allclose(got, log_signals.derivative(whole, h, order)[signals.rows], rtol=1e-9,
+                                   atol=1e-9 * np.abs(got).max())

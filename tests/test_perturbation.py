@@ -53,6 +53,13 @@ def test_a_share_out_of_range_is_refused(share):
         hybrid.perturbed_robot(hybrid.ur5(), share)
 
 
+@pytest.mark.parametrize("seed", [-1, 1.5, "a", None, True])
+def test_a_seed_that_is_not_a_whole_number_is_refused(seed):
+    """NumPy's generator would raise its own error, or (None) draw a robot no run repeats."""
+    with pytest.raises(hybrid.HybridError, match=r"^seed = .*; give a whole number from 0"):
+        hybrid.perturbed_robot(hybrid.ur5(), 0.3, seed=seed)
+
+
 def test_the_planar_arm_is_refused():
     with pytest.raises(hybrid.HybridError, match="closed form"):
         hybrid.perturbed_robot(hybrid.Robot.planar(hybrid.paper_arm()), 0.1)

@@ -240,3 +240,8 @@ def test_an_integration_step_too_long_for_the_coulomb_friction_is_refused():
         hybrid.tracing_experiment(robot=sharp, controller_robot=sharp)
     gentle = dataclasses.replace(sharp, coulomb_speed=(0.2,) * 6)
     hybrid.tracing_experiment(robot=gentle, controller_robot=gentle)
+    # a viscosity alone as fast (given in the wrong units) is refused likewise, before its run turns NaN
+    thick = dataclasses.replace(hybrid.ur5(), damping=(1e4,) * 6)
+    with pytest.raises(hybrid.HybridError, match=r"too large for the joints' viscosity: its fastest mode is .* check "
+                                                 r"the Robot's damping"):
+        hybrid.tracing_experiment(robot=thick, controller_robot=thick)

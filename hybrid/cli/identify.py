@@ -18,6 +18,7 @@ from hybrid.models.dynamics_identification import POORLY_EXCITED, DynamicsIdenti
 from hybrid.models.robot import Robot
 from hybrid.models.urdf_writer import robot_urdf_text
 from hybrid.spec.chain import linear_parameter_units
+from hybrid.validate import listed, listed_in_full
 
 IDENTIFY = ("Identify a robot's dynamics from a log of its torques. LOG is a CSV or Parquet table "
             "with the columns t [s], q[JOINT] and tau[JOINT] for each joint of the URDF's chain to --tip "
@@ -89,9 +90,8 @@ def read_log(path, joints) -> dict[str, np.ndarray]:
     wanted = {"t": ["t"], **{what: [f"{what}[{j}]" for j in joints] for what in ("q", "tau", "qd", "qdd")}}
     missing = [c for what in ("t", "q", "tau") for c in wanted[what] if c not in columns]
     if missing:
-        shown = ", ".join(missing[:3]) + (f" and {len(missing) - 3} more" if len(missing) > 3 else "")
-        raise HybridError(f"the log {path.name} has no column {shown}; give the columns t, q[JOINT] and tau[JOINT] "
-                          f"for the joints {', '.join(joints)}")
+        raise HybridError(f"the log {path.name} has no column {listed(missing, 3)}; give the columns t, q[JOINT] and "
+                          f"tau[JOINT] for the joints {listed(joints)}" + listed_in_full(joints))
     out: dict[str, np.ndarray | None] = {}
     for what, names in wanted.items():
         present = [n in columns for n in names]

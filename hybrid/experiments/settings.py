@@ -212,12 +212,13 @@ def check_timing(exp) -> None:
 
 
 def check_friction_mode(exp) -> None:
-    """Refuse an integration step too long for the joints' Coulomb friction: about rest its smooth sign is a
-    viscosity ``F_c / v_s`` (:attr:`hybrid.Robot.rest_viscosity`), whose fastest mode at the start is the
-    largest eigenvalue of ``B^-1 V``. Checked only for a robot with Coulomb friction (viscosities alone are
-    far slower than the contact)."""
+    """Refuse an integration step too long for the joints' friction: about rest the Coulomb friction's smooth
+    sign is a viscosity ``F_c / v_s``, the joints' viscosity ``F_v + F_c / v_s`` in all
+    (:attr:`hybrid.Robot.rest_viscosity`), whose fastest mode at the start is the largest eigenvalue of
+    ``B^-1 V``. A URDF's viscosities are far slower than the contact; a sharp smooth sign, or a viscosity
+    given in the wrong units, is not."""
     robot, h = exp.robot, exp.integration_step
-    if not any(robot.coulomb):
+    if not np.any(robot.rest_viscosity):
         return
     try:
         q = exp.initial_state()[:robot.n]
@@ -226,10 +227,11 @@ def check_friction_mode(exp) -> None:
     B = robot.kind.rest_terms(robot, q)["B"][0]
     rate = float(np.max(np.linalg.eigvals(np.linalg.solve(B, np.diag(robot.rest_viscosity))).real))
     if h * rate > 1.0:
-        raise HybridError(
-            f"integration_step = {h} s is too large for the joints' Coulomb friction: about rest it is a viscosity "
-            f"F_c / v_s whose fastest mode is {rate:.3g} rad/s; use integration_step <= {1.0 / rate:.2e} s or a "
-            "larger Robot coulomb_speed")
+        what, fix = (("Coulomb friction: about rest it is a viscosity F_v + F_c / v_s whose", "a larger Robot "
+                      "coulomb_speed") if any(robot.coulomb) else
+                     ("viscosity: its", "check the Robot's damping (in N m s/rad or N s/m)"))
+        raise HybridError(f"integration_step = {h} s is too large for the joints' {what} fastest mode is {rate:.3g} "
+                          f"rad/s; use integration_step <= {1.0 / rate:.2e} s or {fix}")
 
 
 #: short names of the references

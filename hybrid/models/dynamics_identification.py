@@ -31,6 +31,7 @@ from hybrid.models.consistent_parameters import consistent_parameters, link_scal
 from hybrid.models.log_signals import LogSignals, log_signals
 from hybrid.models.regressor import linear_parameters, regressor, with_linear_parameters
 from hybrid.models.robot import Robot, as_robot
+from hybrid.validate import listed, listed_in_full
 
 #: a singular value of the stacked base regressor below this fraction of the largest is a direction the
 #: data did not excite (rounding leaves about 1e-16; a parameter excited at all is far above 1e-8)
@@ -132,8 +133,13 @@ class DynamicsIdentification:
         ------
         HybridError
             The parameters are not physical (``consistent=False`` on poor data): identify with
-            ``consistent=True``.
+            ``consistent=True``; or the nominal arm is the planar arm's closed form, whose parameters are its
+            ``Arm``'s: identify its serial chain, ``dataclasses.replace(robot, closed_form=None)``.
         """
+        if self.nominal_robot.closed_form is not None:
+            raise HybridError("the planar arm's closed form takes no identified parameters (they are its Arm's); "
+                              "for an identified robot, identify its serial chain: "
+                              "dataclasses.replace(robot, closed_form=None)")
         return with_linear_parameters(self.nominal_robot, self.parameters)
 
     def torque(self, q, qd, qdd) -> np.ndarray:
@@ -223,7 +229,7 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
         The arm: its structure and gravity give the regressor, its parameters the nominal model the
         estimate is reported beside (and the consistent estimate is regularised toward).
     t : array_like
-        ``(N,)``: the samples' times [s], uniform (within 2 % of a step).
+        ``(N,)``: the samples' times [s], uniform (within 2 % of a step), at least 10 Hz.
     q : array_like
         ``(N, n)``: the joint positions [rad or m] of a trajectory that moves every joint over its range,
         with varied speeds and accelerations.
@@ -256,9 +262,11 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
     Raises
     ------
     HybridError
-        Arrays of the wrong shape or lengths, a sample not finite (named by its row and joint), times not
-        strictly increasing or not uniform, a cutoff not below the Nyquist frequency, a log too short for
-        the filter and the parameters, or a trajectory that does not excite every base parameter (named).
+        Arrays of the wrong shape or lengths, or not of real numbers (complex, boolean, text), a table (a
+        DataFrame) of the joints in another order than the robot's, a sample not finite (named by its row and
+        joint), times not strictly increasing or not uniform or sampled below 10 Hz (times in milliseconds),
+        a cutoff not below the Nyquist frequency, a log too short for the filter and the parameters, or a
+        trajectory that does not excite every base parameter (named).
 
     Examples
     --------
@@ -298,8 +306,9 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
     s = np.linalg.svd(R, compute_uv=False)
     if s[-1] < UNEXCITED * s[0]:
         missing = unexcited(R, names)
-        raise HybridError(f"the samples do not excite the base parameters {', '.join(missing)}; excite the arm more "
-                          "(a richer trajectory: every joint over its range, varied speeds and accelerations)")
+        raise HybridError(f"the samples do not excite the base parameters {listed(missing)}; excite the arm more (a "
+                          "richer trajectory: every joint over its range, varied speeds and accelerations)"
+                          + listed_in_full(missing))
     estimate = np.linalg.solve(R, z)
     rss = _residual_rms(factors, estimate, M) ** 2 * M
     dof = M - p / n  # each joint's share of the M n - p degrees of freedom

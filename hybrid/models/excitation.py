@@ -47,7 +47,7 @@ from hybrid.models.terms import arm_terms
 from hybrid.models.urdf import JointLimits
 from hybrid.native import generator
 from hybrid.user_warnings import warn
-from hybrid.validate import check_c_name, shown
+from hybrid.validate import check_c_name, listed, listed_in_full, shown, whole_number
 
 #: the acceleration limit of every joint unless given [rad/s^2 or m/s^2]: well below the shipped arms' own
 #: (the Panda's are 7.5 to 20 rad/s^2), enough for a period of seconds to sweep a joint's range
@@ -132,7 +132,7 @@ class ExcitationTrajectory:
         for name, value in (("center", center), ("a", a), ("b", b)):
             value.setflags(write=False)
             object.__setattr__(self, name, value)
-        object.__setattr__(self, "samples", _whole("samples", self.samples, 1, MAX_SAMPLES))
+        object.__setattr__(self, "samples", whole_number("samples", self.samples, 1, MAX_SAMPLES))
 
     @property
     def harmonics(self) -> int:
@@ -202,7 +202,7 @@ class ExcitationTrajectory:
             failed.
         """
         rate = _positive("rate", rate, "the samples per second in Hz")
-        periods = _whole("periods", periods, 1, 10_000)
+        periods = whole_number("periods", periods, 1, 10_000)
         count = max(1, math.ceil(periods * self.period * rate - 1e-9))
         if count > 10**7:
             raise HybridError(f"{count} rows ({periods} periods of {self.period} s at {rate} Hz); give a lower rate "
@@ -333,17 +333,17 @@ def excitation_trajectory(robot: Robot, *, period: float = 10.0, harmonics: int 
     period = _positive("period", period, "the trajectory's period in s, e.g. 10")
     if not isinstance(rest, bool):
         raise HybridError(f"rest = {shown(rest, 40)}; give True (start and end at rest) or False")
-    harmonics = _whole("harmonics", harmonics, 1, MAX_HARMONICS)
+    harmonics = whole_number("harmonics", harmonics, 1, MAX_HARMONICS)
     if rest and harmonics == 1:
         raise HybridError("harmonics = 1 cannot start and end at rest (that takes three of each joint's 2 K "
                           "coefficients); give harmonics >= 2, or rest=False")
     safety = _positive("safety", safety, "a fraction of the URDF's limits in (0, 1], e.g. 0.9")
     if safety > 1.0:
         raise HybridError(f"safety = {safety}; give a fraction of the URDF's limits in (0, 1], e.g. 0.9")
-    samples = _whole("samples", samples, 4 * harmonics, MAX_SAMPLES)
-    restarts = _whole("restarts", restarts, 1, MAX_RESTARTS)
-    iterations = _whole("iterations", iterations, 0, MAX_ITERATIONS)
-    seed = _whole("seed", seed, 0, 2**63 - 1)
+    samples = whole_number("samples", samples, 4 * harmonics, MAX_SAMPLES)
+    restarts = whole_number("restarts", restarts, 1, MAX_RESTARTS)
+    iterations = whole_number("iterations", iterations, 0, MAX_ITERATIONS)
+    seed = whole_number("seed", seed, 0, 2**63 - 1)
     lower, upper, velocity, acceleration = _joint_limits(robot, limits, safety)
     center = _start(robot, start, lower, upper)
     box = _box(robot, box, center)
@@ -361,12 +361,12 @@ def excitation_trajectory(robot: Robot, *, period: float = 10.0, harmonics: int 
     W = design.stacked(X, dense=True)
     s = extreme_singular_values(W)
     if s[-1] < UNEXCITED * s[0]:
-        raise HybridError(f"within these limits the trajectory does not excite the base parameters "
-                          f"{', '.join(unexcited(W, names))}; give wider limits or box, a longer period or more "
-                          "harmonics")
+        missing = unexcited(W, names)
+        raise HybridError(f"within these limits the trajectory does not excite the base parameters {listed(missing)}; "
+                          "give wider limits or box, a longer period or more harmonics" + listed_in_full(missing))
     if s[0] > POOR_CONDITION * s[-1]:
         warn(f"within these limits the trajectory's condition number is {s[0] / s[-1]:.3g}: it barely excites the "
-             f"base parameters {', '.join(unexcited(W, names, 1.0 / POOR_CONDITION))}, whose estimates will amplify "
+             f"base parameters {listed(unexcited(W, names, 1.0 / POOR_CONDITION))}, whose estimates will amplify "
              "the torques' noise about as much; give wider limits or box, a longer period or more harmonics",
              UserWarning)
     a, b = design.coefficients(X)
@@ -383,13 +383,6 @@ def _positive(name: str, value, what: str) -> float:
             or not math.isfinite(value) or value <= 0:
         raise HybridError(f"{name} = {shown(value, 40)}; give {what} (a finite number above 0)")
     return float(value)
-
-
-def _whole(name: str, value, least: int, most: int) -> int:
-    """``value`` as a whole number in ``[least, most]``, else a HybridError."""
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not least <= value <= most:
-        raise HybridError(f"{name} = {shown(value, 40)}; give a whole number from {least} to {most}")
-    return int(value)
 
 
 def _numbers(name: str, value, shape: tuple[int, ...]) -> np.ndarray:

@@ -49,7 +49,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.validate import shown
+from hybrid.validate import listed, shown
 
 #: the Butterworth filter's order (run forward and backward: order 8 in magnitude, no phase)
 ORDER = 4
@@ -63,6 +63,9 @@ EDGE_DECAY = 1e-6
 STENCIL = 4
 #: the largest deviation of the times from a uniform grid taken as uniform, as a share of the step
 JITTER = 0.02
+#: the slowest sampling rate taken [Hz]: an arm's dynamics need its accelerations, which a slower log does not
+#: resolve (a log whose times are in milliseconds would seem sampled a thousand times too slowly)
+LEAST_RATE = 10.0
 #: the samples kept are about this many times the cutoff apart in rate (twice: the filtered signals'
 #: Nyquist rate)
 KEPT_RATE = 2.0
@@ -102,13 +105,35 @@ class LogSignals:
     log_samples: int
 
 
+def _real(name: str, value, what: str) -> np.ndarray:
+    """``value`` as floats; complex numbers (whose imaginary part a cast drops), booleans and text refused."""
+    try:
+        kind = np.asarray(value).dtype.kind
+        arr = np.asarray(value, dtype=float) if kind not in "cb" else None
+    except (TypeError, ValueError):
+        arr = None
+    if arr is None:
+        raise HybridError(f"{name} = {shown(value, 60)}; give {what}")
+    return arr
+
+
+def _joint_order(name: str, value, joints) -> None:
+    """Refuse a table (a pandas DataFrame) whose columns name the joints (``joint`` or ``name[joint]``) in
+    another order than the robot's: its columns are taken by position."""
+    columns = getattr(value, "columns", None)
+    if columns is None:
+        return
+    labels = [str(c).strip() for c in columns]
+    for wanted in (list(joints), [f"{name}[{j}]" for j in joints]):
+        if labels != wanted and sorted(labels) == sorted(wanted):
+            raise HybridError(f"{name}'s columns {listed(labels)} are the robot's joints in another order; give them "
+                              f"in the robot's (robot.joint_names: {listed(wanted)}), e.g. {name}[{wanted}]")
+
+
 def samples(name: str, value, n: int, joints) -> np.ndarray:
     """``value`` as an ``(N, n)`` array of finite numbers; a bad sample is named by its row and joint."""
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise HybridError(f"{name} = {shown(value, 60)}; give an (N, {n}) array of numbers, one row per sample") \
-            from None
+    _joint_order(name, value, joints)
+    arr = _real(name, value, f"an (N, {n}) array of real numbers, one row per sample")
     if arr.ndim != 2 or arr.shape[1] != n:
         raise HybridError(f"{name} has shape {arr.shape}; give an (N, {n}) array, one row of {n} joint values per "
                           "sample")
@@ -121,10 +146,7 @@ def samples(name: str, value, n: int, joints) -> np.ndarray:
 
 def times(t) -> np.ndarray:
     """``t`` as ``(N,)`` finite, strictly increasing times, uniform within :data:`JITTER` of a step."""
-    try:
-        t = np.asarray(t, dtype=float)
-    except (TypeError, ValueError):
-        raise HybridError(f"t = {shown(t, 60)}; give the samples' times [s], one number per sample") from None
+    t = _real("t", t, "the samples' times [s], one real number per sample")
     if t.ndim != 1:
         raise HybridError(f"t has shape {t.shape}; give the samples' times [s] as one number per sample, (N,)")
     if not np.isfinite(t).all():
@@ -157,16 +179,20 @@ def default_cutoff(sample_rate: float) -> float:
     return min(DEFAULT_CUTOFF_HZ, DEFAULT_RATE_SHARE * sample_rate)
 
 
-def derivative(x: np.ndarray, h: float, order: int) -> np.ndarray:
+def derivative(x: np.ndarray, h: float, order: int, rows=None) -> np.ndarray:
     """The ``order``-th derivative of the uniformly sampled ``x`` (along axis 0, step ``h``) by central
     differences on ``2 m + 1`` samples (:data:`STENCIL` ``= m``); the ``m`` samples at each end, which
-    the stencil does not cover, are NaN."""
+    the stencil does not cover, are NaN. With ``rows`` (each within ``[m, len(x) - m)``): at those rows
+    alone, so a long log thinned to a few of its samples is not differentiated whole."""
     m = STENCIL
     offsets = np.arange(-m, m + 1, dtype=float)
     # the weights w with sum_k w_k k^j = order! [j == order], j = 0..2m: exact for polynomials of degree 2m
     rhs = np.zeros(2 * m + 1)
     rhs[order] = math.factorial(order)
     w = np.linalg.solve(np.vander(offsets, increasing=True).T, rhs) / h**order
+    if rows is not None:
+        rows = np.asarray(rows)
+        return sum(wk * x[rows + k - m] for k, wk in enumerate(w))
     out = np.full_like(x, np.nan)
     out[m:len(x) - m] = sum(wk * x[k:len(x) - 2 * m + k] for k, wk in enumerate(w))
     return out
@@ -227,6 +253,10 @@ def log_signals(robot_joints, t, q, tau, *, qd=None, qdd=None, cutoff_hz=None, s
                           "give one row of each per time, all the same length")
     N, h = len(t), float((t[-1] - t[0]) / (len(t) - 1))
     rate = 1.0 / h
+    if rate < LEAST_RATE:
+        raise HybridError(f"the log is sampled at {rate:.3g} Hz (a step of {h:.3g} s), too slowly for an arm's "
+                          f"dynamics; give the times in seconds (a log in milliseconds: t / 1000), sampled at "
+                          f"{LEAST_RATE:g} Hz or more")
     if not isinstance(smooth, (bool, np.bool_)):
         raise HybridError(f"smooth = {shown(smooth)}; give True (filter the log) or False (take it as it is)")
     if not smooth and cutoff_hz is not None:
@@ -244,24 +274,35 @@ def log_signals(robot_joints, t, q, tau, *, qd=None, qdd=None, cutoff_hz=None, s
         edge = _edge(sos) + m
     if N < 2 * edge + least:
         because = f"filtering at {fc:g} Hz drops {edge}" if fc is not None else f"the differences drop {edge}"
+        # the filter settles fastest at a quarter of the sampling rate, slower toward 0 and toward Nyquist
+        nearer = "" if fc is None else f", or a {'higher' if fc < DEFAULT_RATE_SHARE * rate else 'lower'} cutoff_hz"
         raise HybridError(f"the log has {N} samples; {because} at each end and the fit needs {least} more: give at "
-                          f"least {2 * edge + least} samples (a longer log)"
-                          + (", or a higher cutoff_hz" if fc is not None else ""))
+                          f"least {2 * edge + least} samples (a longer log){nearer}")
     if sos is not None:
         from scipy import signal
 
-        arrays = {name: signal.sosfiltfilt(sos, a, axis=0) for name, a in arrays.items()}
-    if "qd" not in arrays:
-        arrays["qd"] = derivative(arrays["q"], h, 1)
-    if "qdd" not in arrays:
-        arrays["qdd"] = derivative(arrays["qd"], h, 1) if qd is not None else derivative(arrays["q"], h, 2)
+        arrays = {name: _filtered(signal, sos, a) for name, a in arrays.items()}
     step = 1
     if fc is not None:
         step = max(1, min(int(rate / (KEPT_RATE * fc)), (N - 2 * edge) // max(least, 1)))
     rows = np.arange(edge, N - edge, step)
-    picked = {name: np.ascontiguousarray(arrays[name][rows]) for name in ("q", "qd", "qdd", "tau")}
+    picked = {name: np.ascontiguousarray(a[rows]) for name, a in arrays.items()}
+    # differentiated at the rows kept alone (the edge covers the stencil): memory of the samples kept, not the log's
+    if "qd" not in picked:
+        picked["qd"] = derivative(arrays["q"], h, 1, rows)
+    if "qdd" not in picked:
+        picked["qdd"] = derivative(arrays["qd"], h, 1, rows) if qd is not None else derivative(arrays["q"], h, 2, rows)
     return LogSignals(**picked, rows=rows, sample_time=h, cutoff_hz=fc, edge=edge, step=step,
                       log_samples=N)
+
+
+def _filtered(signal, sos: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """``x`` filtered forward and backward by ``sos`` along axis 0, a column at a time: the filter's
+    padded copies and passes are a column's, not the log's."""
+    out = np.empty_like(x)
+    for j in range(x.shape[1]):
+        out[:, j] = signal.sosfiltfilt(sos, x[:, j])
+    return out
 
 
 def _cutoff(value, rate: float) -> float:

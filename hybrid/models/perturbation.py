@@ -20,7 +20,7 @@ import numpy as np
 from hybrid.errors import HybridError
 from hybrid.models.robot import Robot, as_robot
 from hybrid.models.urdf import LinkInertia
-from hybrid.validate import shown
+from hybrid.validate import shown, whole_number
 
 #: the largest share accepted: beyond it a scaled mass or second moment may reach 0 or turn negative
 MOST_SHARE = 0.9
@@ -72,7 +72,7 @@ def perturbed_robot(robot: Robot, share: float = 0.3, *, seed: int = 0) -> Robot
     Raises
     ------
     HybridError
-        ``share`` outside ``[0, 0.9]``, or the planar arm.
+        ``share`` outside ``[0, 0.9]``, a seed that is not a whole number >= 0, or the planar arm.
 
     Examples
     --------
@@ -92,6 +92,6 @@ def perturbed_robot(robot: Robot, share: float = 0.3, *, seed: int = 0) -> Robot
     if robot.closed_form is not None:
         raise HybridError("the planar arm's parameters are its closed form's: perturb its hybrid.Arm "
                           "(dataclasses.replace(arm, m2=...)) and build Robot.planar from it")
-    rng = np.random.default_rng(seed)
+    rng = np.random.default_rng(whole_number("seed", seed, 0, 2**63 - 1))
     links = tuple(_perturbed_link(link, float(share), rng) for link in robot.links)
     return dataclasses.replace(robot, links=links)
