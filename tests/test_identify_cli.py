@@ -66,6 +66,9 @@ def test_a_log_is_identified_reported_and_its_robot_written(capsys, tmp_path, ta
     assert _run(capsys, log, "--out", urdf)[0] == 0
     again = hybrid.Robot.from_urdf(urdf, tip="tip")
     assert again.chain == robot.chain and again.damping == pytest.approx(robot.damping, abs=1e-12)
+    for field in ("coulomb", "offset", "coulomb_speed"):  # the friction the URDF carries, read back
+        assert getattr(again, field) == pytest.approx(getattr(robot, field), abs=1e-12), field
+    assert "columns not read" not in text
     np.testing.assert_allclose(base.of(hybrid.linear_parameters(again)), list(want.values()), rtol=0,
                                atol=1e-4 * max(abs(v) for v in want.values()))
 
@@ -112,3 +115,13 @@ def test_a_parquet_log_without_pyarrow_says_to_install_it(capsys, tmp_path, tabl
     monkeypatch.setitem(__import__("sys").modules, "pyarrow", None)  # an import of it fails
     code, _, err = _run(capsys, log)
     assert code == 2 and err == "error: reading a Parquet log needs pyarrow: pip install pyarrow (or give a CSV log)\n"
+
+
+def test_columns_not_read_are_named(capsys, tmp_path, table):
+    """A column the identification does not read (a misspelt joint's, a note's) is said, not passed over."""
+    frame, _ = table
+    log = tmp_path / "log.csv"
+    frame.assign(**{"q[wrist_3]": 0.0, "note": "x"}).to_csv(log, index=False)
+    code, text, err = _run(capsys, log)
+    assert code == 0, err
+    assert "columns not read" in text and "q[wrist_3]" in text and "note" in text

@@ -64,7 +64,7 @@ def _hertz(text: str) -> float:
 
 def read_log(path, joints) -> dict[str, np.ndarray]:
     """The log's columns as arrays: ``t`` (N,), ``q`` and ``tau`` (N, n), ``qd`` and ``qdd`` (N, n) when
-    the table has them for every joint (else None)."""
+    the table has them for every joint (else None); ``unused``, the names of the columns not read."""
     path = files.regular_file(path, "log")
     kind = READERS.get(path.suffix.lower())
     if kind is None:
@@ -111,6 +111,8 @@ def read_log(path, joints) -> dict[str, np.ndarray]:
                                   "give numbers")
             arrays.append(values.to_numpy(dtype=float))
         out[what] = arrays[0] if what == "t" else np.column_stack(arrays)
+    read = {name for names in wanted.values() for name in names}
+    out["unused"] = [name for name in columns if name not in read]
     return out
 
 
@@ -156,6 +158,9 @@ def run(args) -> int:
         found = identify_dynamics(robot, log["t"], log["q"], log["tau"], qd=log["qd"], qdd=log["qdd"],
                                   cutoff_hz=args.cutoff)
     print(report(found, Path(args.log).name))
+    if log["unused"]:  # said, not silently passed over: a misspelt joint's column would be one
+        print(f"columns not read (not t, q, qd, qdd or tau of the joints {listed(robot.joint_names)}): "
+              f"{listed(log['unused'], 8)}")
     if out is not None:
         files.write_text(out, WRITERS[out.suffix.lower()](found.robot), overwrite=args.force)
         print(f"wrote {out}")

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import fields, replace
+from functools import lru_cache
 
 import numpy as np
 
@@ -224,14 +225,21 @@ def check_friction_mode(exp) -> None:
         q = exp.initial_state()[:robot.n]
     except HybridError:
         return  # no start to take it at: the run refuses it, saying why
-    B = robot.kind.rest_terms(robot, q)["B"][0]
-    rate = float(np.max(np.linalg.eigvals(np.linalg.solve(B, np.diag(robot.rest_viscosity))).real))
+    rate = friction_rate(robot, tuple(q.tolist()))
     if h * rate > 1.0:
         what, fix = (("Coulomb friction: about rest it is a viscosity F_v + F_c / v_s whose", "a larger Robot "
                       "coulomb_speed") if any(robot.coulomb) else
                      ("viscosity: its", "check the Robot's damping (in N m s/rad or N s/m)"))
         raise HybridError(f"integration_step = {h} s is too large for the joints' {what} fastest mode is {rate:.3g} "
                           f"rad/s; use integration_step <= {1.0 / rate:.2e} s or {fix}")
+
+
+@lru_cache(maxsize=1024)
+def friction_rate(robot, q: tuple) -> float:
+    """The joints' friction's fastest mode about rest at ``q`` [rad/s], the largest eigenvalue of ``B^-1 V``
+    (once per robot and start: a sweep's runs that differ in other settings share it)."""
+    B = robot.kind.rest_terms(robot, np.array(q))["B"][0]
+    return float(np.max(np.linalg.eigvals(np.linalg.solve(B, np.diag(robot.rest_viscosity))).real))
 
 
 #: short names of the references

@@ -32,6 +32,8 @@ Coulomb frictions ``>= 0``: a convex semidefinite program (cvxpy, solved by Clar
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 
 from hybrid.errors import HybridError
@@ -162,11 +164,15 @@ def consistent_parameters(robot: Robot, base: BaseParameters, R: np.ndarray, est
     prior.append(y[LINK_PARAMETERS * n:] - y0[LINK_PARAMETERS * n:])
     cost = cp.sum_squares(A @ y - b) + PRIOR_WEIGHT * cp.sum_squares(cp.hstack(prior))
     problem = cp.Problem(cp.Minimize(cost), constraints)
+    hint = ("check the torques' units against the URDF's (N m, N): torques far from the nominal model's scale "
+            "leave the program no solution; or identify with consistent=False")
     try:
-        problem.solve(solver=cp.CLARABEL)
+        with warnings.catch_warnings():  # an inaccurate solution is accepted: its residual is reported
+            warnings.simplefilter("ignore", UserWarning)
+            problem.solve(solver=cp.CLARABEL)
     except cp.error.SolverError as exc:
-        raise HybridError(f"the consistent parameters' program failed ({exc}); identify with consistent=False") \
+        raise HybridError(f"the consistent parameters' program failed ({str(exc).splitlines()[0][:80]}); {hint}") \
             from None
     if problem.status not in (cp.OPTIMAL, cp.OPTIMAL_INACCURATE) or y.value is None:
-        raise HybridError(f"the consistent parameters' program ended {problem.status}; identify with consistent=False")
+        raise HybridError(f"the consistent parameters' program ended {problem.status}; {hint}")
     return np.asarray(y.value) * scale

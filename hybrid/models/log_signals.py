@@ -44,6 +44,7 @@ ones (a simulation's); ``q'`` and ``q''`` not given are then differences of the 
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -270,7 +271,9 @@ def log_signals(robot_joints, t, q, tau, *, qd=None, qdd=None, cutoff_hz=None, s
     else:
         from scipy import signal
 
-        sos = signal.butter(ORDER, fc, fs=rate, output="sos")
+        with warnings.catch_warnings():  # a cutoff far below the rate: the design's own warning, refused below
+            warnings.simplefilter("ignore", signal.BadCoefficients)
+            sos = signal.butter(ORDER, fc, fs=rate, output="sos")
         edge = _edge(sos) + m
     if N < 2 * edge + least:
         because = f"filtering at {fc:g} Hz drops {edge}" if fc is not None else f"the differences drop {edge}"
