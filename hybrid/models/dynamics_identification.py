@@ -191,16 +191,15 @@ def joint_factors(robot: Robot, base: BaseParameters, signals: LogSignals) -> np
     return np.stack([np.vstack([f, np.zeros((p + 1 - len(f), p + 1))]) for f in factors])
 
 
-def _scales(robot: Robot, base: BaseParameters, signals: LogSignals) -> np.ndarray:
+def _scales(robot: Robot, base: BaseParameters, signals: LogSignals, torque: np.ndarray,
+            speed: np.ndarray) -> np.ndarray:
     """Each base parameter's scale: its independent parameter's link scale (``m``, ``m l`` or ``m l^2`` of the
-    nominal link), or for a joint's friction parameter the value that makes the joint's RMS torque in the
-    log (its viscosity's RMS speed, its Coulomb friction's RMS smooth sign, its offset's 1)."""
+    nominal link), or for a joint's friction parameter the value that makes the joint's RMS torque ``torque``
+    in the log (its viscosity's RMS speed ``speed``, its Coulomb friction's RMS smooth sign, its offset's 1)."""
     per_link = link_scales(*link_sizes(linear_parameters(robot), robot.n)).ravel()
     n = robot.n
-    torque = np.sqrt((signals.tau**2).mean(axis=0))
     sign = np.tanh(signals.qd / np.asarray(robot.coulomb_speed))
-    column = {"damping": np.sqrt((signals.qd**2).mean(axis=0)), "coulomb": np.sqrt((sign**2).mean(axis=0)),
-              "offset": np.ones(n)}
+    column = {"damping": speed, "coulomb": np.sqrt((sign**2).mean(axis=0)), "offset": np.ones(n)}
     joint = [torque[k % n] / max(column[name.partition("[")[0]][k % n], 1e-300)
              for k, name in enumerate(base.names[len(per_link):])]
     return np.concatenate([per_link, joint])[list(base.independent)]
@@ -313,11 +312,10 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
     rss = _residual_rms(factors, estimate, M) ** 2 * M
     dof = M - p / n  # each joint's share of the M n - p degrees of freedom
     variance = rss / dof if dof > 0 else np.full(n, np.nan)
-    torque_rms = np.sqrt((signals.tau**2).mean(axis=0))
+    torque_rms, speed_rms = (np.sqrt((x**2).mean(axis=0)) for x in (signals.tau, signals.qd))
     if weighted and dof > 0 and (np.sqrt(variance) > 1e-9 * torque_rms).all():  # else the log is exact: no noise
-        # each joint's rows over its noise's standard deviation
-        # relative to their geometric mean (the rows keep their scale: the consistent program's solver needs
-        # it), at most a million times apart
+        # each joint's rows over its noise's standard deviation, relative to their geometric mean (the rows keep
+        # their scale: the consistent program's solver needs it), at most a million times apart
         sigma = np.sqrt(variance)
         sigma = np.maximum(sigma, 1e-6 * sigma.max())
         weights = np.exp(np.log(sigma).mean()) / sigma
@@ -335,12 +333,13 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
     meat = np.einsum("j,jai,jak->ik", variance * weights**4, factors[:, :, :p], factors[:, :, :p])
     std = np.sqrt(np.clip(np.diag(bread @ meat @ bread), 0.0, None))
     nominal = base.of(linear_parameters(robot))
-    size = np.maximum(np.maximum(np.abs(estimate), np.abs(nominal)), SIZE_FLOOR * _scales(robot, base, signals))
+    floor = SIZE_FLOOR * _scales(robot, base, signals, torque_rms, speed_rms)
+    size = np.maximum(np.maximum(np.abs(estimate), np.abs(nominal)), floor)
     poorly = tuple(name for name, sd, v in zip(names, std, size) if sd > POORLY_EXCITED * v)
     if consistent:
         parameters = consistent_parameters(
             robot, base, R, estimate, noise_variance=float((rss * weights**2).sum()) / max(M * n - p, 1), rows=M * n,
-            torque_rms=torque_rms, speed_rms=np.sqrt((signals.qd**2).mean(axis=0)))
+            torque_rms=torque_rms, speed_rms=speed_rms)
         fitted = base.of(parameters)
     else:
         parameters = linear_parameters(robot)

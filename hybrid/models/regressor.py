@@ -19,11 +19,12 @@ from hybrid.models.robot import Robot, as_robot
 from hybrid.models.urdf import LinkInertia
 from hybrid.native import units
 from hybrid.native.binding import is_batch
-from hybrid.spec.chain import linear_parameter_names
+from hybrid.spec.chain import LINEAR, linear_parameter_names
 from hybrid.validate import inertia_problem
 
-#: the parameters of ``pi`` per link, in its order: mass, first moment, inertia about the joint frame's origin
-LINK_PARAMETERS = 10
+#: the parameters of ``pi`` per link (:data:`hybrid.spec.chain.LINEAR`): mass, first moment, inertia about the
+#: joint frame's origin
+LINK_PARAMETERS = len(LINEAR)
 #: the joint parameters (by the name before ``[``) that are physical only when >= 0: friction opposes motion
 NONNEGATIVE = ("damping", "coulomb")
 

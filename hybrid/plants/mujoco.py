@@ -164,6 +164,8 @@ class MujocoPlant(Plant):
         self.exp, self.robot = exp, robot
         self._coulomb, self._coulomb_speed, self._offset = (np.array(getattr(robot, k), float)
                                                             for k in ("coulomb", "coulomb_speed", "offset"))
+        # the joints' Coulomb friction and offsets, when the robot has any (every RK4 stage calls _passive)
+        self._joint_friction = bool(self._coulomb.any() or self._offset.any())
         self.generated = exp.plant()  # the record, the sensor's reading and the conditioning
         self.record, self.nq = self.generated.record, robot.n
         self.conditioning, self.conditioning_name = self.generated.conditioning, self.generated.conditioning_name
@@ -243,7 +245,9 @@ class MujocoPlant(Plant):
         qvel = data.qvel
         s, sd = data.qpos[n:], qvel[n:]
         Fc = sensor.stiffness * (s - data.site_xpos[self._site]) + sensor.damping * (sd - J @ qvel[:n])
-        data.qfrc_passive[:n] += J.T @ Fc - self._coulomb * np.tanh(qvel[:n] / self._coulomb_speed) - self._offset
+        data.qfrc_passive[:n] += J.T @ Fc
+        if self._joint_friction:
+            data.qfrc_passive[:n] -= self._coulomb * np.tanh(qvel[:n] / self._coulomb_speed) + self._offset
         data.qfrc_passive[n:] += self._surface_force(s, sd) - Fc
 
     def _surface_force(self, s: np.ndarray, sd: np.ndarray) -> np.ndarray:
