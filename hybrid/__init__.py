@@ -18,7 +18,8 @@ The public API, by subpackage:
   :class:`LinePath`; on any surface :class:`WaypointPath`, :class:`RasterPath`,
   :class:`SpiralPath`); the task frame at points of any surface (:func:`task_frame`);
 - control (:mod:`hybrid.control`): the compiled law (:class:`DecouplingLaw`, :func:`decoupling_law`),
-  the :class:`Controller` component, its options (:class:`Posture`, a null-space posture task;
+  the :class:`Controller` component, its settings in three groups (:class:`Tracking`, :class:`Limits`,
+  :class:`Sensing`), its options (:class:`Posture`, a null-space posture task;
   :class:`ContactLoss`) and its schemes (:data:`SCHEMES`); :class:`Gains`, :class:`Step`; a controller
   described in a TOML file (:func:`read_controller_config`); a force/torque sensor's bias and tool
   (:class:`WrenchSensor`, the :class:`Tool` beyond it) identified from readings at rest
@@ -43,6 +44,7 @@ from typing import TYPE_CHECKING
 
 from hybrid._version import __version__
 from hybrid.control.controller import Controller
+from hybrid.control.controller_settings import Limits, Sensing, Tracking
 from hybrid.control.estimation import EstimatedSurface
 from hybrid.control.fault import FaultReaction
 from hybrid.control.identification import ToolIdentification, identify_tool, tare
@@ -147,4 +149,5 @@ __all__ = [
     "sweep", "tare", "task_frame", "tracing_experiment", "ur5", "with_linear_parameters",
     "Tuning", "tune",
     "ExcitationTrajectory", "excitation_trajectory",
+    "Tracking", "Limits", "Sensing",
 ]
