@@ -39,7 +39,7 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
     law = PaperLaw(quick, rep, add)
     groups = [("import hybrid against import numpy, fresh processes",
                partial(import_benchmarks, 5 if quick else 21, add)),
-              ("first use: the paper's simulate and paper command, fresh process and cache",
+              ("first use: the paper's simulate, paper command and first sweep, fresh process and cache",
                partial(cold_benchmarks, quick, add)),
               *((f"F* in C ({b} backend)", partial(law.law_in_c, b)) for b in ("sympy", "casadi")),
               ("F* from Python, single state", law.one_state),
