@@ -42,8 +42,8 @@ class CirclePath(Path):
     """A circle in a plane of constant z, run counter-clockwise seen from +z.
 
     The arc length ``s`` [m] is 0 on the circle's +x side and grows counter-clockwise: the point at
-    ``s`` is ``center + radius (cos(s / radius), sin(s / radius), 0)``, base axes, so that a run along
-    the task axis ``t1`` (for ``e`` = base z) goes the way of growing ``s``. The path of a disc
+    ``s`` is ``center + radius (cos(s / radius), sin(s / radius), 0)``, base axes: the way the task axis
+    ``t1`` runs (for ``e`` = base z) on a disc or a sphere touched from outside. The path of a disc
     (:func:`~hybrid.Circle`) and a sphere's latitude circle (:meth:`~hybrid.Sphere.latitude_circle`)
     are such circles.
 
