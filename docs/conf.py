@@ -45,12 +45,15 @@ templates_path = ["_templates"]
 
 # ------------------------------------------------------------------------- API reference
 autosummary_generate = True
-autodoc_default_options = {"members": True, "inherited-members": False, "show-inheritance": True}
+autodoc_default_options = {"members": True, "show-inheritance": True}  # inherited members: only where the page asks
 autodoc_member_order = "bysource"
 autodoc_typehints = "none"  # the docstrings say what each argument takes
 numpydoc_show_class_members = False
 numpydoc_class_members_toctree = False
 numpydoc_xref_param_type = False
+#: the classes whose page also shows what they take from a base the reference does not list: an
+#: experiment's sample counts and gains in force, a path on a surface's points, normals and curvature
+autosummary_context = {"showing_inherited": ("Experiment", "WaypointPath", "RasterPath", "SpiralPath")}
 
 # ------------------------------------------------------------------------------ MyST
 myst_heading_anchors = 3
