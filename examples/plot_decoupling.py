@@ -4,7 +4,8 @@ The decoupling: every task axis becomes an integrator, ``y' = a``
 
 The law ``F* = F*(r, r', a)`` is built so that the task velocities ``y = R v`` (``v`` the tip's
 twist, ``R`` the task frame at the contact point) obey ``y' = a``: each task axis an integrator,
-decoupled from the others, whatever the orientation of the frame (docs/conventions.md §2, §9).
+decoupled from the others, whatever the orientation of the frame
+(:ref:`conventions §2 <conventions-law>`, :ref:`§9 <conventions-spatial>`).
 
 This example checks it on the exact model, from the public API alone: the law's torque goes into
 the arm's own dynamics ``B(q) q'' + n(q, q') = tau + J^T F_c``, and the resulting task acceleration

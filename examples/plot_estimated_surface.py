@@ -6,7 +6,7 @@ The controller of the 3-D experiment is usually told the sphere it slides on. Wi
 ``controller_surface=hybrid.EstimatedSurface(...)`` it is not: the compiled step estimates the
 unit normal at each sample from the contact force (friction removed along the sliding direction)
 and from the tip's velocity (tangent to the surface), and builds the task frame from that estimate
-(docs/conventions.md §13). The plant still has the true sphere.
+(:ref:`conventions §13 <conventions-estimated-surface>`). The plant still has the true sphere.
 
 Here the estimate starts 8 degrees off the true normal; it is compared with a controller told the
 sphere, and with one told a flat plane through the start point, whose task frame stays the start's

@@ -7,11 +7,12 @@ approach speed, the environment's stiffness, the controller's filter and the sen
 delay; and the paper's Appendix (a nearly rigid contact chatters) in the elastic model.
 
 Every run starts 5 mm off the surface at rest (``start_gap``) and approaches at ``approach_speed``
-until the measured force passes 0.5 N, then holds 10 N with no tangential motion (conventions §4);
-the metrics are conventions §8's (the first touch's settling band is 5 % of F_d). It prints the
-study's tables (markdown, as the documentation's study of the first touch gives them) and draws the
-touch on 1e5 and 1e8 N/m; ``--out DIR`` also writes the tables as CSV and the figure as PNG. A few
-seconds once the compiled loops are built (about 30 s from an empty cache)::
+until the measured force passes 0.5 N, then holds 10 N with no tangential motion
+(:ref:`conventions §4 <conventions-loops>`); the metrics are those of
+:ref:`conventions §8 <conventions-metrics>` (the first touch's settling band is 5 % of F_d). It
+prints the study's tables (markdown, as the documentation's study of the first touch gives them)
+and draws the touch on 1e5 and 1e8 N/m; ``--out DIR`` also writes the tables as CSV and the figure
+as PNG. A few seconds once the compiled loops are built (about 30 s from an empty cache)::
 
     python examples/plot_first_touch.py [--out DIR]
 """

@@ -2,15 +2,16 @@
 The paper's experiment: force and speed against their references
 =================================================================
 
-The paper's two-link planar arm slides on a disc (docs/conventions.md §5): the normal force
-reference steps from 10 N to 20 N at 0.4 s, the tangential speed reference from 0.3 m/s to
-0.6 m/s at 1 s. The controller's model of the arm is 10 % heavy and compensates half the
-joint viscosity, and Coulomb friction of 0.2 acts at the contact.
+The paper's two-link planar arm slides on a disc
+(:ref:`conventions §5 <conventions-paper-experiment>`): the normal force reference steps from 10 N
+to 20 N at 0.4 s, the tangential speed reference from 0.3 m/s to 0.6 m/s at 1 s. The controller's
+model of the arm is 10 % heavy and compensates half the joint viscosity, and Coulomb friction of
+0.2 acts at the contact.
 
-Two schemes run the same loops: the task-space decoupling law, which cancels the *measured*
-contact force, and Khatib's operational-space scheme, which feeds forward the *desired* normal
-force instead (conventions §7). The force step is a disturbance orthogonal to the velocity loop:
-the speed's dip after it is what the decoupling is about.
+Two schemes run the same loops: the task-space decoupling law, which cancels the *measured* contact
+force, and Khatib's operational-space scheme, which feeds forward the *desired* normal force instead
+(:ref:`conventions §7 <conventions-baselines>`). The force step is a disturbance orthogonal to the
+velocity loop: the speed's dip after it is what the decoupling is about.
 """
 
 import matplotlib.pyplot as plt
@@ -42,7 +43,7 @@ ax_v.set_title("the paper's arm on the disc: friction 0.2, model 10 % heavy", fo
 fig.tight_layout()
 
 # %%
-# The same comparison in numbers: every run reports the metrics of conventions §8.
+# The same comparison in numbers: every run reports the metrics of :ref:`conventions §8 <conventions-metrics>`.
 for name in ("speed_drop_after_force_step_m_per_s", "force_overshoot_N", "steady_state_force_error_N",
              "rms_force_error_N"):
     print(f"{name:40s} task {results['task'].metrics[name]:9.4f}   khatib {results['khatib'].metrics[name]:9.4f}")

@@ -19,6 +19,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import hybrid
+from hybrid.plots import plot_sweep
 
 base = hybrid.paper_experiment(duration=1.0)  # the force steps at 0.4 s: one second is enough
 parameters = {
@@ -45,3 +46,17 @@ ax.set_ylabel("speed drop after the force step [mm/s]")
 ax.grid(alpha=0.3)
 ax.legend(fontsize=7, ncol=2)
 fig.tight_layout()
+
+# %%
+# The same table as heatmaps (:func:`hybrid.plots.plot_sweep`, what ``python -m hybrid sweep`` draws):
+# the speed drop over friction and speed, a row of panels per scheme. The panels share one colour
+# scale and one colour bar, so that a colour is the same drop in both: Khatib's grows with the
+# friction, the task law's hardly does.
+fig = plot_sweep(table, "contact.friction", "speed_reference.before", "speed_drop_after_force_step_m_per_s",
+                 rows="controller")
+
+# %%
+# Their ratio, the task law's drop over Khatib's, on a logarithmic scale centred at 1: blue where the
+# task law's is the smaller, a black line where the two are equal.
+fig = plot_sweep(table, "contact.friction", "speed_reference.before", "speed_drop_after_force_step_m_per_s",
+                 rows="controller", ratio=("task", "khatib"))

@@ -2,11 +2,11 @@
 A UR5 tracing a circle on a sphere
 ==================================
 
-The 3-D analogue of the paper's experiment (docs/conventions.md §10): the UR5 (its URDF is
-shipped with the package) presses on a sphere of radius 0.15 m and slides along the latitude
-circle 60 degrees from the top. The normal force reference steps from 10 N to 20 N at 0.5 s, the
-speed along ``t1`` from 0.15 m/s to 0.3 m/s at 1.5 s; the other five task axes (the second
-tangent and the three rotations) hold zero velocity.
+The 3-D analogue of the paper's experiment (:ref:`conventions §10 <conventions-3d-experiment>`):
+the UR5 (its URDF is shipped with the package) presses on a sphere of radius 0.15 m and slides
+along the latitude circle 60 degrees from the top. The normal force reference steps from 10 N
+to 20 N at 0.5 s, the speed along ``t1`` from 0.15 m/s to 0.3 m/s at 1.5 s; the other five task
+axes (the second tangent and the three rotations) hold zero velocity.
 
 Three schemes on the same arm: the task-space decoupling law, Khatib's and Raibert & Craig's
 (which has no dynamic decoupling).
