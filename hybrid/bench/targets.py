@@ -82,6 +82,21 @@ STANDALONE_SIZE = "standalone controller, .text of the compiled object"
 STANDALONE_COMPILE = "standalone controller, compile time of the generated C"
 
 
+# ------------------------------------------------------------------ constant models (after "ARM: ")
+
+#: the kernels timed with the parameters given at run time and compiled in, and how a row names each
+CONSTANT_KERNELS = {"inverse_dynamics": "inverse dynamics (RNEA)",
+                    "forward_dynamics": "forward dynamics (CRBA, RNEA, L D L^T)",
+                    "robot_terms": "r, rotation, J, J'q', B, n (robot_terms)"}
+
+
+def constant_row(kernel: str, constant: bool) -> str:
+    """The name of the row of ``kernel`` (a key of :data:`CONSTANT_KERNELS`) in C, its parameters compiled in
+    (a constant model) or given at run time."""
+    how = "parameters compiled in (constant model)" if constant else "run-time parameters"
+    return f"{CONSTANT_KERNELS[kernel]} in C, per call, {how}"
+
+
 # ------------------------------------------------------------------ the targets
 
 
