@@ -20,6 +20,9 @@ from sphinx.util import logging
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "docs"))  # the gallery's plotly scraper
+
+import gallery_plotly  # noqa: E402
 
 import hybrid  # noqa: E402
 
@@ -69,7 +72,9 @@ sphinx_gallery_conf = {
     "download_all_examples": False,
     "remove_config_comments": True,
     "matplotlib_animations": False,
-    "image_scrapers": ("matplotlib",),
+    # plotly's figures with plotly.js from the documentation's own _static folder: the pages work offline
+    "image_scrapers": ("matplotlib", "gallery_plotly.scraper"),
+    "ignore_repr_types": gallery_plotly.IGNORE_REPR,
     "reset_modules": ("matplotlib",),
     "abort_on_example_error": True,
     "show_memory": False,
@@ -120,6 +125,7 @@ def _gallery_headers_in_rest(app, config) -> None:
 
 def setup(app):
     app.connect("config-inited", _check_api_listed)
+    app.connect("build-finished", gallery_plotly.write_plotlyjs)
     app.connect("autodoc-process-docstring", _defined_data_comment)
     # after sphinx-gallery fills its configuration (priority 10), before it reads the examples
     app.connect("config-inited", _gallery_headers_in_rest, priority=11)

@@ -142,6 +142,15 @@ def arm_frame(result, sample: int, force_scale: float | None = None) -> ArmFrame
     return arm_frames(result, [int(sample) + (last + 1 if sample < 0 else 0)], force_scale)[0]
 
 
+def playback_fps(result, samples, fps: float | None = None) -> float:
+    """Pictures per second that play the pictures at the control ``samples`` of ``result``: ``fps`` if
+    given (a positive number), else real time, within 1 to 30."""
+    if fps is None:
+        step = (samples[1] - samples[0]) * result.experiment.sample_time if len(samples) > 1 else 1.0
+        fps = min(30.0, max(1.0, 1.0 / step))
+    return _positive("fps", fps)
+
+
 def _positive(name: str, value) -> float:
     if isinstance(value, bool) or not isinstance(value, numbers.Real) or not np.isfinite(value) or value <= 0:
         raise HybridError(f"{name} = {shown(value, 40)}; give a positive number")
@@ -159,9 +168,9 @@ def _across(direction: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return a, np.cross(direction, a)
 
 
-def _surface_points(surface, path: np.ndarray) -> np.ndarray | None:
-    """A wireframe of ``surface`` around the sensor tip's ``path``, ``(3, rows, cols)``; None for a
-    surface drawn by its contact points."""
+def surface_grid(surface, path: np.ndarray) -> np.ndarray | None:
+    """A grid of points on ``surface`` around the sensor tip's ``path``, ``(3, rows, cols)`` (drawn as a
+    wireframe); None for a surface drawn by its contact points (:func:`touched_points`)."""
     if isinstance(surface, Sphere):
         u, v = np.meshgrid(np.linspace(0, 2 * np.pi, 25), np.linspace(0, np.pi, 13))
         c, rho = np.asarray(surface.center), surface.radius
@@ -192,6 +201,23 @@ def _facets_near(surface, path: np.ndarray) -> np.ndarray | None:
     corners = surface.vertices[surface.faces]
     near = np.all((corners >= path.min(axis=0) - MARGIN) & (corners <= path.max(axis=0) + MARGIN), axis=2)
     return corners[near.any(axis=1)]
+
+
+def section_ends(section, path: np.ndarray) -> np.ndarray:
+    """The planar arm's straight ``section`` (a line) from 0.1 m before the sensor tip's ``path`` to 0.1 m
+    beyond it, ``(2, 2)``."""
+    normal = np.asarray(section.normal)
+    tangent = np.array([-normal[1], normal[0]])
+    along = (path - section.point) @ tangent
+    return np.asarray(section.point) + np.outer([along.min() - 0.1, along.max() + 0.1], tangent)
+
+
+def touched_points(result) -> np.ndarray:
+    """The sensor tip at the control samples of ``result`` where it touched the surface, ``(k, d)``: how a
+    surface with no grid (:func:`surface_grid`) is drawn."""
+    every = result.experiment.steps_per_sample
+    path = _columns(result, ("s_x", "s_y", "s_z")[:_dimension(result)])[::every]
+    return path[result.contact_force[::every] > 0]
 
 
 class ArmPicture:
@@ -231,13 +257,10 @@ class ArmPicture:
             if hasattr(section, "radius"):
                 ax.add_patch(plt.Circle(section.center, section.radius, color="0.85", ec="0.5", lw=1.0))
                 return np.asarray(section.center) + section.radius * np.array([[-1, -1], [1, 1]])
-            normal = np.asarray(section.normal)
-            tangent = np.array([-normal[1], normal[0]])
-            along = (path - section.point) @ tangent
-            ends = np.asarray(section.point) + np.outer([along.min() - 0.1, along.max() + 0.1], tangent)
+            ends = section_ends(section, path)
             ax.plot(*ends.T, color="0.5", lw=1.5)
             return ends
-        grid = _surface_points(exp.surface, path)
+        grid = surface_grid(exp.surface, path)
         if grid is not None:
             ax.plot_wireframe(*grid, color="0.8", lw=0.5)
             return grid.reshape(3, -1).T
@@ -245,7 +268,7 @@ class ArmPicture:
         if facets is not None and len(facets):
             ax.add_collection3d(Line3DCollection(facets, colors="0.85", linewidths=0.3))
             return facets.reshape(-1, 3)
-        touched = path[self.result.contact_force[::exp.steps_per_sample] > 0]
+        touched = touched_points(self.result)
         ax.scatter(*touched.T, s=2, color="0.6", label="contact points")
         return touched
 
@@ -321,10 +344,7 @@ def animate(result, every: int | None = None, out=None, *, fps: float | None = N
     path = _out_path(out)
     samples = chosen_samples(result, every)
     scale = default_force_scale(result) if force_scale is None else _positive("force_scale", force_scale)
-    if fps is None:
-        step = (samples[1] - samples[0]) * result.experiment.sample_time if len(samples) > 1 else 1.0
-        fps = min(30.0, max(1.0, 1.0 / step))
-    fps = _positive("fps", fps)
+    fps = playback_fps(result, samples, fps)
     frames = arm_frames(result, samples, scale)
     picture = ArmPicture(result, frames, scale, title)
     picture.draw(frames[0])  # the figure shows the start until the animation runs

@@ -37,7 +37,7 @@ GENERATED = ROOT / "generated"
 #: the generator and the libraries only some commands need: none may load with ``import hybrid`` (nor the
 #: reader of a controller's file and its schema)
 HEAVY = ("sympy", "casadi", "hybrid.codegen", "pandas", "matplotlib", "mujoco", "hybrid.control.config", "scipy",
-         "cvxpy")
+         "cvxpy", "plotly")
 REFUSAL = "error: regenerate needs a checkout of the project's repository"
 
 #: Imports of the project's own modules made inside a function, and why each is not at module level.
@@ -46,6 +46,7 @@ LAZY_IMPORTS = {
     ("hybrid.cli.sweep", "hybrid.plots"): "matplotlib loads only when a sweep draws its heatmaps",
     ("hybrid.simulation.results", "hybrid.plots"): "matplotlib loads only when a result is drawn (res.plot())",
     ("hybrid.simulation.results", "hybrid.animation"): "matplotlib loads only when a result is animated",
+    ("hybrid.simulation.results", "hybrid.view3d"): "plotly (an optional extra) loads only when a result is viewed",
     ("hybrid.plants.registry", "hybrid.plants.mujoco"): "MuJoCo is an optional extra: it loads when a run asks",
     ("hybrid.plants.registry", "hybrid.plants.mujoco_contact"): "MuJoCo is an optional extra: it loads when a run "
                                                                "asks",

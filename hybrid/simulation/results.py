@@ -269,6 +269,17 @@ class SimulationResult:
 
         return animate(self, every, out, fps=fps, overwrite=overwrite, force_scale=force_scale, title=title)
 
+    def view(self, every: int | None = None, *, force_scale: float | None = None, fps: float | None = None,
+             title: str | None = None, out: str | Path | None = None, overwrite: bool = False):
+        """The arm doing the task as an interactive 3-D figure for the browser (a plotly ``Figure``,
+        :func:`hybrid.view`): the pictures :meth:`animate` draws, with a play button and a slider. With
+        ``out`` (an ``.html``) it is also written there as one file that opens offline, atomically; an
+        existing file is refused unless ``overwrite``. Needs plotly (``pip install
+        'hybrid-decoupling[view]'``)."""
+        from hybrid.view3d import view
+
+        return view(self, every, force_scale=force_scale, fps=fps, title=title, out=out, overwrite=overwrite)
+
     def save(self, path: str | Path, overwrite: bool = False) -> Path:
         """Write the run to an ``.npz`` file: every array, the units, the plant's record, the metrics and
         the experiment's settings (:meth:`Experiment.to_dict`); :meth:`load` reads it back.
