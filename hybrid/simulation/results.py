@@ -271,11 +271,33 @@ class SimulationResult:
 
     def view(self, every: int | None = None, *, force_scale: float | None = None, fps: float | None = None,
              title: str | None = None, out: str | Path | None = None, overwrite: bool = False):
-        """The arm doing the task as an interactive 3-D figure for the browser (a plotly ``Figure``,
-        :func:`hybrid.view`): the pictures :meth:`animate` draws, with a play button and a slider. With
-        ``out`` (an ``.html``) it is also written there as one file that opens offline, atomically; an
-        existing file is refused unless ``overwrite``. Needs plotly (``pip install
-        'hybrid-decoupling[view]'``)."""
+        """The arm doing the task as an interactive 3-D figure for the browser (:func:`hybrid.view`).
+
+        The pictures :meth:`animate` draws, with a play button and a slider. Needs plotly (``pip install
+        'hybrid-decoupling[view]'``).
+
+        Parameters
+        ----------
+        every : int, optional
+            A frame every this many control samples, and one at the run's end; default about 60 frames.
+        force_scale : float, optional
+            The force arrow's length per newton [m/N]; default the run's largest recorded contact force
+            drawn 0.1 m long.
+        fps : float, optional
+            Frames per second when played; default real time, within 1 to 30.
+        title : str, optional
+            The figure's title.
+        out : str or pathlib.Path, optional
+            Also write the figure there, atomically, as one ``.html`` file that opens offline (plotly.js
+            inside).
+        overwrite : bool
+            Whether an existing ``out`` is replaced (default False: refused).
+
+        Returns
+        -------
+        plotly.graph_objects.Figure
+            The figure, one animation frame per chosen sample.
+        """
         from hybrid.view3d import view
 
         return view(self, every, force_scale=force_scale, fps=fps, title=title, out=out, overwrite=overwrite)
