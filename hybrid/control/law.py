@@ -1,9 +1,10 @@
-"""The decoupling law ``F*(r, r', a)`` of any arm on any surface, evaluated by generated C.
+r"""The decoupling law :math:`F^*(r, \dot r, a)` of any arm on any surface, evaluated by generated C.
 
-``F* = Lambda (R^T (a - R' v) - J' q') + Jbar^T n - F_c`` (``Lambda = (J B^-1 J^T)^-1``,
-``Jbar^T = Lambda J B^-1``) makes the task axes' accelerations ``y' = R v' + R' v`` equal the
-commanded ``a``; the joint torques are ``tau = J^T F* + (I - J^T Jbar^T) tau0``, a redundant
-arm's ``tau0`` acting in the task's null space only. One :class:`DecouplingLaw` serves every
+:math:`F^* = \Lambda \left(R^T (a - \dot R v) - \dot J \dot q\right) + \bar J^T n - F_c`, with
+:math:`\Lambda = (J B^{-1} J^T)^{-1}` and :math:`\bar J^T = \Lambda J B^{-1}`, makes the task axes'
+accelerations :math:`\dot y = R \dot v + \dot R v` equal the commanded :math:`a`; the joint torques are
+:math:`\tau = J^T F^* + (I - J^T \bar J^T)\, \tau_0`, a redundant arm's :math:`\tau_0` acting in the task's
+null space only. One :class:`DecouplingLaw` serves every
 arm, from one of two derivations of the same equations:
 
 - ``backend="rigid_body"``: the recursive rigid-body algorithms (CasADi), generated for the
