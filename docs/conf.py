@@ -36,6 +36,7 @@ extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.mathjax",
+    "sphinx-mathjax-offline",  # MathJax from the build's _static/, not a CDN: math typeset offline too
     "numpydoc",
     "myst_parser",
     "sphinx_gallery.gen_gallery",

@@ -21,25 +21,34 @@ import numpy as np
 import hybrid
 from hybrid.plots import plot_sweep
 
-base = hybrid.paper_experiment(duration=1.0)  # the force steps at 0.4 s: one second is enough
+# the force steps at 0.4 s: one second is enough
+base = hybrid.paper_experiment(duration=1.0)
 parameters = {
     "controller": ["task", "khatib"],
-    "contact.friction": np.linspace(0.0, 0.5, 11).tolist(),  # a dotted name reaches into a setting
-    "speed_reference.before": [0.1, 0.3, 0.5],  # the speed while the force steps [m/s]
+    # a dotted name reaches into a setting
+    "contact.friction": np.linspace(0.0, 0.5, 11).tolist(),
+    # the speed while the force steps [m/s]
+    "speed_reference.before": [0.1, 0.3, 0.5],
 }
-table = hybrid.sweep(base, parameters)  # 66 runs, on a pool of processes (every core)
-print(table[["controller", "contact.friction", "speed_reference.before",
-             "speed_drop_after_force_step_m_per_s", "status"]].head())
+# 66 runs, on a pool of processes (every core)
+table = hybrid.sweep(base, parameters)
+DROP = "speed_drop_after_force_step_m_per_s"
+shown = table[["controller", "contact.friction",
+               "speed_reference.before", DROP, "status"]]
+print(shown.head().to_string(
+    header=["scheme", "friction", "speed", "drop [m/s]", "status"]))
 print(table["status"].value_counts().to_dict())
 
 # %%
 # The speed drop against friction, a line per scheme and speed.
 fig, ax = plt.subplots(figsize=(7, 4))
 styles = {"task": "-", "khatib": "--"}
-for (scheme, speed), rows in table.groupby(["controller", "speed_reference.before"]):
+colors = {0.1: "tab:blue", 0.3: "tab:orange", 0.5: "tab:green"}
+for (scheme, speed), rows in table.groupby(
+        ["controller", "speed_reference.before"]):
     rows = rows.sort_values("contact.friction")
-    ax.plot(rows["contact.friction"], 1000 * rows["speed_drop_after_force_step_m_per_s"], styles[scheme],
-            marker="o", ms=3, color={0.1: "tab:blue", 0.3: "tab:orange", 0.5: "tab:green"}[speed],
+    ax.plot(rows["contact.friction"], 1000 * rows[DROP],
+            styles[scheme], marker="o", ms=3, color=colors[speed],
             label=f"{scheme}, {speed} m/s")
 ax.set_xlabel("friction coefficient")
 ax.set_ylabel("speed drop after the force step [mm/s]")

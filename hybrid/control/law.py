@@ -81,10 +81,12 @@ class DecouplingLaw:
     Examples
     --------
     >>> import hybrid
-    >>> law = hybrid.DecouplingLaw(hybrid.paper_arm(), hybrid.Circle((0.5, 0.0), 0.2))
+    >>> disc = hybrid.Circle((0.5, 0.0), 0.2)
+    >>> law = hybrid.DecouplingLaw(hybrid.paper_arm(), disc)
     >>> law.backend, law.axes, law.wrench_size
     ('sympy', (0, 2), 2)
-    >>> force, torque = law.evaluate([0.3, 1.2], [0.0, 0.0], [0.0, 1.0], [0.0, 0.0])
+    >>> q, qdot, a, Fc = [0.3, 1.2], [0.0, 0.0], [0.0, 1.0], [0, 0]
+    >>> force, torque = law.evaluate(q, qdot, a, Fc)
     >>> force.shape, torque.shape
     ((2,), (2,))
     """
@@ -357,9 +359,11 @@ def decoupling_law(robot: Robot | Arm, surface: Surface, curvature: bool = False
     --------
     >>> import numpy as np
     >>> import hybrid
-    >>> law = hybrid.decoupling_law(hybrid.paper_arm(), hybrid.Circle((0.5, 0.0), 0.2))
+    >>> disc = hybrid.Circle((0.5, 0.0), 0.2)
+    >>> law = hybrid.decoupling_law(hybrid.paper_arm(), disc)
     >>> q = np.tile([0.3, 1.2], (4, 1))  # four states in one call
-    >>> law.torque(q, np.zeros((4, 2)), np.zeros((4, 2)), np.zeros((4, 2))).shape
+    >>> zeros = np.zeros((4, 2))
+    >>> law.torque(q, zeros, zeros, zeros).shape
     (4, 2)
     """
     return DecouplingLaw(robot, surface, curvature, frame_direction, axes, backend, singular_tol)

@@ -105,7 +105,8 @@ class Posture:
     Examples
     --------
     >>> import hybrid
-    >>> posture = hybrid.Posture((0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785))
+    >>> rest = (0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785)
+    >>> posture = hybrid.Posture(rest)
     >>> posture.stiffness, posture.damping
     (25.0, 10.0)
     >>> posture.as_array().shape
@@ -164,7 +165,8 @@ class Reference:
     >>> import hybrid
     >>> hybrid.Reference.of("force_reference", 10.0)
     Reference(step=(10.0, 10.0, 0.0), value=None, rate=None)
-    >>> hybrid.Reference.of("force_reference", hybrid.Step(10.0, 20.0, 0.4)).step
+    >>> step = hybrid.Step(10.0, 20.0, 0.4)
+    >>> hybrid.Reference.of("force_reference", step).step
     (10.0, 20.0, 0.4)
     """
 

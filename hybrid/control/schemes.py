@@ -78,7 +78,8 @@ class TaskDecoupling(Scheme):
     The default scheme of a controller:
 
     >>> import hybrid
-    >>> hybrid.TaskDecoupling().name, hybrid.TaskDecoupling().feeds_desired_force
+    >>> scheme = hybrid.TaskDecoupling()
+    >>> scheme.name, scheme.feeds_desired_force
     ('task', False)
     """
 

@@ -575,7 +575,8 @@ class Cylinder(Surface):
     Examples
     --------
     >>> import hybrid
-    >>> pillar = hybrid.Cylinder(point=(0.5, 0.0, 0.0), axis=(0.0, 0.0, 1.0), radius=0.2)
+    >>> pillar = hybrid.Cylinder(point=(0.5, 0.0, 0.0),
+    ...                          axis=(0.0, 0.0, 1.0), radius=0.2)
     >>> pillar.normal_at([0.3, 0.0, 0.1]).tolist()
     [-1.0, 0.0, 0.0]
     >>> pillar.circle_at([0.3, 0.0, 0.1])  # doctest: +ELLIPSIS

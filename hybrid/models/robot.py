@@ -198,7 +198,8 @@ class Robot:
         Examples
         --------
         >>> import hybrid
-        >>> robot = hybrid.Robot.from_urdf(hybrid.UR5_URDF, tip="tool0")
+        >>> robot = hybrid.Robot.from_urdf(hybrid.UR5_URDF,
+        ...                                tip="tool0")
         >>> robot.n
         6
         """
