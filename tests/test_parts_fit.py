@@ -1,5 +1,5 @@
 """The fit of a part's surface itself: the solver's coarse grids against the B-spline they stand for and against
-the diagonal preconditioner alone."""
+the diagonal preconditioner alone, and the default band of a small part."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import pytest
 import hybrid.geometry.part_fit as part_fit
 from hybrid.geometry.bspline import SplineGrid
 from hybrid.geometry.fit_solver import coarse_shape, coarsened, refined
-from hybrid.geometry.parts import MeshSurface
+from hybrid.geometry.parts import DEFAULT_BAND, MeshSurface
 
 trimesh = pytest.importorskip("trimesh")
 
@@ -82,3 +82,23 @@ def test_the_coarse_grids_give_the_diagonals_fit_in_far_fewer_iterations(fits):
     assert np.abs(phi - phi_0).max() <= 1e-5
     cos = np.einsum("ij,ij->i", g, g_0) / np.linalg.norm(g, axis=1) / np.linalg.norm(g_0, axis=1)
     assert np.degrees(np.arccos(np.clip(cos, -1, 1))).max() <= 0.03
+
+
+# ----------------------------------------------------------------------------------------- the default band
+
+
+def test_a_small_parts_default_band_is_a_quarter_of_its_size():
+    """A sphere 2 cm across: its band a quarter of its bounding box's diagonal (not 3 cm, a grid four times the
+    part's size), the surface still the sphere's within the band; a 0.3 m part keeps the 3 cm."""
+    vertices, faces = sphere(0.01, subdivisions=4)
+    small = MeshSurface(vertices, faces)
+    diagonal = float(np.linalg.norm(np.ptp(vertices, axis=0)))
+    assert small.band == pytest.approx(diagonal / 4)
+    assert small.spacing == pytest.approx(diagonal / 50)
+    assert np.prod(small.grid.coefficients.shape) <= 70 ** 3  # (123 ** 3 with the 3 cm band)
+    points, off = near_sphere(0.01, 2000, small.band)
+    phi = small.evaluate(points)[0]
+    assert np.isfinite(phi).all()
+    assert np.abs(phi - off).max() <= 1e-4
+    large = MeshSurface(*sphere(0.15), spacing=0.01)
+    assert large.band == DEFAULT_BAND

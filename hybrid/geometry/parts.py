@@ -49,6 +49,9 @@ PROJECTION_STEPS = 20
 #: how far from the part [m] its surface is defined by default (at least three cells): the arm tip reaches into
 #: the part as far as the sensor deflects (2 cm at 20 N on the default sensor of 1000 N/m)
 DEFAULT_BAND = 0.03
+#: a smaller part's default band: this share of its size (its bounding box's diagonal), where that is less than
+#: :data:`DEFAULT_BAND` (a part under 12 cm across): a band wider than the part would be most of its grid
+BAND_SHARE = 0.25
 
 
 @dataclass(frozen=True)
@@ -97,7 +100,8 @@ class PartSurface(Surface):
         """The fit's spacing, band and smoothing, checked (the defaults' where None)."""
         extent = float(np.linalg.norm(np.ptp(points, axis=0)))
         spacing = _length(what, "spacing", extent / 50 if spacing is None else spacing)
-        band = _length(what, "band", max(3 * spacing, DEFAULT_BAND) if band is None else band)
+        band = _length(what, "band", max(3 * spacing, min(DEFAULT_BAND, BAND_SHARE * extent)) if band is None
+                       else band)
         _finite(what, smoothing=smoothing)
         if smoothing < 0:
             raise HybridError(f"{what}.smoothing = {smoothing}; give a weight >= 0")
@@ -264,11 +268,12 @@ class MeshSurface(PartSurface):
         True: the tool works on the other side (against the facets' normals: the inside of a bowl).
     spacing : float, optional
         The fit's grid spacing [m]: finer than the smallest radius of curvature to keep (a tenth of it keeps
-        it within about 1 %); default a fiftieth of the part's size.
+        it within about 1 %); default a fiftieth of the part's size (its bounding box's diagonal).
     band : float, optional
         How far from the part [m] ``phi`` is defined, on both sides (the tool's approach starts within it, and
         the arm tip behind a compliant sensor reaches into the part as far as the sensor deflects): default
-        :data:`DEFAULT_BAND`, at least three cells.
+        :data:`DEFAULT_BAND` (3 cm), or a quarter of the part's size (its bounding box's diagonal) where that is
+        less (:data:`BAND_SHARE`: a part under 12 cm across), and at least three cells.
     smoothing : float
         The weight of the fit's second differences (:data:`~hybrid.geometry.part_fit.SMOOTHING`).
 
