@@ -1,11 +1,12 @@
 """The fit of a part's surface itself: the solver's coarse grids against the B-spline they stand for and against
-the diagonal preconditioner alone, and the default band of a small part."""
+the diagonal preconditioner alone, the default band of a small part, and a transform in single precision."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
+import hybrid
 import hybrid.geometry.part_fit as part_fit
 from hybrid.geometry.bspline import SplineGrid
 from hybrid.geometry.fit_solver import coarse_shape, coarsened, refined
@@ -102,3 +103,45 @@ def test_a_small_parts_default_band_is_a_quarter_of_its_size():
     assert np.abs(phi - off).max() <= 1e-4
     large = MeshSurface(*sphere(0.15), spacing=0.01)
     assert large.band == DEFAULT_BAND
+
+
+# ---------------------------------------------------------------------------- a transform in single precision
+
+
+def placement(dtype=float) -> np.ndarray:
+    T = trimesh.transformations.rotation_matrix(0.7, [1.0, 2.0, 3.0])
+    T[:3, 3] = (0.5, -0.1, 0.2)
+    return T.astype(dtype)
+
+
+def test_a_transform_in_single_precision_is_taken_as_the_rotation_it_rounds():
+    """A rotation in float32 (orthonormal to 5e-8), or written with 7 digits and read as doubles: taken,
+    orthonormalised (the placed part keeps its vertices' distances to 1e-12), the same part as the double
+    transform's within the rounding."""
+    vertices, faces = sphere(0.15, subdivisions=2)
+    vertices = vertices - CENTRE
+    exact = MeshSurface(vertices, faces, transform=placement(), spacing=0.02, band=0.04)
+    R = placement(np.float32).astype(float)[:3, :3]
+    assert np.abs(R.T @ R - np.eye(3)).max() > 1e-9  # refused before as not a rigid motion
+    points, _ = near_sphere(0.15, 300, 0.02)
+    points = points - CENTRE + placement()[:3, 3]
+    for given in (placement(np.float32), np.round(placement(), 7)):
+        part = MeshSurface(vertices, faces, transform=given, spacing=0.02, band=0.04)
+        moved = part.vertices
+        assert np.abs(np.linalg.norm(moved - moved[0], axis=1)
+                      - np.linalg.norm(vertices - vertices[0], axis=1)).max() <= 1e-12
+        np.testing.assert_allclose(moved, exact.vertices, atol=1e-7)
+        assert np.abs(part.evaluate(points)[0] - exact.evaluate(points)[0]).max() <= 1e-6
+
+
+@pytest.mark.parametrize("change, message", [
+    (lambda T: T @ np.diag([1.001, 1.0, 1.0, 1.0]), "1e-06"),  # a scale of 0.1 % (doubles)
+    (lambda T: (T @ np.diag([1.001, 1.0, 1.0, 1.0])).astype(np.float32), "1.2e-05"),  # and in single precision
+    (lambda T: T @ np.array([[1, 1e-4, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1.0]]), "rigid motion"),  # shear
+    (lambda T: T @ np.diag([1.0, 1.0, -1.0, 1.0]), "reflection"),
+    (lambda T: T.astype(np.float16), "single or double precision"),
+])
+def test_a_transform_that_is_not_a_rigid_motion_is_refused_in_any_precision(change, message):
+    vertices, faces = sphere(0.15, subdivisions=1)
+    with pytest.raises(hybrid.HybridError, match=message):
+        MeshSurface(vertices - CENTRE, faces, transform=change(placement()), spacing=0.02)
