@@ -1,7 +1,11 @@
 """The fit of a part's surface itself: the solver's coarse grids against the B-spline they stand for and against
-the diagonal preconditioner alone, the default band of a small part, and a transform in single precision."""
+the diagonal preconditioner alone, the default band of a small part, a transform in single precision, and the
+warning of a fit that follows its part poorly (each poor case flagged, the good fits not)."""
 
 from __future__ import annotations
+
+import math
+import warnings
 
 import numpy as np
 import pytest
@@ -10,7 +14,7 @@ import hybrid
 import hybrid.geometry.part_fit as part_fit
 from hybrid.geometry.bspline import SplineGrid
 from hybrid.geometry.fit_solver import coarse_shape, coarsened, refined
-from hybrid.geometry.parts import DEFAULT_BAND, MeshSurface
+from hybrid.geometry.parts import DEFAULT_BAND, MeshSurface, PointCloudSurface
 
 trimesh = pytest.importorskip("trimesh")
 
@@ -145,3 +149,93 @@ def test_a_transform_that_is_not_a_rigid_motion_is_refused_in_any_precision(chan
     vertices, faces = sphere(0.15, subdivisions=1)
     with pytest.raises(hybrid.HybridError, match=message):
         MeshSurface(vertices - CENTRE, faces, transform=change(placement()), spacing=0.02)
+
+
+# ------------------------------------------------------------------------------------------------- poor fits
+
+
+def torus(minor: float):
+    mesh = trimesh.creation.torus(major_radius=0.12, minor_radius=minor, major_sections=96, minor_sections=24)
+    return mesh.vertices + CENTRE, mesh.faces
+
+
+def cap(count: int = 6000, seed: int = 3):
+    """Points on the upper part of a sphere of 0.15 m (0.3 mm of noise) and its outward normals."""
+    rng = np.random.default_rng(seed)
+    n = rng.normal(size=(count, 3))
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    n = n[n[:, 2] > 0.2]
+    return CENTRE + 0.15 * n + 3e-4 * rng.normal(size=n.shape), n
+
+
+EYE = CENTRE + (0.0, 0.0, 1.0)
+
+
+def good_fits():
+    box = trimesh.creation.box(extents=(0.16, 0.16, 0.1))
+    points, normals = cap()
+    return {
+        "a sphere's mesh": lambda: MeshSurface(*sphere(0.15), spacing=0.012),
+        "a box's twelve facets (its corners rounded)": lambda: MeshSurface(box.vertices, box.faces, spacing=0.008),
+        "a torus": lambda: MeshSurface(*torus(0.04), spacing=0.008, band=0.024),
+        "a noisy scan's estimated normals": lambda: PointCloudSurface(points, viewpoint=EYE, spacing=0.012),
+        "the same smoothed": lambda: PointCloudSurface(points, viewpoint=EYE, spacing=0.012, smoothing=20.0),
+        "a scan with its normals": lambda: PointCloudSurface(points, normals, spacing=0.012),
+        "a scan's points each twice, with normals": lambda: PointCloudSurface(np.vstack([points, points]),
+                                                                               np.vstack([normals, normals]),
+                                                                               spacing=0.012),
+    }
+
+
+@pytest.mark.parametrize("name", list(good_fits()))
+def test_a_good_fit_is_not_warned_of(name):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", hybrid.PartFitWarning)
+        part = good_fits()[name]()
+    fit = part.fit
+    assert fit.poor() is None
+    assert 0 <= fit.distance_median_m <= fit.distance_max_m
+    assert 0 <= fit.normal_angle_median_deg <= fit.normal_angle_max_deg
+
+
+def poor_fits():
+    box = trimesh.creation.box(extents=(0.16, 0.16, 0.1))
+    points, normals = cap()
+    t = np.linspace(0.0, 0.2, 2000)
+    line = np.column_stack([0.4 + t, 0 * t, 0.2 + 0 * t]) + 1e-5 * np.random.default_rng(0).normal(size=(2000, 3))
+    return {
+        # a tube of 1 cm's radius at a spacing of 3 cm: its normal some 4.5 degrees off
+        "a spacing too coarse for the curvature": (lambda: MeshSurface(*torus(0.01), spacing=0.03, band=0.09),
+                                                   "degrees"),
+        # facets of 3.6 cm on a radius of 15 cm, fitted at 1 cm: the smooth surface through their corners lies 3 mm
+        # off their middles
+        "a mesh's facets too coarse for its curvature": (lambda: MeshSurface(*sphere(0.15, subdivisions=2),
+                                                                             spacing=0.01), "facets"),
+        "huge smoothing": (lambda: MeshSurface(box.vertices, box.faces, spacing=0.008, smoothing=100.0), "mm from"),
+        "a sphere smoothed 5e4 times the default": (lambda: MeshSurface(*sphere(0.15), spacing=0.012,
+                                                                        smoothing=1e4), "mm from"),
+        "collinear points": (lambda: PointCloudSurface(line, viewpoint=(0.5, 0.0, 1.0), spacing=0.005), "a line"),
+        # the part scanned twice, the scans 4 mm apart (not registered): each point's neighbours span both
+        "two layers, normals estimated": (lambda: PointCloudSurface(np.vstack([points, points + 0.004 * normals]),
+                                                                    viewpoint=EYE, spacing=0.012), "doubled"),
+        "two layers a cell apart": (lambda: PointCloudSurface(np.vstack([points, points + 0.012 * normals]),
+                                                              np.vstack([normals, normals]), spacing=0.012),
+                                    "one layer"),
+    }
+
+
+@pytest.mark.parametrize("name", list(poor_fits()))
+def test_a_poor_fit_is_warned_of_with_its_error_and_the_fix(name):
+    """Each warned of once, at the caller's line, naming the measured error (in the fit's report) and the fix."""
+    make, fix = poor_fits()[name]
+    with pytest.warns(hybrid.PartFitWarning, match="follows the part poorly") as record:
+        part = make()
+    assert len(record) == 1 and record[0].filename == __file__
+    message = str(record[0].message)
+    assert fix in message
+    fit = part.fit
+    assert (fit.distance_median_m > 0.25 * fit.spacing_m) or (fit.normal_angle_median_deg > 4.0)
+    measured = (f"{fit.distance_median_m * 1e3:.3g} mm" if "mm from" in message
+                else f"{fit.normal_angle_median_deg:.3g} degrees")
+    assert measured in message
+    assert math.isfinite(fit.distance_rms_m)

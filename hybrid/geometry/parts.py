@@ -36,6 +36,7 @@ from hybrid.geometry.surfaces import Surface, _unit_normal
 from hybrid.native import loader
 from hybrid.spec.part import PART_STATUSES
 from hybrid.spec.surface import FORMULAS, PARAMETERS, SurfaceSpec
+from hybrid.user_warnings import PartFitWarning, warn
 from hybrid.validate import _finite, _point, shown
 
 #: the samples drawn per cell of the grid on the part's surface (area / spacing^2 of them, each)
@@ -47,6 +48,11 @@ SHORTEST = 1e-4
 #: how far a transform's rotation may be from orthonormal (``|R^T R - I|``), in its numbers' machine epsilon,
 #: and at least (a rotation in single precision's digits, read as doubles)
 ROUNDING, ROUNDING_DOUBLE = 100, 1e-6
+#: a fit that follows the part poorly (warned, :class:`~hybrid.PartFitWarning`): the median point of the part
+#: farther from the smooth surface than this share of a cell, or the median normal more than this angle [deg] off.
+#: The tests' good fits keep within 0.1 of a cell and 2.4 degrees (the Panda's link at 5 mm, a noisy scan's
+#: estimated normals); a machined edge's or a cloud's rim's few points lie in the largest error, not the median
+POOR_DISTANCE_CELLS, POOR_ANGLE_DEG = 0.25, 4.0
 #: the Newton steps :meth:`PartSurface.project` takes at most
 PROJECTION_STEPS = 20
 #: how far from the part [m] its surface is defined by default (at least three cells): the arm tip reaches into
@@ -73,6 +79,10 @@ class PartFit:
     normal_angle_rms_deg, normal_angle_max_deg : float
         The angle between the smooth surface's normal and the part's own (a mesh's facets' at their centroids,
         away from its edges; a cloud's given or estimated normals) [deg].
+    distance_median_m, normal_angle_median_deg : float
+        The typical point's distance [m] and normal's angle [deg] (their medians): a fit whose median distance
+        exceeds :data:`POOR_DISTANCE_CELLS` of a cell, or whose median angle exceeds :data:`POOR_ANGLE_DEG`, is
+        warned of (:class:`~hybrid.PartFitWarning`).
     """
 
     spacing_m: float
@@ -82,6 +92,23 @@ class PartFit:
     distance_max_m: float
     normal_angle_rms_deg: float
     normal_angle_max_deg: float
+    distance_median_m: float = math.nan
+    normal_angle_median_deg: float = math.nan
+
+    def poor(self) -> str | None:
+        """What makes the fit poor (:data:`POOR_DISTANCE_CELLS`, :data:`POOR_ANGLE_DEG`) and its fix, or None."""
+        if self.distance_median_m > POOR_DISTANCE_CELLS * self.spacing_m:
+            return (f"the part's points lie {self.distance_median_m * 1e3:.3g} mm from it (the median; at most "
+                    f"{POOR_DISTANCE_CELLS:g} of a cell, {POOR_DISTANCE_CELLS * self.spacing_m * 1e3:.3g} mm): give "
+                    "less smoothing, a finer spacing for features of a few cells, a mesh whose facets are finer where "
+                    "it curves (flat facets lie inside a sphere through their corners), or a cloud of one layer (its "
+                    "scans registered onto each other)")
+        if self.normal_angle_median_deg > POOR_ANGLE_DEG:
+            return (f"its normal is {self.normal_angle_median_deg:.3g} degrees from the part's (the median; at most "
+                    f"{POOR_ANGLE_DEG:g}): give a finer spacing (a tenth of the smallest radius of curvature) or less "
+                    "smoothing; a cloud's estimated normals need points spread over its surface, neither on a line "
+                    "nor doubled (or give its normals)")
+        return None
 
 
 class PartSurface(Surface):
@@ -143,7 +170,11 @@ class PartSurface(Surface):
         cos = np.einsum("ij,ij->i", grad, normals) / np.linalg.norm(grad, axis=1)
         angle = np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
         self.fit = PartFit(self.spacing, self.band, samples, float(np.sqrt(np.mean(distance ** 2))),
-                           float(distance.max()), float(np.sqrt(np.mean(angle ** 2))), float(angle.max()))
+                           float(distance.max()), float(np.sqrt(np.mean(angle ** 2))), float(angle.max()),
+                           float(np.median(distance)), float(np.median(angle)))
+        poor = self.fit.poor()
+        if poor is not None:
+            warn(f"{self._what} follows the part poorly: {poor} (the numbers: its .fit)", PartFitWarning)
 
     # ----------------------------------------------------------------- the surface's interface
 
