@@ -319,6 +319,12 @@ class MeshSurface(PartSurface):
         A mesh that is empty, not a manifold, inconsistently oriented, with facets of no area or vertices
         that are not numbers, out of a robot cell's scale; a transform that is not a rigid motion.
 
+    Warns
+    -----
+    PartFitWarning
+        A fit that follows the part poorly (:meth:`PartFit.poor`: the median distance beyond a quarter of a
+        cell, or the median normal beyond 4 degrees), with the measured error and the fix.
+
     Examples
     --------
     A cube of 0.1 m (8 vertices, 12 facets), its top at z = 0.05 m:
@@ -417,6 +423,12 @@ class PointCloudSurface(PartSurface):
     HybridError
         Too few points, points or normals that are not numbers, normals of zero length, no viewpoint without
         normals, a cloud too sparse for its spacing.
+
+    Warns
+    -----
+    PartFitWarning
+        A fit that follows the cloud poorly (as :class:`MeshSurface`'s; also a cloud on a line or of two
+        layers, whose estimated normals scatter).
 
     Examples
     --------
