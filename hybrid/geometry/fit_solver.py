@@ -1,11 +1,12 @@
 """The normal equations of a part's fit solved: conjugate gradients preconditioned on the B-spline grid and on
-grids twice as coarse.
+two grids each twice as coarse as the one before.
 
 The fit (:mod:`hybrid.geometry.part_fit`) minimises ``|A C - b|^2 + ridge |C - C_0|^2`` over the coefficients
-``C`` of a tricubic B-spline: its normal matrix ``N = A^T A + ridge I`` is applied as ``A^T (A x)`` (it would
-hold 343 numbers a row, three times A's; forming it costs as long as the whole solve, which rules out the
-preconditioners that need it: incomplete Cholesky, algebraic multigrid). Its diagonal alone (Jacobi) leaves the
-smooth errors, which the second differences and the ridge alone hold, to many iterations.
+``C`` of a tricubic B-spline: its normal matrix ``N = A^T A + ridge I`` is applied as ``A^T (A x)``. Formed, it
+would hold up to 343 numbers a row, three times A's (390 MB on the bench's sphere at 6 mm), and forming it
+takes longer than the whole solve: that rules out the preconditioners that need it (incomplete Cholesky,
+algebraic multigrid). Its diagonal alone (Jacobi) leaves the smooth errors, which the second differences and
+the ridge alone hold, to many iterations.
 
 The preconditioner adds to the diagonal's correction the same correction on two coarser grids (an additive
 multilevel preconditioner, Bramble, Pasciak and Xu 1990): a cubic B-spline on a grid of spacing ``2 h`` is

@@ -20,7 +20,7 @@ point's normal: it fixes the coefficients no sample reaches and starts the solve
 Only the coefficients the samples reach, and two cells beyond them, are unknowns: ``phi`` is defined within
 ``band`` of the part and not beyond (NaN coefficients), and the grid's size is checked before anything is
 allocated. The normal equations, applied as ``A^T (A x)``, are solved by conjugate gradients preconditioned
-on the grid and a grid twice as coarse (:mod:`hybrid.geometry.fit_solver`).
+on the grid and two grids each twice as coarse as the one before (:mod:`hybrid.geometry.fit_solver`).
 """
 
 from __future__ import annotations
