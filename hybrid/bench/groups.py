@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from functools import partial
 
+from hybrid.bench.dynamics import dynamics_benchmarks
 from hybrid.bench.excitation import excitation_benchmarks
 from hybrid.bench.first_use import cold_benchmarks, import_benchmarks
 from hybrid.bench.identification import identification_benchmarks
@@ -53,6 +54,9 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
               ("regenerate from scratch", law.regenerate)]
     groups += [(f"{name}: generation, compilation, terms in C, from Python and by Pinocchio",
                 partial(robot_benchmarks, name, path, tip, rep, quick, add)) for name, (path, tip) in ROBOTS.items()]
+    groups += [(f"{name}: RNEA, forward dynamics, CRBA and the terms in C against Pinocchio's code generation "
+                "(CppADCodeGen; its generator's first build takes minutes)",
+                partial(dynamics_benchmarks, name, path, tip, rep, quick, add)) for name, (path, tip) in ROBOTS.items()]
     groups += [(f"{name}: the 6-D decoupling law in C, from Python, batched (both cores, one core), "
                 "by Pinocchio + NumPy; the controller step",
                 partial(spatial_benchmarks, name, path, tip, rep, quick, add)) for name, (path, tip) in ROBOTS.items()]

@@ -43,6 +43,24 @@ STEP_IN_C = "controller step in C (measurement, six loops, law), per sample"
 STEP_ONE = "controller step from Python, per sample (ctrl(t, q, qdot, Fc))"
 GEN_COMPILE = "generate + compile, fresh cache and process"
 
+# ------------------------------------------------------------------ against Pinocchio's code generation (after "ARM: ")
+
+#: each function compared with Pinocchio's generated code (by its name there): what it computes, and our
+#: entry point
+DYNAMICS = {"rnea": ("RNEA", "inverse_dynamics"),
+            "aba": ("forward dynamics", "forward_dynamics; Pinocchio's: ABA"),
+            "crba": ("CRBA", "inertia, a unit of its own"),
+            "terms": ("r, rotation, J, J'q', B, n", "robot_terms")}
+
+
+def dynamics_row(function: str, pinocchio: bool) -> str:
+    """The name of a row comparing the ``function`` of :data:`DYNAMICS`: ours, or Pinocchio's."""
+    what, ours = DYNAMICS[function]
+    if pinocchio:
+        return f"{what} by Pinocchio's code generation (CppADCodeGen), per call"
+    return f"{what} in C beside Pinocchio's code generation, per call ({ours})"
+
+
 # ------------------------------------------------------------------ runs and sweeps
 
 ONE_RUN = "paper run through hybrid.simulate (2 s simulated)"
