@@ -9,6 +9,7 @@ names, flags and numbers) or kernels they returned, and give kernels or generate
 - the paper's planar arm in closed form: :func:`planar_kernels`, :func:`build_planar_unit` (one
   backend of ``BACKENDS``: the committed ``generated/hybrid_<backend>.*``);
 - any serial chain: :func:`build_robot_unit` (terms, dynamics, operational space),
+  :func:`build_inertia_unit` (the inertia ``B(q)`` alone),
   :func:`build_regressor_unit` (the joint-torque regressor ``tau = Y pi``),
   :func:`law_kernels` / :func:`build_law_unit` (the decoupling law on a surface),
   :func:`build_frame_unit` (the task frame), :func:`controller_kernels` /
@@ -39,7 +40,14 @@ from .model import kernels as planar_kernels
 from .part_grid import PART_HEADER, part_header
 from .path_follow import PATH_HEADER, path_header
 from .regressor import build_regressor_unit
-from .robot_unit import build_controller_unit, build_frame_unit, build_law_unit, build_plant_unit, build_robot_unit
+from .robot_unit import (
+    build_controller_unit,
+    build_frame_unit,
+    build_inertia_unit,
+    build_law_unit,
+    build_plant_unit,
+    build_robot_unit,
+)
 from .safe_stop import safe_stop_kernel
 from .spatial_plant import plant_kernels
 from .standalone_controller import build_standalone_controller
@@ -57,8 +65,8 @@ def shared_headers() -> dict[str, str]:
 
 
 __all__ = ["BACKENDS", "LANES_HEADER", "PART_HEADER", "PATH_HEADER", "LoopSpec", "Unit", "build_closed_loop_unit",
-           "build_controller_unit", "build_frame_unit", "build_law_unit", "build_planar_unit", "build_plant_unit",
-           "build_regressor_unit", "build_robot_unit", "build_standalone_controller", "build_standalone_plant",
-           "controller_kernels",
+           "build_controller_unit", "build_frame_unit", "build_inertia_unit", "build_law_unit", "build_planar_unit",
+           "build_plant_unit", "build_regressor_unit", "build_robot_unit", "build_standalone_controller",
+           "build_standalone_plant", "controller_kernels",
            "kernel_function", "law_kernels", "path_header", "phi_sx", "planar_kernels", "plant_kernels",
            "safe_stop_kernel", "shared_headers", "template_environment"]

@@ -5,17 +5,18 @@ are missing. Correctness only: nothing here is timed."""
 
 import numpy as np
 import pytest
-from conftest import PANDA, UR5, example_robot
+from conftest import PANDA, UR5, example_robot, pinocchio_model
 
 import hybrid
 from hybrid.bench import dynamics, pinocchio_codegen
+from hybrid.native import units
 
 
 # on a cold cache about 2 minutes of one core (the generator's C++ build; 4.5 minutes on a busy 2-core machine),
 # seconds once it is cached
 @pytest.mark.slow
 @pytest.mark.parametrize("arm", [UR5, PANDA], ids=["ur5", "panda"])
-def test_our_dynamics_are_pinocchio_generated_codes(arm):
+def test_our_dynamics_give_the_numbers_of_pinocchios_generated_code(arm):
     urdf = example_robot(arm[0])
     why = pinocchio_codegen.missing()
     if why:
@@ -25,6 +26,20 @@ def test_our_dynamics_are_pinocchio_generated_codes(arm):
     worst = dynamics.differences(race, dynamics.random_states(robot.n, 50, seed=7))
     assert set(worst) == set(pinocchio_codegen.FUNCTIONS)
     assert max(worst.values()) <= 1e-12, worst
+
+
+@pytest.mark.parametrize("arm", [UR5, PANDA], ids=["ur5", "panda"])
+def test_the_inertia_unit_is_pinocchios_crba(arm, rng):
+    """Our CRBA alone (the benchmark's side of CRBA) against Pinocchio's from Python: no C++ needed."""
+    urdf = example_robot(arm[0])
+    robot = hybrid.Robot.from_urdf(urdf, tip=arm[1])
+    model = pinocchio_model(urdf, robot.joint_names)
+    pin = pytest.importorskip("pinocchio")
+    data, inertia = model.createData(), units.inertia_unit(robot.chain, robot.name).function("inertia")
+    for q in rng.uniform(-np.pi, np.pi, (5, robot.n)):
+        M = pin.crba(model, data, q)
+        np.testing.assert_allclose(inertia(q, robot.as_array())["B"].reshape(robot.n, robot.n),
+                                   np.triu(M) + np.triu(M, 1).T, rtol=1e-12, atol=1e-12)
 
 
 class _Given:

@@ -6,8 +6,9 @@ headers) and linked with Pinocchio's URDF parser; Pinocchio's algorithms are tem
 built for ``double`` serves the CppAD scalar as well. It writes the C of Pinocchio's RNEA, ABA and CRBA
 code generators and of the same terms as our ``robot_terms``; that C is compiled into a shared library
 with the flags our units are compiled with (:func:`hybrid.native.compiler.flags`), and so is our side
-(the robot unit's C, and a unit of our CRBA alone), and a C program (``c/pinocchio_race.c.j2``) loads the
-two libraries side by side: it prints both sides' outputs on given states, or times them alternately.
+(the robot unit's C, and the unit of our CRBA alone: :func:`hybrid.native.units.inertia_unit`), and a
+C program (``c/pinocchio_race.c.j2``) loads the two libraries side by side: it prints both sides'
+outputs on given states, or times them alternately.
 
 Everything built is cached (:func:`hybrid.native.cache.entry`) under a key of all it is built from: the
 generator's source, the packages' versions and the compilers' identities (the generator), and the
@@ -139,37 +140,6 @@ def _version(package: str) -> str | None:
         return None
 
 
-# ------------------------------------------------------------------ our side
-
-
-def inertia_unit(robot):
-    """Our CRBA alone: the joint-space inertia ``B(q)`` as ``robot_terms`` forms it (the generator's
-    body-frame CRBA), a unit of its own; its one function ``<prefix>_inertia(q, robot, B)``."""
-    prefix_ = c_identifier(f"hybrid_{robot.name}_crba")
-    return units.compiled(prefix_, {"chain": units.chain_key(robot.chain), "inertia": 1},
-                          lambda: _build_inertia_unit(robot.chain, prefix_, units.robot_info(robot.chain, robot.name)))
-
-
-def _build_inertia_unit(chain, prefix_: str, info: dict):
-    import casadi as ca
-
-    from hybrid.codegen import body_frame as bf
-    from hybrid.codegen.emit import assemble
-    from hybrid.codegen.kernel import Arg, Kernel
-    from hybrid.spec import chain as ch
-
-    names = tuple(j.name for j in chain.joints)
-    q, params = ca.SX.sym("q", chain.n), ca.SX.sym("robot", len(ch.parameter_names(chain)))
-    B = bf.crba(bf.link_transforms(chain, q), params)
-    kernel = Kernel("inertia", (Arg("q", q, ch.joint_units(chain, "q"), names=names),
-                                Arg("robot", params, ch.parameter_units(chain), names=ch.parameter_names(chain))),
-                    (Arg("B", ca.reshape(B.T, -1, 1), "kg m^2", (chain.n, chain.n)),),
-                    "inertia B(q) (CRBA, in body coordinates), row-major")
-    return assemble(prefix_, "casadi", (kernel,), f"joint-space inertia of the {chain.n}-joint arm "
-                    f"'{info.get('robot', prefix_)}'", info={"robot": info}, tool=f"CasADi {ca.__version__}",
-                    defines={"NQ": chain.n})
-
-
 # ------------------------------------------------------------------ both sides, one program
 
 
@@ -248,7 +218,7 @@ def race(robot, urdf: Path, tip: str, counted: bool = False) -> Race:
     ``tip``), built (cached). Our side runs with the joints' friction zero (Pinocchio's has none). With
     ``counted``, the build whose instructions callgrind can count: for AVX2 rather than this processor
     (valgrind runs no AVX-512), else the same."""
-    unit, inertia = robot.unit, inertia_unit(robot)
+    unit, inertia = robot.unit, units.inertia_unit(robot.chain, robot.name)
     unit_prefix, inertia_prefix = unit.manifest["unit"], inertia.manifest["unit"]
     source = render(RACE, unit=unit_prefix, inertia=inertia_prefix, n=robot.n,
                     robot=[float(x) for x in _frictionless(robot).as_array()])

@@ -115,6 +115,14 @@ def robot_unit(chain, name: str) -> Unit:
 
 
 @cache
+def inertia_unit(chain, name: str) -> Unit:
+    """The joint-space inertia ``B(q)`` of ``chain`` alone (the CRBA of :func:`robot_unit`'s terms), compiled."""
+    prefix = c_identifier(f"hybrid_{name}_crba")
+    return compiled(prefix, {"chain": chain_key(chain), "inertia": 1},
+                    lambda: generator.api().build_inertia_unit(chain, prefix, robot_info(chain, name)))
+
+
+@cache
 def regressor_unit(chain, name: str) -> Unit:
     """The joint-torque regressor of ``chain`` (``tau = Y pi``), compiled."""
     prefix = c_identifier(f"hybrid_{name}_regressor")
