@@ -80,7 +80,7 @@ def dynamics_benchmarks(name: str, urdf_name: str, tip: str, rep: int, quick: bo
         ins = "" if ours_ins is None else f"; {ours_ins:,.0f} instructions a call"
         add(f"{name}: {dynamics_row(function, pinocchio=False)}", ours, agreement=worst[function],
             instructions=ours_ins, ratio=f"the same as Pinocchio's to {worst[function]:.0e}{ins}")
-        ins = "" if theirs_ins is None else (f"; {theirs_ins:,.0f} instructions a call "
+        ins = "" if theirs_ins is None or ours_ins is None else (f"; {theirs_ins:,.0f} instructions a call "
                                              f"({theirs_ins / ours_ins:.2f}x ours)")
         add(f"{name}: {dynamics_row(function, pinocchio=True)}", theirs, of_ours=theirs / ours,
             instructions=theirs_ins, ratio=f"{theirs / ours:.2f}x the time of ours{ins}")
