@@ -2,7 +2,8 @@
 
 The kinematic structure (joint origins, axes, types, the tip frame) is compiled in; the
 ``robot`` array (inertial parameters, joint friction, gravity) is a run-time input, so a
-model error or a parameter sweep never recompiles. Every solve is a factorisation.
+model error or a parameter sweep never recompiles (a deployed arm's may be compiled in:
+:mod:`.constant_model`). Every solve is a factorisation.
 """
 
 from __future__ import annotations
@@ -11,6 +12,7 @@ import casadi as ca
 
 from . import body_frame as bf
 from . import rigid_body as rb
+from .constant_model import constant_kernels
 from .controller_step import controller_kernels
 from .emit import Unit, assemble
 from .factor import ldl_solve
@@ -85,15 +87,20 @@ def build_inertia_unit(chain: rb.Chain, prefix: str, info: dict) -> Unit:
                     info={"robot": info}, tool=f"CasADi {ca.__version__}", defines={"NQ": chain.n})
 
 
-def build_robot_unit(chain: rb.Chain, prefix: str, info: dict, defaults=None) -> Unit:
+def build_robot_unit(chain: rb.Chain, prefix: str, info: dict, defaults=None, constant: bool = False) -> Unit:
     """C source, header and manifest of ``chain``'s kernels, deterministic in its inputs.
 
     ``info`` (robot name, tip, joint names, ...) goes into the manifest as it is; ``defaults``
-    adds ``<prefix>_urdf_parameters(robot)`` returning the URDF's parameter values.
+    adds ``<prefix>_urdf_parameters(robot)`` returning the URDF's parameter values. With ``constant``,
+    ``defaults`` (a robot's array) is compiled into the kernels instead, which take no ``robot`` array
+    (:mod:`.constant_model`).
     """
-    return assemble(prefix, "casadi", robot_kernels(chain, defaults),
-                    f"rigid-body kernels of the {chain.n}-joint serial arm '{info.get('robot', prefix)}'",
-                    info={"robot": info}, tool=f"CasADi {ca.__version__}",
+    kernels, model = constant_kernels(robot_kernels(chain), defaults) if constant else (
+        robot_kernels(chain, defaults), {})
+    return assemble(prefix, "casadi", kernels,
+                    f"rigid-body kernels of the {chain.n}-joint serial arm '{info.get('robot', prefix)}'"
+                    + (", its parameters compiled in" if constant else ""),
+                    info={"robot": info, **model}, tool=f"CasADi {ca.__version__}",
                     defines={"NQ": chain.n, "ROBOT_SIZE": len(rb.parameter_names(chain))})
 
 

@@ -20,6 +20,9 @@ from sphinx.util import logging
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "docs"))  # the gallery's plotly scraper
+
+import gallery_plotly  # noqa: E402
 
 import hybrid  # noqa: E402
 
@@ -33,6 +36,7 @@ extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.mathjax",
+    "sphinx-mathjax-offline",  # MathJax from the build's _static/, not a CDN: math typeset offline too
     "numpydoc",
     "myst_parser",
     "sphinx_gallery.gen_gallery",
@@ -45,12 +49,15 @@ templates_path = ["_templates"]
 
 # ------------------------------------------------------------------------- API reference
 autosummary_generate = True
-autodoc_default_options = {"members": True, "inherited-members": False, "show-inheritance": True}
+autodoc_default_options = {"members": True, "show-inheritance": True}  # inherited members: only where the page asks
 autodoc_member_order = "bysource"
 autodoc_typehints = "none"  # the docstrings say what each argument takes
 numpydoc_show_class_members = False
 numpydoc_class_members_toctree = False
 numpydoc_xref_param_type = False
+#: the classes whose page also shows what they take from a base the reference does not list: an
+#: experiment's sample counts and gains in force, a path on a surface's points, normals and curvature
+autosummary_context = {"showing_inherited": ("Experiment", "WaypointPath", "RasterPath", "SpiralPath")}
 
 # ------------------------------------------------------------------------------ MyST
 myst_heading_anchors = 3
@@ -66,7 +73,9 @@ sphinx_gallery_conf = {
     "download_all_examples": False,
     "remove_config_comments": True,
     "matplotlib_animations": False,
-    "image_scrapers": ("matplotlib",),
+    # plotly's figures with plotly.js from the documentation's own _static folder: the pages work offline
+    "image_scrapers": ("matplotlib", "gallery_plotly.scraper"),
+    "ignore_repr_types": gallery_plotly.IGNORE_REPR,
     "reset_modules": ("matplotlib",),
     "abort_on_example_error": True,
     "show_memory": False,
@@ -117,6 +126,7 @@ def _gallery_headers_in_rest(app, config) -> None:
 
 def setup(app):
     app.connect("config-inited", _check_api_listed)
+    app.connect("build-finished", gallery_plotly.write_plotlyjs)
     app.connect("autodoc-process-docstring", _defined_data_comment)
     # after sphinx-gallery fills its configuration (priority 10), before it reads the examples
     app.connect("config-inited", _gallery_headers_in_rest, priority=11)

@@ -24,8 +24,10 @@ res = hybrid.simulate(hybrid.tracing_experiment(duration=1.0))
 
 with tempfile.TemporaryDirectory() as folder:
     out = Path(folder) / "ur5_sphere.gif"
-    anim = res.animate(every=10, out=out)  # an animated GIF, written atomically (Pillow)
-    print(f"{len(list(anim.new_frame_seq()))} pictures, {out.stat().st_size / 1e3:.0f} kB")
+    # an animated GIF, written atomically (Pillow)
+    anim = res.animate(every=10, out=out)
+    pictures = len(list(anim.new_frame_seq()))
+    print(f"{pictures} pictures, {out.stat().st_size / 1e3:.0f} kB")
 plt.close("all")  # the animation's figure: written, no longer needed
 
 # %%
@@ -33,6 +35,8 @@ plt.close("all")  # the animation's figure: written, no longer needed
 # through [m] and the recorded contact force [N], base axes.
 frame = arm_frame(res, 80)
 print("joint origins [m]:\n", frame.links.round(3))
-print("F_c [N]:", frame.force.round(2), " rows t1, t2, n of R(r):\n", frame.task_axes.round(3))
+print("F_c [N]:", frame.force.round(2))
+print("rows t1, t2, n of R(r):\n", frame.task_axes.round(3))
 
-fig = still(res, 80, title="the UR5 on the sphere at 0.8 s, after the force step to 20 N")
+fig = still(res, 80, title="the UR5 on the sphere at 0.8 s, "
+                           "after the force step to 20 N")

@@ -17,28 +17,38 @@ import numpy as np
 
 import hybrid
 
-exp = hybrid.tracing_experiment(duration=1.0)  # the UR5 on the sphere, 1 s
+# the UR5 on the sphere, 1 s
+exp = hybrid.tracing_experiment(duration=1.0)
 n = exp.robot.n
 
 
 def run(ctrl, miss=None):
-    """The closed loop, one control sample at a time; ``miss``: a sample index whose call is skipped."""
-    plant = exp.plant()  # the true arm, its elastic sensor, the contact with friction
-    x = exp.initial_state()  # (q, q', s, s'): the arm at rest, pressing with F_d(0)
-    states = np.empty((exp.steps_per_sample, len(x)))  # the RK4 steps of one sample
+    """The closed loop, one control sample at a time; ``miss``: a
+    sample index whose call is skipped."""
+    # the true arm, its elastic sensor, the contact with friction
+    plant = exp.plant()
+    # (q, q', s, s'): the arm at rest, pressing with F_d(0)
+    x = exp.initial_state()
+    # the RK4 steps of one sample
+    states = np.empty((exp.steps_per_sample, len(x)))
     force, tau = [], np.zeros(n)
     ctrl.reset()
     for k in range(exp.n_samples):
         t = k * exp.sample_time
-        Fc = plant.sensor_wrench(x)  # the wrench on the robot at the tip, base axes [N, N m]
+        # the wrench on the robot at the tip, base axes [N, N m]
+        Fc = plant.sensor_wrench(x)
         if k != miss:
             try:
                 tau = ctrl(t, x[:n], x[n:2 * n], Fc)
-            except hybrid.SampleTimingError as err:  # off the clock: apply the law's torque, integrals kept
+            # off the clock: apply the law's torque, integrals kept
+            except hybrid.SampleTimingError as err:
                 print(f"t = {t:.2f} s: {err.status}")
                 tau = err.torque
-        plant.advance(x, tau, exp.steps_per_sample, states)  # zero-order hold on tau
-        force.append(ctrl.last["f"][2])  # the task wrench's normal component, as the controller saw it
+        # a zero-order hold on tau
+        plant.advance(x, tau, exp.steps_per_sample, states)
+        # the task wrench's normal component, as the controller saw
+        # it
+        force.append(ctrl.last["f"][2])
     return np.array(force)
 
 
@@ -48,16 +58,19 @@ ctrl = exp.build_controller()
 force = run(ctrl)
 res = hybrid.simulate(exp)
 sampled = res.force_normal[::exp.steps_per_sample][:exp.n_samples]
-print(f"largest difference from simulate: {np.abs(force - sampled).max():.1e} N")
+difference = np.abs(force - sampled).max()
+print(f"largest difference from simulate: {difference:.1e} N")
 
 # %%
 # A controller built by hand: the controller's model of the arm, the surface, the scheme, the
 # references, and the torque's change bounded to 2 N m per sample on every joint. The call of
 # sample 50 is skipped (a missed deadline): the next sample comes late, is served with the law's
 # torque, and leaves the integrals as they were.
-mine = hybrid.Controller(exp.controller_model(), exp.surface, "task", selection=("n",), gains=exp.gains,
-                         force_reference=exp.force_reference, velocity_reference=exp.speed_reference,
-                         sample_time=exp.sample_time, torque_step_limit=2.0)
+mine = hybrid.Controller(
+    exp.controller_model(), exp.surface, "task", selection=("n",),
+    gains=exp.gains, force_reference=exp.force_reference,
+    velocity_reference=exp.speed_reference,
+    sample_time=exp.sample_time, torque_step_limit=2.0)
 limited = run(mine, miss=50)
 
 t = np.arange(exp.n_samples) * exp.sample_time

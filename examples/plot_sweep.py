@@ -19,29 +19,53 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import hybrid
+from hybrid.plots import plot_sweep
 
-base = hybrid.paper_experiment(duration=1.0)  # the force steps at 0.4 s: one second is enough
+# the force steps at 0.4 s: one second is enough
+base = hybrid.paper_experiment(duration=1.0)
 parameters = {
     "controller": ["task", "khatib"],
-    "contact.friction": np.linspace(0.0, 0.5, 11).tolist(),  # a dotted name reaches into a setting
-    "speed_reference.before": [0.1, 0.3, 0.5],  # the speed while the force steps [m/s]
+    # a dotted name reaches into a setting
+    "contact.friction": np.linspace(0.0, 0.5, 11).tolist(),
+    # the speed while the force steps [m/s]
+    "speed_reference.before": [0.1, 0.3, 0.5],
 }
-table = hybrid.sweep(base, parameters)  # 66 runs, on a pool of processes (every core)
-print(table[["controller", "contact.friction", "speed_reference.before",
-             "speed_drop_after_force_step_m_per_s", "status"]].head())
+# 66 runs, on a pool of processes (every core)
+table = hybrid.sweep(base, parameters)
+DROP = "speed_drop_after_force_step_m_per_s"
+shown = table[["controller", "contact.friction",
+               "speed_reference.before", DROP, "status"]]
+print(shown.head().to_string(
+    header=["scheme", "friction", "speed", "drop [m/s]", "status"]))
 print(table["status"].value_counts().to_dict())
 
 # %%
 # The speed drop against friction, a line per scheme and speed.
 fig, ax = plt.subplots(figsize=(7, 4))
 styles = {"task": "-", "khatib": "--"}
-for (scheme, speed), rows in table.groupby(["controller", "speed_reference.before"]):
+colors = {0.1: "tab:blue", 0.3: "tab:orange", 0.5: "tab:green"}
+for (scheme, speed), rows in table.groupby(
+        ["controller", "speed_reference.before"]):
     rows = rows.sort_values("contact.friction")
-    ax.plot(rows["contact.friction"], 1000 * rows["speed_drop_after_force_step_m_per_s"], styles[scheme],
-            marker="o", ms=3, color={0.1: "tab:blue", 0.3: "tab:orange", 0.5: "tab:green"}[speed],
+    ax.plot(rows["contact.friction"], 1000 * rows[DROP],
+            styles[scheme], marker="o", ms=3, color=colors[speed],
             label=f"{scheme}, {speed} m/s")
 ax.set_xlabel("friction coefficient")
 ax.set_ylabel("speed drop after the force step [mm/s]")
 ax.grid(alpha=0.3)
 ax.legend(fontsize=7, ncol=2)
 fig.tight_layout()
+
+# %%
+# The same table as heatmaps (:func:`hybrid.plots.plot_sweep`, what ``python -m hybrid sweep`` draws):
+# the speed drop over friction and speed, a row of panels per scheme. The panels share one colour
+# scale and one colour bar, so that a colour is the same drop in both: Khatib's grows with the
+# friction, the task law's hardly does.
+fig = plot_sweep(table, "contact.friction", "speed_reference.before", "speed_drop_after_force_step_m_per_s",
+                 rows="controller")
+
+# %%
+# Their ratio, the task law's drop over Khatib's, on a logarithmic scale centred at 1: blue where the
+# task law's is the smaller, a black line where the two are equal.
+fig = plot_sweep(table, "contact.friction", "speed_reference.before", "speed_drop_after_force_step_m_per_s",
+                 rows="controller", ratio=("task", "khatib"))

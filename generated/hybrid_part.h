@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 5dd9f58801720bed68651efa39e5d6f3f4c61a277ad0669d38816d705e33938f */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 1b1a61cc82617a9fc22aa03af25e7281f8f497d76eea7226092fee39d4a72dc7 */
 #ifndef HYBRID_PART_H
 #define HYBRID_PART_H
 /* A part's surface: phi, a tricubic B-spline on a uniform grid (the part's fitted signed distance), expanded to
@@ -48,21 +48,24 @@
 #pragma GCC optimize("fp-contract=off")
 #endif
 
-/* the uniform cubic B-spline's four pieces at t in [0, 1) (b), their first (d) and second (dd) derivatives */
-static inline void hybrid_part_basis(double t, double *b, double *d, double *dd) {
+/* the uniform cubic B-spline's four pieces at t in [0, 1), w[m] = (b, d, dd, 0): the piece times 6 (the sums
+   divide by 6 once per b they hold, not each piece), its first and second derivatives (four numbers a piece,
+   so that the sums below run on vectors of four where the compiler has them) */
+static inline void hybrid_part_basis(double t, double w[4][4]) {
     const double s = 1.0 - t;
-    b[0] = s * s * s / 6.0;
-    b[1] = (3.0 * t * t * t - 6.0 * t * t + 4.0) / 6.0;
-    b[2] = (-3.0 * t * t * t + 3.0 * t * t + 3.0 * t + 1.0) / 6.0;
-    b[3] = t * t * t / 6.0;
-    d[0] = -s * s / 2.0;
-    d[1] = (3.0 * t * t - 4.0 * t) / 2.0;
-    d[2] = (-3.0 * t * t + 2.0 * t + 1.0) / 2.0;
-    d[3] = t * t / 2.0;
-    dd[0] = s;
-    dd[1] = 3.0 * t - 2.0;
-    dd[2] = 1.0 - 3.0 * t;
-    dd[3] = t;
+    w[0][0] = s * s * s;
+    w[1][0] = 3.0 * t * t * t - 6.0 * t * t + 4.0;
+    w[2][0] = -3.0 * t * t * t + 3.0 * t * t + 3.0 * t + 1.0;
+    w[3][0] = t * t * t;
+    w[0][1] = -s * s / 2.0;
+    w[1][1] = (3.0 * t * t - 4.0 * t) / 2.0;
+    w[2][1] = (-3.0 * t * t + 2.0 * t + 1.0) / 2.0;
+    w[3][1] = t * t / 2.0;
+    w[0][2] = s;
+    w[1][2] = 3.0 * t - 2.0;
+    w[2][2] = 1.0 - 3.0 * t;
+    w[3][2] = t;
+    w[0][3] = w[1][3] = w[2][3] = w[3][3] = 0.0;
 }
 
 /* the expansion of the part's phi about p into out (HYBRID_PART_OUT_*); HYBRID_PART_OK, or a status with out
@@ -70,9 +73,10 @@ static inline void hybrid_part_basis(double t, double *b, double *d, double *dd)
    HYBRID_PART_OFF_BAND (p off the grid, or a coefficient it reads undefined: beyond the fitted band) */
 static inline int hybrid_part_expansion(const double *grid, const double *coefficients, const double *p,
                                         double *out) {
-    double u[3], t[3], b[3][4], d[3][4], dd[3][4], sum[10] = {0.0};
+    /* the sums over x (S: of b, d, dd; T: of b, d; U: of b), each of four along z's (b, d, dd, -) */
+    double u[3], t[3], w[3][4][4], S[3][4] = { {0.0} }, T[2][4] = { {0.0} }, U[4] = {0.0}, sum[10];
     long cell[3], n[3];
-    int a, k, l, m;
+    int a, j, k, l, m;
     const double h = grid[HYBRID_PART_GRID_SPACING];
     for (a = 0; a < 3; ++a) {
         const double c = grid[HYBRID_PART_GRID_CELLS_X + a];
@@ -88,34 +92,55 @@ static inline int hybrid_part_expansion(const double *grid, const double *coeffi
         cell[a] = (long)floor(u[a]);
         n[a] = (long)c + 3;
         t[a] = u[a] - (double)cell[a];
-        hybrid_part_basis(t[a], b[a], d[a], dd[a]);
+        hybrid_part_basis(t[a], w[a]);
     }
-    /* phi, its gradient and its Hessian (xx, xy, xz, yy, yz, zz) in grid units, the sums over the 64 coefficients */
+    /* phi, its gradient and its Hessian (xx, xy, xz, yy, yz, zz) in grid units: the sums over the 64
+       coefficients, one axis at a time (the tensor product's basis factors): along z each row of four gives
+       its (b, d, dd) sums (z[l]), along y each plane its sums of b, d and dd of those (Y), along x the sums of
+       the planes'; a ninth of the products of the sums written term by term, each element's sum in one
+       order whatever the vectors */
     for (k = 0; k < 4; ++k) {
+        double z[4][4] = { {0.0} }, Y[3][4] = { {0.0} };
         for (l = 0; l < 4; ++l) {
             const double *row = coefficients + ((cell[0] + k) * n[1] + (cell[1] + l)) * n[2] + cell[2];
             for (m = 0; m < 4; ++m) {
-                const double c = row[m];
-                sum[0] += c * b[0][k] * b[1][l] * b[2][m];
-                sum[1] += c * d[0][k] * b[1][l] * b[2][m];
-                sum[2] += c * b[0][k] * d[1][l] * b[2][m];
-                sum[3] += c * b[0][k] * b[1][l] * d[2][m];
-                sum[4] += c * dd[0][k] * b[1][l] * b[2][m];
-                sum[5] += c * d[0][k] * d[1][l] * b[2][m];
-                sum[6] += c * d[0][k] * b[1][l] * d[2][m];
-                sum[7] += c * b[0][k] * dd[1][l] * b[2][m];
-                sum[8] += c * b[0][k] * d[1][l] * d[2][m];
-                sum[9] += c * b[0][k] * b[1][l] * dd[2][m];
+                for (j = 0; j < 4; ++j) z[l][j] += row[m] * w[2][m][j];
             }
         }
+        for (l = 0; l < 4; ++l) {
+            for (a = 0; a < 3; ++a) {
+                for (j = 0; j < 4; ++j) Y[a][j] += w[1][l][a] * z[l][j];
+            }
+        }
+        for (j = 0; j < 4; ++j) {
+            for (a = 0; a < 3; ++a) S[a][j] += w[0][k][a] * Y[0][j];
+            for (a = 0; a < 2; ++a) T[a][j] += w[0][k][a] * Y[1][j];
+            U[j] += w[0][k][0] * Y[2][j];
+        }
     }
+    /* (x, y, z) pieces: bbb, dbb, bdb, bbd; ddbb, ddb, dbd, bddb, bdd, bbdd */
+    sum[0] = S[0][0];
+    sum[1] = S[1][0];
+    sum[2] = T[0][0];
+    sum[3] = S[0][1];
+    sum[4] = S[2][0];
+    sum[5] = T[1][0];
+    sum[6] = S[1][1];
+    sum[7] = U[0];
+    sum[8] = T[0][1];
+    sum[9] = S[0][2];
     for (k = 0; k < 10; ++k) {
         if (!isfinite(sum[k])) return HYBRID_PART_OFF_BAND;
     }
     for (a = 0; a < 3; ++a) out[HYBRID_PART_OUT_P_X + a] = p[a];
-    out[HYBRID_PART_OUT_PHI] = sum[0];
-    for (a = 0; a < 3; ++a) out[HYBRID_PART_OUT_G_X + a] = sum[1 + a] / h;
-    for (a = 0; a < 6; ++a) out[HYBRID_PART_OUT_H_XX + a] = sum[4 + a] / (h * h);
+    /* the pieces' 6 once for each b in a sum (three in phi's, two in the gradient's and the Hessian's diagonal,
+       one in its other entries), and the grid's spacing once for each derivative */
+    out[HYBRID_PART_OUT_PHI] = sum[0] / 216.0;
+    for (a = 0; a < 3; ++a) out[HYBRID_PART_OUT_G_X + a] = sum[1 + a] / (36.0 * h);
+    for (a = 0; a < 6; ++a) {
+        const double pieces = a == 0 || a == 3 || a == 5 ? 36.0 : 6.0; /* xx, yy, zz: two b; xy, xz, yz: one */
+        out[HYBRID_PART_OUT_H_XX + a] = sum[4 + a] / (pieces * h * h);
+    }
     return HYBRID_PART_OK;
 }
 

@@ -18,14 +18,16 @@ The public API, by subpackage:
   :class:`LinePath`; on any surface :class:`WaypointPath`, :class:`RasterPath`,
   :class:`SpiralPath`); the task frame at points of any surface (:func:`task_frame`);
 - control (:mod:`hybrid.control`): the compiled law (:class:`DecouplingLaw`, :func:`decoupling_law`),
-  the :class:`Controller` component, its options (:class:`Posture`, a null-space posture task;
+  the :class:`Controller` component, its settings in three groups (:class:`Tracking`, :class:`Limits`,
+  :class:`Sensing`), its options (:class:`Posture`, a null-space posture task;
   :class:`ContactLoss`) and its schemes (:data:`SCHEMES`); :class:`Gains`, :class:`Step`; a controller
   described in a TOML file (:func:`read_controller_config`); a force/torque sensor's bias and tool
   (:class:`WrenchSensor`, the :class:`Tool` beyond it) identified from readings at rest
   (:func:`identify_tool`, :class:`ToolIdentification`) and tared at run time (:func:`tare`);
 - experiments and simulation: the one :class:`Experiment` type and its factories
   (:func:`paper_experiment`, :func:`tracing_experiment`, :func:`panda_experiment`), the plant's
-  :class:`Sensor` and :class:`Contact`, :func:`simulate`, :class:`SimulationResult`, :func:`metrics`;
+  :class:`Sensor` and :class:`Contact`, :func:`simulate`, :class:`SimulationResult`, :func:`metrics`; a run
+  as an interactive 3-D figure for the browser (:func:`view`, plotly: an optional extra);
   sweeps (:func:`sweep`); gains tuned across scenarios with a stability margin kept (:func:`tune`);
 - :class:`HybridError`, the base of every error raised on bad input; :class:`LargeModelWarning`,
   warned for a chain whose code takes minutes to generate; :class:`JointLimitWarning`, for a run that
@@ -33,8 +35,9 @@ The public API, by subpackage:
 
 Importing the package loads neither SymPy nor CasADi and reads no file: the code generator
 runs only when a unit must be built, and :class:`ImplicitSurface` (a SymPy expression),
-:func:`sweep` (pandas), :func:`read_controller_config` (a TOML parser) and
-:func:`excitation_trajectory` (SciPy's optimisers) load what they need on first use.
+:func:`sweep` (pandas), :func:`read_controller_config` (a TOML parser),
+:func:`excitation_trajectory` (SciPy's optimisers) and :func:`view` (plotly) load what they need on
+first use.
 """
 
 from __future__ import annotations
@@ -43,6 +46,7 @@ from typing import TYPE_CHECKING
 
 from hybrid._version import __version__
 from hybrid.control.controller import Controller
+from hybrid.control.controller_settings import Limits, Sensing, Tracking
 from hybrid.control.estimation import EstimatedSurface
 from hybrid.control.fault import FaultReaction
 from hybrid.control.identification import ToolIdentification, identify_tool, tare
@@ -99,16 +103,18 @@ if TYPE_CHECKING:  # type checkers see the lazy names' real signatures
     from hybrid.stability.maps import StabilityMap, stability_map
     from hybrid.stability.tuning import Tuning, tune
     from hybrid.sweeps import sweep
+    from hybrid.view3d import view
 
-#: public names loaded on first use (what they need is heavy: SymPy, pandas, SciPy's optimisers; a TOML parser and
-#: its schema)
+#: public names loaded on first use (what they need is heavy: SymPy, pandas, SciPy's optimisers, plotly; a TOML
+#: parser and its schema)
 _LAZY = {"ImplicitSurface": "hybrid.geometry.implicit", "MeshSurface": "hybrid.geometry.parts",
          "PointCloudSurface": "hybrid.geometry.parts", "sweep": "hybrid.sweeps",
          "read_controller_config": "hybrid.control.config", "stability_map": "hybrid.stability.maps",
          "StabilityMap": "hybrid.stability.maps", "suggest_gains": "hybrid.stability.gains",
          "GainSuggestion": "hybrid.stability.gains",
          "tune": "hybrid.stability.tuning", "Tuning": "hybrid.stability.tuning",
-         "excitation_trajectory": "hybrid.models.excitation", "ExcitationTrajectory": "hybrid.models.excitation"}
+         "excitation_trajectory": "hybrid.models.excitation", "ExcitationTrajectory": "hybrid.models.excitation",
+         "view": "hybrid.view3d"}
 
 
 def __getattr__(name: str):
@@ -147,4 +153,6 @@ __all__ = [
     "sweep", "tare", "task_frame", "tracing_experiment", "ur5", "with_linear_parameters",
     "Tuning", "tune",
     "ExcitationTrajectory", "excitation_trajectory",
+    "Tracking", "Limits", "Sensing",
+    "view",
 ]

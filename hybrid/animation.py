@@ -5,8 +5,9 @@ Each picture (:class:`ArmFrame`, the data one picture draws, as arrays) shows at
 - the arm: a polyline from the base through every joint frame's origin to the arm tip ``r``
   (:func:`hybrid.models.chain_kinematics.joint_frames`, the chain the generated C is built from), and
   the elastic sensor from ``r`` to the sensor tip;
-- the surface: a sphere, or a cylinder or plane around the path, as a wireframe; the planar arm's
-  circle or line; any other surface by the points where the sensor tip touched it;
+- the surface: a sphere, or a cylinder or plane around the path, as a wireframe; a part given as a mesh
+  (:class:`hybrid.MeshSurface`) by its facets' edges around the path; the planar arm's circle or line;
+  any other surface by the points where the sensor tip touched it;
 - the sensor tip's path so far;
 - the contact force ``F_c`` the run recorded (on the robot, base axes) as an arrow from the sensor tip;
 - the task frame's axes ``t1, t2, n`` (the planar arm's ``t, n``) at the arm tip, the frame ``R(r)`` the
@@ -28,10 +29,12 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib import animation
+from mpl_toolkits.mplot3d.art3d import Line3DCollection
 
 from hybrid import files
 from hybrid.errors import HybridError
 from hybrid.geometry.frames import task_frame
+from hybrid.geometry.parts import MeshSurface
 from hybrid.geometry.surfaces import Cylinder, Plane, Sphere
 from hybrid.models.chain_kinematics import joint_frames
 from hybrid.plots import FONT, is_spatial
@@ -47,6 +50,8 @@ AXIS_LENGTH = 0.08
 PICTURES = 60
 #: the task frame's axes' colours, in the order of its rows
 AXIS_COLORS = ("tab:red", "tab:green", "tab:blue")
+#: how far beyond the sensor tip's path a plane, a cylinder or a mesh part is drawn [m]
+MARGIN = 0.05
 
 
 @dataclass(frozen=True)
@@ -137,6 +142,15 @@ def arm_frame(result, sample: int, force_scale: float | None = None) -> ArmFrame
     return arm_frames(result, [int(sample) + (last + 1 if sample < 0 else 0)], force_scale)[0]
 
 
+def playback_fps(result, samples, fps: float | None = None) -> float:
+    """Pictures per second that play the pictures at the control ``samples`` of ``result``: ``fps`` if
+    given (a positive number), else real time, within 1 to 30."""
+    if fps is None:
+        step = (samples[1] - samples[0]) * result.experiment.sample_time if len(samples) > 1 else 1.0
+        fps = min(30.0, max(1.0, 1.0 / step))
+    return _positive("fps", fps)
+
+
 def _positive(name: str, value) -> float:
     if isinstance(value, bool) or not isinstance(value, numbers.Real) or not np.isfinite(value) or value <= 0:
         raise HybridError(f"{name} = {shown(value, 40)}; give a positive number")
@@ -154,10 +168,9 @@ def _across(direction: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return a, np.cross(direction, a)
 
 
-def _surface_points(surface, path: np.ndarray) -> np.ndarray | None:
-    """A wireframe of ``surface`` around the sensor tip's ``path``, ``(3, rows, cols)``; None for a
-    surface drawn by its contact points."""
-    margin = 0.05  # [m] beyond the path
+def surface_grid(surface, path: np.ndarray) -> np.ndarray | None:
+    """A grid of points on ``surface`` around the sensor tip's ``path``, ``(3, rows, cols)`` (drawn as a
+    wireframe); None for a surface drawn by its contact points (:func:`touched_points`)."""
     if isinstance(surface, Sphere):
         u, v = np.meshgrid(np.linspace(0, 2 * np.pi, 25), np.linspace(0, np.pi, 13))
         c, rho = np.asarray(surface.center), surface.radius
@@ -167,17 +180,44 @@ def _surface_points(surface, path: np.ndarray) -> np.ndarray | None:
         axis, point = np.asarray(surface.axis), np.asarray(surface.point)
         along = (path - point) @ axis
         a, b = _across(axis)
-        h, u = np.meshgrid(np.linspace(along.min() - margin, along.max() + margin, 5), np.linspace(0, 2 * np.pi, 25))
+        h, u = np.meshgrid(np.linspace(along.min() - MARGIN, along.max() + MARGIN, 5), np.linspace(0, 2 * np.pi, 25))
         ring = surface.radius * (np.cos(u)[..., None] * a + np.sin(u)[..., None] * b)
         return np.moveaxis(point + h[..., None] * axis + ring, -1, 0)
     if isinstance(surface, Plane):  # a square patch around the path
         a, b = _across(np.asarray(surface.normal))
         on = np.array([surface.project(p) for p in path])
         mid = on.mean(axis=0)
-        half = max(np.abs((on - mid) @ a).max(), np.abs((on - mid) @ b).max()) + 2 * margin
+        half = max(np.abs((on - mid) @ a).max(), np.abs((on - mid) @ b).max()) + 2 * MARGIN
         u, v = np.meshgrid(np.linspace(-half, half, 7), np.linspace(-half, half, 7))
         return np.moveaxis(mid + u[..., None] * a + v[..., None] * b, -1, 0)
     return None
+
+
+def _facets_near(surface, path: np.ndarray) -> np.ndarray | None:
+    """The facets of a mesh part with a corner within :data:`MARGIN` of the box around the sensor tip's
+    ``path``, ``(facets, 3, 3)``; None for a surface that is not a mesh."""
+    if not isinstance(surface, MeshSurface):
+        return None
+    corners = surface.vertices[surface.faces]
+    near = np.all((corners >= path.min(axis=0) - MARGIN) & (corners <= path.max(axis=0) + MARGIN), axis=2)
+    return corners[near.any(axis=1)]
+
+
+def section_ends(section, path: np.ndarray) -> np.ndarray:
+    """The planar arm's straight ``section`` (a line) from 0.1 m before the sensor tip's ``path`` to 0.1 m
+    beyond it, ``(2, 2)``."""
+    normal = np.asarray(section.normal)
+    tangent = np.array([-normal[1], normal[0]])
+    along = (path - section.point) @ tangent
+    return np.asarray(section.point) + np.outer([along.min() - 0.1, along.max() + 0.1], tangent)
+
+
+def touched_points(result) -> np.ndarray:
+    """The sensor tip at the control samples of ``result`` where it touched the surface, ``(k, d)``: how a
+    surface with no grid (:func:`surface_grid`) is drawn."""
+    every = result.experiment.steps_per_sample
+    path = _columns(result, ("s_x", "s_y", "s_z")[:_dimension(result)])[::every]
+    return path[result.contact_force[::every] > 0]
 
 
 class ArmPicture:
@@ -217,17 +257,18 @@ class ArmPicture:
             if hasattr(section, "radius"):
                 ax.add_patch(plt.Circle(section.center, section.radius, color="0.85", ec="0.5", lw=1.0))
                 return np.asarray(section.center) + section.radius * np.array([[-1, -1], [1, 1]])
-            normal = np.asarray(section.normal)
-            tangent = np.array([-normal[1], normal[0]])
-            along = (path - section.point) @ tangent
-            ends = np.asarray(section.point) + np.outer([along.min() - 0.1, along.max() + 0.1], tangent)
+            ends = section_ends(section, path)
             ax.plot(*ends.T, color="0.5", lw=1.5)
             return ends
-        grid = _surface_points(exp.surface, path)
+        grid = surface_grid(exp.surface, path)
         if grid is not None:
             ax.plot_wireframe(*grid, color="0.8", lw=0.5)
             return grid.reshape(3, -1).T
-        touched = path[self.result.contact_force[::exp.steps_per_sample] > 0]
+        facets = _facets_near(exp.surface, path)
+        if facets is not None and len(facets):
+            ax.add_collection3d(Line3DCollection(facets, colors="0.85", linewidths=0.3))
+            return facets.reshape(-1, 3)
+        touched = touched_points(self.result)
         ax.scatter(*touched.T, s=2, color="0.6", label="contact points")
         return touched
 
@@ -303,10 +344,7 @@ def animate(result, every: int | None = None, out=None, *, fps: float | None = N
     path = _out_path(out)
     samples = chosen_samples(result, every)
     scale = default_force_scale(result) if force_scale is None else _positive("force_scale", force_scale)
-    if fps is None:
-        step = (samples[1] - samples[0]) * result.experiment.sample_time if len(samples) > 1 else 1.0
-        fps = min(30.0, max(1.0, 1.0 / step))
-    fps = _positive("fps", fps)
+    fps = playback_fps(result, samples, fps)
     frames = arm_frames(result, samples, scale)
     picture = ArmPicture(result, frames, scale, title)
     picture.draw(frames[0])  # the figure shows the start until the animation runs

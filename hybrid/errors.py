@@ -10,10 +10,12 @@ class HybridError(ValueError):
     Examples
     --------
     >>> import hybrid
-    >>> hybrid.Sphere(center=(0.0, 0.0, 0.0), radius=-0.1)
+    >>> hybrid.Sphere(center=(0.0, 0.0, 0.0),
+    ...               radius=-0.1)  # doctest: +NORMALIZE_WHITESPACE
     Traceback (most recent call last):
         ...
-    hybrid.errors.HybridError: Sphere.radius = -0.1 m; give a positive radius
+    hybrid.errors.HybridError: Sphere.radius = -0.1 m;
+    give a positive radius
     >>> issubclass(hybrid.URDFError, hybrid.HybridError)
     True
     """
@@ -27,7 +29,8 @@ class SingularConfigurationError(HybridError):
     The planar arm stretched out (``q2 = 0``) has no operational space:
 
     >>> import hybrid
-    >>> hybrid.operational_space(hybrid.paper_arm(), [0.0, 0.0], [0.0, 0.0])  # doctest: +ELLIPSIS
+    >>> hybrid.operational_space(hybrid.paper_arm(), [0.0, 0.0],
+    ...                          [0.0, 0.0])  # doctest: +ELLIPSIS
     Traceback (most recent call last):
         ...
     hybrid.errors.SingularConfigurationError: ...
@@ -40,7 +43,9 @@ class NonFiniteError(HybridError):
     Examples
     --------
     >>> import hybrid
-    >>> hybrid.task_frame(hybrid.Circle((0.5, 0.0), 0.2), [0.3, float("nan")], [0.0, 0.1])  # doctest: +ELLIPSIS
+    >>> disc = hybrid.Circle((0.5, 0.0), 0.2)
+    >>> hybrid.task_frame(disc, [0.3, float("nan")],
+    ...                   [0.0, 0.1])  # doctest: +ELLIPSIS
     Traceback (most recent call last):
         ...
     hybrid.errors.NonFiniteError: task_frame: non-finite input ...
@@ -64,7 +69,8 @@ class URDFError(HybridError):
     Examples
     --------
     >>> import hybrid
-    >>> hybrid.Robot.from_urdf(hybrid.UR5_URDF, tip="no_such_link")  # doctest: +ELLIPSIS
+    >>> hybrid.Robot.from_urdf(
+    ...     hybrid.UR5_URDF, tip="no_such_link")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
         ...
     hybrid.errors.URDFError: ...no_such_link...
@@ -80,11 +86,12 @@ class TaskFrameError(HybridError):
     On a horizontal plane the default frame direction ``e = z`` is the normal itself:
 
     >>> import hybrid
-    >>> floor = hybrid.Plane(point=(0.0, 0.0, 0.0), normal=(0.0, 0.0, 1.0))
-    >>> hybrid.task_frame(floor, [0.3, 0.0, 0.0], [0.1, 0.0, 0.0])  # doctest: +ELLIPSIS
+    >>> floor = hybrid.Plane(point=(0, 0, 0), normal=(0, 0, 1))
+    >>> hybrid.task_frame(floor, [0.3, 0.0, 0.0],
+    ...                   [0.1, 0.0, 0.0])  # doctest: +ELLIPSIS
     Traceback (most recent call last):
         ...
-    hybrid.errors.TaskFrameError: task_frame: the task frame is undefined: ...
+    hybrid.errors.TaskFrameError: task_frame: the task frame is ...
     """
 
 
@@ -110,11 +117,15 @@ class SampleTimingError(HybridError):
     Examples
     --------
     >>> import hybrid
-    >>> error = hybrid.SampleTimingError("SAMPLE_LATE", t=0.03, last=0.01, sample_time=0.01, torque=[0.0, 0.0])
+    >>> error = hybrid.SampleTimingError(
+    ...     "SAMPLE_LATE", t=0.03, last=0.01, sample_time=0.01,
+    ...     torque=[0.0, 0.0])
     >>> error.status, error.t
     ('SAMPLE_LATE', 0.03)
-    >>> print(str(error).splitlines()[0])
-    sample at t = 0.03 s is late: 0.02 s after the last (t = 0.01 s), the sample time is 0.01 s
+    >>> first = str(error).splitlines()[0]
+    >>> print(first)  # doctest: +NORMALIZE_WHITESPACE
+    sample at t = 0.03 s is late: 0.02 s after the last (t = 0.01 s),
+    the sample time is 0.01 s
     """
 
     def __init__(self, status: str, t: float, last: float, sample_time: float, torque):
@@ -148,11 +159,13 @@ class ParameterError(HybridError):
     Examples
     --------
     >>> import hybrid
-    >>> error = hybrid.ParameterError("torque_limit", -1.0, "a limit >= 0", torque=[0.0, 0.0])
+    >>> error = hybrid.ParameterError("torque_limit", -1.0,
+    ...                               "a limit >= 0", torque=[0, 0])
     >>> error.status, error.name
     ('PARAMETER_INVALID', 'torque_limit')
-    >>> print(error)  # doctest: +ELLIPSIS
-    torque_limit = -1.0; give a limit >= 0 (the sample was refused: ...)
+    >>> print(error)  # doctest: +ELLIPSIS, +NORMALIZE_WHITESPACE
+    torque_limit = -1.0; give a limit >= 0 (the sample was refused:
+    ...)
     """
 
     status = "PARAMETER_INVALID"
@@ -180,11 +193,13 @@ class SafeStopError(HybridError):
     Examples
     --------
     >>> import hybrid
-    >>> error = hybrid.SafeStopError([0.0, 0.0], faults=5, cause="a NaN force reading")
+    >>> error = hybrid.SafeStopError([0.0, 0.0], faults=5,
+    ...                              cause="a NaN force reading")
     >>> error.status, error.faults
     ('SAFE_STOP', 5)
-    >>> print(error)  # doctest: +ELLIPSIS
-    the controller is in its safe state after 5 consecutive faulted samples (the last: a NaN force reading); ...
+    >>> print(error)  # doctest: +ELLIPSIS, +NORMALIZE_WHITESPACE
+    the controller is in its safe state after 5 consecutive faulted
+    samples (the last: a NaN force reading); ...
     """
 
     status = "SAFE_STOP"

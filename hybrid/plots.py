@@ -16,7 +16,7 @@ Figures (each returns a :class:`matplotlib.figure.Figure`; nothing is shown or s
 - :func:`plot_normal_estimate`: an estimated surface's normal against the true one (or the angle
   between them [deg]) over time [s];
 - :func:`plot_sweep`: a sweep's metric over two swept settings, a panel per value of up to two
-  others, each panel with its own colour scale; or the ratio of one row's values to another's
+  others, the panels on one colour scale; or the ratio of one row's values to another's
   (e.g. the task law's metric over Khatib's), on a logarithmic scale centred at 1.
 
 Files (each writes every format asked for, atomically, and returns the paths): :func:`paper_figures`,
@@ -410,8 +410,9 @@ def plot_sweep(table, x: str, y: str, metric: str, rows: str | None = None, cols
                ratio: tuple | None = None):
     """A sweep's ``metric`` (a column of :func:`hybrid.sweep`'s table) over the swept settings ``x`` by
     ``y``, averaged over any other swept setting, a panel per value of ``rows`` and ``cols``; runs
-    that are not ``ok`` and NaN cells are left blank. Each panel has its own colour scale (its
-    colour bar is in the metric's unit; lengths and speeds below 1 in mm and mm/s). With
+    that are not ``ok`` and NaN cells are left blank. The panels share one colour scale, from the
+    smallest to the largest cell of any panel, and one colour bar, in the metric's unit (lengths and
+    speeds below 1 in mm and mm/s): a colour is the same value in every panel. With
     ``ratio = (a, b)`` (two values of ``rows``): one row of panels, the metric at ``rows = a`` over
     the metric at ``rows = b``, on one logarithmic scale centred at 1 for every panel (blue: ``a``'s
     smaller; a black line where the two are equal). Returns the Figure, or None when no run reports
@@ -435,9 +436,9 @@ def plot_sweep(table, x: str, y: str, metric: str, rows: str | None = None, cols
                 panels[rv, cv] = _panel(grid, rows, cols, rv, cv, ratio)
             except KeyError:  # no run of this panel finished: left empty
                 pass
-    norm = _ratio_norm(panels.values()) if ratio is not None else None
+    norm = _ratio_norm(panels.values()) if ratio is not None else _shared_norm(panels.values(), factor)
     fig, axes = plt.subplots(len(row_values), len(col_values), squeeze=False, layout="constrained",
-                             figsize=(3.3 * len(col_values) + (1.6 if ratio else 0.9), 2.8 * len(row_values) + 0.9))
+                             figsize=(3.3 * len(col_values) + 1.6, 2.8 * len(row_values) + 0.9))
     image = None
     for i, rv in enumerate(row_values):
         for j, cv in enumerate(col_values):
@@ -446,11 +447,8 @@ def plot_sweep(table, x: str, y: str, metric: str, rows: str | None = None, cols
                 ax.text(0.5, 0.5, "no ok runs", ha="center", va="center", transform=ax.transAxes, fontsize=FONT)
                 ax.set_axis_off()
                 continue
-            if ratio is None:
-                image = _heatmap(ax, panels[rv, cv], factor, colors.Normalize(), "viridis")
-                fig.colorbar(image, ax=ax, shrink=0.9, pad=0.02).ax.tick_params(labelsize=FONT - 2)
-            else:
-                image = _heatmap(ax, panels[rv, cv], 1.0, norm, "RdBu_r")
+            image = _heatmap(ax, panels[rv, cv], factor if ratio is None else 1.0, norm,
+                             "viridis" if ratio is None else "RdBu_r")
             if i == 0 and cols:
                 ax.set_title(_setting_text(cols, cv), fontsize=FONT)
             if i == len(row_values) - 1:
@@ -458,13 +456,15 @@ def plot_sweep(table, x: str, y: str, metric: str, rows: str | None = None, cols
             if j == 0:
                 scheme = f"{_value_text(rv)}\n" if rows and ratio is None else ""
                 ax.set_ylabel(scheme + label(y), fontsize=FONT)
+    bar = fig.colorbar(image, ax=axes, shrink=0.9, pad=0.01)  # one scale for every panel
     if ratio is not None:
         a, b = (SHORT.get(str(v), _value_text(v)) for v in ratio)
-        bar = fig.colorbar(image, ax=axes, shrink=0.9, pad=0.01)
         bar.set_label(f"{a} / {b}", fontsize=FONT)
         _ratio_ticks(bar, norm)
-        what = f"{_short(text)}: {a} / {b} (below 1, blue: the {a}'s is smaller; black line: equal)"
+        what = f"{_short(text)}: {a} / {b}\n(below 1, blue: the {a}'s is smaller; black line: equal)"
     else:
+        bar.set_label(text, fontsize=FONT)
+        bar.ax.tick_params(labelsize=FONT - 1)
         what = f"{text}" + (f", a row per {label(rows)}" if rows else "")
     fig.suptitle(what, fontsize=FONT + 1)
     return fig
@@ -501,6 +501,13 @@ def _panel(grid, rows, cols, rv, cv, ratio):
     if ratio is None:
         return pick(rv)
     return pick(ratio[0]) / pick(ratio[1])
+
+
+def _shared_norm(panels, factor: float):
+    """One linear scale for every panel (their values times ``factor``), from the smallest cell to the largest."""
+    values = np.concatenate([np.ravel(p.values) for p in panels]) * factor if panels else np.array([])
+    finite = values[np.isfinite(values)]
+    return colors.Normalize(finite.min(), finite.max()) if finite.size else colors.Normalize()
 
 
 def _ratio_norm(panels):

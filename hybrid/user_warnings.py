@@ -22,9 +22,10 @@ class JointLimitWarning(UserWarning):
 
     >>> import warnings
     >>> import hybrid
+    >>> exp = hybrid.paper_experiment(duration=0.05)
     >>> with warnings.catch_warnings():
     ...     warnings.simplefilter("error", hybrid.JointLimitWarning)
-    ...     result = hybrid.simulate(hybrid.paper_experiment(duration=0.05))
+    ...     result = hybrid.simulate(exp)
     >>> result.limit_violations
     {}
     """

@@ -6,6 +6,7 @@ from __future__ import annotations
 import matplotlib
 import numpy as np
 import pytest
+from conftest import pinocchio_model
 from matplotlib import animation as mpl_animation
 from PIL import Image
 
@@ -25,6 +26,12 @@ pytestmark = pytest.mark.filterwarnings("ignore:Animation was deleted without re
 def ur5_run():
     """The UR5 on the sphere, a short run (20 control samples)."""
     return hybrid.simulate(hybrid.tracing_experiment(duration=0.2))
+
+
+@pytest.fixture(scope="module")
+def panda_run():
+    """The Panda around its pillar (7 joints, a posture task), a short run."""
+    return hybrid.simulate(hybrid.panda_experiment(duration=0.2))
 
 
 @pytest.fixture(scope="module")
@@ -57,16 +64,18 @@ def test_one_picture_per_chosen_sample(ur5_run, tmp_path):
         assert gif.format == "GIF" and gif.n_frames == len(range(0, n + 1, 4))
 
 
-def test_links_are_the_pinocchio_joint_origins(ur5_run):
+@pytest.mark.parametrize("which", ["ur5_run", "panda_run"])
+def test_links_are_the_pinocchio_joint_origins(which, request):
     pin = pytest.importorskip("pinocchio")
-    robot = ur5_run.experiment.robot
+    run = request.getfixturevalue(which)
+    robot = run.experiment.robot
     urdf, tip, _ = robot.source
-    model = pin.buildModelFromUrdf(urdf)
+    model = pinocchio_model(urdf, robot.joint_names)  # the Panda's fingers locked, as the library holds them
     assert tuple(model.names[1:]) == robot.joint_names
     data = model.createData()
-    for sample in (0, 7, ur5_run.experiment.n_samples):
-        frame = animation.arm_frame(ur5_run, sample)
-        q = ur5_run.q[_row(ur5_run, sample)]
+    for sample in (0, 7, run.experiment.n_samples):
+        frame = animation.arm_frame(run, sample)
+        q = run.q[_row(run, sample)]
         pin.forwardKinematics(model, data, q)
         pin.updateFramePlacements(model, data)
         joints = np.array([data.oMi[i].translation for i in range(1, model.njoints)])
@@ -122,6 +131,31 @@ def test_the_figure_draws_the_frame_data(ur5_run):
     np.testing.assert_array_equal(np.array(picture.path.get_data_3d()).T, frames[1].path)
     assert len(frames[1].path) == 11  # samples 0 to 10
     assert "t = 0.10 s" in picture.clock.get_text()
+
+
+def test_a_mesh_part_is_drawn_by_its_facets_under_the_path():
+    """A run on a part given as a mesh draws facets of that mesh (each drawn triangle one of its facets),
+    among them every facet at the sensor tip's path (those of the vertex nearest each point of it)."""
+    pytest.importorskip("scipy")
+    x, y = np.meshgrid(np.linspace(-0.1, 0.1, 21), np.linspace(-0.1, 0.1, 21), indexing="ij")
+    vertices = np.column_stack([0.5 + x.ravel(), y.ravel(), 0.25 - (x ** 2 + y ** 2).ravel()])  # a shallow dome
+    corner = np.arange(x.size).reshape(x.shape)[:-1, :-1].ravel()
+    faces = np.vstack([np.column_stack([corner, corner + 21, corner + 22]), np.column_stack([corner, corner + 22,
+                                                                                          corner + 1])])
+    part = hybrid.MeshSurface(vertices, faces, spacing=0.015)
+    run = hybrid.simulate(hybrid.tracing_experiment(surface=part, start_point=tuple(part.project([0.5, 0.05, 0.26])),
+                                                    frame_direction=(1.0, 0.0, 0.0), duration=0.3))
+    picture = animation.ArmPicture(run, animation.arm_frames(run, [0]), 0.01)
+    # a 3-D line collection keeps its segments in base coordinates until it is drawn (then projected)
+    (drawn,) = [c for c in picture.ax.collections if len(getattr(c, "_segments3d", ()))]
+    triangles = np.round(np.array(drawn._segments3d), 12)
+    facets = {tuple(np.round(t, 12).ravel()) for t in part.vertices[part.faces]}
+    assert all(tuple(t.ravel()) in facets for t in triangles)
+    path = np.column_stack([run.output(c) for c in ("s_x", "s_y", "s_z")])
+    nearest = np.unique(np.argmin(np.linalg.norm(path[:, None] - part.vertices[None], axis=2), axis=1))
+    under = {tuple(np.round(part.vertices[f], 12).ravel()) for f in part.faces if np.isin(f, nearest).any()}
+    assert under <= {tuple(t.ravel()) for t in triangles} and len(under) >= 6
+    assert not any(c.get_label() == "contact points" for c in picture.ax.collections)
 
 
 def test_planar_arm_against_its_closed_form(planar_run):

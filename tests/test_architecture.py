@@ -37,7 +37,7 @@ GENERATED = ROOT / "generated"
 #: the generator and the libraries only some commands need: none may load with ``import hybrid`` (nor the
 #: reader of a controller's file and its schema)
 HEAVY = ("sympy", "casadi", "hybrid.codegen", "pandas", "matplotlib", "mujoco", "hybrid.control.config", "scipy",
-         "cvxpy")
+         "cvxpy", "plotly")
 REFUSAL = "error: regenerate needs a checkout of the project's repository"
 
 #: Imports of the project's own modules made inside a function, and why each is not at module level.
@@ -46,6 +46,7 @@ LAZY_IMPORTS = {
     ("hybrid.cli.sweep", "hybrid.plots"): "matplotlib loads only when a sweep draws its heatmaps",
     ("hybrid.simulation.results", "hybrid.plots"): "matplotlib loads only when a result is drawn (res.plot())",
     ("hybrid.simulation.results", "hybrid.animation"): "matplotlib loads only when a result is animated",
+    ("hybrid.simulation.results", "hybrid.view3d"): "plotly (an optional extra) loads only when a result is viewed",
     ("hybrid.plants.registry", "hybrid.plants.mujoco"): "MuJoCo is an optional extra: it loads when a run asks",
     ("hybrid.plants.registry", "hybrid.plants.mujoco_contact"): "MuJoCo is an optional extra: it loads when a run "
                                                                "asks",
@@ -547,12 +548,14 @@ def test_a_warm_run_needs_neither_sympy_nor_casadi(tmp_path):
 
 
 def test_the_papers_runs_in_a_fresh_cache_need_no_generator_and_compile_only_their_loop(tmp_path):
-    """The paper's experiment, under each scheme, runs from the closed loops committed in
-    ``generated/loops``: a fresh cache generates nothing, and compiles the loop alone (its record comes
-    from the loop, not from the plant's unit)."""
+    """The paper's experiment, under each scheme, alone and in a sweep, runs from the closed loops
+    committed in ``generated/loops``: a fresh cache generates nothing, and compiles the loops alone (a
+    run's record comes from the loop, not from the plant's unit)."""
     code = ("import sys, hybrid\n"
             "for c in ('task', 'khatib', 'raibert_craig'):\n"
             "    hybrid.simulate(hybrid.paper_experiment(duration=0.02, controller=c))\n"
+            "hybrid.sweep(hybrid.paper_experiment(duration=0.02), {'controller': ['task', 'raibert_craig'], "
+            "'model_error': [0.0, 0.1]}, workers=1)\n"
             "print(sorted(m for m in ('sympy', 'casadi', 'hybrid.codegen') if m in sys.modules))")
     cache = tmp_path / "cache"
     run = _run(["-c", code], tmp_path, HYBRID_CACHE_DIR=str(cache))
@@ -581,8 +584,10 @@ def test_the_paper_command_builds_its_loops_side_by_side_once_each(tmp_path):
     """
     run = _run(["-c", code], tmp_path, HYBRID_CACHE_DIR=str(tmp_path / "cache"))
     assert run.returncode == 0, run.stderr
-    loops = len(json.loads((GENERATED / "loops" / "index.json").read_text())["loops"])
-    assert run.stdout.split() == [str(loops), str(loops)]
+    from hybrid.cli.regenerate import committed_loops
+
+    alone = {(plant, tuple(sorted(v.items(), key=str))) for plant, v, lanes in committed_loops() if lanes == 1}
+    assert run.stdout.split() == [str(len(alone)), str(len(alone))]
 
 
 def test_the_version_has_one_source():

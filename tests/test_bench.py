@@ -29,7 +29,8 @@ def test_bench_quick_reports_every_benchmark():
                  targets.FIRST_SIMULATE, targets.COLD_PAPER, targets.ONE_RUN, targets.LOOP_RUN, targets.TRACE_ONE,
                  targets.TRACE_RUN, targets.SWEEP_3D, targets.LOOP_OPS, f"ur5: {targets.LAW_BATCHED}",
                  targets.PATH_FOLLOW, targets.PATH_SAMPLE, targets.PATH_RUN, targets.PART_FIT, targets.PART_SAMPLE,
-                 targets.PART_RUN, targets.EXCITATION_QUICK, targets.IDENTIFY):
+                 targets.PART_RUN, targets.EXCITATION_QUICK, targets.IDENTIFY,
+                 f"panda: {targets.constant_row('forward_dynamics', True)}"):
         assert part in names
     if hasattr(os, "sched_setaffinity"):
         assert f"ur5: {targets.LAW_BATCHED_ONE_CORE}" in names

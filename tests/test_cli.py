@@ -312,13 +312,19 @@ def _table() -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def test_sweep_heatmaps_have_names_and_units_and_one_scale_per_panel():
+def test_sweep_heatmaps_have_names_and_units_and_one_scale_for_their_panels():
     table = _table()
     fig = plots.plot_sweep(table, "model_error", "contact.friction", "speed_drop_after_force_step_m_per_s",
                            rows="controller", cols="speed_reference.before")
     panels = [ax for ax in fig.axes if ax.images]
     assert len(panels) == 4
-    assert len([ax for ax in fig.axes if ax.get_label() == "<colorbar>"]) == 4  # a colour scale per panel
+    (bar,) = [ax for ax in fig.axes if ax.get_label() == "<colorbar>"]  # the panels compare: one colour bar
+    assert bar.get_ylabel() == "speed drop after the force step [mm/s]"
+    # one scale, from the table's smallest drop to its largest (mm/s): a colour is one value in every panel
+    drops = 1000 * table["speed_drop_after_force_step_m_per_s"]
+    (norm,) = {(im.norm.vmin, im.norm.vmax) for ax in panels for im in ax.images}
+    assert norm == pytest.approx((drops.min(), drops.max()))
+    assert np.ptp(panels[0].images[0].get_array()) < 0.5 * (drops.max() - drops.min())  # not a panel's own range
     assert {ax.get_xlabel() for ax in panels} - {""} == {"model error (inertia too high) [fraction]"}
     assert "friction coefficient [-]" in panels[0].get_ylabel() and "task-space decoupling" in panels[0].get_ylabel()
     assert panels[0].get_title() == "speed while the force steps = 0.1 m/s"

@@ -61,8 +61,8 @@ def test_the_c_example_agrees_with_python(tmp_path):
     out = subprocess.run([str(exe)], capture_output=True, text=True, check=True).stdout.split("\n")
     p = np.array([float(v) for v in out[0].split()[1:]])
     n = np.array([float(line.split()[1]) for line in out[1:] if line])
-    q, qd = re.search(r"q\[UR5_NQ\] = \{(.*?)\}, qd\[UR5_NQ\] = \{(.*?)\}", block.group(1)).groups()
-    q, qd = (np.array([float(v) for v in s.split(",")]) for s in (q, qd))
+    declared = {name: re.search(rf"\b{name}\[UR5_NQ\] = \{{(.*?)\}}", block.group(1))[1] for name in ("q", "qd")}
+    q, qd = (np.array([float(v) for v in declared[name].split(",")]) for name in ("q", "qd"))
     ur5 = hybrid.Robot.from_urdf(example_robot(UR5[0]), tip="tool0")
     terms = hybrid.arm_terms(ur5, q, qd)
     np.testing.assert_allclose(p, terms["r"], rtol=1e-13, atol=1e-15)

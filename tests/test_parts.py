@@ -175,6 +175,29 @@ def test_the_ur5_on_a_mesh_runs_as_on_the_formula(mesh_sphere):
     assert np.abs(tip[0] - tip[1]).max() <= 1e-3
 
 
+def test_the_estimator_on_a_part_compares_as_on_the_formula(mesh_sphere):
+    """A controller estimating the surface (EstimatedSurface) while the plant's is the sphere's mesh: the
+    estimate's angle to the sphere's own normal (the formula, not the fit) at the sensor tip, the result's
+    comparison against the part's normal and the force error all as in the run on the formula."""
+    _, part = mesh_sphere
+    start = SPHERE.project(np.array([0.5, -0.05, 0.35]))
+    runs = [hybrid.simulate(hybrid.tracing_experiment(surface=s, duration=1.5, start_point=tuple(start),
+                                                      controller_surface=hybrid.EstimatedSurface()))
+            for s in (SPHERE, part)]
+    exact, mesh = runs
+    columns = [mesh.record["outputs"].index(c) for c in ("s_x", "s_y", "s_z")]
+    tip = mesh.outputs[::mesh.experiment.steps_per_sample][:mesh.experiment.n_samples, columns]
+    formula = np.array([SPHERE.normal_at(p) for p in tip])
+    against_formula = np.degrees(np.arccos(np.clip(np.einsum("ij,ij->i", mesh.normal_estimate, formula), -1, 1)))
+    late = mesh.sample_t >= 0.5  # after the first touch has settled, as the metrics take it
+    # the part's normal is within the fit's 0.2 degrees of the formula's: the comparisons agree to that
+    assert np.abs(against_formula - mesh.normal_angle_error_deg)[late].max() <= 0.2
+    assert np.abs(mesh.normal_angle_error_deg - exact.normal_angle_error_deg)[late].max() <= 0.2
+    for name in ("normal_angle_error_deg", "max_normal_angle_error_deg"):
+        assert mesh.metrics[name] == pytest.approx(exact.metrics[name], abs=0.1), name
+    assert mesh.metrics["rms_force_error_N"] == pytest.approx(exact.metrics["rms_force_error_N"], rel=0.05)
+
+
 # ------------------------------------------------------------------------------------------ bad input
 
 CUBE_V = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]) * 0.05

@@ -47,13 +47,15 @@ def test_library_example(tmp_path, monkeypatch, capsys):
 
 
 def _quick_start(text: str) -> list[str]:
-    """The quick start's commands: the lines that make the virtual environment."""
-    return [line.strip() for line in text.splitlines() if line.strip().startswith("python3 -m venv .venv")]
+    """The quick start's commands: those that make the virtual environment, each with the lines it
+    continues on (a trailing backslash) joined, its spaces as one."""
+    commands = re.sub(r"\\\n", " ", text).splitlines()
+    return [" ".join(line.split()) for line in commands if line.strip().startswith("python3 -m venv .venv")]
 
 
 def test_getting_started_gives_the_readme_quick_start():
     """The documentation's two commands are the README's, character for character (a second run of the
-    paper's command needs its --force)."""
+    paper's command needs its --force), their line breaks aside."""
     readme = _quick_start(README.read_text())
     assert len(readme) == 2
     assert _quick_start((ROOT / "docs" / "getting_started.rst").read_text()) == readme

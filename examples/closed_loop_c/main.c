@@ -241,8 +241,8 @@ int main(int argc, char **argv) {
         perror(path);
         return 1;
     }
-    printf("# the UR5 on the sphere: %ld samples of %g s, %d RK4 steps of %g s each\n", n_samples, p.sample_time,
-           p.steps_per_sample, p.h);
+    printf("# the UR5 on the sphere: %ld samples of %g s,\n# each %d RK4 steps of %g s\n", n_samples,
+           p.sample_time, p.steps_per_sample, p.h);
     metrics_print(&m, p.h);
     return 0;
 }

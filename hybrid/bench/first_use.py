@@ -1,5 +1,5 @@
-"""What a first use costs: ``import hybrid`` against ``import numpy``, and the first paper run and
-``paper`` command, each in fresh processes with an empty cache."""
+"""What a first use costs: ``import hybrid`` against ``import numpy``, and the first paper run, the
+``paper`` command and the first sweep, each in fresh processes with an empty cache."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from hybrid.bench.targets import COLD_PAPER, FIRST_SIMULATE, IMPORT
+from hybrid.bench.targets import COLD_PAPER, FIRST_SIMULATE, FIRST_SWEEP, IMPORT
 
 
 def import_benchmarks(rep: int, add) -> None:
@@ -44,6 +44,15 @@ FIRST_RUN = ("import json, time; t0 = time.perf_counter(); import hybrid; t1 = t
              "hybrid.simulate(hybrid.paper_experiment()); t2 = time.perf_counter(); "
              "print(json.dumps({'import_s': t1 - t0, 'simulate_s': t2 - t1}))")
 
+#: a fresh process's first sweep of the paper's experiment and the same sweep again, warm (one JSON line; the
+#: grid as the sweeps' rows of :mod:`hybrid.bench.runs` take it: {runs} runs over every core)
+FIRST_SWEEP_RUN = ("import json, time, numpy as np; import hybrid; exp = hybrid.paper_experiment(); "
+                   "grid = {{'model_error': list(np.linspace(0.0, 0.5, {runs} // 4)), "
+                   "'controller': ['task', 'khatib'], 'contact.friction': [0.1, 0.2]}}; "
+                   "t0 = time.perf_counter(); hybrid.sweep(exp, grid); t1 = time.perf_counter(); "
+                   "hybrid.sweep(exp, grid); t2 = time.perf_counter(); "
+                   "print(json.dumps({{'first_s': t1 - t0, 'warm_s': t2 - t1}}))")
+
 
 def _fresh(args: list[str]) -> tuple[float, str, list[str]]:
     """``python ARGS`` in a fresh process with an empty cache, in an empty temporary folder: its wall
@@ -61,17 +70,24 @@ def _fresh(args: list[str]) -> tuple[float, str, list[str]]:
 
 def cold_benchmarks(quick: bool, add) -> None:
     """What a first use costs, each in a fresh process with an empty cache (the median of 3; with
-    ``quick``, one): the first paper ``simulate`` (timed inside the process, its import apart), and
-    the ``paper`` command's wall time."""
-    first, imports, paper = [], [], []
+    ``quick``, one): the first paper ``simulate`` (timed inside the process, its import apart), the
+    ``paper`` command's wall time, and a first sweep against the same sweep again in that process."""
+    first, imports, paper, sweeps = [], [], [], []
     for _ in range(1 if quick else 3):
         times = json.loads(_fresh(["-c", FIRST_RUN])[1].strip().splitlines()[-1])
         first.append(times["simulate_s"])
         imports.append(times["import_s"])
         wall, _, written = _fresh(["-m", "hybrid", "paper", "--out", "out"])
         paper.append(wall)
+        code = FIRST_SWEEP_RUN.format(runs=1000 if quick else 10000)
+        sweeps.append(json.loads(_fresh(["-c", code])[1].strip().splitlines()[-1]))
     imported = statistics.median(imports)
     add(FIRST_SIMULATE, statistics.median(first), "s",
         ratio=f"the same process's import hybrid: {imported * 1e3:.0f} ms", import_s=imported)
     add(COLD_PAPER, statistics.median(paper), "s",
         ratio=f"{len(written)} files written (figures, metrics, time series)")
+    # the sweep's loop is committed (generated/loops): a first sweep compiles it, and generates nothing
+    cold, warm = (statistics.median(s[k] for s in sweeps) for k in ("first_s", "warm_s"))
+    runs = "1,000 runs (quick)" if quick else "10,000 runs"
+    add(FIRST_SWEEP, cold, "s", ratio=f"{cold / warm:.2f}x the same sweep warm ({warm:.2f} s, {runs})",
+        of_warm=cold / warm)

@@ -6,6 +6,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from functools import partial
 
+from hybrid.bench.constant_model import ARMS as CONSTANT_ARMS
+from hybrid.bench.constant_model import constant_model_benchmarks
 from hybrid.bench.dynamics import dynamics_benchmarks
 from hybrid.bench.excitation import excitation_benchmarks
 from hybrid.bench.first_use import cold_benchmarks, import_benchmarks
@@ -40,7 +42,7 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
     law = PaperLaw(quick, rep, add)
     groups = [("import hybrid against import numpy, fresh processes",
                partial(import_benchmarks, 5 if quick else 21, add)),
-              ("first use: the paper's simulate and paper command, fresh process and cache",
+              ("first use: the paper's simulate, paper command and first sweep, fresh process and cache",
                partial(cold_benchmarks, quick, add)),
               *((f"F* in C ({b} backend)", partial(law.law_in_c, b)) for b in ("sympy", "casadi")),
               ("F* from Python, single state", law.one_state),
@@ -57,6 +59,8 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
     groups += [(f"{name}: RNEA, forward dynamics, CRBA and the terms in C against Pinocchio's code generation "
                 "(CppADCodeGen; its generator's first build takes minutes)",
                 partial(dynamics_benchmarks, name, path, tip, rep, quick, add)) for name, (path, tip) in ROBOTS.items()]
+    groups += [(f"{name}: inverse and forward dynamics and terms in C, a constant model against run-time parameters",
+                partial(constant_model_benchmarks, name, rep, quick, add)) for name in CONSTANT_ARMS]
     groups += [(f"{name}: the 6-D decoupling law in C, from Python, batched (both cores, one core), "
                 "by Pinocchio + NumPy; the controller step",
                 partial(spatial_benchmarks, name, path, tip, rep, quick, add)) for name, (path, tip) in ROBOTS.items()]

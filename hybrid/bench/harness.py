@@ -68,14 +68,22 @@ def harness_source(prefix: str, entry: dict, values: dict, singular_tol: float =
 
 def c_harness_ns(src_dir: Path, prefix: str, entry: dict, values: dict, calls: int, repeat: int) -> float:
     """Per-call time of a generated function inside C, by a compiled loop (the runtime's flags)."""
+    return c_program_ns(harness_source(prefix, entry, values), src_dir, prefix, calls, repeat)
+
+
+def c_program_ns(source: str, src_dir: Path, prefix: str, calls: int, repeat: int, *args: str,
+                 include: tuple[Path, ...] = ()) -> float:
+    """The median of the per-call times [ns] a timing program (``source``, compiled with the unit ``prefix``
+    of ``src_dir`` and the runtime's flags) prints, run for ``calls`` calls ``repeat`` times (then ``args``)."""
     cc, ident = compiler.compiler()
     with tempfile.TemporaryDirectory() as tmp:
         main = Path(tmp) / "bench.c"
-        main.write_text(harness_source(prefix, entry, values))
+        main.write_text(source)
         exe = Path(tmp) / "bench"
         flags = [f for f in compiler.flags(ident) if f != "-fPIC"]
         # the unit's folder, and the generator's headers (the SIMD lanes' header a unit includes)
-        subprocess.run([cc, *flags, f"-I{src_dir}", f"-I{generator.include_dir()}", str(main),
-                        str(src_dir / f"{prefix}.c"), "-o", str(exe), "-lm"], check=True, capture_output=True)
-        out = subprocess.run([str(exe), str(calls), str(repeat)], check=True, capture_output=True, text=True)
+        folders = [f"-I{d}" for d in (src_dir, generator.include_dir(), *include)]
+        subprocess.run([cc, *flags, *folders, str(main), str(src_dir / f"{prefix}.c"), "-o", str(exe), "-lm"],
+                       check=True, capture_output=True)
+        out = subprocess.run([str(exe), str(calls), str(repeat), *args], check=True, capture_output=True, text=True)
     return statistics.median(float(x) for x in out.stdout.split())

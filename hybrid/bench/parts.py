@@ -1,18 +1,22 @@
-"""Parts (:class:`hybrid.MeshSurface`): the fit of a finely tessellated part, the controller's sample on a part
-against the same on the shape's formula, and the 3-D run on a part in the compiled loop against the run on the
-formula."""
+"""Parts (:class:`hybrid.MeshSurface`): the fit of a finely tessellated part, the task frame and its rate on a part
+in C against the same on the shape's formula, the controller's sample on a part against the same on the formula,
+and the 3-D run on a part in the compiled loop against the run on the formula."""
 
 from __future__ import annotations
 
+import tempfile
 import time
+from pathlib import Path
 
 import numpy as np
 
-from hybrid.bench.harness import WARM_UP, median_ns
-from hybrid.bench.targets import PART_FIT, PART_RUN, PART_SAMPLE
+from hybrid.bench.harness import WARM_UP, c_harness_ns, c_program_ns, median_ns
+from hybrid.bench.targets import PART_FIT, PART_FRAME, PART_RUN, PART_SAMPLE
+from hybrid.bench.templates import render
 from hybrid.experiments.tracing import tracing_experiment
 from hybrid.geometry.parts import MeshSurface
 from hybrid.geometry.surfaces import Sphere
+from hybrid.native import loader, units
 from hybrid.simulation.runner import simulate
 
 #: the shape the part is a mesh of (the tracing experiment's sphere)
@@ -39,6 +43,9 @@ def part_benchmarks(quick: bool, add) -> None:
     part = MeshSurface(*sphere_mesh(5), spacing=0.006)
     sphere = Sphere(tuple(CENTRE), RADIUS)
     start = tuple(sphere.project(np.array([0.5, -0.05, 0.35])))
+    frames = frame_ns(part, sphere, np.array(start), quick)
+    add(PART_FRAME, frames["part"], "ns", of_formula=frames["part"] / frames["sphere"],
+        ratio=f"{frames['part'] / frames['sphere']:.2f}x the frame on the sphere in C ({frames['sphere']:.0f} ns)")
     runs = {name: tracing_experiment(surface=s, start_point=start, duration=3.0)
             for name, s in (("part", part), ("sphere", sphere))}
     samples = {name: _sample_us(exp, quick) for name, exp in runs.items()}
@@ -52,6 +59,27 @@ def part_benchmarks(quick: bool, add) -> None:
     add(PART_RUN, times["part"], "ms",
         ratio=f"{times['part'] / times['sphere']:.2f}x the run on the sphere ({times['sphere']:.0f} ms)",
         of_formula=times["part"] / times["sphere"])
+
+
+def frame_ns(part: MeshSurface, sphere: Sphere, p: np.ndarray, quick: bool) -> dict[str, float]:
+    """The task frame ``R_L``, its rate and the normal at ``p`` in C, per call [ns]: on ``part`` (its phi's
+    expansion about ``p`` by ``hybrid_part.h``, then the quadric's frame) and on the ``sphere``'s formula."""
+    pd, e = np.array([0.05, 0.02, 0.0]), np.array([0.0, 0.0, 1.0])
+    calls, repeat = (20_000, 5) if quick else (200_000, 11)
+    unit = units.frame_unit(sphere.spec())
+    entry = unit.entry("task_frame")
+    formula = c_harness_ns(unit.folder, unit.manifest["unit"], entry,
+                           {"p": p, "pd": pd, "surface": sphere.as_array(), "e": e}, calls, repeat)
+    unit = units.frame_unit(part.spec())
+    source = render("part_frame.c.j2", prefix=unit.manifest["unit"], symbol=unit.entry("task_frame")["symbol"],
+                    p=[repr(float(x)) for x in p], pd=[repr(float(x)) for x in pd], e=[repr(float(x)) for x in e])
+    data = np.concatenate(part.data())
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "part.bin"
+        path.write_bytes(np.int64(len(data)).tobytes() + data.astype(float).tobytes())
+        on_part = c_program_ns(source, unit.folder, unit.manifest["unit"], calls, repeat, str(path),
+                               include=(loader.source_dir(),))
+    return {"part": on_part, "sphere": formula}
 
 
 def _sample_us(exp, quick: bool) -> float:

@@ -31,6 +31,7 @@ def experiment_row(duration: float, how: str) -> str:
 IMPORT = "import hybrid in a fresh process, from bytecode, less the interpreter's start"
 FIRST_SIMULATE = "first paper simulate (hybrid.simulate(hybrid.paper_experiment())), fresh process and cache"
 COLD_PAPER = "python -m hybrid paper --out DIR, fresh process and cache (wall time)"
+FIRST_SWEEP = "first sweep of 10,000 paper runs (both cores), fresh process and cache"
 
 # ------------------------------------------------------------------ the URDF arms (each row's name after "ARM: ")
 
@@ -77,6 +78,7 @@ PATH_FOLLOW = "path follower (generated C), one call from Python, per call"
 PATH_SAMPLE = "UR5 controller sample with a path task (follower, measurement, step) from Python, per sample"
 PATH_RUN = "UR5 along a 3-pass raster (4 s simulated) through hybrid.simulate"
 PART_FIT = "fit of a part of 81,920 facets (the sphere's mesh, a grid of 6 mm)"
+PART_FRAME = "task frame, its rate and the normal on a part in C (the expansion about the point, the frame), per call"
 PART_SAMPLE = "UR5 controller sample on a part (its expansion about the tip, measurement, step) from Python, per sample"
 PART_RUN = "3-D run on a part (UR5 on the sphere's mesh, 3 s simulated) through hybrid.simulate"
 STABILITY_MAP = "stability map of 10^4 points (paper's experiment: sensor stiffness x sample time)"
@@ -96,6 +98,21 @@ STANDALONE_STEP = "standalone controller step in C (NAME_controller_step), per c
 STANDALONE_P999 = "standalone controller step in C, p99.9 of the calls"
 STANDALONE_SIZE = "standalone controller, .text of the compiled object"
 STANDALONE_COMPILE = "standalone controller, compile time of the generated C"
+
+
+# ------------------------------------------------------------------ constant models (after "ARM: ")
+
+#: the kernels timed with the parameters given at run time and compiled in, and how a row names each
+CONSTANT_KERNELS = {"inverse_dynamics": "inverse dynamics (RNEA)",
+                    "forward_dynamics": "forward dynamics (CRBA, RNEA, L D L^T)",
+                    "robot_terms": "r, rotation, J, J'q', B, n (robot_terms)"}
+
+
+def constant_row(kernel: str, constant: bool) -> str:
+    """The name of the row of ``kernel`` (a key of :data:`CONSTANT_KERNELS`) in C, its parameters compiled in
+    (a constant model) or given at run time."""
+    how = "parameters compiled in (constant model)" if constant else "run-time parameters"
+    return f"{CONSTANT_KERNELS[kernel]} in C, per call, {how}"
 
 
 # ------------------------------------------------------------------ the targets
@@ -137,6 +154,7 @@ TARGETS = (
     Target(IMPORT, "<= 2.5x import numpy", 2.5, field="ratio_value"),
     Target(FIRST_SIMULATE, "<= 1.5 s", 1.5),
     Target(COLD_PAPER, "<= 8 s", 8),
+    Target(FIRST_SWEEP, "<= 2x the same sweep warm", 2, field="of_warm"),
     Target(f"panda: {TERMS_IN_C}", "<= 1 us", 1000),
     Target(f"panda: {GEN_COMPILE}", "<= 30 s", 30),
     Target(f"ur5: {LAW_IN_C}", "<= 0.6 us", 600),
@@ -155,6 +173,7 @@ TARGETS = (
     Target(TUNE, "<= 60 s", 60),
     Target(LOOP_OPS, f"<= 2/3 of {LOOP_OPS_REFERENCE:,}", 2 / 3 * LOOP_OPS_REFERENCE),
     Target(PART_FIT, "<= 10 s", 10),
+    Target(PART_FRAME, "<= 2x the frame on the sphere", 2, field="of_formula"),
     Target(PART_RUN, "<= 2x the run on the sphere", 2, field="of_formula"),
     Target(STABILITY_MAP, "<= 1 s", 1),
     Target(IDENTIFY, "<= 10 s", 10),

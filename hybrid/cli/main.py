@@ -77,6 +77,9 @@ def _lock(text: str) -> tuple[str, float]:
 
 
 def _generate(args) -> int:
+    if args.constant_model and (args.experiment is not None or args.controller is not None or not args.urdf):
+        raise HybridError("--constant-model compiles a URDF arm's parameters into its kernels: give it with --urdf "
+                          "and --tip alone (not with --controller or --experiment)")
     if args.experiment is not None:
         if args.controller is not None:
             raise HybridError("--controller describes a controller for --urdf; an --experiment has its own: give one")
@@ -88,7 +91,8 @@ def _generate(args) -> int:
                           "controller), or --experiment")
     if args.controller is None:
         with args.report.step(f"generating C99 for the arm of {args.urdf}"):
-            written = generate(args.urdf, args.tip, args.out, args.name, dict(args.lock) or None, force=args.force)
+            written = generate(args.urdf, args.tip, args.out, args.name, dict(args.lock) or None, force=args.force,
+                               constant_model=args.constant_model)
     else:  # the controller the file describes, for this arm
         with args.report.step(f"generating C99 for the controller of {args.controller}"):
             robot = Robot.from_urdf(args.urdf, args.tip, locked=dict(args.lock) or None)
@@ -144,6 +148,9 @@ def build_parser(prog: str = "hybrid") -> argparse.ArgumentParser:
                    help="write the controller this TOML file describes (surface, scheme, task axes, gains, "
                         "references, limits; see hybrid/data/controller_ur5_sphere.toml) for the arm, in place "
                         "of the arm's terms alone")
+    g.add_argument("--constant-model", action="store_true",
+                   help="compile the URDF's inertial parameters, friction and gravity into the arm's kernels as "
+                        "numbers (a constant model: fewer operations, no robot array; with --urdf alone)")
     g.add_argument("--force", action="store_true", help="overwrite files with other content")
     experiment_cli.add_generate_arguments(g)
     common.add_verbose(g)

@@ -28,6 +28,8 @@ from hybrid.spec.stamp import is_hand_edited
 UPDATE_HINT = "run `python -m hybrid regenerate` and commit generated/"
 #: the closed loops committed in ``generated/loops``: an experiment by name, a scheme and lanes each
 LOOPS_FILE = Path(__file__).resolve().parent.parent / "data" / "committed_loops.toml"
+#: a committed loop's ``lanes`` for the build a sweep and a batch of runs take (as many lanes as the vector unit has)
+BATCH = "batch"
 #: the experiments a committed loop may be built from, by the name :data:`LOOPS_FILE` gives them
 EXPERIMENTS = {"paper": paper_experiment}
 
@@ -41,12 +43,12 @@ def committed_loops(path: Path = LOOPS_FILE) -> list[tuple]:
     :func:`hybrid.native.units.loop_files` takes them)."""
     loops = []
     for entry in tomllib.loads(path.read_text())["loop"]:
-        make = EXPERIMENTS.get(entry.get("experiment"))
-        if make is None or not isinstance(entry.get("lanes"), int):
+        make, lanes = EXPERIMENTS.get(entry.get("experiment")), entry.get("lanes")
+        if make is None or not (lanes == BATCH or isinstance(lanes, int) and not isinstance(lanes, bool)):
             raise HybridError(f"{path}: a [[loop]] needs experiment (one of {', '.join(EXPERIMENTS)}), scheme and "
-                              f"lanes (an integer), got {entry}; correct the file")
+                              f"lanes (an integer, or \"{BATCH}\"), got {entry}; correct the file")
         plant, variant = loop_of(make(controller=entry["scheme"]))
-        loops.append((plant, dict(variant), entry["lanes"]))
+        loops.append((plant, dict(variant), None if lanes == BATCH else lanes))
     return loops
 
 

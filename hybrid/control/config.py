@@ -203,7 +203,8 @@ def read_controller_config(path, robot) -> Controller:
     ... center = [0.5, 0.0]
     ... radius = 0.2
     ... ''')
-    >>> controller = hybrid.read_controller_config(path, hybrid.Robot.planar(hybrid.paper_arm()))
+    >>> robot = hybrid.Robot.planar(hybrid.paper_arm())
+    >>> controller = hybrid.read_controller_config(path, robot)
     >>> type(controller).__name__, controller.sample_time
     ('Controller', 0.01)
     """

@@ -13,6 +13,7 @@ from math import isfinite as _isfinite
 
 import numpy as np
 
+from hybrid.control.controller_settings import SETTINGS, GroupedSettings, check_settings, grouped
 from hybrid.control.fault import FaultMonitor, FaultReaction, finite_time, time_passed, timing_status
 from hybrid.control.loops import Gains
 from hybrid.control.measurement import Measurement, wrench_of
@@ -20,6 +21,7 @@ from hybrid.control.options import ContactLoss, Posture, check_posture
 from hybrid.control.path_task import PATH_CHANGES, PathReferences, PathTask
 from hybrid.control.sample_references import SampleReferences
 from hybrid.control.schemes import Scheme, scheme_of
+from hybrid.control.step_checks import CheckedParameters
 from hybrid.control.task_settings import axis_references, gain_array, gains_of, joint_limit, selection_of
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import renamed_attribute, renamed_keywords
@@ -36,11 +38,10 @@ from hybrid.spec.controller_step import (
     NO_LIMIT,
     OPTIONS,
     SENSOR,
-    SETTING_CHECKS,
     STATE_NEXT,
 )
-from hybrid.spec.interfaces import CHECKS, HELD_STATUSES, REFERENCE, Dims
-from hybrid.validate import _finite, check_singular_tol, shown
+from hybrid.spec.interfaces import HELD_STATUSES, REFERENCE, Dims
+from hybrid.validate import shown
 
 #: "no limit" for the options that are off (the generated step takes finite numbers only)
 _OFF = 1e300
@@ -53,87 +54,73 @@ _CALLED = ("q", "qd", "Fc")
 _ADVANCED = {k: v for k, v in STATE_NEXT.items() if k not in ("integrals", "last_torque")}
 
 
-class Controller(SampleReferences):
-    """A sampled hybrid force/velocity controller of ``robot`` in contact with ``surface``.
+class Controller(SampleReferences, GroupedSettings, CheckedParameters):
+    r"""A sampled hybrid force/velocity controller of ``robot`` in contact with ``surface``.
+
+    ``tau = ctrl(t, q, qdot, Fc)`` is one control sample: the task-frame measurement, the loops on every
+    task axis and the decoupling law
+    :math:`F^* = \bar B_o R^T \left[a - (\dot R T + R \dot T)\, \dot r\right] + T^{-T} n_o - F_c`
+    (conventions §3-§4), in one compiled call. The settings come in three groups, each a record or its
+    fields as flat keywords of the same names: :class:`~hybrid.Tracking` (gains and references),
+    :class:`~hybrid.Limits` (timing and limits), :class:`~hybrid.Sensing` (sensor and estimate).
 
     Parameters
     ----------
     robot : Robot or Arm
         The controller's own model (possibly wrong). A planar :class:`~hybrid.Arm` is the chain of
         :meth:`Robot.planar` with the planar task axes ``(t1, n)``.
-    surface : Plane, Circle, Sphere, Cylinder or ImplicitSurface
+    surface : Plane, Circle, Sphere, Cylinder, ImplicitSurface, MeshSurface, PointCloudSurface or EstimatedSurface
+        The surface the tip is in contact with, in base axes [m].
     scheme : str or Scheme
-        ``"task"`` (De Luca & Manes), ``"khatib"`` or a :class:`~hybrid.Scheme`.
-    axes : task axes (see :func:`hybrid.decoupling_law`); default all six, ``"planar"`` for an Arm.
-    selection : the force-controlled axes, by name (``"n"``) or index; default the normal ``n``.
-    gains : :class:`Gains` for every axis (velocity axes use ``KPv, KIv, KI2v``; force axes
-        ``KPf, KDf, KIf``), or ``{axis name: Gains}`` for some axes.
-    force_reference, velocity_reference : the force-axes' ``F_d`` [N, N m] and the velocity-axes'
-        ``v_d`` [m/s, rad/s]: one :class:`Reference`-like value (a number, a Step or ``f(t)``) for the
-        normal force and the speed along ``t1`` (the other axes' references are 0), or
-        ``{axis name: value}``. Default: 10 N on the normal when it is a force axis, every other
-        reference 0.
-    sample_time : the period ``T`` [s] at which the integrals advance.
-    integral : with ``False`` the integral actions ``KI2v, KIf`` are 0 (conventions §4).
-    curvature : give ``R'`` to the law (with ``frame="desired"``: the loop frame's ``R_d'``).
-    frame : ``"actual"`` (loops in ``R(r)``) or ``"desired"`` (in ``R(r_d)``, the paper's Figure 3),
-        which needs ``path``.
-    path : ``path(t) -> (p_d, p_d')`` [m, m/s], or ``(p_d, p_d', phi_d)`` with the desired ZYX Euler
-        angles [rad]: the desired point (for ``frame="desired"`` and ``position_error``).
-    position_error : velocity axes use the position error ``R T(r) (r_d - r)`` and its integral in
-        place of the velocity error's integrals (the paper's last equations; ``KIv, KI2v`` act as
-        ``KP_p, KI_p``); needs ``path``.
-    integral_limit : anti-windup: the largest integral action per axis [m/s^2 or rad/s^2]; a sample
-        that would exceed it keeps the axis's integrals (conditional integration). Off by default.
-    contact_loss : a :class:`ContactLoss` rule for force axes; off by default.
-    frame_direction : the task frame's direction ``e`` (base axes): ``t1 = e x n / |e x n|``; default base
-        z. With a path task, the path's at its start (``n x t``; another is refused): it sets ``e`` each sample.
-    singular_tol : conditioning below which a sample raises :class:`SingularConfigurationError`.
-    posture : a :class:`Posture` task in the null space of the task (off by default). It needs a
-        redundant task (fewer axes than joints: a 7-joint Panda, or a UR5 on ``axes="position"``)
-        and a scheme with a null space (``"task"``, ``"khatib"``); otherwise it is refused (it would do
-        nothing, or disturb the task). Its numbers are run-time inputs of the compiled step (changing
-        them never recompiles); without it the step is the law's own code, bit for bit.
-    torque_limit : the largest ``|tau_j|`` [N m or N]: ``"urdf"`` (the default: the URDF's ``effort``
-        limits, none where it gives none or 0, and for the planar arm), None (no limit), one number for
-        every joint or one per joint.
-    torque_step_limit : the largest change of ``tau_j`` from one sample to the next [N m or N per
-        sample], one number or one per joint; None (the default): no limit. The first sample after a
-        start or :meth:`reset` is not rate-limited, unless ``reset(torque=...)`` gave the torque the arm
-        had. A sample whose torque a limit bounded keeps the loops' integrals (no wind-up); ``last``
-        says ``saturated``.
-    timing_tolerance : the samples' timing check: a sample is on time when ``t`` advanced by the
-        sample time within ``timing_tolerance`` of it (default 0.25: 25 %). A late, early, repeated or
-        backwards sample raises :class:`~hybrid.SampleTimingError` carrying the torque to apply (that
-        of the law at this sample, within the limits) and leaves the integrals as they were; a late or
-        early one advances the rest (the last torque, the sensor's filter, the estimate, the clock),
-        while at a repeated or backwards one no time passed, so nothing changes at all (the
-        ``last`` sample is still the one before). A sample refused (a bad input, the law failing)
-        changes nothing either, the clock included: the next is timed from the last one served. None:
-        no check (every sample is served as on time). The generated C returns the same as named
-        statuses (:meth:`generate`).
-    wrench_sensor : a :class:`~hybrid.WrenchSensor`: the wrench given at each sample is then its raw
-        reading (six numbers, sensor axes), which the step turns into ``F_c`` (its sign, bias, the
-        tool's weight at the current orientation, the mount's lever, the filter; conventions §12).
-        None (the default): the wrench given is ``F_c`` itself.
-    fault_reaction : a :class:`~hybrid.FaultReaction` (None: its defaults, 5 samples, a 50 ms stop, the
-        torque released over 0.2 s): after its ``fault_samples`` consecutive faulted samples (refused,
-        late or early; a dropout of ``k`` samples is followed by a late one: ``k + 1``) every sample
-        raises :class:`~hybrid.SafeStopError` until :meth:`reset`, carrying the safe state's torque: the
-        arm stopped and held by its model, the torque it had released (:mod:`hybrid.control.fault`).
-        Its ``stop_time`` must be at least two sample times.
+        ``"task"`` (De Luca & Manes, the default), ``"khatib"``, ``"raibert_craig"``,
+        ``"fisher_mujtaba"`` or a :class:`~hybrid.Scheme`.
+    axes : str or sequence of str, optional
+        The task axes (see :func:`hybrid.decoupling_law`); default all six, ``"planar"`` for an Arm.
+    selection : str or sequence, optional
+        The force-controlled axes, by name (``"n"``) or index; default the normal ``n``.
+    tracking : Tracking, optional
+        The gains and references, as one record (or give its fields flat, below).
+    limits : Limits, optional
+        The timing and limits, as one record (or flat).
+    sensing : Sensing, optional
+        The sensor and the contact-loss rule, as one record (or flat).
+    gains, force_reference, velocity_reference, posture, path_task
+        What the loops track: the :class:`~hybrid.Tracking` fields of these names.
+    integral, curvature, frame, path, frame_direction, position_error
+        How they track it: the :class:`~hybrid.Tracking` fields of these names.
+    sample_time, timing_tolerance, fault_reaction
+        The sample clock and what faults lead to: the :class:`~hybrid.Limits` fields of these names.
+    torque_limit, torque_step_limit, integral_limit, singular_tol
+        The bounds: the :class:`~hybrid.Limits` fields of these names.
+    wrench_sensor, contact_loss
+        The :class:`~hybrid.Sensing` fields of these names.
+
+    Raises
+    ------
+    HybridError
+        A setting refused (naming it and what to give), or one given both flat and in its group.
 
     Notes
     -----
-    Every number the compiled step reads is checked against its declaration (the checks of
-    :data:`hybrid.spec.controller_step.CONTROLLER_STEP`'s ports, which the standalone C reads too): a
-    NaN, a negative limit or tolerance, a switch not 0 or 1, a filter cutoff at or above the Nyquist
-    frequency is refused here and by :meth:`set_wrench_sensor` with a :class:`HybridError` naming it.
-    The arrays the step reads are then read-only; the settings a sample reads in Python
-    (``sample_time``, ``timing_tolerance``, ``singular_tol``) are checked at each sample (with the
-    step's numbers whose check reads the sample time: a filter's cutoff, the fault reaction's
-    ``stop_time``), and one changed to an invalid value refuses the sample with a :class:`~hybrid.ParameterError`
+    Every number the compiled step reads is checked against its declaration, as the standalone C checks
+    it (:mod:`hybrid.control.step_checks`); the arrays the step reads are then read-only. The settings a
+    sample reads in Python (``sample_time``, ``timing_tolerance``, ``singular_tol``) may change between
+    samples: one changed to an invalid value refuses the sample with a :class:`~hybrid.ParameterError`
     (``status`` ``PARAMETER_INVALID``, ``torque`` the torque last written), nothing changed.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import hybrid
+    >>> ur5, sphere = hybrid.ur5(), hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15)
+    >>> ctrl = hybrid.Controller(ur5, sphere, "task", force_reference=15.0, velocity_reference=0.1,
+    ...                          limits=hybrid.Limits(sample_time=0.002, torque_step_limit=2.0))
+    >>> ctrl.axis_names
+    ('t1', 't2', 'n', 'rot_t1', 'rot_t2', 'rot_n')
+    >>> q = np.array([0.0, -1.2, 1.5, -1.9, -1.57, 0.0])
+    >>> tau = ctrl(0.0, q, np.zeros(6), np.array([0.0, 0.0, -15.0]))
+    >>> tau.shape, ctrl.last["saturated"]
+    ((6,), False)
     """
 
     #: the step's per-sample inputs computed here when references are given as code (else bound to zeros)
@@ -142,6 +129,7 @@ class Controller(SampleReferences):
     reference = renamed_attribute("reference", "frame_direction")
 
     @renamed_keywords(reference="frame_direction")
+    @grouped
     def __init__(self, robot: Robot | Arm, surface, scheme: str | Scheme = "task", *, axes=None, selection=None,
                  gains: Gains | Mapping | None = None, force_reference=None, velocity_reference=None,
                  sample_time: float = 0.01, integral: bool = True, curvature: bool = False,
@@ -152,25 +140,11 @@ class Controller(SampleReferences):
                  timing_tolerance: float | None = 0.25, wrench_sensor: WrenchSensor | None = None,
                  fault_reaction: FaultReaction | None = None, path_task: PathTask | None = None):
         robot = as_robot(robot)
-        for name, value in (("integral", integral), ("curvature", curvature), ("position_error", position_error)):
-            if not isinstance(value, bool):
-                raise HybridError(f"{name} = {shown(value)}; give True or False")
-        if frame not in ("actual", "desired"):
-            raise HybridError(f"frame = {shown(frame)}; give 'actual' or 'desired'")
+        self._settings = {name: value for name, value in locals().items() if name in SETTINGS}
+        check_settings(self._settings)
         if (frame == "desired" or position_error) and not callable(path):
             raise HybridError(f"{'position_error' if position_error else 'frame=desired'} needs path=f(t) returning "
                               "the desired point and its velocity (p_d [m], p_d' [m/s])")
-        if contact_loss is not None and not isinstance(contact_loss, ContactLoss):
-            raise HybridError(f"contact_loss = {shown(contact_loss, 60)}; give a hybrid.ContactLoss(threshold, "
-                              "approach_speed) or None")
-        if integral_limit is not None:
-            _finite("Controller", integral_limit=integral_limit)
-            if integral_limit < 0:
-                raise HybridError(f"integral_limit = {integral_limit}; give a magnitude >= 0 or None")
-        _finite("Controller", sample_time=sample_time)
-        if sample_time <= 0:
-            raise HybridError(f"sample_time = {sample_time} s; give a positive sample period")
-        check_singular_tol("Controller", singular_tol)
         self.robot, self.scheme = robot, scheme_of(scheme)
         self.axes = check_axes(robot, axes)
         self.surface, self._spatial = surface, spatial_surface(surface)
@@ -195,18 +169,8 @@ class Controller(SampleReferences):
         self.posture = check_posture(self.robot, self.axes, self.scheme, posture)
         self.torque_limit = joint_limit(robot, "torque_limit", torque_limit)
         self.torque_step_limit = joint_limit(robot, "torque_step_limit", torque_step_limit)
-        if timing_tolerance is not None:
-            _finite("Controller", timing_tolerance=timing_tolerance)
-            if not 0 < timing_tolerance < 1:
-                raise HybridError(f"timing_tolerance = {timing_tolerance}; give a fraction of the sample time "
-                                  "between 0 and 1 (0.25: a sample may come 25 % early or late), or None")
         self.timing_tolerance = None if timing_tolerance is None else float(timing_tolerance)
-        if wrench_sensor is not None and not isinstance(wrench_sensor, WrenchSensor):
-            raise HybridError(f"wrench_sensor = {shown(wrench_sensor, 60)}; give a hybrid.WrenchSensor(...) or None")
         self.wrench_sensor = wrench_sensor
-        if fault_reaction is not None and not isinstance(fault_reaction, FaultReaction):
-            raise HybridError(f"fault_reaction = {shown(fault_reaction, 60)}; give a hybrid.FaultReaction(...) or None "
-                              "(its defaults)")
         self._fault_reaction = fault_reaction or FaultReaction()
         self._fault_reaction.check_sampling(self.sample_time)
         self._path_task = None if path_task is None else PathReferences(
@@ -300,8 +264,18 @@ class Controller(SampleReferences):
 
     @classmethod
     def from_experiment(cls, exp) -> Controller:
-        """Exactly the controller ``exp`` runs (its model of the arm, loops, references, options): the
-        paper's experiment or a 3-D one (:func:`hybrid.tracing_experiment`): the experiment builds it."""
+        """Exactly the controller an experiment runs.
+
+        Parameters
+        ----------
+        exp : Experiment
+            The paper's experiment or a 3-D one (:func:`hybrid.tracing_experiment`).
+
+        Returns
+        -------
+        Controller
+            Its model of the arm, loops, references and options: the experiment builds it.
+        """
         return exp.build_controller()
 
     def _bind(self) -> None:
@@ -314,8 +288,14 @@ class Controller(SampleReferences):
                                                 singular_tol=self.singular_tol)
 
     def set_wrench_sensor(self, sensor: WrenchSensor) -> None:
-        """Change the sensor's numbers between samples (a new tool, a new bias: :func:`hybrid.tare`); the
-        controller must have been built with a sensor (its step reads a raw reading)."""
+        """Change the sensor's numbers between samples (a new tool, a new bias: :func:`hybrid.tare`).
+
+        Parameters
+        ----------
+        sensor : WrenchSensor
+            The new numbers. The controller must have been built with a sensor (its step reads a raw
+            reading); its numbers are checked as at construction.
+        """
         if self.wrench_sensor is None:
             raise HybridError("this controller takes the contact wrench itself, not a sensor's reading: build it "
                               "with wrench_sensor=hybrid.WrenchSensor(...) to give it one")
@@ -326,40 +306,6 @@ class Controller(SampleReferences):
         self.wrench_sensor = sensor
         self._bind()
 
-    def _checked_parameters(self, values: dict) -> tuple:
-        """The step's parameters packed from ``values``, each refused unless its declared check allows it
-        (:data:`hybrid.spec.interfaces.CHECKS`: the standalone C checks the same at each sample), then
-        read-only: they change only through this check."""
-        params = CONTROLLER_STEP.pack(values, self._dims)
-        refused = CONTROLLER_STEP.refused(params, self._dims, self.sample_time)
-        if refused:
-            port, element, value, valid = refused[0]
-            raise HybridError(f"the step's {port} {element} = {shown(value)}; give {valid}"
-                              + (f" ({len(refused) - 1} more refused)" if len(refused) > 1 else ""))
-        for p in params:
-            p.flags.writeable = False
-        return params
-
-    def _refused_setting(self) -> tuple[str, object, str] | None:
-        """The first of the settings a sample reads here (the sample time, the timing and singular
-        tolerances) that its declared check refuses, as ``(name, value, what is valid)``, or a step's
-        number whose check reads the sample time and refuses it at this one (a filter cutoff at or above
-        Nyquist, a fault reaction's stop_time under two sample times), as the standalone C refuses its
-        struct's. (The sample clock is the controller's own, only ever a finite ``t`` it served.)"""
-        T = self.sample_time
-        if not CHECKS["positive"].valid(T, T):
-            return "sample_time", T, CHECKS["positive"].meaning
-        refused = CONTROLLER_STEP.refused(self._params, self._dims, T)
-        if refused:
-            port, element, value, valid = refused[0]
-            return f"the step's {port} {element} at sample_time = {T:g} s", value, valid
-        settings = {"timing_tolerance": -1.0 if self.timing_tolerance is None else self.timing_tolerance,
-                    "singular_tol": self.singular_tol}
-        for name, check in SETTING_CHECKS.items():
-            if not CHECKS[check].valid(settings[name], T):
-                return name, getattr(self, name), CHECKS[check].meaning
-        return None
-
     @property
     def runs_in_c(self) -> bool:
         """True when every reference is a number, a :class:`Step` or a path task's, no desired path is given and
@@ -369,23 +315,53 @@ class Controller(SampleReferences):
         return not given_as_code and self.wrench_sensor is None and not self._estimated
 
     def step_inputs(self, at_start: bool = False) -> dict[str, np.ndarray]:
-        """The compiled step's inputs this controller fixes (gains, references' steps, model,
-        options), by the manifest's names; ``at_start``: as at the start of a run (before a path task turned
-        ``e`` or retreated)."""
+        """The compiled step's inputs this controller fixes.
+
+        Parameters
+        ----------
+        at_start : bool
+            As at the start of a run (before a path task turned ``e`` or retreated), not as now.
+
+        Returns
+        -------
+        dict of str to ndarray
+            The gains, the references' steps, the model, the surface, the options, by the manifest's names
+            (read-only arrays).
+        """
         return dict(zip(PARAMETERS, self._start_params if at_start else self._params))
 
     def step_variant(self) -> dict:
-        """What the compiled step is made of: the model's chain and name, the surface's spec, the task
-        axes, the compiled-in options and the step function (the scheme's, or the posture task's)."""
+        """What the compiled step is made of (what selects its compiled unit).
+
+        Returns
+        -------
+        dict
+            The model's ``chain`` and ``name``, the surface's ``spec``, the task ``axes``, the compiled-in
+            options and the ``step`` function (the scheme's, or the posture task's).
+        """
         return {"chain": self.robot.chain, "name": self.robot.name, "spec": self._spatial.spec(), "axes": self.axes,
                 "desired_frame": self.frame == "desired", "position_error": self.position_error,
                 "wrench_sensor": self.wrench_sensor is not None, "step": self._step_name}
 
     def generate(self, out, name: str | None = None, force: bool = False) -> list:
-        """Write this controller as standalone C99 into the folder ``out``: ``<name>.c``, ``<name>.h`` and
-        the manifest ``<name>.json`` (``name``: ASCII letters, digits and ``_``, a letter first; default
-        ``<robot>_controller``). Returns the paths written.
+        """Write this controller as standalone C99.
 
+        Parameters
+        ----------
+        out : str or Path
+            The folder: ``<name>.c``, ``<name>.h`` and the manifest ``<name>.json`` are written there.
+        name : str, optional
+            ASCII letters, digits and ``_``, a letter first; default ``<robot>_controller``.
+        force : bool
+            Overwrite files in ``out`` with other content (refused otherwise).
+
+        Returns
+        -------
+        list of Path
+            The paths written.
+
+        Notes
+        -----
         The C is this controller, sample for sample: ``<name>_controller_init(&c)`` gives a struct with
         this configuration (gains, references, model, surface, limits, options: fields that may change
         between samples), and ``<name>_controller_step(&c, t, q, qd, wrench, tau)`` runs one sample
@@ -393,8 +369,8 @@ class Controller(SampleReferences):
         status, where this class raises (see ``timing_tolerance``). References given as code are the
         caller's: it writes them into ``c.yd_extra``, ``c.yd_rate`` and ``c.target`` each sample; a path
         task's follower writes them itself (``hybrid_path.h``, written beside). C99,
-        no allocation, no globals, no I/O, reentrant; the same bytes for the same controller. Files in
-        ``out`` with other content are refused unless ``force``."""
+        no allocation, no globals, no I/O, reentrant; the same bytes for the same controller.
+        """
         return generate_controller(self, out, name, force)
 
     @property
@@ -406,8 +382,13 @@ class Controller(SampleReferences):
     def reset(self, torque=None) -> None:
         """A new run: the loops' integrals zero, no last sample (the next one is on time whenever it
         comes), the fault reaction's state cleared (it ends the safe state; no joint positions known yet).
-        ``torque`` [N m or N, one per joint], when given, is the torque the arm has now: the first sample's
-        torque is then rate-limited from it (``torque_step_limit``)."""
+
+        Parameters
+        ----------
+        torque : array_like, optional
+            The torque the arm has now [N m or N, one per joint]: the first sample's torque is then
+            rate-limited from it (``torque_step_limit``).
+        """
         for name in ("integrals", "last_torque", *_ADVANCED):
             self._held[self._at[name]][:] = 0.0
         self._fault.reset()
@@ -445,18 +426,35 @@ class Controller(SampleReferences):
         self._z[:] = arr.ravel()
 
     def __call__(self, t: float, q, qdot, Fc) -> np.ndarray:
-        """``tau`` [N m or N] for the sample at time ``t`` [s], from the joint state and the measured
-        wrench on the robot ``Fc`` (base axes: force [N] of 2 or 3 entries, or force and moment, 6);
-        advances the integrals by one sample.
+        """One control sample: the torque for the sample at time ``t``; it advances the integrals.
 
-        A sample the law cannot serve raises and changes nothing but the fault reaction's count (the
-        integrals, the last torque, the filter, the estimate, the sample clock stay): :class:`HybridError`
-        for a bad input, :class:`SingularConfigurationError` or :class:`TaskFrameError` where the law
-        fails; :class:`SampleTimingError` off the sample clock (see ``timing_tolerance``). Every error a
-        sample raises carries ``torque``, what to apply. After the ``fault_reaction``'s
-        ``fault_samples`` consecutive faulted samples (refused, late or early) every sample raises
-        :class:`SafeStopError` until :meth:`reset`, its torque the safe state's
-        (:mod:`hybrid.control.fault`)."""
+        Parameters
+        ----------
+        t : float
+            The sample's time [s].
+        q, qdot : array_like
+            The joint positions [rad or m] and velocities [rad/s or m/s].
+        Fc : array_like
+            The measured wrench on the robot: base axes, a force [N] of 2 or 3 entries, or force and
+            moment [N, N m], 6; with a ``wrench_sensor``, its raw reading (six numbers, sensor axes).
+
+        Returns
+        -------
+        ndarray
+            ``tau`` [N m or N], one per joint.
+
+        Raises
+        ------
+        HybridError
+            A sample the law cannot serve raises and changes nothing but the fault reaction's count (the
+            integrals, the last torque, the filter, the estimate, the sample clock stay): :class:`HybridError`
+            for a bad input, :class:`SingularConfigurationError` or :class:`TaskFrameError` where the law
+            fails; :class:`SampleTimingError` off the sample clock (see ``timing_tolerance``). Every error a
+            sample raises carries ``torque``, what to apply. After the ``fault_reaction``'s
+            ``fault_samples`` consecutive faulted samples (refused, late or early) every sample raises
+            :class:`SafeStopError` until :meth:`reset`, its torque the safe state's
+            (:mod:`hybrid.control.fault`).
+        """
         passed = time_passed(t, self._clock)
         if self._fault.stopped:
             raise self._safe_sample(t, q, qdot, passed, "the safe state holds until reset()")
@@ -611,7 +609,19 @@ class Controller(SampleReferences):
             o[:] = got[name].ravel()
 
     def measure(self, q, qdot, Fc) -> Measurement:
-        """What the controller measures at ``q, qdot, Fc`` (see :class:`Measurement`)."""
+        """What the controller measures, without a sample.
+
+        Parameters
+        ----------
+        q, qdot, Fc : array_like
+            As for a sample (:meth:`__call__`).
+
+        Returns
+        -------
+        Measurement
+            The tip's position and velocity, the task velocity and wrench, the reading and what the
+            controller makes of it (see :class:`Measurement`).
+        """
         if self._binding is None:
             self._native()
         reading = wrench_of(Fc, self._force_size)

@@ -147,7 +147,7 @@ class EstimatedSurface(Surface):
     Give it to a controller (or an experiment's ``controller_surface``) in place of the surface:
 
     >>> import hybrid
-    >>> estimated = hybrid.EstimatedSurface(initial_normal=(0.0, 0.0, 1.0))
+    >>> estimated = hybrid.EstimatedSurface(initial_normal=(0, 0, 1))
     >>> estimated.method, estimated.rate_gain, estimated.start_normal
     ('fusion', 1.0, (0.0, 0.0, 1.0))
     """

@@ -61,7 +61,9 @@ class ToolIdentification:
     See :func:`identify_tool`, which makes one; :meth:`sensor` gives the sensor with what it found:
 
     >>> import hybrid
-    >>> found = hybrid.ToolIdentification((1.0, 0.0, 0.0, 0.0, 0.0, 0.0), hybrid.Tool(0.5), 0.0, 0.0, 1.0)
+    >>> bias = (1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    >>> found = hybrid.ToolIdentification(bias, hybrid.Tool(0.5), 0.0,
+    ...                                   0.0, 1.0)
     >>> found.sensor(hybrid.WrenchSensor()).tool.mass
     0.5
     """
@@ -188,13 +190,18 @@ def identify_tool(robot: Robot, sensor: WrenchSensor, q, readings, *,
     >>> import numpy as np
     >>> import hybrid
     >>> robot, sensor = hybrid.ur5(), hybrid.WrenchSensor()
-    >>> q = np.array([[0.0, -1.57, 1.57, 0.0, 0.0, 0.0], [0.0, -1.57, 1.57, 0.8, 0.0, 0.0],
-    ...               [0.0, -1.57, 1.57, 0.0, 0.8, 0.0], [0.0, -1.57, 1.57, 0.8, 0.8, 0.8]])
+    >>> q = np.array([[0.0, -1.57, 1.57, 0.0, 0.0, 0.0],
+    ...               [0.0, -1.57, 1.57, 0.8, 0.0, 0.0],
+    ...               [0.0, -1.57, 1.57, 0.0, 0.8, 0.0],
+    ...               [0.0, -1.57, 1.57, 0.8, 0.8, 0.8]])
     >>> R = hybrid.arm_terms(robot, q, np.zeros_like(q))["rotation"]
-    >>> weight = 0.5 * np.einsum("nji,j->ni", R, robot.gravity)  # in sensor (tip) axes
-    >>> readings = np.hstack([weight, np.cross([0.0, 0.0, 0.03], weight)]) + [1.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+    >>> # in sensor (tip) axes
+    >>> weight = 0.5 * np.einsum("nji,j->ni", R, robot.gravity)
+    >>> moment = np.cross([0.0, 0.0, 0.03], weight)
+    >>> readings = np.hstack([weight, moment]) + [1.0, 0, 0, 0, 0, 0]
     >>> found = hybrid.identify_tool(robot, sensor, q, readings)
-    >>> round(found.tool.mass, 6), round(found.tool.com[2], 6), round(found.bias[0], 6)
+    >>> (round(found.tool.mass, 6), round(found.tool.com[2], 6),
+    ...  round(found.bias[0], 6))
     (0.5, 0.03, 1.0)
     """
     _check_sensor(sensor)
@@ -277,7 +284,9 @@ def tare(sensor: WrenchSensor, robot: Robot, q, reading) -> WrenchSensor:
     Examples
     --------
     >>> import hybrid
-    >>> tared = hybrid.tare(hybrid.WrenchSensor(), hybrid.ur5(), [0.0] * 6, [1.0, 0.0, -2.0, 0.0, 0.0, 0.1])
+    >>> reading = [1.0, 0.0, -2.0, 0.0, 0.0, 0.1]
+    >>> tared = hybrid.tare(hybrid.WrenchSensor(), hybrid.ur5(),
+    ...                     [0.0] * 6, reading)
     >>> tared.bias
     (1.0, 0.0, -2.0, 0.0, 0.0, 0.1)
     """

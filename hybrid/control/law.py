@@ -1,9 +1,10 @@
-"""The decoupling law ``F*(r, r', a)`` of any arm on any surface, evaluated by generated C.
+r"""The decoupling law :math:`F^*(r, \dot r, a)` of any arm on any surface, evaluated by generated C.
 
-``F* = Lambda (R^T (a - R' v) - J' q') + Jbar^T n - F_c`` (``Lambda = (J B^-1 J^T)^-1``,
-``Jbar^T = Lambda J B^-1``) makes the task axes' accelerations ``y' = R v' + R' v`` equal the
-commanded ``a``; the joint torques are ``tau = J^T F* + (I - J^T Jbar^T) tau0``, a redundant
-arm's ``tau0`` acting in the task's null space only. One :class:`DecouplingLaw` serves every
+:math:`F^* = \Lambda \left(R^T (a - \dot R v) - \dot J \dot q\right) + \bar J^T n - F_c`, with
+:math:`\Lambda = (J B^{-1} J^T)^{-1}` and :math:`\bar J^T = \Lambda J B^{-1}`, makes the task axes'
+accelerations :math:`\dot y = R \dot v + \dot R v` equal the commanded :math:`a`; the joint torques are
+:math:`\tau = J^T F^* + (I - J^T \bar J^T)\, \tau_0`, a redundant arm's :math:`\tau_0` acting in the task's
+null space only. One :class:`DecouplingLaw` serves every
 arm, from one of two derivations of the same equations:
 
 - ``backend="rigid_body"``: the recursive rigid-body algorithms (CasADi), generated for the
@@ -80,10 +81,12 @@ class DecouplingLaw:
     Examples
     --------
     >>> import hybrid
-    >>> law = hybrid.DecouplingLaw(hybrid.paper_arm(), hybrid.Circle((0.5, 0.0), 0.2))
+    >>> disc = hybrid.Circle((0.5, 0.0), 0.2)
+    >>> law = hybrid.DecouplingLaw(hybrid.paper_arm(), disc)
     >>> law.backend, law.axes, law.wrench_size
     ('sympy', (0, 2), 2)
-    >>> force, torque = law.evaluate([0.3, 1.2], [0.0, 0.0], [0.0, 1.0], [0.0, 0.0])
+    >>> q, qdot, a, Fc = [0.3, 1.2], [0.0, 0.0], [0.0, 1.0], [0, 0]
+    >>> force, torque = law.evaluate(q, qdot, a, Fc)
     >>> force.shape, torque.shape
     ((2,), (2,))
     """
@@ -356,9 +359,11 @@ def decoupling_law(robot: Robot | Arm, surface: Surface, curvature: bool = False
     --------
     >>> import numpy as np
     >>> import hybrid
-    >>> law = hybrid.decoupling_law(hybrid.paper_arm(), hybrid.Circle((0.5, 0.0), 0.2))
+    >>> disc = hybrid.Circle((0.5, 0.0), 0.2)
+    >>> law = hybrid.decoupling_law(hybrid.paper_arm(), disc)
     >>> q = np.tile([0.3, 1.2], (4, 1))  # four states in one call
-    >>> law.torque(q, np.zeros((4, 2)), np.zeros((4, 2)), np.zeros((4, 2))).shape
+    >>> zeros = np.zeros((4, 2))
+    >>> law.torque(q, zeros, zeros, zeros).shape
     (4, 2)
     """
     return DecouplingLaw(robot, surface, curvature, frame_direction, axes, backend, singular_tol)

@@ -38,8 +38,9 @@ class Gains:
     Examples
     --------
     >>> import hybrid
-    >>> hybrid.Gains(KPf=3.0)
-    Gains(KPv=40.0, KIv=200.0, KI2v=1000.0, KPf=3.0, KDf=90.0, KIf=25.0)
+    >>> hybrid.Gains(KPf=3.0)  # doctest: +NORMALIZE_WHITESPACE
+    Gains(KPv=40.0, KIv=200.0, KI2v=1000.0, KPf=3.0, KDf=90.0,
+          KIf=25.0)
     """
 
     KPv: float = 40.0     # 1/s

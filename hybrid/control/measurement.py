@@ -43,8 +43,10 @@ class Measurement:
 
     >>> import dataclasses
     >>> import hybrid
-    >>> [f.name for f in dataclasses.fields(hybrid.Measurement)]
-    ['p', 'v', 'task_velocity', 'task_wrench', 'reading', 'compensated', 'contact_wrench']
+    >>> fields = dataclasses.fields(hybrid.Measurement)
+    >>> [f.name for f in fields]  # doctest: +NORMALIZE_WHITESPACE
+    ['p', 'v', 'task_velocity', 'task_wrench', 'reading',
+     'compensated', 'contact_wrench']
     """
 
     p: np.ndarray

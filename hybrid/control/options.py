@@ -69,12 +69,15 @@ def _gain(name: str, value, n: int) -> tuple[float, ...]:
 
 @dataclass(frozen=True)
 class Posture:
-    """A posture task for a redundant arm: the joints pulled towards ``q_rest`` [rad or m] in the
+    r"""A posture task for a redundant arm: the joints pulled towards ``q_rest`` [rad or m] in the
     task's null space by the inverse dynamics (the controller's model) of a joint PD,
 
-        tau0 = B(q) w + n(q, q'),   w = stiffness (q_rest - q) - damping q'
+    .. math::
 
-    which the decoupling law projects, ``(I - J_y^T Jbar_y^T) tau0``: the task acceleration stays
+        \tau_0 = B(q)\, w + n(q, \dot q), \qquad w = K_p (q_\mathrm{rest} - q) - K_d \dot q
+
+    (:math:`K_p`: ``stiffness``, :math:`K_d`: ``damping``), which the decoupling law projects,
+    :math:`(I - J_y^T \bar J_y^T)\, \tau_0`: the task acceleration stays
     the loops' ``a``, and the joint motion the task leaves free follows the projected PD ``w``.
 
     ``stiffness`` ``K_p`` [1/s^2] and ``damping`` ``K_d`` [1/s], one number for every joint or one
@@ -102,7 +105,8 @@ class Posture:
     Examples
     --------
     >>> import hybrid
-    >>> posture = hybrid.Posture((0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785))
+    >>> rest = (0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785)
+    >>> posture = hybrid.Posture(rest)
     >>> posture.stiffness, posture.damping
     (25.0, 10.0)
     >>> posture.as_array().shape
@@ -161,7 +165,8 @@ class Reference:
     >>> import hybrid
     >>> hybrid.Reference.of("force_reference", 10.0)
     Reference(step=(10.0, 10.0, 0.0), value=None, rate=None)
-    >>> hybrid.Reference.of("force_reference", hybrid.Step(10.0, 20.0, 0.4)).step
+    >>> step = hybrid.Step(10.0, 20.0, 0.4)
+    >>> hybrid.Reference.of("force_reference", step).step
     (10.0, 20.0, 0.4)
     """
 

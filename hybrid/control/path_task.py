@@ -108,7 +108,8 @@ class PathTask:
     --------
     >>> import hybrid
     >>> plane = hybrid.Plane((0.4, 0.0, 0.2), (0.0, 0.0, 1.0))
-    >>> raster = hybrid.RasterPath(plane, (0.4, -0.05, 0.2), (1.0, 0.0, 0.0), 0.1, 0.01, 3)
+    >>> raster = hybrid.RasterPath(plane, (0.4, -0.05, 0.2),
+    ...                            (1.0, 0.0, 0.0), 0.1, 0.01, 3)
     >>> task = hybrid.PathTask(raster, speed=0.1, force=10.0)
     >>> table, settings = task.table(plane)
     >>> table.shape[1], bool(settings[1])

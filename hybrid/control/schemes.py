@@ -70,7 +70,7 @@ class Scheme:
 
 @register
 class TaskDecoupling(Scheme):
-    """De Luca & Manes: ``F* = Bbar_o R^T (a - R' y) + n_o - F_c`` decouples the task axes and
+    r"""De Luca & Manes: :math:`F^* = \bar B_o R^T (a - \dot R\, y) + n_o - F_c` decouples the task axes and
     cancels the *measured* contact force, so every axis is the integrator ``y' = a``.
 
     Examples
@@ -78,7 +78,8 @@ class TaskDecoupling(Scheme):
     The default scheme of a controller:
 
     >>> import hybrid
-    >>> hybrid.TaskDecoupling().name, hybrid.TaskDecoupling().feeds_desired_force
+    >>> scheme = hybrid.TaskDecoupling()
+    >>> scheme.name, scheme.feeds_desired_force
     ('task', False)
     """
 
@@ -87,8 +88,8 @@ class TaskDecoupling(Scheme):
 
 @register
 class Khatib(Scheme):
-    """Khatib 1987, as the paper uses it: the same law and loops with the *desired* normal force
-    ``R^T Sigma F_d`` fed forward in place of the measured ``F_c`` (dynamically consistent).
+    r"""Khatib 1987, as the paper uses it: the same law and loops with the *desired* normal force
+    :math:`R^T \Sigma F_d` fed forward in place of the measured ``F_c`` (dynamically consistent).
 
     Examples
     --------
@@ -103,9 +104,9 @@ class Khatib(Scheme):
 
 @register
 class RaibertCraig(Scheme):
-    """Raibert & Craig 1981: the selected motion axes' accelerations mapped to joints through the
-    inverse task Jacobian and scaled by the joints' own inertias ``diag(B)``, the force axes'
-    commands ``-F_d + m_d a`` through ``J^T``, gravity compensated; no dynamic decoupling."""
+    r"""Raibert & Craig 1981: the selected motion axes' accelerations mapped to joints through the
+    inverse task Jacobian and scaled by the joints' own inertias :math:`\operatorname{diag}(B)`, the force
+    axes' commands :math:`-F_d + m_d a` through :math:`J^T`, gravity compensated; no dynamic decoupling."""
 
     name = "raibert_craig"
     step = "raibert_craig_step"
@@ -114,8 +115,8 @@ class RaibertCraig(Scheme):
 
 @register
 class FisherMujtaba(RaibertCraig):
-    """Raibert & Craig with Fisher & Mujtaba's (1992) correction: the motion axes mapped by the
-    pseudo-inverse of the *selected* rows of the task Jacobian, ``(Sigma^A J_y)^+``."""
+    r"""Raibert & Craig with Fisher & Mujtaba's (1992) correction: the motion axes mapped by the
+    pseudo-inverse of the *selected* rows of the task Jacobian, :math:`(\Sigma^A J_y)^+`."""
 
     name = "fisher_mujtaba"
     pseudoinverse = True

@@ -126,10 +126,13 @@ class WrenchSensor:
     A sensor 5 cm beyond the tip, carrying a 0.5 kg tool, filtered at 20 Hz:
 
     >>> import hybrid
-    >>> sensor = hybrid.WrenchSensor(position=(0.0, 0.0, 0.05), tool=hybrid.Tool(0.5, (0.0, 0.0, 0.03)), cutoff=20.0)
+    >>> tool = hybrid.Tool(0.5, (0.0, 0.0, 0.03))
+    >>> sensor = hybrid.WrenchSensor(position=(0.0, 0.0, 0.05),
+    ...                              tool=tool, cutoff=20.0)
     >>> sensor.mount()[0].tolist()
     [0.0, 0.0, 0.05]
-    >>> sensor.check_sampling(0.01)  # 20 Hz is below the Nyquist frequency of 10 ms samples
+    >>> # 20 Hz is below the Nyquist frequency of 10 ms samples
+    >>> sensor.check_sampling(0.01)
     """
 
     frame: str | None = None

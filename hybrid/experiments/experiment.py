@@ -66,73 +66,156 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     """One closed-loop run: the true robot and surface, the controller's settings, the references,
     the sensor and contact, the integration and sampling.
 
+    Every setting is checked when the experiment is made, and it is immutable: change one with
+    ``dataclasses.replace``, which checks the copy. Only ``robot`` and ``surface`` are needed (and
+    ``start_point`` or ``path`` on a surface without a path of its own); :func:`~hybrid.paper_experiment`,
+    :func:`~hybrid.tracing_experiment` and :func:`~hybrid.panda_experiment` give whole ones. Below, the
+    settings in groups: the arm and the controller's model of it; the surface, the path and the start;
+    the controller; the references; the sensing, the contact and the approach from free space; the
+    timing; the run's guards. Points and directions are in base axes.
+
     Parameters
     ----------
     robot : Robot
-        The true arm (the plant's). The controller's model is ``controller_robot`` when given, else
-        ``robot.with_model_error(model_error, viscous_compensation)`` (:meth:`controller_model`).
+        The true arm (the plant's).
     controller_robot : Robot, optional
         The robot the controller is told, as it is (e.g. one identified from the arm's data): of the
         kinematic structure of ``robot`` (the same joints, origins, axes and tip frame; refused
         otherwise), its inertial parameters, joint friction and gravity its own. With it ``model_error``
         and ``viscous_compensation`` do not apply: a value other than their defaults is refused.
+    model_error : float
+        Without ``controller_robot``, the controller's model is the true robot with its masses and
+        inertias ``1 + model_error`` times the true ones (default 0.1: 10 % heavy;
+        :meth:`controller_model`).
+    viscous_compensation : float
+        The share of the joints' friction (viscosities, Coulomb frictions, offsets) the controller's
+        model knows (default 0.5: half).
     surface : Surface
-        What the sensor tip touches (2-D for the planar arm, 3-D otherwise).
+        What the sensor tip touches (2-D for the planar arm, 3-D otherwise): the plant's, always the
+        true one.
     controller_surface : Surface, optional
         The surface the controller is told: the true ``surface`` (the default), a wrong one (a sphere of
         another radius, a plane for a curved part), or a :class:`~hybrid.EstimatedSurface` it estimates
-        online. The plant always has the true one.
+        online.
+    path : Path, optional
+        Where the desired point ``r_d(t)`` runs (for ``frame="desired"`` and the workspace check); default
+        the surface's own path (:meth:`Surface.path`), when it has one. The tip moves along the task axis
+        ``t1``, in the plane through the start normal to ``frame_direction``: a path out of that plane, or
+        against ``t1``, is not followed and refused (:func:`~hybrid.experiments.followed.check_followed`).
     path_task : PathTask, optional
         The tip follows this :class:`~hybrid.PathTask`'s path on the surface from its start, at its speed and
         force along the path (:mod:`hybrid.control.path_task`); ``force_reference`` is then its force at the
         start (the start presses with it) and ``speed_reference`` 0, set here: give neither. A 3-D arm with
         the task axes ``t1, t2, n``; the run's metrics add the path's (``path_error_rms_m``, ...).
-    path : Path, optional
-        Where the desired point runs (for ``frame="desired"`` and the workspace check); default the
-        surface's own path (:meth:`Surface.path`), when it has one. The tip moves along the task axis
-        ``t1``, in the plane through the start normal to ``frame_direction``: a path out of that
-        plane, or against ``t1``, is not followed and refused
-        (:func:`~hybrid.experiments.followed.check_followed`).
-    start_point : the sensor tip's start on the surface [m] (projected onto it when within
-        1 mm); default the path's start.
-    elbow : +1 (``q2 > 0``) or -1: the planar arm's start configuration.
-    frame_direction : the task frame's direction ``e`` (base axes): ``t1 = e x n / |e x n|``; default base z,
-        with a path task the path's at its start (``n x t``), set here.
-    axes : the controller's task axes (see :func:`hybrid.decoupling_law`); default the robot's.
-    posture : a :class:`~hybrid.Posture` task in the null space of a redundant arm's task (its rest
-        posture is also where the start's inverse kinematics begins); off by default.
-    q0 : [rad or m] joint positions, one per joint, where the start's inverse kinematics begins (default:
-        the posture's rest, else the middle of the joint ranges): a seed near the start wanted picks
-        its solution branch. A start outside the joint position limits is refused
+    start_point : sequence of float, optional
+        The sensor tip's start on the surface [m] (projected onto it when within 1 mm); default the
+        path's start.
+    elbow : int
+        The planar arm's start configuration: +1 (``q2 > 0``, the default) or -1.
+    q0 : sequence of float, optional
+        Joint positions [rad or m], one per joint, where the start's inverse kinematics begins (default:
+        the posture's rest, else the middle of the joint ranges): a seed near the start wanted picks its
+        solution branch. A start outside the joint position limits is refused
         (:mod:`hybrid.experiments.start`). The planar arm's start is in closed form: ``elbow`` picks it.
-    controller : a scheme's name (``"task"``, ``"khatib"``, ``"raibert_craig"``, ``"fisher_mujtaba"``).
-    sensor : the plant's elastic sensor and its signal (noise, bias, lag, delay: :class:`~hybrid.Sensor`).
-    wrench_sensor : the true force/torque sensor and tool (a :class:`~hybrid.WrenchSensor`): the
-        controller is then given its raw reading (sensor axes) for the plant's force, at the true
-        arm's tip pose (conventions §14), and turns it back with ``controller_wrench_sensor``. None (the
-        default): the controller is given the wrench on the robot itself.
-    controller_wrench_sensor : the sensor and tool as the controller believes them (its mount, sign,
-        tool, bias and its filter's ``cutoff``); default ``wrench_sensor`` itself. Needs ``wrench_sensor``.
-    start_gap : [m] the run starts with the sensor tip this far from the surface along its normal at
-        the start point, at rest and out of contact (conventions §4); 0 (the default): on the surface,
-        pressing with ``F_d(0)``. Needs ``approach_speed``.
-    approach_speed : [m/s] with it the controller has a :class:`~hybrid.ContactLoss` rule: a force axis
-        whose measured force is below ``touch_threshold`` approaches the surface at this speed (before
-        the first touch, and after a loss of contact); 0 (the default): no such rule.
-    touch_threshold : [N] the force below which the force axis counts as out of contact (0.5 N).
-    frame : ``"actual"`` (the loops in ``R(r)``) or ``"desired"`` (in ``R(r_d)``).
-    duration : [s] the run's length, a whole number of samples.
-    integration_step : [s] the plant's fixed RK4 step (0.1 ms); ``sample_time`` is a whole multiple of it
+    controller : str
+        The scheme: ``"task"`` (the paper's task-space decoupling, the default), ``"khatib"``,
+        ``"raibert_craig"`` or ``"fisher_mujtaba"``.
+    axes : str or tuple of int, optional
+        The controller's task axes (see :func:`hybrid.decoupling_law`); default the robot's.
+    frame_direction : sequence of float, optional
+        The task frame's direction ``e``: ``t1 = e x n / |e x n|``; default base z, with a path task the
+        path's at its start (``n x t``), set here.
+    frame : str
+        Where the loops' task frame is taken: ``"actual"`` (the default: ``R(r)`` at the arm tip) or
+        ``"desired"`` (``R(r_d)`` at the desired point on the path).
+    posture : Posture, optional
+        A :class:`~hybrid.Posture` task in the null space of a redundant arm's task (its rest posture is
+        also where the start's inverse kinematics begins); off by default.
+    integral : bool
+        Whether the loops have integral action (default True); without it ``K_I2v = K_If = 0``
+        (:meth:`effective_gains`).
+    curvature : bool
+        Whether the controller is given the task frame's rate ``R'(r, r')`` (the surface's curvature) in
+        ``F*``; default False, as in the paper (``R' = 0``).
+    gains : Gains
+        The loops' gains ``K_Pv, K_Iv, K_I2v, K_Pf, K_Df, K_If`` (:class:`~hybrid.Gains`; default the
+        paper's, conventions §4).
+    force_reference : Step or float, optional
+        The normal force ``F_d(t)`` [N] (positive: pressing): a :class:`~hybrid.Step` or a number (a
+        constant); default 10 N, 20 N from 0.4 s.
+    speed_reference : Step or float, optional
+        The speed ``v_d(t)`` along ``t1`` [m/s]: a :class:`~hybrid.Step` or a number (a constant);
+        default 0.3 m/s, 0.6 m/s from 1 s.
+    sensor : Sensor
+        The plant's elastic sensor and its signal (noise, bias, lag, delay: :class:`~hybrid.Sensor`;
+        default the paper's, 1000 N/m, ideal).
+    contact : Contact
+        The surface's penalty contact and friction on the sensor tip (:class:`~hybrid.Contact`; default
+        ``k_e`` = 1e5 N/m, ``d_e`` = 50 N s/m, ``gamma`` = 0.2).
+    wrench_sensor : WrenchSensor, optional
+        The true force/torque sensor and tool (a :class:`~hybrid.WrenchSensor`): the controller is then
+        given its raw reading (sensor axes) for the plant's force, at the true arm's tip pose
+        (conventions §14), and turns it back with ``controller_wrench_sensor``. None (the default): the
+        controller is given the wrench on the robot itself.
+    controller_wrench_sensor : WrenchSensor, optional
+        The sensor and tool as the controller believes them (its mount, sign, tool, bias and its filter's
+        ``cutoff``); default ``wrench_sensor`` itself. Needs ``wrench_sensor``.
+    start_gap : float
+        [m] the run starts with the sensor tip this far from the surface along its normal at the start
+        point, at rest and out of contact (conventions §4); 0 (the default): on the surface, pressing
+        with ``F_d(0)``. Needs ``approach_speed``.
+    approach_speed : float
+        [m/s] with it the controller has a :class:`~hybrid.ContactLoss` rule: a force axis whose measured
+        force is below ``touch_threshold`` approaches the surface at this speed (before the first touch,
+        and after a loss of contact); 0 (the default): no such rule.
+    touch_threshold : float
+        [N] the measured normal force below which the force axis counts as out of contact (default
+        0.5 N).
+    duration : float
+        [s] the run's length (default 2 s), a whole number of samples (:attr:`n_samples`).
+    integration_step : float
+        [s] the plant's fixed RK4 step (default 0.1 ms); ``sample_time`` is a whole multiple of it
         (:attr:`steps_per_sample` integration steps a control sample).
-    sample_time : [s] the control sample period ``T``.
-    backend : which committed unit runs the closed-form plant (``"sympy"`` or ``"casadi"``).
-    singular_tol : the run stops when the Jacobian's conditioning at a sample falls below it.
-    fault_reaction : the controller's :class:`~hybrid.FaultReaction` (its defaults): what a run with a
-        sensor's dropout (``Sensor.dropout_duration``) measures; a sweep varies its numbers by name
+    sample_time : float
+        [s] the control sample period ``T`` (default 10 ms), the torque held over it.
+    backend : str
+        Which committed unit runs the closed-form plant: ``"sympy"`` (the default) or ``"casadi"``.
+    singular_tol : float
+        The run stops when the Jacobian's conditioning at a sample falls below it (default 1e-3).
+    fault_reaction : FaultReaction
+        The controller's :class:`~hybrid.FaultReaction` (its defaults): what a run with a sensor's
+        dropout (``Sensor.dropout_duration``) measures; a sweep varies its numbers by name
         (``fault_reaction.stop_time``).
-    allow_unstable : an experiment whose sampled loops are predicted unstable (:func:`hybrid.stability`)
-        is refused, saying which loop and why; True runs it anyway (a study that tests the prediction),
-        and its result says it was predicted so (:attr:`~hybrid.SimulationResult.predicted_stable`).
+    allow_unstable : bool
+        An experiment whose sampled loops are predicted unstable (:func:`hybrid.stability`) is refused,
+        saying which loop and why (the default, False); True runs it anyway (a study that tests the
+        prediction), and its result says it was predicted so (:attr:`~hybrid.SimulationResult.predicted_stable`).
+
+    Raises
+    ------
+    HybridError
+        A setting of the wrong kind or out of its range, or settings the run cannot meet together (a start
+        off the surface or out of reach, a path the tip does not follow, loops predicted unstable, ...).
+
+    Examples
+    --------
+    The UR5 on a sphere, 50 ms of the sphere's own path (its latitude circle 60 degrees from the top):
+
+    >>> import hybrid
+    >>> sphere = hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15)
+    >>> experiment = hybrid.Experiment(robot=hybrid.ur5(), surface=sphere, force_reference=15.0,
+    ...                                speed_reference=0.1, duration=0.05)
+    >>> experiment.n_samples, experiment.steps_per_sample  # 10 ms samples of 100 RK4 steps
+    (5, 100)
+    >>> experiment.initial_state().shape  # (q, q', s, s') of 6 joints and the sensor tip
+    (18,)
+    >>> result = hybrid.simulate(experiment)
+    >>> round(float(result.force_normal[-1]))  # [N]
+    15
+    >>> import dataclasses
+    >>> faster = dataclasses.replace(experiment, sample_time=0.005)  # a copy, checked again
+    >>> faster.n_samples, faster.steps_per_sample
+    (10, 50)
     """
 
     robot: Robot | None = None
@@ -252,7 +335,23 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         """This experiment with other settings of :data:`PHYSICS`: what ``dataclasses.replace(self,
         **changes)`` makes, or the refusal it raises, by the checks that read them alone (the others
         passed for this experiment and read none of them; a sweep's runs that differ in their physics
-        only are checked at a fraction of the cost)."""
+        only are checked at a fraction of the cost).
+
+        Parameters
+        ----------
+        **changes
+            New values of ``model_error``, ``viscous_compensation``, ``sensor`` or ``contact``.
+
+        Returns
+        -------
+        Experiment
+            The changed copy.
+
+        Raises
+        ------
+        ValueError
+            A setting other than those; a refused value is a HybridError, as ``replace`` raises it.
+        """
         unknown = set(changes) - PHYSICS
         if unknown:
             raise ValueError(f"with_physics changes {', '.join(sorted(unknown))}, which are not PHYSICS")
@@ -270,7 +369,13 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
     @classmethod
     def physics_alone(cls) -> bool:
         """Whether :meth:`with_physics` checks this class's physics alone: its checks are the
-        experiment's (a subclass's own checks may read the physics too; it is then made whole)."""
+        experiment's (a subclass's own checks may read the physics too; it is then made whole).
+
+        Returns
+        -------
+        bool
+            True for :class:`Experiment`, False for a subclass with a ``__post_init__`` of its own.
+        """
         return cls.__post_init__ is Experiment.__post_init__
 
     # ------------------------------------------------------------------ derived
@@ -289,22 +394,47 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         return generated_plant_class(self.robot.kind.plant)
 
     def plant(self):
-        """The generated plant of this run (the true arm, sensor, contact on the surface)."""
+        """The generated plant of this run.
+
+        Returns
+        -------
+        GeneratedPlant
+            A :attr:`plant_class` with the true arm, the sensor and the contact on the true surface.
+        """
         return self.plant_class(self)
 
     def controller_model(self) -> Robot:
-        """The controller's model of the arm: ``controller_robot`` when given, else the true robot with
-        ``model_error`` and ``viscous_compensation``."""
+        """The controller's model of the arm.
+
+        Returns
+        -------
+        Robot
+            ``controller_robot`` when given, else ``robot.with_model_error(model_error,
+            viscous_compensation)``.
+        """
         if self.controller_robot is not None:
             return self.controller_robot
         return self.robot.with_model_error(self.model_error, self.viscous_compensation)
 
     def told_surface(self) -> Surface:
-        """The surface the controller is told: ``controller_surface``, else the true one."""
+        """The surface the controller is told.
+
+        Returns
+        -------
+        Surface
+            ``controller_surface`` when given, else the true ``surface``.
+        """
         return told_surface(self)
 
     def build_controller(self) -> Controller:
-        """Exactly the controller this run uses: its model of the arm, loops, references, options."""
+        """Exactly the controller this run uses.
+
+        Returns
+        -------
+        Controller
+            A new :class:`~hybrid.Controller` of :meth:`controller_model` on :meth:`told_surface`, with the
+            experiment's scheme, axes, loops, references and options, before its first sample.
+        """
         return Controller(self.controller_model(), self.told_surface(), self.controller, axes=self.axes,
                           frame_direction=self.frame_direction, posture=self.posture, **self.controller_settings())
 
@@ -320,8 +450,14 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         return self.surface if section is None else section
 
     def followed_path(self) -> Path | None:
-        """The path the desired point follows: the one given, else the surface's through the start point
-        given, else the surface's own (None where there is none)."""
+        """The path the desired point follows.
+
+        Returns
+        -------
+        Path or None
+            ``path`` when given, else the path task's, else the surface's through ``start_point``, else
+            the surface's own; None where there is none.
+        """
         if self.path is not None:
             return self.path
         if self.path_task is not None:
@@ -336,38 +472,77 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
             return None
 
     def start(self) -> np.ndarray:
-        """The sensor tip's start point on the surface [m]: ``start_point`` (projected onto the surface),
-        else the path's start."""
+        """The sensor tip's start point on the surface.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``start_point`` projected onto the surface (the planar arm's cross-section), else the
+            followed path's point at its ``start`` [m], base axes (2 coordinates for the planar arm).
+        """
         if self.start_point is None:
             return self.followed_path().point_at(self.followed_path().start)
         projected = self._geometry().project(self.start_point)
         return np.array(self.start_point) if projected is None else projected
 
     def desired_point(self, t: float) -> tuple[np.ndarray, np.ndarray]:
-        """``r_d(t)`` [m] on the path, reached from the start at the desired speed, and ``r_d'(t)`` [m/s]."""
+        """The desired point on the path, reached from the start at the desired speed.
+
+        Parameters
+        ----------
+        t : float
+            The time [s].
+
+        Returns
+        -------
+        r_d, r_d_dot : numpy.ndarray
+            ``r_d(t)`` [m], at the arc length ``arc_of(start) + int_0^t v_d``, and its velocity
+            ``r_d'(t) = v_d(t)`` times the path's unit tangent [m/s], base axes.
+        """
         path = self.followed_path()
         s = path.arc_of(self.start()) + self.speed_reference.integral(t)
         return path.point_at(s), self.speed_reference(t) * path.tangent_at(s)
 
     def initial_state(self) -> np.ndarray:
-        """The run's start state ``x0 = (q, q', s, s')``: at rest, the sensor tip pressing at the start
-        point with ``F_d(0)`` (:func:`~hybrid.experiments.settings.pressed`), or with ``start_gap`` the
-        sensor tip that far from it along the normal, out of contact, the sensor at rest
-        (:func:`~hybrid.experiments.settings.free`); the tool's z axis along ``-n`` when the task has
-        rotational axes, the joints from inverse kinematics of the true arm. What a foreign loop starts
-        from."""
+        """The run's start state: at rest, the sensor tip pressing at the start point with ``F_d(0)``
+        (:func:`~hybrid.experiments.settings.pressed`), or with ``start_gap`` the sensor tip that far from
+        it along the normal, out of contact, the sensor at rest (:func:`~hybrid.experiments.settings.free`);
+        the tool's z axis along ``-n`` when the task has rotational axes, the joints from inverse
+        kinematics of the true arm. What a foreign loop starts from.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``x0 = (q, q', s, s')``: joint positions [rad or m] and velocities, the sensor tip [m] and its
+            velocity [m/s] (base axes); a copy.
+        """
         return start_state(self).copy()
 
     def start_state(self) -> StartState:
-        """:meth:`initial_state` by its parts: ``q``, ``qdot``, ``sensor_tip``, ``sensor_velocity`` (and
-        ``array``, the whole)."""
+        """:meth:`initial_state` by its parts.
+
+        Returns
+        -------
+        StartState
+            ``q``, ``qdot``, ``sensor_tip``, ``sensor_velocity`` (and ``array``, the whole).
+        """
         return StartState.of(start_state(self), self.robot.n)
 
     def checked_start(self, record: dict | None = None) -> np.ndarray:
         """:meth:`initial_state`, after the checks every run of this experiment makes before anything
-        sized by its length is allocated: its record fits in memory (:meth:`check_memory`, with the
-        plant's ``record`` where the run keeps one), and its path stays in the workspace
-        (:meth:`check_path`). What ``simulate``, a sweep and ``generate`` start from."""
+        sized by its length is allocated: its record fits in memory (:meth:`check_memory`), and its path
+        stays in the workspace (:meth:`check_path`). What ``simulate``, a sweep and ``generate`` start from.
+
+        Parameters
+        ----------
+        record : dict, optional
+            The plant's record, where the run keeps one (its columns size the memory check).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``x0 = (q, q', s, s')``, as :meth:`initial_state`.
+        """
         self.check_memory(record)
         x0 = self.initial_state()
         self.check_path()
@@ -388,29 +563,65 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         """Write this run's closed loop as standalone C99 into the folder ``out``: the controller
         (``<name>_controller.c``, ``.h``, ``.json``; the struct ``<name>_controller``, as
         :meth:`hybrid.Controller.generate` writes it) and the plant (``<name>_plant.c``, ``.h``, ``.json``).
-        Returns the paths written.
 
         ``<name>_plant_init(&p)`` gives a struct with this run's plant parameters (the true arm, the
         sensor, the contact, the surface), its timing (``h``, the integration step; ``steps_per_sample``,
         ``sample_time``, ``duration``) and its start state (:meth:`initial_state`); ``<name>_plant_wrench`` reads the
         sensor (what the controller's step takes), ``<name>_plant_advance(&p, tau, n)`` takes ``n`` RK4
         steps with the torque held, ``<name>_plant_signals`` gives what the metrics read. A loop of
-        samples around the two is this run (``hybrid.simulate``'s) to rounding error. ``name``: ASCII
-        letters, digits and ``_``, a letter first (default the robot's name). C99, no allocation, no
-        globals, no I/O, reentrant; the same bytes for the same experiment. Files in ``out`` with other
-        content are refused unless ``force``. References the controller takes from its caller (a desired
-        frame) are the caller's to write into the controller's struct each sample."""
+        samples around the two is this run (``hybrid.simulate``'s) to rounding error. C99, no allocation,
+        no globals, no I/O, reentrant; the same bytes for the same experiment. References the controller
+        takes from its caller (a desired frame) are the caller's to write into the controller's struct
+        each sample.
+
+        Parameters
+        ----------
+        out : str or pathlib.Path
+            The folder written into (made when missing).
+        name : str, optional
+            The prefix of the files and C names: ASCII letters, digits and ``_``, a letter first
+            (default the robot's name).
+        force : bool
+            Whether files in ``out`` with other content are replaced (default False: refused).
+
+        Returns
+        -------
+        list of pathlib.Path
+            The paths written.
+        """
         return generate_experiment(self, out, name, force)
 
     # ------------------------------------------------------------------- files
 
     def to_dict(self) -> dict:
-        """The settings as JSON-ready data, from which :meth:`from_dict` builds the experiment again."""
+        """The settings as data.
+
+        Returns
+        -------
+        dict
+            JSON-ready data, from which :meth:`from_dict` builds the experiment again.
+        """
         return experiment_to_dict(self)
 
     @classmethod
     def from_dict(cls, d: dict) -> Experiment:
-        """The experiment :meth:`to_dict` wrote; anything else is a HybridError."""
+        """The experiment :meth:`to_dict` wrote.
+
+        Parameters
+        ----------
+        d : dict
+            The data, as :meth:`to_dict` wrote it (read back from JSON, say).
+
+        Returns
+        -------
+        Experiment
+            The experiment, equal to the one written.
+
+        Raises
+        ------
+        HybridError
+            Data :meth:`to_dict` did not write.
+        """
         return experiment_from_dict(cls, d)
 
 

@@ -38,15 +38,26 @@ class RunSettings:
 
     @property
     def n_samples(self) -> int:
+        """How many control samples (``sample_time`` each) the run's ``duration`` spans."""
         return math.ceil(self.duration / self.sample_time - 1e-9)
 
     def check_memory(self, record: dict | None = None) -> None:
         """Refuse, before anything sized by the run's length is allocated (its record, the path check's
         arrays), a run whose record would not fit in memory (:func:`hybrid.validate.check_size`, with the
-        numbers). ``record``: the plant's columns (``state``, ``nq``, ``outputs``:
-        :func:`hybrid.plants.interface.plant_record`); without it, the least any plant keeps (the joints'
-        and the sensor tip's state and the torque). :meth:`Experiment.checked_start` calls it, before
-        every run: simulated, swept or generated."""
+        numbers). :meth:`Experiment.checked_start` calls it, before every run: simulated, swept or
+        generated.
+
+        Parameters
+        ----------
+        record : dict, optional
+            The plant's columns (``state``, ``nq``, ``outputs``: :func:`hybrid.plants.interface.plant_record`);
+            without it, the least any plant keeps (the joints' and the sensor tip's state and the torque).
+
+        Raises
+        ------
+        HybridError
+            A record larger than the share of the machine's memory a run may take, with the numbers.
+        """
         nq = self.robot.n
         columns = (len(record["state"]) + record["nq"] + len(record["outputs"]) if record is not None
                    else 2 * nq + 4 + nq)
@@ -56,12 +67,24 @@ class RunSettings:
                    "shorten duration or lengthen integration_step")
 
     def effective_gains(self) -> Gains:
-        """The gains in force: without integral action ``KI2v = KIf = 0``."""
+        """The gains in force.
+
+        Returns
+        -------
+        Gains
+            ``gains``, or without integral action (``integral=False``) a copy with ``KI2v = KIf = 0``.
+        """
         return self.gains if self.integral else replace(self.gains, KI2v=0.0, KIf=0.0)
 
     def controller_settings(self) -> dict:
-        """The :class:`~hybrid.Controller` keywords every experiment sets alike: the force loop on the
-        normal, the speed reference on ``t1``, gains, sampling, options."""
+        """The :class:`~hybrid.Controller` keywords every experiment sets alike.
+
+        Returns
+        -------
+        dict
+            By keyword: the force loop on the normal, the speed reference on ``t1`` (or the path task),
+            gains, sampling, options.
+        """
         loss = ContactLoss(self.touch_threshold, self.approach_speed) if self.approach_speed > 0 else None
         task = getattr(self, "path_task", None)  # a path task gives the references
         return {"selection": ("n",), "gains": self.gains, "path_task": task,
@@ -73,7 +96,13 @@ class RunSettings:
                 "fault_reaction": self.fault_reaction}
 
     def plant_array(self) -> np.ndarray:
-        """The ``plant[7]`` array of the generated C (sensor, then contact)."""
+        """The ``plant[7]`` array of the generated C.
+
+        Returns
+        -------
+        numpy.ndarray
+            The sensor's ``m_s, K_s, D_s``, then the contact's ``k_e, d_e, gamma, v_eps``.
+        """
         s, c = self.sensor, self.contact
         return np.array([s.mass, s.stiffness, s.damping, c.stiffness, c.damping, c.friction,
                          c.friction_smoothing])

@@ -23,9 +23,38 @@ SPHERE_CENTER, SPHERE_RADIUS = (0.5, 0.0, 0.2), 0.15
 def tracing_experiment(**overrides) -> Experiment:
     """The 3-D experiment, with any setting of :class:`Experiment` overridden by keyword.
 
-    Takes the same keywords as :func:`hybrid.paper_experiment` (the gains one by one, ``F_d``,
-    ``v_d``) and ``latitude`` [deg]: the path is the sphere's latitude circle that many degrees
-    from its top (default 60).
+    The UR5 on a sphere of radius 0.15 m centred at (0.5, 0, 0.2) m in front of it, its sensor tip
+    sliding along the latitude circle 60 degrees from the top, along the task axis ``t1`` (``e`` =
+    base z), with the loops, sampling, integration and model error of the paper's experiment; the
+    force reference ``F_d`` steps from 10 N to 20 N at 0.5 s, the speed ``v_d`` along ``t1`` from
+    0.15 m/s to 0.3 m/s at 1.5 s; 3 s in all (conventions §10).
+
+    Parameters
+    ----------
+    **overrides
+        Any field of :class:`Experiment`; the gains one by one (``KPv=50``); ``F_d`` / ``v_d`` in
+        place of the force / speed references (a number: a constant); and ``latitude`` [deg]: the path
+        is then the sphere's latitude circle that many degrees from its top (default 60, the sphere's
+        own path). With a ``path_task`` the task gives the references.
+
+    Returns
+    -------
+    Experiment
+        The 3-D experiment (above), overridden.
+
+    Raises
+    ------
+    HybridError
+        An unknown or refused setting, or a ``latitude`` on a surface that is not a sphere.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> experiment = hybrid.tracing_experiment(latitude=45.0, F_d=15.0, duration=0.5)
+    >>> experiment.robot.name, experiment.force_reference
+    ('ur5', Step(before=15.0, after=15.0, at=0.0))
+    >>> round(experiment.followed_path().radius, 4)  # 0.15 m * sin(45 degrees)
+    0.1061
     """
     latitude = overrides.pop("latitude", None)
     surface = overrides.get("surface", Sphere(SPHERE_CENTER, SPHERE_RADIUS))

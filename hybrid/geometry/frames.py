@@ -66,10 +66,12 @@ def task_frame(surface: Surface, r, rdot, *, frame_direction=(0.0, 0.0, 1.0),
     On the paper's disc, at its point nearest the base, the normal row points back to the robot:
 
     >>> import hybrid
-    >>> R, Rdot = hybrid.task_frame(hybrid.Circle((0.5, 0.0), 0.2), [0.3, 0.0], [0.0, -0.1])
+    >>> disc = hybrid.Circle((0.5, 0.0), 0.2)
+    >>> R, Rdot = hybrid.task_frame(disc, [0.3, 0.0], [0.0, -0.1])
     >>> R.shape, R[1].tolist()
     ((2, 2), [-1.0, 0.0])
-    >>> R, Rdot = hybrid.task_frame(hybrid.Sphere((0.5, 0.0, 0.2), 0.15), [[0.35, 0.0, 0.2]] * 4,
+    >>> sphere = hybrid.Sphere((0.5, 0.0, 0.2), 0.15)
+    >>> R, Rdot = hybrid.task_frame(sphere, [[0.35, 0.0, 0.2]] * 4,
     ...                             [[0.0, 0.1, 0.0]] * 4)
     >>> R.shape
     (4, 3, 3)

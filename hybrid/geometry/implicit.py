@@ -49,7 +49,9 @@ class ImplicitSurface(Surface):
     An ellipsoid of semi-axes 0.3, 0.2 and 0.1 m:
 
     >>> import hybrid
-    >>> ellipsoid = hybrid.ImplicitSurface("(x/a)**2 + (y/b)**2 + (z/c)**2 - 1", {"a": 0.3, "b": 0.2, "c": 0.1})
+    >>> ellipsoid = hybrid.ImplicitSurface(
+    ...     "(x/a)**2 + (y/b)**2 + (z/c)**2 - 1",
+    ...     {"a": 0.3, "b": 0.2, "c": 0.1})
     >>> ellipsoid.normal_at([0.0, 0.0, 0.1]).tolist()
     [0.0, 0.0, 1.0]
     >>> ellipsoid.as_array().tolist()

@@ -283,9 +283,11 @@ class MeshSurface(PartSurface):
     A cube of 0.1 m (8 vertices, 12 facets), its top at z = 0.05 m:
 
     >>> import hybrid, numpy as np
-    >>> v = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]) * 0.05
-    >>> f = [[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1], [2, 3, 7], [2, 7, 6],
-    ...      [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]]
+    >>> v = 0.05 * np.array([[x, y, z] for x in (-1, 1)
+    ...                      for y in (-1, 1) for z in (-1, 1)])
+    >>> f = [[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5],
+    ...      [0, 5, 1], [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4],
+    ...      [1, 5, 7], [1, 7, 3]]
     >>> cube = hybrid.MeshSurface(v, f, spacing=0.005, band=0.02)
     >>> round(float(cube.normal_at([0.0, 0.0, 0.052])[2]), 4)
     1.0
@@ -383,8 +385,10 @@ class PointCloudSurface(PartSurface):
 
     >>> import hybrid, numpy as np
     >>> n = np.random.default_rng(0).normal(size=(8000, 3))
-    >>> n = n[n[:, 2] > 0.3] / np.linalg.norm(n[n[:, 2] > 0.3], axis=1, keepdims=True)
-    >>> scan = hybrid.PointCloudSurface(0.1 * n, viewpoint=(0.0, 0.0, 1.0), spacing=0.008, band=0.02)
+    >>> n = n[n[:, 2] > 0.3]
+    >>> n /= np.linalg.norm(n, axis=1, keepdims=True)
+    >>> scan = hybrid.PointCloudSurface(0.1 * n, viewpoint=(0, 0, 1),
+    ...                                 spacing=0.008, band=0.02)
     >>> round(float(scan.normal_at([0.0, 0.0, 0.101])[2]), 3)
     1.0
     """

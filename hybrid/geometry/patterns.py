@@ -90,14 +90,66 @@ class _PlanarPieces(SurfacePath):
 class RasterPath(_PlanarPieces):
     """Parallel passes across a part with round turns between them, on ``surface``.
 
-    The first pass starts at ``origin`` [m] and runs ``pass_length`` [m] along ``direction`` (within
-    the tangent plane there); each next pass runs back ``spacing`` [m] to the side ``n x direction``
-    (``n`` the surface's normal at ``origin``). Between passes the path turns beyond the pass's end on a
-    circle of ``turn_radius`` [m] (default ``spacing / 2``: a semicircle; smaller: two quarter circles
-    joined by a straight piece). Tangent-continuous (C1) everywhere; the curvature steps where a
-    turn meets a pass. Drawn in the tangent plane at ``origin`` and moved onto the surface.
+    The first pass starts at ``origin`` and runs ``pass_length`` along ``direction`` (within the
+    tangent plane there); each next pass runs back, ``spacing`` to the side ``n x direction`` (``n``
+    the surface's normal at ``origin``, towards the robot). Between passes the path turns beyond the
+    pass's end on circles of ``turn_radius``. Tangent-continuous (C1) everywhere; the curvature steps
+    where a turn meets a pass. Drawn in the tangent plane at ``origin`` and moved onto the surface:
+    on a plane the lengths are the path's own, on a curved surface the projection stretches them a
+    little. An open path: its arc length runs from 0 at ``origin`` to ``length`` at the last pass's end.
 
-    ``pass_arcs`` lists each pass's ``(s_begin, s_end)`` [m] along the path.
+    Parameters
+    ----------
+    surface : Surface
+        The surface the path is drawn on: a :class:`~hybrid.Plane`, :class:`~hybrid.Sphere`,
+        :class:`~hybrid.Cylinder`, :func:`~hybrid.Circle` or :class:`~hybrid.ImplicitSurface`.
+    origin : sequence of float
+        Where the first pass starts [m], base axes (3 coordinates), within 5 mm of the surface (it is
+        moved onto it).
+    direction : sequence of float
+        The direction of the first pass, base axes (3 coordinates); its part along the surface's
+        normal at ``origin`` is dropped (refused when nothing is left).
+    pass_length : float
+        The length of each pass [m], > 0.
+    spacing : float
+        The distance between neighbouring passes [m], > 0.
+    passes : int
+        The number of passes, a whole number >= 1.
+    turn_radius : float, optional
+        The radius of the turns [m], > 0 and at most ``spacing / 2``. None (the default):
+        ``spacing / 2``, each turn a semicircle; smaller: two quarter circles joined by a straight piece
+        ``spacing - 2 turn_radius`` long.
+    start : float
+        The arc length [m] where a run starts unless told otherwise (default 0: at ``origin``).
+
+    Attributes
+    ----------
+    pass_arcs : tuple of (float, float)
+        Each pass's ``(s_begin, s_end)`` [m] along the path, in order.
+    length : float
+        The path's length along the surface [m].
+
+    Raises
+    ------
+    HybridError
+        A surface that is not a hybrid surface, a length, spacing or turn radius that is not positive
+        (or a turn radius above half the spacing), a number of passes that is not a whole number >= 1,
+        an ``origin`` off the surface, or a ``direction`` along its normal.
+
+    Examples
+    --------
+    Three passes of 10 cm, 2 cm apart, on a horizontal plane; each turn is a semicircle of 1 cm:
+
+    >>> import hybrid
+    >>> plane = hybrid.Plane(point=(0.4, 0.0, 0.2), normal=(0.0, 0.0, 1.0))
+    >>> raster = hybrid.RasterPath(plane, origin=(0.35, -0.05, 0.2), direction=(1.0, 0.0, 0.0),
+    ...                            pass_length=0.1, spacing=0.02, passes=3)
+    >>> raster
+    RasterPath(Plane, 3 passes of 0.1 m, spacing 0.02 m, length=0.362832 m)
+    >>> [(round(a, 6), round(b, 6)) for a, b in raster.pass_arcs]
+    [(0.0, 0.1), (0.131416, 0.231416), (0.262832, 0.362832)]
+    >>> raster.point_at(raster.pass_arcs[1][0]).round(6).tolist()  # the second pass starts 2 cm to the side
+    [0.45, -0.03, 0.2]
     """
 
     def __init__(self, surface, origin, direction, pass_length: float, spacing: float, passes: int,
@@ -145,10 +197,62 @@ class RasterPath(_PlanarPieces):
 
 
 class SpiralPath(SurfacePath):
-    """An Archimedean spiral on ``surface`` about ``center`` [m]: in the tangent plane there, the radius
-    ``start_radius + pitch * angle / (2 pi)`` [m], ``turns`` turns counter-clockwise about the surface's
-    normal, starting along ``direction`` (within the tangent plane; default base x, or base y where
-    the normal is near base x), moved onto the surface. ``pitch`` [m] is the distance between neighbouring turns."""
+    """An Archimedean spiral on ``surface`` about ``center``, outwards.
+
+    In the tangent plane at ``center`` the spiral's radius is ``start_radius + pitch * angle / (2 pi)``
+    [m] at the angle [rad] from ``direction``, counter-clockwise about the surface's normal ``n``
+    (towards the robot), for ``turns`` turns; every point of it is moved onto the surface. On a plane
+    the lengths are the path's own; on a curved surface the projection stretches them a little. An
+    open path: its arc length runs from 0 at the spiral's start to ``length`` at its outer end.
+
+    Parameters
+    ----------
+    surface : Surface
+        The surface the path is drawn on: a :class:`~hybrid.Plane`, :class:`~hybrid.Sphere`,
+        :class:`~hybrid.Cylinder`, :func:`~hybrid.Circle` or :class:`~hybrid.ImplicitSurface`.
+    center : sequence of float
+        The spiral's centre [m], base axes (3 coordinates), within 5 mm of the surface (it is moved
+        onto it).
+    pitch : float
+        The distance between neighbouring turns [m], > 0.
+    turns : float
+        The number of turns, > 0 (need not be whole).
+    start_radius : float
+        The radius where the spiral starts [m], >= 0 (default 0: at the centre).
+    direction : sequence of float, optional
+        The direction from the centre to the spiral's start, base axes (3 coordinates); its part along
+        the normal at ``center`` is dropped. None (the default): base x, or base y where the normal is
+        within about 26 degrees of base x either way (``|n_x| >= 0.9``).
+    start : float
+        The arc length [m] where a run starts unless told otherwise (default 0: the spiral's start).
+
+    Attributes
+    ----------
+    center : numpy.ndarray
+        The centre moved onto the surface [m].
+    length : float
+        The path's length along the surface [m].
+
+    Raises
+    ------
+    HybridError
+        A surface that is not a hybrid surface, a pitch or number of turns that is not positive, a
+        negative start radius, a ``center`` off the surface, or a ``direction`` along its normal.
+
+    Examples
+    --------
+    Three turns 1 cm apart from the centre of a horizontal plane, starting along base x:
+
+    >>> import hybrid
+    >>> plane = hybrid.Plane(point=(0.4, 0.0, 0.2), normal=(0.0, 0.0, 1.0))
+    >>> spiral = hybrid.SpiralPath(plane, center=(0.4, 0.0, 0.2), pitch=0.01, turns=3)
+    >>> spiral
+    SpiralPath(Plane, pitch 0.01 m, 3 turns, length=0.28603 m)
+    >>> import numpy as np
+    >>> end = spiral.point_at(spiral.length)
+    >>> round(float(np.linalg.norm(end - spiral.center)), 6)  # the outer end: 3 pitches from the centre [m]
+    0.03
+    """
 
     def __init__(self, surface, center, pitch: float, turns: float, start_radius: float = 0.0,
                  direction=None, start: float = 0.0):

@@ -41,9 +41,25 @@ def check_surface(owner: str, surface) -> None:
 
 class SurfacePath(Path):
     """A curve on ``surface``, parametrised by arc length ``s`` in ``[0, length]`` (any ``s`` on a closed one,
-    taken modulo ``length``). Besides the :class:`Path` protocol it gives ``normal_at(s)`` (the surface's
-    unit normal, towards the robot), ``curvature_at(s)`` (the curvature vector ``d^2 r / ds^2``; its
-    component along ``normal_at(s)`` is the surface's normal curvature along the path) and ``length``.
+    taken modulo ``length``).
+
+    Besides the :class:`Path` protocol (:meth:`point_at`, :meth:`points_at`, :meth:`tangent_at`,
+    :meth:`arc_of`) it gives :meth:`normal_at` (the surface's unit normal, towards the robot),
+    :meth:`curvature_at` (the curvature vector ``d^2 r / ds^2``; its component along ``normal_at(s)`` is
+    the surface's normal curvature along the path), all four at once (:meth:`frames_at`), where its
+    pieces meet (:attr:`joints`) and what it was made from (:meth:`arguments`). Points, tangents and
+    normals are in base axes.
+
+    Attributes
+    ----------
+    surface : Surface
+        The surface the path is drawn on.
+    closed : bool
+        Whether the path returns to its start (its arc length then wraps around ``length``).
+    length : float
+        The path's length [m], along the surface.
+    start : float
+        The arc length [m] where a run starts unless told otherwise.
     """
 
     surface: Surface
@@ -118,7 +134,19 @@ class SurfacePath(Path):
         return half * (speed @ _GL_W)
 
     def arc_at_knot(self, i: int) -> float:
-        """The arc length [m] where the ``i``-th piece starts (``i`` = the number of pieces: ``length``)."""
+        """The arc length where the ``i``-th piece of the path starts.
+
+        Parameters
+        ----------
+        i : int
+            The piece, from 0 (a waypoint path's pieces run between its waypoints; a raster's are its
+            passes and turns); the number of pieces gives the path's end.
+
+        Returns
+        -------
+        float
+            The arc length [m] (0 for ``i = 0``, ``length`` for the end).
+        """
         return float(self._sa[np.searchsorted(self._ua, self._knots[i])])
 
     # ------------------------------------------------------------------ arc length to parameter
@@ -152,52 +180,179 @@ class SurfacePath(Path):
     # ------------------------------------------------------------------ the Path protocol
 
     def points_at(self, s) -> np.ndarray:
-        """The path's points (one row per arc length in ``s``) [m]."""
+        """The path's points at many arc lengths at once (as :meth:`point_at` gives them one by one).
+
+        Parameters
+        ----------
+        s : array_like
+            The arc lengths [m], each in ``[0, length]`` (any value on a closed path: taken modulo
+            ``length``).
+
+        Returns
+        -------
+        numpy.ndarray
+            The points on the surface [m], base axes: one row of 3 per arc length.
+
+        Raises
+        ------
+        HybridError
+            An arc length that is not finite, or beyond the ends of an open path.
+        """
         return self._points(*self._parameter(s))[0]
 
     def point_at(self, s: float) -> np.ndarray:
-        """The path's point at arc length ``s`` [m]."""
+        """The path's point at arc length ``s``, on the surface.
+
+        Parameters
+        ----------
+        s : float
+            The arc length [m], in ``[0, length]`` (any value on a closed path: taken modulo ``length``).
+
+        Returns
+        -------
+        numpy.ndarray
+            The point [m], base axes (3).
+
+        Raises
+        ------
+        HybridError
+            An arc length that is not finite, or beyond the ends of an open path.
+        """
         return self.points_at(s)[0]
 
     def tangent_at(self, s: float) -> np.ndarray:
-        """The unit tangent at ``s``, along the surface, in the direction of growing ``s``."""
+        """The unit tangent at arc length ``s``: along the surface, in the direction of growing ``s``.
+
+        Parameters
+        ----------
+        s : float
+            The arc length [m], in ``[0, length]`` (any value on a closed path: taken modulo ``length``).
+
+        Returns
+        -------
+        numpy.ndarray
+            The unit tangent, base axes (3).
+
+        Raises
+        ------
+        HybridError
+            An arc length that is not finite, or beyond the ends of an open path.
+        """
         d1 = self._derivatives(*self._parameter(s))[2][0]
         return d1 / np.linalg.norm(d1)
 
     def normal_at(self, s: float) -> np.ndarray:
-        """The surface's unit normal (towards the robot) at the path's point at ``s``."""
+        """The surface's unit normal ``n`` at the path's point at arc length ``s``.
+
+        Parameters
+        ----------
+        s : float
+            The arc length [m], in ``[0, length]`` (any value on a closed path: taken modulo ``length``).
+
+        Returns
+        -------
+        numpy.ndarray
+            The unit normal, from the surface towards the robot, base axes (3).
+
+        Raises
+        ------
+        HybridError
+            An arc length that is not finite, or beyond the ends of an open path.
+        """
         return self._derivatives(*self._parameter(s))[1][0]
 
     def curvature_at(self, s: float) -> np.ndarray:
-        """The curvature vector ``d^2 r / ds^2`` [1/m] at ``s``: its length is the path's curvature, its
-        component along :meth:`normal_at` the surface's normal curvature along the path."""
+        """The curvature vector ``d^2 r / ds^2`` at arc length ``s``.
+
+        Its length is the path's curvature; its component along :meth:`normal_at` is the surface's
+        normal curvature along the path (``-1 / rho`` on a sphere of radius ``rho``, touched from outside),
+        the rest the path's turn within the surface (its geodesic curvature).
+
+        Parameters
+        ----------
+        s : float
+            The arc length [m], in ``[0, length]`` (any value on a closed path: taken modulo ``length``).
+
+        Returns
+        -------
+        numpy.ndarray
+            The curvature vector [1/m], base axes (3), normal to :meth:`tangent_at`.
+
+        Raises
+        ------
+        HybridError
+            An arc length that is not finite, or beyond the ends of an open path.
+        """
         _, _, d1, d2 = self._derivatives(*self._parameter(s), second=True)
         d1, d2 = d1[0], d2[0]
         speed2 = float(d1 @ d1)
         return (d2 - (d2 @ d1) / speed2 * d1) / speed2
 
     def arguments(self) -> dict:
-        """What the path was made from, but its surface, as JSON-ready data (its class takes them back:
-        ``type(path)(path.surface, **path.arguments())``)."""
+        """What the path was made from, but its surface, as JSON-ready data.
+
+        Returns
+        -------
+        dict
+            The arguments given, by name (points as lists of numbers): its class takes them back,
+            ``type(path)(path.surface, **path.arguments())`` is the same path.
+        """
         return dict(self._given)
 
     @property
     def joints(self) -> np.ndarray:
-        """The arc lengths [m] where the pieces meet (the curvature may jump there), from 0 to ``length``."""
+        """The arc lengths [m] where the path's pieces meet (its curvature may jump there), from 0 to
+        ``length``: one more than the pieces (:meth:`arc_at_knot` of each)."""
         return np.array([self.arc_at_knot(i) for i in range(len(self._knots))])
 
     def frames_at(self, s) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """At each arc length of ``s`` [m] at once: the points [m], unit tangents, the surface's unit normals
-        and the curvature vectors ``d^2 r / ds^2`` [1/m], one row each (as :meth:`point_at`,
-        :meth:`tangent_at`, :meth:`normal_at` and :meth:`curvature_at` give them one by one)."""
+        """The points, tangents, normals and curvature vectors at many arc lengths at once (as
+        :meth:`point_at`, :meth:`tangent_at`, :meth:`normal_at` and :meth:`curvature_at` give them one
+        by one).
+
+        Parameters
+        ----------
+        s : array_like
+            The arc lengths [m], each in ``[0, length]`` (any value on a closed path: taken modulo
+            ``length``).
+
+        Returns
+        -------
+        points, tangents, normals, curvatures : numpy.ndarray
+            One row of 3 per arc length, base axes: the points [m], the unit tangents, the surface's
+            unit normals (towards the robot) and the curvature vectors ``d^2 r / ds^2`` [1/m].
+
+        Raises
+        ------
+        HybridError
+            An arc length that is not finite, or beyond the ends of an open path.
+        """
         C, normals, d1, d2 = self._derivatives(*self._parameter(s), second=True)
         speed2 = np.einsum("ij,ij->i", d1, d1)
         kappa = (d2 - (np.einsum("ij,ij->i", d2, d1) / speed2)[:, None] * d1) / speed2[:, None]
         return C, d1 / np.sqrt(speed2)[:, None], normals, kappa
 
     def arc_of(self, p) -> float:
-        """The arc length of the path's point nearest ``p`` [m] (a local search from the nearest
-        tabulated point)."""
+        """The arc length of the path's point nearest ``p``.
+
+        A local search: Newton's steps along the path from its tabulated point nearest ``p``, to the
+        foot of the perpendicular from ``p`` there (on an open path, at most its ends).
+
+        Parameters
+        ----------
+        p : sequence of float
+            A point [m], base axes (3 coordinates).
+
+        Returns
+        -------
+        float
+            The arc length [m], in ``[0, length]`` (``[0, length)`` on a closed path).
+
+        Raises
+        ------
+        HybridError
+            A point that is not three finite coordinates.
+        """
         p = np.asarray(p, dtype=float)
         if p.shape != (3,) or not np.isfinite(p).all():
             raise HybridError(f"{self._owner}.arc_of: give a point of three finite coordinates, got {p.tolist()}")

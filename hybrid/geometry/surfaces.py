@@ -262,7 +262,8 @@ def Circle(center, radius: float) -> Cylinder:  # noqa: N802  (a constructor, na
 
 @dataclass(frozen=True)
 class Plane(Surface):
-    """A plane through ``point`` with unit ``normal`` pointing towards the robot: ``phi = n^T (p - point)``.
+    r"""A plane through ``point`` :math:`p_0` with unit ``normal`` :math:`n` towards the robot:
+    :math:`\varphi(p) = n^T (p - p_0)`.
 
     Parameters
     ----------
@@ -554,7 +555,8 @@ class Sphere(Surface):
 
 @dataclass(frozen=True)
 class Cylinder(Surface):
-    """An infinite cylinder touched from outside: ``phi = |(I - u u^T)(p - point)| - radius``.
+    r"""An infinite cylinder touched from outside: :math:`\varphi(p) = \lVert (I - u u^T)(p - p_0) \rVert - \rho`,
+    with :math:`p_0` a point of its axis, :math:`u` the axis's unit direction and :math:`\rho` the radius.
 
     Parameters
     ----------
@@ -573,7 +575,8 @@ class Cylinder(Surface):
     Examples
     --------
     >>> import hybrid
-    >>> pillar = hybrid.Cylinder(point=(0.5, 0.0, 0.0), axis=(0.0, 0.0, 1.0), radius=0.2)
+    >>> pillar = hybrid.Cylinder(point=(0.5, 0.0, 0.0),
+    ...                          axis=(0.0, 0.0, 1.0), radius=0.2)
     >>> pillar.normal_at([0.3, 0.0, 0.1]).tolist()
     [-1.0, 0.0, 0.0]
     >>> pillar.circle_at([0.3, 0.0, 0.1])  # doctest: +ELLIPSIS

@@ -45,19 +45,51 @@ class WaypointPath(SurfacePath):
     Each point is first moved onto the surface (refused farther than 5 mm from it). The path is the
     cubic spline through them in their chord length (natural at the ends of an open path), every
     point of it moved onto the surface, parametrised by arc length from the first point; it passes
-    through every (projected) point.
+    through every (projected) point. Its pieces (:attr:`joints`) run from one waypoint to the next.
 
     Parameters
     ----------
     surface : Surface
-        A :class:`~hybrid.Plane`, :class:`~hybrid.Sphere`, :class:`~hybrid.Cylinder`,
-        :func:`~hybrid.Circle` or :class:`~hybrid.ImplicitSurface`.
+        The surface the path is drawn on: a :class:`~hybrid.Plane`, :class:`~hybrid.Sphere`,
+        :class:`~hybrid.Cylinder`, :func:`~hybrid.Circle` or :class:`~hybrid.ImplicitSurface`.
     points : sequence of (x, y, z)
-        At least two (three for a closed path), no two in a row the same.
+        The waypoints [m], base axes: at least two (three for a closed path), each within 5 mm of the
+        surface, no two in a row the same.
     closed : bool
-        Whether the path returns to its first point (leave the first point out at the end).
+        Whether the path returns to its first point (leave the first point out at the end); default
+        False.
     start : float
-        The arc length [m] where a run starts unless told otherwise.
+        The arc length [m] where a run starts unless told otherwise (default 0: the first point).
+
+    Attributes
+    ----------
+    points : numpy.ndarray
+        The waypoints moved onto the surface [m], one row each.
+    knots : numpy.ndarray
+        The spline's parameter at each waypoint: the chord lengths between the projected waypoints,
+        summed from 0 [m] (a closed path's last is back at the first point).
+    length : float
+        The path's length along the surface [m].
+
+    Raises
+    ------
+    HybridError
+        A surface that is not a hybrid surface (or is estimated), too few points, points that are
+        not three finite coordinates, a point farther than 5 mm from the surface, two points in a row
+        the same, or a start that is not finite.
+
+    Examples
+    --------
+    >>> import hybrid
+    >>> plane = hybrid.Plane(point=(0.4, 0.0, 0.2), normal=(0.0, 0.0, 1.0))
+    >>> path = hybrid.WaypointPath(plane, [(0.35, -0.05, 0.2), (0.45, 0.0, 0.2), (0.35, 0.05, 0.2)])
+    >>> path
+    WaypointPath(Plane, 3 points, closed=False, length=0.229601 m)
+    >>> s = path.arc_of_waypoint(1)  # the arc length [m] at the middle waypoint
+    >>> path.point_at(s).round(6).tolist(), path.normal_at(s).tolist()
+    ([0.45, 0.0, 0.2], [0.0, 0.0, 1.0])
+    >>> round(float(path.tangent_at(s)[1]), 6)  # there the path runs along base +y (it is symmetric about y = 0)
+    1.0
     """
 
     def __init__(self, surface, points, closed: bool = False, start: float = 0.0):
@@ -111,7 +143,19 @@ class WaypointPath(SurfacePath):
         return (Mi * a**3 + Mj * b**3) / (6 * h) + (yi / h - Mi * h / 6) * a + (yj / h - Mj * h / 6) * b
 
     def arc_of_waypoint(self, i: int) -> float:
-        """The arc length [m] at the ``i``-th (projected) waypoint."""
+        """The arc length at a waypoint.
+
+        Parameters
+        ----------
+        i : int
+            The waypoint, from 0 in the order given (on a closed path, the number of points is the
+            first point again, at the end of the lap).
+
+        Returns
+        -------
+        float
+            The arc length [m] of the (projected) waypoint along the path.
+        """
         return self.arc_at_knot(i)
 
     def __repr__(self):

@@ -167,7 +167,8 @@ def base_parameters(robot: Robot, *, states: int = 200, seed: int = 0) -> BasePa
     >>> import hybrid
     >>> robot = hybrid.ur5()
     >>> base = hybrid.base_parameters(robot)
-    >>> q, qd, qdd = [0.3, -1.2, 1.4, 0.2, 1.1, -0.4], [0.5] * 6, [1.0] * 6
+    >>> q = [0.3, -1.2, 1.4, 0.2, 1.1, -0.4]
+    >>> qd, qdd = [0.5] * 6, [1.0] * 6
     >>> Y, _ = hybrid.regressor(robot, q, qd, qdd)
     >>> pi = hybrid.linear_parameters(robot)
     >>> bool(np.allclose(base.regressor(Y) @ base.of(pi), Y @ pi))

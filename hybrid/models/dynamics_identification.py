@@ -277,16 +277,21 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
     >>> heavier = robot.with_model_error(inertial=0.2)
     >>> t = np.arange(0, 20, 1e-3)[:, None]
     >>> w = 2 * np.pi * np.array([0.2, 0.5, 0.9, 1.4, 2.0, 2.7])
-    >>> q, qd, qdd = (np.sin(w * t) + np.sin(0.7 * w * t + 1), w * np.cos(w * t) + 0.7 * w * np.cos(0.7 * w * t + 1),
-    ...               -w**2 * np.sin(w * t) - (0.7 * w) ** 2 * np.sin(0.7 * w * t + 1))
+    >>> slow = 0.7 * w
+    >>> q = np.sin(w * t) + np.sin(slow * t + 1)
+    >>> qd = w * np.cos(w * t) + slow * np.cos(slow * t + 1)
+    >>> qdd = -w**2 * np.sin(w * t) - slow**2 * np.sin(slow * t + 1)
     >>> Y, _ = hybrid.regressor(robot, q, qd, qdd)
     >>> tau = Y @ hybrid.linear_parameters(heavier)
     >>> found = hybrid.identify_dynamics(robot, t[:, 0], q, tau)
     >>> want = found.base.of(hybrid.linear_parameters(heavier))
-    >>> bool(np.abs(found.estimate - want).max() < 1e-3 * np.abs(want).max()), found.cutoff_hz
+    >>> error = np.abs(found.estimate - want).max()
+    >>> bool(error < 1e-3 * np.abs(want).max()), found.cutoff_hz
     (True, 20.0)
-    >>> model = found.robot                      # physically consistent: a controller's or a plant's robot
-    >>> bool(np.abs(found.torque(q, qd, qdd) - tau).max() < 2e-3 * np.abs(tau).max())
+    >>> # physically consistent: a controller's or a plant's robot
+    >>> model = found.robot
+    >>> error = np.abs(found.torque(q, qd, qdd) - tau).max()
+    >>> bool(error < 2e-3 * np.abs(tau).max())
     True
     """
     robot = as_robot(robot)

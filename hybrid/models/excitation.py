@@ -103,7 +103,9 @@ class ExcitationTrajectory:
     >>> import numpy as np
     >>> import hybrid
     >>> robot = hybrid.Robot.planar(hybrid.paper_arm())
-    >>> traj = hybrid.ExcitationTrajectory(robot, 2.0, np.zeros(2), np.array([[0.5], [0.2]]), np.zeros((2, 1)))
+    >>> traj = hybrid.ExcitationTrajectory(
+    ...     robot, 2.0, np.zeros(2), np.array([[0.5], [0.2]]),
+    ...     np.zeros((2, 1)))
     >>> q, qd, qdd = traj.sample([0.0, 0.5])
     >>> q.round(3).tolist()
     [[0.0, 0.0], [0.159, 0.064]]
@@ -321,12 +323,14 @@ def excitation_trajectory(robot: Robot, *, period: float = 10.0, harmonics: int 
     >>> import numpy as np
     >>> import hybrid
     >>> robot = hybrid.Robot.planar(hybrid.paper_arm())
-    >>> traj = hybrid.excitation_trajectory(robot, period=4.0, harmonics=3, samples=24, restarts=1,
-    ...                                     limits={"velocity": 2.0, "acceleration": 5.0})
+    >>> traj = hybrid.excitation_trajectory(
+    ...     robot, period=4.0, harmonics=3, samples=24, restarts=1,
+    ...     limits={"velocity": 2.0, "acceleration": 5.0})
     >>> bool(traj.condition < traj.start_condition)
     True
     >>> q, qd, qdd = traj.sample(np.linspace(0.0, 4.0, 401))
-    >>> bool(np.abs(qd).max() <= 2.0 and np.abs(qdd).max() <= 5.0), np.allclose(q[0], q[-1])
+    >>> within = np.abs(qd).max() <= 2.0 and np.abs(qdd).max() <= 5.0
+    >>> bool(within), np.allclose(q[0], q[-1])
     (True, True)
     """
     robot = as_robot(robot)

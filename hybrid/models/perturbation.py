@@ -80,8 +80,10 @@ def perturbed_robot(robot: Robot, share: float = 0.3, *, seed: int = 0) -> Robot
     >>> import hybrid
     >>> ur5 = hybrid.ur5()
     >>> real = hybrid.perturbed_robot(ur5, 0.3, seed=1)
-    >>> ratio = np.array([a.mass / b.mass for a, b in zip(real.links, ur5.links)])
-    >>> bool(np.all((ratio >= 0.7) & (ratio <= 1.3))), real.chain == ur5.chain
+    >>> ratio = np.array([a.mass / b.mass
+    ...                   for a, b in zip(real.links, ur5.links)])
+    >>> within = np.all((ratio >= 0.7) & (ratio <= 1.3))
+    >>> bool(within), real.chain == ur5.chain
     (True, True)
     """
     robot = as_robot(robot)

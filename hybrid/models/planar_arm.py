@@ -45,7 +45,8 @@ class Arm:
     Examples
     --------
     >>> import hybrid
-    >>> arm = hybrid.Arm(L1=0.45, L2=0.32, m1=0.0, m2=3.5, d1=0.0, d2=0.15, I1=0.25, I2=0.16, V1=1.3, V2=0.2)
+    >>> arm = hybrid.Arm(L1=0.45, L2=0.32, m1=0.0, m2=3.5, d1=0.0,
+    ...                  d2=0.15, I1=0.25, I2=0.16, V1=1.3, V2=0.2)
     >>> arm == hybrid.paper_arm()
     True
     >>> arm.reach()

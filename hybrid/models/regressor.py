@@ -104,12 +104,16 @@ def regressor(robot: Robot, q, qd, qdd) -> tuple[np.ndarray, tuple[str, ...]]:
     >>> import numpy as np
     >>> import hybrid
     >>> robot = hybrid.ur5()
-    >>> q, qd, qdd = [0.0, -1.5, 1.5, 0.0, 1.5, 0.0], [0.1] * 6, [0.2] * 6
+    >>> q = [0.0, -1.5, 1.5, 0.0, 1.5, 0.0]
+    >>> qd, qdd = [0.1] * 6, [0.2] * 6
     >>> Y, names = hybrid.regressor(robot, q, qd, qdd)
-    >>> Y.shape, names[:2], names[-1]
-    ((6, 78), ('m[shoulder_pan_joint]', 'mcx[shoulder_pan_joint]'), 'offset[wrist_3_joint]')
+    >>> Y.shape, names[:2]
+    ((6, 78), ('m[shoulder_pan_joint]', 'mcx[shoulder_pan_joint]'))
+    >>> names[-1]
+    'offset[wrist_3_joint]'
     >>> terms = hybrid.arm_terms(robot, q, qd)
-    >>> bool(np.allclose(Y @ hybrid.linear_parameters(robot), terms["B"] @ qdd + terms["n"]))
+    >>> tau = Y @ hybrid.linear_parameters(robot)
+    >>> bool(np.allclose(tau, terms["B"] @ qdd + terms["n"]))
     True
     """
     robot = as_robot(robot)
@@ -159,7 +163,7 @@ def with_linear_parameters(robot: Robot, pi) -> Robot:
     >>> hybrid.with_linear_parameters(robot, pi)
     Traceback (most recent call last):
     ...
-    hybrid.errors.HybridError: pi gives the link moved by 'shoulder_pan_joint' a mass of -1 kg; give physical ...
+    hybrid.errors.HybridError: pi gives the link moved by ...
     """
     robot = as_robot(robot)
     robot.kind.check_link_change()

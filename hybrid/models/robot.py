@@ -198,7 +198,8 @@ class Robot:
         Examples
         --------
         >>> import hybrid
-        >>> robot = hybrid.Robot.from_urdf(hybrid.UR5_URDF, tip="tool0")
+        >>> robot = hybrid.Robot.from_urdf(hybrid.UR5_URDF,
+        ...                                tip="tool0")
         >>> robot.n
         6
         """
@@ -421,6 +422,30 @@ class Robot:
         """The compiled kernels of this robot's structure (generated and compiled on first use, cached
         by the structure: robots that differ only in their parameters share it)."""
         return units.robot_unit(self.chain, self.name)
+
+    @property
+    def constant_unit(self) -> Unit:
+        """The compiled kernels of this robot with its parameters (:meth:`as_array`) compiled in as numbers:
+        a constant model, for a deployed arm whose parameters do not change.
+
+        Its functions are :attr:`unit`'s without the ``robot`` array (a call given one is refused); they
+        compute fewer operations where the numbers make products trivial (zeros, ones, a joint without
+        Coulomb friction). Generated and compiled on first use, cached by the structure and the exact
+        numbers (a parameter changed by one ulp is another model); its manifest records the numbers
+        (``manifest["model"]``).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import hybrid
+        >>> ur5 = hybrid.ur5()
+        >>> q, qd, qdd = np.full(6, 0.3), np.full(6, -0.2), np.full(6, 0.1)
+        >>> fixed = ur5.constant_unit.function("inverse_dynamics")(q, qd, qdd)["tau"]
+        >>> given = ur5.unit.function("inverse_dynamics")(q, qd, qdd, ur5.as_array())["tau"]
+        >>> bool(np.allclose(fixed, given, rtol=1e-12, atol=0.0))
+        True
+        """
+        return units.constant_robot_unit(self.chain, self.name, self.as_array())
 
 
 def structure_difference(robot: Robot, other: Robot) -> str | None:

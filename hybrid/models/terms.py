@@ -51,7 +51,8 @@ def arm_terms(arm: Arm | Robot, q, qdot, *, backend: str = "sympy") -> dict[str,
     Examples
     --------
     >>> import hybrid
-    >>> terms = hybrid.arm_terms(hybrid.paper_arm(), [0.0, 1.5708], [0.0, 0.0])
+    >>> terms = hybrid.arm_terms(hybrid.paper_arm(), [0.0, 1.5708],
+    ...                          [0.0, 0.0])
     >>> sorted(terms)
     ['B', 'J', 'Jdot_qdot', 'n', 'r']
     >>> terms["r"].round(4).tolist()
@@ -108,10 +109,12 @@ def operational_space(arm: Arm | Robot, q, qdot, *, backend: str = "sympy", sing
     Examples
     --------
     >>> import hybrid
-    >>> B_o, n_o = hybrid.operational_space(hybrid.paper_arm(), [0.0, 1.5708], [0.0, 0.0])
+    >>> B_o, n_o = hybrid.operational_space(hybrid.paper_arm(),
+    ...                                     [0.0, 1.5708], [0.0, 0.0])
     >>> B_o.shape, n_o.shape
     ((2, 2), (2,))
-    >>> model = hybrid.operational_space(hybrid.ur5(), [0.0, -1.5, 1.5, 0.0, 1.5, 0.0], [0.0] * 6)
+    >>> q = [0.0, -1.5, 1.5, 0.0, 1.5, 0.0]
+    >>> model = hybrid.operational_space(hybrid.ur5(), q, [0.0] * 6)
     >>> model.coordinates, model.B_o.shape
     ('twist', (6, 6))
     """
@@ -144,7 +147,8 @@ class OperationalSpace:
     Examples
     --------
     >>> import hybrid
-    >>> model = hybrid.operational_space(hybrid.ur5(), [0.0, -1.5, 1.5, 0.0, 1.5, 0.0], [0.0] * 6,
+    >>> q = [0.0, -1.5, 1.5, 0.0, 1.5, 0.0]
+    >>> model = hybrid.operational_space(hybrid.ur5(), q, [0.0] * 6,
     ...                                  coordinates="euler_zyx")
     >>> type(model).__name__, model.coordinates, model.T.shape
     ('OperationalSpace', 'euler_zyx', (6, 6))

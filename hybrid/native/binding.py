@@ -168,6 +168,8 @@ class Function:
         self._integrator = getattr(module.lib, integrator["symbol"]) if integrator else None
         self._hint = singular_hint
         self._labels = labels or {}
+        # a constant model's kernels have the robot's parameters compiled in: a robot array is refused
+        self._constant = bool(unit is not None and (unit.manifest.get("model") or {}).get("constant"))
         sizes = [size for _, size, _ in self.outputs]
         self._offsets = [sum(sizes[:i]) for i in range(len(sizes))]
         self._total = sum(sizes)
@@ -306,6 +308,10 @@ class Function:
 
     def _inputs(self, args, batched: bool) -> dict[str, np.ndarray]:
         if len(args) != len(self.inputs):
+            if self._constant and len(args) == len(self.inputs) + 1:
+                raise HybridError(f"{self.name} of a constant model has the robot's parameters compiled in: call it "
+                                  f"with {', '.join(n for n, _ in self.inputs) or 'no arrays'} alone, without a "
+                                  "robot array (robot.unit's functions take one)")
             raise HybridError(f"{self.name} takes {len(self.inputs)} arrays "
                               f"({', '.join(n for n, _ in self.inputs)}), got {len(args)}")
         return {n: as_array(self._labels.get(n, n), v, size, batched and n in self.per_state)

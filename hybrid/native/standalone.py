@@ -15,13 +15,15 @@ from hybrid.validate import c_identifier, check_c_name
 
 
 def generate(urdf, tip: str, out, name: str | None = None, locked: dict | None = None,
-             force: bool = False, gravity=(0.0, 0.0, -9.81)) -> list[Path]:
+             force: bool = False, gravity=(0.0, 0.0, -9.81), constant_model: bool = False) -> list[Path]:
     """Write standalone C99 for the arm of ``urdf`` (``<prefix>.c``, ``.h``, ``.json``) into ``out``.
 
     ``name`` (:func:`hybrid.validate.c_name_problem`: ASCII letters, digits, single ``_``, a letter first,
     not a C keyword or a system header's name) prefixes the files and symbols; without it a prefix is
-    derived from the URDF's robot name. Refuses to overwrite files that differ from
-    what it would write unless ``force``.
+    derived from the URDF's robot name. With ``constant_model`` the URDF's parameters are compiled into
+    the kernels, which take no ``robot`` array (``<prefix>_constant_parameters`` writes the numbers; the
+    manifest records them and their SHA-256). Refuses to overwrite files that differ from what it would
+    write unless ``force``.
     """
     if name is not None:
         c_prefix(name, "--name")  # refused before the URDF is read
@@ -30,7 +32,7 @@ def generate(urdf, tip: str, out, name: str | None = None, locked: dict | None =
     robot = Robot(parsed.name, parsed.chain, parsed.links, parsed.damping, gravity, parsed.limits)
     unit = generator.api().build_robot_unit(
         parsed.chain, prefix, units.robot_info(parsed.chain, parsed.name) | {"tip": tip},
-        defaults=robot.as_array())
+        defaults=robot.as_array(), constant=constant_model)
     return write_files(out, unit.files, force)
 
 

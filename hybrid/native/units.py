@@ -1,12 +1,12 @@
 """Every compiled unit the runtime uses, each built once and cached.
 
 The committed units (:func:`planar_unit`, the paper's arm in closed form) are compiled from
-``generated/``. A robot's units (its terms, its law on a surface, its controller step, its plant,
-a closed loop) are generated for its kinematic structure when first asked for, then compiled:
-both steps are cached on disk by a key over what they are built from, the generator's
-fingerprint and the versions of SymPy and CasADi (:mod:`hybrid.native.cache`). The code generator
-is reached through :mod:`hybrid.native.generator`, only when a unit must be generated, so the
-runtime starts without it.
+``generated/``. A robot's units (its terms, with its parameters compiled in or not, its law on a
+surface, its controller step, its plant, a closed loop) are generated for its kinematic structure
+when first asked for, then compiled: both steps are cached on disk by a key over what they are
+built from, the generator's fingerprint and the versions of SymPy and CasADi
+(:mod:`hybrid.native.cache`). The code generator is reached through :mod:`hybrid.native.generator`,
+only when a unit must be generated, so the runtime starts without it.
 """
 
 from __future__ import annotations
@@ -21,6 +21,7 @@ from hybrid.errors import HybridError, NativeBuildError
 from hybrid.native import generator, loader
 from hybrid.native.binding import Unit
 from hybrid.native.cache import generated_unit
+from hybrid.spec import chain as rb
 from hybrid.spec import stamp
 from hybrid.spec.interfaces import PRINTERS
 from hybrid.validate import c_identifier, shown
@@ -112,6 +113,27 @@ def robot_unit(chain, name: str) -> Unit:
     prefix = c_identifier(f"hybrid_{name}")
     return compiled(prefix, {"chain": chain_key(chain)},
                     lambda: generator.api().build_robot_unit(chain, prefix, robot_info(chain, name)))
+
+
+def constant_key(chain, values) -> dict:
+    """What a constant model of ``chain`` with the ``robot`` array ``values`` is cached by: the structure
+    and the numbers exactly (:func:`hybrid.spec.chain.exact_values`: one ulp apart are two models)."""
+    return {"chain": chain_key(chain), "constant": list(rb.exact_values(values))}
+
+
+def constant_robot_unit(chain, name: str, values) -> Unit:
+    """The rigid-body kernels of ``chain`` with the ``robot`` array ``values`` compiled in (a constant
+    model: the kernels take no ``robot`` array), compiled; cached by :func:`constant_key`."""
+    return _constant_robot_unit(chain, name, rb.exact_values(values))
+
+
+@cache
+def _constant_robot_unit(chain, name: str, exact: tuple[str, ...]) -> Unit:
+    prefix = c_identifier(f"hybrid_{name}_constant")
+    values = [float.fromhex(v) for v in exact]
+    return compiled(prefix, constant_key(chain, values),
+                    lambda: generator.api().build_robot_unit(chain, prefix, robot_info(chain, name), values,
+                                                             constant=True))
 
 
 @cache

@@ -51,21 +51,72 @@ def _finite_series(name: str, arr: np.ndarray) -> np.ndarray:
 
 def metrics(t, force_normal, velocity_tangential, force_reference, speed_reference, *, force_step=None,
             speed_step=None, penetration=None, contact_force=None, tau=None) -> dict:
-    """conventions §8 metrics of one run from its time series (one value per sample of ``t`` [s]).
+    """The metrics of one run (conventions §8) from its time series, named with their units.
+
+    Any run's series will do: a simulation's (a :class:`~hybrid.SimulationResult`'s ``metrics`` are
+    these), a real arm's log, or series of your own. Every series has one value per sample of ``t``.
 
     Parameters
     ----------
-    force_normal, velocity_tangential : the measured normal force [N] and tangential speed [m/s].
-    force_reference, speed_reference : their references at the same instants.
-    force_step, speed_step : the references' :class:`Step` (default: read from the series' first jump).
-    penetration : the sensor tip's penetration [m]; contact_force : the surface's normal force [N]
-        (contact losses are its drops to 0); tau : joint torques, one row per sample [N m or N].
+    t : array_like
+        The sample times [s]: at least two, increasing, finite.
+    force_normal : array_like
+        The measured normal force ``(R(r) F_c)_n`` [N] (positive: pressing on the surface).
+    velocity_tangential : array_like
+        The arm tip's speed along the task axis ``t1``, ``(R(r) r')_t`` [m/s].
+    force_reference : array_like
+        The force reference ``F_d(t)`` [N] at the same instants.
+    speed_reference : array_like
+        The speed reference ``v_d(t)`` [m/s] at the same instants.
+    force_step, speed_step : Step, optional
+        The references' :class:`~hybrid.Step`, which set the windows of the step metrics. None (the
+        default): read from the series' first jump (a series that never jumps: a constant, with no
+        step).
+    penetration : array_like, optional
+        The sensor tip's penetration into the surface ``delta`` [m]; without it ``max_penetration_m``
+        is NaN.
+    contact_force : array_like, optional
+        The surface's normal force ``N`` on the sensor tip [N] (not the measured force): in contact
+        where ``N > 0``, a contact loss where it drops to 0. Without it the contact losses, the time out
+        of contact and the first touch are NaN.
+    tau : array_like, optional
+        The joint torques [N m, or N on a prismatic joint], one row per sample; without it there are
+        no peak torques.
 
-    Returns every metric, always: one after a step that falls outside the run, or whose series was
-    not given, is NaN. Force overshoot and 2 % settling after the force step, speed drop after it,
-    force deviation and speed overshoot after the speed step, steady-state errors (last 0.2 s), RMS
-    errors, penetration, contact losses and time out of contact, the first touch (its time, the force's
-    overshoot after it and its 2 % settling; :func:`first_touch`), peak torque per joint.
+    Returns
+    -------
+    dict
+        Every metric, by name (its unit in its name: ``_N``, ``_s``, ``_m_per_s``, ...), always: one after a
+        step that falls outside the run, or whose series was not given, is NaN. In order: force overshoot
+        and 2 % settling after the force step, speed drop after it, force deviation and speed overshoot
+        after the speed step, steady-state errors (the mean of ``F_d - F`` and ``v_d - v`` over the last
+        0.2 s), RMS errors, the largest penetration, contact losses and time out of contact, the first
+        touch (its time, the force's overshoot after it and its 5 % settling; :func:`first_touch`), and
+        with ``tau`` the peak torque of each joint (``peak_torque_joint1_Nm``, ...).
+
+    Raises
+    ------
+    HybridError
+        Times that are not at least two increasing finite values, a series of another length than
+        ``t`` or holding NaN or infinite values, or a step that is not a :class:`~hybrid.Step`.
+
+    Examples
+    --------
+    A force that follows its step from 10 N to 20 N at 0.4 s with a lag of 50 ms, at a speed that
+    settles on its constant reference:
+
+    >>> import numpy as np
+    >>> import hybrid
+    >>> t = np.linspace(0.0, 1.0, 101)
+    >>> F_d = np.where(t < 0.4, 10.0, 20.0)
+    >>> F = np.where(t < 0.4, 10.0, 20.0 - 10.0 * np.exp(-(t - 0.4) / 0.05))
+    >>> v_d = np.full_like(t, 0.3)
+    >>> v = 0.3 - 0.01 * np.exp(-t / 0.1)
+    >>> m = hybrid.metrics(t, F, v, F_d, v_d)
+    >>> round(m["force_settling_time_2pct_s"], 3), round(m["rms_force_error_N"], 3)
+    (0.17, 1.733)
+    >>> m["speed_overshoot_after_speed_step_m_per_s"]  # the speed has no step
+    nan
     """
     try:
         t = np.asarray(t, dtype=float)

@@ -20,10 +20,62 @@ from hybrid.stability.analysis import stability
 
 @dataclass
 class SimulationResult:
-    """Time series of one run (one row per integration step, ``t`` from 0) and its metrics.
+    """Time series of one run and its metrics: what :func:`~hybrid.simulate` returns.
 
-    Units: ``t`` [s], ``q`` [rad], ``qdot`` [rad/s], ``tau`` [N m] (held per sample), forces [N],
-    speeds [m/s], lengths [m]. Task quantities are in the frame ``R(r)`` at the arm tip.
+    One row per integration step (``integration_step`` apart, ``t`` from 0 to the experiment's
+    ``duration``); the torque is held over each control sample. Units: ``t`` [s], ``q`` [rad] (m on
+    a prismatic joint), ``qdot`` [rad/s], ``tau`` [N m] (N), forces [N], speeds [m/s], lengths [m].
+    Points, forces and normals are in base axes; task quantities (``v_t``, ``Fc_n``, ...) in the task
+    frame ``R(r)`` at the arm tip. The plant's columns are named in ``record``; the properties below
+    read the usual ones by name.
+
+    Parameters
+    ----------
+    experiment : Experiment
+        The run's settings.
+    t : numpy.ndarray
+        The times [s], one per row.
+    state : numpy.ndarray
+        The plant's state, one row per time, its columns ``record["state"]``: the joint positions
+        ``q``, the joint velocities ``q'``, then the sensor tip's position ``s`` [m] and velocity
+        ``s'`` [m/s] (base axes).
+    tau : numpy.ndarray
+        The joint torques [N m, or N on a prismatic joint], one row per time.
+    outputs : numpy.ndarray
+        What the plant records besides its state, one row per time, its columns ``record["outputs"]``
+        (the arm tip ``r``, its task velocities, the measured force ``F_c`` in base and task axes, the
+        sensor tip, the penetration, the contact's normal force ``N``, ...): read one by name with
+        :meth:`output`.
+    force_reference : numpy.ndarray
+        The force reference ``F_d(t)`` [N] at each time.
+    speed_reference : numpy.ndarray
+        The speed reference ``v_d(t)`` [m/s] along ``t1`` at each time.
+    metrics : dict
+        The run's metrics by name (conventions §8: :func:`~hybrid.metrics`, with the experiment's
+        reference steps); empty by default.
+    record : dict
+        The plant's record: the names and units of the state's and the outputs' columns (``state``,
+        ``state_units``, ``outputs``, ``output_units``) and the number of joints ``nq``; default the
+        planar arm's plant's.
+    normal_estimate : numpy.ndarray, optional
+        The controller's estimate of the surface's unit normal (an :class:`~hybrid.EstimatedSurface`),
+        one row of 3 per control sample, base axes, after the sample; None (the default) when the
+        controller is told the surface.
+
+    Examples
+    --------
+    A 50 ms run of the paper's experiment, pressing with 10 N from the start:
+
+    >>> import hybrid
+    >>> result = hybrid.simulate(hybrid.paper_experiment(duration=0.05))
+    >>> result.t.shape, result.q.shape  # 0.05 s in steps of 0.1 ms; two joints
+    ((501,), (501, 2))
+    >>> round(float(result.force_normal[-1]), 1), float(result.force_reference[-1])  # [N]
+    (9.9, 10.0)
+    >>> result.record["outputs"][:4]
+    ('r_x', 'r_y', 'v_t', 'v_n')
+    >>> result.metrics["contact_losses"]
+    0
     """
 
     experiment: Experiment
@@ -80,20 +132,41 @@ class SimulationResult:
 
     @property
     def UNITS(self) -> dict:  # noqa: N802 (a table, as before)
+        """The units of each array, by its name (``"t"``, ``"state"``, ``"tau"``, ...): a column's, or its
+        columns' in order, as text; what :meth:`save` writes beside the arrays."""
         rec = self.record
         return {"t": "s", "state": ", ".join(rec["state_units"]), "tau": "N m",
                 "force_reference": "N", "speed_reference": "m/s", "outputs": ", ".join(rec["output_units"])}
 
     @property
     def q(self):
+        """The joint positions ``q`` [rad, or m on a prismatic joint], one row per time."""
         return self.state[:, 0:self.record["nq"]]
 
     @property
     def qdot(self):
+        """The joint velocities ``q'`` [rad/s, or m/s on a prismatic joint], one row per time."""
         return self.state[:, self.record["nq"]:2 * self.record["nq"]]
 
     def output(self, name: str) -> np.ndarray:
-        """A column of the plant output record by name (``result.record["outputs"]``)."""
+        """A column of the plant's outputs, by name.
+
+        Parameters
+        ----------
+        name : str
+            One of ``result.record["outputs"]`` (its unit the same place in ``record["output_units"]``):
+            e.g. ``"r_x"`` (the arm tip's x [m]), ``"v_t"``, ``"Fc_n"``, ``"penetration"``, ``"N"``.
+
+        Returns
+        -------
+        numpy.ndarray
+            The column, one value per time.
+
+        Raises
+        ------
+        HybridError
+            A name the plant does not record (the message lists those it does).
+        """
         try:
             return self.outputs[:, self.record["outputs"].index(name)]
         except ValueError:
@@ -102,54 +175,156 @@ class SimulationResult:
 
     @property
     def force_normal(self):
-        """Normal force measured by the sensor, ``(R(r) F_c)_n`` [N]."""
+        """The normal force measured by the sensor, ``(R(r) F_c)_n`` [N] (positive: pressing), per time."""
         return self.output("Fc_n")
 
     @property
     def force_tangential(self):
+        """The measured force along the task axis ``t1``, ``(R(r) F_c)_t`` [N], where the friction
+        shows, per time."""
         return self.output("Fc_t")
 
     @property
     def velocity_tangential(self):
-        """Tangential speed of the arm tip, ``(R(r) r')_t`` [m/s]."""
+        """The arm tip's speed along the task axis ``t1``, ``(R(r) r')_t`` [m/s], per time."""
         return self.output("v_t")
 
     @property
     def velocity_normal(self):
+        """The arm tip's velocity along the normal ``n`` (away from the surface), ``(R(r) r')_n``
+        [m/s], per time."""
         return self.output("v_n")
 
     @property
     def penetration(self):
+        """The sensor tip's penetration into the surface, ``delta`` [m] (positive in contact, where the
+        contact's penalty acts on it), per time."""
         return self.output("penetration")
 
     @property
     def contact_force(self):
+        """The surface's normal force on the sensor tip, ``N = max(0, k_e delta + d_e delta')`` while it
+        penetrates, else 0 [N] (positive: in contact), per time."""
         return self.output("N")
 
     def plot(self, title: str | None = None):
-        """The run as a matplotlib Figure: tangential speed [m/s] and normal force [N] against their
+        """The run as a matplotlib figure: tangential speed [m/s] and normal force [N] against their
         references over time [s]; for a 3-D run also the sensor tip's deviation from the desired path
-        across it [mm] and its penetration [mm] (:func:`hybrid.plots.plot_result`). Save it with
-        ``fig.savefig("run.pdf")``; nothing is shown or written."""
+        across it [mm] and its penetration [mm] (:func:`hybrid.plots.plot_result`).
+
+        Parameters
+        ----------
+        title : str, optional
+            The figure's title; default the scheme's name and "one run".
+
+        Returns
+        -------
+        matplotlib.figure.Figure
+            The figure: nothing is shown or written (save it with ``fig.savefig("run.pdf")``).
+        """
         from hybrid.plots import plot_result
 
         return plot_result(self, title)
 
     def animate(self, every: int | None = None, out: str | Path | None = None, *, fps: float | None = None,
                 overwrite: bool = False, force_scale: float | None = None, title: str | None = None):
-        """The arm doing the task, as a matplotlib ``FuncAnimation``: at every ``every``-th control
-        sample, the links through the joint origins, the surface, the sensor tip's path so far, the
-        recorded contact force as an arrow [``force_scale`` m/N] and the task frame's axes at the tip
-        (:func:`hybrid.animation.animate`). With ``out`` (a ``.gif``; an ``.mp4`` needs ffmpeg) it is
-        also written there, atomically; an existing file is refused unless ``overwrite``."""
+        """The arm doing the task, as a matplotlib animation (:func:`hybrid.animation.animate`).
+
+        Each picture shows, at a control sample, the links through the joint origins, the surface, the
+        sensor tip's path so far, the recorded contact force as an arrow and the task frame's axes at
+        the tip.
+
+        Parameters
+        ----------
+        every : int, optional
+            A picture every this many control samples, and one at the run's end; default about 60
+            pictures in all.
+        out : str or pathlib.Path, optional
+            Also write the animation there, atomically: a ``.gif`` (an ``.mp4`` needs ffmpeg). None
+            (the default): nothing is written.
+        fps : float, optional
+            Pictures per second; default real time, within 1 to 30.
+        overwrite : bool
+            Whether an existing ``out`` is replaced (default False: refused).
+        force_scale : float, optional
+            The force arrow's length per newton [m/N]; default the run's largest recorded contact
+            force drawn 0.1 m long.
+        title : str, optional
+            The figure's title.
+
+        Returns
+        -------
+        matplotlib.animation.FuncAnimation
+            The animation (its figure stays open: in a notebook, show it with
+            ``IPython.display.HTML(anim.to_jshtml())``).
+
+        Raises
+        ------
+        HybridError
+            An ``every``, ``fps`` or ``force_scale`` that is not positive, an ``out`` that is not a
+            ``.gif`` or ``.mp4`` name (or an ``.mp4`` without ffmpeg), or an existing ``out`` without
+            ``overwrite``.
+        """
         from hybrid.animation import animate
 
         return animate(self, every, out, fps=fps, overwrite=overwrite, force_scale=force_scale, title=title)
 
+    def view(self, every: int | None = None, *, force_scale: float | None = None, fps: float | None = None,
+             title: str | None = None, out: str | Path | None = None, overwrite: bool = False):
+        """The arm doing the task as an interactive 3-D figure for the browser (:func:`hybrid.view`).
+
+        The pictures :meth:`animate` draws, with a play button and a slider. Needs plotly (``pip install
+        'hybrid-decoupling[view]'``).
+
+        Parameters
+        ----------
+        every : int, optional
+            A frame every this many control samples, and one at the run's end; default about 60 frames.
+        force_scale : float, optional
+            The force arrow's length per newton [m/N]; default the run's largest recorded contact force
+            drawn 0.1 m long.
+        fps : float, optional
+            Frames per second when played; default real time, within 1 to 30.
+        title : str, optional
+            The figure's title.
+        out : str or pathlib.Path, optional
+            Also write the figure there, atomically, as one ``.html`` file that opens offline (plotly.js
+            inside).
+        overwrite : bool
+            Whether an existing ``out`` is replaced (default False: refused).
+
+        Returns
+        -------
+        plotly.graph_objects.Figure
+            The figure, one animation frame per chosen sample.
+        """
+        from hybrid.view3d import view
+
+        return view(self, every, force_scale=force_scale, fps=fps, title=title, out=out, overwrite=overwrite)
+
     def save(self, path: str | Path, overwrite: bool = False) -> Path:
-        """Write an ``.npz`` with every array, the units and the experiment's settings; returns the
-        path written (``.npz`` is added when missing). Atomic; refuses an existing file unless
-        ``overwrite``."""
+        """Write the run to an ``.npz`` file: every array, the units, the plant's record, the metrics and
+        the experiment's settings (:meth:`Experiment.to_dict`); :meth:`load` reads it back.
+
+        The file is written atomically: whole, or not at all.
+
+        Parameters
+        ----------
+        path : str or pathlib.Path
+            The file name; ``.npz`` is added when it does not end so.
+        overwrite : bool
+            Whether an existing file is replaced (default False: refused).
+
+        Returns
+        -------
+        pathlib.Path
+            The path written.
+
+        Raises
+        ------
+        HybridError
+            An existing file without ``overwrite``, a folder, or a place that cannot be written.
+        """
         path = files.output_path(path)
         if path.suffix != ".npz":
             path = path.with_name(path.name + ".npz")
@@ -168,7 +343,23 @@ class SimulationResult:
 
     @classmethod
     def load(cls, path: str | Path) -> SimulationResult:
-        """A result written by :meth:`save`; a missing, truncated or foreign file is a HybridError."""
+        """The result :meth:`save` wrote.
+
+        Parameters
+        ----------
+        path : str or pathlib.Path
+            The ``.npz`` file.
+
+        Returns
+        -------
+        SimulationResult
+            The run, its experiment rebuilt from its settings (:meth:`Experiment.from_dict`).
+
+        Raises
+        ------
+        HybridError
+            A missing, truncated or foreign file, or one whose arrays do not have the shapes of a run.
+        """
         try:
             files.regular_file(path, "saved result")  # before np.load opens it: a FIFO would block it
         except HybridError as exc:
@@ -200,8 +391,29 @@ class SimulationResult:
                               "save it again with SimulationResult.save") from None
 
     def save_csv(self, path: str | Path, overwrite: bool = False) -> Path:
-        """Write the time series as CSV, units in the header (atomic; refuses an existing file
-        unless ``overwrite``)."""
+        """Write the time series as CSV, one row per time, each column's unit in its name.
+
+        The columns: ``t_s``, the joint positions (``q1_rad``, ...), the torques (``tau1_Nm``, ...), the
+        references (``force_reference_N``, ``speed_reference_m_per_s``), then every output of the
+        plant (``v_t_m_per_s``, ``Fc_n_N``, ...). Written atomically: whole, or not at all.
+
+        Parameters
+        ----------
+        path : str or pathlib.Path
+            The file name (written as given).
+        overwrite : bool
+            Whether an existing file is replaced (default False: refused).
+
+        Returns
+        -------
+        pathlib.Path
+            The path written.
+
+        Raises
+        ------
+        HybridError
+            An existing file without ``overwrite``, a folder, or a place that cannot be written.
+        """
         path = files.output_path(path)
         joint_units = self.record["state_units"][:self.record["nq"]]
         cols = {"t_s": self.t, **{f"q{j + 1}_{u}": self.q[:, j] for j, u in enumerate(joint_units)},

@@ -40,9 +40,12 @@ class SimulationError(HybridError):
     Examples
     --------
     >>> import hybrid
-    >>> error = hybrid.SimulationError("the arm reached a singular pose at t = 0.5 s", time=0.5)
-    >>> error.time, error.partial is None, isinstance(error, hybrid.HybridError)
-    (0.5, True, True)
+    >>> error = hybrid.SimulationError(
+    ...     "the arm reached a singular pose at t = 0.5 s", time=0.5)
+    >>> error.time, error.partial is None
+    (0.5, True)
+    >>> isinstance(error, hybrid.HybridError)
+    True
     """
 
     def __init__(self, message: str, time: float | None = None, partial: SimulationResult | None = None):
@@ -92,7 +95,8 @@ def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> Simulat
     Examples
     --------
     >>> import hybrid
-    >>> result = hybrid.simulate(hybrid.paper_experiment(duration=0.05))
+    >>> exp = hybrid.paper_experiment(duration=0.05)
+    >>> result = hybrid.simulate(exp)
     >>> float(result.t[-1])
     0.05
     >>> result.metrics["contact_losses"]

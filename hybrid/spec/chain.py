@@ -2,11 +2,13 @@
 
 A :class:`Chain` is what the code generator compiles into a robot's C (joint origins, axes,
 types); the inertial parameters, joint friction and gravity stay run-time numbers, named here in
-the order of the generated code's ``robot`` array.
+the order of the generated code's ``robot`` array (a constant model compiles them in as well:
+:func:`parameter_digest` names the numbers it holds).
 """
 
 from __future__ import annotations
 
+import hashlib
 import math
 from dataclasses import dataclass
 
@@ -111,3 +113,15 @@ def rotation_rpy(roll: float, pitch: float, yaw: float) -> tuple[tuple[float, fl
     return ((cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr),
             (sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr),
             (-sp, cp * sr, cp * cr))
+
+
+def exact_values(values) -> tuple[str, ...]:
+    """A ``robot`` array's numbers as exact text (:meth:`float.hex`), for a key telling any two arrays
+    apart: numbers one ulp apart differ, and so do ``0.0`` and ``-0.0``, which compare equal."""
+    return tuple(float(v).hex() for v in values)
+
+
+def parameter_digest(values) -> str:
+    """The SHA-256 of a ``robot`` array's :func:`exact_values`: what a constant model's manifest records of
+    the numbers compiled into it, and what a caller compares with its own array's."""
+    return hashlib.sha256(",".join(exact_values(values)).encode()).hexdigest()

@@ -85,7 +85,10 @@ class Stability:
     A stiffer sensor on the paper's experiment (10 ms samples):
 
     >>> import hybrid
-    >>> stiff = hybrid.stability(hybrid.paper_experiment(sensor=hybrid.Sensor(stiffness=2e4), allow_unstable=True))
+    >>> sensor = hybrid.Sensor(stiffness=2e4)
+    >>> exp = hybrid.paper_experiment(sensor=sensor,
+    ...                               allow_unstable=True)
+    >>> stiff = hybrid.stability(exp)
     >>> stiff.stable, round(stiff.spectral_radius, 2)
     (False, 1.24)
     >>> sorted(stiff.table().columns)[:3]

@@ -44,7 +44,9 @@ class GainSuggestion:
     Examples
     --------
     >>> import hybrid
-    >>> s = hybrid.suggest_gains(hybrid.paper_experiment(), bandwidth_hz=3.0, damping=1.0, integral_ratio=0.0)
+    >>> s = hybrid.suggest_gains(hybrid.paper_experiment(),
+    ...                          bandwidth_hz=3.0, damping=1.0,
+    ...                          integral_ratio=0.0)
     >>> s.gains.KIf, len(s.poles["force"])
     (0.0, 2)
     """
@@ -86,7 +88,8 @@ def suggest_gains(exp, bandwidth_hz, damping: float = 0.7, integral_ratio: float
     Examples
     --------
     >>> import hybrid
-    >>> s = hybrid.suggest_gains(hybrid.paper_experiment(), bandwidth_hz=5.0, damping=0.8)
+    >>> s = hybrid.suggest_gains(hybrid.paper_experiment(),
+    ...                          bandwidth_hz=5.0, damping=0.8)
     >>> round(s.gains.KPf, 3), s.stability.stable
     (0.937, True)
     """

@@ -51,7 +51,8 @@ class StabilityMap:
     Examples
     --------
     >>> import hybrid
-    >>> m = hybrid.stability_map(hybrid.paper_experiment(), {"sensor.delay_samples": [0, 2, 8]})
+    >>> m = hybrid.stability_map(hybrid.paper_experiment(),
+    ...                          {"sensor.delay_samples": [0, 2, 8]})
     >>> m.settings, m.stable_share
     (('sensor.delay_samples',), 0.6666666666666666)
     """
@@ -110,8 +111,9 @@ def stability_map(exp, over: Mapping) -> StabilityMap:
     Examples
     --------
     >>> import hybrid
-    >>> m = hybrid.stability_map(hybrid.paper_experiment(), {"sensor.stiffness": [1e3, 1e4, 1e5],
-    ...                                                      "sample_time": [0.001, 0.01]})
+    >>> m = hybrid.stability_map(hybrid.paper_experiment(), {
+    ...     "sensor.stiffness": [1e3, 1e4, 1e5],
+    ...     "sample_time": [0.001, 0.01]})
     >>> m.table["stable"].tolist()
     [True, True, True, True, True, False]
     """

@@ -92,8 +92,10 @@ class Tuning:
     Examples
     --------
     >>> import hybrid
-    >>> result = hybrid.tune(hybrid.paper_experiment(duration=0.6), "rms_force_error_N", [{}], gains=("KPf", "KDf"),
-    ...                      budget=6, min_gain_margin_db=3.0, workers=1)
+    >>> exp = hybrid.paper_experiment(duration=0.6)
+    >>> result = hybrid.tune(exp, "rms_force_error_N", [{}],
+    ...                      gains=("KPf", "KDf"), budget=6,
+    ...                      min_gain_margin_db=3.0, workers=1)
     >>> list(result.history.columns[:4]), result.evaluations
     (['evaluation', 'generation', 'KPf', 'KDf'], 6)
     >>> sorted(result.to_dict()["training"])
@@ -272,10 +274,13 @@ def tune(exp, objective, scenarios=None, *, distributions=None, samples: int = 1
     Examples
     --------
     >>> import hybrid
-    >>> result = hybrid.tune(hybrid.paper_experiment(duration=0.6), "rms_force_error_N",
-    ...                      [{"model_error": 0.0}, {"model_error": 0.3}], gains=("KPf", "KDf"), budget=12,
+    >>> exp = hybrid.paper_experiment(duration=0.6)
+    >>> scenarios = [{"model_error": 0.0}, {"model_error": 0.3}]
+    >>> result = hybrid.tune(exp, "rms_force_error_N", scenarios,
+    ...                      gains=("KPf", "KDf"), budget=12,
     ...                      min_gain_margin_db=3.0, workers=1)
-    >>> result.margins_kept, bool(result.training < result.training_before)
+    >>> better = result.training < result.training_before
+    >>> result.margins_kept, bool(better)
     (True, True)
     """
     t0 = time.perf_counter()

@@ -121,7 +121,8 @@ def sweep(base, parameters: Mapping, *, samples: int | None = None, seed: int = 
     Examples
     --------
     >>> import hybrid
-    >>> rows = hybrid.sweep(hybrid.paper_experiment(duration=0.05), {"KPf": [1.0, 2.0]}, workers=1)
+    >>> exp = hybrid.paper_experiment(duration=0.05)
+    >>> rows = hybrid.sweep(exp, {"KPf": [1.0, 2.0]}, workers=1)
     >>> rows["KPf"].tolist(), rows["status"].tolist()
     ([1.0, 2.0], ['ok', 'ok'])
     """
