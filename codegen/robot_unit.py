@@ -80,11 +80,15 @@ def inertia_kernel(chain: rb.Chain) -> Kernel:
                   (Arg("B", rb.row_major(B), "kg m^2", (chain.n, chain.n)),), "inertia B(q) (CRBA), row-major")
 
 
-def build_inertia_unit(chain: rb.Chain, prefix: str, info: dict) -> Unit:
-    """C source, header and manifest of ``chain``'s :func:`inertia_kernel` alone."""
-    return assemble(prefix, "casadi", (inertia_kernel(chain),),
-                    f"joint-space inertia of the {chain.n}-joint serial arm '{info.get('robot', prefix)}'",
-                    info={"robot": info}, tool=f"CasADi {ca.__version__}", defines={"NQ": chain.n})
+def build_inertia_unit(chain: rb.Chain, prefix: str, info: dict, values=None) -> Unit:
+    """C source, header and manifest of ``chain``'s :func:`inertia_kernel` alone; with ``values`` (a
+    robot's array), compiled into it (:mod:`.constant_model`: the kernel then takes no ``robot`` array)."""
+    kernels, model = constant_kernels((inertia_kernel(chain),), values) if values is not None else (
+        (inertia_kernel(chain),), {})
+    return assemble(prefix, "casadi", kernels,
+                    f"joint-space inertia of the {chain.n}-joint serial arm '{info.get('robot', prefix)}'"
+                    + (", its parameters compiled in" if values is not None else ""),
+                    info={"robot": info, **model}, tool=f"CasADi {ca.__version__}", defines={"NQ": chain.n})
 
 
 def build_robot_unit(chain: rb.Chain, prefix: str, info: dict, defaults=None, constant: bool = False) -> Unit:

@@ -24,7 +24,7 @@ def test_our_dynamics_give_the_numbers_of_pinocchios_generated_code(arm):
     robot = hybrid.Robot.from_urdf(urdf, tip=arm[1])
     race = pinocchio_codegen.race(robot, urdf, arm[1])
     worst = dynamics.differences(race, dynamics.random_states(robot.n, 50, seed=7))
-    assert set(worst) == set(pinocchio_codegen.FUNCTIONS)
+    assert set(worst) == {(f, side) for f in pinocchio_codegen.FUNCTIONS for side in ("ours", "constant")}
     assert max(worst.values()) <= 1e-12, worst
 
 
@@ -56,22 +56,23 @@ def test_differences_compare_the_upper_triangle_and_each_part_on_its_own_scale()
     n = 2
     B = np.array([[2.0, 0.5], [0.5, 1.0]])
     terms = np.concatenate([np.full(3, 1e-3), np.ones(9 + 6 * n + 6 + n * n + n)])
-    outputs = {"rnea": (np.ones((1, n)), np.ones((1, n))), "aba": (np.ones((1, n)), np.ones((1, n))),
+    ones = np.ones((1, n))
+    outputs = {"rnea": (ones, ones, ones), "aba": (ones, ones, ones),
                # our whole inertia against Pinocchio's upper triangle, row by row
-               "crba": (B.reshape(1, -1), np.array([[2.0, 0.5, 1.0]])),
-               "terms": (terms[None, :], terms[None, :])}
+               "crba": (B.reshape(1, -1), B.reshape(1, -1), np.array([[2.0, 0.5, 1.0]])),
+               "terms": (terms[None, :], terms[None, :], terms[None, :])}
     assert max(dynamics.differences(_Given(n, outputs), None).values()) == 0.0
     # a lower triangle that is not the upper's is not compared: Pinocchio's CRBA gives the upper
     lower = B.copy()
     lower[1, 0] = 9.0
-    assert dynamics.differences(_Given(n, {**outputs, "crba": (lower.reshape(1, -1), outputs["crba"][1])}),
-                                None)["crba"] == 0.0
-    # the tip position's millimetres are compared with the position's scale, not the inertia's
+    crba = (lower.reshape(1, -1), B.reshape(1, -1), outputs["crba"][2])
+    assert dynamics.differences(_Given(n, {**outputs, "crba": crba}), None)["crba", "ours"] == 0.0
+    # the tip position's millimetres are compared with the position's scale, not the inertia's; each side alone
     shifted = terms.copy()
     shifted[0] += 1e-9
-    got = dynamics.differences(_Given(n, {**outputs, "terms": (shifted[None, :], terms[None, :])}), None)
-    assert got["terms"] == pytest.approx(1e-6)
-
+    got = dynamics.differences(_Given(n, {**outputs, "terms": (terms[None, :], shifted[None, :], terms[None, :])}),
+                               None)
+    assert got["terms", "constant"] == pytest.approx(1e-6) and got["terms", "ours"] == 0.0
 
 
 def test_without_a_package_the_comparison_is_skipped_in_one_line(tmp_path, monkeypatch, capsys):

@@ -1,9 +1,12 @@
 """Our generated dynamics against Pinocchio's own code generation (CppADCodeGen) for a URDF arm: RNEA,
 forward dynamics (ours: CRBA, RNEA and an ``L D L^T`` solve; Pinocchio's: ABA), CRBA and the terms.
+Ours twice: with the robot array given at run time (the robot unit), and with it compiled in (the
+constant model), as Pinocchio's code has it.
 
-Both sides are built and run by :mod:`hybrid.bench.pinocchio_codegen`: first they must give the same
+The sides are built and run by :mod:`hybrid.bench.pinocchio_codegen`: first they must give the same
 numbers on random states (to :data:`AGREEMENT`, relative), then each is timed in C, in one program, the
-sides alternating, and its instructions per call are counted (callgrind, where valgrind is installed)."""
+sides one after the other, and its instructions per call are counted (callgrind, where valgrind is
+installed; an x86-64-v3 build of the same C, as valgrind runs no AVX-512)."""
 
 from __future__ import annotations
 
@@ -31,21 +34,23 @@ def blocks(function: str, n: int) -> tuple[int, ...]:
     return {"rnea": (n,), "aba": (n,), "crba": (n * (n + 1) // 2,)}[function]
 
 
-def differences(race: pinocchio_codegen.Race, states: np.ndarray) -> dict[str, float]:
-    """The largest relative difference between our outputs and Pinocchio's on ``states`` (rows ``(q, v,
-    w)``), by function: each part's largest difference over its largest number of Pinocchio's, the worst
-    over the parts and states (our inertia compared on its upper triangle, Pinocchio's CRBA's output)."""
+def differences(race: pinocchio_codegen.Race, states: np.ndarray) -> dict[tuple[str, str], float]:
+    """The largest relative difference between each of our sides' outputs and Pinocchio's on ``states``
+    (rows ``(q, v, w)``), by function and side (``ours``, ``constant``): each part's largest difference
+    over its largest number of Pinocchio's, the worst over the parts and states (our inertia compared on
+    its upper triangle, Pinocchio's CRBA's output)."""
     upper = np.triu_indices(race.n)
     worst = {}
-    for function, (ours, theirs) in race.evaluate(states).items():
-        if function == "crba":
-            ours = ours.reshape(-1, race.n, race.n)[:, upper[0], upper[1]]
-        at, worst[function] = 0, 0.0
-        for size in blocks(function, race.n):
-            a, b = ours[:, at:at + size], theirs[:, at:at + size]
-            scale = np.maximum(np.abs(b).max(axis=1), np.finfo(float).tiny)
-            worst[function] = max(worst[function], float((np.abs(a - b).max(axis=1) / scale).max()))
-            at += size
+    for function, (*ours, theirs) in race.evaluate(states).items():
+        for side, mine in zip(pinocchio_codegen.SIDES, ours):
+            if function == "crba":
+                mine = mine.reshape(-1, race.n, race.n)[:, upper[0], upper[1]]
+            at, worst[function, side] = 0, 0.0
+            for size in blocks(function, race.n):
+                a, b = mine[:, at:at + size], theirs[:, at:at + size]
+                scale = np.maximum(np.abs(b).max(axis=1), np.finfo(float).tiny)
+                worst[function, side] = max(worst[function, side], float((np.abs(a - b).max(axis=1) / scale).max()))
+                at += size
     return worst
 
 
@@ -58,8 +63,8 @@ def random_states(n: int, count: int, seed: int = 0) -> np.ndarray:
 
 
 def dynamics_benchmarks(name: str, urdf_name: str, tip: str, rep: int, quick: bool, add) -> None:
-    """Each function of the shipped arm ``urdf_name`` on both sides: the same numbers (or a HybridError),
-    then the median time of a call of each side, the ratio, and the instructions a call."""
+    """Each function of the shipped arm ``urdf_name`` on every side: the same numbers (or a HybridError),
+    then the median time of a call of each side, the ratios, and the instructions a call."""
     urdf = shipped_urdf(urdf_name)
     why = "pip install example-robot-data" if urdf is None else pinocchio_codegen.missing()
     if why:
@@ -70,17 +75,22 @@ def dynamics_benchmarks(name: str, urdf_name: str, tip: str, rep: int, quick: bo
     worst = differences(race, random_states(robot.n, 20 if quick else 200))
     if max(worst.values()) > AGREEMENT:
         raise HybridError(f"{name}: our dynamics and Pinocchio's generated code differ by more than {AGREEMENT:g} "
-                          f"(relative): {', '.join(f'{f} {d:.1e}' for f, d in worst.items())}")
+                          "(relative): " + ", ".join(f"{f} ({side}) {d:.1e}" for (f, side), d in worst.items()))
     times = race.time(20_000 if quick else 200_000, rep)
     counted = pinocchio_codegen.race(robot, urdf, tip, counted=True).instructions() if (
         pinocchio_codegen.can_count()) else {}
     for function in pinocchio_codegen.FUNCTIONS:
-        ours, theirs = (statistics.median(times[function, side]) for side in ("ours", "pinocchio"))
-        ours_ins, theirs_ins = counted.get((function, "ours")), counted.get((function, "pinocchio"))
-        ins = "" if ours_ins is None else f"; {ours_ins:,.0f} instructions a call"
-        add(f"{name}: {dynamics_row(function, pinocchio=False)}", ours, agreement=worst[function],
-            instructions=ours_ins, ratio=f"the same as Pinocchio's to {worst[function]:.0e}{ins}")
-        ins = "" if theirs_ins is None or ours_ins is None else (f"; {theirs_ins:,.0f} instructions a call "
-                                             f"({theirs_ins / ours_ins:.2f}x ours)")
-        add(f"{name}: {dynamics_row(function, pinocchio=True)}", theirs, of_ours=theirs / ours,
-            instructions=theirs_ins, ratio=f"{theirs / ours:.2f}x the time of ours{ins}")
+        median = {side: statistics.median(times[function, side]) for side in pinocchio_codegen.SIDES}
+        count = {side: counted.get((function, side)) for side in pinocchio_codegen.SIDES}
+        for side in ("ours", "constant"):
+            ins = "" if count[side] is None else f"; {count[side]:,.0f} instructions a call"
+            add(f"{name}: {dynamics_row(function, side)}", median[side], agreement=worst[function, side],
+                instructions=count[side], ratio=f"the same as Pinocchio's to {worst[function, side]:.0e}{ins}")
+        theirs = median["pinocchio"]
+        ins = "" if None in count.values() else (f"; {count['pinocchio']:,.0f} instructions a call "
+                                                 f"({count['pinocchio'] / count['ours']:.2f}x ours, "
+                                                 f"{count['pinocchio'] / count['constant']:.2f}x the constant model's)")
+        add(f"{name}: {dynamics_row(function, 'pinocchio')}", theirs, of_ours=theirs / median["ours"],
+            of_constant=theirs / median["constant"], instructions=count["pinocchio"],
+            ratio=f"{theirs / median['ours']:.2f}x the time of ours, {theirs / median['constant']:.2f}x the constant "
+                  f"model's{ins}")

@@ -42,6 +42,9 @@ GENERATOR = FOLDER / "pinocchio_codegen.cpp"
 RACE = "pinocchio_race.c.j2"
 #: Pinocchio's generated functions (the generator's names), in the order the program runs them
 FUNCTIONS = ("rnea", "aba", "crba", "terms")
+#: the sides, in the order the program prints their outputs: ours with the robot array given at run
+#: time, ours with it compiled in (a constant model), Pinocchio's
+SIDES = ("ours", "constant", "pinocchio")
 #: a header of each package the generator needs, under the install prefix's include/, and the package
 HEADERS = (("pinocchio/codegen/cppadcg-algo.hpp", "pin"), ("cppad/cppad.hpp", "cmeel-cppad"),
            ("cppad/cg.hpp", "cmeel-cppadcodegen"), ("eigen3/Eigen/Core", "cmeel-eigen"),
@@ -145,34 +148,35 @@ def _version(package: str) -> str | None:
 
 @dataclass(frozen=True)
 class Race:
-    """A robot's two sides built: the program that runs them, the joints, and our functions' symbols by
-    Pinocchio's function's name."""
+    """A robot's sides built: the program that runs them, the joints, and our functions' symbols by
+    side (``ours``, ``constant``) and Pinocchio's function's name."""
 
     program: Path
     n: int
-    ours: dict[str, str]
+    ours: dict[str, dict[str, str]]
 
-    def outputs(self) -> dict[str, tuple[int, int]]:
-        """Each function's output sizes, ours and Pinocchio's (its CRBA gives the upper triangle)."""
+    def outputs(self) -> dict[str, tuple[int, ...]]:
+        """Each function's output sizes by side (:data:`SIDES`; Pinocchio's CRBA gives the upper triangle)."""
         n, terms = self.n, 3 + 9 + 7 * self.n + 6 + self.n * self.n
-        return {"rnea": (n, n), "aba": (n, n), "crba": (n * n, n * (n + 1) // 2), "terms": (terms, terms)}
+        return {"rnea": (n, n, n), "aba": (n, n, n), "crba": (n * n, n * n, n * (n + 1) // 2),
+                "terms": (terms, terms, terms)}
 
-    def evaluate(self, states: np.ndarray) -> dict[str, tuple[np.ndarray, np.ndarray]]:
-        """Both sides' outputs on ``states`` (rows ``(q, v, w)``: ``w`` is ``q''`` for RNEA, ``tau`` for
-        forward dynamics), by function: ``(ours, Pinocchio's)``, a row per state."""
+    def evaluate(self, states: np.ndarray) -> dict[str, tuple[np.ndarray, ...]]:
+        """Every side's outputs on ``states`` (rows ``(q, v, w)``: ``w`` is ``q''`` for RNEA, ``tau`` for
+        forward dynamics), by function: one array per side of :data:`SIDES`, a row per state."""
         text = f"{len(states)}\n" + "\n".join(" ".join(f"{x:.17g}" for x in row) for row in states) + "\n"
         out = subprocess.run([str(self.program), "check"], input=text, capture_output=True, text=True, check=True)
         sizes = self.outputs()
-        values = np.array(out.stdout.split(), float).reshape(len(states), sum(a + b for a, b in sizes.values()))
+        values = np.array(out.stdout.split(), float).reshape(len(states), sum(map(sum, sizes.values())))
         found, at = {}, 0
-        for name, (a, b) in sizes.items():
-            found[name] = (values[:, at:at + a], values[:, at + a:at + a + b])
-            at += a + b
+        for name, widths in sizes.items():
+            found[name] = tuple(values[:, at + sum(widths[:k]):at + sum(widths[:k + 1])] for k in range(len(widths)))
+            at += sum(widths)
         return found
 
     def time(self, calls: int, repeat: int) -> dict[tuple[str, str], list[float]]:
-        """Per-call times [ns] of each function and side (``ours``, ``pinocchio``), ``repeat`` runs of
-        ``calls`` calls each, the sides alternating (which goes first alternates too)."""
+        """Per-call times [ns] of each function and side (:data:`SIDES`), ``repeat`` runs of ``calls`` calls
+        each, the sides one after the other (which goes first rotates)."""
         out = subprocess.run([str(self.program), "time", str(calls), str(repeat)], capture_output=True, text=True,
                              check=True)
         times: dict[tuple[str, str], list[float]] = {}
@@ -200,8 +204,9 @@ class Race:
             found = re.match(r"\s*([\d,]+) \(\s*[\d.]+%\)\s+(\S+)", line)
             if found:
                 counts[found.group(2).rsplit(":", 1)[-1]] = int(found.group(1).replace(",", ""))
-        return {(f, side): counts[symbol] / calls for f in FUNCTIONS
-                for side, symbol in (("ours", self.ours[f]), ("pinocchio", f"{f}_forward_zero")) if symbol in counts}
+        symbols = {**self.ours, "pinocchio": {f: f"{f}_forward_zero" for f in FUNCTIONS}}
+        return {(f, side): counts[symbols[side][f]] / calls for f in FUNCTIONS for side in SIDES
+                if symbols[side][f] in counts}
 
 
 def can_count() -> bool:
@@ -214,17 +219,21 @@ NATIVE, COUNTED = "-march=native", "-march=x86-64-v3"
 
 
 def race(robot, urdf: Path, tip: str, counted: bool = False) -> Race:
-    """The program that runs our side and Pinocchio's generated side of ``robot`` (read from ``urdf`` to
-    ``tip``), built (cached). Our side runs with the joints' friction zero (Pinocchio's has none). With
+    """The program that runs our sides (:data:`SIDES`) and Pinocchio's generated side of ``robot`` (read
+    from ``urdf`` to ``tip``), built (cached). Ours run with the joints' friction zero (Pinocchio's has
+    none): given at run time, or compiled in, where the constant model folds it away. With
     ``counted``, the build whose instructions callgrind can count: for AVX2 rather than this processor
     (valgrind runs no AVX-512), else the same."""
-    unit, inertia = robot.unit, units.inertia_unit(robot.chain, robot.name)
-    unit_prefix, inertia_prefix = unit.manifest["unit"], inertia.manifest["unit"]
-    source = render(RACE, unit=unit_prefix, inertia=inertia_prefix, n=robot.n,
-                    robot=[float(x) for x in _frictionless(robot).as_array()])
+    values = [float(x) for x in _frictionless(robot).as_array()]
+    built = (robot.unit, units.inertia_unit(robot.chain, robot.name),
+             units.constant_robot_unit(robot.chain, robot.name, values),
+             units.constant_inertia_unit(robot.chain, robot.name, values))
+    prefixes = [u.manifest["unit"] for u in built]
+    source = render(RACE, unit=prefixes[0], inertia=prefixes[1], constant=prefixes[2], constant_inertia=prefixes[3],
+                    n=robot.n, robot=values)
     cc, ident = compiler.compiler()
     flags = [COUNTED if counted and f == NATIVE else f for f in compiler.flags(ident)]
-    ours = [unit.folder / f"{unit_prefix}.c", inertia.folder / f"{inertia_prefix}.c"]
+    ours = [u.folder / f"{p}.c" for u, p in zip(built, prefixes)]
     chain = list(robot.joint_names)
     gen = generator_program()
     material = json.dumps({
@@ -246,15 +255,16 @@ def race(robot, urdf: Path, tip: str, counted: bool = False) -> Race:
         _run([cc, *flags, "-shared", *map(str, theirs), "-o", str(libraries[1]), "-lm"],
              "compiling Pinocchio's generated C")
         (folder / "race.c").write_text(source)
-        _run([cc, *(f for f in flags if f != "-fPIC"), f"-I{unit.folder}", f"-I{inertia.folder}",
-              str(folder / "race.c"), "-o", str(program), f"-L{folder}", "-l:libhybrid_side.so",
+        _run([cc, *(f for f in flags if f != "-fPIC"), *(f"-I{u.folder}" for u in built), str(folder / "race.c"),
+              "-o", str(program), f"-L{folder}", "-l:libhybrid_side.so",
               "-l:libpinocchio_side.so", f"-Wl,-rpath,{folder}", "-lm"], "compiling the race program")
         write_checksum(record, digest(program.read_bytes()),
                        libraries={p.name: digest(p.read_bytes()) for p in libraries})
 
     once(folder, lambda: library_intact(program, record) and _libraries_intact(libraries, record), make)
-    symbols = {"rnea": f"{unit_prefix}_inverse_dynamics", "aba": f"{unit_prefix}_forward_dynamics",
-               "crba": f"{inertia_prefix}_inertia", "terms": f"{unit_prefix}_robot_terms"}
+    symbols = {side: {"rnea": f"{unit}_inverse_dynamics", "aba": f"{unit}_forward_dynamics",
+                      "crba": f"{inertia}_inertia", "terms": f"{unit}_robot_terms"}
+               for side, unit, inertia in (("ours", *prefixes[:2]), ("constant", *prefixes[2:]))}
     return Race(program, robot.n, symbols)
 
 

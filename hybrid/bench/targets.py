@@ -54,11 +54,14 @@ DYNAMICS = {"rnea": ("RNEA", "inverse_dynamics"),
             "terms": ("r, rotation, J, J'q', B, n", "robot_terms")}
 
 
-def dynamics_row(function: str, pinocchio: bool) -> str:
-    """The name of a row comparing the ``function`` of :data:`DYNAMICS`: ours, or Pinocchio's."""
+def dynamics_row(function: str, side: str) -> str:
+    """The name of a row comparing the ``function`` of :data:`DYNAMICS`, on one side: ``ours`` (the robot
+    array at run time), ``constant`` (our constant model) or ``pinocchio``."""
     what, ours = DYNAMICS[function]
-    if pinocchio:
+    if side == "pinocchio":
         return f"{what} by Pinocchio's code generation (CppADCodeGen), per call"
+    if side == "constant":
+        return f"{what} in C, constant model, beside Pinocchio's code generation, per call"
     return f"{what} in C beside Pinocchio's code generation, per call ({ours})"
 
 
