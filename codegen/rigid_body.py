@@ -14,7 +14,8 @@ a force vector ``(n_O, f)``. Joint ``i``'s motion subspace is then ``S_i = (z_i,
 - :func:`rnea`: inverse dynamics ``tau = B q'' + n(q, q')`` by recursive Newton-Euler,
   gravity and joint friction included;
 
-:mod:`.body_frame` has the same algorithms in body coordinates (fewer operations: the 3-D plant's).
+:mod:`.body_frame` has the same algorithms in body coordinates and :mod:`.tip_kinematics` the tip's
+kinematics from its transforms (fewer operations: the kernels'); these are their reference.
 
 The kinematic structure (joint origins, axes, types) is numbers compiled into the
 expressions; the inertial parameters, joint friction and gravity are symbols, so one

@@ -12,6 +12,7 @@ import casadi as ca
 
 from . import body_frame as bf
 from . import rigid_body as rb
+from . import tip_kinematics as tk
 from .constant_model import constant_kernels
 from .controller_step import controller_kernels
 from .emit import Unit, assemble
@@ -25,15 +26,16 @@ from .task_law import AXIS_NAMES, frame_kernel, law_kernels, operational_space_k
 
 def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
     """``robot_terms`` (tip pose, ``J``, ``J' q'``, ``B``, ``n``), ``inverse_dynamics`` (RNEA) and
-    ``forward_dynamics`` (``B^-1 (tau - n)`` by ``L D L^T``), each batched over states (the kinematics
-    in base axes, the dynamics in body coordinates: :mod:`.body_frame`); with
+    ``forward_dynamics`` (``B^-1 (tau - n)`` by ``L D L^T``), each batched over states (the dynamics in
+    body coordinates, :mod:`.body_frame`, and the kinematics from the same transforms,
+    :mod:`.tip_kinematics`); with
     ``defaults`` (the URDF's ``robot`` array) also ``urdf_parameters``, which writes them."""
     n = chain.n
     names = tuple(j.name for j in chain.joints)
     q, qd, qdd, tau = (ca.SX.sym(s, n) for s in ("q", "qd", "qdd", "tau"))
     params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
-    fr = rb.forward_kinematics(chain, q)
-    tree = bf.link_transforms(chain, q)  # the dynamics in body coordinates
+    tree = bf.link_transforms(chain, q)  # the kinematics and the dynamics in body coordinates
+    fr = tk.placements(tree)
     B = bf.crba(tree, params)
     bias = bf.rnea(tree, params, qd)
     a_q = Arg("q", q, rb.joint_units(chain, "q"), names=names)
@@ -42,8 +44,8 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
     terms = Kernel(
         "robot_terms", (a_q, a_qd, a_p),
         (Arg("p", fr.tip_p, "m"), Arg("rotation", rb.row_major(fr.tip_R), "1", (3, 3)),
-         Arg("J", rb.row_major(rb.frame_jacobian(fr)), "m/rad, 1 (linear rows, then angular)", (6, n)),
-         Arg("Jdqd", rb.frame_classical_acceleration(fr, qd), "m/s^2, rad/s^2"),
+         Arg("J", rb.row_major(tk.frame_jacobian(tree, fr)), "m/rad, 1 (linear rows, then angular)", (6, n)),
+         Arg("Jdqd", tk.classical_acceleration(tree, fr, qd), "m/s^2, rad/s^2"),
          Arg("B", rb.row_major(B), "kg m^2", (n, n)), Arg("n", bias, rb.joint_units(chain, "tau"))),
         "tip frame position p [m] and rotation (row-major) in base axes, frame Jacobian J (6 x n, "
         "LOCAL_WORLD_ALIGNED), J'(q, q') q' (classical), inertia B(q) (CRBA), n(q, q') (RNEA: "

@@ -29,6 +29,7 @@ from hybrid.spec.axes import AXIS_NAMES
 from . import body_frame as bf
 from . import factor
 from . import rigid_body as rb
+from . import tip_kinematics as tk
 from .kernel import Arg, Guard, Kernel, conditioning_guard
 from .surfaces import FRAME_TOL, SurfaceSpec, task_frame
 
@@ -53,10 +54,11 @@ def _rows(M, axes):
 
 @dataclass(frozen=True)
 class ArmMotion:
-    """The arm's symbolic kinematics at ``(q, q')``: base-axes frames, ``J`` (6 x n), ``J' q'`` and
-    ``v = J q'``; the link transforms of the body-frame dynamics (:mod:`.body_frame`)."""
+    """The arm's symbolic kinematics at ``(q, q')``: the links and the tip in base axes, ``J`` (6 x n),
+    ``J' q'`` and ``v = J q'``, all from the link transforms of the body-frame dynamics (:mod:`.body_frame`,
+    :mod:`.tip_kinematics`): one kinematic pass for the law and the dynamics."""
 
-    frames: rb.Frames
+    frames: tk.Placements
     J: ca.SX
     Jdqd: ca.SX
     v: ca.SX
@@ -64,9 +66,10 @@ class ArmMotion:
 
 
 def arm_motion(chain: rb.Chain, q, qd) -> ArmMotion:
-    fr = rb.forward_kinematics(chain, q)
-    J = rb.frame_jacobian(fr)
-    return ArmMotion(fr, J, rb.frame_classical_acceleration(fr, qd), J @ qd, bf.link_transforms(chain, q))
+    tree = bf.link_transforms(chain, q)
+    fr, vs = tk.placements(tree), bf.link_velocities(tree, qd)  # the Newton-Euler pass's velocities too
+    return ArmMotion(fr, tk.frame_jacobian(tree, fr), tk.classical_acceleration(tree, fr, qd, vs),
+                     tk.frame_velocity(tree, fr, vs), tree)
 
 
 def task_rows(tf, axes) -> tuple[ca.SX, ca.SX]:
@@ -202,10 +205,10 @@ def operational_space_kernels(chain: rb.Chain) -> tuple[Kernel, ...]:
     n = chain.n
     q, qd = ca.SX.sym("q", n), ca.SX.sym("qd", n)
     params = ca.SX.sym("robot", len(rb.parameter_names(chain)))
-    fr = rb.forward_kinematics(chain, q)
-    J = rb.frame_jacobian(fr)
-    Jdqd = rb.frame_classical_acceleration(fr, qd)
     tree = bf.link_transforms(chain, q)
+    fr, vs = tk.placements(tree), bf.link_velocities(tree, qd)
+    J = tk.frame_jacobian(tree, fr)
+    Jdqd = tk.classical_acceleration(tree, fr, qd, vs)
     B = bf.crba(tree, params)
     bias = bf.rnea(tree, params, qd)
     L = factor.cholesky(B)
@@ -218,7 +221,7 @@ def operational_space_kernels(chain: rb.Chain) -> tuple[Kernel, ...]:
     mu = factor.factor_solve(K, Y.T @ u - Jdqd)
     _, Rq = factor.thin_qr(J.T)
     guard = conditioning_guard(factor.frobenius_conditioning(J, Rq), CONDITIONING)
-    v = J @ qd
+    v = tk.frame_velocity(tree, fr, vs)
     phi = euler_zyx(fr.tip_R)
     phid = euler_rates(phi, v[3:])
     TA = euler_map(phi)

@@ -24,14 +24,17 @@ res = hybrid.simulate(hybrid.tracing_experiment(duration=1.0))
 
 with tempfile.TemporaryDirectory() as folder:
     out = Path(folder) / "ur5_sphere.html"
-    fig = res.view(every=4, out=out, title="the UR5 on the sphere")  # one file, written atomically
-    print(f"{len(fig.frames)} pictures, {out.stat().st_size / 1e6:.1f} MB with plotly.js inside")
+    # one file, written atomically
+    fig = res.view(every=4, out=out, title="the UR5 on the sphere")
+    size_mb = out.stat().st_size / 1e6
+    print(f"{len(fig.frames)} pictures, "
+          f"{size_mb:.1f} MB with plotly.js inside")
 
 # %%
 # Each picture is a frame of the figure, named by its control sample; its traces are the ones that
 # move (the path so far, the arm, the sensor, the force arrow, the task frame's axes).
 print([frame.name for frame in fig.frames[:4]], "...")
-print([trace.name for trace in fig.frames[0].data])
+print(*[trace.name for trace in fig.frames[0].data], sep=", ")
 
 # %%
 # The figure (``fig.show()`` opens it in a browser; a notebook shows it as the cell's result):

@@ -15,6 +15,7 @@ the posture and an exact model, and without a posture. The hand's task is the sa
 the spare joint does is not.
 """
 
+import textwrap
 import warnings
 
 import matplotlib.pyplot as plt
@@ -23,12 +24,15 @@ import numpy as np
 import hybrid
 from hybrid.animation import arm_frame, still
 
-exp = hybrid.panda_experiment(duration=1.5)  # the speed steps at 1.5 s: the run ends before it
+# the speed steps at 1.5 s: the run ends before it
+exp = hybrid.panda_experiment(duration=1.5)
 q_rest = np.array(exp.posture.q_rest)
 q_start = exp.start_state().q
 terms = hybrid.arm_terms(exp.robot, q_start, np.zeros(exp.robot.n))
-z0 = np.linalg.svd(terms["J"])[2][-1]  # the self-motion at the start: J's null space (7 joints, 6 rows)
-z0 *= -np.sign(z0[6])  # its sign is arbitrary: joint 7 turning away from its upper limit
+# the self-motion at the start: J's null space (7 joints, 6 rows)
+z0 = np.linalg.svd(terms["J"])[2][-1]
+# its sign is arbitrary: joint 7 turning away from its upper limit
+z0 *= -np.sign(z0[6])
 
 # %%
 # The start's inverse kinematics begins at ``q0``: from a seed 0.4 rad along the self-motion it ends
@@ -43,25 +47,34 @@ runs = {}
 for label, setting in settings.items():
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        runs[label] = hybrid.simulate(hybrid.panda_experiment(duration=1.5, q0=seed, **setting))
+        experiment = hybrid.panda_experiment(duration=1.5, q0=seed,
+                                             **setting)
+        runs[label] = hybrid.simulate(experiment)
     for w in caught:
-        print(f"{label}: {w.category.__name__}: {str(w.message).splitlines()[0]}")
+        print(f"{label}: {w.category.__name__}:")
+        first_line = str(w.message).splitlines()[0]
+        print(textwrap.indent(textwrap.fill(first_line, 64), "  "))
 for v in runs["without a posture"].limit_violations.values():
-    print(f"  {v.kind}: {v.joint} reached {v.value:.2f} {v.unit} (its limit {v.limit:g}) at {v.first_time:.2f} s")
+    print(f"  {v.kind}: {v.joint} reached {v.value:.2f} {v.unit} "
+          f"(limit {v.limit:g}) at {v.first_time:.2f} s")
 
 
 def self_motion(res):
-    """Per control sample, the component of ``q - q_rest`` along the self-motion ``z`` in the inertia
-    metric, ``z^T B (q - q_rest) / z^T B z`` [rad]: what the posture task drives to 0 (the rest of
-    ``q - q_rest`` is the task's to set)."""
+    """Per control sample, the component of ``q - q_rest`` along the
+    self-motion ``z`` in the inertia metric,
+    ``z^T B (q - q_rest) / z^T B z`` [rad]: what the posture task
+    drives to 0 (the rest of ``q - q_rest`` is the task's to set)."""
     q = res.q[::exp.steps_per_sample]
-    arm = hybrid.arm_terms(exp.robot, q, np.zeros_like(q))  # the true arm's J and B at every sample
+    # the true arm's J and B at every sample
+    arm = hybrid.arm_terms(exp.robot, q, np.zeros_like(q))
     z = np.linalg.svd(arm["J"])[2][:, -1]
     z[0] *= np.sign(z[0] @ z0)
-    for k in range(1, len(z)):  # the SVD's sign, per sample, made continuous along the run
+    # the SVD's sign, per sample, made continuous along the run
+    for k in range(1, len(z)):
         z[k] *= np.sign(z[k] @ z[k - 1])
     Bz = np.einsum("nij,nj->ni", arm["B"], z)
-    return np.einsum("ni,ni->n", Bz, q - q_rest) / np.einsum("ni,ni->n", Bz, z)
+    along = np.einsum("ni,ni->n", Bz, q - q_rest)
+    return along / np.einsum("ni,ni->n", Bz, z)
 
 
 # %%
@@ -69,10 +82,12 @@ def self_motion(res):
 # end of the run without one (:func:`hybrid.animation.arm_frame`: the points the picture draws the
 # links through): the hand on the pillar in both, the elbow swung aside and the wrist wound up
 # without a posture.
-fig = still(runs["with the posture, model 10 % heavy"], title="the Panda at 1.5 s: with the posture, and without")
+title = "the Panda at 1.5 s: with the posture, and without"
+fig = still(runs["with the posture, model 10 % heavy"], title=title)
 ax = fig.axes[0]
 loose = arm_frame(runs["without a posture"], -1).links
-ax.plot(*loose.T, color="tab:brown", lw=1.5, ls="--", marker="o", ms=3, label="arm without a posture")
+ax.plot(*loose.T, color="tab:brown", lw=1.5, ls="--", marker="o",
+        ms=3, label="arm without a posture")
 ax.legend(fontsize=7, loc="upper left", ncol=2, frameon=False)
 ax.view_init(elev=35, azim=-125)
 
@@ -87,7 +102,8 @@ t = np.arange(exp.n_samples + 1) * exp.sample_time
 for label, res in runs.items():
     ax_z.plot(t, self_motion(res), lw=1.2, label=label)
     ax_f.plot(res.t, res.force_normal, lw=1.0, label=label)
-ax_f.plot(res.t, res.force_reference, "k--", lw=1.0, label="reference")
+ax_f.plot(res.t, res.force_reference, "k--", lw=1.0,
+          label="reference")
 ax_z.set_ylabel("self-motion's coordinate\nof q - q_rest [rad]")
 ax_f.set_ylabel("normal force [N]")
 ax_f.set_xlabel("time [s]")
@@ -96,7 +112,11 @@ for ax in (ax_z, ax_f):
     ax.legend(fontsize=8)
 fig.tight_layout()
 
+print(f"{'':34s} {'self-motion [rad] at':24s}RMS force")
+print(f"{'':34s} {'0 s':8s}{'0.5 s':8s}{'1.5 s':8s}error [N]")
+half = round(0.5 / exp.sample_time)  # the sample at 0.5 s
 for label, res in runs.items():
     along = self_motion(res)
-    print(f"{label:36s} self-motion [rad]: at 0 s {along[0]:+.3f}, 0.5 s {along[round(0.5 / exp.sample_time)]:+.3f}, "
-          f"1.5 s {along[-1]:+.3f}; RMS force error {res.metrics['rms_force_error_N']:.3f} N")
+    error = res.metrics["rms_force_error_N"]
+    print(f"{label:34s} {along[0]:+.3f}  {along[half]:+.3f}  "
+          f"{along[-1]:+.3f}  {error:.3f}")

@@ -61,11 +61,11 @@ fig.tight_layout()
 # the speed drop over friction and speed, a row of panels per scheme. The panels share one colour
 # scale and one colour bar, so that a colour is the same drop in both: Khatib's grows with the
 # friction, the task law's hardly does.
-fig = plot_sweep(table, "contact.friction", "speed_reference.before", "speed_drop_after_force_step_m_per_s",
-                 rows="controller")
+fig = plot_sweep(table, "contact.friction", "speed_reference.before",
+                 DROP, rows="controller")
 
 # %%
 # Their ratio, the task law's drop over Khatib's, on a logarithmic scale centred at 1: blue where the
 # task law's is the smaller, a black line where the two are equal.
-fig = plot_sweep(table, "contact.friction", "speed_reference.before", "speed_drop_after_force_step_m_per_s",
-                 rows="controller", ratio=("task", "khatib"))
+fig = plot_sweep(table, "contact.friction", "speed_reference.before",
+                 DROP, rows="controller", ratio=("task", "khatib"))

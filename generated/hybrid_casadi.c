@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: bf236fbc7470182bf1c0e3241a1f4f4d5b9b01b8bac5a008e16eb0f849830193 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 623a10a02e561fce31beafc9f0652b6f1f02970a528f22d3b1c903441faa184e */
 /* hybrid_casadi: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
    Emitted by the casadi backend of hybrid's codegen (SymPy 1.14.0, CasADi 3.8.2), generator version 5.
    Compile: cc -std=c99 -O2 -c hybrid_casadi.c (link with -lm). */
@@ -1777,11 +1777,9 @@ static void plant_outputs_circle_core(const double *x, const double *arm, const 
 #include "hybrid_casadi.h"
 
 static int all_finite(const double *v, int n) {
-    int i;
-    for (i = 0; i < n; ++i) {
-        if (!isfinite(v[i])) return 0;
-    }
-    return 1;
+    int i, finite = 1;
+    for (i = 0; i < n; ++i) finite &= isfinite(v[i]) != 0;
+    return finite;
 }
 
 #if defined(__GNUC__)

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 813d273d8028ba51ef5ec55dc5cc2b9f077640c429efd399e71508a1ff17a607 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: acda4bae774d11a31985598ef918622fdc88a57ab236f1cdedc6eb26361aa34b */
 /* hybrid_sympy: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
    Emitted by the sympy backend of hybrid's codegen (SymPy 1.14.0), generator version 5.
    Compile: cc -std=c99 -O2 -c hybrid_sympy.c (link with -lm). */
@@ -699,11 +699,9 @@ static void plant_outputs_circle_core(const double *x, const double *arm, const 
 #include "hybrid_sympy.h"
 
 static int all_finite(const double *v, int n) {
-    int i;
-    for (i = 0; i < n; ++i) {
-        if (!isfinite(v[i])) return 0;
-    }
-    return 1;
+    int i, finite = 1;
+    for (i = 0; i < n; ++i) finite &= isfinite(v[i]) != 0;
+    return finite;
 }
 
 #if defined(__GNUC__)

@@ -31,7 +31,8 @@ The public API, by subpackage:
   sweeps (:func:`sweep`); gains tuned across scenarios with a stability margin kept (:func:`tune`);
 - :class:`HybridError`, the base of every error raised on bad input; :class:`LargeModelWarning`,
   warned for a chain whose code takes minutes to generate; :class:`JointLimitWarning`, for a run that
-  left the robot's joint limits; :class:`RedundancyWarning`, for a redundant arm without a posture task.
+  left the robot's joint limits; :class:`RedundancyWarning`, for a redundant arm without a posture task;
+  :class:`PartFitWarning`, for a part's surface that follows the part poorly.
 
 Importing the package loads neither SymPy nor CasADi and reads no file: the code generator
 runs only when a unit must be built, and :class:`ImplicitSurface` (a SymPy expression),
@@ -92,7 +93,7 @@ from hybrid.simulation.metrics import metrics
 from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.runner import SimulationError, simulate
 from hybrid.stability.analysis import LoopStability, Stability, stability
-from hybrid.user_warnings import JointLimitWarning, RedundancyWarning
+from hybrid.user_warnings import JointLimitWarning, PartFitWarning, RedundancyWarning
 
 if TYPE_CHECKING:  # type checkers see the lazy names' real signatures
     from hybrid.control.config import read_controller_config
@@ -138,8 +139,8 @@ __all__ = [
     "HybridError", "ImplicitSurface",
     "JointLimitWarning", "Khatib", "LargeModelWarning", "LinePath", "LoopStability", "Measurement", "MeshSurface",
     "NativeBuildError",
-    "NonFiniteError", "OperationalSpace", "PANDA_URDF", "ParameterError", "PathTask", "Plane", "PointCloudSurface",
-    "Posture", "RasterPath",
+    "NonFiniteError", "OperationalSpace", "PANDA_URDF", "ParameterError", "PartFitWarning", "PathTask", "Plane",
+    "PointCloudSurface", "Posture", "RasterPath",
     "RedundancyWarning", "Reference", "Robot", "SCHEMES", "SafeStopError", "SampleTimingError", "Scheme", "Sensor",
     "SimulationError", "SimulationResult", "SingularConfigurationError", "Sphere", "SpiralPath", "Stability",
     "StabilityMap", "Step",

@@ -1,6 +1,6 @@
 """The warnings the library gives about a run's settings and outcome (a run beyond the robot's joint
-limits, a redundant arm without a posture task), told at the user's line (:mod:`hybrid.errors` holds
-its errors; its bytes shape the generated code's fingerprint, these do not)."""
+limits, a redundant arm without a posture task, a part's surface fitted poorly), told at the user's line
+(:mod:`hybrid.errors` holds its errors; its bytes shape the generated code's fingerprint, these do not)."""
 
 from __future__ import annotations
 
@@ -44,6 +44,33 @@ class RedundancyWarning(UserWarning):
     ...     experiment = hybrid.panda_experiment(posture=None)
     >>> [w.category.__name__ for w in caught]
     ['RedundancyWarning']
+    """
+
+
+class PartFitWarning(UserWarning):
+    """A part's smooth surface (:class:`hybrid.MeshSurface`, :class:`hybrid.PointCloudSurface`) that follows the
+    part poorly: the typical point of the part (the median) farther from it than a quarter of the grid's cell, or
+    the typical normal more than 4 degrees off (:data:`hybrid.geometry.parts.POOR_DISTANCE_CELLS`,
+    :data:`~hybrid.geometry.parts.POOR_ANGLE_DEG`). The message names the measured error and the fix (a finer
+    spacing, less smoothing, a cloud's normals); the part's ``fit`` holds the numbers.
+
+    Examples
+    --------
+    Make it an error where a part must be fitted well (here a box smoothed 500 times the default: its faces
+    bulge and its normals turn):
+
+    >>> import warnings
+    >>> import hybrid, numpy as np
+    >>> v = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]) * 0.05
+    >>> f = [[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1], [2, 3, 7], [2, 7, 6],
+    ...      [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]]
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("error", hybrid.PartFitWarning)
+    ...     try:
+    ...         hybrid.MeshSurface(v, f, spacing=0.01, band=0.03, smoothing=100.0)
+    ...     except hybrid.PartFitWarning as poor:
+    ...         print(str(poor).split(":")[0])
+    MeshSurface follows the part poorly
     """
 
 

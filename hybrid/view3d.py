@@ -228,13 +228,16 @@ def view(result, every: int | None = None, *, force_scale: float | None = None, 
     Examples
     --------
     >>> import hybrid
-    >>> res = hybrid.simulate(hybrid.tracing_experiment(duration=0.1))   # the UR5 on the sphere
+    >>> # the UR5 on the sphere
+    >>> res = hybrid.simulate(hybrid.tracing_experiment(duration=0.1))
     >>> fig = hybrid.view(res, every=5)
-    >>> [frame.name for frame in fig.frames]                             # control samples 0, 5 and 10
+    >>> [frame.name for frame in fig.frames]  # control samples
     ['0', '5', '10']
     >>> [trace.name for trace in fig.data]
-    ['surface', "sensor tip's path", 'arm', 'sensor', 'F_c (... mm/N)', 't1', 't2', 'n']
-    >>> fig.frames[-1].data[1].x.shape                                   # base, 6 joint origins, arm tip
+    ['surface', "sensor tip's path", 'arm', 'sensor',
+     'F_c (... mm/N)', 't1', 't2', 'n']
+    >>> # base, 6 joint origins, arm tip
+    >>> fig.frames[-1].data[1].x.shape
     (8,)
     """
     go = _plotly()

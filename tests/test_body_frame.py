@@ -84,3 +84,24 @@ def test_body_frame_dynamics_equal_the_base_axes_algorithms():
                 assert np.abs(got - want).max() < 1e-13 * np.abs(want).max(), (name, k)
             # the ABA inverts the RNEA
             assert np.abs(out[8] - x[2]).max() < 1e-12 * np.abs(x[2]).max(), name
+
+
+def test_tip_kinematics_from_the_link_transforms_equal_the_base_axes_ones():
+    """The tip's placement, ``J``, ``J q'`` and ``J' q'`` from the body-frame transforms (codegen.tip_kinematics)
+    equal the base-axes forward kinematics' (codegen.rigid_body) to rounding."""
+    tk = pytest.importorskip("hybrid.codegen.tip_kinematics")
+    rng = np.random.default_rng(7)
+    for name, chain in _chains(rng).items():
+        n = chain.n
+        q, qd = ca.SX.sym("q", n), ca.SX.sym("qd", n)
+        frames, tree = rb.forward_kinematics(chain, q), bf.link_transforms(chain, q)
+        placed, vs = tk.placements(tree), bf.link_velocities(tree, qd)
+        J = rb.frame_jacobian(frames)
+        f = ca.Function("f", [q, qd], [
+            frames.tip_p, placed.tip_p, frames.tip_R, placed.tip_R, J, tk.frame_jacobian(tree, placed),
+            J @ qd, tk.frame_velocity(tree, placed, vs),
+            rb.frame_classical_acceleration(frames, qd), tk.classical_acceleration(tree, placed, qd, vs)])
+        for _ in range(20):
+            out = [np.array(v).ravel() for v in f(rng.uniform(-3, 3, n), rng.normal(0, 2, n))]
+            for k, (want, got) in enumerate(zip(out[0::2], out[1::2])):
+                assert np.abs(got - want).max() < 1e-13 * np.abs(want).max(), (name, k)

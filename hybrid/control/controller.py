@@ -112,9 +112,14 @@ class Controller(SampleReferences, GroupedSettings, CheckedParameters):
     --------
     >>> import numpy as np
     >>> import hybrid
-    >>> ur5, sphere = hybrid.ur5(), hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15)
-    >>> ctrl = hybrid.Controller(ur5, sphere, "task", force_reference=15.0, velocity_reference=0.1,
-    ...                          limits=hybrid.Limits(sample_time=0.002, torque_step_limit=2.0))
+    >>> ur5 = hybrid.ur5()
+    >>> sphere = hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15)
+    >>> limits = hybrid.Limits(sample_time=0.002,
+    ...                        torque_step_limit=2.0)
+    >>> ctrl = hybrid.Controller(ur5, sphere, "task",
+    ...                          force_reference=15.0,
+    ...                          velocity_reference=0.1,
+    ...                          limits=limits)
     >>> ctrl.axis_names
     ('t1', 't2', 'n', 'rot_t1', 'rot_t2', 'rot_n')
     >>> q = np.array([0.0, -1.2, 1.5, -1.9, -1.57, 0.0])

@@ -140,8 +140,10 @@ class Tracking(_Group):
     Examples
     --------
     >>> import hybrid
-    >>> tracking = hybrid.Tracking(force_reference=15.0, velocity_reference=0.1)
-    >>> ctrl = hybrid.Controller(hybrid.ur5(), hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15),
+    >>> tracking = hybrid.Tracking(force_reference=15.0,
+    ...                            velocity_reference=0.1)
+    >>> sphere = hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15)
+    >>> ctrl = hybrid.Controller(hybrid.ur5(), sphere,
     ...                          tracking=tracking)
     >>> ctrl.tracking.force_reference
     15.0
@@ -203,15 +205,18 @@ class Limits(_Group):
     Examples
     --------
     >>> import hybrid
-    >>> limits = hybrid.Limits(sample_time=0.002, torque_step_limit=2.0)
-    >>> ctrl = hybrid.Controller(hybrid.ur5(), hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15),
+    >>> limits = hybrid.Limits(sample_time=0.002,
+    ...                        torque_step_limit=2.0)
+    >>> sphere = hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15)
+    >>> ctrl = hybrid.Controller(hybrid.ur5(), sphere,
     ...                          limits=limits)
     >>> ctrl.sample_time, ctrl.limits.torque_step_limit
     (0.002, 2.0)
     >>> hybrid.Limits(sample_time=0.0)
     Traceback (most recent call last):
     ...
-    hybrid.errors.HybridError: sample_time = 0.0 s; give a positive sample period
+    hybrid.errors.HybridError: sample_time = 0.0 s; give a positive
+    sample period
     """
 
     sample_time: float = 0.01
@@ -247,8 +252,10 @@ class Sensing(_Group):
     Examples
     --------
     >>> import hybrid
-    >>> sensing = hybrid.Sensing(contact_loss=hybrid.ContactLoss(threshold=0.5, approach_speed=0.02))
-    >>> ctrl = hybrid.Controller(hybrid.ur5(), hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15),
+    >>> loss = hybrid.ContactLoss(threshold=0.5, approach_speed=0.02)
+    >>> sensing = hybrid.Sensing(contact_loss=loss)
+    >>> sphere = hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15)
+    >>> ctrl = hybrid.Controller(hybrid.ur5(), sphere,
     ...                          sensing=sensing)
     >>> ctrl.sensing.contact_loss.threshold
     0.5

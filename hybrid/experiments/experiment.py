@@ -203,17 +203,21 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
 
     >>> import hybrid
     >>> sphere = hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15)
-    >>> experiment = hybrid.Experiment(robot=hybrid.ur5(), surface=sphere, force_reference=15.0,
-    ...                                speed_reference=0.1, duration=0.05)
-    >>> experiment.n_samples, experiment.steps_per_sample  # 10 ms samples of 100 RK4 steps
+    >>> experiment = hybrid.Experiment(
+    ...     robot=hybrid.ur5(), surface=sphere, force_reference=15.0,
+    ...     speed_reference=0.1, duration=0.05)
+    >>> # 10 ms samples of 100 RK4 steps
+    >>> experiment.n_samples, experiment.steps_per_sample
     (5, 100)
-    >>> experiment.initial_state().shape  # (q, q', s, s') of 6 joints and the sensor tip
+    >>> # (q, q', s, s') of 6 joints and the sensor tip
+    >>> experiment.initial_state().shape
     (18,)
     >>> result = hybrid.simulate(experiment)
     >>> round(float(result.force_normal[-1]))  # [N]
     15
     >>> import dataclasses
-    >>> faster = dataclasses.replace(experiment, sample_time=0.005)  # a copy, checked again
+    >>> # a copy, checked again
+    >>> faster = dataclasses.replace(experiment, sample_time=0.005)
     >>> faster.n_samples, faster.steps_per_sample
     (10, 50)
     """

@@ -50,10 +50,12 @@ def tracing_experiment(**overrides) -> Experiment:
     Examples
     --------
     >>> import hybrid
-    >>> experiment = hybrid.tracing_experiment(latitude=45.0, F_d=15.0, duration=0.5)
+    >>> experiment = hybrid.tracing_experiment(
+    ...     latitude=45.0, F_d=15.0, duration=0.5)
     >>> experiment.robot.name, experiment.force_reference
     ('ur5', Step(before=15.0, after=15.0, at=0.0))
-    >>> round(experiment.followed_path().radius, 4)  # 0.15 m * sin(45 degrees)
+    >>> # 0.15 m * sin(45 degrees)
+    >>> round(experiment.followed_path().radius, 4)
     0.1061
     """
     latitude = overrides.pop("latitude", None)

@@ -96,8 +96,13 @@ class SplineGrid:
                               (cell[:, 1, None, None, None] + offsets[None, :, None]),
                               (cell[:, 2, None, None, None] + offsets[None, None, :])]
 
+        # the sums taken an axis at a time (z, then y, then x): each derivative's from the partial sums it shares
+        along_z = [np.einsum("nabc,nc->nab", c, b[o][:, 2]) for o in range(3)]
+        along_yz = {(oy, oz): np.einsum("nab,nb->na", along_z[oz], b[oy][:, 1])
+                    for oy, oz in ((0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2))}
+
         def along(ox: int, oy: int, oz: int) -> np.ndarray:
-            return np.einsum("nabc,na,nb,nc->n", c, b[ox][:, 0], b[oy][:, 1], b[oz][:, 2])
+            return np.einsum("na,na->n", along_yz[oy, oz], b[ox][:, 0])
 
         phi = along(0, 0, 0)
         grad = np.stack([along(1, 0, 0), along(0, 1, 0), along(0, 0, 1)], axis=1) / h

@@ -87,15 +87,16 @@ def _check_edges(f: np.ndarray, what: str) -> None:
     """Refuse an edge of more than two facets, or one two facets run in the same direction."""
     directed = np.concatenate([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]])
     undirected = np.sort(directed, axis=1)
-    _, counts = np.unique(undirected, axis=0, return_counts=True)
+    vertices = int(f.max()) + 1  # each edge one number (its two vertices' indices): a sort of numbers, not of rows
+    keys, counts = np.unique(undirected[:, 0] * vertices + undirected[:, 1], return_counts=True)
     if counts.max() > 2:
-        edge = np.unique(undirected, axis=0)[int(np.argmax(counts))]
-        raise HybridError(f"{what} is not a manifold: the edge between vertices {edge.tolist()} belongs to "
+        edge = divmod(int(keys[np.argmax(counts)]), vertices)
+        raise HybridError(f"{what} is not a manifold: the edge between vertices {list(edge)} belongs to "
                           f"{int(counts.max())} facets; give a surface each edge of which bounds one or two facets")
-    _, counts = np.unique(directed, axis=0, return_counts=True)
+    keys, counts = np.unique(directed[:, 0] * vertices + directed[:, 1], return_counts=True)
     if counts.max() > 1:
-        edge = np.unique(directed, axis=0)[int(np.argmax(counts))]
-        raise HybridError(f"{what} is inconsistently oriented: two facets run the edge {edge.tolist()} the same way "
+        edge = divmod(int(keys[np.argmax(counts)]), vertices)
+        raise HybridError(f"{what} is inconsistently oriented: two facets run the edge {list(edge)} the same way "
                           "(their normals point to opposite sides); orient its facets alike (trimesh: "
                           "trimesh.repair.fix_winding(mesh))")
 

@@ -36,6 +36,7 @@ from hybrid.geometry.surfaces import Surface, _unit_normal
 from hybrid.native import loader
 from hybrid.spec.part import PART_STATUSES
 from hybrid.spec.surface import FORMULAS, PARAMETERS, SurfaceSpec
+from hybrid.user_warnings import PartFitWarning, warn
 from hybrid.validate import _finite, _point, shown
 
 #: the samples drawn per cell of the grid on the part's surface (area / spacing^2 of them, each)
@@ -44,11 +45,22 @@ SAMPLES_PER_CELL = 2.0
 FEWEST_SAMPLES, MOST_SAMPLES = 2_000, 400_000
 #: the shortest spacing and band [m] a fit takes
 SHORTEST = 1e-4
+#: how far a transform's rotation may be from orthonormal (``|R^T R - I|``), in its numbers' machine epsilon,
+#: and at least (a rotation in single precision's digits, read as doubles)
+ROUNDING, ROUNDING_DOUBLE = 100, 1e-6
+#: a fit that follows the part poorly (warned, :class:`~hybrid.PartFitWarning`): the median point of the part
+#: farther from the smooth surface than this share of a cell, or the median normal more than this angle [deg] off.
+#: The tests' good fits keep within 0.1 of a cell and 2.4 degrees (the Panda's link at 5 mm, a noisy scan's
+#: estimated normals); a machined edge's or a cloud's rim's few points lie in the largest error, not the median
+POOR_DISTANCE_CELLS, POOR_ANGLE_DEG = 0.25, 4.0
 #: the Newton steps :meth:`PartSurface.project` takes at most
 PROJECTION_STEPS = 20
 #: how far from the part [m] its surface is defined by default (at least three cells): the arm tip reaches into
 #: the part as far as the sensor deflects (2 cm at 20 N on the default sensor of 1000 N/m)
 DEFAULT_BAND = 0.03
+#: a smaller part's default band: this share of its size (its bounding box's diagonal), where that is less than
+#: :data:`DEFAULT_BAND` (a part under 12 cm across): a band wider than the part would be most of its grid
+BAND_SHARE = 0.25
 
 
 @dataclass(frozen=True)
@@ -67,6 +79,10 @@ class PartFit:
     normal_angle_rms_deg, normal_angle_max_deg : float
         The angle between the smooth surface's normal and the part's own (a mesh's facets' at their centroids,
         away from its edges; a cloud's given or estimated normals) [deg].
+    distance_median_m, normal_angle_median_deg : float
+        The typical point's distance [m] and normal's angle [deg] (their medians): a fit whose median distance
+        exceeds :data:`POOR_DISTANCE_CELLS` of a cell, or whose median angle exceeds :data:`POOR_ANGLE_DEG`, is
+        warned of (:class:`~hybrid.PartFitWarning`).
     """
 
     spacing_m: float
@@ -76,6 +92,23 @@ class PartFit:
     distance_max_m: float
     normal_angle_rms_deg: float
     normal_angle_max_deg: float
+    distance_median_m: float = math.nan
+    normal_angle_median_deg: float = math.nan
+
+    def poor(self) -> str | None:
+        """What makes the fit poor (:data:`POOR_DISTANCE_CELLS`, :data:`POOR_ANGLE_DEG`) and its fix, or None."""
+        if self.distance_median_m > POOR_DISTANCE_CELLS * self.spacing_m:
+            return (f"the part's points lie {self.distance_median_m * 1e3:.3g} mm from it (the median; at most "
+                    f"{POOR_DISTANCE_CELLS:g} of a cell, {POOR_DISTANCE_CELLS * self.spacing_m * 1e3:.3g} mm): give "
+                    "less smoothing, a finer spacing for features of a few cells, a mesh whose facets are finer where "
+                    "it curves (flat facets lie inside a sphere through their corners), or a cloud of one layer (its "
+                    "scans registered onto each other)")
+        if self.normal_angle_median_deg > POOR_ANGLE_DEG:
+            return (f"its normal is {self.normal_angle_median_deg:.3g} degrees from the part's (the median; at most "
+                    f"{POOR_ANGLE_DEG:g}): give a finer spacing (a tenth of the smallest radius of curvature) or less "
+                    "smoothing; a cloud's estimated normals need points spread over its surface, neither on a line "
+                    "nor doubled (or give its normals)")
+        return None
 
 
 class PartSurface(Surface):
@@ -97,7 +130,8 @@ class PartSurface(Surface):
         """The fit's spacing, band and smoothing, checked (the defaults' where None)."""
         extent = float(np.linalg.norm(np.ptp(points, axis=0)))
         spacing = _length(what, "spacing", extent / 50 if spacing is None else spacing)
-        band = _length(what, "band", max(3 * spacing, DEFAULT_BAND) if band is None else band)
+        band = _length(what, "band", max(3 * spacing, min(DEFAULT_BAND, BAND_SHARE * extent)) if band is None
+                       else band)
         _finite(what, smoothing=smoothing)
         if smoothing < 0:
             raise HybridError(f"{what}.smoothing = {smoothing}; give a weight >= 0")
@@ -136,7 +170,11 @@ class PartSurface(Surface):
         cos = np.einsum("ij,ij->i", grad, normals) / np.linalg.norm(grad, axis=1)
         angle = np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
         self.fit = PartFit(self.spacing, self.band, samples, float(np.sqrt(np.mean(distance ** 2))),
-                           float(distance.max()), float(np.sqrt(np.mean(angle ** 2))), float(angle.max()))
+                           float(distance.max()), float(np.sqrt(np.mean(angle ** 2))), float(angle.max()),
+                           float(np.median(distance)), float(np.median(angle)))
+        poor = self.fit.poor()
+        if poor is not None:
+            warn(f"{self._what} follows the part poorly: {poor} (the numbers: its .fit)", PartFitWarning)
 
     # ----------------------------------------------------------------- the surface's interface
 
@@ -257,18 +295,21 @@ class MeshSurface(PartSurface):
         outside): the tool's side, where ``phi > 0``, unless ``flip``.
     transform : array_like, optional
         The part's frame in the base axes (4 x 4 homogeneous; a rotation and a translation [m]); default the
-        identity.
+        identity. In single precision (float32, or a file's 7 digits) its rotation is orthonormal only to about
+        1e-7: it is taken within 100 times its numbers' precision (at least 1e-6) and re-orthonormalised (the
+        nearest rotation); a scale or a shear is refused.
     scale : float
         Metres per mesh unit (1e-3 for millimetres), applied before ``transform``.
     flip : bool
         True: the tool works on the other side (against the facets' normals: the inside of a bowl).
     spacing : float, optional
         The fit's grid spacing [m]: finer than the smallest radius of curvature to keep (a tenth of it keeps
-        it within about 1 %); default a fiftieth of the part's size.
+        it within about 1 %); default a fiftieth of the part's size (its bounding box's diagonal).
     band : float, optional
         How far from the part [m] ``phi`` is defined, on both sides (the tool's approach starts within it, and
         the arm tip behind a compliant sensor reaches into the part as far as the sensor deflects): default
-        :data:`DEFAULT_BAND`, at least three cells.
+        :data:`DEFAULT_BAND` (3 cm), or a quarter of the part's size (its bounding box's diagonal) where that is
+        less (:data:`BAND_SHARE`: a part under 12 cm across), and at least three cells.
     smoothing : float
         The weight of the fit's second differences (:data:`~hybrid.geometry.part_fit.SMOOTHING`).
 
@@ -277,6 +318,12 @@ class MeshSurface(PartSurface):
     HybridError
         A mesh that is empty, not a manifold, inconsistently oriented, with facets of no area or vertices
         that are not numbers, out of a robot cell's scale; a transform that is not a rigid motion.
+
+    Warns
+    -----
+    PartFitWarning
+        A fit that follows the part poorly (:meth:`PartFit.poor`: the median distance beyond a quarter of a
+        cell, or the median normal beyond 4 degrees), with the measured error and the fix.
 
     Examples
     --------
@@ -379,6 +426,12 @@ class PointCloudSurface(PartSurface):
         Too few points, points or normals that are not numbers, normals of zero length, no viewpoint without
         normals, a cloud too sparse for its spacing.
 
+    Warns
+    -----
+    PartFitWarning
+        A fit that follows the cloud poorly (as :class:`MeshSurface`'s; also a cloud on a line or of two
+        layers, whose estimated normals scatter).
+
     Examples
     --------
     The upper half of a sphere of 0.1 m, scanned from above (the normals estimated, turned to the scanner):
@@ -439,24 +492,45 @@ class PointCloudSurface(PartSurface):
 
 
 def _placed(v: np.ndarray, transform, what: str) -> np.ndarray:
-    """``v`` (V x 3) moved by the rigid ``transform`` (4 x 4; None: as it is)."""
+    """``v`` (V x 3) moved by the rigid ``transform`` (4 x 4; None: as it is), its rotation re-orthonormalised
+    (:func:`_rotation`)."""
     if transform is None:
         return v
     try:
-        T = np.asarray(transform, float)
+        given = np.asarray(transform)
+        T = given.astype(float)
     except (TypeError, ValueError):
         T = None
     if T is None or T.shape != (4, 4) or not np.isfinite(T).all():
         raise HybridError(f"{what}.transform = {shown(transform, 60)}; give the part's frame in the base as a 4 x 4 "
                           "homogeneous matrix")
-    R = T[:3, :3]
-    if not (np.allclose(R.T @ R, np.eye(3), atol=1e-9) and np.linalg.det(R) > 0
-            and np.allclose(T[3], (0, 0, 0, 1))):
-        raise HybridError(f"{what}.transform is not a rigid motion (a rotation and a translation, last row 0 0 0 1); "
-                          "give scale for a change of units")
+    R = _rotation(T, given.dtype, what)
     if v.ndim != 2 or v.shape[1:] != (3,):
         return v  # checked_mesh says what is wrong
     return v @ R.T + T[:3, 3]
+
+
+def _rotation(T: np.ndarray, dtype, what: str) -> np.ndarray:
+    """The rotation of the homogeneous ``T`` made orthonormal to double precision (the nearest rotation: ``U V^T``
+    of its singular value decomposition). Its numbers' rounding is allowed for: ``R^T R`` within
+    :data:`ROUNDING` machine epsilons of ``dtype`` of the identity, and at least :data:`ROUNDING_DOUBLE` (a
+    rotation in single precision's 7 digits, read from a file as doubles). Refused beyond: a scale, a shear, a
+    reflection, a last row that is not ``0 0 0 1``."""
+    floating = np.issubdtype(dtype, np.floating)
+    if floating and np.finfo(dtype).eps > np.finfo(np.float32).eps:
+        raise HybridError(f"{what}.transform is in {np.dtype(dtype).name}; give it in single or double precision")
+    tolerance = max(ROUNDING_DOUBLE, ROUNDING * float(np.finfo(dtype if floating else float).eps))
+    R = T[:3, :3]
+    off = float(np.abs(R.T @ R - np.eye(3)).max())
+    row = float(np.abs(T[3] - (0.0, 0.0, 0.0, 1.0)).max())
+    turned = np.linalg.det(R) <= 0
+    if off > tolerance or row > tolerance or turned:
+        raise HybridError(f"{what}.transform is not a rigid motion (a rotation and a translation, last row 0 0 0 1): "
+                          f"R^T R is {off:.2g} from the identity, its last row {row:.2g} from 0 0 0 1 (at most "
+                          f"{tolerance:.2g}, its numbers' rounding){', a reflection' if turned else ''}; give scale "
+                          "for a change of units")
+    U, _, Vt = np.linalg.svd(R)
+    return U @ Vt
 
 
 def _length(what: str, name: str, value) -> float:

@@ -71,9 +71,11 @@ class CirclePath(Path):
     >>> circle.point_at(0.0).round(6).tolist()
     [0.7, 0.0]
     >>> quarter = 0.2 * math.pi / 2  # a quarter turn [m]
-    >>> circle.point_at(quarter).round(6).tolist(), circle.tangent_at(quarter).round(6).tolist()
+    >>> (circle.point_at(quarter).round(6).tolist(),
+    ...  circle.tangent_at(quarter).round(6).tolist())
     ([0.5, 0.2], [-1.0, 0.0])
-    >>> round(circle.arc_of((0.5, 0.5)), 6)  # nearest to (0.5, 0.5): the circle's point (0.5, 0.2)
+    >>> # nearest to (0.5, 0.5): the circle's point (0.5, 0.2)
+    >>> round(circle.arc_of((0.5, 0.5)), 6)
     0.314159
     """
 
@@ -186,12 +188,14 @@ class LinePath(Path):
     Examples
     --------
     >>> import hybrid
-    >>> line = hybrid.LinePath(point=(0.4, 0.0, 0.2), direction=(0.0, 2.0, 0.0))
+    >>> line = hybrid.LinePath(point=(0.4, 0.0, 0.2),
+    ...                        direction=(0.0, 2.0, 0.0))
     >>> line.direction
     (0.0, 1.0, 0.0)
     >>> line.point_at(0.05).tolist()
     [0.4, 0.05, 0.2]
-    >>> line.arc_of((0.5, -0.1, 0.3))  # nearest to the line's point (0.4, -0.1, 0.2)
+    >>> # nearest to the line's point (0.4, -0.1, 0.2)
+    >>> line.arc_of((0.5, -0.1, 0.3))
     -0.1
     """
 

@@ -141,14 +141,19 @@ class RasterPath(_PlanarPieces):
     Three passes of 10 cm, 2 cm apart, on a horizontal plane; each turn is a semicircle of 1 cm:
 
     >>> import hybrid
-    >>> plane = hybrid.Plane(point=(0.4, 0.0, 0.2), normal=(0.0, 0.0, 1.0))
-    >>> raster = hybrid.RasterPath(plane, origin=(0.35, -0.05, 0.2), direction=(1.0, 0.0, 0.0),
-    ...                            pass_length=0.1, spacing=0.02, passes=3)
+    >>> plane = hybrid.Plane(point=(0.4, 0.0, 0.2),
+    ...                      normal=(0.0, 0.0, 1.0))
+    >>> raster = hybrid.RasterPath(plane, origin=(0.35, -0.05, 0.2),
+    ...                            direction=(1.0, 0.0, 0.0),
+    ...                            pass_length=0.1, spacing=0.02,
+    ...                            passes=3)
     >>> raster
-    RasterPath(Plane, 3 passes of 0.1 m, spacing 0.02 m, length=0.362832 m)
+    RasterPath(Plane, 3 passes of 0.1 m, spacing 0.02 m,
+               length=0.362832 m)
     >>> [(round(a, 6), round(b, 6)) for a, b in raster.pass_arcs]
     [(0.0, 0.1), (0.131416, 0.231416), (0.262832, 0.362832)]
-    >>> raster.point_at(raster.pass_arcs[1][0]).round(6).tolist()  # the second pass starts 2 cm to the side
+    >>> # the second pass starts 2 cm to the side
+    >>> raster.point_at(raster.pass_arcs[1][0]).round(6).tolist()
     [0.45, -0.03, 0.2]
     """
 
@@ -244,13 +249,16 @@ class SpiralPath(SurfacePath):
     Three turns 1 cm apart from the centre of a horizontal plane, starting along base x:
 
     >>> import hybrid
-    >>> plane = hybrid.Plane(point=(0.4, 0.0, 0.2), normal=(0.0, 0.0, 1.0))
-    >>> spiral = hybrid.SpiralPath(plane, center=(0.4, 0.0, 0.2), pitch=0.01, turns=3)
+    >>> plane = hybrid.Plane(point=(0.4, 0.0, 0.2),
+    ...                      normal=(0.0, 0.0, 1.0))
+    >>> spiral = hybrid.SpiralPath(plane, center=(0.4, 0.0, 0.2),
+    ...                            pitch=0.01, turns=3)
     >>> spiral
     SpiralPath(Plane, pitch 0.01 m, 3 turns, length=0.28603 m)
     >>> import numpy as np
     >>> end = spiral.point_at(spiral.length)
-    >>> round(float(np.linalg.norm(end - spiral.center)), 6)  # the outer end: 3 pitches from the centre [m]
+    >>> # the outer end: 3 pitches from the centre [m]
+    >>> round(float(np.linalg.norm(end - spiral.center)), 6)
     0.03
     """
 

@@ -81,14 +81,19 @@ class WaypointPath(SurfacePath):
     Examples
     --------
     >>> import hybrid
-    >>> plane = hybrid.Plane(point=(0.4, 0.0, 0.2), normal=(0.0, 0.0, 1.0))
-    >>> path = hybrid.WaypointPath(plane, [(0.35, -0.05, 0.2), (0.45, 0.0, 0.2), (0.35, 0.05, 0.2)])
+    >>> plane = hybrid.Plane(point=(0.4, 0.0, 0.2),
+    ...                      normal=(0.0, 0.0, 1.0))
+    >>> points = [(0.35, -0.05, 0.2), (0.45, 0.0, 0.2),
+    ...           (0.35, 0.05, 0.2)]
+    >>> path = hybrid.WaypointPath(plane, points)
     >>> path
     WaypointPath(Plane, 3 points, closed=False, length=0.229601 m)
-    >>> s = path.arc_of_waypoint(1)  # the arc length [m] at the middle waypoint
+    >>> # the arc length [m] at the middle waypoint
+    >>> s = path.arc_of_waypoint(1)
     >>> path.point_at(s).round(6).tolist(), path.normal_at(s).tolist()
     ([0.45, 0.0, 0.2], [0.0, 0.0, 1.0])
-    >>> round(float(path.tangent_at(s)[1]), 6)  # there the path runs along base +y (it is symmetric about y = 0)
+    >>> # there the path runs along base +y (symmetric about y = 0)
+    >>> round(float(path.tangent_at(s)[1]), 6)
     1.0
     """
 

@@ -439,9 +439,12 @@ class Robot:
         >>> import numpy as np
         >>> import hybrid
         >>> ur5 = hybrid.ur5()
-        >>> q, qd, qdd = np.full(6, 0.3), np.full(6, -0.2), np.full(6, 0.1)
-        >>> fixed = ur5.constant_unit.function("inverse_dynamics")(q, qd, qdd)["tau"]
-        >>> given = ur5.unit.function("inverse_dynamics")(q, qd, qdd, ur5.as_array())["tau"]
+        >>> q, qd = np.full(6, 0.3), np.full(6, -0.2)
+        >>> qdd = np.full(6, 0.1)
+        >>> fixed_id = ur5.constant_unit.function("inverse_dynamics")
+        >>> fixed = fixed_id(q, qd, qdd)["tau"]
+        >>> given_id = ur5.unit.function("inverse_dynamics")
+        >>> given = given_id(q, qd, qdd, ur5.as_array())["tau"]
         >>> bool(np.allclose(fixed, given, rtol=1e-12, atol=0.0))
         True
         """

@@ -109,13 +109,16 @@ def metrics(t, force_normal, velocity_tangential, force_reference, speed_referen
     >>> import hybrid
     >>> t = np.linspace(0.0, 1.0, 101)
     >>> F_d = np.where(t < 0.4, 10.0, 20.0)
-    >>> F = np.where(t < 0.4, 10.0, 20.0 - 10.0 * np.exp(-(t - 0.4) / 0.05))
+    >>> F = np.where(t < 0.4, 10.0,
+    ...              20.0 - 10.0 * np.exp(-(t - 0.4) / 0.05))
     >>> v_d = np.full_like(t, 0.3)
     >>> v = 0.3 - 0.01 * np.exp(-t / 0.1)
     >>> m = hybrid.metrics(t, F, v, F_d, v_d)
-    >>> round(m["force_settling_time_2pct_s"], 3), round(m["rms_force_error_N"], 3)
+    >>> (round(m["force_settling_time_2pct_s"], 3),
+    ...  round(m["rms_force_error_N"], 3))
     (0.17, 1.733)
-    >>> m["speed_overshoot_after_speed_step_m_per_s"]  # the speed has no step
+    >>> # the speed has no step
+    >>> m["speed_overshoot_after_speed_step_m_per_s"]
     nan
     """
     try:

@@ -67,10 +67,14 @@ class SimulationResult:
     A 50 ms run of the paper's experiment, pressing with 10 N from the start:
 
     >>> import hybrid
-    >>> result = hybrid.simulate(hybrid.paper_experiment(duration=0.05))
-    >>> result.t.shape, result.q.shape  # 0.05 s in steps of 0.1 ms; two joints
+    >>> experiment = hybrid.paper_experiment(duration=0.05)
+    >>> result = hybrid.simulate(experiment)
+    >>> # 0.05 s in steps of 0.1 ms; two joints
+    >>> result.t.shape, result.q.shape
     ((501,), (501, 2))
-    >>> round(float(result.force_normal[-1]), 1), float(result.force_reference[-1])  # [N]
+    >>> # [N]
+    >>> (round(float(result.force_normal[-1]), 1),
+    ...  float(result.force_reference[-1]))
     (9.9, 10.0)
     >>> result.record["outputs"][:4]
     ('r_x', 'r_y', 'v_t', 'v_n')
