@@ -9,7 +9,8 @@ names, flags and numbers) or kernels they returned, and give kernels or generate
 - the paper's planar arm in closed form: :func:`planar_kernels`, :func:`build_planar_unit` (one
   backend of ``BACKENDS``: the committed ``generated/hybrid_<backend>.*``);
 - any serial chain: :func:`build_robot_unit` (terms, dynamics, operational space; :func:`robot_kernels`,
-  and with the parameters compiled in, :func:`constant_kernels`),
+  and with the parameters compiled in, :func:`constant_kernels`), :func:`build_inertia_unit` (the inertia
+  ``B(q)`` alone),
   :func:`build_regressor_unit` (the joint-torque regressor ``tau = Y pi``),
   :func:`law_kernels` / :func:`build_law_unit` (the decoupling law on a surface),
   :func:`build_frame_unit` (the task frame), :func:`controller_kernels` /
@@ -44,6 +45,7 @@ from .regressor import build_regressor_unit
 from .robot_unit import (
     build_controller_unit,
     build_frame_unit,
+    build_inertia_unit,
     build_law_unit,
     build_plant_unit,
     build_robot_unit,
@@ -66,8 +68,8 @@ def shared_headers() -> dict[str, str]:
 
 
 __all__ = ["BACKENDS", "LANES_HEADER", "PART_HEADER", "PATH_HEADER", "LoopSpec", "Unit", "build_closed_loop_unit",
-           "build_controller_unit", "build_frame_unit", "build_law_unit", "build_planar_unit", "build_plant_unit",
-           "build_regressor_unit", "build_robot_unit", "build_standalone_controller", "build_standalone_plant",
-           "constant_kernels", "controller_kernels",
+           "build_controller_unit", "build_frame_unit", "build_inertia_unit", "build_law_unit", "build_planar_unit",
+           "build_plant_unit", "build_regressor_unit", "build_robot_unit", "build_standalone_controller",
+           "build_standalone_plant", "constant_kernels", "controller_kernels",
            "kernel_function", "law_kernels", "path_header", "phi_sx", "planar_kernels", "plant_kernels",
            "robot_kernels", "safe_stop_kernel", "shared_headers", "template_environment"]

@@ -71,6 +71,28 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
     return (*kernels, urdf)
 
 
+def inertia_kernel(chain: rb.Chain) -> Kernel:
+    """``inertia``: the joint-space inertia ``B(q)`` alone, by the body-frame CRBA ``robot_terms`` forms it
+    with (the benchmarks set it beside other implementations' CRBA)."""
+    names = tuple(j.name for j in chain.joints)
+    q, params = ca.SX.sym("q", chain.n), ca.SX.sym("robot", len(rb.parameter_names(chain)))
+    B = bf.crba(bf.link_transforms(chain, q), params)
+    return Kernel("inertia", (Arg("q", q, rb.joint_units(chain, "q"), names=names),
+                              Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain))),
+                  (Arg("B", rb.row_major(B), "kg m^2", (chain.n, chain.n)),), "inertia B(q) (CRBA), row-major")
+
+
+def build_inertia_unit(chain: rb.Chain, prefix: str, info: dict, values=None) -> Unit:
+    """C source, header and manifest of ``chain``'s :func:`inertia_kernel` alone; with ``values`` (a
+    robot's array), compiled into it (:mod:`.constant_model`: the kernel then takes no ``robot`` array)."""
+    kernels, model = constant_kernels((inertia_kernel(chain),), values) if values is not None else (
+        (inertia_kernel(chain),), {})
+    return assemble(prefix, "casadi", kernels,
+                    f"joint-space inertia of the {chain.n}-joint serial arm '{info.get('robot', prefix)}'"
+                    + (", its parameters compiled in" if values is not None else ""),
+                    info={"robot": info, **model}, tool=f"CasADi {ca.__version__}", defines={"NQ": chain.n})
+
+
 def build_robot_unit(chain: rb.Chain, prefix: str, info: dict, defaults=None, constant: bool = False) -> Unit:
     """C source, header and manifest of ``chain``'s kernels, deterministic in its inputs.
 

@@ -8,7 +8,7 @@ import pytest
 from hybrid.codegen import casadi_backend, controller_step, spatial_plant
 
 from hybrid import bench
-from hybrid.bench import harness, robots, runs, standalone, targets
+from hybrid.bench import harness, pinocchio_codegen, robots, runs, standalone, targets
 from hybrid.bench.groups import benchmark_groups, select_groups
 from hybrid.bench.report import format_table
 from hybrid.cli.main import main
@@ -34,6 +34,11 @@ def test_bench_quick_reports_every_benchmark():
         assert part in names
     if hasattr(os, "sched_setaffinity"):
         assert f"ur5: {targets.LAW_BATCHED_ONE_CORE}" in names
+    if pinocchio_codegen.missing() is None:  # every side of each function, on both arms
+        for arm in ("ur5", "panda"):
+            for function in pinocchio_codegen.FUNCTIONS:
+                assert {f"{arm}: {targets.dynamics_row(function, side)}" for side in pinocchio_codegen.SIDES} <= set(
+                    r["name"] for r in report["results"])
     assert all(r["median"] > 0 for r in report["results"])
     # the targets are reported (met or not), never asserted
     assert {r["name"] for r in report["results"] if "target" in r} >= {

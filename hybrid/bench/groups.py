@@ -8,6 +8,7 @@ from functools import partial
 
 from hybrid.bench.constant_model import ARMS as CONSTANT_ARMS
 from hybrid.bench.constant_model import constant_model_benchmarks
+from hybrid.bench.dynamics import dynamics_benchmarks
 from hybrid.bench.excitation import excitation_benchmarks
 from hybrid.bench.first_use import cold_benchmarks, import_benchmarks
 from hybrid.bench.identification import identification_benchmarks
@@ -55,6 +56,9 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
               ("regenerate from scratch", law.regenerate)]
     groups += [(f"{name}: generation, compilation, terms in C, from Python and by Pinocchio",
                 partial(robot_benchmarks, name, path, tip, rep, quick, add)) for name, (path, tip) in ROBOTS.items()]
+    groups += [(f"{name}: RNEA, forward dynamics, CRBA and the terms in C against Pinocchio's code generation "
+                "(CppADCodeGen; its generator's first build takes minutes)",
+                partial(dynamics_benchmarks, name, path, tip, rep, quick, add)) for name, (path, tip) in ROBOTS.items()]
     groups += [(f"{name}: inverse and forward dynamics and terms in C, a constant model against run-time parameters",
                 partial(constant_model_benchmarks, name, rep, quick, add)) for name in CONSTANT_ARMS]
     groups += [(f"{name}: the 6-D decoupling law in C, from Python, batched (both cores, one core), "

@@ -39,7 +39,8 @@ ROBOTS = {"ur5": ("ur5_robot.urdf", "tool0"), "panda": ("panda.urdf", "panda_han
 SPHERE = (0.45, 0.1, 0.3, 0.15)
 
 
-def _shipped_urdf(name: str) -> Path | None:
+def shipped_urdf(name: str) -> Path | None:
+    """The file ``name`` of the example-robot-data package; None where it is not installed."""
     try:
         from importlib.metadata import distribution
 
@@ -73,7 +74,7 @@ def _pinocchio_terms(pin, path: Path, robot, tip: str):
 def robot_benchmarks(name: str, urdf: str, tip: str, rep: int, quick: bool, add) -> None:
     """Terms of a URDF arm: in C, from Python (one state, batched), by Pinocchio; generation time, code size."""
 
-    path = _shipped_urdf(urdf)
+    path = shipped_urdf(urdf)
     if path is None:
         print(f"  (skipped {name}: pip install example-robot-data)", file=sys.stderr)
         return
@@ -124,7 +125,7 @@ def alone_is_bitwise(law, batch: tuple[np.ndarray, ...], rows: tuple[int, ...] |
 def _arm_on_sphere(urdf: str, tip: str) -> tuple[Path, Robot, Sphere] | None:
     """The shipped arm ``urdf``'s file, its chain to ``tip`` and the benchmarks' sphere; None where the arm
     is not installed."""
-    path = _shipped_urdf(urdf)
+    path = shipped_urdf(urdf)
     return None if path is None else (path, Robot.from_urdf(path, tip=tip), Sphere(SPHERE[:3], SPHERE[3]))
 
 

@@ -44,6 +44,27 @@ STEP_IN_C = "controller step in C (measurement, six loops, law), per sample"
 STEP_ONE = "controller step from Python, per sample (ctrl(t, q, qdot, Fc))"
 GEN_COMPILE = "generate + compile, fresh cache and process"
 
+# ------------------------------------------------------------------ against Pinocchio's code generation (after "ARM: ")
+
+#: each function compared with Pinocchio's generated code (by its name there): what it computes, and our
+#: entry point
+DYNAMICS = {"rnea": ("RNEA", "inverse_dynamics"),
+            "aba": ("forward dynamics", "forward_dynamics; Pinocchio's: ABA"),
+            "crba": ("CRBA", "inertia, a unit of its own"),
+            "terms": ("r, rotation, J, J'q', B, n", "robot_terms")}
+
+
+def dynamics_row(function: str, side: str) -> str:
+    """The name of a row comparing the ``function`` of :data:`DYNAMICS`, on one side: ``ours`` (the robot
+    array at run time), ``constant`` (our constant model) or ``pinocchio``."""
+    what, ours = DYNAMICS[function]
+    if side == "pinocchio":
+        return f"{what} by Pinocchio's code generation (CppADCodeGen), per call"
+    if side == "constant":
+        return f"{what} in C, constant model, beside Pinocchio's code generation, per call"
+    return f"{what} in C beside Pinocchio's code generation, per call ({ours})"
+
+
 # ------------------------------------------------------------------ runs and sweeps
 
 ONE_RUN = "paper run through hybrid.simulate (2 s simulated)"

@@ -137,6 +137,28 @@ def _constant_robot_unit(chain, name: str, exact: tuple[str, ...]) -> Unit:
 
 
 @cache
+def inertia_unit(chain, name: str) -> Unit:
+    """The joint-space inertia ``B(q)`` of ``chain`` alone (the CRBA of :func:`robot_unit`'s terms), compiled."""
+    prefix = c_identifier(f"hybrid_{name}_crba")
+    return compiled(prefix, {"chain": chain_key(chain), "inertia": 1},
+                    lambda: generator.api().build_inertia_unit(chain, prefix, robot_info(chain, name)))
+
+
+def constant_inertia_unit(chain, name: str, values) -> Unit:
+    """:func:`inertia_unit` with the ``robot`` array ``values`` compiled in (a constant model), compiled;
+    cached by :func:`constant_key`."""
+    return _constant_inertia_unit(chain, name, rb.exact_values(values))
+
+
+@cache
+def _constant_inertia_unit(chain, name: str, exact: tuple[str, ...]) -> Unit:
+    prefix = c_identifier(f"hybrid_{name}_constant_crba")
+    values = [float.fromhex(v) for v in exact]
+    return compiled(prefix, {**constant_key(chain, values), "inertia": 1},
+                    lambda: generator.api().build_inertia_unit(chain, prefix, robot_info(chain, name), values))
+
+
+@cache
 def regressor_unit(chain, name: str) -> Unit:
     """The joint-torque regressor of ``chain`` (``tau = Y pi``), compiled."""
     prefix = c_identifier(f"hybrid_{name}_regressor")
