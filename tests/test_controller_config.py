@@ -383,7 +383,8 @@ def test_generate_without_a_controller_file_is_unchanged(tmp_path, recorded, mon
     calls = []
     monkeypatch.setattr("hybrid.cli.main.generate", lambda *a, **k: calls.append((a, k)) or [tmp_path / "x.c"])
     assert main(["generate", "--urdf", "arm.urdf", "--tip", "tool0", "--out", str(tmp_path), "--lock", "j1=0.5"]) == 0
-    assert calls == [(("arm.urdf", "tool0", str(tmp_path), None, {"j1": 0.5}), {"force": False, "constant_model": False})]
+    assert calls == [(("arm.urdf", "tool0", str(tmp_path), None, {"j1": 0.5}),
+                      {"force": False, "constant_model": False})]
     assert recorded == []
     assert "--controller CONFIG.toml" in main_help(capsys)
 
