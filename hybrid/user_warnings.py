@@ -61,13 +61,17 @@ class PartFitWarning(UserWarning):
 
     >>> import warnings
     >>> import hybrid, numpy as np
-    >>> v = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]) * 0.05
-    >>> f = [[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1], [2, 3, 7], [2, 7, 6],
-    ...      [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]]
+    >>> corners = [(x, y, z) for x in (-1, 1) for y in (-1, 1)
+    ...            for z in (-1, 1)]
+    >>> v = 0.05 * np.array(corners)
+    >>> f = [[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5],
+    ...      [0, 5, 1], [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4],
+    ...      [1, 5, 7], [1, 7, 3]]
     >>> with warnings.catch_warnings():
     ...     warnings.simplefilter("error", hybrid.PartFitWarning)
     ...     try:
-    ...         hybrid.MeshSurface(v, f, spacing=0.01, band=0.03, smoothing=100.0)
+    ...         hybrid.MeshSurface(v, f, spacing=0.01, band=0.03,
+    ...                            smoothing=100.0)
     ...     except hybrid.PartFitWarning as poor:
     ...         print(str(poor).split(":")[0])
     MeshSurface follows the part poorly
