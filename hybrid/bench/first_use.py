@@ -45,10 +45,9 @@ FIRST_RUN = ("import json, time; t0 = time.perf_counter(); import hybrid; t1 = t
              "print(json.dumps({'import_s': t1 - t0, 'simulate_s': t2 - t1}))")
 
 #: a fresh process's first sweep of the paper's experiment and the same sweep again, warm (one JSON line; the
-#: grid as the sweeps' rows of :mod:`hybrid.bench.runs` take it: {runs} runs over every core)
-FIRST_SWEEP_RUN = ("import json, time, numpy as np; import hybrid; exp = hybrid.paper_experiment(); "
-                   "grid = {{'model_error': list(np.linspace(0.0, 0.5, {runs} // 4)), "
-                   "'controller': ['task', 'khatib'], 'contact.friction': [0.1, 0.2]}}; "
+#: grid of the sweeps' rows, :func:`hybrid.bench.runs.paper_sweep_grid`: {runs} runs over every core)
+FIRST_SWEEP_RUN = ("import json, time; import hybrid; from hybrid.bench.runs import paper_sweep_grid; "
+                   "exp, grid = hybrid.paper_experiment(), paper_sweep_grid({runs}); "
                    "t0 = time.perf_counter(); hybrid.sweep(exp, grid); t1 = time.perf_counter(); "
                    "hybrid.sweep(exp, grid); t2 = time.perf_counter(); "
                    "print(json.dumps({{'first_s': t1 - t0, 'warm_s': t2 - t1}}))")

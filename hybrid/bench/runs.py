@@ -29,6 +29,12 @@ from hybrid.simulation.runner import simulate
 from hybrid.sweeps import apply, sweep
 
 
+def paper_sweep_grid(runs: int) -> dict[str, list]:
+    """The paper sweeps' grid of ``runs`` runs: the model error, both schemes, two frictions."""
+    return {"model_error": list(np.linspace(0.0, 0.5, runs // 4)), "controller": ["task", "khatib"],
+            "contact.friction": [0.1, 0.2]}
+
+
 def sweep_benchmarks(quick: bool, add) -> None:
     """One paper run through ``simulate``, against its share of a lanes batch; the compiled loop per
     run on one core; sweeps of 1,000 and 10,000 paper runs over every core (with ``quick``: 100 runs,
@@ -51,8 +57,7 @@ def sweep_benchmarks(quick: bool, add) -> None:
     mix_share = median_ns(lambda: closed_loop.run(mix), 1, 3 if quick else 5) / 1e6 / len(mix)
     for total, name in ((1000, SWEEP_1000), (10000, SWEEP_10000)):
         n = 100 if quick else total
-        grid = {"model_error": list(np.linspace(0.0, 0.5, n // 4)), "controller": ["task", "khatib"],
-                "contact.friction": [0.1, 0.2]}
+        grid = paper_sweep_grid(n)
         t0 = time.perf_counter()
         table = sweep(exp, grid)
         per_run = (time.perf_counter() - t0) / len(table)

@@ -12,7 +12,7 @@ from __future__ import annotations
 import functools
 import inspect
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, fields, replace
+from dataclasses import dataclass, fields
 from typing import Any
 
 from hybrid.control.fault import FaultReaction
@@ -308,8 +308,8 @@ class GroupedSettings:
     _settings: dict[str, Any]
 
     def _group(self, cls: type[_Group]):
-        given = {f.name: self._settings[f.name] for f in fields(cls)}
-        return replace(cls(**given), **{name: getattr(self, name) for name in _LIVE if name in given})
+        return cls(**{f.name: getattr(self, f.name) if f.name in _LIVE else self._settings[f.name]
+                      for f in fields(cls)})
 
     @property
     def tracking(self) -> Tracking:
