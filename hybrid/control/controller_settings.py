@@ -282,10 +282,11 @@ def grouped(init: Callable) -> Callable:
                 continue
             if not isinstance(group, cls):
                 raise HybridError(f"{keyword} = {shown(group, 60)}; give a hybrid.{cls.__name__}(...) or None")
-            twice = [name for name in group.as_keywords() if name in kwargs]
+            given = group.as_keywords()
+            twice = [name for name in given if name in kwargs]
             if twice:
                 raise HybridError(f"{twice[0]} is given twice, as a keyword and in {keyword}=; give it once")
-            kwargs.update(group.as_keywords())
+            kwargs.update(given)
         init(self, *args, **kwargs)
 
     parameters = list(flat.parameters.values())
@@ -296,7 +297,7 @@ def grouped(init: Callable) -> Callable:
 
 
 #: every setting of the three groups, by name
-SETTINGS = frozenset(name for cls in GROUPS.values() for name in (f.name for f in fields(cls)))
+SETTINGS = frozenset(f.name for cls in GROUPS.values() for f in fields(cls))
 #: the settings that may change after the controller is built (read back as they are now)
 _LIVE = ("sample_time", "timing_tolerance", "singular_tol", "wrench_sensor")
 
