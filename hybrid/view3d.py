@@ -248,8 +248,9 @@ def view(result, every: int | None = None, *, force_scale: float | None = None, 
     path = _out_path(out)
     samples = chosen_samples(result, every)
     fps = playback_fps(result, samples, fps)
-    frames = arm_frames(result, samples, force_scale)  # checks force_scale
-    scale = default_force_scale(result) if force_scale is None else float(force_scale)
+    scale = default_force_scale(result) if force_scale is None else force_scale
+    frames = arm_frames(result, samples, scale)  # checks force_scale
+    scale = float(scale)
     force_label = f"{MOVING[3]} ({1e3 * scale:.3g} mm/N)"
     planar = not is_spatial(result)
 

@@ -258,23 +258,21 @@ def race(robot, urdf: Path, tip: str, counted: bool = False) -> Race:
         _run([cc, *(f for f in flags if f != "-fPIC"), *(f"-I{u.folder}" for u in built), str(folder / "race.c"),
               "-o", str(program), f"-L{folder}", "-l:libhybrid_side.so",
               "-l:libpinocchio_side.so", f"-Wl,-rpath,{folder}", "-lm"], "compiling the race program")
-        write_checksum(record, digest(program.read_bytes()),
-                       libraries={p.name: digest(p.read_bytes()) for p in libraries})
+        for p in libraries:  # each as the cache records a library: checked whole before the program loads it
+            write_checksum(_record_of(p), digest(p.read_bytes()))
+        write_checksum(record, digest(program.read_bytes()))
 
-    once(folder, lambda: library_intact(program, record) and _libraries_intact(libraries, record), make)
+    once(folder, lambda: library_intact(program, record)
+         and all(library_intact(p, _record_of(p)) for p in libraries), make)
     symbols = {side: {"rnea": f"{unit}_inverse_dynamics", "aba": f"{unit}_forward_dynamics",
                       "crba": f"{inertia}_inertia", "terms": f"{unit}_robot_terms"}
                for side, unit, inertia in (("ours", *prefixes[:2]), ("constant", *prefixes[2:]))}
     return Race(program, robot.n, symbols)
 
 
-def _libraries_intact(libraries: list[Path], record: Path) -> bool:
-    """Whether each of ``libraries`` is the one ``record`` recorded (its checksum)."""
-    try:
-        recorded = json.loads(record.read_text())["libraries"]
-        return all(recorded[p.name] == digest(p.read_bytes()) for p in libraries)
-    except (OSError, ValueError, KeyError, TypeError):
-        return False
+def _record_of(library: Path) -> Path:
+    """The file recording ``library``'s checksum (:func:`hybrid.native.cache.write_checksum`)."""
+    return library.with_name(f"{library.name}.json")
 
 
 def _frictionless(robot):

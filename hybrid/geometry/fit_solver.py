@@ -85,7 +85,9 @@ def multilevel(unknown: np.ndarray, diagonal: np.ndarray,
     residual ``r`` of the ``unknown`` coefficients (a mask of the grid), ``diagonal`` the normal matrix's and
     ``coarse_diagonals`` those of ``P_l^T N P_l`` on the grids ``l = 1, 2, ...`` levels coarse (each of
     :func:`coarse_shape` of the one before; zero where no unknown is reached)."""
-    inverse = [np.divide(1.0, d, out=np.zeros_like(d), where=d > 0) for d in coarse_diagonals]
+    # each coarse level's inverse diagonal with its weight w^l, taken once (the same products at every iteration)
+    weighted = [LEVEL_WEIGHT ** level * np.divide(1.0, d, out=np.zeros_like(d), where=d > 0)
+                for level, d in enumerate(coarse_diagonals, start=1)]
     shapes = [unknown.shape]
     for _ in coarse_diagonals:
         shapes.append(coarse_shape(shapes[-1]))
@@ -94,12 +96,11 @@ def multilevel(unknown: np.ndarray, diagonal: np.ndarray,
         full = np.zeros(unknown.shape)
         full[unknown] = r
         residuals = [full]
-        for _ in inverse:
+        for _ in weighted:
             residuals.append(coarsened(residuals[-1]))
         correction = np.zeros(shapes[-1])
-        for level in range(len(inverse), 0, -1):  # from the coarsest: each level's correction, then refined
-            correction = refined(correction + LEVEL_WEIGHT ** level * inverse[level - 1] * residuals[level],
-                                 shapes[level - 1])
+        for level in range(len(weighted), 0, -1):  # from the coarsest: each level's correction, then refined
+            correction = refined(correction + weighted[level - 1] * residuals[level], shapes[level - 1])
         return r / diagonal + correction[unknown]
 
     return apply

@@ -118,7 +118,11 @@ def robot_unit(chain, name: str) -> Unit:
 def constant_key(chain, values) -> dict:
     """What a constant model of ``chain`` with the ``robot`` array ``values`` is cached by: the structure
     and the numbers exactly (:func:`hybrid.spec.chain.exact_values`: one ulp apart are two models)."""
-    return {"chain": chain_key(chain), "constant": list(rb.exact_values(values))}
+    return _exact_key(chain, rb.exact_values(values))
+
+
+def _exact_key(chain, exact: tuple[str, ...]) -> dict:
+    return {"chain": chain_key(chain), "constant": list(exact)}
 
 
 def constant_robot_unit(chain, name: str, values) -> Unit:
@@ -131,7 +135,7 @@ def constant_robot_unit(chain, name: str, values) -> Unit:
 def _constant_robot_unit(chain, name: str, exact: tuple[str, ...]) -> Unit:
     prefix = c_identifier(f"hybrid_{name}_constant")
     values = [float.fromhex(v) for v in exact]
-    return compiled(prefix, constant_key(chain, values),
+    return compiled(prefix, _exact_key(chain, exact),
                     lambda: generator.api().build_robot_unit(chain, prefix, robot_info(chain, name), values,
                                                              constant=True))
 
@@ -154,7 +158,7 @@ def constant_inertia_unit(chain, name: str, values) -> Unit:
 def _constant_inertia_unit(chain, name: str, exact: tuple[str, ...]) -> Unit:
     prefix = c_identifier(f"hybrid_{name}_constant_crba")
     values = [float.fromhex(v) for v in exact]
-    return compiled(prefix, {**constant_key(chain, values), "inertia": 1},
+    return compiled(prefix, {**_exact_key(chain, exact), "inertia": 1},
                     lambda: generator.api().build_inertia_unit(chain, prefix, robot_info(chain, name), values))
 
 
