@@ -347,16 +347,18 @@ def links(tree: Tree, params) -> list[Link]:
     return out
 
 
-def rnea(tree: Tree, params, qd, qdd=None, f_ext=None, velocities=None, bodies=None) -> ca.SX:
+def rnea(tree: Tree, params, qd, qdd=None, f_ext=None, velocities=None, bodies=None, friction=None) -> ca.SX:
     """``tau = B q'' + n(q, q') - sum_i J_i^T f_ext_i`` by the recursive Newton-Euler algorithm in
     body coordinates (Featherstone table 5.1; ``q'' = 0`` when ``qdd`` is None): Coriolis and
     centrifugal terms, gravity (the base's fictitious acceleration ``-g``) and joint friction
     (:func:`.rigid_body.joint_friction`). ``f_ext`` maps a link's index to the force ``(n, f)`` the environment
     exerts on it, in its coordinates. ``velocities`` reuses :func:`link_velocities`'. ``bodies``
     (anything with ``wrench``, one per link in the tree's frames) stands for the links of ``params``,
-    whose friction and gravity are still read."""
+    whose friction and gravity are still read; ``friction`` (the joints' torques) stands for
+    :func:`.rigid_body.joint_friction`'s."""
     n = tree.n
-    friction, g = joint_friction(tree.chain, params, qd), gravity(tree.chain, params)
+    g = gravity(tree.chain, params)
+    friction = friction or joint_friction(tree.chain, params, qd)
     bodies = bodies or links(tree, params)
     vs = velocities or link_velocities(tree, qd)
     zero = ca.SX.zeros(3, 1)

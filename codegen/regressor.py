@@ -57,7 +57,9 @@ def regressor_kernel(chain: rb.Chain) -> Kernel:
     # the robot array the RNEA reads its friction and gravity from (the FRICTION blocks: the linear ones,
     # then the smooth sign's speeds); its inertial entries are unused
     robot = ca.vertcat(ca.SX.zeros(len(rb.INERTIAL) * n), pi[len(rb.LINEAR) * n:], vs, g)
-    tau = bf.rnea(tree, robot, qd, qdd, bodies=link_inertias(tree, pi))
+    # the Coulomb term as a plain product: the run-time branch on F_c = 0 would make Y depend on F_c
+    friction = rb.joint_friction(chain, robot, qd, linear=True)
+    tau = bf.rnea(tree, robot, qd, qdd, bodies=link_inertias(tree, pi), friction=friction)
     Y = ca.jacobian(tau, pi)
     if ca.depends_on(Y, pi):
         raise ValueError("the regressor depends on the parameters: tau is not linear in them")

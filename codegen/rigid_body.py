@@ -320,12 +320,18 @@ def gravity(chain: Chain, params) -> ca.SX:
     return ca.vertcat(*(params[base + i] for i in range(3)))
 
 
-def joint_friction(chain: Chain, params, qd) -> list:
+def joint_friction(chain: Chain, params, qd, linear: bool = False) -> list:
     """Each joint's friction torque ``F_v q' + F_c tanh(q' / v_s) + tau_0`` (the :data:`FRICTION` blocks of
-    the ``robot`` array): viscous, Coulomb with a smooth sign of speed ``v_s > 0``, and an offset."""
+    the ``robot`` array): viscous, Coulomb with a smooth sign of speed ``v_s > 0``, and an offset. With
+    ``linear``, the Coulomb term is the product itself, with no branch on ``F_c``: linear in ``F_c``."""
     base, n = len(INERTIAL) * chain.n, chain.n
     Fv, Fc, tau0, vs = ([params[base + b * n + i] for i in range(n)] for b in range(len(FRICTION)))
-    return [Fv[i] * qd[i] + Fc[i] * ca.tanh(qd[i] / vs[i]) + tau0[i] for i in range(n)]
+    # F_c = 0 (every shipped arm's) gives exactly 0 without the smooth sign: the C branches past its
+    # division and tanh (a hundred instructions each joint), where 0 * tanh would compute them
+    coulomb = [Fc[i] * ca.tanh(qd[i] / vs[i]) for i in range(n)]
+    if not linear:
+        coulomb = [ca.if_else(Fc[i] != 0, c, 0) for i, c in enumerate(coulomb)]
+    return [Fv[i] * qd[i] + coulomb[i] + tau0[i] for i in range(n)]
 
 
 def crba(chain: Chain, frames: Frames, params, inertias: list[Inertia] | None = None) -> ca.SX:
