@@ -99,6 +99,12 @@ def kernel_function(kernel: Kernel, sympy_cse: bool = False) -> ca.Function:
 
 _FUNCTION_START = re.compile(r"^(?:static int (casadi_f\d+)|casadi_real (casadi_\w+))\(", re.M)
 _SPARSITY = re.compile(r"^#define casadi_s\d+ .*$\n?", re.M)
+#: CasADi's statements ``aN=sin(aM);`` and ``aN=cos(aM);``: the kernels take the inline ones of
+#: ``templates/hybrid_sincos.c.j2`` instead of the C library's calls
+_SINCOS = re.compile(r"(?<==)(sin|cos)\(")
+#: CasADi's reads and writes that test their array for NULL first: a core passes every array (the
+#: caller's, which the header requires), and tested at every element they cost a branch each
+_READ, _WRITE = re.compile(r"arg\[(\d+)\]\? (arg\[\1\]\[\d+\]) : 0;"), re.compile(r"if \(res\[\d+\]!=0\) (?=res\[)")
 
 
 def _function_at(text: str, start: int) -> str:
@@ -116,7 +122,9 @@ def kernel_sources(kernels: list[Kernel], prefix: str) -> tuple[str, dict[str, t
 
     Returns ``(code, {kernel name: (casadi function name, sz_w)})``. Kept from CasADi's
     file: its symbol-prefix macros, its math helpers (made ``static``) and its static
-    kernels; dropped: its exported API, version stamp and sparsity tables.
+    kernels; dropped: its exported API, version stamp and sparsity tables. The kernels' sines and
+    cosines are ``hybrid_sin`` and ``hybrid_cos`` (``templates/hybrid_sincos.c.j2``, which the unit
+    includes before them), and they read and write their arrays without testing each for NULL.
     """
     cg = ca.CodeGenerator(f"{prefix}.c", {"with_header": False, "casadi_real": "double",
                                            "casadi_int": "int", "prefix": f"{prefix}_"})
@@ -132,7 +140,8 @@ def kernel_sources(kernels: list[Kernel], prefix: str) -> tuple[str, dict[str, t
             names.append(m.group(1))
             # the work array is ours to size; CasADi's mem and iw go unused
             head, rest = body.split("{", 1)
-            kernels_c.append(f"{head}{{\n  (void)arg; (void)iw; (void)mem; (void)w;{rest}")
+            body = f"{head}{{\n  (void)arg; (void)iw; (void)mem; (void)w;{rest}"
+            kernels_c.append(_WRITE.sub("", _READ.sub(r"\2;", _SINCOS.sub(r"hybrid_\1(", body))))
         else:
             helpers.append("static " + body)
     if len(names) != len(funcs):

@@ -7,12 +7,15 @@ The units are generated in a fresh cache (the generator runs, nothing is read ba
 from __future__ import annotations
 
 import ast
+import ctypes
+import math
 import re
 import shutil
 import subprocess
 from pathlib import Path
 
 import jinja2
+import numpy as np
 import pytest
 from hybrid.codegen import closed_loop, part_grid, path_follow, robot_unit, templates
 
@@ -181,3 +184,39 @@ def test_the_headers_compile_on_their_own_and_are_included_not_copied(tmp_path):
         text = unit.read_text()
         assert '#include "hybrid_lanes.h"' in text and first_function not in text, unit.name
     assert (generated / "hybrid_lanes.h").read_text().endswith(lanes)
+
+
+@pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")
+@pytest.mark.parametrize("build", ["strict", "native"])
+def test_the_kernels_sine_and_cosine_are_the_c_librarys_within_an_ulp(tmp_path, build):
+    """``hybrid_sin`` and ``hybrid_cos`` (the CasADi kernels' inline ones) against the C library's, through
+    Python's math module, on angles from 1e-300 to beyond their polynomial's span, with the signs of zero, the
+    quadrants' edges, infinities and NaN; for the portable build and this machine's (fused multiply-adds)."""
+    source = tmp_path / "sincos.c"
+    source.write_text("#include <math.h>\n" + templates.render("hybrid_sincos.c.j2") +
+                      "void both(const double *x, double *s, double *c, int n) {\n"
+                      "    int i;\n    for (i = 0; i < n; ++i) { s[i] = hybrid_sin(x[i]); c[i] = hybrid_cos(x[i]); }\n}\n")
+    flags = ["-std=c99", "-O2", "-Wall", "-Wextra", "-Werror", "-pedantic"] + (["-march=native"] if build == "native"
+                                                                                else ["-ffp-contract=off"])
+    library = tmp_path / "sincos.so"
+    done = subprocess.run(["gcc", *flags, "-shared", "-fPIC", str(source), "-o", str(library), "-lm"],
+                          capture_output=True, text=True)
+    assert done.returncode == 0 and not done.stderr, done.stderr
+    rng = np.random.default_rng(7)
+    x = np.concatenate([rng.uniform(-4, 4, 20_000), rng.uniform(-200, 200, 20_000), rng.uniform(-1.1e5, 1.1e5, 5000),
+                        10.0 ** rng.uniform(-300, 0, 2000) * rng.choice([-1, 1], 2000),
+                        np.arange(-64, 65) * np.pi / 4, np.nextafter(np.arange(-64, 65) * np.pi / 4, np.inf),
+                        [0.0, -0.0, 1e5, -1e5, np.nextafter(1e5, np.inf), 1e300, np.inf, -np.inf, np.nan]])
+    lib = ctypes.CDLL(str(library))
+    s, c = np.empty_like(x), np.empty_like(x)
+    pointer = ctypes.POINTER(ctypes.c_double)
+    lib.both(*(a.ctypes.data_as(pointer) for a in (x, s, c)), ctypes.c_int(len(x)))
+    for ours, theirs in ((s, np.array([math.sin(v) if math.isfinite(v) else math.nan for v in x])),
+                         (c, np.array([math.cos(v) if math.isfinite(v) else math.nan for v in x]))):
+        finite = np.isfinite(theirs)
+        assert np.array_equal(np.isnan(ours), ~finite)
+        ulps = np.abs(ours[finite] - theirs[finite]) / np.spacing(np.abs(theirs[finite]))
+        # within an ulp for the angles of joints; within two out to the polynomial's span (|x| <= 1e5)
+        assert ulps.max() <= 2.0, (ulps.max(), x[finite][ulps.argmax()])
+        assert ulps[np.abs(x[finite]) <= 200].max() <= 1.0
+        assert np.array_equal(np.signbit(ours[finite & (theirs == 0)]), np.signbit(theirs[finite & (theirs == 0)]))
