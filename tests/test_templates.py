@@ -195,7 +195,8 @@ def test_the_kernels_sine_and_cosine_are_the_c_librarys_within_an_ulp(tmp_path, 
     source = tmp_path / "sincos.c"
     source.write_text("#include <math.h>\n" + templates.render("hybrid_sincos.c.j2") +
                       "void both(const double *x, double *s, double *c, int n) {\n"
-                      "    int i;\n    for (i = 0; i < n; ++i) { s[i] = hybrid_sin(x[i]); c[i] = hybrid_cos(x[i]); }\n}\n")
+                      "    int i;\n"
+                      "    for (i = 0; i < n; ++i) { s[i] = hybrid_sin(x[i]); c[i] = hybrid_cos(x[i]); }\n}\n")
     flags = ["-std=c99", "-O2", "-Wall", "-Wextra", "-Werror", "-pedantic"] + (["-march=native"] if build == "native"
                                                                                 else ["-ffp-contract=off"])
     library = tmp_path / "sincos.so"
