@@ -3,7 +3,10 @@
 from __future__ import annotations
 
 import dataclasses
+import difflib
+import functools
 import hashlib
+import inspect
 import keyword
 import math
 import os
@@ -27,6 +30,53 @@ def _finite(owner: str, **values: float) -> None:
             ok = False
         if not ok:
             raise HybridError(f"{owner}.{name} is {str(v)[:30]}; give a finite value (within float range)")
+
+
+def check_call(where: str, signature: inspect.Signature, args: tuple, kwargs: dict) -> None:
+    """Refuse a call of ``where`` (``"Controller"``) whose arguments do not fit ``signature`` (``args`` with ``self``
+    first, for a method): a keyword it has not, with the nearest one it has; too many arguments by position; one
+    missing or given twice. Python's own refusal is a TypeError that names neither what to give nor the near miss."""
+    try:
+        signature.bind(*args, **kwargs)
+        return
+    except TypeError:
+        pass
+    params = [p for p in signature.parameters.values() if p.name != "self"]
+    keywords = [p.name for p in params if p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)]
+    positional = [p.name for p in params if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
+    given = args[1:] if "self" in signature.parameters else args
+    unknown = [k for k in kwargs if k not in keywords]
+    twice = [k for k in positional[:len(given)] if k in kwargs]
+    required = [p.name for p in params if p.default is p.empty and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)]
+    missing = [k for k in required if k not in positional[:len(given)] and k not in kwargs]
+    if unknown:
+        near = difflib.get_close_matches(unknown[0], keywords, n=1, cutoff=0.6)
+        hint = f"did you mean {near[0]!r}?" if near else "give one of its keywords"
+        problem = f"{where} has no keyword {shown(unknown[0], 40)}; {hint} (help(hybrid.{where}))"
+    elif len(given) > len(positional):
+        problem = (f"{where} takes {len(positional)} argument{'s' * (len(positional) != 1)} by position "
+                   f"({', '.join(positional)}), {len(given)} were given (the first extra: "
+                   f"{shown(given[len(positional)], 40)}); give the others by keyword")
+    elif twice:
+        problem = f"{where}: {twice[0]} is given twice, by position and as a keyword; give it once"
+    else:
+        problem = f"{where}: {', '.join(missing) or 'an argument'} not given; give {', '.join(required)}"
+    raise HybridError(f"{problem}\n  its arguments: {', '.join(keywords)}") from None
+
+
+def checked_keywords(cls: type) -> type:
+    """A class decorator (after ``@dataclass``): a call with a keyword the class has not, or too many arguments,
+    is refused by :func:`check_call`, its signature shown as before."""
+    init = cls.__init__
+    signature = inspect.signature(init)
+
+    @functools.wraps(init)
+    def __init__(self, *args, **kwargs):
+        check_call(cls.__name__, signature, (self, *args), kwargs)
+        init(self, *args, **kwargs)
+
+    cls.__init__ = __init__
+    return cls
 
 
 def field_values(obj) -> dict:

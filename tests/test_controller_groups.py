@@ -1,11 +1,15 @@
 """The Controller's settings in three groups (Tracking, Limits, Sensing): the same controller as the flat
 keywords, on random settings; the groups cover the flat keywords exactly, with the same defaults; a setting
-given both ways, a group of the wrong type or a bad number in a group is refused; the records read back."""
+given both ways, a group of the wrong type or a bad number in a group is refused; the records read back. A
+controller copied or pickled is the same controller, its run carried over: on the same samples it gives the
+torques, bit for bit, of a twin that was never copied, and the copies run on independently."""
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 import inspect
+import pickle
 
 import numpy as np
 import pytest
@@ -131,3 +135,132 @@ def test_the_records_read_back_what_changed_between_samples():
     assert ctrl.sensing.wrench_sensor is sensor
     with pytest.raises(dataclasses.FrozenInstanceError):
         ctrl.limits.sample_time = 0.01  # a record is a copy: the controller's settings change on the controller
+
+
+# --------------------------------------------------------------------------- copies and pickles
+
+
+def events(ctrl, seed: int, count: int) -> list[tuple]:
+    """``count`` samples ``(t, q, qdot, wrench)`` drawn with ``seed``: on time, with a late one (two periods on)
+    and one whose q is not finite (refused) among them, so the clock and the fault reaction's state move too."""
+    rng = np.random.default_rng(seed)
+    n, wrench = ctrl.robot.n, 6 if ctrl.wrench_sensor is not None else ctrl.robot.kind.force_size
+    q0 = Q if n == 6 else np.array([2.2, 1.9])
+    out, t = [], 0.0
+    for k in range(count):
+        q = q0 + rng.normal(0, 0.02, n)
+        if k == 3:
+            q[0] = np.nan
+        out.append((t, q, rng.normal(0, 0.1, n), rng.normal(0, 5, wrench)))
+        t += ctrl.sample_time * (2 if k == 5 else 1)
+    return out
+
+
+def served(ctrl, sample: tuple) -> tuple:
+    """What a sample gives: its torque, or the error's kind and the torque it carries."""
+    try:
+        return ("torque", ctrl(*sample))
+    except hybrid.HybridError as exc:
+        return (type(exc).__name__, exc.torque)
+
+
+def assert_same_run(copies: dict, twin, samples: list) -> None:
+    """Each copy and the twin give the same results on ``samples``, bit for bit, the copies taking turns."""
+    for k, sample in enumerate(samples):
+        kind, expected = served(twin, sample)
+        for how, ctrl in copies.items():
+            got_kind, got = served(ctrl, sample)
+            assert got_kind == kind, f"{how}, sample {k}: {got_kind}, the twin {kind}"
+            np.testing.assert_array_equal(got, expected, err_msg=f"{how}, sample {k}")
+    for how, ctrl in copies.items():
+        np.testing.assert_array_equal(ctrl.state, twin.state, err_msg=how)
+        np.testing.assert_array_equal(ctrl.fault_state, twin.fault_state, err_msg=how)
+        for name, value in twin.last.items():
+            np.testing.assert_array_equal(ctrl.last[name], value, err_msg=f"{how}: last[{name!r}]")
+
+
+def copies_of(ctrl) -> dict:
+    return {"pickle": pickle.loads(pickle.dumps(ctrl)), "deepcopy": copy.deepcopy(ctrl), "copy": copy.copy(ctrl),
+            "original": ctrl}
+
+
+@pytest.mark.parametrize("seed", range(6))
+@pytest.mark.parametrize("split", [0, 2, 7])
+def test_a_copy_or_pickle_is_the_same_controller_with_its_run(seed, split):
+    """Copied before its first sample (a force of 3 numbers is then read into a view of the step's buffer) or
+    after some, on random settings of every group; a live setting changed before the copy is carried too."""
+    settings = random_settings(np.random.default_rng(seed))
+    twin, ctrl = (hybrid.Controller(hybrid.ur5(), SPHERE, **settings) for _ in range(2))
+    samples = events(twin, seed, 12)
+    for c in (twin, ctrl):
+        c.singular_tol = 2e-3
+        for sample in samples[:split]:
+            served(c, sample)
+    made = copies_of(ctrl)
+    for how, c in made.items():
+        np.testing.assert_array_equal(c.state, twin.state, err_msg=how)  # the integrals carried over
+        assert c.singular_tol == 2e-3 and c.last is None if split == 0 else c.last is not None
+    assert_same_run(made, twin, samples[split:])
+
+
+def path_point(t: float):
+    """A desired point moving along base x (at the module's top level: a pickle names it)."""
+    return (np.array([0.5 + 0.05 * t, 0.02, 0.36]), np.array([0.05, 0.0, 0.0]))
+
+
+def speed(t: float) -> float:
+    """A speed reference along t1 given as code [m/s]."""
+    return 0.1 * t
+
+
+PLANE = hybrid.Plane((0.4, 0.0, 0.1), (0.0, 0.6, 0.8))
+
+
+def raster():
+    return hybrid.RasterPath(PLANE, PLANE.project(np.array([0.45, -0.05, 0.1])), (1.0, 0.0, 0.0), 0.08, 0.01, 3)
+
+
+@pytest.mark.parametrize("build", [
+    lambda: hybrid.Controller(hybrid.ur5(), PLANE, path_task=hybrid.PathTask(raster(), speed=0.05, force=8.0)),
+    lambda: hybrid.Controller(hybrid.ur5(), hybrid.EstimatedSurface(initial_normal=(0.0, 0.3, 1.0)),
+                              wrench_sensor=hybrid.WrenchSensor(cutoff=15.0, order=2), torque_step_limit=50.0),
+    lambda: hybrid.Controller(hybrid.ur5(), SPHERE, frame="desired", path=path_point, position_error=True,
+                              velocity_reference={"t1": speed}, torque_limit=None),
+    lambda: hybrid.Controller(hybrid.paper_arm(), hybrid.Circle((0.5, 0.0), 0.2), "khatib",
+                              fault_reaction=hybrid.FaultReaction(fault_samples=2)),
+], ids=["path_task", "estimated_sensor", "desired_path", "planar_faults"])
+def test_every_kind_of_run_is_carried_by_a_copy(build):
+    """A path task's progress, an estimate and a sensor's filter, references and a path given as code, a
+    planar arm that enters its safe state: all carried, bit for bit."""
+    twin, ctrl = build(), build()
+    samples = events(twin, 11, 14)
+    results = [served(c, s) for s in samples[:8] for c in (twin, ctrl)]
+    assert sum(kind == "torque" for kind, _ in results) >= 4, "a run the law served"
+    moved = np.any(ctrl.state != 0.0) or ctrl.stopped or (ctrl.path_task or {}).get("travelled", 0.0) > 0.0
+    assert moved, "a run whose integrals or path moved, or that stopped"
+    assert_same_run(copies_of(ctrl), twin, samples[8:])
+
+
+def test_a_set_sensor_and_a_reset_are_carried_and_each_copy_runs_alone():
+    sensor = hybrid.WrenchSensor(cutoff=10.0)
+    twin, ctrl = (hybrid.Controller(hybrid.ur5(), SPHERE, wrench_sensor=sensor) for _ in range(2))
+    samples = events(twin, 3, 10)
+    for c in (twin, ctrl):
+        served(c, samples[0])
+        c.set_wrench_sensor(hybrid.WrenchSensor(cutoff=12.0, order=2))
+        served(c, samples[1])
+    made = copies_of(ctrl)
+    assert all(c.sensing.wrench_sensor == hybrid.WrenchSensor(cutoff=12.0, order=2) for c in made.values())
+    made["copy"].reset()  # a reset of one is not the others'
+    assert_same_run({k: v for k, v in made.items() if k != "copy"}, twin, samples[2:])
+
+
+def test_a_run_that_does_not_fit_its_controller_is_refused():
+    """A pickle's run whose buffers are not the controller's (as another version's may be) is refused by name,
+    not poured into buffers of other sizes."""
+    ctrl = hybrid.Controller(hybrid.ur5(), SPHERE)
+    served(ctrl, events(ctrl, 0, 1)[0])
+    rebuild, args, run = ctrl.__reduce__()
+    for name, short in (("held", run["held"][:-1]), ("fault", run["fault"][:-1]), ("params", run["params"][1:])):
+        with pytest.raises(hybrid.HybridError, match="^this controller's run does not fit"):
+            rebuild(*args).__setstate__({**run, name: short})

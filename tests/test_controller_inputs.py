@@ -3,6 +3,8 @@ first line names the value and the fix; a user's callback that fails is named, w
 
 from __future__ import annotations
 
+import dataclasses
+import inspect
 import signal
 
 import numpy as np
@@ -170,6 +172,108 @@ class _Timeout(Exception):
     pass
 
 
+# ------------------------------------------------------------------ what the constructors take
+
+
+@pytest.mark.parametrize("frame", [np.array(["actual", "desired"]), np.array([1.0, 2.0]), np.array([]), ["actual"],
+                                   None, 1, b"actual", "Actual"])
+def test_a_frame_is_one_of_its_names(frame):
+    """Anything but "actual" or "desired" is refused by name, in the record as by the keyword (an array once
+    met the check's ``in`` and raised NumPy's ambiguous truth value)."""
+    for make in (lambda: hybrid.Controller(hybrid.ur5(), SPHERE, frame=frame), lambda: hybrid.Tracking(frame=frame)):
+        with pytest.raises(hybrid.HybridError, match=r"^frame = .*; give 'actual' or 'desired'$"):
+            make()
+
+
+class _Desired:
+    """A desired point as an object that is called: a path need not be a function."""
+
+    def __call__(self, t: float):
+        return np.array([0.6, 0.0, 0.3]), np.zeros(3)
+
+
+@pytest.mark.parametrize("path", [3, "circle", (0.5, 0.0, 0.35), np.array([0.5, 0.0, 0.35]), np.array([]), True])
+def test_a_path_that_cannot_be_called_is_refused_when_given(path):
+    for make in (lambda: hybrid.Controller(hybrid.ur5(), SPHERE, path=path), lambda: hybrid.Tracking(path=path)):
+        with pytest.raises(hybrid.HybridError, match=r"^path = .*; give a function path\(t\)"):
+            make()
+    # what is called is taken, and read at the samples: a desired frame on it is served
+    ctrl = hybrid.Controller(hybrid.ur5(), SPHERE, frame="desired", path=_Desired(), timing_tolerance=None)
+    assert np.isfinite(ctrl(0.0, Q_UR5, np.zeros(6), np.zeros(3))).all()
+
+
+#: what each constructor is called, and how
+CONSTRUCTORS = {"Controller": lambda *a, **k: hybrid.Controller(*a, **k), "Tracking": hybrid.Tracking,
+                "Limits": hybrid.Limits, "Sensing": hybrid.Sensing}
+
+
+def _keywords(name: str) -> list[str]:
+    """The keywords of a constructor, as its documented signature shows them."""
+    return [p.name for p in inspect.signature(getattr(hybrid, name)).parameters.values()
+            if p.kind is p.KEYWORD_ONLY or (p.kind is p.POSITIONAL_OR_KEYWORD and name != "Controller")]
+
+
+@pytest.mark.parametrize("name", list(CONSTRUCTORS))
+def test_a_keyword_it_has_not_is_refused_with_the_nearest_it_has(name):
+    """Each keyword misspelt (a letter dropped, two swapped, a capital) is refused, naming the misspelling and
+    suggesting the keyword it came from; a word like none of them is named without a suggestion."""
+    args = (hybrid.ur5(), SPHERE) if name == "Controller" else ()
+    keywords = _keywords(name)
+    assert keywords and "sample_time" in keywords if name in ("Controller", "Limits") else keywords
+    for keyword in keywords:
+        k = len(keyword) // 2
+        for typo in {keyword[:k] + keyword[k + 1:], keyword[:k] + keyword[k + 1] + keyword[k] + keyword[k + 2:],
+                     keyword.capitalize()} - {keyword}:
+            with pytest.raises(hybrid.HybridError) as err:
+                CONSTRUCTORS[name](*args, **{typo: None})
+            line = first_line(err.value)
+            assert line.startswith(f"{name} has no keyword {typo!r}; did you mean {keyword!r}?"), line
+            assert len(line) <= 240 and keyword in str(err.value).splitlines()[1]
+    with pytest.raises(hybrid.HybridError, match=f"^{name} has no keyword 'xyzzy'; give one of its keywords"):
+        CONSTRUCTORS[name](*args, xyzzy=1.0)
+
+
+def test_arguments_by_position_beyond_the_signature_are_refused():
+    with pytest.raises(hybrid.HybridError, match=r"^Controller takes 3 arguments by position \(robot, surface, "
+                       r"scheme\), 4 were given \(the first extra: \(0, 2\)\); give the others by keyword"):
+        hybrid.Controller(hybrid.ur5(), SPHERE, "task", (0, 2))
+    fields = [f.name for f in dataclasses.fields(hybrid.Limits)]
+    with pytest.raises(hybrid.HybridError, match=f"^Limits takes {len(fields)} arguments by position"):
+        hybrid.Limits(*[None] * (len(fields) + 1))
+    with pytest.raises(hybrid.HybridError, match="^Controller: surface not given; give robot, surface"):
+        hybrid.Controller(hybrid.ur5())
+    with pytest.raises(hybrid.HybridError, match="^Controller: scheme is given twice"):
+        hybrid.Controller(hybrid.ur5(), SPHERE, "task", scheme="khatib")
+    # a call that fits is the constructor's own: by position as far as the signature goes, the rest by keyword
+    assert hybrid.Limits(0.002, None).sample_time == 0.002
+    assert hybrid.Controller(hybrid.ur5(), SPHERE, "khatib", axes="position").scheme.name == "khatib"
+
+
+@pytest.mark.parametrize("name", ["torque_limit", "torque_step_limit"])
+@pytest.mark.parametrize("value", [10**400, -10**400, [10**400] * 6], ids=["huge", "-huge", "huge_per_joint"])
+def test_a_limit_beyond_any_double_is_refused_by_name(name, value):
+    with pytest.raises(hybrid.HybridError, match=f"^{name} = .*; give"):
+        hybrid.Controller(hybrid.ur5(), SPHERE, **{name: value})
+
+
+def test_a_singular_tolerance_changed_between_samples_is_the_one_a_sample_reads():
+    """The step's binding holds the tolerance: a sample after a change reads the new one, as a controller
+    built with it does (it once read the tolerance bound at the first sample)."""
+    sample = (Q_UR5, np.zeros(6), np.array([0.0, 0.0, -10.0]))
+    fresh = {tol: hybrid.Controller(hybrid.ur5(), SPHERE, singular_tol=tol, timing_tolerance=None)
+             for tol in (1e-3, 0.99)}
+    with pytest.raises(hybrid.SingularConfigurationError):
+        fresh[0.99](0.0, *sample)
+    fresh[1e-3](0.0, *sample)
+    ctrl = hybrid.Controller(hybrid.ur5(), SPHERE, timing_tolerance=None)
+    ctrl(0.0, *sample)
+    ctrl.singular_tol = 0.99
+    with pytest.raises(hybrid.SingularConfigurationError):
+        ctrl(0.01, *sample)
+    ctrl.singular_tol = 1e-3
+    np.testing.assert_array_equal(ctrl(0.01, *sample), fresh[1e-3](0.01, *sample))
+
+
 def _alarm(signum, frame):
     raise _Timeout
 
@@ -185,8 +289,10 @@ ARGUMENTS = st.fixed_dictionaries({}, optional={
     "sample_time": st.sampled_from([0.01, 0.0, -1.0, np.inf, "0.01", 1e-300]),
     "integral": st.sampled_from([True, False, 1, None]),
     "curvature": st.sampled_from([True, False, "yes"]),
-    "frame": st.sampled_from(["actual", "desired", "world"]),
-    "path": st.sampled_from([None, lambda t: ((0.5, 0.0, 0.35), (0.1, 0.0, 0.0)), lambda t: (0.1,), 3]),
+    "frame": st.sampled_from(["actual", "desired", "world", np.array([1.0, 2.0])]),
+    "path": st.sampled_from([None, lambda t: ((0.5, 0.0, 0.35), (0.1, 0.0, 0.0)), lambda t: (0.1,), 3,
+                             np.array([0.5, 0.0, 0.35])]),
+    "torque_limit": st.sampled_from(["urdf", None, 50.0, 10**400, "none"]),
     "frame_direction": st.sampled_from([(0.0, 0.0, 1.0), (1.0, 0.0, 0.0), (0, 0, 0), (np.nan, 0, 1), "z"]),
     "position_error": st.sampled_from([False, True, 0]),
     "integral_limit": st.sampled_from([None, 5.0, -1.0, np.nan, "big"]),

@@ -13,6 +13,7 @@ from math import isfinite as _isfinite
 
 import numpy as np
 
+from hybrid.control.controller_copies import CopiedRun
 from hybrid.control.controller_settings import SETTINGS, GroupedSettings, check_settings, grouped
 from hybrid.control.fault import FaultMonitor, FaultReaction, finite_time, time_passed, timing_status
 from hybrid.control.loops import Gains
@@ -54,7 +55,7 @@ _CALLED = ("q", "qd", "Fc")
 _ADVANCED = {k: v for k, v in STATE_NEXT.items() if k not in ("integrals", "last_torque")}
 
 
-class Controller(SampleReferences, GroupedSettings, CheckedParameters):
+class Controller(SampleReferences, GroupedSettings, CheckedParameters, CopiedRun):
     r"""A sampled hybrid force/velocity controller of ``robot`` in contact with ``surface``.
 
     ``tau = ctrl(t, q, qdot, Fc)`` is one control sample: the task-frame measurement, the loops on every
@@ -107,6 +108,13 @@ class Controller(SampleReferences, GroupedSettings, CheckedParameters):
     sample reads in Python (``sample_time``, ``timing_tolerance``, ``singular_tol``) may change between
     samples: one changed to an invalid value refuses the sample with a :class:`~hybrid.ParameterError`
     (``status`` ``PARAMETER_INVALID``, ``torque`` the torque last written), nothing changed.
+
+    A controller copies (``copy.copy``, ``copy.deepcopy``) and pickles: the copy is built anew from the same
+    arguments and takes over the run (the integrals, the last torque, the filter, the estimate, the sample
+    clock, the fault reaction's and a path task's state, the settings as they are now), so on the same
+    samples it gives the same torques, bit for bit, and each runs on alone (:meth:`reset` starts either
+    afresh). ``copy.copy`` shares the robot, the surface and references given as code; a pickle needs
+    them to pickle (functions defined at a module's top level, not lambdas).
 
     Examples
     --------
@@ -527,6 +535,7 @@ class Controller(SampleReferences, GroupedSettings, CheckedParameters):
             if refused is not None:  # nothing changes; the torque last written is the safe one
                 raise ParameterError(*refused, self._last[:-1] * self._last[-1])
             self._checked_settings = settings
+            self._bind()  # the step's binding holds singular_tol: bound again to the one now set
         clock, timing = self._clock, timing_status(t, self._clock, self.sample_time, self.timing_tolerance)
         if self._binding is None:
             self._native()

@@ -21,7 +21,7 @@ from hybrid.control.options import ContactLoss, Posture
 from hybrid.control.path_task import PathTask
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.errors import HybridError
-from hybrid.validate import _finite, check_singular_tol, shown
+from hybrid.validate import _finite, check_call, check_singular_tol, checked_keywords, shown
 
 
 def _boolean(name: str, value) -> None:
@@ -30,8 +30,14 @@ def _boolean(name: str, value) -> None:
 
 
 def _frame(name: str, value) -> None:
-    if value not in ("actual", "desired"):
+    if not isinstance(value, str) or value not in ("actual", "desired"):
         raise HybridError(f"{name} = {shown(value)}; give 'actual' or 'desired'")
+
+
+def _path(name: str, value) -> None:
+    if value is not None and not callable(value):
+        raise HybridError(f"{name} = {shown(value, 60)}; give a function path(t) returning the desired point and its "
+                          "velocity (p_d [m], p_d' [m/s]), or None")
 
 
 def _sample_time(name: str, value) -> None:
@@ -66,7 +72,7 @@ def _instance_of(cls: type, also: str = "") -> Callable[[str, Any], None]:
 #: each setting's own check (the others are checked where the robot, axes or surface give their meaning: the
 #: gains, references, limits per joint, the posture and the path task)
 CHECKS: dict[str, Callable[[str, Any], None]] = {
-    "integral": _boolean, "curvature": _boolean, "position_error": _boolean, "frame": _frame,
+    "integral": _boolean, "curvature": _boolean, "position_error": _boolean, "frame": _frame, "path": _path,
     "sample_time": _sample_time, "integral_limit": _integral_limit, "timing_tolerance": _timing_tolerance,
     "singular_tol": lambda name, value: check_singular_tol("Controller", value),
     "fault_reaction": _instance_of(FaultReaction, " (its defaults)"),
@@ -98,6 +104,7 @@ class _Group:
         return {f.name: getattr(self, f.name) for f in fields(self)}
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Tracking(_Group):
     """The gains and references: what the controller's loops track, and how (conventions §4).
@@ -162,6 +169,7 @@ class Tracking(_Group):
     path_task: PathTask | None = None
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Limits(_Group):
     """The timing and the limits: the sample clock, the bounds on the torque and the integrals, the
@@ -228,6 +236,7 @@ class Limits(_Group):
     fault_reaction: FaultReaction | None = None
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Sensing(_Group):
     """The sensor and the estimate: how the contact wrench reaches the controller, and what it does
@@ -271,11 +280,13 @@ GROUPS: dict[str, type[_Group]] = {"tracking": Tracking, "limits": Limits, "sens
 
 def grouped(init: Callable) -> Callable:
     """A decorator of the controller's ``__init__``: it takes each group as a keyword (``tracking=``,
-    ``limits=``, ``sensing=``) besides the flat keywords, and refuses one setting given both ways."""
+    ``limits=``, ``sensing=``) besides the flat keywords, and refuses one setting given both ways, and a call
+    that does not fit the signature (:func:`~hybrid.validate.check_call`)."""
     flat = inspect.signature(init)
 
     @functools.wraps(init)
     def wrapper(self, *args, **kwargs):
+        check_call("Controller", wrapper.__signature__, (self, *args), kwargs)
         for keyword, cls in GROUPS.items():
             group = kwargs.pop(keyword, None)
             if group is None:

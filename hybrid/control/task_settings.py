@@ -88,7 +88,7 @@ def joint_limit(robot, name: str, value) -> np.ndarray:
         return np.where(effort > 0, effort, np.inf)
     try:
         arr = np.broadcast_to(np.asarray(value, dtype=float), (n,)).copy()
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):  # OverflowError: an integer beyond any double
         arr = np.full(n, np.nan)
     if isinstance(value, (str, bool)) or np.isnan(arr).any() or (arr <= 0).any():
         urdf = "'urdf' (the URDF's effort limits), " if name == "torque_limit" else ""
