@@ -171,8 +171,9 @@ def build_standalone_controller(step: Kernel, stop: Kernel, prefix: str, what: s
 
     ``part``, for a part's surface (:mod:`hybrid.spec.part`): ``measure`` (the ``task_measurement`` kernel, whose
     tip position the part is expanded about); the C then includes the evaluator's header (``hybrid_part.h``,
-    shipped beside it), its struct points at the part's grid and coefficients (the caller's), and each sample
-    sets the surface's parameters to the part's expansion about the tip.
+    shipped beside it), its struct points at the part's grid and coefficients (the caller's, given by
+    ``<prefix>_controller_set_part`` from the part's data file's numbers), and each sample sets the surface's
+    parameters to the part's expansion about the tip.
     """
     declared = [p.name for p in (*CONTROLLER_STEP.inputs, *CONTROLLER_STEP.outputs)]
     if [a.name for a in (*step.inputs, *step.outputs)] != declared:
@@ -260,8 +261,9 @@ def build_standalone_controller(step: Kernel, stop: Kernel, prefix: str, what: s
             "status_meaning": {f"{P}_{s.name}": s.meaning for s in STATUSES},
             "struct": f"{prefix}_controller", "fields": fields_doc,
             "scalars": {a.name: list(a.names) for a in params if a.name in _SCALARS},
-            "functions": [f"{prefix}_controller_init", f"{prefix}_controller_reset", f"{prefix}_controller_step",
-                          f"{prefix}_status_name"],
+            "functions": [f"{prefix}_controller_init", f"{prefix}_controller_reset",
+                          *([f"{prefix}_controller_set_part"] if part is not None else []),
+                          f"{prefix}_controller_step", f"{prefix}_status_name"],
             "configuration": {k: ([float(x) for x in v] if not isinstance(v, (int, float)) else float(v))
                               for k, v in sorted(values.items())}}
     data["body_sha256"] = json_body_hash(data)

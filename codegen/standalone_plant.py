@@ -18,6 +18,11 @@ initial state ``x0`` that ``<prefix>_reset`` restores. Its functions:
 - ``<prefix>_metric_name(i)``: the name of a run's metric ``i``, as :mod:`hybrid.spec.metrics` declares them
   (their indices, bands and window are the header's macros): what a closed loop in C reports.
 
+On a part (:mod:`hybrid.spec.part`) the surface is not a field: ``<prefix>_set_part(&p, data, count)`` points
+the struct at the part's data file's numbers (the caller's, checked by ``hybrid_part.h``'s ``hybrid_part_data``),
+and the contact acts on the part's expansion about the sensor tip, taken at the start of each RK4 step and at
+each state read, as the Python plant takes it (:class:`hybrid.plants.rigid_body.RigidBodyPlant`).
+
 The text is a pure function of its inputs (no dates, no paths, stable ordering).
 """
 
@@ -44,6 +49,12 @@ _MEANING = {
     "NONFINITE": "the state would stop being finite: x is the last finite state, steps counts the steps done",
     "INPUT_NONFINITE": "the torque or the state is not finite: nothing changed",
 }
+#: a part's plant's further statuses
+_PART_MEANING = {
+    "FRAME_UNDEFINED": "the sensor tip is beyond the part's fitted band (no surface there): x is the last state "
+                       "within it, steps counts the steps done; a record there is NaN where it reads the surface",
+    "PARAMETER_INVALID": "no part's data given (set_part), or its grid's numbers are not a grid's: nothing changed",
+}
 #: parameter arrays held as named scalar fields (their elements' names), not arrays
 _SCALARS = ("plant",)
 #: what each named scalar of the plant's array is (the names of ``spatial_plant.PLANT_PARAMETERS``)
@@ -66,7 +77,7 @@ def _whole(value: float, scale: int) -> int:
 
 
 def build_standalone_plant(rhs: Kernel, outputs: Kernel, force_columns: tuple[str, ...], prefix: str, what: str,
-                           info: dict, values: dict, backend: str = "casadi") -> Unit:
+                           info: dict, values: dict, backend: str = "casadi", part: bool = False) -> Unit:
     """C source, header and manifest of the standalone plant ``prefix`` (also its files' stem).
 
     ``rhs`` is the state derivative ``x' = f(x, tau, ...)``, ``outputs`` the record ``y(x, ...)``,
@@ -75,6 +86,11 @@ def build_standalone_plant(rhs: Kernel, outputs: Kernel, force_columns: tuple[st
     ``x0`` (the initial state), ``h``, ``steps_per_sample``, ``sample_time`` and ``duration``.
     ``backend``: how the kernels are printed (``"sympy"`` or ``"casadi"``; CasADi expressions always
     take CasADi).
+
+    ``part``: the surface is a part's (its ``surface`` input the quadric's parameters, the state's ``s_x``,
+    ``s_y``, ``s_z`` the sensor tip): the C includes the evaluator's header (``hybrid_part.h``, shipped
+    beside it) and expands the part about the tip where the kernels read the surface; ``values`` has no
+    ``surface``.
     """
     x, tau = rhs.inputs[0], rhs.inputs[1]
     y = outputs.outputs[0]
@@ -101,7 +117,8 @@ def build_standalone_plant(rhs: Kernel, outputs: Kernel, force_columns: tuple[st
         units = list(a.unit) if not isinstance(a.unit, str) else [a.unit] * a.size
         return [{"name": n, "doc": _SCALAR_DOC.get(n, a.name), "unit": u} for n, u in zip(a.names, units)]
 
-    configuration = [configured(prefix, a, _DOC.get(a.name, a.name), values[a.name], scalars(a)) for a in params]
+    held = [a for a in params if not (part and a.name == "surface")]  # a part's surface: its expansion, each step
+    configuration = [configured(prefix, a, _DOC.get(a.name, a.name), values[a.name], scalars(a)) for a in held]
     packed = [f for f in configuration if f["scalars"]]
     x0 = [float(v) for v in values["x0"]]
     if len(x0) != nx:
@@ -111,9 +128,16 @@ def build_standalone_plant(rhs: Kernel, outputs: Kernel, force_columns: tuple[st
         cores, tools = _casadi_cores(prefix, (rhs, outputs)), f"CasADi {ca.__version__}"
     else:
         cores, tools = _sympy_cores((rhs, outputs)), "SymPy"
-    statuses = [{"name": name, "code": STATUS_CODES[name], "meaning": meaning} for name, meaning in _MEANING.items()]
+    meanings = _MEANING | (_PART_MEANING if part else {})
+    statuses = [{"name": name, "code": STATUS_CODES[name], "meaning": meaning} for name, meaning in meanings.items()]
+    expanded = None  # on a part: where the state holds the sensor tip, and the surface's size
+    if part:  # the sensor tip's three coordinates, one after the other in the state
+        tip = [list(x.names or ()).index(n) if n in (x.names or ()) else -1 for n in ("s_x", "s_y", "s_z")]
+        if tip[0] < 0 or tip != list(range(tip[0], tip[0] + 3)):
+            raise ValueError("a part's plant needs the sensor tip's s_x, s_y, s_z in its state, in order")
+        expanded = {"tip": tip[0], "size": sizes["surface"]}
     context = {"prefix": prefix, "what": what, "generator": GENERATOR_VERSION, "comment": comment_safe,
-               "statuses": statuses, "configuration": configuration, "nx": nx, "nq": nq, "ny": ny,
+               "statuses": statuses, "configuration": configuration, "nx": nx, "nq": nq, "ny": ny, "part": expanded,
                "x0": {**array_field(prefix, "x0", nx, x.unit, None, "the initial state reset restores (the "
                                     "experiment's start, at rest, pressing with the force reference's first value)"),
                       "numbers": [_number(v) for v in x0]}}
@@ -131,20 +155,20 @@ def build_standalone_plant(rhs: Kernel, outputs: Kernel, force_columns: tuple[st
                     steps_per_sample=per, sample_time=_number(values["sample_time"]),
                     duration=_number(values["duration"]))
     fields_doc = [{"name": a.name, "size": a.size, **({"names": list(a.names)} if a.names else {}),
-                   "unit": a.unit if isinstance(a.unit, str) else list(a.unit)} for a in params]
+                   "unit": a.unit if isinstance(a.unit, str) else list(a.unit)} for a in held]
     data = {"do_not_edit": MANIFEST_STAMP, "unit": prefix, "generator": GENERATOR_VERSION, "tools": tools,
             **info, "nx": nx, "nq": nq, "state": list(x.names or ()),
             "state_units": [x.unit] * nx if isinstance(x.unit, str) else list(x.unit),
             "outputs": list(y.names), "output_units": [y.unit] * ny if isinstance(y.unit, str) else list(y.unit),
             "signals": list(SIGNALS), "wrench": [*force_columns, *(["0"] * (6 - len(force_columns)))],
-            "status": {f"{P}_{k}": STATUS_CODES[k] for k in _MEANING},
-            "status_meaning": {f"{P}_{k}": m for k, m in _MEANING.items()},
+            "status": {f"{P}_{k}": STATUS_CODES[k] for k in meanings},
+            "status_meaning": {f"{P}_{k}": m for k, m in meanings.items()},
             "struct": prefix, "fields": fields_doc,
             "scalars": {f["name"]: [s["name"] for s in f["scalars"]] for f in packed},
-            "functions": [f"{prefix}_{f}" for f in ("init", "reset", "wrench", "advance", "signals", "outputs",
-                                                     "status_name", "metric_name")],
+            "functions": [f"{prefix}_{f}" for f in ("init", "reset", *(("set_part",) if part else ()), "wrench",
+                                                     "advance", "signals", "outputs", "status_name", "metric_name")],
             "metrics": list(metric_names(nq)),
-            "configuration": {**{a.name: [float(v) for v in values[a.name]] for a in params}, "x0": x0,
+            "configuration": {**{a.name: [float(v) for v in values[a.name]] for a in held}, "x0": x0,
                               "h": float(values["h"]), "steps_per_sample": per,
                               "sample_time": float(values["sample_time"]), "duration": float(values["duration"])}}
     data["body_sha256"] = json_body_hash(data)

@@ -123,7 +123,7 @@ class CPlant:
                         "-lm"], check=True, capture_output=True)
         ffi = cffi.FFI()
         body = "\n".join(line for line in header.split("*/", 1)[1].splitlines()
-                         if not re.match(r"\s*#(ifndef|endif|define \w+_H\b)", line))
+                         if not re.match(r"\s*#(ifndef|endif|define \w+_H\b|include)", line))
         ffi.cdef(re.sub(r"/\*.*?\*/", "", body, flags=re.S))
         self.ffi, self.lib, self.prefix = ffi, ffi.dlopen(str(lib)), prefix
         self.p = ffi.new(f"{prefix} *")

@@ -8,10 +8,15 @@
    Build (after `python -m hybrid generate --experiment tracing --out . --name ur5`):
        cc -std=c99 -O2 main.c ur5_controller.c ur5_plant.c -lm -o closed_loop
    Run:
-       ./closed_loop [--duration SECONDS] [--record FILE] [--per-sample]
+       ./closed_loop [--duration SECONDS] [--record FILE] [--per-sample] [--part FILE]
    --record writes a row per RK4 step (per control sample with --per-sample): t, the state x
    (UR5_PLANT_NX, the order of ur5_plant.json's "state") and the torque acting from t on
-   (UR5_PLANT_NQ); as text when FILE ends in .csv, else as raw doubles (this machine's byte order). */
+   (UR5_PLANT_NQ); as text when FILE ends in .csv, else as raw doubles (this machine's byte order).
+
+   An experiment on a part (hybrid.MeshSurface, written by Experiment.generate with its data file
+   ur5_part.bin) builds the same way: the controller and the plant then include hybrid_part.h, and the
+   loop reads the part's data file (ur5_part.bin, or --part FILE: another part, the same build) and
+   gives its numbers to both. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -160,9 +165,30 @@ static int write_row(FILE *out, int csv, double t, const double *x, const double
 }
 
 static int usage(const char *self) {
-    fprintf(stderr, "usage: %s [--duration SECONDS] [--record FILE] [--per-sample]\n", self);
+    fprintf(stderr, "usage: %s [--duration SECONDS] [--record FILE] [--per-sample] [--part FILE]\n", self);
     return 2;
 }
+
+#ifdef HYBRID_PART_H
+/* the part's data file read whole, as doubles (*count of them; the generated C checks them): NULL where it
+   cannot be read */
+static double *read_part(const char *path, size_t *count) {
+    FILE *f = fopen(path, "rb");
+    double *data = NULL;
+    long bytes;
+    if (!f) return NULL;
+    if (fseek(f, 0, SEEK_END) == 0 && (bytes = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0) {
+        *count = (size_t)bytes / sizeof(double);
+        data = malloc(*count > 0 ? *count * sizeof(double) : 1);
+        if (data && fread(data, sizeof(double), *count, f) != *count) {
+            free(data);
+            data = NULL;
+        }
+    }
+    fclose(f);
+    return data;
+}
+#endif
 
 int main(int argc, char **argv) {
     ur5_controller c;
@@ -170,6 +196,11 @@ int main(int argc, char **argv) {
     metrics m;
     double wrench[6], s[UR5_PLANT_NSIGNALS], tau[UR5_PLANT_NQ], prev[UR5_PLANT_NQ], duration;
     const char *path = NULL;
+#ifdef HYBRID_PART_H
+    const char *part_path = "ur5_part.bin";
+    double *part;
+    size_t part_count = 0;
+#endif
     FILE *out = NULL;
     int per_sample = 0, csv = 0, status, a, i, j;
     long k, n_samples, row = 0;
@@ -186,10 +217,29 @@ int main(int argc, char **argv) {
             path = argv[++a];
         } else if (!strcmp(argv[a], "--per-sample")) {
             per_sample = 1;
+#ifdef HYBRID_PART_H
+        } else if (!strcmp(argv[a], "--part") && a + 1 < argc) {
+            part_path = argv[++a];
+#endif
         } else {
             return usage(argv[0]);
         }
     }
+#ifdef HYBRID_PART_H
+    /* the part: its data file's numbers, kept while the controller and the plant point at them */
+    part = read_part(part_path, &part_count);
+    if (!part) {
+        perror(part_path);
+        return 1;
+    }
+    status = ur5_controller_set_part(&c, part, part_count);
+    if (status == UR5_OK) status = ur5_plant_set_part(&p, part, part_count);
+    if (status != UR5_OK) {
+        fprintf(stderr, "%s is not a part's data file (refused: %s)\n", part_path, ur5_status_name(status));
+        free(part);
+        return 1;
+    }
+#endif
     /* as the experiment counts its samples: duration / sample_time, rounded up */
     n_samples = (long)ceil(duration / p.sample_time - 1e-9);
     if (path) {
@@ -241,8 +291,13 @@ int main(int argc, char **argv) {
         perror(path);
         return 1;
     }
-    printf("# the UR5 on the sphere: %ld samples of %g s,\n# each %d RK4 steps of %g s\n", n_samples,
-           p.sample_time, p.steps_per_sample, p.h);
+#ifdef HYBRID_PART_H
+    free(part);
+    printf("# the UR5 on the part of %s: ", part_path);
+#else
+    printf("# the UR5 on the sphere: ");
+#endif
+    printf("%ld samples of %g s,\n# each %d RK4 steps of %g s\n", n_samples, p.sample_time, p.steps_per_sample, p.h);
     metrics_print(&m, p.h);
     return 0;
 }

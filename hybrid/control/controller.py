@@ -381,7 +381,9 @@ class Controller(SampleReferences, GroupedSettings, CheckedParameters, CopiedRun
         (``wrench``: six numbers, force and moment on the robot at the tip in base axes) and returns a
         status, where this class raises (see ``timing_tolerance``). References given as code are the
         caller's: it writes them into ``c.yd_extra``, ``c.yd_rate`` and ``c.target`` each sample; a path
-        task's follower writes them itself (``hybrid_path.h``, written beside). C99,
+        task's follower writes them itself (``hybrid_path.h``, written beside). On a part, the evaluator's
+        header ``hybrid_part.h`` and the part's data file ``<name>_part.bin`` are written beside: the
+        caller gives the file's numbers to ``<name>_controller_set_part`` before the first sample. C99,
         no allocation, no globals, no I/O, reentrant; the same bytes for the same controller.
         """
         return generate_controller(self, out, name, force)

@@ -576,7 +576,10 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         samples around the two is this run (``hybrid.simulate``'s) to rounding error. C99, no allocation,
         no globals, no I/O, reentrant; the same bytes for the same experiment. References the controller
         takes from its caller (a desired frame) are the caller's to write into the controller's struct
-        each sample.
+        each sample. On a part, ``hybrid_part.h`` and the part's data file ``<name>_part.bin`` too: its
+        numbers are run-time data (one build serves every part), which the caller reads and gives to
+        ``<name>_controller_set_part`` and ``<name>_plant_set_part`` (a damaged file is refused); the plant
+        expands the part about the sensor tip at each RK4 step, as the Python plant does.
 
         Parameters
         ----------

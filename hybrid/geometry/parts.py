@@ -18,9 +18,11 @@ from __future__ import annotations
 import hashlib
 import math
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
+from hybrid import files
 from hybrid.errors import HybridError
 from hybrid.geometry.meshes import (
     LARGEST_PART,
@@ -31,6 +33,7 @@ from hybrid.geometry.meshes import (
     oriented_samples,
     read_mesh,
 )
+from hybrid.geometry.part_data import data_file
 from hybrid.geometry.part_fit import SMOOTHING, fit_signed_distance, kd_tree
 from hybrid.geometry.surfaces import Surface, _unit_normal
 from hybrid.native import loader
@@ -237,6 +240,25 @@ class PartSurface(Surface):
         """The generated C's run-time data of the part: the grid's numbers (:data:`~hybrid.spec.part.PART_GRID`)
         and its coefficients (z fastest; NaN beyond the band)."""
         return self._grid_numbers, self._coefficients
+
+    def save_data(self, path, overwrite: bool = False) -> Path:
+        """Write the part's data file: what the standalone C reads at run time (``<name>_set_part``), so one
+        build serves every part (:mod:`hybrid.geometry.part_data`; ``Experiment.generate`` writes it beside the C).
+
+        Parameters
+        ----------
+        path : str or pathlib.Path
+            The file (``<name>_part.bin`` by convention), written atomically.
+        overwrite : bool
+            Whether an existing file is replaced (default False: refused).
+
+        Returns
+        -------
+        pathlib.Path
+            The path written.
+        """
+        data = data_file(*self.data())
+        return files.write_with(Path(path), lambda tmp: tmp.write_bytes(data), overwrite)
 
     def project(self, p) -> np.ndarray | None:
         """The point of the part nearest ``p`` [m] (Newton steps along the normal; ``p`` within the band), or

@@ -143,11 +143,11 @@ def write_checksum(manifest: Path, checksum: str, **facts) -> None:
 # ------------------------------------------------------------------ generated units
 
 
-def write_unit_files(target: Path, files: dict[str, str]) -> None:
-    """Write a generated unit's files into ``target``, each atomically."""
+def write_unit_files(target: Path, files: dict[str, str | bytes]) -> None:
+    """Write a generated unit's files (texts, or a data file's bytes) into ``target``, each atomically."""
     target.mkdir(parents=True, exist_ok=True)
-    for name, text in files.items():
-        atomic_write(target / name, text.encode())
+    for name, data in files.items():
+        atomic_write(target / name, data if isinstance(data, bytes) else data.encode())
 
 
 #: the record of a generated unit's folder: its files' names and checksums, written last

@@ -8,6 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from hybrid.errors import HybridError
+from hybrid.geometry.part_data import data_file
 from hybrid.models.robot import Robot
 from hybrid.models.urdf import read_chain
 from hybrid.native import cache, generator, units
@@ -45,8 +46,16 @@ def c_prefix(name: str | None, what: str, derived_from: str = "") -> str:
 
 def generate_controller(ctrl, out, name: str | None = None, force: bool = False) -> list[Path]:
     """Write the controller ``ctrl`` (a :class:`hybrid.Controller`) as standalone C99 into ``out``:
-    ``<prefix>.c``, ``.h`` and ``.json`` (see :meth:`hybrid.Controller.generate`)."""
-    return write_files(out, controller_files(ctrl, c_prefix(name, "name", f"{ctrl.robot.name}_controller")), force)
+    ``<prefix>.c``, ``.h`` and ``.json`` (see :meth:`hybrid.Controller.generate`); on a part, its data file
+    ``<prefix>_part.bin`` too."""
+    prefix = c_prefix(name, "name", f"{ctrl.robot.name}_controller")
+    return write_files(out, controller_files(ctrl, prefix) | part_file(ctrl.surface, prefix), force)
+
+
+def part_file(surface, prefix: str) -> dict[str, bytes]:
+    """The data file of the part ``surface`` by its name, ``<prefix>_part.bin`` (none for a formula's surface):
+    the numbers the standalone C's ``set_part`` takes (:mod:`hybrid.geometry.part_data`)."""
+    return {f"{prefix}_part.bin": data_file(*surface.data())} if surface.local else {}
 
 
 def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, str]:
@@ -71,8 +80,9 @@ def controller_files(ctrl, prefix: str, stem: str | None = None) -> dict[str, st
                        "the force and moment on the robot at the tip frame's origin, base axes [N, N m]")}
     part = ctrl.surface.local  # a part: the caller gives its grid, each sample expands it about the tip
     if part:
-        info["part"] = ("the surface is a part: set part_grid and part_coefficients to its data "
-                        "(hybrid.MeshSurface.data()) before the first sample")
+        info["part"] = {"data": f"{prefix}_part.bin", "set": f"{prefix}_controller_set_part",
+                        "doc": f"the surface is a part: give {prefix}_controller_set_part the numbers of its data "
+                               "file before the first sample (hybrid_part.h's hybrid_part_data checks them)"}
     if follower is not None:
         info["path_task"] = {"axes": list(path.positions), "rows": len(follower.table),
                              "spins": None if path.spins is None else list(path.spins)}
@@ -106,33 +116,51 @@ def generate_experiment(exp, out, name: str | None = None, force: bool = False) 
     (``<name>_controller.c``, ``.h``, ``.json``: the struct ``<name>_controller``, as
     :meth:`hybrid.Controller.generate` writes it, symbols ``<name>_...``) and its plant
     (``<name>_plant.c``, ``.h``, ``.json``: the struct ``<name>_plant`` with the experiment's parameters,
-    timing and start state; :func:`hybrid.codegen.api.build_standalone_plant`). ``name`` defaults to the robot's.
+    timing and start state; :func:`hybrid.codegen.api.build_standalone_plant`); on a part, the evaluator's
+    header ``hybrid_part.h`` and the part's data file ``<name>_part.bin``, which both take at run time
+    (``<name>_controller_set_part``, ``<name>_plant_set_part``). ``name`` defaults to the robot's.
     Files in ``out`` with other content are refused unless ``force``."""
     prefix = c_prefix(name, "name", exp.robot.name)
     if not exp.sensor.ideal or exp.wrench_sensor is not None:
         raise HybridError("the standalone plant gives its sensor's force as the reading: an experiment with a "
                           "sensor signal (noise, bias, lag, delay) or a wrench_sensor runs in Python only; leave them "
                           "out to generate it")
-    if exp.surface.local:
-        raise HybridError("the standalone plant takes a surface's formula, not a part yet: generate the controller "
-                          "alone (exp.build_controller().generate(...)) and give it the part's data")
+    if exp.controller_surface is not None and (exp.surface.local or exp.controller_surface.local):
+        raise HybridError("the standalone C takes one part, the controller's and the plant's: an experiment whose "
+                          "controller is told a surface other than the plant's, either of them a part, runs in Python "
+                          "only; leave controller_surface out to generate it")
     ctrl = exp.build_controller()
     x0 = exp.checked_start()  # the run the C makes: refused where simulate refuses it
-    files = controller_files(ctrl, prefix, f"{prefix}_controller") | plant_files(exp, f"{prefix}_plant", x0)
-    return write_files(out, files, force)
+    data = part_file(exp.surface, prefix)
+    files = controller_files(ctrl, prefix, f"{prefix}_controller") | plant_files(exp, f"{prefix}_plant", x0, data)
+    return write_files(out, files | data, force)
 
 
-def plant_files(exp, prefix: str, x0) -> dict[str, str]:
+def plant_files(exp, prefix: str, x0, data: dict[str, bytes] | None = None) -> dict[str, str]:
     """The standalone C of the plant of ``exp`` (starting from ``x0``) by file name; generated once per
-    key (cached)."""
+    key (cached). On a part, ``data`` is its data file by name (:func:`part_file`), and the manifest gives
+    the part by the file's name and SHA-256 (not the mesh the experiment's settings hold)."""
     plant = exp.plant_class.loop_plant(exp)
-    values = {k: [float(v) for v in np.asarray(a, float).ravel()] for k, a in exp.plant_class.inputs(exp).items()}
+    part = exp.surface.local  # its surface is the part's expansion about the sensor tip, each step's
+    inputs = exp.plant_class.inputs(exp)
+    values = {k: [float(v) for v in np.asarray(a, float).ravel()] for k, a in inputs.items()
+              if not (part and k == "surface")}
     values |= {"x0": [float(v) for v in x0], "h": float(exp.integration_step),
                "steps_per_sample": int(exp.steps_per_sample), "sample_time": float(exp.sample_time),
                "duration": float(exp.duration)}
     robot, surface = exp.robot, (exp.section or exp.surface).kind
+    settings = exp.to_dict()
+    if part:
+        (file, content), = (data or part_file(exp.surface, prefix)).items()
+        settings["surface"] = {"kind": surface, "data": file, "spacing": exp.surface.fit.spacing_m,
+                               "band": exp.surface.fit.band_m, "data_sha256": cache.digest(content)}
     info = {"robot": {"robot": robot.name, "joints": list(robot.joint_names)}, "surface": surface,
-            "plant": plant.key()[0], "experiment": exp.to_dict()}
+            "plant": plant.key()[0], "experiment": settings}
+    if part:
+        info["part"] = {"data": file, "set": f"{prefix}_set_part",
+                        "doc": f"the surface is a part: give {prefix}_set_part the numbers of its data file before "
+                               "the first step; the contact acts on its expansion about the sensor tip, taken at "
+                               "the start of each RK4 step"}
     backend = robot.kind.plant_printer(exp.backend)
     key = {"plant": plant.key(), "values": values, "info": info, "backend": backend,
            "generator": generator.fingerprint(), "prefix": prefix}
@@ -142,18 +170,22 @@ def plant_files(exp, prefix: str, x0) -> dict[str, str]:
         rhs, outputs, force = plant.kernels(api)
         what = (f"the plant of an experiment: the {robot.n}-joint arm '{robot.name}', its force sensor and penalty "
                 f"contact with friction on a {surface}, advanced by RK4 with the torque held")
-        return api.build_standalone_plant(rhs, outputs, force, prefix, what, info, values, backend).files
+        files = api.build_standalone_plant(rhs, outputs, force, prefix, what, info, values, backend, part).files
+        if part:  # the part evaluator's header, beside the plant that includes it
+            files[api.PART_HEADER] = api.shared_headers()[api.PART_HEADER]
+        return files
 
     return cache.generated_unit(prefix, key, make)[1]
 
 
-def write_files(out, files: dict[str, str], force: bool) -> list[Path]:
-    """``files`` written into the folder ``out``, each atomically; files there with other content are
-    refused unless ``force``."""
+def write_files(out, files: dict[str, str | bytes], force: bool) -> list[Path]:
+    """``files`` (texts or bytes) written into the folder ``out``, each atomically; files there with other
+    content are refused unless ``force``."""
     out = Path(out)
     if out.exists() and not out.is_dir():
         raise HybridError(f"--out {out} is a file; give a folder")
-    clash = [n for n, text in files.items() if (out / n).is_file() and (out / n).read_text() != text]
+    files = {n: data if isinstance(data, bytes) else data.encode() for n, data in files.items()}
+    clash = [n for n, data in files.items() if (out / n).is_file() and (out / n).read_bytes() != data]
     if clash and not force:
         raise HybridError(f"{', '.join(clash)} already exist in {out} with other content; "
                           "pass --force to overwrite them, or choose another --out or --name")
