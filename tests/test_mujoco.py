@@ -212,6 +212,11 @@ def test_a_diverging_run_stops_where_the_generated_one_does():
 def test_mujoco_refuses_what_it_cannot_run(monkeypatch):
     with pytest.raises(hybrid.HybridError, match="plant ="):
         hybrid.simulate(hybrid.paper_experiment(duration=0.1), plant="bullet")
+    with monkeypatch.context() as patched:  # an older MuJoCo, which reads the Panda otherwise
+        patched.setattr(mujoco, "__version__", "3.12.0")
+        with pytest.raises(hybrid.HybridError, match=r"^the MuJoCo plant needs MuJoCo 3\.14 or later, found 3\.12\.0: "
+                                                     r"pip install -U"):
+            hybrid.simulate(hybrid.paper_experiment(duration=0.1), plant="mujoco")
     monkeypatch.setitem(sys.modules, "mujoco", None)  # as if not installed
     for exp in (hybrid.paper_experiment(duration=0.1), hybrid.tracing_experiment(duration=0.1)):
         with pytest.raises(hybrid.HybridError, match=r"^the MuJoCo plant needs MuJoCo: pip install "

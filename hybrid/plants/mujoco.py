@@ -46,6 +46,9 @@ from hybrid.plants.interface import Plant
 #: the mass matrix by TINY times a squared distance, at the level of rounding. Also the sensor body's
 #: rotational inertia, which nothing sees (it has no rotation)
 TINY = 1e-12
+#: the oldest MuJoCo the plant takes: 3.10 and 3.12 read the Panda's URDF inertia otherwise, and before 3.10
+#: MuJoCo lacks the ``MjSpec`` and ``mj_fullM`` the plant calls
+OLDEST_MUJOCO = (3, 14)
 #: how far MuJoCo's mass matrix (relative to its largest entry, or 1) and tip [m] may be from the robot's
 MODEL_TOL = 1e-9
 
@@ -55,6 +58,10 @@ def _mujoco():
         import mujoco
     except ImportError:
         raise HybridError("the MuJoCo plant needs MuJoCo: pip install 'hybrid-decoupling[mujoco]'") from None
+    found = tuple(int(part) for part in mujoco.__version__.split(".")[:2] if part.isdigit())
+    if found < OLDEST_MUJOCO:
+        raise HybridError(f"the MuJoCo plant needs MuJoCo {'.'.join(map(str, OLDEST_MUJOCO))} or later, found "
+                          f"{mujoco.__version__}: pip install -U 'hybrid-decoupling[mujoco]'")
     return mujoco
 
 
@@ -285,20 +292,24 @@ class MujocoPlant(Plant):
         """Advance ``x`` in place by ``nsteps`` MuJoCo RK4 steps with ``tau`` held; steps done (it stops
         before a non-finite state). MuJoCo's passive-force callback is one for the whole process: one
         MuJoCo plant advances at a time (a sweep's processes each have their own)."""
-        mj, d = self.mj, self.data
+        d = self.data
         self._set(x)
         d.qfrc_applied[:] = 0.0
         d.qfrc_applied[:self.nq] = tau
 
         def steps() -> int:
             for k in range(nsteps):
-                mj.mj_step(self.model, d)
+                self._step()
                 state = self._state()
                 if not np.isfinite(state).all():
                     return k
                 x[:] = trajectory[k] = state
             return nsteps
         return self._with_passive(steps)
+
+    def _step(self) -> None:
+        """One MuJoCo step (RK4, the passive forces installed)."""
+        self.mj.mj_step(self.model, self.data)
 
     def _with_passive(self, run):
         """``run()`` with this plant's passive forces installed as MuJoCo's callback (one for the whole process),
