@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import statistics
 import time
-from collections.abc import Callable
 
 import numpy as np
 
@@ -26,15 +25,14 @@ from hybrid.native import compiler, generator, units
 from hybrid.simulation import closed_loop
 from hybrid.sweeps import apply
 
-#: the loops measured: what a row calls it, its runs (``quick`` or not), and the share of its calls of tanh
-#: where a lane's argument is below 20 (the longer path): the paper's one tanh is the contact's friction,
-#: sliding (callgrind: 0.1 calls of the longer path per RK4 step); the UR5's seven (six joints' Coulomb
-#: friction near rest and the contact's) all take it (28 calls per step)
+#: the loops measured: what a row calls it, ``n`` of its runs (a group of lanes is timed), and the share of
+#: its calls of tanh where a lane's argument is below 20 (the longer path): the paper's one tanh is the
+#: contact's friction, sliding (callgrind: 0.1 calls of the longer path per RK4 step); the UR5's seven (six
+#: joints' Coulomb friction near rest and the contact's) all take it (28 calls per step)
 LOOPS = {
-    "paper": (lambda quick: [closed_loop.prepare(apply(paper_experiment(), {"model_error": m}))
-                             for m in np.linspace(0.0, 0.5, 32 if quick else 128)], 0.0),
-    "3-D": (lambda quick: [closed_loop.prepare(tracing_experiment(model_error=m))
-                           for m in np.linspace(0.0, 0.3, 8 if quick else 16)], 1.0)}
+    "paper": (lambda n: [closed_loop.prepare(apply(paper_experiment(), {"model_error": m}))
+                         for m in np.linspace(0.0, 0.5, n)], 0.0),
+    "3-D": (lambda n: [closed_loop.prepare(tracing_experiment(model_error=m)) for m in np.linspace(0.0, 0.3, n)], 1.0)}
 
 
 def lane_costs(peak: dict) -> dict[str, float]:
@@ -105,12 +103,14 @@ def peak_benchmarks(quick: bool, add) -> dict:
 
 
 def _run_ms(groups: dict[str, list], repeat: int) -> dict[str, float]:
-    """Each loop's time a run [ms] on one core, the loops timed in turns (medians)."""
+    """Each loop's time a run [ms] on one core: one group of lanes a timing (short, so that fewer are
+    interrupted on a shared machine), the loops in turns, the median of ``repeat`` timings each."""
     times: dict[str, list[float]] = {name: [] for name in groups}
+    one = {name: runs[:runs[0].loop.lanes] for name, runs in groups.items()}  # one group each
 
     def measure() -> float:
         for _ in range(repeat):
-            for name, runs in groups.items():
+            for name, runs in one.items():
                 t0 = time.perf_counter()
                 closed_loop.run(runs)
                 times[name].append((time.perf_counter() - t0) / len(runs) * 1e3)
@@ -121,14 +121,14 @@ def _run_ms(groups: dict[str, list], repeat: int) -> dict[str, float]:
     return {name: statistics.median(t) for name, t in times.items()}
 
 
-def bound_benchmarks(quick: bool, add, peak: dict | None = None, run_ms: Callable | None = None) -> None:
+def bound_benchmarks(quick: bool, add) -> None:
     """The peak's rows, then for each of :data:`LOOPS` its census (a row: its vector operations per RK4 step)
     and a run in lanes against its floating-point bound (a row: the run over the bound)."""
-    peak = peak or peak_benchmarks(quick, add)
-    groups = {name: make(quick) for name, (make, _) in LOOPS.items()}
+    peak = peak_benchmarks(quick, add)
+    groups = {name: make(max(peak["lanes"], 2)) for name, (make, _) in LOOPS.items()}  # a group of lanes
     for runs in groups.values():
         closed_loop.run(runs)  # built and loaded before it is timed
-    taken = (run_ms or _run_ms)(groups, 3 if quick else 7)
+    taken = _run_ms(groups, 5 if quick else 41)
     for name, (_, below) in LOOPS.items():
         census = census_of(groups[name][0], peak, below)
         counts = census["counts"]

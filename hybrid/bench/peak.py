@@ -14,9 +14,11 @@ from hybrid.bench.templates import render
 
 #: the kinds timed (codegen/census.py's), each as the C of one operation on the accumulator ``a`` (``b``
 #: within 1e-9 of 1, ``c`` tiny: the accumulators stay near 1); ``select`` is a comparison and a blend
-#: (one of each a time), ``bitwise`` an absolute value
+#: (one of each a time), ``bitwise`` an absolute value; and ``load``, a vector read from the first level
+#: cache (``m``, taken in by a bitwise operation), which the census does not count (a kernel's reads of
+#: what a run holds and of the compiler's spills are the compiler's choice)
 KINDS = {"fma": "a * b + c", "mul": "a * b", "add": "a + c", "div": "a / b", "sqrt": "hl_sqrt(a)",
-         "select": "hl_select(a < b, c, a)", "bitwise": "hl_fabs(a)"}
+         "select": "hl_select(a < b, c, a)", "bitwise": "hl_fabs(a)", "load": "(hl_v)((hl_i)a ^ (hl_i)m)"}
 #: the pairs timed together, half the accumulators each: whether adds run beside fused multiply-adds, a
 #: division beside them, a square root beside a division
 PAIRS = (("fma", "add"), ("fma", "div"), ("div", "sqrt"))
