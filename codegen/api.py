@@ -24,7 +24,9 @@ names, flags and numbers) or kernels they returned, and give kernels or generate
   environment that renders C templates
   (:func:`template_environment`, for another C program of the project's);
 - a surface's ``phi`` in CasADi (:func:`phi_sx`) and a kernel as a CasADi Function
-  (:func:`kernel_function`).
+  (:func:`kernel_function`);
+- what a closed loop's lanes execute: :func:`loop_census` (its vector operations by kind per RK4 step, and
+  its chain; :func:`kernel_census` for one kernel, ``CENSUS_KINDS`` the kinds).
 """
 
 from __future__ import annotations
@@ -32,6 +34,8 @@ from __future__ import annotations
 from hybrid.spec.stamp import stamp
 
 from .casadi_backend import kernel_function
+from .census import KINDS as CENSUS_KINDS
+from .census import kernel_census, loop_census
 from .closed_loop import LoopSpec, build_closed_loop_unit
 from .constant_model import constant_kernels
 from .controller_step import controller_kernels
@@ -67,9 +71,10 @@ def shared_headers() -> dict[str, str]:
     return {LANES_HEADER: stamp(lanes_header()), PATH_HEADER: stamp(path_header()), PART_HEADER: stamp(part_header())}
 
 
-__all__ = ["BACKENDS", "LANES_HEADER", "PART_HEADER", "PATH_HEADER", "LoopSpec", "Unit", "build_closed_loop_unit",
-           "build_controller_unit", "build_frame_unit", "build_inertia_unit", "build_law_unit", "build_planar_unit",
-           "build_plant_unit", "build_regressor_unit", "build_robot_unit", "build_standalone_controller",
-           "build_standalone_plant", "constant_kernels", "controller_kernels",
-           "kernel_function", "law_kernels", "path_header", "phi_sx", "planar_kernels", "plant_kernels",
-           "robot_kernels", "safe_stop_kernel", "shared_headers", "template_environment"]
+__all__ = ["BACKENDS", "CENSUS_KINDS", "LANES_HEADER", "PART_HEADER", "PATH_HEADER", "LoopSpec", "Unit",
+           "build_closed_loop_unit", "build_controller_unit", "build_frame_unit", "build_inertia_unit",
+           "build_law_unit", "build_planar_unit", "build_plant_unit", "build_regressor_unit", "build_robot_unit",
+           "build_standalone_controller", "build_standalone_plant", "constant_kernels", "controller_kernels",
+           "kernel_census", "kernel_function", "law_kernels", "loop_census", "path_header", "phi_sx",
+           "planar_kernels", "plant_kernels", "robot_kernels", "safe_stop_kernel", "shared_headers",
+           "template_environment"]

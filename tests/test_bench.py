@@ -2,19 +2,25 @@
 ``--only`` picks groups, and the helpers it measures with do what they say (timings are never asserted)."""
 
 import os
+import platform
+import re
+import subprocess
 
 import numpy as np
 import pytest
-from hybrid.codegen import casadi_backend, controller_step, spatial_plant
+import sympy as sp
+from hybrid.codegen import casadi_backend, census, controller_step, lanes, spatial_plant
+from hybrid.codegen.kernel import Arg, Kernel
 
 from hybrid import bench
-from hybrid.bench import harness, pinocchio_codegen, robots, runs, standalone, targets
+from hybrid.bench import bound, harness, peak, pinocchio_codegen, robots, runs, standalone, targets
 from hybrid.bench.groups import benchmark_groups, select_groups
 from hybrid.bench.report import format_table
 from hybrid.cli.main import main
 from hybrid.errors import HybridError
 from hybrid.experiments.paper import paper_experiment
 from hybrid.experiments.tracing import tracing_experiment
+from hybrid.native import compiler, generator
 from hybrid.spec.controller_step import CONTROLLER_STEP, WRENCH
 
 
@@ -30,7 +36,8 @@ def test_bench_quick_reports_every_benchmark():
                  targets.TRACE_RUN, targets.SWEEP_3D, targets.LOOP_OPS, f"ur5: {targets.LAW_BATCHED}",
                  targets.PATH_FOLLOW, targets.PATH_SAMPLE, targets.PATH_RUN, targets.PART_FIT, targets.PART_SAMPLE,
                  targets.PART_RUN, targets.EXCITATION_QUICK, targets.IDENTIFY,
-                 f"panda: {targets.constant_row('forward_dynamics', True)}"):
+                 f"panda: {targets.constant_row('forward_dynamics', True)}", targets.peak_row("div"),
+                 targets.census_row("paper"), targets.bound_row("paper"), targets.bound_row("3-D")):
         assert part in names
     if hasattr(os, "sched_setaffinity"):
         assert f"ur5: {targets.LAW_BATCHED_ONE_CORE}" in names
@@ -198,3 +205,94 @@ def test_alone_is_bitwise_compares_the_bits():
     assert not robots.alone_is_bitwise(lambda x, y: x - x.mean(axis=0), batch)
     # -0.0 equals 0.0, but not bitwise
     assert not robots.alone_is_bitwise(lambda x, y: np.full((len(x), 1), 0.0 if len(x) > 1 else -0.0), batch)
+
+
+# ------------------------------------------------------------------ the lanes against the floating-point bound
+
+#: GCC's x86-64 vector instructions by the census's kind (AT&T mnemonics)
+_ASM_KINDS = (("fma", r"vf(n?)m(add|sub)\d+pd"), ("mul", r"vmulpd"), ("add", r"v(add|sub)pd"), ("div", r"vdivpd"),
+              ("sqrt", r"vsqrtpd"))
+_X86_GCC = platform.machine() in ("x86_64", "AMD64") and compiler.is_gcc(compiler.compiler()[1])
+
+
+def _compiled_kinds(source: str, function: str) -> dict:
+    """The arithmetic vector instructions GCC emits for ``function`` of ``source`` (four lanes, AVX2), by kind."""
+    asm = subprocess.run([compiler.compiler()[0], "-O3", "-fno-math-errno", "-std=gnu99", "-march=x86-64-v3",
+                          f"-I{generator.include_dir()}", "-S", "-o", "-", "-x", "c", "-"],
+                         input=source, capture_output=True, text=True, check=True).stdout
+    body = asm[asm.index(f"\n{function}:"):]
+    body = body[:body.index(".size")]
+    mnemonics = [line.split()[0] for line in body.splitlines() if line.strip()]
+    return {kind: sum(bool(re.fullmatch(pattern, m)) for m in mnemonics) for kind, pattern in _ASM_KINDS}
+
+
+@pytest.mark.skipif(not _X86_GCC, reason="counts GCC's x86-64 instructions")
+def test_the_census_of_a_kernel_is_what_the_compiler_emits():
+    """Sums, products (some fused), a shared divisor, a square root: the census of the lanes function counts
+    the instructions GCC compiles it to, kind by kind; uncontracted, each fused pair is a product and a sum."""
+    x, k = sp.symbols("x0:6", real=True), sp.symbols("k0:2", real=True)
+    ys = [x[0] * x[1] + x[2] * k[0], (x[3] - x[4]) / (x[5] + k[1]), sp.sqrt(x[0] ** 2 + x[1] ** 2 + 1) * k[0],
+          x[2] * x[3] * x[4] - x[5] / k[1], (x[0] + x[1]) * (x[2] - x[3]) / (x[5] + k[1]), x[4] * x[4] - 3 * x[0]]
+    kernel = Kernel("probe", (Arg("x", sp.Matrix(x)), Arg("k", sp.Matrix(k))), (Arg("y", sp.Matrix(ys)),), "probe")
+    text = lanes.lanes_function(kernel, "probe_lanes", ("k",), "static")
+    source = (f'#define HL_W 4\n#include "hybrid_lanes.h"\n{text}\n'
+              "void probe(const hl_v *x, const hl_v *pre, hl_v *y) { probe_lanes(x, pre, y); }\n")
+    fused = census.kernel_census(kernel, ("k",)).counts
+    assert {k: fused[k] for k, _ in _ASM_KINDS} == _compiled_kinds(source, "probe")
+    assert fused["fma"] > 0 and fused["div"] == 1 and fused["sqrt"] == 1  # one division: the divisor is shared
+    apart = census.kernel_census(kernel, ("k",), contract=False).counts
+    assert apart["fma"] == 0 and apart["mul"] == fused["mul"] + fused["fma"]
+    assert apart["add"] == fused["add"] + fused["fma"]
+
+
+@pytest.mark.skipif(not _X86_GCC, reason="counts GCC's x86-64 instructions")
+@pytest.mark.parametrize("poly, call", [
+    ("sincos_near", "void p(hl_v x, const hl_v *b, hl_v *s, hl_v *c, hl_i *o) { *o = hl_rotate(x, b, s, c); }"),
+    ("sincos", "void p(hl_v x, hl_v *s, hl_v *c, hl_i *o) { hl_sincos_poly(x, s, c, o); }"),
+    ("exp", "hl_v p(hl_v x, hl_i *o) { return hl_exp_poly(x, o); }")])
+def test_the_census_of_a_polynomial_is_what_the_compiler_emits(poly, call):
+    got = _compiled_kinds(f'#define HL_W 4\n#include "hybrid_lanes.h"\n{call}\n', "p")
+    assert got == {k: census.POLYNOMIALS[poly].get(k, 0) for k, _ in _ASM_KINDS}
+
+
+def test_the_peak_program_gives_positive_finite_times_for_every_kind():
+    got = peak.machine_peak(operations=2000, repeat=3)
+    assert got["lanes"] in (1, 2, 4, 8, 16) and 0 < got["cycle"] < 10
+    assert set(got["kinds"]) == set(peak.KINDS) | {f"{a}_{b}" for a, b in peak.PAIRS}
+    assert all(np.isfinite(t) and t > 0 for times in got["kinds"].values() for t in times)
+    assert all(0 <= peak.shared(got, a, b) <= 1 for a, b in peak.PAIRS)
+
+
+def _peak(fma_add_pair: float) -> dict:
+    """A machine of four lanes whose every kind takes 1 ns (a division 8, a square root 16), latency 4 ns; adds
+    and fused multiply-adds take ``fma_add_pair`` ns an operation together; a division and a square root share."""
+    kinds = {k: (1.0, 4.0) for k in peak.KINDS} | {"div": (8.0, 12.0), "sqrt": (16.0, 20.0)}
+    return {"lanes": 4, "cycle": 0.25, "kinds": kinds | {"fma_add": (fma_add_pair, 4.0), "fma_div": (4.0, 4.0),
+                                                         "div_sqrt": (12.0, 12.0)}}
+
+
+def test_the_bound_adds_each_kind_at_its_peak_and_the_unit_bound_takes_the_busiest():
+    counts = {"fma": 100, "mul": 50, "add": 120, "div": 10, "sqrt": 2, "compare": 20, "select": 10, "bitwise": 8}
+    # per lane: 1/4 ns an operation, a comparison or select half of that, a division 2 ns, a square root 4 ns
+    per_step = (100 + 50 + 120 + 8) / 4 + (20 + 10) / 8 + 10 * 2 + 2 * 4
+    apart = bound.bounds(counts, 400.0, 1000, _peak(0.5))  # adds beside the fused multiply-adds
+    assert apart["sum"] == pytest.approx(1000 * per_step / 1e6)
+    assert sum(apart["shares"].values()) == pytest.approx(1.0)
+    # the units: fma + mul (150 / 4 ns), add (30 ns), the divider (10 x 2 + 2 x 4 = 28 ns)
+    assert apart["busiest"] == ("fma", "mul") and apart["unit"] == pytest.approx(1000 * 150 / 4 / 1e6)
+    assert apart["chain"] == pytest.approx(1000 * 400.0 / 4 / 1e6)  # a group's chain over its four lanes
+    together = bound.bounds(counts, 400.0, 1000, _peak(1.0))  # adds on the same unit
+    assert together["busiest"] == ("fma", "mul", "add") and together["unit"] == pytest.approx(1000 * 270 / 4 / 1e6)
+    assert ("div", "sqrt") in bound.units_of(_peak(1.0))
+
+
+def test_bench_only_reports_the_lanes_against_their_bound(capsys):
+    assert main(["bench", "--quick", "--only", "floating-point bound"]) == 0
+    out = capsys.readouterr().out
+    rows = [line for line in out.splitlines()[1:] if line.strip()][:-1]  # the rows, not the machine
+    names = [targets.peak_row(k) for k in peak.KINDS]
+    names += [f(loop) for loop in bound.LOOPS for f in (targets.census_row, targets.bound_row)]
+    assert [r[:len(n)] for r, n in zip(rows, names)] == names
+    for row, name in zip(rows, names):
+        value = float(row[len(name):].split()[0].replace(",", ""))
+        assert np.isfinite(value) and value > 0

@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from functools import partial
 
+from hybrid.bench.bound import bound_benchmarks
 from hybrid.bench.constant_model import ARMS as CONSTANT_ARMS
 from hybrid.bench.constant_model import constant_model_benchmarks
 from hybrid.bench.dynamics import dynamics_benchmarks
@@ -69,6 +70,9 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
                ("3-D runs (UR5 on the sphere): one through simulate, in the compiled loop, a sweep on every core",
                 partial(trace_benchmarks, quick, add)),
                ("the 3-D closed loop's generated operations per RK4 step", partial(loop_operation_benchmarks, add)),
+               ("the lanes at the floating-point bound: the machine's peak per kind of vector operation, the loops' "
+                "census of them, a paper and a 3-D run in lanes against their bound",
+                partial(bound_benchmarks, quick, add)),
                ("the standalone controller (generated C): each step call timed, code size, compile time",
                 partial(standalone_benchmarks, quick, add)),
                ("path tasks: the follower per call, the controller's sample with one, a raster's run",

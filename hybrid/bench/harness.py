@@ -75,6 +75,15 @@ def c_program_ns(source: str, src_dir: Path, prefix: str, calls: int, repeat: in
                  include: tuple[Path, ...] = ()) -> float:
     """The median of the per-call times [ns] a timing program (``source``, compiled with the unit ``prefix``
     of ``src_dir`` and the runtime's flags) prints, run for ``calls`` calls ``repeat`` times (then ``args``)."""
+    out = c_program_output(source, (src_dir / f"{prefix}.c",), (str(calls), str(repeat), *args),
+                           include=(src_dir, *include))
+    return statistics.median(float(x) for x in out.split())
+
+
+def c_program_output(source: str, sources: tuple[Path, ...], args: tuple[str, ...],
+                     include: tuple[Path, ...] = ()) -> str:
+    """What the C program ``source`` prints, compiled with ``sources`` and the runtime's flags (the
+    generator's headers and ``include`` on the include path), run with ``args``."""
     cc, ident = compiler.compiler()
     with tempfile.TemporaryDirectory() as tmp:
         main = Path(tmp) / "bench.c"
@@ -82,8 +91,7 @@ def c_program_ns(source: str, src_dir: Path, prefix: str, calls: int, repeat: in
         exe = Path(tmp) / "bench"
         flags = [f for f in compiler.flags(ident) if f != "-fPIC"]
         # the unit's folder, and the generator's headers (the SIMD lanes' header a unit includes)
-        folders = [f"-I{d}" for d in (src_dir, generator.include_dir(), *include)]
-        subprocess.run([cc, *flags, *folders, str(main), str(src_dir / f"{prefix}.c"), "-o", str(exe), "-lm"],
+        folders = [f"-I{d}" for d in (*include, generator.include_dir())]
+        subprocess.run([cc, *flags, *folders, str(main), *map(str, sources), "-o", str(exe), "-lm"],
                        check=True, capture_output=True)
-        out = subprocess.run([str(exe), str(calls), str(repeat), *args], check=True, capture_output=True, text=True)
-    return statistics.median(float(x) for x in out.stdout.split())
+        return subprocess.run([str(exe), *args], check=True, capture_output=True, text=True).stdout

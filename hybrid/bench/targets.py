@@ -90,10 +90,27 @@ EXCITATION = "excitation trajectory of the Panda by hybrid.excitation_trajectory
 EXCITATION_QUICK = "excitation trajectory of the Panda by hybrid.excitation_trajectory (5 harmonics, 1 restart)"
 IDENTIFY = "dynamics identified from a log of 10^5 samples (Panda, 1 kHz): filtered, fitted, made consistent"
 REGRESSOR = "the Panda's joint-torque regressor Y(q, q', q'') in C, batched, per state"
+
+
 #: LOOP_OPS before the body-frame algorithms: 4 x 2,593 (the plant's right-hand side) + 3,488 / 100 (the
 #: controller step, once a sample of 100 steps) = 10,406.9. A reference count, like a baseline: the target
 #: is a share of it
 LOOP_OPS_REFERENCE = 10_407
+
+
+def peak_row(kind: str) -> str:
+    """The name of the row of the machine's peak for one kind of vector operation (hybrid.bench.peak's)."""
+    return f"machine peak at the lanes' vector width (accumulators in registers): {kind}, per operation per lane"
+
+
+def census_row(loop: str) -> str:
+    """The name of the row of a closed loop's census (``loop``: paper, 3-D)."""
+    return f"{loop} closed loop in lanes, vector operations per RK4 step by kind (the generator's census)"
+
+
+def bound_row(loop: str) -> str:
+    """The name of the row of a run in lanes against its floating-point bound (``loop``: paper, 3-D)."""
+    return f"{loop} run in lanes, one core, over its floating-point bound (each kind at its measured peak)"
 
 # ------------------------------------------------------------------ the standalone controller (after "ARM: ")
 

@@ -36,11 +36,16 @@ CFLAGS = ("-O3", "-fPIC", "-fno-math-errno", "-std=gnu99") + (
 GCC_FLAGS = ("-fschedule-insns", "-fsched-pressure")
 
 
+def is_gcc(ident: str) -> bool:
+    """Whether the compiler whose ``--version`` line is ``ident`` is GCC (whose line reads ``NAME (PACKAGE)
+    VERSION``; Clang's and others' do not)."""
+    return re.match(r"\S+ \(.*\) \d", ident) is not None and "clang" not in ident.lower()
+
+
 def flags(ident: str) -> tuple[str, ...]:
     """The flags a build passes to the compiler whose ``--version`` line is ``ident``: :data:`CFLAGS`, and
-    :data:`GCC_FLAGS` for GCC (whose line reads ``NAME (PACKAGE) VERSION``; Clang's and others' do not)."""
-    gcc = re.match(r"\S+ \(.*\) \d", ident) is not None and "clang" not in ident.lower()
-    return CFLAGS + (GCC_FLAGS if gcc else ())
+    :data:`GCC_FLAGS` for GCC (:func:`is_gcc`)."""
+    return CFLAGS + (GCC_FLAGS if is_gcc(ident) else ())
 
 
 @cache
