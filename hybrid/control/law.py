@@ -36,12 +36,13 @@ from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
 from hybrid.native.binding import is_batch
 from hybrid.spec.interfaces import PRINTERS
-from hybrid.validate import SINGULAR_TOL, check_singular_tol, check_size, shown
+from hybrid.validate import SINGULAR_TOL, check_singular_tol, check_size, checked_keywords, shown
 
 #: the derivations a law can run: the rigid-body algorithms, or the planar arm's committed closed form
 BACKENDS = ("rigid_body", *PRINTERS)
 
 
+@checked_keywords
 class DecouplingLaw:
     """The compiled decoupling law of ``robot`` on ``surface`` for the task ``axes``.
 
