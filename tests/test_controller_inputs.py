@@ -207,9 +207,9 @@ def test_a_path_that_cannot_be_called_is_refused_when_given(path):
 #: ``sweeps.<name>``); each refuses a call that does not fit its signature with a HybridError, not a TypeError
 CONSTRUCTORS = {name: getattr(hybrid, name) for name in (
     "Controller", "Tracking", "Limits", "Sensing", "Gains", "Step", "Posture", "ContactLoss", "FaultReaction",
-    "Reference", "WrenchSensor", "Tool", "PathTask", "Robot", "Arm", "DecouplingLaw", "Plane", "Circle", "Sphere",
-    "Cylinder", "ImplicitSurface", "MeshSurface", "PointCloudSurface", "EstimatedSurface", "CirclePath", "LinePath",
-    "WaypointPath", "RasterPath", "SpiralPath", "Experiment", "Sensor", "Contact")}
+    "Reference", "WrenchSensor", "Tool", "PathTask", "Robot", "Arm", "DecouplingLaw", "decoupling_law", "Plane",
+    "Circle", "Sphere", "Cylinder", "ImplicitSurface", "MeshSurface", "PointCloudSurface", "EstimatedSurface",
+    "CirclePath", "LinePath", "WaypointPath", "RasterPath", "SpiralPath", "Experiment", "Sensor", "Contact")}
 CONSTRUCTORS |= {f"sweeps.{name}": getattr(hybrid.sweeps, name) for name in ("Uniform", "LogUniform", "Normal")}
 
 

@@ -321,6 +321,7 @@ def _finite_tau0(tau0) -> None:
         raise NonFiniteError(f"tau0 = {np.array2string(np.asarray(tau0, float), precision=4):.100} is not finite")
 
 
+@checked_keywords
 @renamed_keywords(reference="frame_direction")
 def decoupling_law(robot: Robot | Arm, surface: Surface, curvature: bool = False, *, backend: str | None = None,
                    singular_tol: float = SINGULAR_TOL, frame_direction=(0.0, 0.0, 1.0), axes=None) -> DecouplingLaw:
