@@ -50,13 +50,14 @@ def check_call(where: str, signature: inspect.Signature, args: tuple, kwargs: di
     required = [p.name for p in params if p.default is p.empty and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)]
     missing = [k for k in required if k not in positional[:len(given)] and k not in kwargs]
     if unknown:
-        near = difflib.get_close_matches(unknown[0], keywords, n=1, cutoff=0.6)
-        hint = f"did you mean {near[0]!r}?" if near else "give one of its keywords"
+        near = nearest(unknown[0], keywords)
+        hint = f"did you mean {near!r}?" if near else "give one of its keywords"
         problem = f"{where} has no keyword {shown(unknown[0], 40)}; {hint} (help(hybrid.{where}))"
     elif len(given) > len(positional):
-        problem = (f"{where} takes {len(positional)} argument{'s' * (len(positional) != 1)} by position "
-                   f"({', '.join(positional)}), {len(given)} were given (the first extra: "
-                   f"{shown(given[len(positional)], 40)}); give the others by keyword")
+        takes = (f"takes {len(positional)} argument{'s' * (len(positional) != 1)} by position "
+                 f"({listed(positional, 6)})" if positional else "takes its arguments by keyword only")
+        problem = (f"{where} {takes}, {len(given)} {'was' if len(given) == 1 else 'were'} given (the first extra: "
+                   f"{shown(given[len(positional)], 40)}); give {'the others' if positional else 'them'} by keyword")
     elif twice:
         problem = f"{where}: {twice[0]} is given twice, by position and as a keyword; give it once"
     else:
@@ -64,19 +65,63 @@ def check_call(where: str, signature: inspect.Signature, args: tuple, kwargs: di
     raise HybridError(f"{problem}\n  its arguments: {', '.join(keywords)}") from None
 
 
-def checked_keywords(cls: type) -> type:
-    """A class decorator (after ``@dataclass``): a call with a keyword the class has not, or too many arguments,
-    is refused by :func:`check_call`, its signature shown as before."""
-    init = cls.__init__
-    signature = inspect.signature(init)
+def nearest(word: str, names) -> str | None:
+    """The one of ``names`` a user most likely meant by ``word`` (a keyword misspelt), or None: the same but
+    for capitals; else the one a single typo away (a letter dropped, added, changed, or two swapped; of several,
+    one with the same letters, then the most similar by :mod:`difflib`); else the most similar, if similar
+    enough."""
+    names = list(names)
+    same = [n for n in names if n.lower() == word.lower()]
+    if same:
+        return same[0]
+    typo = [n for n in names if _one_typo(word, n)]
+    if typo:  # two letters swapped first (its letters all there), then the most similar
+        return max(typo, key=lambda n: (sorted(n) == sorted(word), difflib.SequenceMatcher(None, word, n).ratio()))
+    near = difflib.get_close_matches(word, names, n=1, cutoff=0.6)
+    return near[0] if near else None
 
-    @functools.wraps(init)
-    def __init__(self, *args, **kwargs):
-        check_call(cls.__name__, signature, (self, *args), kwargs)
-        init(self, *args, **kwargs)
 
-    cls.__init__ = __init__
-    return cls
+def _one_typo(a: str, b: str) -> bool:
+    """Whether ``a`` and ``b`` differ by one typo: a letter dropped or added, one changed, or two neighbours
+    swapped."""
+    if a == b or abs(len(a) - len(b)) > 1:
+        return False
+    i = 0
+    while i < min(len(a), len(b)) and a[i] == b[i]:
+        i += 1
+    if len(a) == len(b):
+        return a[i + 1:] == b[i + 1:] or (a[i:i + 2] == b[i:i + 2][::-1] and a[i + 2:] == b[i + 2:])
+    longer, shorter = (a, b) if len(a) > len(b) else (b, a)
+    return longer[i + 1:] == shorter[i:]
+
+
+def checked_keywords(target=None, *, where: str | None = None):
+    """A decorator of a class (after ``@dataclass``) or of a function that makes things: a call with a keyword it
+    has not, too many arguments by position, one missing or given twice is refused by :func:`check_call` (a
+    HybridError naming the nearest keyword) in place of Python's TypeError; its signature stays as it was, for
+    ``help`` and ``inspect``. ``where``: its name in the message (default its own; ``"sweeps.Uniform"`` for one
+    that is not ``hybrid.<name>``). The call is checked only when it fails: a call that fits costs nothing more.
+
+    ``@checked_keywords`` or ``@checked_keywords(where=...)``."""
+    def decorate(made):
+        name = where or made.__name__
+        call = made.__init__ if isinstance(made, type) else made
+        signature = inspect.signature(call)
+
+        @functools.wraps(call)
+        def checked(*args, **kwargs):
+            try:
+                return call(*args, **kwargs)
+            except TypeError:  # Python binds the arguments before the body runs: nothing was done
+                check_call(name, signature, args, kwargs)  # a HybridError when they do not fit the signature
+                raise  # they fit: the TypeError is the body's own
+
+        if not isinstance(made, type):
+            return checked
+        made.__init__ = checked
+        return made
+
+    return decorate if target is None else decorate(target)
 
 
 def field_values(obj) -> dict:

@@ -155,6 +155,27 @@ def test_a_refused_sample_changes_nothing(live, bad):
     np.testing.assert_allclose(tau_c, err.value.torque, rtol=1e-12, atol=1e-12)
 
 
+@pytest.mark.parametrize("T2", [0.004, 0.02])
+def test_a_sample_time_changed_between_samples_is_the_period_in_python_as_in_c(live, T2):
+    """The C's ``sample_time`` field is the period its step advances by; the controller's attribute is the same:
+    changed in both after a few samples, the samples on time at the new period give the same torques and every
+    state (the integrals, the sensor's filter, the estimate) alike."""
+    py, c, samples = _fresh(live)
+    T = py.sample_time
+    _run(py, c, samples[:3])
+    try:
+        py.sample_time = c.c.sample_time = T2
+        t = samples[2][0]
+        for _, q, qd, w in samples[3:7]:
+            t += T2
+            _run(py, c, [(t, q, qd, w)])
+            now_py, now_c = python_state(py), c_state(c)
+            for name in ("integrals", "filter", "estimate"):
+                np.testing.assert_allclose(now_py[name], now_c[name], rtol=1e-12, atol=1e-12, err_msg=name)
+    finally:
+        py.sample_time = T
+
+
 # --------------------------------------------------------------------------- parameters that cannot lift a limit
 
 NAN = float("nan")

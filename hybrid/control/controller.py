@@ -106,7 +106,9 @@ class Controller(SampleReferences, GroupedSettings, CheckedParameters, CopiedRun
     Every number the compiled step reads is checked against its declaration, as the standalone C checks
     it (:mod:`hybrid.control.step_checks`); the arrays the step reads are then read-only. The settings a
     sample reads in Python (``sample_time``, ``timing_tolerance``, ``singular_tol``) may change between
-    samples: one changed to an invalid value refuses the sample with a :class:`~hybrid.ParameterError`
+    samples: a new ``sample_time`` is the period of everything from the next sample on (the timing check,
+    the integrals, the filter, the estimate, a path task's progress), as for a controller built with it;
+    one changed to an invalid value refuses the sample with a :class:`~hybrid.ParameterError`
     (``status`` ``PARAMETER_INVALID``, ``torque`` the torque last written), nothing changed.
 
     A controller copies (``copy.copy``, ``copy.deepcopy``) and pickles: the copy is built anew from the same
@@ -170,7 +172,8 @@ class Controller(SampleReferences, GroupedSettings, CheckedParameters, CopiedRun
         if self._spatial.local and (frame == "desired" or position_error):
             raise HybridError("a part is expanded about the tip at each sample, not about a desired point: use "
                               "frame='actual' and position_error=False with it")
-        self.sample_time, self.integral, self.curvature, self.frame = float(sample_time), integral, curvature, frame
+        # the sample time is also one of the step's numbers: set later, it is written there (step_checks)
+        self._sample_time, self.integral, self.curvature, self.frame = float(sample_time), integral, curvature, frame
         self.frame_direction = tuple(frame_direction_of((0.0, 0.0, 1.0) if frame_direction is None
                                                         else frame_direction))
         self.singular_tol, self.path = float(singular_tol), path
@@ -315,7 +318,7 @@ class Controller(SampleReferences, GroupedSettings, CheckedParameters, CopiedRun
         if not isinstance(sensor, WrenchSensor):
             raise HybridError(f"sensor = {shown(sensor, 60)}; give a hybrid.WrenchSensor(...)")
         self._params = self._checked_parameters({**self.step_inputs(),
-                                                 "sensor": sensor.as_array(self.robot, self.sample_time)})
+                                                 "sensor": sensor.as_array(self.robot, self._period)})
         self.wrench_sensor = sensor
         self._bind()
 

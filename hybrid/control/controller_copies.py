@@ -38,7 +38,9 @@ class CopiedRun:
         """The state of the run, as :meth:`__setstate__` takes it (arrays that :meth:`__setstate__` copies from)."""
         follower = None if self._path_task is None else self._path_task.follower
         outputs = getattr(self, "_out", None)  # the last sample's outputs (``last``), once the step is built
-        return {"attributes": {k: v for k, v in vars(self).items() if not k.startswith("_")},
+        # the settings as they are now: the public attributes, and the sample time (a property: it writes the step's)
+        attributes = {k: v for k, v in vars(self).items() if not k.startswith("_")} | {"sample_time": self.sample_time}
+        return {"attributes": attributes,
                 "held": self._held, "params": self._params, "start_params": self._start_params,
                 "clock": self._clock, "checked_settings": self._checked_settings, "sampled": self._sampled,
                 "fault": self._fault.state,
@@ -53,13 +55,14 @@ class CopiedRun:
             raise HybridError("this controller's run does not fit the controller built from its settings (a pickle "
                               "written by another version of hybrid?); build it again: Controller(robot, surface, "
                               "scheme, tracking=..., limits=..., sensing=...) from the old one's records")
-        vars(self).update(run["attributes"])
         for held, saved in zip(self._held, run["held"], strict=True):
             held[...] = saved
         for params in (run["params"], run["start_params"]):
             for a in params:  # the step's numbers change only by replacement, after their checks
                 a.flags.writeable = False
         self._params, self._start_params = run["params"], run["start_params"]
+        for name, value in run["attributes"].items():  # after the numbers: the sample time writes its own there
+            setattr(self, name, value)
         self._clock, self._checked_settings, self._sampled = run["clock"], run["checked_settings"], run["sampled"]
         self._fault.state[...] = run["fault"]
         if run["path"] is not None:

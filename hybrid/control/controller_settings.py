@@ -178,7 +178,9 @@ class Limits(_Group):
     Parameters
     ----------
     sample_time : float
-        The period ``T`` [s] at which the integrals advance (default 0.01).
+        The period ``T`` [s] at which the integrals, the sensor's filter and the estimate advance (default
+        0.01). A controller's ``sample_time`` may change between samples: the samples after it run at the
+        new period.
     timing_tolerance : float or None
         A sample is on time when ``t`` advanced by ``T`` within this fraction of it (default 0.25). A
         late, early, repeated or backwards sample raises :class:`~hybrid.SampleTimingError` carrying the

@@ -80,13 +80,14 @@ import numpy as np
 from hybrid.errors import HybridError
 from hybrid.geometry.surfaces import Surface
 from hybrid.spec.surface import SurfaceSpec
-from hybrid.validate import shown
+from hybrid.validate import checked_keywords, shown
 
 #: the estimators by name: (weight of the force estimate, of the velocity estimate, friction correction)
 METHODS = {"force": (1.0, 0.0, 1.0), "force_uncorrected": (1.0, 0.0, 0.0), "velocity": (0.0, 1.0, 0.0),
            "fusion": (1.0, 1.0, 1.0)}
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class EstimatedSurface(Surface):
     """A surface the controller is not told: the task frame from an online estimate of its normal.

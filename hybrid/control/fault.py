@@ -30,9 +30,10 @@ import numpy as np
 from hybrid.errors import HybridError, SafeStopError
 from hybrid.spec.controller_step import FAULT, FAULT_CHECKS, FAULT_DEFAULTS, FAULT_STATE, OPTIONS
 from hybrid.spec.interfaces import CHECKS, Dims
-from hybrid.validate import shown
+from hybrid.validate import checked_keywords, shown
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class FaultReaction:
     """The fault reaction's numbers (module docstring).

@@ -36,12 +36,13 @@ from hybrid.models.robot import Robot, as_robot
 from hybrid.native import units
 from hybrid.native.binding import is_batch
 from hybrid.spec.interfaces import PRINTERS
-from hybrid.validate import SINGULAR_TOL, check_singular_tol, check_size, shown
+from hybrid.validate import SINGULAR_TOL, check_singular_tol, check_size, checked_keywords, shown
 
 #: the derivations a law can run: the rigid-body algorithms, or the planar arm's committed closed form
 BACKENDS = ("rigid_body", *PRINTERS)
 
 
+@checked_keywords
 class DecouplingLaw:
     """The compiled decoupling law of ``robot`` on ``surface`` for the task ``axes``.
 
@@ -320,6 +321,7 @@ def _finite_tau0(tau0) -> None:
         raise NonFiniteError(f"tau0 = {np.array2string(np.asarray(tau0, float), precision=4):.100} is not finite")
 
 
+@checked_keywords
 @renamed_keywords(reference="frame_direction")
 def decoupling_law(robot: Robot | Arm, surface: Surface, curvature: bool = False, *, backend: str | None = None,
                    singular_tol: float = SINGULAR_TOL, frame_direction=(0.0, 0.0, 1.0), axes=None) -> DecouplingLaw:

@@ -9,9 +9,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from hybrid.errors import HybridError
-from hybrid.validate import _finite, field_values
+from hybrid.validate import _finite, checked_keywords, field_values
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Gains:
     """Loop gains of conventions §4 (task frame, per axis).

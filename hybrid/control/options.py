@@ -16,9 +16,10 @@ import numpy as np
 from hybrid.control.references import Step
 from hybrid.errors import HybridError
 from hybrid.spec.axes import AXIS_NAMES
-from hybrid.validate import _finite, shown
+from hybrid.validate import _finite, checked_keywords, shown
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class ContactLoss:
     """What a force axis does when its measured force is below ``threshold`` [N or N m] (before the
@@ -67,6 +68,7 @@ def _gain(name: str, value, n: int) -> tuple[float, ...]:
     return tuple(float(v) for v in np.broadcast_to(arr, (n,)))
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Posture:
     r"""A posture task for a redundant arm: the joints pulled towards ``q_rest`` [rad or m] in the
@@ -142,6 +144,7 @@ class Posture:
         return np.concatenate([self.q_rest, _gain("stiffness", self.stiffness, n), _gain("damping", self.damping, n)])
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Reference:
     """A reference signal ``y_d(t)`` and its rate ``y_d'(t)`` (the velocity loops' feedforward).

@@ -25,7 +25,7 @@ from hybrid.geometry.task_axes import frame_direction_of
 from hybrid.native import loader
 from hybrid.spec.controller_step import LOOP_GAINS, NO_LIMIT
 from hybrid.spec.path_follow import PATH_OUTPUT, PATH_SETTINGS, PATH_STATE, PATH_STATUSES, PATH_TABLE, path_axes
-from hybrid.validate import _finite, shown
+from hybrid.validate import _finite, checked_keywords, shown
 
 #: how far [m] a path's node may be from the surface
 ON_SURFACE_TOL = 1e-4
@@ -49,6 +49,7 @@ MAX_ANGLE = math.radians(80.0)
 MAX_GAIN_SAMPLES = 0.5
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class PathTask:
     """Follow ``path`` on its surface at ``speed`` [m/s] pressing with ``force`` [N] along the normal.

@@ -6,9 +6,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from hybrid.validate import _finite
+from hybrid.validate import _finite, checked_keywords
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Step:
     """A reference that jumps from ``before`` to ``after`` at time ``at``.

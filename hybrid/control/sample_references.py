@@ -13,7 +13,7 @@ import numpy as np
 
 from hybrid.control.measurement import padded_vector
 from hybrid.control.options import call_user
-from hybrid.control.path_task import PATH_SAMPLE_TIME, PathReferences
+from hybrid.control.path_task import PathReferences
 from hybrid.errors import HybridError, NonFiniteError, TaskFrameError
 from hybrid.spec.controller_step import CONTROLLER_STEP
 from hybrid.validate import shown
@@ -59,7 +59,6 @@ class SampleReferences:
         wrench); the step's binding follows the parameters it changes (``e``, and at the retreat the normal
         axis's selection and gains, its integrals zero): :meth:`_restore` undoes them, for a sample that is not
         served."""
-        self._path_task.follower.settings[PATH_SAMPLE_TIME] = self.sample_time  # one sample period: the step's
         changed = self._path_task.write(tip["p"].ravel(), tip["R"].ravel(), tip["contact_wrench"].ravel()[:3],
                                         self.step_inputs(), self._extra, self._rate)
         if not changed:

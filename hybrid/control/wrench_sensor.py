@@ -30,7 +30,7 @@ import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.models.urdf import rigid_offset
-from hybrid.validate import shown
+from hybrid.validate import checked_keywords, shown
 
 
 def _vector(owner: str, name: str, value, size: int) -> tuple[float, ...]:
@@ -43,6 +43,7 @@ def _vector(owner: str, name: str, value, size: int) -> tuple[float, ...]:
     return tuple(float(v) for v in arr)
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Tool:
     """What hangs beyond the sensor (its weight is part of every reading).
@@ -90,6 +91,7 @@ def _rotation(value) -> np.ndarray:
     return R
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class WrenchSensor:
     """A force/torque sensor mounted beyond the arm's tip (module docstring).

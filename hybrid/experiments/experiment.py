@@ -50,7 +50,7 @@ from hybrid.plants.contact import Contact, Sensor
 from hybrid.plants.registry import generated_plant_class
 from hybrid.spec.interfaces import PRINTERS
 from hybrid.stability.analysis import check_stable
-from hybrid.validate import SINGULAR_TOL, _point, shown
+from hybrid.validate import SINGULAR_TOL, _point, checked_keywords, shown
 
 #: the committed units that can run the closed-form plant and law (the same equations, two printers)
 BACKENDS = PRINTERS  # the closed form's units the plant and the law may take
@@ -61,6 +61,7 @@ BACKENDS = PRINTERS  # the closed form's units the plant and the law may take
 PHYSICS = frozenset({"model_error", "viscous_compensation", "sensor", "contact"})
 
 
+@checked_keywords
 @dataclass(frozen=True, kw_only=True)
 class Experiment(RunSettings, metaclass=RenamedKeywords):
     """One closed-loop run: the true robot and surface, the controller's settings, the references,

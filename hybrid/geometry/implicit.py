@@ -21,9 +21,10 @@ from hybrid.errors import HybridError
 from hybrid.geometry.surfaces import Surface, _unit_normal, numpy_phi
 from hybrid.native import generator
 from hybrid.spec.surface import SurfaceSpec
-from hybrid.validate import _finite, check_identifier, shown
+from hybrid.validate import _finite, check_identifier, checked_keywords, shown
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class ImplicitSurface(Surface):
     """Any surface ``phi(x, y, z) = 0`` written in SymPy, ``phi > 0`` on the robot's side.

@@ -40,7 +40,7 @@ from hybrid.native import loader
 from hybrid.spec.part import PART_STATUSES
 from hybrid.spec.surface import FORMULAS, PARAMETERS, SurfaceSpec
 from hybrid.user_warnings import PartFitWarning, warn
-from hybrid.validate import _finite, _point, shown
+from hybrid.validate import _finite, _point, checked_keywords, shown
 
 #: the samples drawn per cell of the grid on the part's surface (area / spacing^2 of them, each)
 SAMPLES_PER_CELL = 2.0
@@ -305,6 +305,7 @@ class PartSurface(Surface):
         return hash(self.digest())
 
 
+@checked_keywords
 class MeshSurface(PartSurface):
     """A part given as a triangle mesh, its surface smooth to the second derivative.
 
@@ -425,6 +426,7 @@ class MeshSurface(PartSurface):
         return cls(vertices, faces, transform, scale, flip, spacing, band, smoothing)
 
 
+@checked_keywords
 class PointCloudSurface(PartSurface):
     """A part given as points on its surface (a scan), its surface smooth to the second derivative.
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.validate import _finite, _point, unit_vector
+from hybrid.validate import _finite, _point, checked_keywords, unit_vector
 
 
 class Path:
@@ -37,6 +37,7 @@ class Path:
     start: float = 0.0
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class CirclePath(Path):
     """A circle in a plane of constant z, run counter-clockwise seen from +z.
@@ -160,6 +161,7 @@ class CirclePath(Path):
         return np.array([c, s, 0.0 * c][:len(self.center)])
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class LinePath(Path):
     """A straight line through ``point`` along ``direction``: ``r(s) = point + s d``.

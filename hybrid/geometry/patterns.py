@@ -17,7 +17,7 @@ from hybrid.errors import HybridError
 from hybrid.geometry.surface_path import SurfacePath, check_surface
 from hybrid.geometry.surface_points import project_points
 from hybrid.geometry.waypoints import WAYPOINT_TOL
-from hybrid.validate import _finite, _point
+from hybrid.validate import _finite, _point, checked_keywords
 
 LINE, ARC = 0, 1
 
@@ -87,6 +87,7 @@ class _PlanarPieces(SurfacePath):
         return self._origin + ab @ self._axes
 
 
+@checked_keywords
 class RasterPath(_PlanarPieces):
     """Parallel passes across a part with round turns between them, on ``surface``.
 
@@ -201,6 +202,7 @@ class RasterPath(_PlanarPieces):
                 f"spacing {self.spacing:g} m, length={self.length:.6g} m)")
 
 
+@checked_keywords
 class SpiralPath(SurfacePath):
     """An Archimedean spiral on ``surface`` about ``center``, outwards.
 

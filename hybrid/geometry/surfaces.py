@@ -23,7 +23,7 @@ import numpy as np
 from hybrid.errors import HybridError
 from hybrid.geometry.paths import CirclePath, LinePath
 from hybrid.spec.surface import FORMULAS, NORMAL_TOL, PARAMETERS, SurfaceSpec
-from hybrid.validate import _finite, _point, unit_vector
+from hybrid.validate import _finite, _point, checked_keywords, unit_vector
 
 #: every surface class, by its kind (for files that name a surface by kind)
 SURFACE_KINDS: dict[str, type] = {}
@@ -223,6 +223,7 @@ class LineSection(Section):
         return p - n * float((p - self.point) @ n)
 
 
+@checked_keywords
 def Circle(center, radius: float) -> Cylinder:  # noqa: N802  (a constructor, named as the shape it makes)
     """The paper's disc, touched from outside: the cylinder about base z through its centre.
 
@@ -260,6 +261,7 @@ def Circle(center, radius: float) -> Cylinder:  # noqa: N802  (a constructor, na
 # --------------------------------------------------------------------------- planes
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Plane(Surface):
     r"""A plane through ``point`` :math:`p_0` with unit ``normal`` :math:`n` towards the robot:
@@ -396,6 +398,7 @@ class Plane(Surface):
 
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Sphere(Surface):
     """A sphere touched from outside: ``phi = |p - c| - radius``.
@@ -553,6 +556,7 @@ class Sphere(Surface):
         return CirclePath(path.center, rho, path.arc_of(p))
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Cylinder(Surface):
     r"""An infinite cylinder touched from outside: :math:`\varphi(p) = \lVert (I - u u^T)(p - p_0) \rVert - \rho`,

@@ -8,7 +8,7 @@ import numpy as np
 from hybrid.errors import HybridError
 from hybrid.geometry.surface_path import SurfacePath, check_surface
 from hybrid.geometry.surface_points import project_points
-from hybrid.validate import _finite
+from hybrid.validate import _finite, checked_keywords
 
 #: the farthest a waypoint may be from the surface before it is refused [m]
 WAYPOINT_TOL = 5e-3
@@ -38,6 +38,7 @@ def cubic_spline(u: np.ndarray, y: np.ndarray, closed: bool) -> np.ndarray:
     return np.vstack([M, M[:1]]) if closed else M
 
 
+@checked_keywords
 class WaypointPath(SurfacePath):
     """A C2 path on ``surface`` through ``points`` [m], in their order; ``closed`` joins the last point
     to the first (periodic: C2 there too).

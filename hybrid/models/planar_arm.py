@@ -9,9 +9,10 @@ from functools import lru_cache
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.validate import _finite, check_model_error, field_values
+from hybrid.validate import _finite, check_model_error, checked_keywords, field_values
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Arm:
     """Planar two-link arm of revolute joints (conventions §3 and §5).

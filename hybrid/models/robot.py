@@ -25,7 +25,7 @@ from hybrid.native import units
 from hybrid.native.binding import Unit
 from hybrid.spec import chain as rb
 from hybrid.spec.chain import COULOMB_SPEED
-from hybrid.validate import _finite, check_model_error, finite_array, inertia_problem, shown
+from hybrid.validate import _finite, check_model_error, checked_keywords, finite_array, inertia_problem, shown
 
 
 def _gravity(g) -> tuple[float, float, float]:
@@ -38,6 +38,7 @@ def _gravity(g) -> tuple[float, float, float]:
     return tuple(map(float, arr))
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Robot:
     """A serial arm: its kinematic chain, inertial parameters, joint friction, gravity and joint limits.

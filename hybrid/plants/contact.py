@@ -9,9 +9,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.validate import _finite, field_values, shown
+from hybrid.validate import _finite, checked_keywords, field_values, shown
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Sensor:
     """The plant's elastic force sensor at the arm tip: a tip mass on an isotropic spring-damper
@@ -191,6 +192,7 @@ def _numbers(name: str, value, size: int, what: str) -> tuple[float, ...]:
     return tuple(float(v) + 0.0 for v in arr)
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Contact:
     """Rigid surface as a unilateral penalty ``N = max(0, k_e delta + d_e delta')``, Coulomb friction.

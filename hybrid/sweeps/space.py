@@ -16,7 +16,7 @@ import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.experiments.settings import RunSettings, setting_aliases, setting_path
-from hybrid.validate import check_nesting, check_size, count_text, product, shown
+from hybrid.validate import check_nesting, check_size, checked_keywords, count_text, product, shown
 
 # ------------------------------------------------------------------ distributions
 
@@ -31,6 +31,7 @@ def _numbers(owner, **values) -> None:
             raise HybridError(f"{owner}: {name} = {shown(v)} must be a finite number (within float range)")
 
 
+@checked_keywords(where="sweeps.Uniform")
 @dataclass(frozen=True)
 class Uniform:
     """Values drawn uniformly in ``[low, high)``."""
@@ -47,6 +48,7 @@ class Uniform:
         return rng.uniform(self.low, self.high, n).tolist()
 
 
+@checked_keywords(where="sweeps.LogUniform")
 @dataclass(frozen=True)
 class LogUniform:
     """Values whose logarithm is uniform in ``[log low, log high)`` (``0 < low < high``)."""
@@ -63,6 +65,7 @@ class LogUniform:
         return np.exp(rng.uniform(math.log(self.low), math.log(self.high), n)).tolist()
 
 
+@checked_keywords(where="sweeps.Normal")
 @dataclass(frozen=True)
 class Normal:
     """Values drawn from a normal distribution."""
