@@ -13,7 +13,7 @@ from hybrid.codegen import casadi_backend, census, controller_step, lanes, spati
 from hybrid.codegen.kernel import Arg, Kernel
 
 from hybrid import bench
-from hybrid.bench import bound, harness, peak, pinocchio_codegen, robots, runs, standalone, targets
+from hybrid.bench import bound, eigen_race, harness, peak, pinocchio_codegen, robots, runs, standalone, targets
 from hybrid.bench.groups import benchmark_groups, select_groups
 from hybrid.bench.report import format_table
 from hybrid.cli.main import main
@@ -45,6 +45,11 @@ def test_bench_quick_reports_every_benchmark():
         for arm in ("ur5", "panda"):
             for function in pinocchio_codegen.FUNCTIONS:
                 assert {f"{arm}: {targets.dynamics_row(function, side)}" for side in pinocchio_codegen.SIDES} <= set(
+                    r["name"] for r in report["results"])
+    if eigen_race.missing() is None:  # the law and the step, ours and every hand-written form, on both arms
+        for arm, forms in (("ur5", ("pinocchio", "pinocchio_rnea")), ("panda", ("pinocchio",))):
+            for function in eigen_race.FUNCTIONS:
+                assert {f"{arm}: {targets.eigen_row(function, side)}" for side in ("ours", *forms)} <= set(
                     r["name"] for r in report["results"])
     assert all(r["median"] > 0 for r in report["results"])
     # the targets are reported (met or not), never asserted
@@ -116,6 +121,15 @@ def test_a_target_on_a_ratio_reads_the_ratio():
     assert not _marked([{**row, "ratio_value": 2.6}])[targets.IMPORT]["met"]
     p999 = f"ur5: {targets.STANDALONE_P999}"
     assert not _marked([{"name": p999, "median": 1.0, "unit": "ns", "of_median": 2.1}])[p999]["met"]
+
+
+def test_the_targets_against_pinocchio_and_eigen_read_the_speedup():
+    for arm, function, factor in (("ur5", "law", 5), ("panda", "law", 5), ("ur5", "step", 4), ("panda", "step", 4)):
+        name = f"{arm}: {targets.eigen_row(function, 'ours')}"
+        row = {"name": name, "median": 500.0, "unit": "ns"}
+        assert _marked([{**row, "speedup": factor}])[name]["met"]
+        missed = _marked([{**row, "speedup": factor - 0.01}])[name]
+        assert not missed["met"] and missed["target"] == f">= {factor}x faster than Pinocchio + Eigen by hand"
 
 
 def test_rows_without_a_target_have_none():

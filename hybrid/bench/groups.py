@@ -10,6 +10,7 @@ from hybrid.bench.bound import bound_benchmarks
 from hybrid.bench.constant_model import ARMS as CONSTANT_ARMS
 from hybrid.bench.constant_model import constant_model_benchmarks
 from hybrid.bench.dynamics import dynamics_benchmarks
+from hybrid.bench.eigen_law import eigen_law_benchmarks
 from hybrid.bench.excitation import excitation_benchmarks
 from hybrid.bench.first_use import cold_benchmarks, import_benchmarks
 from hybrid.bench.identification import identification_benchmarks
@@ -60,6 +61,10 @@ def benchmark_groups(quick: bool, rep: int, add) -> list[tuple[str, Callable[[],
     groups += [(f"{name}: RNEA, forward dynamics, CRBA and the terms in C against Pinocchio's code generation "
                 "(CppADCodeGen; its generator's first build takes minutes)",
                 partial(dynamics_benchmarks, name, path, tip, rep, quick, add)) for name, (path, tip) in ROBOTS.items()]
+    groups += [(f"{name}: the 6-D law and the controller step in C against the same written by hand on Pinocchio + "
+                "Eigen (C++; its first build takes minutes)",
+                partial(eigen_law_benchmarks, name, path, tip, rep, quick, add))
+               for name, (path, tip) in ROBOTS.items()]
     groups += [(f"{name}: inverse and forward dynamics and terms in C, a constant model against run-time parameters",
                 partial(constant_model_benchmarks, name, rep, quick, add)) for name in CONSTANT_ARMS]
     groups += [(f"{name}: the 6-D decoupling law in C, from Python, batched (both cores, one core), "

@@ -64,25 +64,29 @@ def prefix() -> Path | None:
         return None
 
 
-def _cxx() -> str | None:
+def cxx() -> str | None:
     """The C++ compiler: ``$CXX`` when set, else ``g++``, else ``c++``."""
-    cxx = os.environ.get("CXX", "").split()
-    return shutil.which(cxx[0]) if cxx else (shutil.which("g++") or shutil.which("c++"))
+    named = os.environ.get("CXX", "").split()
+    return shutil.which(named[0]) if named else (shutil.which("g++") or shutil.which("c++"))
 
 
-def missing() -> str | None:
-    """Why Pinocchio's code generation cannot be built here (one line), or None when it can."""
+def missing(headers: tuple[tuple[str, str], ...] = HEADERS,
+            libraries: tuple[str, ...] = ("libpinocchio_parsers.so",)) -> str | None:
+    """Why a program on Pinocchio's C++ side cannot be built here (one line), or None when it can: the
+    ``headers`` (each with its package) under the install prefix's include/, the ``libraries`` under its
+    lib/, a C++ compiler and our C compiler. By default, what Pinocchio's code generation needs."""
     root = prefix()
     if root is None:
         return "Pinocchio is not installed: pip install pin"
-    for header, package in HEADERS:
+    for header, package in headers:
         if not (root / "include" / header).is_file():
             return f"no {header} (package {package}): pip install {package}"
-    if not (root / "lib" / "libpinocchio_parsers.so").is_file():
-        return f"no Pinocchio URDF parser library under {root / 'lib'}"
-    if _cxx() is None:
-        cxx = os.environ.get("CXX", "")
-        return (f"$CXX={cxx!r} names no program: set CXX to a C++ compiler, or unset it" if cxx.strip() else
+    for library in libraries:
+        if not (root / "lib" / library).is_file():
+            return f"no Pinocchio library {library} under {root / 'lib'}"
+    if cxx() is None:
+        named = os.environ.get("CXX", "")
+        return (f"$CXX={named!r} names no program: set CXX to a C++ compiler, or unset it" if named.strip() else
                 "no C++ compiler (tried g++ and c++; $CXX is unset): install one, e.g. apt-get install g++")
     try:
         compiler.compiler()
@@ -91,22 +95,22 @@ def missing() -> str | None:
     return None
 
 
-def definitions(root: Path) -> list[str]:
-    """The compile definitions of Pinocchio's :data:`TARGETS`, from the installed package's CMake export."""
+def definitions(root: Path, targets: tuple[str, ...] = TARGETS) -> list[str]:
+    """The compile definitions of Pinocchio's ``targets``, from the installed package's CMake export."""
     text = (root / "lib" / "cmake" / "pinocchio" / "pinocchioTargets.cmake").read_text()
     found: list[str] = []
-    for target in TARGETS:
+    for target in targets:
         block = re.search(rf"set_target_properties\(pinocchio::{target} .*?\n\)", text, re.S)
         line = re.search(r'INTERFACE_COMPILE_DEFINITIONS "([^"]*)"', block.group(0)) if block else None
         found += [d for d in (line.group(1).split(";") if line else ()) if d and not d.startswith("$<")]
     return list(dict.fromkeys(found))
 
 
-def _identity(cc: str) -> str:
+def identity(cc: str) -> str:
     return subprocess.run([cc, "--version"], capture_output=True, text=True, check=True).stdout.splitlines()[0]
 
 
-def _run(cmd: list[str], what: str) -> None:
+def run_tool(cmd: list[str], what: str) -> None:
     proc = subprocess.run(cmd, capture_output=True, text=True)
     if proc.returncode != 0:
         raise HybridError(f"{what} failed\n$ {' '.join(cmd)}\n{proc.stderr[-4000:]}")
@@ -115,28 +119,28 @@ def _run(cmd: list[str], what: str) -> None:
 @cache
 def generator_program() -> Path:
     """The generator, compiled (cached by its source, the packages' versions and the C++ compiler)."""
-    root, cxx = prefix(), _cxx()
+    root, cpp = prefix(), cxx()
     inc = root / "include"
     # no -march: Eigen's alignment of the model the URDF parser fills must be the library's (generic
     # x86-64); -O0 compiles fastest, and the program runs for well under a second
     flags = ["-std=c++17", "-O0", "-DNDEBUG", "-w", *(f"-D{d}" for d in definitions(root)),
              f"-I{inc}", f"-I{inc / 'eigen3'}", f"-I{inc / 'urdfdom'}", f"-I{inc / 'urdfdom_headers'}"]
     libs = [f"-L{root / 'lib'}", "-lpinocchio_parsers", "-lpinocchio_default", f"-Wl,-rpath,{root / 'lib'}"]
-    material = json.dumps({"source": digest(GENERATOR.read_bytes()), "cxx": [cxx, _identity(cxx)], "flags": flags,
-                           "libs": libs, "versions": {p: _version(p) for p in PACKAGES}}, sort_keys=True)
+    material = json.dumps({"source": digest(GENERATOR.read_bytes()), "cxx": [cpp, identity(cpp)], "flags": flags,
+                           "libs": libs, "versions": {p: package_version(p) for p in PACKAGES}}, sort_keys=True)
     _, folder = entry("pinocchio_codegen", material)
     program, record = folder / "pinocchio_codegen", folder / "pinocchio_codegen.json"
 
     def make():
         # minutes: Pinocchio's algorithms on CppAD's scalar are templates compiled here
-        _run([cxx, *flags, str(GENERATOR), "-o", str(program), *libs], "compiling Pinocchio's code generator")
+        run_tool([cpp, *flags, str(GENERATOR), "-o", str(program), *libs], "compiling Pinocchio's code generator")
         write_checksum(record, digest(program.read_bytes()))
 
     once(folder, lambda: library_intact(program, record), make)
     return program
 
 
-def _version(package: str) -> str | None:
+def package_version(package: str) -> str | None:
     try:
         return version(package)
     except PackageNotFoundError:
@@ -248,29 +252,29 @@ def race(robot, urdf: Path, tip: str, counted: bool = False) -> Race:
     def make():
         sources = folder / "pinocchio"
         sources.mkdir(exist_ok=True)
-        _run([str(gen), str(urdf), str(sources), tip, *chain], "Pinocchio's code generation")
+        run_tool([str(gen), str(urdf), str(sources), tip, *chain], "Pinocchio's code generation")
         theirs = [sources / f"{f}_forward_zero.c" for f in FUNCTIONS]
-        _run([cc, *flags, f"-I{generator.include_dir()}", "-shared", *map(str, ours), "-o", str(libraries[0]),
+        run_tool([cc, *flags, f"-I{generator.include_dir()}", "-shared", *map(str, ours), "-o", str(libraries[0]),
               "-lm"], "compiling our generated C")
-        _run([cc, *flags, "-shared", *map(str, theirs), "-o", str(libraries[1]), "-lm"],
+        run_tool([cc, *flags, "-shared", *map(str, theirs), "-o", str(libraries[1]), "-lm"],
              "compiling Pinocchio's generated C")
         (folder / "race.c").write_text(source)
-        _run([cc, *(f for f in flags if f != "-fPIC"), *(f"-I{u.folder}" for u in built), str(folder / "race.c"),
+        run_tool([cc, *(f for f in flags if f != "-fPIC"), *(f"-I{u.folder}" for u in built), str(folder / "race.c"),
               "-o", str(program), f"-L{folder}", "-l:libhybrid_side.so",
               "-l:libpinocchio_side.so", f"-Wl,-rpath,{folder}", "-lm"], "compiling the race program")
         for p in libraries:  # each as the cache records a library: checked whole before the program loads it
-            write_checksum(_record_of(p), digest(p.read_bytes()))
+            write_checksum(record_of(p), digest(p.read_bytes()))
         write_checksum(record, digest(program.read_bytes()))
 
     once(folder, lambda: library_intact(program, record)
-         and all(library_intact(p, _record_of(p)) for p in libraries), make)
+         and all(library_intact(p, record_of(p)) for p in libraries), make)
     symbols = {side: {"rnea": f"{unit}_inverse_dynamics", "aba": f"{unit}_forward_dynamics",
                       "crba": f"{inertia}_inertia", "terms": f"{unit}_robot_terms"}
                for side, unit, inertia in (("ours", *prefixes[:2]), ("constant", *prefixes[2:]))}
     return Race(program, robot.n, symbols)
 
 
-def _record_of(library: Path) -> Path:
+def record_of(library: Path) -> Path:
     """The file recording ``library``'s checksum (:func:`hybrid.native.cache.write_checksum`)."""
     return library.with_name(f"{library.name}.json")
 

@@ -8,6 +8,7 @@ compares it with a row that did not run.
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 # ------------------------------------------------------------------ the paper's arm
@@ -63,6 +64,23 @@ def dynamics_row(function: str, side: str) -> str:
     if side == "constant":
         return f"{what} in C, constant model, beside Pinocchio's code generation, per call"
     return f"{what} in C beside Pinocchio's code generation, per call ({ours})"
+
+
+# ------------------------------------------------------------------ against Pinocchio + Eigen by hand (after "ARM: ")
+
+#: the functions compared with the same written by hand in C++ on Pinocchio + Eigen
+EIGEN = {"law": "6-D F* on a sphere", "step": "controller step (measurement, six loops, law)"}
+#: the hand-written forms, by side (hybrid.bench.eigen_race.FORMS)
+EIGEN_FORMS = {"pinocchio": "crba, nonLinearEffects, LLT solves", "pinocchio_rnea": "rnea, LU solves"}
+
+
+def eigen_row(function: str, side: str) -> str:
+    """The name of a row comparing the ``function`` of :data:`EIGEN` with the same written on Pinocchio +
+    Eigen, on one side: ``ours`` or a hand-written form of :data:`EIGEN_FORMS`."""
+    what = EIGEN[function]
+    if side == "ours":
+        return f"{what} in C beside Pinocchio + Eigen, per call"
+    return f"{what} by hand in C++ on Pinocchio + Eigen ({EIGEN_FORMS[side]}), per call"
 
 
 # ------------------------------------------------------------------ runs and sweeps
@@ -185,6 +203,8 @@ TARGETS = (
     Target(f"ur5: {STEP_ONE}", "<= 2 us", 2000),
     Target(f"ur5: {STANDALONE_STEP}", "<= 0.6 us", 600),
     Target(f"ur5: {STANDALONE_P999}", "<= 2x the median", 2, field="of_median"),
+    *(Target(f"{arm}: {eigen_row(function, 'ours')}", f">= {k}x faster than Pinocchio + Eigen by hand", math.inf,
+             at_least=("speedup", k)) for arm in ("ur5", "panda") for function, k in (("law", 5), ("step", 4))),
     Target(ONE_RUN, "<= 2.3 ms", 2.3),
     Target(SWEEP_1000, "<= 1 s", 1),
     Target(SWEEP_10000, "<= 2.8 s", 2.8),
