@@ -11,12 +11,11 @@ installed; an x86-64-v3 build of the same C, as valgrind runs no AVX-512)."""
 from __future__ import annotations
 
 import statistics
-import sys
 
 import numpy as np
 
 from hybrid.bench import pinocchio_codegen
-from hybrid.bench.robots import shipped_urdf
+from hybrid.bench.robots import comparable_urdf
 from hybrid.bench.targets import dynamics_row
 from hybrid.errors import HybridError
 from hybrid.models.robot import Robot
@@ -65,10 +64,8 @@ def random_states(n: int, count: int, seed: int = 0) -> np.ndarray:
 def dynamics_benchmarks(name: str, urdf_name: str, tip: str, rep: int, quick: bool, add) -> None:
     """Each function of the shipped arm ``urdf_name`` on every side: the same numbers (or a HybridError),
     then the median time of a call of each side, the ratios, and the instructions a call."""
-    urdf = shipped_urdf(urdf_name)
-    why = "pip install example-robot-data" if urdf is None else pinocchio_codegen.missing()
-    if why:
-        print(f"  (skipped {name} against Pinocchio's code generation: {why})", file=sys.stderr)
+    urdf = comparable_urdf(name, urdf_name, "Pinocchio's code generation", pinocchio_codegen.missing)
+    if urdf is None:
         return
     robot = Robot.from_urdf(urdf, tip=tip)
     race = pinocchio_codegen.race(robot, urdf, tip)

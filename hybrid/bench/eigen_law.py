@@ -17,13 +17,12 @@ from __future__ import annotations
 
 import math
 import statistics
-import sys
 
 import numpy as np
 
 from hybrid.bench import eigen_race
 from hybrid.bench import pinocchio_codegen as pc
-from hybrid.bench.robots import SPHERE, shipped_urdf
+from hybrid.bench.robots import SPHERE, comparable_urdf
 from hybrid.bench.targets import EIGEN_FORMS, eigen_row
 from hybrid.control.controller import Controller
 from hybrid.control.references import Step
@@ -139,10 +138,8 @@ def eigen_law_benchmarks(name: str, urdf_name: str, tip: str, rep: int, quick: b
     """The 6-D law and the controller step of the shipped arm ``urdf_name`` on the bench's sphere, ours and
     by hand on Pinocchio + Eigen: the same numbers and no heap memory (or a HybridError), then the median
     time of a call of each side, the ratios, and the instructions a call by part."""
-    urdf = shipped_urdf(urdf_name)
-    why = "pip install example-robot-data" if urdf is None else eigen_race.missing()
-    if why:
-        print(f"  (skipped {name} against Pinocchio + Eigen: {why})", file=sys.stderr)
+    urdf = comparable_urdf(name, urdf_name, "Pinocchio + Eigen", eigen_race.missing)
+    if urdf is None:
         return
     robot = Robot.from_urdf(urdf, tip=tip)
     sphere = Sphere(SPHERE[:3], SPHERE[3])

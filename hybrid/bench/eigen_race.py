@@ -291,6 +291,7 @@ def _hand_object(source: str, headers: list[Path], includes: list[str], counted:
     does not rebuild it."""
     cpp = pc.cxx()
     flags = cxx_flags([pc.COUNTED if counted and f == pc.NATIVE else f for f in compiler.flags(pc.identity(cpp))])
+    flags += ["-DHAND_COUNTED"] if counted else []  # the parts apart, to be counted apart
     declared = [digest(h.read_bytes().split(b"\n", 1)[1]) for h in headers]
     material = json.dumps({
         "hand": digest(HAND.read_bytes()), "race": digest(source.encode()), "headers": declared,

@@ -50,6 +50,18 @@ def shipped_urdf(name: str) -> Path | None:
     return next((Path(dist.locate_file(f)) for f in dist.files or () if str(f).endswith("/" + name)), None)
 
 
+def comparable_urdf(name: str, urdf_name: str, against: str, missing) -> Path | None:
+    """The shipped arm ``urdf_name``'s file for a comparison of ``name`` with ``against``; None, with one line
+    on stderr saying why the comparison is skipped, where example-robot-data is not installed or
+    ``missing()`` gives a reason (a package or a compiler it needs)."""
+    urdf = shipped_urdf(urdf_name)
+    why = "pip install example-robot-data" if urdf is None else missing()
+    if why:
+        print(f"  (skipped {name} against {against}: {why})", file=sys.stderr)
+        return None
+    return urdf
+
+
 def _pinocchio_terms(pin, path: Path, robot, tip: str):
     """``terms(q, qd) -> (tip placement, J, J' q', B, n)`` by Pinocchio from Python, on its own
     reading of the URDF (joints off our chain held at 0, as Robot.from_urdf does)."""

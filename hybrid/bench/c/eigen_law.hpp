@@ -6,7 +6,8 @@
 // and its rate in closed form, fixed-size Eigen matrices and Cholesky (LLT) or LU solves; no heap memory
 // after the model and its data are built.
 //
-// Each part is a function of its own (never inlined), so that instruction counts split by part:
+// Each part is a function of its own, never inlined in the build whose instructions are counted (HAND_COUNTED
+// defined), so that the counts split by part; the timed build inlines as the compiler sees fit:
 //
 //   kinematics    forwardKinematics at q'' = 0, the tip's placement, computeJointJacobians,
 //                 getFrameJacobian and getFrameClassicalAcceleration (LOCAL_WORLD_ALIGNED): J, J' q', v
@@ -36,7 +37,11 @@
 #include <cfloat>
 #include <cmath>
 
-#define HAND_PART __attribute__((noinline))
+#ifdef HAND_COUNTED
+#define HAND_PART __attribute__((noinline)) inline
+#else
+#define HAND_PART inline
+#endif
 
 namespace hand
 {
@@ -139,7 +144,7 @@ namespace hand
   // section 9, differentiated by hand): n = (p - c) / |p - c|, n' = (I - n n^T) p' / |p - c|,
   // t1 = e x n / |e x n|, t1' = (I - t1 t1^T) (e x n') / |e x n|, t2 = n x t1, t2' = n' x t1 + n x t1'.
   // Returns |e x n|, 0 where the point has no normal (the sphere's centre).
-  HAND_PART inline double sphere_frame(const Vec3 & p, const Vec3 & pd, const double * surface,
+  HAND_PART double sphere_frame(const Vec3 & p, const Vec3 & pd, const double * surface,
                                        const double * e_in, Mat3 & R, Mat3 & Rd)
   {
     const Vec3 d = p - Vec3(surface[0], surface[1], surface[2]);
@@ -294,7 +299,7 @@ namespace hand
 
   // the six loops in the task frame (conventions section 4, hybrid's codegen/controller_step.py): a per
   // axis and the integrals after the sample
-  HAND_PART inline void loops(const Vec6 & y, const Vec6 & f, const Vec6 & yd, const double * yd_rate,
+  HAND_PART void loops(const Vec6 & y, const Vec6 & f, const Vec6 & yd, const double * yd_rate,
                               const double * z, const double * gains, const double * selection,
                               const double * options, Vec6 & a, double * z_next)
   {
