@@ -131,6 +131,24 @@ def upper_inverse_frobenius2(R) -> ca.SX:
     return total
 
 
+def gram_conditioning(A) -> ca.SX:
+    """:func:`frobenius_conditioning` of ``A`` where no QR of ``A^T`` is formed for a solve: from the
+    Cholesky factor ``L`` of ``G = A A^T``, as ``|A|_F^2 = trace(G)`` and ``|A^+|_F^2 = trace(G^-1) =
+    |L^-1|_F^2``, at a third of the QR's operations. Forming ``G`` squares ``A``'s conditioning, so the
+    measure's relative rounding is about ``1e-16 / c^2`` at a conditioning ``c`` (``1e-10`` at
+    ``c = 1e-3``), where the QR's is ``1e-16 / c``; a pivot that rounding makes zero or negative (a rank
+    loss) gives 0, not the square root's NaN, and a NaN in ``A`` stays NaN."""
+    G = A @ A.T
+    L = cholesky(G)
+    m = len(L)
+    pivot = [G[j, j] - sum((L[j][k] ** 2 for k in range(j)), _zero()) for j in range(m)]
+    rank_lost = pivot[0] <= 0
+    for p in pivot[1:]:
+        rank_lost = ca.logic_or(rank_lost, p <= 0)
+    R = [[L[j][i] if j >= i else _zero() for j in range(m)] for i in range(m)]
+    return ca.if_else(rank_lost, 0, m / ca.sqrt(ca.trace(G) * upper_inverse_frobenius2(R)))
+
+
 def frobenius_conditioning(A, R) -> ca.SX:
     """``m / (|A|_F |A^+|_F)`` in (0, 1] for the ``m x n`` matrix ``A`` (``m <= n``), from the R of
     the thin QR of ``A^T``: 1 when all singular values are equal, 0 at a rank loss, about

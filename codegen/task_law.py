@@ -15,7 +15,8 @@ For all six axes this is ``F* = Lambda (R^T (a - R' v) - J' q') + Jbar^T n - F_c
 (``m = n``) is solved through the thin QR of ``J_y^T``, and ``tau = B q''* + n - J^T F_c`` by one
 Newton-Euler pass (no ``B`` at all; ``tau0`` has no effect); a redundant one through the Cholesky
 factors of ``B`` and of ``Lambda_y^-1``.
-The conditioning guard is ``m / (|J_y|_F |J_y^+|_F)``, from the same QR.
+The conditioning guard is ``m / (|J_y|_F |J_y^+|_F)``: from the same QR where the task is square, from
+the Cholesky factor of ``J_y J_y^T`` where it is redundant.
 """
 
 from __future__ import annotations
@@ -86,9 +87,9 @@ def decoupling(chain: rb.Chain, arm: ArmMotion, params, qd, Rm, Rdm, a, Fc, tau0
     Jy = J if full else Rm @ J
     if full:
         b = Rm.T @ b
-    Q, Rq = factor.thin_qr(Jy.T)
-    cond = factor.frobenius_conditioning(Jy, Rq)
     if m == n:
+        Q, Rq = factor.thin_qr(Jy.T)
+        cond = factor.frobenius_conditioning(Jy, Rq)
         # J_y square: q''* = J_y^-1 b = Q R^-T b; tau = B q''* + n - J^T F_c is one RNEA pass (no B),
         # the wrench on the tip in it; f_y = J_y^-T tau
         z = factor.forward_substitution([[Rq[j][i] for j in range(m)] for i in range(m)], b)  # R^T z = b
@@ -108,6 +109,7 @@ def decoupling(chain: rb.Chain, arm: ArmMotion, params, qd, Rm, Rdm, a, Fc, tau0
         f_y = factor.factor_solve(K, b + Y.T @ u)
         g = factor.factor_solve(K, Y.T @ u0)
         tau = Jy.T @ (f_y - g) + tau0
+        cond = factor.gram_conditioning(Jy)  # no QR to share here
     return (f_y if full else Rm.T @ f_y), tau, cond
 
 
@@ -219,8 +221,7 @@ def operational_space_kernels(chain: rb.Chain) -> tuple[Kernel, ...]:
     Lam = 0.5 * (Lam + Lam.T)
     u = ca.vertcat(*factor.forward_substitution(L, bias))
     mu = factor.factor_solve(K, Y.T @ u - Jdqd)
-    _, Rq = factor.thin_qr(J.T)
-    guard = conditioning_guard(factor.frobenius_conditioning(J, Rq), CONDITIONING)
+    guard = conditioning_guard(factor.gram_conditioning(J), CONDITIONING)
     v = tk.frame_velocity(tree, fr, vs)
     phi = euler_zyx(fr.tip_R)
     phid = euler_rates(phi, v[3:])

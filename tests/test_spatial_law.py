@@ -227,3 +227,29 @@ def test_batched_lanes_do_not_depend_on_position_or_split(rng, robots, key):
     singular[0][13] = 0.0  # every joint at zero: a singular pose (the Panda's gives NaN before its measure)
     with pytest.raises((hybrid.SingularConfigurationError, hybrid.NonFiniteError), match="state 13 of 20"):
         law.evaluate(*singular)
+
+
+@pytest.mark.parametrize("key", ["ur5", "panda"])
+def test_the_conditioning_guard_trips_where_the_singular_values_say(rng, robots, key):
+    """The guard's measure ``6 / (|J|_F |J^+|_F)`` against NumPy's singular values, on states from well
+    conditioned to near a rank loss: a tolerance just above the measure refuses the state, one just
+    below accepts it; at an exact rank loss the law is refused as singular, not as non-finite."""
+    robot, model, fid = robots[key]
+    surf = SURFACES["sphere"]
+    stretched = np.zeros(robot.n)  # every joint at 0: both arms' elbows straight, a rank loss
+    checked = []
+    while len(checked) < 40:
+        q = rng.uniform(robot.limits.lower, robot.limits.upper) * rng.choice([1.0, 1e-2, 1e-4])
+        J, _, _, _, p = pinocchio_terms(model, fid, q, np.zeros(robot.n), np.zeros(robot.n))
+        s = np.linalg.svd(J, compute_uv=False)
+        measure = 6 / (np.sqrt((s ** 2).sum()) * np.sqrt((s ** -2.0).sum()))
+        if measure < 1e-5 or not np.isfinite(oracle.spatial_frame(surf, p, np.zeros(3), (0, 0, 1))[0]).all():
+            continue
+        checked.append(measure)
+        args = (q, np.zeros(robot.n), np.zeros(6), np.zeros(6))
+        hybrid.DecouplingLaw(robot, surf, singular_tol=measure * (1 - 1e-6)).evaluate(*args)
+        with pytest.raises(hybrid.SingularConfigurationError):
+            hybrid.DecouplingLaw(robot, surf, singular_tol=measure * (1 + 1e-6)).evaluate(*args)
+    assert min(checked) < 1e-3 < max(checked)  # the sample spans the default tolerance
+    with pytest.raises(hybrid.SingularConfigurationError):
+        hybrid.DecouplingLaw(robot, surf).evaluate(stretched, np.zeros(robot.n), np.zeros(6), np.zeros(6))
