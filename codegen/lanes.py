@@ -23,17 +23,19 @@ import casadi as ca
 from .balance import balance
 from .casadi_backend import kernel_function
 from .kernel import Kernel
-from .templates import FOLDER
+from .templates import render
 
 #: the header every unit that evaluates kernels in lanes includes (the types, selects, tests and vector
-#: polynomials; C in ``templates/``, compiled on its own), and the line that includes it
+#: polynomials; rendered from ``templates/hybrid_lanes.h.j2``, it compiles on its own), and the line that includes it
 LANES_HEADER = "hybrid_lanes.h"
 INCLUDE = f'#include "{LANES_HEADER}"'
 
 
 def lanes_header() -> str:
-    """The text of :data:`LANES_HEADER` (``generated/`` holds a copy of it, stamped, beside the units)."""
-    return (FOLDER / LANES_HEADER).read_text()
+    """The text of :data:`LANES_HEADER`, rendered from its template (which takes sin and cos from
+    ``fdlibm_sincos.j2``, as the kernels' ``hybrid_sincos.c.j2`` does); ``generated/`` holds it, stamped,
+    beside the units, and the runtime compiles them with that copy."""
+    return render(f"{LANES_HEADER}.j2")
 
 #: functions of the C library applied lane by lane: CasADi operation -> C function
 _LIBM1 = {"OP_LOG": "log", "OP_TAN": "tan", "OP_ASIN": "asin", "OP_ACOS": "acos", "OP_ATAN": "atan",

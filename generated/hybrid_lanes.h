@@ -1,9 +1,9 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: f103af35758fec696f775937802b4f6ab1bc743bda0eddf29e70855f4539a155 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 4fc99412472a3ed2ca1d8bc5ae0755217d0199745d5e651c7024c97bbec8fa9a */
 /* hybrid_lanes.h: the SIMD lanes of hybrid's generated C (GCC's or Clang's vector extensions): hl_v, a
    vector of HL_W doubles, one state per lane; hl_i, its masks; selects, tests and the vector polynomials
    (sin, cos, exp, tanh) with the C library's value for a lane whose argument they do not cover.
    Included by every unit that evaluates kernels in lanes (a build may define HL_W first); compiles on its
-   own. The generator's source of it is codegen/templates/hybrid_lanes.h. */
+   own. The generator's source of it is codegen/templates/hybrid_lanes.h.j2. */
 #ifndef HYBRID_LANES_H
 #define HYBRID_LANES_H
 #include <math.h>

@@ -20,7 +20,7 @@ from hybrid.cli.main import main
 from hybrid.errors import HybridError
 from hybrid.experiments.paper import paper_experiment
 from hybrid.experiments.tracing import tracing_experiment
-from hybrid.native import compiler, generator
+from hybrid.native import compiler, loader
 from hybrid.spec.controller_step import CONTROLLER_STEP, WRENCH
 
 
@@ -232,7 +232,7 @@ _X86_GCC = platform.machine() in ("x86_64", "AMD64") and compiler.is_gcc(compile
 def _compiled_kinds(source: str, function: str) -> dict:
     """The arithmetic vector instructions GCC emits for ``function`` of ``source`` (four lanes, AVX2), by kind."""
     asm = subprocess.run([compiler.compiler()[0], "-O3", "-fno-math-errno", "-std=gnu99", "-march=x86-64-v3",
-                          f"-I{generator.include_dir()}", "-S", "-o", "-", "-x", "c", "-"],
+                          f"-I{loader.source_dir()}", "-S", "-o", "-", "-x", "c", "-"],
                          input=source, capture_output=True, text=True, check=True).stdout
     body = asm[asm.index(f"\n{function}:"):]
     body = body[:body.index(".size")]

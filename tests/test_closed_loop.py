@@ -15,7 +15,7 @@ from hybrid.codegen.lanes import INCLUDE, lanes_function, libm_maps
 import hybrid
 from hybrid import metrics
 from hybrid.control.controller import Controller
-from hybrid.native import generator
+from hybrid.native import loader
 from hybrid.native.compiler import compiler, flags
 from hybrid.plants.planar import PlanarPlant
 from hybrid.simulation import closed_loop
@@ -207,7 +207,7 @@ def _build(source: str, cdef: str, name: str, folder):
     ffi = cffi.FFI()
     ffi.cdef(cdef)
     ffi.set_source(name, source, extra_compile_args=list(flags(compiler()[1])), libraries=["m"],
-                   include_dirs=[str(generator.include_dir())])  # the lanes' header
+                   include_dirs=[str(loader.source_dir())])  # the lanes' header
     os.environ.setdefault("CC", compiler()[0])
     so = ffi.compile(tmpdir=str(folder))
     spec = importlib.util.spec_from_file_location(name, so)

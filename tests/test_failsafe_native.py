@@ -60,16 +60,17 @@ def test_a_system_header_name_is_what_the_check_refuses_and_would_hide_the_heade
 
 
 def test_the_headers_the_generated_units_include_are_reserved():
-    """The project's own headers (the generator's templates') and those its templates include by <...>."""
+    """The project's own header that the units include from the generated C's folder (the SIMD lanes') and
+    those it and the generator's templates include by <...>."""
     import re
 
-    from hybrid.native import generator
+    from hybrid.native import generator, loader
     from hybrid.validate import c_name_problem
 
-    templates = generator.include_dir()
-    own = {p.stem for p in templates.glob("*.h")}
-    included = {m for p in templates.iterdir() if p.is_file()
-                for m in re.findall(r"#include <(\w+)\.h>", p.read_text())}
+    lanes = loader.source_dir() / generator.LANES_HEADER
+    own = {lanes.stem}
+    texts = [lanes, *(p for p in (generator.sources()["codegen"] / "templates").iterdir() if p.is_file())]
+    included = {m for p in texts for m in re.findall(r"#include <(\w+)\.h>", p.read_text())}
     assert own and "math" in included
     for stem in sorted(own | included):
         assert c_name_problem(stem) is not None, stem

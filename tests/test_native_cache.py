@@ -93,6 +93,32 @@ def test_a_hand_edited_committed_loop_is_used_with_a_warning(tmp_path, monkeypat
         assert unit.module.lib is not None  # compiled from the edited C
 
 
+@pytest.mark.parametrize("damage", ["edited", "missing"])
+def test_a_loop_compiles_with_the_generated_lanes_header_said_when_edited_or_missing(tmp_path, monkeypatch, damage):
+    """The SIMD lanes' header a loop includes is the generated C's copy: edited by hand, it is used with a
+    warning; missing, the build is refused with what to run."""
+    from hybrid.native import generator, units
+    from hybrid.simulation import closed_loop
+
+    src = tmp_path / "generated"
+    shutil.copytree(ROOT / "generated", src)
+    lanes = src / generator.LANES_HEADER
+    if damage == "edited":
+        lanes.write_text(lanes.read_text() + "\n/* my tuning */\n")
+    else:
+        lanes.unlink()
+    plant, variant = closed_loop.loop_of(hybrid.paper_experiment(controller="raibert_craig"))
+    monkeypatch.setattr(loader, "source_dir", lambda: src)
+    monkeypatch.setenv("HYBRID_CACHE_DIR", str(tmp_path / "cache"))
+    unit = units.loop_unit(plant, dict(variant), 1)
+    if damage == "edited":
+        with pytest.warns(loader.HandEditedWarning, match=f"{generator.LANES_HEADER} in .* were edited by hand"):
+            assert unit.module.lib is not None  # compiled with the edited header
+    else:
+        with pytest.raises(hybrid.HybridError, match=f"{generator.LANES_HEADER} cannot be read .* regenerate"):
+            unit.module
+
+
 def test_a_committed_loop_with_a_file_missing_is_generated_instead(tmp_path, monkeypatch):
     from hybrid.native import units
     from hybrid.simulation import closed_loop

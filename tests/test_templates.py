@@ -17,7 +17,7 @@ from pathlib import Path
 import jinja2
 import numpy as np
 import pytest
-from hybrid.codegen import closed_loop, part_grid, path_follow, robot_unit, templates
+from hybrid.codegen import closed_loop, lanes, part_grid, path_follow, robot_unit, templates
 
 import hybrid
 from hybrid.native import standalone, units
@@ -28,11 +28,17 @@ STRICT = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]
 SPHERE = hybrid.Sphere(center=(0.5, 0.0, 0.2), radius=0.15)
 
 
+def shared_headers() -> dict[str, str]:
+    """The headers the units include, rendered: the SIMD lanes', the path follower's, a part's surface's."""
+    return {lanes.LANES_HEADER: lanes.lanes_header(), path_follow.PATH_HEADER: path_follow.path_header(),
+            part_grid.PART_HEADER: part_grid.part_header()}
+
+
 @pytest.fixture(scope="module")
 def rendered(tmp_path_factory):
     """Every template the generator loads while it writes the paper's closed loop, its standalone controller
-    and plant, the UR5's standalone controller with and without a wrench sensor and its plant's unit; and
-    those units' files."""
+    and plant, the UR5's standalone controller with and without a wrench sensor and its plant's unit, and the
+    headers units share; and those units' files."""
     mp = pytest.MonkeyPatch()
     mp.setenv("HYBRID_CACHE_DIR", str(tmp_path_factory.mktemp("cache")))
     env, loaded = templates.environment(), []
@@ -55,8 +61,7 @@ def rendered(tmp_path_factory):
                                                                               bias=(0.3, -0.2, 0.5, 0.0, 0.0, 0.1),
                                                                               cutoff=15.0, order=2))):
             files |= standalone.controller_files(hybrid.Controller(hybrid.ur5(), SPHERE, wrench_sensor=sensor), name)
-        files[path_follow.PATH_HEADER] = path_follow.path_header()
-        files[part_grid.PART_HEADER] = part_grid.part_header()
+        files |= shared_headers()
     finally:
         mp.undo()
     return set(loaded), files, loop, unit
@@ -166,24 +171,25 @@ def test_the_units_python_holds_no_c(module):
 
 @pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")
 def test_the_headers_compile_on_their_own_and_are_included_not_copied(tmp_path):
-    """Every C header of the generator's compiles alone, warning-free; the generated units include the SIMD
+    """Every C header the generator renders compiles alone, warning-free; the generated units include the SIMD
     lanes' header (one copy, in generated/) instead of holding its text."""
-    headers = sorted(templates.FOLDER.glob("*.h"))
-    assert headers, "the generator has no C header"
-    for header in headers:
+    headers = shared_headers()
+    assert lanes.LANES_HEADER in headers
+    for name, text in headers.items():
+        (tmp_path / name).write_text(text)
         for flags in ([], ["-march=native"]):  # the portable build's lanes and this machine's
             done = subprocess.run(["gcc", "-std=gnu99", "-O2", *flags, "-Wall", "-Wextra", "-Werror", "-fsyntax-only",
-                                   "-x", "c", str(header)], capture_output=True, text=True)
-            assert done.returncode == 0 and not done.stderr, done.stderr
+                                   "-x", "c", str(tmp_path / name)], capture_output=True, text=True)
+            assert done.returncode == 0 and not done.stderr, f"{name}: {done.stderr}"
     generated = ROOT / "generated"
-    lanes = (templates.FOLDER / "hybrid_lanes.h").read_text()
-    body = lanes.split("#define HYBRID_LANES_H", 1)[1]
+    header = headers[lanes.LANES_HEADER]
+    body = header.split("#define HYBRID_LANES_H", 1)[1]
     first_function = body[body.index("static inline"):].split("\n", 1)[0]
     units = [generated / "hybrid_sympy.c", generated / "hybrid_casadi.c", *sorted((generated / "loops").glob("*.c"))]
     for unit in units:
         text = unit.read_text()
         assert '#include "hybrid_lanes.h"' in text and first_function not in text, unit.name
-    assert (generated / "hybrid_lanes.h").read_text().endswith(lanes)
+    assert (generated / lanes.LANES_HEADER).read_text().endswith(header)
 
 
 @pytest.mark.skipif(shutil.which("gcc") is None, reason="needs gcc")

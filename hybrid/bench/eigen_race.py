@@ -32,7 +32,7 @@ import numpy as np
 from hybrid.bench import pinocchio_codegen as pc
 from hybrid.bench.templates import FOLDER, render
 from hybrid.errors import HybridError
-from hybrid.native import compiler, generator, units
+from hybrid.native import compiler, generator, loader, units
 from hybrid.native.cache import digest, entry, library_intact, once, write_checksum
 from hybrid.spec.controller_step import CONTROLLER_STEP
 from hybrid.spec.interfaces import Dims
@@ -261,12 +261,12 @@ def race(robot, urdf: Path, tip: str, spec, counted: bool = False) -> EigenRace:
                     sides=[{"name": s, "form": FORMS.get(s)} for s in sides])
     cc, ident = compiler.compiler()
     c_flags = [pc.COUNTED if counted and f == pc.NATIVE else f for f in compiler.flags(ident) if f != "-fPIC"]
-    includes = [f"-I{generator.include_dir()}", *(f"-I{u.folder}" for u in built)]
+    includes = [f"-I{loader.source_dir()}", *(f"-I{u.folder}" for u in built)]
     hand = _hand_object(source, [u.folder / f"{p}.h" for u, p in zip(built, prefixes)], includes, counted)
     ours = [u.folder / f"{p}.c" for u, p in zip(built, prefixes)]
     material = json.dumps({
         "hand": digest(hand.read_bytes()), "ours": [digest(p.read_bytes()) for p in ours],
-        "lanes": digest(generator.include_dir().joinpath("hybrid_lanes.h").read_bytes()), "cc": [cc, ident],
+        "lanes": digest(loader.source_dir().joinpath(generator.LANES_HEADER).read_bytes()), "cc": [cc, ident],
         "flags": c_flags, "processor": compiler.processor(), "vex3": counted and _MOVQ.pattern}, sort_keys=True)
     _, folder = entry(f"eigen_race_{c_identifier(robot.name)}", material)
     program, record = folder / "race", folder / "race.json"

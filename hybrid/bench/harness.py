@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from hybrid.bench.templates import render
-from hybrid.native import compiler, generator
+from hybrid.native import compiler, loader
 
 #: calls of a run through ``simulate`` before it is timed: in a fresh process the first is about twice
 #: as slow (the C library's allocator maps the record's memory afresh, page by page) and the next ten a
@@ -83,15 +83,15 @@ def c_program_ns(source: str, src_dir: Path, prefix: str, calls: int, repeat: in
 def c_program_output(source: str, sources: tuple[Path, ...], args: tuple[str, ...],
                      include: tuple[Path, ...] = ()) -> str:
     """What the C program ``source`` prints, compiled with ``sources`` and the runtime's flags (the
-    generator's headers and ``include`` on the include path), run with ``args``."""
+    generated C's folder, for its shared headers, and ``include`` on the include path), run with ``args``."""
     cc, ident = compiler.compiler()
     with tempfile.TemporaryDirectory() as tmp:
         main = Path(tmp) / "bench.c"
         main.write_text(source)
         exe = Path(tmp) / "bench"
         flags = [f for f in compiler.flags(ident) if f != "-fPIC"]
-        # the unit's folder, and the generator's headers (the SIMD lanes' header a unit includes)
-        folders = [f"-I{d}" for d in (*include, generator.include_dir())]
+        # the unit's folder, and the generated C's (the SIMD lanes' header a unit includes)
+        folders = [f"-I{d}" for d in (*include, loader.source_dir())]
         subprocess.run([cc, *flags, *folders, str(main), *map(str, sources), "-o", str(exe), "-lm"],
                        check=True, capture_output=True)
         return subprocess.run([str(exe), *args], check=True, capture_output=True, text=True).stdout

@@ -32,7 +32,7 @@ import numpy as np
 
 from hybrid.bench.templates import FOLDER, render
 from hybrid.errors import HybridError
-from hybrid.native import compiler, generator, units
+from hybrid.native import compiler, generator, loader, units
 from hybrid.native.cache import digest, entry, library_intact, once, write_checksum
 from hybrid.validate import c_identifier
 
@@ -242,8 +242,8 @@ def race(robot, urdf: Path, tip: str, counted: bool = False) -> Race:
     gen = generator_program()
     material = json.dumps({
         "generator": digest(gen.read_bytes()), "urdf": digest(Path(urdf).read_bytes()), "tip": tip, "joints": chain,
-        "ours": [digest(p.read_bytes()) for p in ours], "headers": digest(generator.include_dir().joinpath(
-            "hybrid_lanes.h").read_bytes()), "race": digest(source.encode()), "cc": [cc, ident], "flags": flags,
+        "ours": [digest(p.read_bytes()) for p in ours], "headers": digest(loader.source_dir().joinpath(
+            generator.LANES_HEADER).read_bytes()), "race": digest(source.encode()), "cc": [cc, ident], "flags": flags,
         "processor": compiler.processor()}, sort_keys=True)
     _, folder = entry(f"pinocchio_race_{c_identifier(robot.name)}", material)
     program, record = folder / "race", folder / "race.json"
@@ -254,7 +254,7 @@ def race(robot, urdf: Path, tip: str, counted: bool = False) -> Race:
         sources.mkdir(exist_ok=True)
         run_tool([str(gen), str(urdf), str(sources), tip, *chain], "Pinocchio's code generation")
         theirs = [sources / f"{f}_forward_zero.c" for f in FUNCTIONS]
-        run_tool([cc, *flags, f"-I{generator.include_dir()}", "-shared", *map(str, ours), "-o", str(libraries[0]),
+        run_tool([cc, *flags, f"-I{loader.source_dir()}", "-shared", *map(str, ours), "-o", str(libraries[0]),
               "-lm"], "compiling our generated C")
         run_tool([cc, *flags, "-shared", *map(str, theirs), "-o", str(libraries[1]), "-lm"],
              "compiling Pinocchio's generated C")

@@ -29,14 +29,10 @@ def _codegen() -> Path:
     return Path(importlib.util.find_spec("hybrid.codegen").submodule_search_locations[0])
 
 
-def include_dir() -> Path:
-    """The folder of the headers the generated units include (``hybrid_lanes.h``): the generator's
-    templates, found without importing it."""
-    return _codegen() / "templates"
-
-
-#: the line by which a unit includes the SIMD lanes' header (``codegen/lanes.py``'s ``INCLUDE``)
-LANES_INCLUDE = '#include "hybrid_lanes.h"'
+#: the SIMD lanes' header (``codegen/lanes.py``'s ``LANES_HEADER``: rendered by the generator, it sits in the
+#: generated C's folder, :func:`hybrid.native.loader.source_dir`), and the line by which a unit includes it
+LANES_HEADER = "hybrid_lanes.h"
+LANES_INCLUDE = f'#include "{LANES_HEADER}"'
 
 
 def _package() -> Path:

@@ -148,10 +148,24 @@ def _compile_unit(src_dir: Path, prefix: str, texts: dict[str, str] | None = Non
     parts = (f"{prefix}.c",) * n if n > 1 else ()
     # the header of the SIMD lanes, where the unit includes it: its text is part of the key
     lanes = generator.LANES_INCLUDE in c_source
-    includes = [str(generator.include_dir())] if lanes else []
-    shared = {"lanes": (generator.include_dir() / "hybrid_lanes.h").read_text()} if lanes else {}
+    includes = [str(source_dir())] if lanes else []
+    shared = {"lanes": _lanes_header()} if lanes else {}
     return _cached_module(f"_{prefix}", {"c": c_source, "h": header, "cffi": cffi.__version__, **shared,
                                          **({"parts": n} if parts else {})}, write_source, includes, parts)
+
+
+def _lanes_header() -> str:
+    """The text of the SIMD lanes' header a unit includes: the generated C's copy (where the generator writes
+    it), which the unit is compiled with; said when edited by hand."""
+    folder = source_dir()
+    try:
+        text = (folder / generator.LANES_HEADER).read_text()
+    except OSError as exc:
+        raise NativeBuildError(f"the SIMD lanes' header {folder / generator.LANES_HEADER} cannot be read "
+                               f"({exc.strerror}); run `python -m hybrid regenerate` in a checkout of the project"
+                               ) from None
+    warn_if_hand_edited(folder, {generator.LANES_HEADER: text})
+    return text
 
 
 def _manifest_parts(src_dir: Path, prefix: str, texts: dict[str, str] | None = None) -> int:
