@@ -114,7 +114,7 @@ def loops(x: LoopInputs):
         held = ca.fabs((1 - pe_i) * KI * z1n + KI2 * z2n) > o["integral_limit"]
         # out of contact on a force axis: approach the surface, the integral where the force law would agree
         lost = s * (x.f[i] < o["loss_threshold"])
-        keep = ca.fmax(held, lost)
+        keep = ca.logic_or(held, lost)  # both 0 or 1: fmax's value, without its call (which spills every register)
         z1n = keep * ((1 - pe_i) * z1 + pe_i * z1n) + (1 - keep) * z1n
         z2n = keep * (1 - s) * z2 + (1 - keep) * z2n
         tracked = (KD * o["approach_speed"] - KP * e) / ca.if_else(KI != 0, KI, 1) - T * e

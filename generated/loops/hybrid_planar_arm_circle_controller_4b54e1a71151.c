@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 6ea3e35bc8d540f78e4b6a45ce3845e74c5c538678121ab094bc183608319287 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: ee43510b6f1d346d045cf9c3c1caad493ac6a9899829a6673ded91f6dffaf76c */
 /* hybrid_planar_arm_circle_controller_4b54e1a71151: the paper's closed loop on a circle: controller_step.
    Emitted by hybrid's codegen/closed_loop.py; it includes hybrid_lanes.h (in generated/: compile with -I there). */
 #if !defined(__GNUC__)
@@ -1193,7 +1193,7 @@ static inline __attribute__((always_inline)) void controller_step_lanes_core(con
     const hl_v v176 = pre[25];
     const hl_v v177 = hl_bool(v149 < v176);
     const hl_v v178 = v126 * v177;
-    const hl_v v209 = hl_fmax(v208, v178);
+    const hl_v v209 = hl_bool((v208 != 0.0) | (v178 != 0.0));
     const hl_v v211 = v125 - v209;
     const hl_v v212 = v211 * v198;
     const hl_v v210 = v209 * v197;
@@ -1452,7 +1452,7 @@ static inline __attribute__((always_inline)) void controller_step_lanes_core(con
     const hl_v v438 = hl_bool(v196 < v437);
     const hl_v v411 = hl_bool(v399 < v176);
     const hl_v v412 = v381 * v411;
-    const hl_v v439 = hl_fmax(v438, v412);
+    const hl_v v439 = hl_bool((v438 != 0.0) | (v412 != 0.0));
     const hl_v v441 = v125 - v439;
     const hl_v v442 = v441 * v428;
     const hl_v v440 = v439 * v427;

@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 37c8e58c7e947e69bdaf90589f0d41143603f8fb8be6642d80061251e8589d67 */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 4b345c0d314166de99ba2e57e8020c5c9d049b4202a2011bf30c4160763781ad */
 /* hybrid_planar_arm_circle_raibert_cr_57176b91a5fa: the paper's closed loop on a circle: raibert_craig_step.
    Emitted by hybrid's codegen/closed_loop.py; it includes hybrid_lanes.h (in generated/: compile with -I there). */
 #if !defined(__GNUC__)
@@ -1202,7 +1202,7 @@ static inline __attribute__((always_inline)) void raibert_craig_step_lanes_core(
     const hl_v v196 = pre[25];
     const hl_v v197 = hl_bool(v169 < v196);
     const hl_v v198 = v146 * v197;
-    const hl_v v229 = hl_fmax(v228, v198);
+    const hl_v v229 = hl_bool((v228 != 0.0) | (v198 != 0.0));
     const hl_v v231 = v145 - v229;
     const hl_v v232 = v231 * v218;
     const hl_v v230 = v229 * v217;
@@ -1344,7 +1344,7 @@ static inline __attribute__((always_inline)) void raibert_craig_step_lanes_core(
     const hl_v v339 = hl_bool(v216 < v338);
     const hl_v v312 = hl_bool(v300 < v196);
     const hl_v v313 = v270 * v312;
-    const hl_v v340 = hl_fmax(v339, v313);
+    const hl_v v340 = hl_bool((v339 != 0.0) | (v313 != 0.0));
     const hl_v v342 = v145 - v340;
     const hl_v v343 = v342 * v329;
     const hl_v v341 = v340 * v328;
