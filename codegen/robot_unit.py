@@ -49,17 +49,18 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
          Arg("B", rb.row_major(B), "kg m^2", (n, n)), Arg("n", bias, rb.joint_units(chain, "tau"))),
         "tip frame position p [m] and rotation (row-major) in base axes, frame Jacobian J (6 x n, "
         "LOCAL_WORLD_ALIGNED), J'(q, q') q' (classical), inertia B(q) (CRBA), n(q, q') (RNEA: "
-        "Coriolis/centrifugal, gravity, viscosity)", batched=("q", "qd"))
+        "Coriolis/centrifugal, gravity, viscosity)", batched=("q", "qd"), reordered=True)
     inverse = Kernel(
         "inverse_dynamics", (a_q, a_qd, Arg("qdd", qdd, rb.joint_units(chain, "qdd"), names=names), a_p),
         (Arg("tau", bf.rnea(tree, params, qd, qdd), rb.joint_units(chain, "tau")),),
-        "inverse dynamics tau = B(q) q'' + n(q, q') by recursive Newton-Euler", batched=("q", "qd", "qdd"))
+        "inverse dynamics tau = B(q) q'' + n(q, q') by recursive Newton-Euler", batched=("q", "qd", "qdd"),
+        reordered=True)
     forward = Kernel(
         "forward_dynamics", (a_q, a_qd, Arg("tau", tau, rb.joint_units(chain, "tau"), names=names), a_p),
         (Arg("qdd", ldl_solve(B, tau - bias), rb.joint_units(chain, "qdd")),),
         "forward dynamics q'' = B(q)^-1 (tau - n(q, q')) by a square-root-free Cholesky factorisation of B "
         "(L D L^T)",
-        batched=("q", "qd", "tau"))
+        batched=("q", "qd", "tau"), reordered=True)
     kernels = (terms, inverse, forward)
     if chain.n >= 6:  # a full-rank 6 x n Jacobian is possible: the operational space exists
         kernels += operational_space_kernels(chain)
@@ -79,7 +80,8 @@ def inertia_kernel(chain: rb.Chain) -> Kernel:
     B = bf.crba(bf.link_transforms(chain, q), params)
     return Kernel("inertia", (Arg("q", q, rb.joint_units(chain, "q"), names=names),
                               Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain))),
-                  (Arg("B", rb.row_major(B), "kg m^2", (chain.n, chain.n)),), "inertia B(q) (CRBA), row-major")
+                  (Arg("B", rb.row_major(B), "kg m^2", (chain.n, chain.n)),), "inertia B(q) (CRBA), row-major",
+                  reordered=True)
 
 
 def build_inertia_unit(chain: rb.Chain, prefix: str, info: dict, values=None) -> Unit:
