@@ -49,7 +49,7 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
          Arg("B", rb.row_major(B), "kg m^2", (n, n)), Arg("n", bias, rb.joint_units(chain, "tau"))),
         "tip frame position p [m] and rotation (row-major) in base axes, frame Jacobian J (6 x n, "
         "LOCAL_WORLD_ALIGNED), J'(q, q') q' (classical), inertia B(q) (CRBA), n(q, q') (RNEA: "
-        "Coriolis/centrifugal, gravity, viscosity)", batched=("q", "qd"), reordered=True)
+        "Coriolis/centrifugal, gravity, viscosity)", batched=("q", "qd"))
     inverse = Kernel(
         "inverse_dynamics", (a_q, a_qd, Arg("qdd", qdd, rb.joint_units(chain, "qdd"), names=names), a_p),
         (Arg("tau", bf.rnea(tree, params, qd, qdd), rb.joint_units(chain, "tau")),),
@@ -60,7 +60,7 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
         (Arg("qdd", ldl_solve(B, tau - bias), rb.joint_units(chain, "qdd")),),
         "forward dynamics q'' = B(q)^-1 (tau - n(q, q')) by a square-root-free Cholesky factorisation of B "
         "(L D L^T)",
-        batched=("q", "qd", "tau"), reordered=True)
+        batched=("q", "qd", "tau"))
     kernels = (terms, inverse, forward)
     if chain.n >= 6:  # a full-rank 6 x n Jacobian is possible: the operational space exists
         kernels += operational_space_kernels(chain)

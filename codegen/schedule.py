@@ -1,4 +1,4 @@
-"""The order of a CasADi kernel's C statements, chosen to keep few values alive.
+"""The order of a CasADi kernel's C statements, chosen to keep few values alive and the long chains going.
 
 CasADi prints an SX function as straight-line statements ``aN=...;`` in the order of a depth-first
 walk from its outputs: a value the walk reaches early for one output and needs again for another
@@ -8,11 +8,14 @@ compiler's scheduler moves statements only within a basic block, and the inline 
 (:mod:`.casadi_backend`) split the code into many.
 
 :func:`reorder` lists the statements again, each once, after all it reads, choosing each time among
-those whose operands are computed the one that leaves the fewest values alive: first the one whose
-operands it is the last to read, net of the value it defines; then, of equals, the one reading the
-most recent value (the walk's depth-first habit), and reads of the arrays and constants last (an
-operation takes those from memory). Every value gets its own name; the operations are CasADi's,
-unchanged, so the results are the same bits.
+those whose operands are computed: first the one that leaves the fewest values alive (the operands
+it is the last to read, net of the value it defines); of equals, an operation before a read of an
+array or a constant (an operation takes those from memory), then the one that starts the longest
+chain of statements to an output (a sine, a cosine or a ``tanh`` counted as twenty operations: begun
+early, their latency overlaps the rest), then the one reading the most recent value. Every value
+gets its own name; the operations are CasADi's, unchanged: the results are the same but where the
+compiler fuses a product and a sum into one multiply-add, which it may pair otherwise in the new
+order (a rounding).
 """
 
 from __future__ import annotations
@@ -27,6 +30,8 @@ _LOCAL = re.compile(r"\ba(\d+)\b")
 _READ = re.compile(r"arg\[\d+\]\[\d+\]|-?[0-9.]+(?:e[-+]?\d+)?")
 #: an operand as :func:`_parse` writes it
 _OPERAND = re.compile(r"@(\d+)@")
+#: a call to a sine, a cosine or a tanh, and the operations its latency is counted as
+_CALL, _CALL_COST = re.compile(r"\b(?:hybrid_sin|hybrid_cos|tanh)\("), 20
 _DECLARATION = re.compile(r"^  casadi_real a\d+.*;$")
 
 
@@ -78,6 +83,10 @@ def _schedule(nodes: list[tuple[str, str, list[int]]]) -> list[int]:
         for j in operands:
             users[j].append(k)
     reads = [not operands and _READ.fullmatch(expression) is not None for _, expression, operands in nodes]
+    height = [0] * len(nodes)  # the longest chain of statements from each to an output
+    for k in reversed(range(len(nodes))):
+        own = 0 if reads[k] else _CALL_COST if _CALL.search(nodes[k][1]) else 1
+        height[k] = own + max((height[u] for u in users[k]), default=0)
     unread = [len(u) for u in users]  # the readers of each value not yet placed
     waiting = [len(operands) for _, _, operands in nodes]
     ready = [k for k, count in enumerate(waiting) if count == 0]
@@ -89,7 +98,7 @@ def _schedule(nodes: list[tuple[str, str, list[int]]]) -> list[int]:
         freed = sum(1 for j in operands if unread[j] == 1)
         alive = 0 if target.startswith("res") or not users[k] else 1
         recent = max((placed_at[j] for j in operands), default=-1)
-        return alive - freed, len(nodes) if reads[k] else -recent, k
+        return alive - freed, reads[k], -height[k], -recent, k
 
     while ready:
         k = min(ready, key=cost)
