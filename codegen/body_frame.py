@@ -318,11 +318,12 @@ class Link:
     c: ca.SX
     Ic: ca.SX
 
-    def wrench(self, motion, acc):
-        """``I a + v x* (I v)`` by Newton and Euler about the centre of mass: ``f = m a_c`` with
-        ``a_c = a + alpha x c + w x (v + w x c)``, and ``n = Ic alpha + w x Ic w + c x f``."""
-        (w, v), (alpha, a) = motion, acc
-        f = self.m * (a + cross(alpha, self.c) + cross(w, v + cross(w, self.c)))
+    def newton_euler(self, w, alpha, a):
+        """The force ``(n, f)`` (moment about the origin) that gives the link the angular velocity ``w`` and
+        acceleration ``alpha`` and its origin the acceleration ``a`` (the classical one, not the spatial):
+        by Newton and Euler about the centre of mass, ``f = m a_c`` with ``a_c = a + alpha x c + w x (w x c)``,
+        and ``n = Ic alpha + w x Ic w + c x f``."""
+        f = self.m * (a + cross(alpha, self.c) + cross(w, cross(w, self.c)))
         return self.Ic @ alpha + cross(w, self.Ic @ w) + cross(self.c, f), f
 
     def inertia(self) -> Inertia:
@@ -349,26 +350,33 @@ def links(tree: Tree, params) -> list[Link]:
 
 def rnea(tree: Tree, params, qd, qdd=None, f_ext=None, velocities=None, bodies=None, friction=None) -> ca.SX:
     """``tau = B q'' + n(q, q') - sum_i J_i^T f_ext_i`` by the recursive Newton-Euler algorithm in
-    body coordinates (Featherstone table 5.1; ``q'' = 0`` when ``qdd`` is None): Coriolis and
-    centrifugal terms, gravity (the base's fictitious acceleration ``-g``) and joint friction
-    (:func:`.rigid_body.joint_friction`). ``f_ext`` maps a link's index to the force ``(n, f)`` the environment
-    exerts on it, in its coordinates. ``velocities`` reuses :func:`link_velocities`'. ``bodies``
-    (anything with ``wrench``, one per link in the tree's frames) stands for the links of ``params``,
-    whose friction and gravity are still read; ``friction`` (the joints' torques) stands for
-    :func:`.rigid_body.joint_friction`'s."""
+    body coordinates (Featherstone table 5.1, with Luh, Walker and Paul's accelerations; ``q'' = 0``
+    when ``qdd`` is None): Coriolis and centrifugal terms, gravity (the base's fictitious acceleration
+    ``-g``) and joint friction (:func:`.rigid_body.joint_friction`). ``f_ext`` maps a link's index to the
+    force ``(n, f)`` the environment exerts on it, in its coordinates. ``velocities`` reuses
+    :func:`link_velocities`' angular velocities. ``bodies`` (anything with ``newton_euler``, one per link
+    in the tree's frames) stands for the links of ``params``, whose friction and gravity are still read;
+    ``friction`` (the joints' torques) stands for :func:`.rigid_body.joint_friction`'s.
+
+    The forward pass carries each link's angular velocity ``w`` and acceleration ``alpha`` and its
+    origin's classical acceleration ``a`` (not the spatial one): the origin's velocity is never needed,
+    and the parent's ``alpha x p + w x (w x p)`` is cheaper than carrying it (``p`` has one or two
+    components where the links' frames follow the joints)."""
     n = tree.n
     g = gravity(tree.chain, params)
     friction = friction or joint_friction(tree.chain, params, qd)
     bodies = bodies or links(tree, params)
-    vs = velocities or link_velocities(tree, qd)
     zero = ca.SX.zeros(3, 1)
-    acc, forces = (zero, -g), []
+    w, alpha, a, forces = zero, zero, -g, []
     for i, X in enumerate(tree.X):
-        Sqd = _scale(tree.S[i], qd[i])
-        acc = _add(X.motion(acc), _motion_cross(vs[i], Sqd))
+        (Sw, Sv), p = tree.S[i], X.p
+        w_in = X.rotate_in(w)  # the parent's angular velocity in the link's axes
+        a = X.rotate_in(a + cross(alpha, p) + cross(w, cross(w, p))) + cross(w_in, 2 * qd[i] * Sv)
+        alpha = X.rotate_in(alpha) + cross(w_in, qd[i] * Sw)
         if qdd is not None:
-            acc = _add(acc, _scale(tree.S[i], qdd[i]))
-        f = bodies[i].wrench(vs[i], acc)
+            a, alpha = a + qdd[i] * Sv, alpha + qdd[i] * Sw
+        w = velocities[i][0] if velocities else w_in + qd[i] * Sw
+        f = bodies[i].newton_euler(w, alpha, a)
         if f_ext and i in f_ext:
             f = (f[0] - f_ext[i][0], f[1] - f_ext[i][1])
         forces.append(f)

@@ -13,6 +13,7 @@ import casadi as ca
 import sympy as sp
 
 from .model import Kernel
+from .schedule import reorder
 
 _UNARY = {sp.sin: ca.sin, sp.cos: ca.cos, sp.tan: ca.tan, sp.tanh: ca.tanh, sp.Abs: ca.fabs, sp.exp: ca.exp,
           sp.log: ca.log, sp.asin: ca.asin, sp.acos: ca.acos, sp.atan: ca.atan, sp.sinh: ca.sinh,
@@ -141,7 +142,8 @@ def kernel_sources(kernels: list[Kernel], prefix: str) -> tuple[str, dict[str, t
             # the work array is ours to size; CasADi's mem and iw go unused
             head, rest = body.split("{", 1)
             body = f"{head}{{\n  (void)arg; (void)iw; (void)mem; (void)w;{rest}"
-            kernels_c.append(_WRITE.sub("", _READ.sub(r"\2;", _SINCOS.sub(r"hybrid_\1(", body))))
+            body = _WRITE.sub("", _READ.sub(r"\2;", _SINCOS.sub(r"hybrid_\1(", body)))
+            kernels_c.append(reorder(body) if kernels[len(names) - 1].reordered else body)
         else:
             helpers.append("static " + body)
     if len(names) != len(funcs):

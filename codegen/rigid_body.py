@@ -260,6 +260,12 @@ class Inertia:
         ia, (n_mom, f_mom) = self.apply(acc), self.apply(motion)
         return ia[0] + cross(w, n_mom) + cross(v, f_mom), ia[1] + cross(w, f_mom)
 
+    def newton_euler(self, w, alpha, a):
+        """The same force from the angular velocity ``w`` and acceleration ``alpha`` and the origin's
+        classical acceleration ``a``: ``(I alpha + w x I w + h x a, m a + alpha x h + w x (w x h))``."""
+        f = self.m * a + cross(alpha, self.h) + cross(w, cross(w, self.h))
+        return self.I @ alpha + cross(w, self.I @ w) + cross(self.h, a), f
+
 
 @dataclass
 class Body:

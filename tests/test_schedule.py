@@ -1,0 +1,86 @@
+"""The reordered C of a CasADi kernel (codegen/schedule.py): each statement once, after what it reads, and
+the same numbers as CasADi's order and CasADi's own evaluation."""
+
+from __future__ import annotations
+
+import ctypes
+import dataclasses
+import re
+import shutil
+import subprocess
+
+import casadi as ca
+import numpy as np
+import pytest
+from hybrid.codegen import schedule
+from hybrid.codegen.casadi_backend import kernel_sources
+from hybrid.codegen.kernel import Arg, Kernel
+from hybrid.codegen.templates import FOLDER
+
+
+def kernel(reordered: bool) -> Kernel:
+    """Shared subexpressions, sines, a branch and constants, as the dynamics have them."""
+    x = ca.SX.sym("x", 4)
+    s, c = ca.sin(x[0]), ca.cos(x[0])
+    u = s * x[1] - c * x[2]
+    v = u * u + 0.25 * x[3]
+    outs = ca.vertcat(u * v - s, ca.if_else(x[3] != 0, ca.tanh(x[1] / x[3]), 0) + v, c * u + 3.5 * v * x[2], s * c)
+    return Kernel("k", (Arg("x", x, "1"),), (Arg("y", outs, "1"),), "test", reordered=reordered)
+
+
+def statements(code: str) -> list[str]:
+    return [line for line in code.split("\n") if re.match(r"^  (a\d+|res\[\d+\]\[\d+\])=", line)]
+
+
+def test_each_statement_once_after_what_it_reads():
+    plain, _ = kernel_sources([kernel(False)], "p")
+    again, _ = kernel_sources([kernel(True)], "p")
+    lines = statements(again)
+    defined = set()
+    for line in lines:
+        target, expression = line.strip().rstrip(";").split("=", 1)
+        assert set(re.findall(r"\ba\d+\b", expression)) <= defined, line
+        assert target not in defined, line
+        defined.add(target)
+
+    def operations(code):  # the statements with the locals' names taken out
+        return sorted(re.sub(r"\ba\d+\b", "a", line) for line in statements(code))
+
+    assert operations(again) == operations(plain)
+    assert lines != statements(plain)
+
+
+def test_an_unfamiliar_statement_leaves_the_function_as_it_is():
+    text = "static int f() {\n  a0=arg[0][0];\n  casadi_copy(w, 2, w+2);\n  res[0][0]=a0;\n  return 0;\n}\n"
+    assert schedule.reorder(text) == text
+
+
+@pytest.mark.skipif(shutil.which("cc") is None, reason="no C compiler")
+def test_the_same_numbers_as_casadis_order_and_evaluation(tmp_path, rng):
+    libraries = {}
+    for reordered in (False, True):
+        code, table = kernel_sources([kernel(reordered)], "t")
+        name, size = table["k"]
+        source = tmp_path / f"k{reordered:d}.c"
+        source.write_text("#include <math.h>\n" + (FOLDER / "hybrid_sincos.c.j2").read_text() + code
+                          + f"\nvoid run(const double *x, double *y) {{ const double *arg[1] = {{x}};"
+                          f" double *res[1] = {{y}}; double w[{size} + 1]; {name}(arg, res, 0, w, 0); }}\n")
+        library = tmp_path / f"k{reordered:d}.so"
+        subprocess.run(["cc", "-O2", "-fPIC", "-shared", str(source), "-o", str(library), "-lm"], check=True)
+        libraries[reordered] = ctypes.CDLL(str(library))
+    k = kernel(False)
+    f = ca.Function("f", [k.inputs[0].expr], [k.outputs[0].expr])
+    states = rng.uniform(-3, 3, (200, 4))
+    states[::5, 3] = 0.0  # the branch's other side
+    for x in states:
+        ys = []
+        for reordered in (False, True):
+            y = np.zeros(4)
+            libraries[reordered].run(x.ctypes.data_as(ctypes.c_void_p), y.ctypes.data_as(ctypes.c_void_p))
+            ys.append(y)
+        assert ys[1].tobytes() == ys[0].tobytes()
+        assert np.allclose(ys[1], np.array(f(x)).ravel(), rtol=1e-13, atol=1e-13)
+
+
+def test_a_kernel_keeps_the_flag_through_replace():
+    assert dataclasses.replace(kernel(True), doc="other").reordered
