@@ -49,20 +49,24 @@ def check_call(where: str, signature: inspect.Signature, args: tuple, kwargs: di
     twice = [k for k in positional[:len(given)] if k in kwargs]
     required = [p.name for p in params if p.default is p.empty and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)]
     missing = [k for k in required if k not in positional[:len(given)] and k not in kwargs]
+    # its arguments as help() names them: a function of settings by name (``**overrides``) takes them by keyword
+    named = keywords + [f"**{p.name}" for p in params if p.kind is p.VAR_KEYWORD]
     if unknown:
         near = nearest(unknown[0], keywords)
-        hint = f"did you mean {near!r}?" if near else "give one of its keywords"
+        hint = f"did you mean {near!r}?" if near else "give one of its keywords" if keywords else "it takes none"
         problem = f"{where} has no keyword {shown(unknown[0], 40)}; {hint} (help(hybrid.{where}))"
     elif len(given) > len(positional):
-        takes = (f"takes {len(positional)} argument{'s' * (len(positional) != 1)} by position "
-                 f"({listed(positional, 6)})" if positional else "takes its arguments by keyword only")
+        takes, then = ((f"takes {len(positional)} argument{'s' * (len(positional) != 1)} by position "
+                        f"({listed(positional, 6)})", "give the others by keyword") if positional else
+                       ("takes its arguments by keyword only", "give them by keyword") if named else
+                       ("takes no arguments", "give none"))
         problem = (f"{where} {takes}, {len(given)} {'was' if len(given) == 1 else 'were'} given (the first extra: "
-                   f"{shown(given[len(positional)], 40)}); give {'the others' if positional else 'them'} by keyword")
+                   f"{shown(given[len(positional)], 40)}); {then}")
     elif twice:
         problem = f"{where}: {twice[0]} is given twice, by position and as a keyword; give it once"
     else:
         problem = f"{where}: {', '.join(missing) or 'an argument'} not given; give {', '.join(required)}"
-    raise HybridError(f"{problem}\n  its arguments: {', '.join(keywords)}") from None
+    raise HybridError(f"{problem}\n  its arguments: {', '.join(named) or 'none'}") from None
 
 
 def nearest(word: str, names) -> str | None:
@@ -102,10 +106,14 @@ def checked_keywords(target=None, *, where: str | None = None):
     ``help`` and ``inspect``. ``where``: its name in the message (default its own; ``"sweeps.Uniform"`` for one
     that is not ``hybrid.<name>``). The call is checked only when it fails: a call that fits costs nothing more.
 
-    ``@checked_keywords`` or ``@checked_keywords(where=...)``."""
+    ``@checked_keywords`` or ``@checked_keywords(where=...)``; a class that takes no arguments (no ``__init__`` of
+    its own) is given one that takes none, a subclass of a checked class is checked under its own name."""
     def decorate(made):
         name = where or made.__name__
         call = made.__init__ if isinstance(made, type) else made
+        call = getattr(call, "_unchecked", call)  # a checked class's subclass: its own name, one check
+        if call is object.__init__:  # object's takes anything: its refusal comes later, from object.__new__
+            call = _no_arguments
         signature = inspect.signature(call)
 
         @functools.wraps(call)
@@ -116,12 +124,17 @@ def checked_keywords(target=None, *, where: str | None = None):
                 check_call(name, signature, args, kwargs)  # a HybridError when they do not fit the signature
                 raise  # they fit: the TypeError is the body's own
 
+        checked._unchecked = call
         if not isinstance(made, type):
             return checked
         made.__init__ = checked
         return made
 
     return decorate if target is None else decorate(target)
+
+
+def _no_arguments(self) -> None:
+    """The ``__init__`` of a class that takes no arguments (what :func:`checked_keywords` checks a call against)."""
 
 
 def field_values(obj) -> dict:

@@ -35,7 +35,7 @@ from hybrid.animation import (
 )
 from hybrid.errors import HybridError
 from hybrid.plots import is_spatial
-from hybrid.validate import shown
+from hybrid.validate import checked_keywords, shown
 
 #: the file types :func:`view` writes
 SUFFIXES = (".html", ".htm")
@@ -179,6 +179,7 @@ def _controls(frames: list[ArmFrame], fps: float) -> tuple[list, list]:
     return buttons, [slider]
 
 
+@checked_keywords
 def view(result, every: int | None = None, *, force_scale: float | None = None, fps: float | None = None,
          title: str | None = None, out=None, overwrite: bool = False):
     """The run ``result`` as an interactive 3-D figure for the browser (plotly), a picture per chosen

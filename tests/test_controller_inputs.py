@@ -4,7 +4,6 @@ first line names the value and the fix; a user's callback that fails is named, w
 from __future__ import annotations
 
 import dataclasses
-import inspect
 import signal
 
 import numpy as np
@@ -13,7 +12,6 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import hybrid
-import hybrid.sweeps
 
 SPHERE = hybrid.Sphere((0.5, 0.0, 0.2), 0.15)
 Q_UR5 = np.array([0.0, -1.2, 1.6, -1.9, -1.57, 0.0])
@@ -201,67 +199,6 @@ def test_a_path_that_cannot_be_called_is_refused_when_given(path):
     # what is called is taken, and read at the samples: a desired frame on it is served
     ctrl = hybrid.Controller(hybrid.ur5(), SPHERE, frame="desired", path=_Desired(), timing_tolerance=None)
     assert np.isfinite(ctrl(0.0, Q_UR5, np.zeros(6), np.zeros(3))).all()
-
-
-#: every public settings record and constructor, by the name its refusals give it (the docs/api.rst names, or
-#: ``sweeps.<name>``); each refuses a call that does not fit its signature with a HybridError, not a TypeError
-CONSTRUCTORS = {name: getattr(hybrid, name) for name in (
-    "Controller", "Tracking", "Limits", "Sensing", "Gains", "Step", "Posture", "ContactLoss", "FaultReaction",
-    "Reference", "WrenchSensor", "Tool", "PathTask", "Robot", "Arm", "DecouplingLaw", "decoupling_law", "Plane",
-    "Circle", "Sphere", "Cylinder", "ImplicitSurface", "MeshSurface", "PointCloudSurface", "EstimatedSurface",
-    "CirclePath", "LinePath", "WaypointPath", "RasterPath", "SpiralPath", "Experiment", "Sensor", "Contact")}
-CONSTRUCTORS |= {f"sweeps.{name}": getattr(hybrid.sweeps, name) for name in ("Uniform", "LogUniform", "Normal")}
-
-
-def _keywords(name: str) -> list[str]:
-    """The keywords of a constructor, as its documented signature shows them (the Controller's task arguments
-    apart: they come by position)."""
-    return [p.name for p in inspect.signature(CONSTRUCTORS[name]).parameters.values()
-            if p.kind is p.KEYWORD_ONLY or (p.kind is p.POSITIONAL_OR_KEYWORD and name != "Controller")]
-
-
-def _typos(keyword: str) -> set[str]:
-    """``keyword`` misspelt: its middle letter dropped, the two about the middle swapped, capitalized."""
-    k = len(keyword) // 2
-    return {keyword[:k] + keyword[k + 1:], keyword[:k - 1] + keyword[k] + keyword[k - 1] + keyword[k + 1:],
-            keyword.capitalize()} - {keyword}
-
-
-@pytest.mark.parametrize("name", list(CONSTRUCTORS))
-def test_a_keyword_it_has_not_is_refused_with_the_nearest_it_has(name):
-    """Each keyword misspelt (a letter dropped, two swapped, a capital) is refused, naming the misspelling and
-    suggesting the keyword it came from; a word like none of them is named without a suggestion."""
-    args = (hybrid.ur5(), SPHERE) if name == "Controller" else ()
-    keywords = _keywords(name)
-    assert keywords and "sample_time" in keywords if name in ("Controller", "Limits") else keywords
-    typos = {keyword: _typos(keyword) - set(keywords) for keyword in keywords}
-    for keyword in keywords:
-        others = set().union(*(t for k, t in typos.items() if k != keyword))
-        for typo in typos[keyword] - others:  # a typo of two keywords (L1, L2: "L") is either's
-            with pytest.raises(hybrid.HybridError) as err:
-                CONSTRUCTORS[name](*args, **{typo: None})
-            line = first_line(err.value)
-            assert line.startswith(f"{name} has no keyword {typo!r}; did you mean {keyword!r}?"), line
-            assert line.endswith(f"(help(hybrid.{name}))"), line
-            assert len(line) <= 240 and keyword in str(err.value).splitlines()[1]
-    with pytest.raises(hybrid.HybridError, match=f"^{name} has no keyword 'xyzzy'; give one of its keywords"):
-        CONSTRUCTORS[name](*args, xyzzy=1.0)
-
-
-@pytest.mark.parametrize("name", list(CONSTRUCTORS))
-def test_more_arguments_by_position_than_the_signature_has_are_refused(name):
-    """One argument by position beyond those the signature takes by position (none for the Experiment's, all
-    keywords): refused, naming how many it takes and the first extra."""
-    positional = [p.name for p in inspect.signature(CONSTRUCTORS[name]).parameters.values()
-                  if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
-    with pytest.raises(hybrid.HybridError) as err:
-        CONSTRUCTORS[name](*[None] * len(positional), "extra")
-    takes = f"takes {len(positional)} argument{'s' * (len(positional) != 1)} by position (" if positional else \
-        "takes its arguments by keyword only,"
-    line = first_line(err.value)
-    assert line.startswith(f"{name} {takes}") and f"{len(positional) + 1} w" in line, line
-    assert "the first extra: 'extra'" in line and len(line) <= 240, line
-    assert all(p in str(err.value).splitlines()[1] for p in positional)
 
 
 def test_arguments_by_position_beyond_the_signature_are_refused():

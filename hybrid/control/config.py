@@ -84,7 +84,7 @@ from hybrid.geometry.paths import Path as DesiredPath
 from hybrid.geometry.surfaces import Circle, Cylinder, Plane, Sphere, Surface
 from hybrid.geometry.task_axes import AXES, check_axes
 from hybrid.spec.axes import AXIS_NAMES
-from hybrid.validate import MAX_NESTING, shown
+from hybrid.validate import MAX_NESTING, checked_keywords, shown
 
 Key = tuple[str, ...]
 
@@ -166,6 +166,7 @@ class ControllerConfig:
             raise self.source.error(key, str(exc)) from exc
 
 
+@checked_keywords
 def read_controller_config(path, robot) -> Controller:
     """The :class:`~hybrid.Controller` of ``robot`` that the TOML file ``path`` describes.
 

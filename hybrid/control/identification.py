@@ -31,7 +31,7 @@ from hybrid.control.wrench_sensor import Tool, WrenchSensor, tool_wrench
 from hybrid.errors import HybridError
 from hybrid.models.robot import Robot
 from hybrid.models.terms import arm_terms
-from hybrid.validate import shown
+from hybrid.validate import checked_keywords, shown
 
 #: the largest condition number of the regressor (gravity scaled to unit length) accepted: about the
 #: inverse of the spread of the gravity directions in radians (1 for directions all over the sphere)
@@ -40,6 +40,7 @@ MAX_CONDITION = 100.0
 SAME_DIRECTION = 1e-6
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class ToolIdentification:
     """What :func:`identify_tool` found.
@@ -147,6 +148,7 @@ def _distinct(u: np.ndarray) -> int:
     return len(kept)
 
 
+@checked_keywords
 def identify_tool(robot: Robot, sensor: WrenchSensor, q, readings, *,
                   max_condition: float = MAX_CONDITION) -> ToolIdentification:
     """The bias and the tool of ``sensor`` from ``readings`` at rest in free space (module docstring).
@@ -256,6 +258,7 @@ def identify_tool(robot: Robot, sensor: WrenchSensor, q, readings, *,
                               float(np.sqrt(np.mean(np.sum(r[:, 3:] ** 2, axis=1)))), condition)
 
 
+@checked_keywords
 def tare(sensor: WrenchSensor, robot: Robot, q, reading) -> WrenchSensor:
     """``sensor`` with the bias that makes its compensated wrench zero at the joint positions ``q`` for
     the raw ``reading`` (the arm at rest, nothing in contact); the tool as it is.

@@ -7,9 +7,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.validate import shown
+from hybrid.validate import checked_keywords, shown
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Measurement:
     """What the controller measures, at the arm tip: position ``p`` [m] and twist ``v = (p', w)``

@@ -11,18 +11,20 @@ from __future__ import annotations
 from typing import ClassVar
 
 from hybrid.errors import HybridError
-from hybrid.validate import shown
+from hybrid.validate import checked_keywords, shown
 
 #: every registered scheme, by name
 SCHEMES: dict[str, type[Scheme]] = {}
 
 
 def register(cls: type[Scheme]) -> type[Scheme]:
-    """Class decorator: make ``cls`` selectable by its ``name``."""
+    """Class decorator: make ``cls`` selectable by its ``name``; made with an argument, it refuses it by name (a
+    scheme takes none: :func:`~hybrid.validate.checked_keywords`)."""
     SCHEMES[cls.name] = cls
-    return cls
+    return checked_keywords(cls)
 
 
+@checked_keywords
 class Scheme:
     """A hybrid force/velocity control scheme.
 

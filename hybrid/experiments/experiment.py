@@ -7,15 +7,16 @@ What differs between robots is a property of the robot: the paper's planar arm (
 :class:`~hybrid.Robot` with a ``closed_form``) runs on the committed closed-form plant, with
 the planar task axes and closed-form inverse kinematics; any other arm on its generated
 rigid-body plant, on all six task axes (or those it can serve). :func:`hybrid.paper_experiment`,
-:func:`hybrid.tracing_experiment` and :func:`hybrid.panda_experiment` are factories of it. Its start
-state is worked out in :mod:`hybrid.experiments.start`, its settings as data in
-:mod:`hybrid.experiments.serialisation`.
+:func:`hybrid.tracing_experiment` and :func:`hybrid.panda_experiment` are factories of it. Where
+its run starts and where its desired point goes are worked out in
+:mod:`hybrid.experiments.path_and_start` (the start state in :mod:`hybrid.experiments.start`),
+its settings as data in :mod:`hybrid.experiments.serialisation`.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from functools import cached_property, lru_cache
+from functools import cached_property
 
 import numpy as np
 
@@ -29,7 +30,8 @@ from hybrid.control.schemes import SCHEMES, scheme_of
 from hybrid.control.wrench_sensor import WrenchSensor
 from hybrid.deprecation import RENAMED, RenamedKeywords, renamed_attribute
 from hybrid.errors import HybridError
-from hybrid.experiments.followed import TaskDirection, check_followed, check_reach, task_references, told_surface
+from hybrid.experiments.followed import TaskDirection, check_followed, task_references, told_surface
+from hybrid.experiments.path_and_start import PathAndStart
 from hybrid.experiments.serialisation import experiment_from_dict, experiment_to_dict
 from hybrid.experiments.settings import (
     TOUCH_THRESHOLD,
@@ -39,7 +41,7 @@ from hybrid.experiments.settings import (
     check_timing,
     warn_redundancy,
 )
-from hybrid.experiments.start import StartState, check_seed, start_state
+from hybrid.experiments.start import check_seed
 from hybrid.geometry.paths import Path
 from hybrid.geometry.surfaces import Surface
 from hybrid.geometry.task_axes import check_axes, frame_direction_of
@@ -63,7 +65,7 @@ PHYSICS = frozenset({"model_error", "viscous_compensation", "sensor", "contact"}
 
 @checked_keywords
 @dataclass(frozen=True, kw_only=True)
-class Experiment(RunSettings, metaclass=RenamedKeywords):
+class Experiment(RunSettings, PathAndStart, metaclass=RenamedKeywords):
     """One closed-loop run: the true robot and surface, the controller's settings, the references,
     the sensor and contact, the integration and sampling.
 
@@ -443,127 +445,6 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
         return Controller(self.controller_model(), self.told_surface(), self.controller, axes=self.axes,
                           frame_direction=self.frame_direction, posture=self.posture, **self.controller_settings())
 
-    @cached_property
-    def section(self):
-        """The surface's cross-section the planar arm runs on (:meth:`Surface.cross_section`), or None."""
-        return self.robot.kind.section(self.surface)
-
-    def _geometry(self):
-        """Where the start, the path and the normals are taken: the planar arm's cross-section, else the
-        surface itself."""
-        section = self.section
-        return self.surface if section is None else section
-
-    def followed_path(self) -> Path | None:
-        """The path the desired point follows.
-
-        Returns
-        -------
-        Path or None
-            ``path`` when given, else the path task's, else the surface's through ``start_point``, else
-            the surface's own; None where there is none.
-        """
-        if self.path is not None:
-            return self.path
-        if self.path_task is not None:
-            return self.path_task.path
-        geometry = self._geometry()
-        if self.start_point is not None:
-            projected = geometry.project(self.start_point)
-            return geometry.path_through(self.start_point if projected is None else projected)
-        try:
-            return geometry.path()
-        except HybridError:
-            return None
-
-    def start(self) -> np.ndarray:
-        """The sensor tip's start point on the surface.
-
-        Returns
-        -------
-        numpy.ndarray
-            ``start_point`` projected onto the surface (the planar arm's cross-section), else the
-            followed path's point at its ``start`` [m], base axes (2 coordinates for the planar arm).
-        """
-        if self.start_point is None:
-            return self.followed_path().point_at(self.followed_path().start)
-        projected = self._geometry().project(self.start_point)
-        return np.array(self.start_point) if projected is None else projected
-
-    def desired_point(self, t: float) -> tuple[np.ndarray, np.ndarray]:
-        """The desired point on the path, reached from the start at the desired speed.
-
-        Parameters
-        ----------
-        t : float
-            The time [s].
-
-        Returns
-        -------
-        r_d, r_d_dot : numpy.ndarray
-            ``r_d(t)`` [m], at the arc length ``arc_of(start) + int_0^t v_d``, and its velocity
-            ``r_d'(t) = v_d(t)`` times the path's unit tangent [m/s], base axes.
-        """
-        path = self.followed_path()
-        s = path.arc_of(self.start()) + self.speed_reference.integral(t)
-        return path.point_at(s), self.speed_reference(t) * path.tangent_at(s)
-
-    def initial_state(self) -> np.ndarray:
-        """The run's start state: at rest, the sensor tip pressing at the start point with ``F_d(0)``
-        (:func:`~hybrid.experiments.settings.pressed`), or with ``start_gap`` the sensor tip that far from
-        it along the normal, out of contact, the sensor at rest (:func:`~hybrid.experiments.settings.free`);
-        the tool's z axis along ``-n`` when the task has rotational axes, the joints from inverse
-        kinematics of the true arm. What a foreign loop starts from.
-
-        Returns
-        -------
-        numpy.ndarray
-            ``x0 = (q, q', s, s')``: joint positions [rad or m] and velocities, the sensor tip [m] and its
-            velocity [m/s] (base axes); a copy.
-        """
-        return start_state(self).copy()
-
-    def start_state(self) -> StartState:
-        """:meth:`initial_state` by its parts.
-
-        Returns
-        -------
-        StartState
-            ``q``, ``qdot``, ``sensor_tip``, ``sensor_velocity`` (and ``array``, the whole).
-        """
-        return StartState.of(start_state(self), self.robot.n)
-
-    def checked_start(self, record: dict | None = None) -> np.ndarray:
-        """:meth:`initial_state`, after the checks every run of this experiment makes before anything
-        sized by its length is allocated: its record fits in memory (:meth:`check_memory`), and its path
-        stays in the workspace (:meth:`check_path`). What ``simulate``, a sweep and ``generate`` start from.
-
-        Parameters
-        ----------
-        record : dict, optional
-            The plant's record, where the run keeps one (its columns size the memory check).
-
-        Returns
-        -------
-        numpy.ndarray
-            ``x0 = (q, q', s, s')``, as :meth:`initial_state`.
-        """
-        self.check_memory(record)
-        x0 = self.initial_state()
-        self.check_path()
-        return x0
-
-    def check_path(self) -> None:
-        """Refuse a run whose desired path leaves the arm's workspace (where the reach is known; a path task's
-        path, everywhere: :func:`~hybrid.experiments.followed.check_reach`)."""
-        if self.path_task is not None:
-            check_reach(self, self.initial_state()[:self.robot.n])
-            return
-        reach, path = self.robot.reach(), self.followed_path()
-        if reach is not None and path is not None:
-            _check_path(reach, path, path.arc_of(self.start()), self.speed_reference, self.n_samples,
-                        self.sample_time, self.duration)
-
     def generate(self, out, name: str | None = None, force: bool = False) -> list:
         """Write this run's closed loop as standalone C99 into the folder ``out``: the controller
         (``<name>_controller.c``, ``.h``, ``.json``; the struct ``<name>_controller``, as
@@ -631,17 +512,3 @@ class Experiment(RunSettings, metaclass=RenamedKeywords):
             Data :meth:`to_dict` did not write.
         """
         return experiment_from_dict(cls, d)
-
-
-@lru_cache(maxsize=1024)
-def _check_path(reach, path, s0, speed_reference, n_samples, sample_time, duration) -> None:
-    lo, hi = reach
-    t = np.minimum(np.arange(n_samples + 1) * sample_time, duration)
-    points = path.points_at(s0 + speed_reference.integral(t))
-    d = np.hypot(points[:, 0], points[:, 1])
-    outside = np.flatnonzero(~((lo + 1e-3 < d) & (d < hi - 1e-3)))
-    if len(outside):
-        i = outside[0]
-        raise HybridError(f"the desired path leaves the arm's workspace at t = {t[i]:.3f} s "
-                          f"(point {np.round(points[i], 4).tolist()} m, {d[i]:.3f} m from the base, reach "
-                          f"{lo:.3f}-{hi:.3f} m); shorten duration, lower the speed or move the surface")

@@ -41,6 +41,7 @@ from hybrid.experiments.experiment import Experiment
 from hybrid.experiments.settings import with_overrides
 from hybrid.geometry.surfaces import Cylinder
 from hybrid.models.shipped import panda
+from hybrid.validate import checked_keywords
 
 #: the pillar of the default experiment: its axis vertical, 0.67 m in front of the base (a choice)
 CYLINDER_POINT, CYLINDER_RADIUS = (0.67, 0.0, 0.0), 0.25
@@ -50,6 +51,7 @@ START_POINT = (0.42, 0.0, 0.78)
 REST_POSTURE = (0.0, -0.785, 0.0, -2.356, 0.0, 3.142, 2.356)
 
 
+@checked_keywords
 def panda_experiment(**overrides) -> Experiment:
     """The Panda experiment, with any setting of :class:`Experiment` overridden by keyword.
 

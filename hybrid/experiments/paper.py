@@ -15,9 +15,10 @@ from hybrid.experiments.settings import with_overrides
 from hybrid.geometry.surfaces import Circle
 from hybrid.models.planar_arm import Arm, paper_arm
 from hybrid.models.robot import Robot
-from hybrid.validate import shown
+from hybrid.validate import checked_keywords, shown
 
 
+@checked_keywords
 def paper_experiment(**overrides) -> Experiment:
     """The paper's experiment, with any setting of :class:`Experiment` overridden by keyword.
 

@@ -17,7 +17,7 @@ from hybrid.errors import HybridError
 from hybrid.plants.contact import Contact, Sensor, fastest_mode
 from hybrid.spec.axes import AXIS_NAMES
 from hybrid.user_warnings import RedundancyWarning, warn
-from hybrid.validate import _finite, check_singular_tol, check_size, shown
+from hybrid.validate import _finite, check_singular_tol, check_size, nearest, shown
 
 #: where the loops' task frame is taken: at the actual contact point or at the desired one
 FRAMES = ("actual", "desired")
@@ -320,8 +320,10 @@ def with_overrides(cls, maker: str, overrides: dict, defaults: dict | None = Non
             overrides[name] = overrides.pop(alias)
     unknown = sorted(set(overrides) - names)
     if unknown:
-        raise HybridError(f"unknown setting(s) {', '.join(unknown)} for {maker}; see the known ones below\n"
-                          f"  known: {', '.join(sorted(names | gain_names | set(aliases)))}")
+        known = sorted(names | gain_names | set(aliases))
+        near = nearest(unknown[0], known)
+        hint = f"did you mean {near!r}? (the known ones below)" if near else "see the known ones below"
+        raise HybridError(f"unknown setting(s) {', '.join(unknown)} for {maker}; {hint}\n  known: {', '.join(known)}")
     if gains:
         base = overrides.get("gains", Gains())
         if not isinstance(base, Gains):

@@ -14,12 +14,14 @@ from hybrid.experiments.experiment import Experiment
 from hybrid.experiments.settings import with_overrides
 from hybrid.geometry.surfaces import Sphere
 from hybrid.models.shipped import ur5
+from hybrid.validate import checked_keywords
 
 #: the sphere of the default experiment: in front of the UR5, within reach and away from its
 #: singularities along the whole path (a choice)
 SPHERE_CENTER, SPHERE_RADIUS = (0.5, 0.0, 0.2), 0.15
 
 
+@checked_keywords
 def tracing_experiment(**overrides) -> Experiment:
     """The 3-D experiment, with any setting of :class:`Experiment` overridden by keyword.
 

@@ -17,10 +17,11 @@ from hybrid.geometry.surfaces import Surface
 from hybrid.geometry.task_axes import frame_direction_of
 from hybrid.native import units
 from hybrid.native.binding import as_array, is_batch
-from hybrid.validate import shown
+from hybrid.validate import checked_keywords, shown
 
 
 @renamed_keywords(reference="frame_direction")
+@checked_keywords
 def task_frame(surface: Surface, r, rdot, *, frame_direction=(0.0, 0.0, 1.0),
                backend: str = "sympy") -> tuple[np.ndarray, np.ndarray]:
     """``R(r)`` and ``R'(r, r')`` on ``surface`` at the point ``r`` moving at ``r'``.

@@ -19,12 +19,14 @@ import numpy as np
 from hybrid.errors import HybridError
 from hybrid.models.regressor import regressor
 from hybrid.models.robot import Robot, as_robot
+from hybrid.validate import checked_keywords
 
 #: a column whose part independent of the columns kept is below this fraction of the largest column's
 #: norm depends on them (rounding leaves about 1e-16; an independent part is a few hundredths)
 DEPENDENT_TOL = 1e-10
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class BaseParameters:
     """The base parameters of ``tau = Y pi``: ``pi_b = pi[independent] + beta @ pi[dependent]``, with
@@ -133,6 +135,7 @@ def independent_columns(W: np.ndarray, tol: float = DEPENDENT_TOL) -> list[int]:
     return kept
 
 
+@checked_keywords
 def base_parameters(robot: Robot, *, states: int = 200, seed: int = 0) -> BaseParameters:
     """The base parameters of ``robot``'s ``tau = Y pi``, from ``Y`` stacked over random states.
 

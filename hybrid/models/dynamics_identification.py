@@ -31,7 +31,7 @@ from hybrid.models.consistent_parameters import consistent_parameters, link_scal
 from hybrid.models.log_signals import LogSignals, log_signals
 from hybrid.models.regressor import linear_parameters, regressor, with_linear_parameters
 from hybrid.models.robot import Robot, as_robot
-from hybrid.validate import listed, listed_in_full
+from hybrid.validate import checked_keywords, listed, listed_in_full
 
 #: a singular value of the stacked base regressor below this fraction of the largest is a direction the
 #: data did not excite (rounding leaves about 1e-16; a parameter excited at all is far above 1e-8)
@@ -51,6 +51,7 @@ SIZE_FLOOR = 1e-2
 CHUNK = 8192
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class DynamicsIdentification:
     """What :func:`identify_dynamics` found: the base parameters ``pi_b`` of ``tau = Y_b pi_b`` by least
@@ -210,6 +211,7 @@ def _residual_rms(factors: np.ndarray, x: np.ndarray, samples: int) -> np.ndarra
     return np.linalg.norm(factors @ np.append(x, -1.0), axis=1) / math.sqrt(samples)
 
 
+@checked_keywords
 def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=None, smooth: bool = True,
                       weighted: bool = True, consistent: bool = True) -> DynamicsIdentification:
     """The dynamics of ``robot`` identified from a log of its motion and joint torques.

@@ -47,7 +47,7 @@ from hybrid.models.terms import arm_terms
 from hybrid.models.urdf import JointLimits
 from hybrid.native import generator
 from hybrid.user_warnings import warn
-from hybrid.validate import check_c_name, listed, listed_in_full, shown, whole_number
+from hybrid.validate import check_c_name, checked_keywords, listed, listed_in_full, shown, whole_number
 
 #: the acceleration limit of every joint unless given [rad/s^2 or m/s^2]: well below the shipped arms' own
 #: (the Panda's are 7.5 to 20 rad/s^2), enough for a period of seconds to sweep a joint's range
@@ -71,6 +71,7 @@ CSV_BLOCK = 10_000
 LIMIT_NAMES = ("lower", "upper", "velocity", "acceleration")
 
 
+@checked_keywords
 @dataclass(frozen=True, eq=False)
 class ExcitationTrajectory:
     """A periodic excitation trajectory, a Fourier series per joint (:func:`excitation_trajectory` makes one).
@@ -255,6 +256,7 @@ class ExcitationTrajectory:
         return files.write_text(path, text, overwrite)
 
 
+@checked_keywords
 def excitation_trajectory(robot: Robot, *, period: float = 10.0, harmonics: int = 5, limits=None, box=None,
                           start=None, safety: float = 0.9, rest: bool = True, samples: int = 100,
                           restarts: int = 3, iterations: int = 100, seed: int = 0) -> ExcitationTrajectory:

@@ -20,7 +20,7 @@ import numpy as np
 from hybrid.errors import HybridError
 from hybrid.models.robot import Robot, as_robot
 from hybrid.models.urdf import LinkInertia
-from hybrid.validate import shown, whole_number
+from hybrid.validate import checked_keywords, shown, whole_number
 
 #: the largest share accepted: beyond it a scaled mass or second moment may reach 0 or turn negative
 MOST_SHARE = 0.9
@@ -50,6 +50,7 @@ def _perturbed_link(link: LinkInertia, share: float, rng) -> LinkInertia:
     return LinkInertia(link.mass * (1 + u_m), tuple(map(float, com)), tuple(map(tuple, I_new.tolist())))
 
 
+@checked_keywords
 def perturbed_robot(robot: Robot, share: float = 0.3, *, seed: int = 0) -> Robot:
     """``robot`` with each link's mass, centre of mass and inertia perturbed at random by up to ``share``, each
     still a rigid body's (module docstring); its structure, friction, gravity and limits kept.

@@ -200,6 +200,7 @@ def check_arm(arm) -> None:
         raise HybridError(f"arm must be a hybrid.Arm (see hybrid.paper_arm()), got {type(arm).__name__}")
 
 
+@checked_keywords
 def paper_arm() -> Arm:
     """The two-link SCARA of the paper (conventions §5).
 

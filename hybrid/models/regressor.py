@@ -20,7 +20,7 @@ from hybrid.models.urdf import LinkInertia
 from hybrid.native import units
 from hybrid.native.binding import is_batch
 from hybrid.spec.chain import LINEAR, linear_parameter_names
-from hybrid.validate import inertia_problem
+from hybrid.validate import checked_keywords, inertia_problem
 
 #: the parameters of ``pi`` per link (:data:`hybrid.spec.chain.LINEAR`): mass, first moment, inertia about the
 #: joint frame's origin
@@ -29,6 +29,7 @@ LINK_PARAMETERS = len(LINEAR)
 NONNEGATIVE = ("damping", "coulomb")
 
 
+@checked_keywords
 def linear_parameters(robot: Robot) -> np.ndarray:
     """The parameters ``pi`` of ``tau = Y pi`` of ``robot``, in the order of :func:`regressor`'s names.
 
@@ -65,6 +66,7 @@ def linear_parameters(robot: Robot) -> np.ndarray:
     return np.array([*out, *robot.damping, *robot.coulomb, *robot.offset], dtype=float)
 
 
+@checked_keywords
 def regressor(robot: Robot, q, qd, qdd) -> tuple[np.ndarray, tuple[str, ...]]:
     """The joint-torque regressor ``Y`` of ``robot``: ``tau = Y(q, q', q'') pi`` is its inverse dynamics
     (``B q'' + n``: inertia, Coriolis and centrifugal terms, gravity, joint friction), ``pi`` its
@@ -123,6 +125,7 @@ def regressor(robot: Robot, q, qd, qdd) -> tuple[np.ndarray, tuple[str, ...]]:
     return call(q, qd, qdd, np.array(robot.gravity), speeds)["Y"], linear_parameter_names(robot.chain)
 
 
+@checked_keywords
 def with_linear_parameters(robot: Robot, pi) -> Robot:
     """``robot`` with the parameters ``pi`` of :func:`linear_parameters`: its inverse.
 

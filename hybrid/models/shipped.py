@@ -11,6 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from hybrid.models.robot import Robot
+from hybrid.validate import checked_keywords
 
 _DATA = Path(__file__).resolve().parent.parent / "data"
 #: the path of the UR5's URDF, shipped in the package (Universal Robots' description as example-robot-data ships it)
@@ -22,6 +23,7 @@ PANDA_URDF = _DATA / "panda.urdf"
 PANDA_FINGERS = {"panda_finger_joint1": 0.0, "panda_finger_joint2": 0.0}
 
 
+@checked_keywords
 def ur5() -> Robot:
     """The UR5 of example-robot-data: 6 joints, tip ``tool0``, gravity on.
 
@@ -42,6 +44,7 @@ def ur5() -> Robot:
     return Robot.from_urdf(UR5_URDF, tip="tool0")
 
 
+@checked_keywords
 def panda() -> Robot:
     """The Franka Emika Panda of example-robot-data: the arm's 7 joints, tip ``panda_hand_tcp`` (the
     hand's tool centre point, 0.1034 m beyond the flange, between the fingertips), gravity on.

@@ -16,9 +16,10 @@ from hybrid.models.planar_arm import Arm, check_arm
 from hybrid.models.robot import Robot
 from hybrid.native.binding import one_state
 from hybrid.native.units import planar_unit
-from hybrid.validate import SINGULAR_TOL, check_singular_tol
+from hybrid.validate import SINGULAR_TOL, check_singular_tol, checked_keywords
 
 
+@checked_keywords
 def arm_terms(arm: Arm | Robot, q, qdot, *, backend: str = "sympy") -> dict[str, np.ndarray]:
     """Kinematic and dynamic terms of ``arm`` at one state, from the generated C.
 
@@ -68,6 +69,7 @@ def arm_terms(arm: Arm | Robot, q, qdot, *, backend: str = "sympy") -> dict[str,
     return {"r": kin["r"], "J": kin["J"], "Jdot_qdot": kin["Jdqd"], "B": dyn["B"], "n": dyn["n"]}
 
 
+@checked_keywords
 def operational_space(arm: Arm | Robot, q, qdot, *, backend: str = "sympy", singular_tol: float = SINGULAR_TOL,
                       coordinates: str = "twist"):
     """Khatib's operational-space model.
@@ -127,6 +129,7 @@ def operational_space(arm: Arm | Robot, q, qdot, *, backend: str = "sympy", sing
     return out["Bo"], out["no"]
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class OperationalSpace:
     """A robot's operational-space model at one state (see :func:`operational_space`).

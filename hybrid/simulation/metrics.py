@@ -8,7 +8,7 @@ from hybrid.errors import HybridError
 from hybrid.experiments.paper import Step
 from hybrid.simulation.path_metrics import path_metrics
 from hybrid.spec.metrics import FIRST_TOUCH, METRIC_NAMES, PEAK_TORQUE, SETTLING_BAND, STEADY_WINDOW_S, TOUCH_BAND
-from hybrid.validate import shown
+from hybrid.validate import checked_keywords, shown
 
 
 def settling_time(t: np.ndarray, y: np.ndarray, target: float, band: float) -> float:
@@ -49,6 +49,7 @@ def _finite_series(name: str, arr: np.ndarray) -> np.ndarray:
     return arr
 
 
+@checked_keywords
 def metrics(t, force_normal, velocity_tangential, force_reference, speed_reference, *, force_step=None,
             speed_step=None, penetration=None, contact_force=None, tau=None) -> dict:
     """The metrics of one run (conventions §8) from its time series, named with their units.

@@ -16,8 +16,10 @@ from hybrid.experiments.experiment import Experiment
 from hybrid.plants.planar import planar_record
 from hybrid.simulation.limits import limit_violations
 from hybrid.stability.analysis import stability
+from hybrid.validate import checked_keywords
 
 
+@checked_keywords
 @dataclass
 class SimulationResult:
     """Time series of one run and its metrics: what :func:`~hybrid.simulate` returns.

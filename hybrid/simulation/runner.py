@@ -22,7 +22,7 @@ from hybrid.simulation.results import SimulationResult
 from hybrid.simulation.sensing import plant_reader
 from hybrid.spec.interfaces import STATUS_CODES
 from hybrid.stability.analysis import predicted_note
-from hybrid.validate import shown
+from hybrid.validate import checked_keywords, shown
 
 
 class SimulationError(HybridError):
@@ -59,6 +59,7 @@ class SimulationError(HybridError):
 # ---------------------------------------------------------------------- runner
 
 
+@checked_keywords
 def simulate(exp, plant: str = "generated", *, compiled: bool = True) -> SimulationResult:
     """Run the experiment ``exp``: its controller sampled every ``sample_time`` under zero-order hold,
     its plant advanced by RK4 every ``integration_step``.

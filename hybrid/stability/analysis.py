@@ -17,8 +17,10 @@ import numpy as np
 from hybrid.errors import HybridError
 from hybrid.stability.experiment_loops import MATRICES, arm_terms_at_start, axis_names, check_delay, loop_numbers
 from hybrid.stability.model import Structure, closed_loop
+from hybrid.validate import checked_keywords
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class LoopStability:
     """One task axis's sampled loop, judged alone.
@@ -66,6 +68,7 @@ class LoopStability:
         return self.spectral_radius < 1.0
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Stability:
     """An experiment's sampled loops: each axis's (:class:`LoopStability`) and the whole's.
@@ -164,6 +167,7 @@ def shown_radius(radius: float, digits: int = 4) -> str:
     return text
 
 
+@checked_keywords
 def stability(exp, *, margins: bool = True) -> Stability:
     """The stability of ``exp``'s sampled loops and their margins, from their small-signal model.
 

@@ -22,12 +22,13 @@ from hybrid.errors import HybridError
 from hybrid.stability.analysis import Stability, _poles, axis_alone, stability
 from hybrid.stability.experiment_loops import loop_numbers
 from hybrid.stability.model import closed_loop
-from hybrid.validate import shown
+from hybrid.validate import checked_keywords, shown
 
 #: each loop's gains, in the order of its equations: proportional (or damping), then the integrals
 LOOP_GAINS = {"force": ("KPf", "KDf", "KIf"), "velocity": ("KPv", "KIv", "KI2v")}
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class GainSuggestion:
     """Gains that place a loop's poles, and what they give.
@@ -56,6 +57,7 @@ class GainSuggestion:
     stability: Stability
 
 
+@checked_keywords
 def suggest_gains(exp, bandwidth_hz, damping: float = 0.7, integral_ratio: float = 0.25) -> GainSuggestion:
     """Gains whose sampled loops have the requested poles, on the experiment's own model.
 

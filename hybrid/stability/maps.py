@@ -22,7 +22,7 @@ from hybrid.plants.contact import fastest_mode, lag_pole
 from hybrid.stability.analysis import loop_radius
 from hybrid.stability.experiment_loops import check_delay, loop_numbers
 from hybrid.sweeps.space import apply
-from hybrid.validate import check_size, shown
+from hybrid.validate import check_size, checked_keywords, shown
 
 #: the settings whose value moves the start or the model's structure: their points are grouped
 GROUPED = ("contact.stiffness", "sensor.stiffness", "sensor.delay_samples")
@@ -36,6 +36,7 @@ MOST_POINTS = 10**6
 BATCH = 4096
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class StabilityMap:
     """The spectral radius of an experiment's sampled loops over a grid of its settings.
@@ -84,6 +85,7 @@ class StabilityMap:
         return stability_map_figure(self, title)
 
 
+@checked_keywords
 def stability_map(exp, over: Mapping) -> StabilityMap:
     """The stable region of ``exp``'s sampled loops over a grid of settings.
 

@@ -38,9 +38,10 @@ from hybrid.stability.tuning_problem import (
 from hybrid.stability.tuning_search import Runner, Search, Space
 from hybrid.sweeps.engines import CONNECT_TIMEOUT, check_client
 from hybrid.sweeps.space import apply
-from hybrid.validate import shown
+from hybrid.validate import checked_keywords, shown
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class Tuning:
     """What :func:`tune` found, and how the experiment's own gains compare.
@@ -205,6 +206,7 @@ class Tuning:
         return "\n".join(lines)
 
 
+@checked_keywords
 def tune(exp, objective, scenarios=None, *, distributions=None, samples: int = 16, held_out=None,
          aggregate: str = "mean", budget: int = 200, seed: int = 0, gains=None, bounds=None,
          min_gain_margin_db: float = 6.0, min_delay_margin_samples: int = 0, popsize: int | None = None,

@@ -59,7 +59,7 @@ from hybrid.sweeps.store import (
     _write_part,
     metric_names,
 )
-from hybrid.validate import check_size, count_text, shown
+from hybrid.validate import check_size, checked_keywords, count_text, shown
 
 __all__ = ["CONNECT_TIMEOUT", "DISTRIBUTIONS", "ENGINES", "LANES", "MOST_PAIRS", "OUTPUTS", "PARAMETER_BYTES", "PART",
            "RUN_BYTES", "SCHEMES", "STATUSES", "WORKER_BYTES", "LogUniform", "Normal", "Uniform", "apply",
@@ -67,6 +67,7 @@ __all__ = ["CONNECT_TIMEOUT", "DISTRIBUTIONS", "ENGINES", "LANES", "MOST_PAIRS",
            "parameters_mapping", "points", "run_points", "sweep"]
 
 
+@checked_keywords
 def sweep(base, parameters: Mapping, *, samples: int | None = None, seed: int = 0, engine: str = "local",
           client=None, out=None, workers: int | None = None, chunk_size: int | None = None, csv: bool = False,
           force: bool = False, progress: bool = False, connect_timeout: float = CONNECT_TIMEOUT):
