@@ -98,8 +98,8 @@ class Kernel:
     guards: tuple[Guard, ...] = ()
     integrator: str | None = None
     lanes: bool = False
-    #: print the C statements in an order that keeps few values alive (:mod:`.schedule`)
-    reordered: bool = False
+    #: print the C statements in an order that keeps few values alive (:mod:`.schedule`); False: CasADi's
+    reordered: bool = True
 
     def sizes(self) -> dict[str, int]:
         return {a.name: a.size for a in (*self.inputs, *self.outputs)}

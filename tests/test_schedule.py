@@ -12,10 +12,9 @@ import subprocess
 import casadi as ca
 import numpy as np
 import pytest
-from hybrid.codegen import schedule
+from hybrid.codegen import schedule, templates
 from hybrid.codegen.casadi_backend import kernel_sources
 from hybrid.codegen.kernel import Arg, Kernel
-from hybrid.codegen.templates import FOLDER
 
 
 def kernel(reordered: bool) -> Kernel:
@@ -62,7 +61,7 @@ def test_the_same_numbers_as_casadis_order_and_evaluation(tmp_path, rng):
         code, table = kernel_sources([kernel(reordered)], "t")
         name, size = table["k"]
         source = tmp_path / f"k{reordered:d}.c"
-        source.write_text("#include <math.h>\n" + (FOLDER / "hybrid_sincos.c.j2").read_text() + code
+        source.write_text("#include <math.h>\n" + templates.render("hybrid_sincos.c.j2") + code
                           + f"\nvoid run(const double *x, double *y) {{ const double *arg[1] = {{x}};"
                           f" double *res[1] = {{y}}; double w[{size} + 1]; {name}(arg, res, 0, w, 0); }}\n")
         library = tmp_path / f"k{reordered:d}.so"
