@@ -1,6 +1,7 @@
 """The benchmark command: it runs and reports every entry, its targets are marked by the numbers given,
 ``--only`` picks groups, and the helpers it measures with do what they say (timings are never asserted)."""
 
+import json
 import os
 import platform
 import re
@@ -13,7 +14,7 @@ from hybrid.codegen import casadi_backend, census, controller_step, lanes, spati
 from hybrid.codegen.kernel import Arg, Kernel
 
 from hybrid import bench
-from hybrid.bench import bound, eigen_race, harness, peak, pinocchio_codegen, robots, runs, standalone, targets
+from hybrid.bench import bound, eigen_race, harness, parts, peak, pinocchio_codegen, robots, runs, standalone, targets
 from hybrid.bench.groups import benchmark_groups, select_groups
 from hybrid.bench.report import format_table
 from hybrid.cli.main import main
@@ -310,3 +311,31 @@ def test_bench_only_reports_the_lanes_against_their_bound(capsys):
     for row, name in zip(rows, names):
         value = float(row[len(name):].split()[0].replace(",", ""))
         assert np.isfinite(value) and value > 0
+
+
+def test_bench_only_reports_the_frame_on_a_part_and_counts_its_instructions(tmp_path):
+    """The parts group alone gives its four rows; the frame on a part, where valgrind is installed, with
+    callgrind's instructions a call: more than the sphere's (the part's expansion precedes its frame), its
+    frame's fewer than its whole; a program whose loop calls a function of 100 additions counts 100 more a call
+    than one of none."""
+    out = tmp_path / "parts.json"
+    assert main(["bench", "--quick", "--only", "parts:", "--json", str(out)]) == 0
+    rows = {r["name"]: r for r in json.loads(out.read_text())["results"]}
+    assert set(rows) == {targets.PART_FIT, targets.PART_FRAME, targets.PART_SAMPLE, targets.PART_RUN}
+    frame = rows[targets.PART_FRAME]
+    assert frame["median"] > 0 and frame["of_formula"] > 0 and "rounds taking turns" in frame["ratio"]
+    if not pinocchio_codegen.can_count():
+        pytest.skip("valgrind's callgrind is not installed")
+    assert frame["sphere_instructions"] < frame["instructions"] and 0 < frame["frame_instructions"] < frame[
+        "instructions"]
+    unit = tmp_path / "unit.c"
+    counts = {}
+    for adds in (0, 100):
+        unit.write_text("double f(double x) {\n" + "    x = x + 1e-3;\n" * adds + "    return x;\n}\n")
+        source = ("#include <stdlib.h>\n#include <stdio.h>\ndouble f(double);\nint main(int argc, char **argv) {\n"
+                  "    long i, n = atol(argv[1]);\n    double s = 0.0;\n    for (i = 0; i < n; ++i) s = f(s);\n"
+                  '    printf("%g\\n", s);\n    return 0;\n}\n')
+        counts[adds] = parts.instructions(source, unit, (), (), ("main", "f"), calls=1000)
+    assert counts[100]["f"] - counts[0]["f"] == pytest.approx(100, abs=1)
+    # main's printf, once over the calls, prints another number
+    assert counts[100]["main"] - counts[0]["main"] == pytest.approx(100, abs=5)

@@ -160,6 +160,48 @@ def test_the_generated_evaluator_equals_numpy(mesh_sphere, rng):
     assert np.isnan(part.parameters_at(CENTRE)).all()  # the centre: beyond the band
 
 
+def test_the_evaluator_gives_the_same_numbers_on_vectors_and_without(mesh_sphere, rng, tmp_path):
+    """hybrid_part.h built on this machine's vectors, on SSE2's (pairs) and as plain C (HYBRID_PART_PLAIN_C, not
+    optimised), each strict C99: the same status and numbers to the bit as the runtime's build, at points on the
+    band, beyond it, off the grid and not finite."""
+    import ctypes
+    import shutil
+    import subprocess
+
+    from hybrid.native import loader
+
+    if shutil.which("gcc") is None:
+        pytest.skip("needs gcc")
+    _, part = mesh_sphere
+    grid, coefficients = (np.ascontiguousarray(a, float) for a in part.data())
+    n = rng.normal(size=(3000, 3))
+    points = CENTRE + rng.uniform(0.0, 0.4, (3000, 1)) * n / np.linalg.norm(n, axis=1, keepdims=True)
+    points[:3] = [np.nan, 0.0, 0.0], [0.0, np.inf, 0.0], [0.5, 0.0, 0.35]
+    module = loader.part_evaluator()
+    runtime, runtime_status = np.zeros((len(points), 13)), np.zeros(len(points), np.int32)
+    for i, p in enumerate(points):
+        runtime_status[i] = module.lib.hybrid_part_expansion_entry(
+            *(module.ffi.from_buffer("double[]", a) for a in (grid, coefficients, np.ascontiguousarray(p), runtime[i])))
+    assert 500 < np.sum(runtime_status == 0) < len(points) - 500  # many points on the band, many not
+    source = tmp_path / "each.c"
+    source.write_text('#include "hybrid_part.h"\nvoid each(const double *g, const double *c, const double *p, '
+                      'double *out, int *status, int n) {\n    int i;\n    for (i = 0; i < n; ++i) '
+                      'status[i] = hybrid_part_expansion(g, c, p + 3 * i, out + 13 * i);\n}\n')
+    pointer = ctypes.POINTER(ctypes.c_double)
+    for name, flags in {"native": ["-O3", "-march=native"], "sse2": ["-O2"],
+                        "plain": ["-O0", "-DHYBRID_PART_PLAIN_C"]}.items():
+        library = tmp_path / f"{name}.so"
+        done = subprocess.run(["gcc", "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", *flags, "-shared",
+                               "-fPIC", f"-I{loader.source_dir()}", str(source), "-o", str(library), "-lm"],
+                              capture_output=True, text=True)
+        assert done.returncode == 0 and not done.stderr, done.stderr
+        out, status = np.zeros((len(points), 13)), np.zeros(len(points), np.int32)
+        ctypes.CDLL(str(library)).each(*(a.ctypes.data_as(pointer) for a in (grid, coefficients, points, out)),
+                                       status.ctypes.data_as(ctypes.POINTER(ctypes.c_int)), ctypes.c_int(len(points)))
+        np.testing.assert_array_equal(status, runtime_status, err_msg=name)
+        np.testing.assert_array_equal(out.view(np.uint64), runtime.view(np.uint64), err_msg=name)
+
+
 def test_the_ur5_on_a_mesh_runs_as_on_the_formula(mesh_sphere):
     """The UR5 tracing the sphere, then the same run on the sphere's mesh: the normal force's RMS error within 5 %
     of the formula's run, the tip's path alike."""

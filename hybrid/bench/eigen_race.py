@@ -198,12 +198,12 @@ class EigenRace:
             if counted.returncode != 0:
                 return {}
             annotate = [shutil.which("callgrind_annotate"), "--threshold=100", str(profile)]
-            inclusive = subprocess.run([*annotate[:1], "--inclusive=yes", *annotate[1:]], capture_output=True,
-                                       text=True, check=True).stdout
+            report_inclusive = subprocess.run([*annotate[:1], "--inclusive=yes", *annotate[1:]],
+                                              capture_output=True, text=True, check=True).stdout
             exclusive = subprocess.run(annotate, capture_output=True, text=True, check=True).stdout
-        counts = {"total": _inclusive(inclusive, "timed") / calls,
+        counts = {"total": inclusive(report_inclusive, "timed") / calls,
                   "libm": sum(count for count, _, where in _rows(exclusive) if "libm" in where) / calls}
-        for count, function, _ in _rows(inclusive):
+        for count, function, _ in _rows(report_inclusive):
             part = re.search(r"\bhand::(\w+)", function)
             if part and part[1] in PARTS:
                 counts[part[1]] = counts.get(part[1], 0.0) + count / calls
@@ -223,7 +223,7 @@ def _rows(report: str):
             yield int(found[1].replace(",", "")), found[2], found[3] or ""
 
 
-def _inclusive(report: str, function: str) -> float:
+def inclusive(report: str, function: str) -> float:
     """The instructions of ``function`` (a name, or a C++ function's name before its arguments) and its
     callees."""
     return sum(count for count, name, _ in _rows(report) if re.match(rf"(\w+ )?{function}\b", name))
@@ -275,7 +275,7 @@ def race(robot, urdf: Path, tip: str, spec, counted: bool = False) -> EigenRace:
         objects = []
         for c_file in ours:
             objects.append(folder / f"{c_file.stem}.o")
-            _compile([cc, *c_flags, *includes], c_file, objects[-1], counted, "compiling our generated C")
+            compile_object([cc, *c_flags, *includes], c_file, objects[-1], counted, "compiling our generated C")
         pc.run_tool([pc.cxx(), str(hand), *map(str, objects), "-o", str(program),
                      "-Wl," + ",".join(f"--wrap={f}" for f in WRAPPED), "-lm"], "linking the Pinocchio + Eigen race")
         write_checksum(record, digest(program.read_bytes()))
@@ -303,8 +303,8 @@ def _hand_object(source: str, headers: list[Path], includes: list[str], counted:
     def make():
         (folder / "race.cpp").write_text(source)
         # minutes: Pinocchio's algorithms are templates compiled here
-        _compile([cpp, *flags, *includes], folder / "race.cpp", obj, counted,
-                 "compiling the law written on Pinocchio + Eigen")
+        compile_object([cpp, *flags, *includes], folder / "race.cpp", obj, counted,
+                       "compiling the law written on Pinocchio + Eigen")
         write_checksum(record, digest(obj.read_bytes()))
 
     once(folder, lambda: library_intact(obj, record), make)
@@ -315,7 +315,7 @@ def _hand_object(source: str, headers: list[Path], includes: list[str], counted:
 _MOVQ = re.compile(r"^(\s*)(vmovq\s+%xmm\d+,\s*%xmm\d+\s*)$", re.M)
 
 
-def _compile(command: list[str], source: Path, obj: Path, counted: bool, what: str) -> None:
+def compile_object(command: list[str], source: Path, obj: Path, counted: bool, what: str) -> None:
     """``source`` compiled to the object ``obj`` by ``command`` (the compiler and its flags). For ``counted``
     through its assembly, each register-to-register ``vmovq`` given the three-byte VEX prefix: the
     assembler otherwise encodes it by its store form where the source is xmm8-15, which valgrind 3.19
