@@ -239,3 +239,38 @@ def test_a_poor_fit_is_warned_of_with_its_error_and_the_fix(name):
                 else f"{fit.normal_angle_median_deg:.3g} degrees")
     assert measured in message
     assert math.isfinite(fit.distance_rms_m)
+
+
+# ------------------------------------------------------------------------------------ the facets' corner normals
+
+def test_corner_normals_are_their_definition_and_a_fan_costs_its_pairs_not_a_table():
+    """Each corner's normal is the area-weighted mean of the normals of the facets at its vertex within the crease
+    angle of its own, computed here corner by corner (a cylinder: its caps' centres fans of 300 facets, its rims
+    creases of 90 degrees). A uv sphere's poles are fans of 100 facets: the memory goes with the facets at each
+    vertex squared (70 MB here), not with the corners times the largest fan (1.2 GB; a 210,000-facet uv sphere's
+    fit took 15 GB)."""
+    import tracemalloc
+
+    from hybrid.geometry.meshes import CREASE_DEG, corner_normals, face_areas, face_normals
+
+    mesh = trimesh.creation.cylinder(0.1, 0.2, sections=300)
+    v, f = np.asarray(mesh.vertices), np.asarray(mesh.faces)
+    normals, areas = face_normals(v, f), face_areas(v, f)
+    want = np.empty((len(f), 3, 3))
+    for i, face in enumerate(f):
+        for k, vertex in enumerate(face):
+            at = np.flatnonzero((f == vertex).any(axis=1))
+            near = at[normals[at] @ normals[i] >= math.cos(math.radians(CREASE_DEG))]
+            mean = areas[near] @ normals[near]
+            want[i, k] = mean / np.linalg.norm(mean)
+    np.testing.assert_allclose(corner_normals(v, f), want, atol=1e-12)
+    assert np.abs(want[:, :, 2]).max() == pytest.approx(1.0) and np.abs(want[:, :, 2]).min() < 1e-12  # creases kept
+    mesh = trimesh.creation.uv_sphere(0.15, count=[100, 100])
+    v, f = np.asarray(mesh.vertices), np.asarray(mesh.faces)
+    tracemalloc.start()
+    try:
+        corner_normals(v, f)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert peak < 0.3e9

@@ -24,6 +24,8 @@ from hybrid.validate import shown
 #: facets meeting at a corner within this angle [deg] share their normal there (a smooth part's tessellation);
 #: beyond it (a machined edge) each keeps its own
 CREASE_DEG = 30.0
+#: the (corner, facet) pairs :func:`corner_normals` weighs at once (about 100 bytes each)
+PAIRS_AT_ONCE = 1 << 20
 #: the Phong tessellation's shape factor (its authors': 3/4)
 PHONG_SHAPE = 0.75
 #: the largest and the smallest part [m] (its bounding box's diagonal) a robot cell holds
@@ -116,23 +118,29 @@ def corner_normals(v: np.ndarray, f: np.ndarray, crease_deg: float = CREASE_DEG)
     """The normal at each facet's corners (F x 3 x 3): the area-weighted mean of the normals of the facets at
     that vertex within ``crease_deg`` of the facet's own."""
     normals, areas = face_normals(v, f), face_areas(v, f)
-    corner_vertex = f.ravel()
-    corner_face = np.repeat(np.arange(len(f)), 3)
-    # the facets at each vertex, as a padded table (V x most facets at a vertex)
-    order = np.argsort(corner_vertex, kind="stable")
+    corner_vertex = f.ravel()  # corner 3 i + k is facet i's k-th
+    # the facets at each vertex, listed vertex by vertex: those at vertex u are at_vertex[starts[u]:][:counts[u]]
+    at_vertex = np.argsort(corner_vertex, kind="stable") // 3
     counts = np.bincount(corner_vertex, minlength=len(v))
-    starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
-    width = int(counts.max())
-    table = np.full((len(v), width), -1, np.int64)
-    slot = np.arange(len(order)) - np.repeat(starts, counts)
-    table[corner_vertex[order], slot] = corner_face[order]
-    around = table[corner_vertex]  # 3F x width: the facets at each corner's vertex
-    valid = around >= 0
-    around_n = normals[np.where(valid, around, 0)]
-    own = normals[corner_face]
-    near = valid & (np.einsum("cwk,ck->cw", around_n, own) >= math.cos(math.radians(crease_deg)))
-    weight = np.where(near, areas[np.where(valid, around, 0)], 0.0)
-    blended = np.einsum("cw,cwk->ck", weight, around_n)
+    starts = np.cumsum(counts) - counts
+    # each corner weighs each facet at its vertex: the counts squared summed, pairs (not the corners times the
+    # most facets at a vertex, which a fan of hundreds of facets makes gigabytes), a bounded number at once
+    pairs = counts[corner_vertex]
+    ends = np.cumsum(pairs)
+    threshold = math.cos(math.radians(crease_deg))
+    blended = np.empty((len(corner_vertex), 3))
+    first = 0
+    while first < len(corner_vertex):
+        last = max(first + 1, int(np.searchsorted(ends, ends[first] - pairs[first] + PAIRS_AT_ONCE, "right")))
+        each = pairs[first:last]
+        corner = np.repeat(np.arange(last - first), each)
+        slot = np.arange(len(corner)) - np.repeat(np.cumsum(each) - each, each)
+        facet = at_vertex[starts[corner_vertex[first:last]][corner] + slot]
+        near = np.einsum("ck,ck->c", normals[facet], normals[(first + corner) // 3]) >= threshold
+        weight = np.where(near, areas[facet], 0.0)
+        for k in range(3):
+            blended[first:last, k] = np.bincount(corner, weight * normals[facet, k], last - first)
+        first = last
     blended /= np.linalg.norm(blended, axis=1, keepdims=True)
     return blended.reshape(len(f), 3, 3)
 
