@@ -508,3 +508,19 @@ def test_a_point_off_the_part_is_refused_by_everything_that_reads_the_part(torus
         hybrid.simulate(hybrid.tracing_experiment(surface=torus, duration=0.05, start_point=tuple(far)))
     assert torus.project(far) is None
     assert np.isnan(torus.parameters_at(far)).all()
+
+
+def test_a_file_whose_reader_is_missing_names_the_package(tmp_path, monkeypatch):
+    """A format trimesh reads through another package (COLLADA's .dae: pycollada) where that package is missing: the
+    refusal names the package to install (trimesh's own words), not only that the file is not a mesh."""
+    box = trimesh.creation.box(extents=(0.1, 0.1, 0.1))
+    box.export(tmp_path / "part.stl")
+
+    def without_reader(*args, **kwargs):
+        raise ImportError("missing `pip install pycollada`")
+
+    monkeypatch.setattr(trimesh, "load", without_reader)
+    with pytest.raises(hybrid.HybridError, match=r"part.stl needs a package .*pip install pycollada.*install it"):
+        MeshSurface.from_file(tmp_path / "part.stl", spacing=0.01)
+    monkeypatch.undo()
+    assert len(MeshSurface.from_file(tmp_path / "part.stl", spacing=0.01).faces) == 12

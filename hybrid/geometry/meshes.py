@@ -198,6 +198,9 @@ def read_mesh(path) -> tuple[np.ndarray, np.ndarray]:
         raise HybridError("reading a mesh file needs trimesh: pip install 'hybrid-decoupling[parts]'") from None
     try:
         mesh = trimesh.load(path, force="mesh", process=True)
+    except ImportError as exc:  # a format whose reader trimesh takes from another package (COLLADA: pycollada)
+        raise HybridError(f"reading {path.name} needs a package trimesh did not find ({str(exc).splitlines()[0]}); "
+                          "install it, or give the part as an STL, OBJ or PLY file") from None
     except Exception as exc:  # noqa: BLE001 - any reader's failure is the file's problem
         raise HybridError(f"{path.name} is not a mesh trimesh can read ({type(exc).__name__}: "
                           f"{str(exc).splitlines()[0] if str(exc) else ''}); give an STL, OBJ or PLY file") from None
