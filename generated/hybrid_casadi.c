@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: cd0a4b922e4085143f3ee35be37571ed5c220ea5b4a232ffd8d4248cdc26d9fc */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 4e9d07fdb44a6387ec599240c61b3c7124d300eb0154c3d99420e2a2d9415def */
 /* hybrid_casadi: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
    Emitted by the casadi backend of hybrid's codegen (SymPy 1.14.0, CasADi 3.8.2), generator version 5.
    Compile: cc -std=c99 -O2 -c hybrid_casadi.c (link with -lm). */
@@ -1918,9 +1918,14 @@ static void plant_outputs_circle_core(const double *x, const double *arm, const 
 #include "hybrid_casadi.h"
 
 static int all_finite(const double *v, int n) {
-    int i, finite = 1;
-    for (i = 0; i < n; ++i) finite &= isfinite(v[i]) != 0;
-    return finite;
+    int i;
+    unsigned long long exponents_full = 0;
+    union { double x; unsigned long long bits; } u;
+    for (i = 0; i < n; ++i) {
+        u.x = v[i];
+        exponents_full += (u.bits & 0x7ff0000000000000ULL) == 0x7ff0000000000000ULL;
+    }
+    return exponents_full == 0;
 }
 
 #if defined(__GNUC__)

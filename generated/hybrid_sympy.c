@@ -1,4 +1,4 @@
-/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: acda4bae774d11a31985598ef918622fdc88a57ab236f1cdedc6eb26361aa34b */
+/* hybrid generated file: do not edit; change codegen/ and run `python -m hybrid regenerate`. body-sha256: 6af10fde2e10db59557bcf7c31bf661d06904737ad4dc079331df44d3f6a82fb */
 /* hybrid_sympy: hybrid force/velocity control kernels for a planar 2-link arm, derived by codegen/model.py.
    Emitted by the sympy backend of hybrid's codegen (SymPy 1.14.0), generator version 5.
    Compile: cc -std=c99 -O2 -c hybrid_sympy.c (link with -lm). */
@@ -699,9 +699,14 @@ static void plant_outputs_circle_core(const double *x, const double *arm, const 
 #include "hybrid_sympy.h"
 
 static int all_finite(const double *v, int n) {
-    int i, finite = 1;
-    for (i = 0; i < n; ++i) finite &= isfinite(v[i]) != 0;
-    return finite;
+    int i;
+    unsigned long long exponents_full = 0;
+    union { double x; unsigned long long bits; } u;
+    for (i = 0; i < n; ++i) {
+        u.x = v[i];
+        exponents_full += (u.bits & 0x7ff0000000000000ULL) == 0x7ff0000000000000ULL;
+    }
+    return exponents_full == 0;
 }
 
 #if defined(__GNUC__)
