@@ -98,8 +98,10 @@ class Kernel:
     guards: tuple[Guard, ...] = ()
     integrator: str | None = None
     lanes: bool = False
-    #: print the C statements in an order that keeps few values alive (:mod:`.schedule`); False: CasADi's
-    reordered: bool = True
+    #: print the C statements in an order that keeps few values alive (:mod:`.schedule`), where it measured
+    #: faster (the RNEA, the CRBA, the redundant law, the controller's steps); False: CasADi's, which the lanes'
+    #: printer follows too (what the Python runner's plant evaluates keeps it: the compiled loops round alike)
+    reordered: bool = False
 
     def sizes(self) -> dict[str, int]:
         return {a.name: a.size for a in (*self.inputs, *self.outputs)}

@@ -17,6 +17,7 @@ from test_standalone_controller import CController
 
 import hybrid
 from hybrid.control import controller as controller_module
+from hybrid.control import controller_binding
 from hybrid.errors import HybridError, NonFiniteError, SingularConfigurationError, TaskFrameError
 from hybrid.native import units
 from hybrid.native.binding import status_error
@@ -94,7 +95,8 @@ def test_a_declaration_the_unit_does_not_match_is_refused(monkeypatch, change):
     ctrl = hybrid.paper_experiment(controller="task").build_controller()
     x = hybrid.paper_experiment().initial_state()
     ctrl(0.0, x[:2], x[2:4], np.zeros(2))  # the unit is compiled and matches
-    monkeypatch.setattr(controller_module, "CONTROLLER_STEP", _perturbed(**change))
+    for module in (controller_module, controller_binding):  # the controller and the step's binding
+        monkeypatch.setattr(module, "CONTROLLER_STEP", _perturbed(**change))
     try:
         perturbed = hybrid.paper_experiment(controller="task").build_controller()
     except (HybridError, RuntimeError) as exc:  # the controller's own layout check may see it first
