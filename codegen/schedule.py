@@ -16,6 +16,12 @@ early, their latency overlaps the rest), then the one reading the most recent va
 gets its own name; the operations are CasADi's, unchanged: the results are the same but where the
 compiler fuses a product and a sum into one multiply-add, which it may pair otherwise in the new
 order (a rounding).
+
+One rewrite comes first (:func:`_selects`): CasADi writes a choice ``if_else(c, a, b)`` as
+``(c?a:0) + (!c?b:0)``, a negation, two selects and a sum, where C has the one select ``(c?a:b)``. Its
+value is the same for every ``c`` (a NaN or any non-zero ``c`` is true in both), ``a`` and ``b`` (the
+unchosen side, even infinite or NaN, is not added), but for the sign of a zero: ``-0`` chosen stays
+``-0`` where the sum made it ``+0``.
 """
 
 from __future__ import annotations
@@ -46,7 +52,7 @@ def reorder(function: str) -> str:
     last = max(i for i, line in enumerate(lines) if _STATEMENT.match(line))
     if any(not _STATEMENT.match(line) for line in lines[first:last + 1]):
         return function
-    nodes = _parse(lines[first:last + 1])
+    nodes = _selects(_parse(lines[first:last + 1]))
     order = _schedule(nodes)
     width = len(str(len(nodes)))
     name = {k: f"a{k:0{width}d}" for k, node in enumerate(nodes) if not node[0].startswith("res")}
@@ -74,6 +80,47 @@ def _parse(statements: list[str]) -> list[tuple[str, str, list[int]]]:
         if target.startswith("a"):
             defined[target] = len(nodes) - 1
     return nodes
+
+
+#: ``(c?a:0)``, ``(!c)`` and a sum of two operands, as :func:`_parse` writes them
+_HALF, _NOT = re.compile(r"\(@(\d+)@\?@(\d+)@:0\)"), re.compile(r"\(!@(\d+)@\)")
+_SUM = re.compile(r"\(@(\d+)@\+@(\d+)@\)")
+
+
+def _selects(nodes: list[tuple[str, str, list[int]]]) -> list[tuple[str, str, list[int]]]:
+    """``nodes`` with each ``(c?a:0) + (!c?b:0)`` (the two halves read by the sum alone) written ``(c?a:b)``
+    (module docstring), without the statements then read by none, renumbered."""
+    readers = [0] * len(nodes)
+    for _, _, operands in nodes:
+        for j in operands:
+            readers[j] += 1
+    nodes = list(nodes)
+    for k, (target, expression, _) in enumerate(nodes):
+        total = _SUM.fullmatch(expression)
+        halves = [int(i) for i in total.groups()] if total else []
+        parts = [_HALF.fullmatch(nodes[i][1]) for i in halves]
+        if not halves or not all(parts) or any(readers[i] != 1 for i in halves):
+            continue
+        (c, a), (d, b) = ((int(x) for x in part.groups()) for part in parts)
+        if _negates(nodes[d][1], c):
+            nodes[k] = (target, f"(@{c}@?@{a}@:@{b}@)", sorted({c, a, b}))
+        elif _negates(nodes[c][1], d):
+            nodes[k] = (target, f"(@{d}@?@{b}@:@{a}@)", sorted({d, a, b}))
+    kept = [False] * len(nodes)
+    for k in reversed(range(len(nodes))):
+        kept[k] = kept[k] or nodes[k][0].startswith("res")
+        if kept[k]:
+            for j in nodes[k][2]:
+                kept[j] = True
+    number = {k: i for i, k in enumerate(k for k in range(len(nodes)) if kept[k])}
+    return [(target, _OPERAND.sub(lambda m: f"@{number[int(m.group(1))]}@", expression),
+             [number[j] for j in operands]) for k, (target, expression, operands) in enumerate(nodes) if kept[k]]
+
+
+def _negates(expression: str, c: int) -> bool:
+    """Whether ``expression`` is ``(!c)``."""
+    negation = _NOT.fullmatch(expression)
+    return negation is not None and int(negation.group(1)) == c
 
 
 def _schedule(nodes: list[tuple[str, str, list[int]]]) -> list[int]:
