@@ -16,7 +16,10 @@ initial state ``x0`` that ``<prefix>_reset`` restores. Its functions:
   penetration, the surface's normal force: :data:`codegen.closed_loop.SIGNALS`);
 - ``<prefix>_outputs(&p, y)``: the plant's whole output record at ``x``;
 - ``<prefix>_metric_name(i)``: the name of a run's metric ``i``, as :mod:`hybrid.spec.metrics` declares them
-  (their indices, bands and window are the header's macros): what a closed loop in C reports.
+  (their indices, bands and window are the header's macros): what a closed loop in C reports. The struct's
+  ``references`` are the force and speed steps they are taken against (:func:`hybrid.metrics`' ``force_step``
+  and ``speed_step``: the experiment's references); a run along a path task adds the path's metrics
+  (:data:`hybrid.spec.metrics.PATH_METRICS`) after the peak torques, with their tolerances as macros.
 
 On a part (:mod:`hybrid.spec.part`) the surface is not a field: ``<prefix>_set_part(&p, data, count)`` points
 the struct at the part's data file's numbers (the caller's, checked by ``hybrid_part.h``'s ``hybrid_part_data``),
@@ -33,7 +36,18 @@ import json
 import casadi as ca
 
 from hybrid.spec.interfaces import STATUS_CODES
-from hybrid.spec.metrics import METRICS, SETTLING_BAND, STEADY_WINDOW_S, TOUCH_BAND, metric_names
+from hybrid.spec.metrics import (
+    METRICS,
+    PATH_AHEAD_M,
+    PATH_BEHIND_M,
+    PATH_END_TOL_M,
+    PATH_METRICS,
+    PATH_SETTLED_BAND,
+    SETTLING_BAND,
+    STEADY_WINDOW_S,
+    TOUCH_BAND,
+    metric_names,
+)
 from hybrid.spec.stamp import MANIFEST_STAMP, json_body_hash, stamp
 
 from .closed_loop import SIGNALS
@@ -66,6 +80,8 @@ _DOC = {"robot": "the true arm's inertial parameters, joint friction and gravity
         "arm": "the planar arm's lengths, masses, inertias, viscosities",
         "plant": "the sensor and the contact", "surface": "the surface's parameters",
         "e": "the task frame's reference direction (the output record's task axes)"}
+#: the metrics' references, in the struct's ``references`` (hybrid.metrics' force_step, then speed_step)
+REFERENCES = ("force_before", "force_after", "force_at", "speed_before", "speed_after", "speed_at")
 
 
 def _whole(value: float, scale: int) -> int:
@@ -76,21 +92,35 @@ def _whole(value: float, scale: int) -> int:
     return k
 
 
+def _references(prefix: str, numbers) -> dict:
+    """The struct's ``references`` field with its numbers (:data:`REFERENCES`)."""
+    numbers = [_number(v) for v in numbers]
+    if len(numbers) != len(REFERENCES):
+        raise ValueError(f"references takes {len(REFERENCES)} values, got {len(numbers)}")
+    doc = ("the references the run's metrics are taken against (hybrid.metrics' force_step and speed_step: the "
+           "experiment's force_reference and speed_reference; along a path task its force at the start and 0): "
+           "each step's value before, after, and its time")
+    return {**array_field(prefix, "references", len(REFERENCES), ("N", "N", "s", "m/s", "m/s", "s"), REFERENCES,
+                          doc), "numbers": numbers}
+
+
 def build_standalone_plant(rhs: Kernel, outputs: Kernel, force_columns: tuple[str, ...], prefix: str, what: str,
-                           info: dict, values: dict, backend: str = "casadi", part: bool = False) -> Unit:
+                           info: dict, values: dict, backend: str = "casadi", part: bool = False,
+                           path: bool = False) -> Unit:
     """C source, header and manifest of the standalone plant ``prefix`` (also its files' stem).
 
     ``rhs`` is the state derivative ``x' = f(x, tau, ...)``, ``outputs`` the record ``y(x, ...)``,
     ``force_columns`` the record's columns of the sensor's force on the robot (base axes).
     ``values`` holds what ``_init`` writes: every parameter input by name (a sequence of numbers),
-    ``x0`` (the initial state), ``h``, ``steps_per_sample``, ``sample_time`` and ``duration``.
+    ``x0`` (the initial state), ``h``, ``steps_per_sample``, ``sample_time``, ``duration`` and
+    ``references`` (the metrics' force and speed steps, :data:`REFERENCES`).
     ``backend``: how the kernels are printed (``"sympy"`` or ``"casadi"``; CasADi expressions always
     take CasADi).
 
     ``part``: the surface is a part's (its ``surface`` input the quadric's parameters, the state's ``s_x``,
     ``s_y``, ``s_z`` the sensor tip): the C includes the evaluator's header (``hybrid_part.h``, shipped
     beside it) and expands the part about the tip where the kernels read the surface; ``values`` has no
-    ``surface``.
+    ``surface``. ``path``: the experiment follows a path task, whose metrics the header declares too.
     """
     x, tau = rhs.inputs[0], rhs.inputs[1]
     y = outputs.outputs[0]
@@ -145,8 +175,14 @@ def build_standalone_plant(rhs: Kernel, outputs: Kernel, force_columns: tuple[st
     records = [{"macros": index_names(prefix, "signals", SIGNALS)},
                {"macros": index_names(prefix, "y", y.names)}]
     # the bands and the window as whole numbers (a header's macros are integers for every tool that reads it)
-    context |= {"metrics": METRICS, "metric_names": metric_names(nq), "settling_band": _whole(SETTLING_BAND, 100),
-                "touch_band": _whole(TOUCH_BAND, 100), "steady_window_ms": _whole(STEADY_WINDOW_S, 1000)}
+    names = (*metric_names(nq), *(m.name for m in PATH_METRICS if path))
+    context |= {"metrics": METRICS, "metric_names": names, "settling_band": _whole(SETTLING_BAND, 100),
+                "touch_band": _whole(TOUCH_BAND, 100), "steady_window_ms": _whole(STEADY_WINDOW_S, 1000),
+                "path_metrics": PATH_METRICS if path else (),
+                "path_tolerances": {"end_tol_um": _whole(PATH_END_TOL_M, 10 ** 6),
+                                    "settled_percent": _whole(PATH_SETTLED_BAND, 100),
+                                    "behind_mm": _whole(PATH_BEHIND_M, 1000), "ahead_mm": _whole(PATH_AHEAD_M, 1000)},
+                "references": _references(prefix, values["references"])}
     header = render("standalone_plant.h.j2", **context, signals=SIGNALS, records=records,
                     x=array_field(prefix, "x", nx, x.unit, x.names, "the state"))
     source = render("standalone_plant.c.j2", **context, tools=tools, cores=cores, packed=packed, rhs=rhs,
@@ -167,9 +203,10 @@ def build_standalone_plant(rhs: Kernel, outputs: Kernel, force_columns: tuple[st
             "scalars": {f["name"]: [s["name"] for s in f["scalars"]] for f in packed},
             "functions": [f"{prefix}_{f}" for f in ("init", "reset", *(("set_part",) if part else ()), "wrench",
                                                      "advance", "signals", "outputs", "status_name", "metric_name")],
-            "metrics": list(metric_names(nq)),
+            "metrics": list(names),
             "configuration": {**{a.name: [float(v) for v in values[a.name]] for a in held}, "x0": x0,
                               "h": float(values["h"]), "steps_per_sample": per,
-                              "sample_time": float(values["sample_time"]), "duration": float(values["duration"])}}
+                              "sample_time": float(values["sample_time"]), "duration": float(values["duration"]),
+                              "references": [float(v) for v in values["references"]]}}
     data["body_sha256"] = json_body_hash(data)
     return Unit(prefix, stamp(source), stamp(header), json.dumps(data, indent=1) + "\n")

@@ -6,6 +6,10 @@ The example is generated with the command its README gives, built with ``-std=c9
 torque) is compared with ``hybrid.simulate(hybrid.tracing_experiment(duration=3.0))``'s: each state
 column relative to the column's largest magnitude over the run, each torque relative to its joint's
 peak, to 1e-9 (about 1e-11 is measured); its printed metrics with ``result.metrics`` to 1e-9 relative.
+So is a run along a path task (a raster on a plane, pressed, released at its end and left along the
+normal): its metrics are taken against the experiment's references, not the controller's steps (zero
+there: the follower gives the references), and the path's (``path_*``) are printed too, each equal to
+``result.metrics``' to 1e-9 relative (3e-10 measured, a joint's peak torque of 1e-7 N m; the path's 1e-12).
 The plant alone (compiled, loaded with cffi) gives the Python plant's start state, sensor wrench,
 record and RK4 steps, for the UR5, the Panda and the planar arm's closed form.
 """
@@ -26,6 +30,7 @@ import pytest
 
 import hybrid
 from hybrid.spec.interfaces import STATUS_CODES
+from hybrid.spec.metrics import PATH_METRICS
 
 EXAMPLE = Path(__file__).resolve().parent.parent / "examples" / "closed_loop_c"
 STRICT = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]
@@ -102,6 +107,68 @@ def test_example_records_per_sample_as_csv_and_runs_shorter(example, reference):
     short = hybrid.simulate(hybrid.tracing_experiment(duration=0.5)).metrics
     assert_metrics(metrics, short)
     assert math.isnan(metrics["force_deviation_after_speed_step_N"])  # the speed steps at 1.5 s
+
+
+def build_example(exp, folder: Path) -> Path:
+    """``exp`` generated as ``ur5`` into ``folder`` beside the example's loop, built strictly: the folder."""
+    exp.generate(folder, "ur5")
+    shutil.copy(EXAMPLE / "main.c", folder / "main.c")
+    done = subprocess.run(["gcc", *STRICT, "-O2", "main.c", "ur5_controller.c", "ur5_plant.c", "-lm", "-o",
+                           "closed_loop"], cwd=folder, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    return folder
+
+
+def raster_experiment(surface, corner, **settings) -> hybrid.Experiment:
+    """Two passes of 4 cm, 1 cm apart, across ``surface`` from ``corner`` at 0.1 m/s and 10 N; the force released
+    at the end and the tip left 3 mm along the normal, then held there."""
+    raster = hybrid.RasterPath(surface, corner, (1.0, 0.0, 0.0), pass_length=0.04, spacing=0.01, passes=2)
+    task = hybrid.PathTask(raster, speed=0.1, force=10.0, retreat_distance=0.003)
+    return hybrid.tracing_experiment(surface=surface, path_task=task, duration=2.0, **settings)
+
+
+def run_against_simulate(folder: Path, exp) -> tuple:
+    """``hybrid.simulate(exp)``, and the example built in ``folder`` for ``exp`` run with its record: the Python
+    run, the printed metrics and the record (a row per RK4 step, as many as the run's)."""
+    reference = hybrid.simulate(exp)
+    metrics = run(folder, "--record", "run.bin")
+    nx, nq = len(reference.state[0]), len(reference.tau[0])
+    record = np.fromfile(folder / "run.bin").reshape(-1, 1 + nx + nq)
+    assert record.shape[0] == len(reference.t)
+    return reference, metrics, record
+
+
+def check_path_run(folder: Path, exp) -> dict:
+    """The example built in ``folder`` for ``exp`` (a path task), run: its record is ``hybrid.simulate``'s, every
+    metric it prints (the path's too) ``result.metrics``'; the printed metrics."""
+    reference, metrics, record = run_against_simulate(folder, exp)
+    nx = len(reference.state[0])
+    dx, _ = worst(record, reference, slice(None))
+    # the torques relative to the largest joint's peak (the last joint's, about 1e-7 N m here, is rounding's);
+    # the state to 1e-8 of each column's scale: where the tip stops at the path's end, the friction's tanh about
+    # zero speed amplifies rounding in the sensor tip's velocity (1e-9 of its scale measured on the sphere's
+    # mesh, 1e-11 on the plane; every other column within 2e-12)
+    acting = np.vstack([reference.tau[1:], reference.tau[-1:]])
+    dtau = np.max(np.abs(record[:, 1 + nx:] - acting)) / np.max(np.abs(reference.tau))
+    assert dx < 1e-8 and dtau < 1e-9, (dx, dtau)
+    assert {m.name for m in PATH_METRICS} <= set(metrics)
+    assert_metrics(metrics, reference.metrics)
+    # the run did what the metrics say: the raster completed within the run, its force released, the tip 3 mm off
+    # the surface at the end; the force error over the last 0.2 s is then the task's whole force, as
+    # hybrid.metrics takes it (the experiment's reference, not the controller's steps, 0 on a path task)
+    task = exp.path_task
+    assert metrics["path_travelled_m"] == pytest.approx(task.path.length, abs=1e-9)
+    assert 0 < metrics["path_time_s"] < exp.duration and metrics["path_end_peak_force_N"] < 1.05 * task.force
+    assert metrics["path_error_rms_m"] < 1e-3 and metrics["path_contact_losses"] == 0
+    assert exp.force_reference.after == task.force
+    assert metrics["steady_state_force_error_N"] == pytest.approx(task.force, abs=0.5)
+    return metrics
+
+
+def test_example_along_a_path_task_equals_simulate(tmp_path):
+    plane = hybrid.Plane((0.4, 0.0, 0.1), (0.0, 0.6, 0.8))
+    exp = raster_experiment(plane, plane.project(np.array([0.45, -0.05, 0.1])))
+    check_path_run(build_example(exp, tmp_path), exp)
 
 
 def test_example_refuses_bad_arguments(example):

@@ -3,7 +3,8 @@
 
    Per control sample k (t = k * sample_time): the sensor's reading from the state, one controller step,
    then steps_per_sample RK4 steps of the plant with the torque held. The metrics are those of
-   hybrid.metrics, over every RK4 step's row (t = i * h, the state at the step's start and the last one).
+   hybrid.metrics, over every RK4 step's row (t = i * h, the state at the step's start and the last one),
+   taken against the references the plant declares (the experiment's force and speed steps).
 
    Build (after `python -m hybrid generate --experiment tracing --out . --name ur5`):
        cc -std=c99 -O2 main.c ur5_controller.c ur5_plant.c -lm -o closed_loop
@@ -16,7 +17,12 @@
    An experiment on a part (hybrid.MeshSurface, written by Experiment.generate with its data file
    ur5_part.bin) builds the same way: the controller and the plant then include hybrid_part.h, and the
    loop reads the part's data file (ur5_part.bin, or --part FILE: another part, the same build) and
-   gives its numbers to both. */
+   gives its numbers to both.
+
+   An experiment with a path task (hybrid.PathTask: a raster or any path across the surface or a part) builds
+   the same way: the controller then includes hybrid_path.h, the plant declares the path's metrics, and the
+   loop prints them too, from the controller's follower replayed at each control sample on the arm tip and
+   the contact force (hybrid.metrics' path_*). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -40,16 +46,17 @@ static double step_value(double before, double after, double at, double t) {
     return t < at ? before : after;
 }
 
-static void metrics_start(metrics *m, const ur5_controller *c, long rows, double h) {
+static void metrics_start(metrics *m, const ur5_plant *p, long rows, double h) {
     int j;
     memset(m, 0, sizeof *m);
-    /* the references the controller tracks: the force on the normal, the speed along t1 */
-    m->fb = c->steps[UR5_STEPS_BEFORE_N];
-    m->fa = c->steps[UR5_STEPS_AFTER_N];
-    m->fat = c->steps[UR5_STEPS_AT_N];
-    m->vb = c->steps[UR5_STEPS_BEFORE_T1];
-    m->va = c->steps[UR5_STEPS_AFTER_T1];
-    m->vat = c->steps[UR5_STEPS_AT_T1];
+    /* the references the metrics are taken against (the experiment's force step on the normal and speed step
+       along t1, which a path task's controller does not hold: its follower gives its references) */
+    m->fb = p->references[UR5_PLANT_REFERENCES_FORCE_BEFORE];
+    m->fa = p->references[UR5_PLANT_REFERENCES_FORCE_AFTER];
+    m->fat = p->references[UR5_PLANT_REFERENCES_FORCE_AT];
+    m->vb = p->references[UR5_PLANT_REFERENCES_SPEED_BEFORE];
+    m->va = p->references[UR5_PLANT_REFERENCES_SPEED_AFTER];
+    m->vat = p->references[UR5_PLANT_REFERENCES_SPEED_AT];
     m->rows = rows;
     m->end = (double)(rows - 1) * h;
     m->first_f = m->last_out_f = m->last_f = -1;
@@ -116,10 +123,10 @@ static void metrics_torque(metrics *m, const double *tau) {
     }
 }
 
-/* the run's metrics, in the order and under the names the plant's header declares (hybrid.metrics') */
-static void metrics_print(const metrics *m, double h) {
+/* the run's metrics into out, at the indices the plant's header declares (hybrid.metrics' order; NaN where
+   they are not taken) */
+static void metrics_values(const metrics *m, double h, double *out) {
     const double step = m->fa - m->fb, sgn = step >= 0 ? 1.0 : -1.0;
-    double out[UR5_PLANT_NMETRICS];
     int j;
     for (j = 0; j < UR5_PLANT_NMETRICS; ++j) out[j] = NAN;
     if (m->n_f > 0 && m->fa != m->fb) {
@@ -147,8 +154,124 @@ static void metrics_print(const metrics *m, double h) {
             : m->t_last_out == m->t_last ? NAN : (double)(m->t_last_out + 1) * h - (double)m->touch * h;
     }
     for (j = 0; j < UR5_PLANT_NQ; ++j) out[UR5_PLANT_METRIC_PEAK_TORQUE + j] = m->tau[j];
-    for (j = 0; j < UR5_PLANT_NMETRICS; ++j) printf("%s %.17g\n", ur5_plant_metric_name(j), out[j]);
 }
+
+#ifdef HYBRID_PATH_H
+/* A path task's metrics (hybrid.metrics' path_*), sample by sample: the controller's follower (its table and
+   settings) replayed at each control sample on the arm tip and the contact force of the plant's record, as
+   hybrid.metrics replays it, and the sensor tip's distance from the path. */
+typedef struct {
+    const double *table, *settings;
+    double state[HYBRID_PATH_STATE_SIZE];
+    long k, n_on, n_press, n_follow, losses;
+    int settled, touching;
+    double err2, err_max, t_done, travelled, f2, v2, end_peak;
+} path_metrics;
+
+static void path_start(path_metrics *m, const ur5_controller *c) {
+    memset(m, 0, sizeof *m);
+    m->table = c->path_table;
+    m->settings = c->path_settings;
+    m->t_done = NAN;
+    m->err_max = m->travelled = m->end_peak = -INFINITY;
+}
+
+/* the first node at or past arc length s (numpy's searchsorted) */
+static long path_node(const double *table, long rows, double s) {
+    long lo = 0, hi = rows;
+    while (lo < hi) {
+        const long mid = lo + (hi - lo) / 2;
+        if (HYBRID_PATH_AT(table, mid, HYBRID_PATH_TABLE_S) < s) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo;
+}
+
+static const double path_identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+
+/* the sensor tip's distance from the path: the follower from the node nearest it within the metrics' window
+   about the arm tip's progress s (NaN where the follower refuses it) */
+static double path_error_at(const path_metrics *m, const double *tip, double s) {
+    const long rows = (long)m->settings[HYBRID_PATH_SETTINGS_ROWS];
+    long lo = path_node(m->table, rows, s - UR5_PLANT_PATH_BEHIND_MM / 1000.0);
+    long hi = path_node(m->table, rows, s + UR5_PLANT_PATH_AHEAD_MM / 1000.0), i, near;
+    double best = INFINITY, state[HYBRID_PATH_STATE_SIZE] = {0}, out[HYBRID_PATH_OUT_SIZE];
+    const double none[3] = {0, 0, 0};
+    if (lo > rows - 1) lo = rows - 1;
+    if (hi < lo + 1) hi = lo + 1;
+    for (near = i = lo; i < hi; ++i) {
+        const double dx = HYBRID_PATH_AT(m->table, i, HYBRID_PATH_TABLE_P_X) - tip[0];
+        const double dy = HYBRID_PATH_AT(m->table, i, HYBRID_PATH_TABLE_P_Y) - tip[1];
+        const double dz = HYBRID_PATH_AT(m->table, i, HYBRID_PATH_TABLE_P_Z) - tip[2];
+        const double d = sqrt(dx * dx + dy * dy + dz * dz);
+        if (d < best) {
+            best = d;
+            near = i;
+        }
+    }
+    state[HYBRID_PATH_STATE_S] = HYBRID_PATH_AT(m->table, near, HYBRID_PATH_TABLE_S);
+    state[HYBRID_PATH_STATE_ROW] = (double)(near < rows - 2 ? near : rows - 2);
+    state[HYBRID_PATH_STATE_STARTED] = 1.0;
+    state[HYBRID_PATH_STATE_PHASE] = HYBRID_PATH_FOLLOW;
+    if (hybrid_path_follow(m->table, m->settings, state, tip, path_identity, none, out) != HYBRID_PATH_OK) return NAN;
+    return out[HYBRID_PATH_OUT_PATH_ERROR];
+}
+
+/* a control sample at time t: y the plant's record there, x its state; HYBRID_PATH_OK or the follower's refusal */
+static int path_sample(path_metrics *m, double t, const double *y, const double *x) {
+    const double *r = y + UR5_PLANT_Y_R_X, *force = y + UR5_PLANT_Y_FC_X, *sd = x + UR5_PLANT_X_SD_X;
+    double out[HYBRID_PATH_OUT_SIZE], normal, tip_speed, error;
+    int j, phase, follow, touching;
+    const int status = hybrid_path_follow(m->table, m->settings, m->state, r, path_identity, force, out);
+    if (status != HYBRID_PATH_OK) return status;
+    for (j = 0; j < HYBRID_PATH_STATE_SIZE; ++j) m->state[j] = out[j];
+    phase = (int)out[HYBRID_PATH_OUT_PHASE];
+    follow = phase == HYBRID_PATH_FOLLOW;
+    normal = force[0] * out[HYBRID_PATH_OUT_N_X] + force[1] * out[HYBRID_PATH_OUT_N_Y]
+             + force[2] * out[HYBRID_PATH_OUT_N_Z];
+    tip_speed = sd[0] * out[HYBRID_PATH_OUT_T_X] + sd[1] * out[HYBRID_PATH_OUT_T_Y] + sd[2] * out[HYBRID_PATH_OUT_T_Z];
+    touching = normal > 0.0;
+    /* on the path (following it, or releasing the force at its end): the sensor tip's distance from it */
+    if (follow || phase == HYBRID_PATH_UNLOAD) {
+        error = path_error_at(m, y + UR5_PLANT_Y_S_X, out[HYBRID_PATH_OUT_S]);
+        m->err2 += error * error;
+        if (error > m->err_max || isnan(error)) m->err_max = error;
+        ++m->n_on;
+    }
+    if (out[HYBRID_PATH_OUT_TRAVELLED] > m->travelled) m->travelled = out[HYBRID_PATH_OUT_TRAVELLED];
+    if (isnan(m->t_done) && out[HYBRID_PATH_OUT_TRAVELLED] >= m->settings[HYBRID_PATH_SETTINGS_DISTANCE]
+        - UR5_PLANT_PATH_END_TOL_UM / 1e6) m->t_done = t;
+    if (follow) {
+        /* the force's error once it came within the band of its reference (the touch's transient is the first
+           touch's metrics'), the speed's along the path's tangent, a contact lost while following */
+        const double fe = normal - out[HYBRID_PATH_OUT_NORMAL_REFERENCE], ve = tip_speed - out[HYBRID_PATH_OUT_SPEED];
+        if (fabs(fe) <= UR5_PLANT_PATH_SETTLED_PERCENT / 100.0 * fabs(out[HYBRID_PATH_OUT_NORMAL_REFERENCE]))
+            m->settled = 1;
+        if (m->settled) {
+            m->f2 += fe * fe;
+            ++m->n_press;
+        }
+        m->v2 += ve * ve;
+        ++m->n_follow;
+        if (m->k > 0 && m->touching && !touching) ++m->losses;
+    }
+    if (phase >= HYBRID_PATH_UNLOAD && normal > m->end_peak) m->end_peak = normal;
+    m->touching = touching;
+    ++m->k;
+    return HYBRID_PATH_OK;
+}
+
+static void path_values(const path_metrics *m, double *out) {
+    out[UR5_PLANT_METRIC_PATH_ERROR_RMS_M] = m->n_on ? sqrt(m->err2 / (double)m->n_on) : NAN;
+    out[UR5_PLANT_METRIC_PATH_ERROR_MAX_M] = m->n_on ? m->err_max : NAN;
+    out[UR5_PLANT_METRIC_PATH_TIME_S] = m->t_done;
+    out[UR5_PLANT_METRIC_PATH_TRAVELLED_M] = m->travelled;
+    out[UR5_PLANT_METRIC_PATH_FORCE_RMS_ERROR_N] = m->n_press ? sqrt(m->f2 / (double)m->n_press) : NAN;
+    out[UR5_PLANT_METRIC_PATH_SPEED_RMS_ERROR_M_PER_S] = m->n_follow ? sqrt(m->v2 / (double)m->n_follow) : NAN;
+    out[UR5_PLANT_METRIC_PATH_CONTACT_LOSSES] = (double)m->losses;
+    out[UR5_PLANT_METRIC_PATH_END_PEAK_FORCE_N] = m->end_peak > -INFINITY ? m->end_peak : NAN;
+}
+#endif
 
 /* one row of the record: t, x, the torque acting from t on */
 static int write_row(FILE *out, int csv, double t, const double *x, const double *tau) {
@@ -195,6 +318,11 @@ int main(int argc, char **argv) {
     ur5_plant p;
     metrics m;
     double wrench[6], s[UR5_PLANT_NSIGNALS], tau[UR5_PLANT_NQ], prev[UR5_PLANT_NQ], duration;
+    double values[UR5_PLANT_NMETRICS];
+#ifdef HYBRID_PATH_H
+    path_metrics path_m;
+    double y[UR5_PLANT_NY];
+#endif
     const char *path = NULL;
 #ifdef HYBRID_PART_H
     const char *part_path = "ur5_part.bin";
@@ -251,7 +379,10 @@ int main(int argc, char **argv) {
             return 1;
         }
     }
-    metrics_start(&m, &c, n_samples * p.steps_per_sample + 1, p.h);
+    metrics_start(&m, &p, n_samples * p.steps_per_sample + 1, p.h);
+#ifdef HYBRID_PATH_H
+    path_start(&path_m, &c);
+#endif
     for (j = 0; j < UR5_PLANT_NQ; ++j) prev[j] = 0.0;
     for (k = 0; k < n_samples; ++k) {
         /* the sensor's reading at the sample instant, one control sample */
@@ -263,6 +394,16 @@ int main(int argc, char **argv) {
             return 1;
         }
         metrics_torque(&m, tau);
+#ifdef HYBRID_PATH_H
+        /* the path's metrics at the sample instant, from the plant's record there */
+        ur5_plant_outputs(&p, y);
+        status = path_sample(&path_m, (double)k * p.sample_time, y, p.x);
+        if (status != HYBRID_PATH_OK) {
+            fprintf(stderr, "the path's metrics stopped at t = %.4f s: the follower refused the sample (%d)\n",
+                    (double)k * p.sample_time, status);
+            return 1;
+        }
+#endif
         /* the torque held over the sample: the plant's RK4 steps, each row's signals at the step's start */
         for (i = 0; i < p.steps_per_sample; ++i, ++row) {
             ur5_plant_signals(&p, s);
@@ -291,13 +432,20 @@ int main(int argc, char **argv) {
         perror(path);
         return 1;
     }
+    printf("# the UR5");
 #ifdef HYBRID_PART_H
     free(part);
-    printf("# the UR5 on the part of %s: ", part_path);
-#else
-    printf("# the UR5 on the sphere: ");
+    printf(" on the part of %s", part_path);
 #endif
-    printf("%ld samples of %g s,\n# each %d RK4 steps of %g s\n", n_samples, p.sample_time, p.steps_per_sample, p.h);
-    metrics_print(&m, p.h);
+#ifdef HYBRID_PATH_H
+    printf(" along its path task");
+#endif
+    printf(": %ld samples of %g s,\n# each %d RK4 steps of %g s\n", n_samples, p.sample_time, p.steps_per_sample, p.h);
+    /* the run's metrics, in the order and under the names the plant's header declares (hybrid.metrics') */
+    metrics_values(&m, p.h, values);
+#ifdef HYBRID_PATH_H
+    path_values(&path_m, values);
+#endif
+    for (j = 0; j < UR5_PLANT_NMETRICS; ++j) printf("%s %.17g\n", ur5_plant_metric_name(j), values[j]);
     return 0;
 }

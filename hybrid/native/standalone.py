@@ -147,7 +147,11 @@ def plant_files(exp, prefix: str, x0, data: dict[str, bytes] | None = None) -> d
               if not (part and k == "surface")}
     values |= {"x0": [float(v) for v in x0], "h": float(exp.integration_step),
                "steps_per_sample": int(exp.steps_per_sample), "sample_time": float(exp.sample_time),
-               "duration": float(exp.duration)}
+               "duration": float(exp.duration),
+               # the metrics' references: hybrid.metrics takes the experiment's steps (a path task's force at its
+               # start and speed 0, not the follower's references the controller adds to its steps)
+               "references": [float(v) for step in (exp.force_reference, exp.speed_reference)
+                              for v in (step.before, step.after, step.at)]}
     robot, surface = exp.robot, (exp.section or exp.surface).kind
     settings = exp.to_dict()
     if part:
@@ -170,7 +174,8 @@ def plant_files(exp, prefix: str, x0, data: dict[str, bytes] | None = None) -> d
         rhs, outputs, force = plant.kernels(api)
         what = (f"the plant of an experiment: the {robot.n}-joint arm '{robot.name}', its force sensor and penalty "
                 f"contact with friction on a {surface}, advanced by RK4 with the torque held")
-        files = api.build_standalone_plant(rhs, outputs, force, prefix, what, info, values, backend, part).files
+        files = api.build_standalone_plant(rhs, outputs, force, prefix, what, info, values, backend, part,
+                                           exp.path_task is not None).files
         if part:  # the part evaluator's header, beside the plant that includes it
             files[api.PART_HEADER] = api.shared_headers()[api.PART_HEADER]
         return files

@@ -12,15 +12,14 @@ from __future__ import annotations
 import numpy as np
 
 from hybrid.control.path_task import PathFollower
-from hybrid.spec.metrics import PATH_METRICS
+from hybrid.spec.metrics import PATH_AHEAD_M, PATH_BEHIND_M, PATH_END_TOL_M, PATH_METRICS, PATH_SETTLED_BAND
 from hybrid.spec.path_follow import PATH_OUTPUT, PATH_PHASES, PATH_SETTINGS, PATH_STATE
 
-#: how near [m] the path's end the sensor tip completes it (it trails the arm tip the follower steers by the
-#: sensor's deflection under friction, a fraction of a millimetre)
-END_TOL = 1e-3
+#: how near [m] the path's end the sensor tip completes it (declared with the metrics, which the C reads too)
+END_TOL = PATH_END_TOL_M
 FOLLOW, UNLOAD = PATH_PHASES.index("follow"), PATH_PHASES.index("unload")
 #: the force error's window starts once the force is within this fraction of its reference
-SETTLED = 0.05
+SETTLED = PATH_SETTLED_BAND
 
 
 def follower_of(res) -> PathFollower:
@@ -79,7 +78,7 @@ def sampled_series(exp, names, rows: np.ndarray, states: np.ndarray, nq: int,
 
 _SEEDED = [PATH_STATE.index(k) for k in ("s", "row", "started", "phase")]
 #: where the sensor tip's nearest point is looked for: this far [m] behind the arm tip's progress and ahead of it
-BEHIND, AHEAD = 0.05, 0.01
+BEHIND, AHEAD = PATH_BEHIND_M, PATH_AHEAD_M
 
 
 def _sensor_tip_errors(follower: PathFollower, tips: np.ndarray, s_arm: np.ndarray) -> np.ndarray:

@@ -95,6 +95,15 @@ TOUCH_BAND = 0.05
 SETTLING_BAND = 0.02
 #: the steady state's window: the run's last this many seconds
 STEADY_WINDOW_S = 0.2
+#: how near [m] the path's end the sensor tip completes it (it trails the arm tip the follower steers by the
+#: sensor's deflection under friction, a fraction of a millimetre): ``path_time_s``
+PATH_END_TOL_M = 1e-3
+#: the path's force error is taken once the force is within this fraction of its reference:
+#: ``path_force_rms_error_N``
+PATH_SETTLED_BAND = 0.05
+#: where the sensor tip's nearest point on the path is looked for: this far [m] behind the arm tip's progress
+#: and ahead of it (``path_error_rms_m``, ``path_error_max_m``)
+PATH_BEHIND_M, PATH_AHEAD_M = 0.05, 0.01
 
 
 def metric_names(nq: int) -> tuple[str, ...]:
