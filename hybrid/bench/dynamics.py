@@ -15,6 +15,7 @@ import statistics
 import numpy as np
 
 from hybrid.bench import pinocchio_codegen
+from hybrid.bench.harness import paired_ratio
 from hybrid.bench.robots import comparable_urdf
 from hybrid.bench.targets import dynamics_row
 from hybrid.errors import HybridError
@@ -73,7 +74,8 @@ def dynamics_benchmarks(name: str, urdf_name: str, tip: str, rep: int, quick: bo
     if max(worst.values()) > AGREEMENT:
         raise HybridError(f"{name}: our dynamics and Pinocchio's generated code differ by more than {AGREEMENT:g} "
                           "(relative): " + ", ".join(f"{f} ({side}) {d:.1e}" for (f, side), d in worst.items()))
-    times = race.time(20_000 if quick else 200_000, rep)
+    # short rounds, many: the ratios are the medians of the rounds' (harness.paired_ratio)
+    times = race.time(20_000 if quick else 40_000, rep if quick else 5 * rep)
     counted = pinocchio_codegen.race(robot, urdf, tip, counted=True).instructions() if (
         pinocchio_codegen.can_count()) else {}
     for function in pinocchio_codegen.FUNCTIONS:
@@ -84,10 +86,11 @@ def dynamics_benchmarks(name: str, urdf_name: str, tip: str, rep: int, quick: bo
             add(f"{name}: {dynamics_row(function, side)}", median[side], agreement=worst[function, side],
                 instructions=count[side], ratio=f"the same as Pinocchio's to {worst[function, side]:.0e}{ins}")
         theirs = median["pinocchio"]
+        of_ours, of_constant = (paired_ratio(times[function, "pinocchio"], times[function, side])
+                                for side in ("ours", "constant"))
         ins = "" if None in count.values() else (f"; {count['pinocchio']:,.0f} instructions a call "
                                                  f"({count['pinocchio'] / count['ours']:.2f}x ours, "
                                                  f"{count['pinocchio'] / count['constant']:.2f}x the constant model's)")
-        add(f"{name}: {dynamics_row(function, 'pinocchio')}", theirs, of_ours=theirs / median["ours"],
-            of_constant=theirs / median["constant"], instructions=count["pinocchio"],
-            ratio=f"{theirs / median['ours']:.2f}x the time of ours, {theirs / median['constant']:.2f}x the constant "
-                  f"model's{ins}")
+        add(f"{name}: {dynamics_row(function, 'pinocchio')}", theirs, of_ours=of_ours,
+            of_constant=of_constant, instructions=count["pinocchio"],
+            ratio=f"{of_ours:.2f}x the time of ours, {of_constant:.2f}x the constant model's{ins}")

@@ -22,6 +22,7 @@ import numpy as np
 
 from hybrid.bench import eigen_race
 from hybrid.bench import pinocchio_codegen as pc
+from hybrid.bench.harness import paired_ratio
 from hybrid.bench.robots import SPHERE, comparable_urdf
 from hybrid.bench.targets import EIGEN_FORMS, eigen_row
 from hybrid.control.controller import Controller
@@ -158,7 +159,8 @@ def eigen_law_benchmarks(name: str, urdf_name: str, tip: str, rep: int, quick: b
     heap = race.allocations(config, state)
     if any(heap.values()):
         raise HybridError(f"{name}: the law written on Pinocchio + Eigen takes heap memory in its calls: {heap}")
-    times = race.time(config, state, 20_000 if quick else 200_000, rep)
+    # short rounds, many: the ratio is the median of the rounds' (harness.paired_ratio)
+    times = race.time(config, state, 20_000 if quick else 40_000, rep if quick else 5 * rep)
     counted = eigen_race.race(robot, urdf, tip, sphere.spec(), counted=True) if pc.can_count() else None
 
     def count(function: str) -> dict[str, float]:
@@ -169,7 +171,7 @@ def eigen_law_benchmarks(name: str, urdf_name: str, tip: str, rep: int, quick: b
         median = {side: statistics.median(times[function, side]) for side in race.sides}
         counts = {side: count(f"{function}_{side}") for side in race.sides}
         best = min(race.sides[1:], key=median.get)
-        speedup = median[best] / median["ours"]
+        speedup = paired_ratio(times[function, best], times[function, "ours"])
         ours = counts["ours"].get("total")
         ins = "" if ours is None else (
             f"; {ours:,.0f} instructions a call (libm {counts['ours']['libm']:,.0f}; alone: the robot's terms "
@@ -182,6 +184,7 @@ def eigen_law_benchmarks(name: str, urdf_name: str, tip: str, rep: int, quick: b
             theirs = counts[side].get("total")
             ins = "" if theirs is None or ours is None else (
                 f"; {theirs:,.0f} instructions a call ({theirs / ours:.2f}x ours): {_parts_text(counts[side])}")
-            add(f"{name}: {eigen_row(function, side)}", median[side], of_ours=median[side] / median["ours"],
+            of_ours = paired_ratio(times[function, side], times[function, "ours"])
+            add(f"{name}: {eigen_row(function, side)}", median[side], of_ours=of_ours,
                 instructions=theirs, parts=counts[side] or None, heap=heap[function, side],
-                ratio=f"{median[side] / median['ours']:.2f}x the time of ours, no heap memory{ins}")
+                ratio=f"{of_ours:.2f}x the time of ours, no heap memory{ins}")

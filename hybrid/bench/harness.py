@@ -37,6 +37,21 @@ def median_ns(fn, number: int, repeat: int) -> float:
     return statistics.median(times)
 
 
+def paired_ratio(slow: list[float], fast: list[float]) -> float:
+    """The median of ``slow[k] / fast[k]`` over rounds ``k``, each round timing both sides back to back: a
+    machine whose speed drifts between rounds (another program on the shared cores) moves both sides of a
+    round alike, where the ratio of the two sides' medians can pair a slow round with a fast one.
+
+    Examples
+    --------
+    >>> paired_ratio([10.0, 30.0, 12.0], [2.0, 5.0, 3.0])
+    5.0
+    """
+    if len(slow) != len(fast) or not slow:
+        raise ValueError("paired_ratio needs as many rounds of each side, at least one")
+    return statistics.median(s / f for s, f in zip(slow, fast))
+
+
 def on_one_core(measure: Callable[[], float]) -> float | None:
     """``measure()`` with the calling thread pinned to one of its CPUs, its CPUs given back after (a
     batch splits over the CPUs the caller may run on: here it runs on the caller's thread alone); None
