@@ -9,7 +9,9 @@ peak, to 1e-9 (about 1e-11 is measured); its printed metrics with ``result.metri
 So is a run along a path task (a raster on a plane, pressed, released at its end and left along the
 normal): its metrics are taken against the experiment's references, not the controller's steps (zero
 there: the follower gives the references), and the path's (``path_*``) are printed too, each equal to
-``result.metrics``' to 1e-9 relative (3e-10 measured, a joint's peak torque of 1e-7 N m; the path's 1e-12).
+``result.metrics``' to 1e-9 relative (3e-10 measured, a joint's peak torque of 1e-7 N m; the path's 1e-12),
+and so along a closed path (Khatib's scheme), a spiral on a sphere the run ends on, and the Panda's raster
+across its pillar (2e-10 measured).
 The plant alone (compiled, loaded with cffi) gives the Python plant's start state, sensor wrench,
 record and RK4 steps, for the UR5, the Panda and the planar arm's closed form.
 """
@@ -67,7 +69,8 @@ def worst(record: np.ndarray, res, rows) -> tuple[float, float]:
     """The largest difference of the record's states and torques from the run's, each column relative to
     its scale (its largest magnitude over the run); the record's torque acts from its row's time on,
     the run's up to it."""
-    x, tau = record[:, 1:1 + NX], record[:, 1 + NX:]
+    nx = res.state.shape[1]  # the UR5's 18, the Panda's 20
+    x, tau = record[:, 1:1 + nx], record[:, 1 + nx:]
     np.testing.assert_array_equal(record[:, 0], res.t[rows])
     state_scale = np.max(np.abs(res.state), axis=0)
     dx = np.max(np.abs(x - res.state[rows]) / state_scale)
@@ -138,7 +141,7 @@ def run_against_simulate(folder: Path, exp) -> tuple:
     return reference, metrics, record
 
 
-def check_path_run(folder: Path, exp) -> dict:
+def matches_simulate(folder: Path, exp) -> dict:
     """The example built in ``folder`` for ``exp`` (a path task), run: its record is ``hybrid.simulate``'s, every
     metric it prints (the path's too) ``result.metrics``'; the printed metrics."""
     reference, metrics, record = run_against_simulate(folder, exp)
@@ -153,6 +156,13 @@ def check_path_run(folder: Path, exp) -> dict:
     assert dx < 1e-8 and dtau < 1e-9, (dx, dtau)
     assert {m.name for m in PATH_METRICS} <= set(metrics)
     assert_metrics(metrics, reference.metrics)
+    return metrics
+
+
+def check_path_run(folder: Path, exp) -> dict:
+    """:func:`matches_simulate`, and the raster completed within the run, its force released, the tip off the
+    surface at the end; the printed metrics."""
+    metrics = matches_simulate(folder, exp)
     # the run did what the metrics say: the raster completed within the run, its force released, the tip 3 mm off
     # the surface at the end; the force error over the last 0.2 s is then the task's whole force, as
     # hybrid.metrics takes it (the experiment's reference, not the controller's steps, 0 on a path task)
@@ -169,6 +179,53 @@ def test_example_along_a_path_task_equals_simulate(tmp_path):
     plane = hybrid.Plane((0.4, 0.0, 0.1), (0.0, 0.6, 0.8))
     exp = raster_experiment(plane, plane.project(np.array([0.45, -0.05, 0.1])))
     check_path_run(build_example(exp, tmp_path), exp)
+
+
+def closed_circle() -> hybrid.Experiment:
+    """A closed path, one lap of eight waypoints on a circle of 2 cm on the tilted plane, under Khatib's scheme."""
+    plane = hybrid.Plane((0.4, 0.0, 0.1), (0.0, 0.6, 0.8))
+    points = [plane.project(np.array([0.47 + 0.02 * math.cos(a), 0.02 * math.sin(a), 0.1]))
+              for a in np.linspace(0.0, 2 * math.pi, 8, endpoint=False)]
+    task = hybrid.PathTask(hybrid.WaypointPath(plane, points, closed=True), speed=0.1, force=10.0, laps=1.0,
+                           retreat_distance=0.003)
+    return hybrid.tracing_experiment(surface=plane, path_task=task, duration=2.0, controller="khatib")
+
+
+def spiral_cut_short() -> hybrid.Experiment:
+    """A spiral on the analytic sphere, the run ending (1 s) before the spiral (0.24 m at 8 cm/s) does."""
+    sphere = hybrid.Sphere((0.5, 0.0, 0.2), 0.15)
+    spiral = hybrid.SpiralPath(sphere, sphere.project(np.array([0.45, 0.0, 0.4])), 0.01, 1.5, start_radius=0.01)
+    task = hybrid.PathTask(spiral, speed=0.08, force=10.0, retreat_distance=0.003)
+    return hybrid.tracing_experiment(surface=sphere, path_task=task, duration=1.0)
+
+
+def panda_raster() -> hybrid.Experiment:
+    """The Panda (seven joints, its posture task) along a raster across its pillar, released and backed off."""
+    pillar = hybrid.Cylinder((0.67, 0.0, 0.0), (0.0, 0.0, 1.0), 0.25)
+    raster = hybrid.RasterPath(pillar, pillar.project(np.array([0.42, 0.0, 0.78])), (0.0, -1.0, 0.0),
+                               pass_length=0.03, spacing=0.01, passes=2)
+    task = hybrid.PathTask(raster, speed=0.05, force=10.0, retreat_distance=0.003)
+    return hybrid.panda_experiment(path_task=task, duration=2.0)
+
+
+OTHER_PATHS = {"a closed path, khatib": closed_circle, "a spiral on a sphere, cut short": spiral_cut_short,
+               "the Panda, a raster on a cylinder": panda_raster}
+
+
+@pytest.mark.parametrize("case", list(OTHER_PATHS))
+def test_example_along_other_path_tasks_equals_simulate(case, tmp_path):
+    """The raster's comparison on a closed path, a path the run ends on and another arm and surface: every
+    metric printed is ``simulate``'s, those of a path not finished (its time, its end's force) NaN alike."""
+    exp = OTHER_PATHS[case]()
+    metrics = matches_simulate(build_example(exp, tmp_path), exp)
+    task, length = exp.path_task, exp.path_task.path.length
+    finished = metrics["path_travelled_m"] >= length - 1e-3
+    assert finished == (case != "a spiral on a sphere, cut short")
+    assert math.isnan(metrics["path_time_s"]) != finished and math.isnan(metrics["path_end_peak_force_N"]) != finished
+    if finished:  # released at the end, and off the surface over the last 0.2 s
+        assert metrics["path_end_peak_force_N"] < 1.05 * task.force
+        assert metrics["steady_state_force_error_N"] == pytest.approx(task.force, abs=0.5)
+    assert metrics["path_error_rms_m"] < 1e-3 and metrics["path_contact_losses"] == 0
 
 
 def test_example_refuses_bad_arguments(example):
@@ -288,6 +345,9 @@ def test_generate_command_sets_and_refuses(tmp_path, capsys):
             (["--experiment", "paper", "--set", "KPf=1", "--set", "KPf=2"], "twice"),
             (["--experiment", "paper", "--set", "bogus=1"], "unknown setting"),
             (["--experiment", "tracing", "--set", "contact.bogus=1"], "unknown setting"),
+            # a path task is made in Python: neither a table nor text sets one
+            (["--experiment", "tracing", "--set", "path_task={speed = 0.1}"], "Experiment.generate"),
+            (["--experiment", "tracing", "--set", "path_task=raster"], "made in Python (hybrid.PathTask)"),
             (["--experiment", "paper", "--set", "KPf=4"], "--force")):
         assert main(["generate", *args, "--out", str(tmp_path), "--name", "pk"]) == 2, args
         assert message in capsys.readouterr().err, args

@@ -105,6 +105,11 @@ def test_one_experiment_type_refuses_mixed_dimensions():
         hybrid.tracing_experiment(surface=hybrid.Circle((0.5, 0.0), 0.2), start_point=(0.3, 0.0))
     with pytest.raises(hybrid.HybridError, match="no latitude circle"):
         hybrid.tracing_experiment(surface=hybrid.Plane((0.4, 0, 0.1), (0, 0, 1)), latitude=30.0)
+    # a path task runs its own path: a latitude (the followed path's circle) has nothing to set there
+    sphere = hybrid.Sphere((0.5, 0.0, 0.2), 0.15)
+    spiral = hybrid.SpiralPath(sphere, sphere.project(np.array([0.45, 0.0, 0.4])), 0.01, 1.0)
+    with pytest.raises(hybrid.HybridError, match="latitude = 45.0: a path_task runs its own path"):
+        hybrid.tracing_experiment(latitude=45.0, path_task=hybrid.PathTask(spiral))
 
 
 # ------------------------------------------------------- what a new surface, scheme or plant takes

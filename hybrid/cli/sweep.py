@@ -127,6 +127,10 @@ def _base(kind: str, settings: dict, where: str = "[base]"):
     steps = ("force_reference", "speed_reference", "F_d", "v_d")
     made = {}
     for key, value in settings.items():
+        if key == "path_task":  # a path on a surface, its profiles: Python objects, not a TOML value
+            raise HybridError(f"{where} path_task: a path task is made in Python (hybrid.PathTask), not given as a "
+                              "setting; run it with hybrid.simulate or hybrid.sweep, write its C with "
+                              "Experiment.generate")
         if isinstance(value, dict):
             typ = Step if key in steps else parts.get(key)
             if typ is None:

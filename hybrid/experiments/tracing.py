@@ -47,7 +47,8 @@ def tracing_experiment(**overrides) -> Experiment:
     Raises
     ------
     HybridError
-        An unknown or refused setting, or a ``latitude`` on a surface that is not a sphere.
+        An unknown or refused setting, or a ``latitude`` on a surface that is not a sphere or with a
+        ``path_task``.
 
     Examples
     --------
@@ -62,6 +63,8 @@ def tracing_experiment(**overrides) -> Experiment:
     """
     latitude = overrides.pop("latitude", None)
     surface = overrides.get("surface", Sphere(SPHERE_CENTER, SPHERE_RADIUS))
+    if latitude is not None and overrides.get("path_task") is not None:
+        raise HybridError(f"latitude = {latitude}: a path_task runs its own path; leave latitude out")
     if latitude is not None:  # else the path follows the surface (a sphere's: 60 degrees from the top)
         if not isinstance(surface, Sphere):
             raise HybridError(f"latitude = {latitude}: a {type(surface).__name__} has no latitude circle; give a "
