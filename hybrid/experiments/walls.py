@@ -65,9 +65,10 @@ def check_walls(exp) -> None:
     room = sound - sensor.mass * GRAVITY / contact.stiffness  # what the force's two deflections may take
     fixes = "a stiffer contact"
     if room > 0:
-        fixes = f"a force below {room / (1 / sensor.stiffness + 1 / contact.stiffness):.2g} N"
+        fixes = f"a force below {_rounded(room / (1 / sensor.stiffness + 1 / contact.stiffness), math.floor):g} N"
         if room > force / contact.stiffness:
-            fixes = f"a sensor stiffness >= {force / (room - force / contact.stiffness):.4g} N/m, " + fixes
+            stiffer = _rounded(force / (room - force / contact.stiffness), math.ceil)
+            fixes = f"a sensor stiffness >= {stiffer:g} N/m, " + fixes
     raise HybridError(
         f"a part's wall of {wall * 1e3:.3g} mm where the run reaches: the arm tip, the frame's point, would press "
         f"{depth * 1e3:.3g} mm in, past {sound * 1e3:.3g} mm ({SOUND_SHARE:g} of the half wall); "
@@ -75,3 +76,10 @@ def check_walls(exp) -> None:
         f"  the depth: {force:g} N over the sensor's {sensor.stiffness:g} N/m, and with the tip mass's weight over "
         f"the contact's {contact.stiffness:g} N/m; half the wall in, the fitted normal turns over and the force loop "
         "pushes the wrong way")
+
+
+def _rounded(x: float, way) -> float:
+    """``x`` (> 0) to three significant digits, rounded ``way`` (``math.floor`` or ``math.ceil``): a bound the
+    number shown keeps."""
+    unit = 10.0 ** (math.floor(math.log10(x)) - 2)
+    return way(x / unit) * unit
