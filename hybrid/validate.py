@@ -155,6 +155,8 @@ def unit_vector(owner: str, name: str, v) -> tuple[float, ...]:
 def _point(owner: str, name: str, p, dims: tuple[int, ...] = (2,)) -> tuple[float, ...]:
     """``p`` as a tuple of finite coordinates, of one of the lengths ``dims``."""
     what = " or ".join({2: "two numbers (x, y)", 3: "three numbers (x, y, z)"}[d] for d in dims)
+    if p is None:
+        raise HybridError(f"{owner}.{name} must be {what} in m, got None (it is missing): give the point")
     if isinstance(p, (str, bytes)):
         raise HybridError(f"{owner}.{name} must be {what} in m, got {shown(p)}")
     try:
@@ -162,7 +164,9 @@ def _point(owner: str, name: str, p, dims: tuple[int, ...] = (2,)) -> tuple[floa
     except (TypeError, ValueError, OverflowError):
         raise HybridError(f"{owner}.{name} must be {what} in m, got {shown(p, 80)}") from None
     if arr.ndim != 1 or arr.shape[0] not in dims:
-        raise HybridError(f"{owner}.{name} must be {what} in m, got shape {arr.shape}")
+        got = (f"{arr.shape[0]} coordinates" if arr.ndim == 1 else "a single number" if arr.ndim == 0
+               else f"an array of shape {arr.shape}")
+        raise HybridError(f"{owner}.{name} must be {what} in m, got {got}: {shown(p, 60)}")
     if not np.isfinite(arr).all():
         raise HybridError(f"{owner}.{name} = {shown(p)} is not finite; give finite coordinates")
     # + 0.0 makes -0.0 a 0.0: one place, one run (the runner's caches key on equal values)

@@ -285,7 +285,9 @@ def test_parts_of_every_kind_side_by_side_in_c_equal_their_python_runs(torus, bo
     each lane's run equals its Python run (states within 1e-8, metrics within 1e-6), the force held."""
     from hybrid.simulation import closed_loop
 
-    exps = [hybrid.tracing_experiment(surface=torus, frame_direction=(1.0, 0.0, 0.0), duration=0.6,
+    # (15 N on the torus: 20 N would press the arm tip 20 mm into its tube of 4 cm's radius, past half the way to
+    # its middle, which is refused)
+    exps = [hybrid.tracing_experiment(surface=torus, frame_direction=(1.0, 0.0, 0.0), duration=0.6, F_d=15.0,
                                       start_point=tuple(torus.project(CENTRE + (MAJOR, 0.0, MINOR + 0.005)))),
             hybrid.tracing_experiment(surface=bowl, frame_direction=(1.0, 0.0, 0.0), duration=0.6,
                                       start_point=tuple(bowl.project(BOWL_CENTRE + (0.03, 0.0, -0.14)))),

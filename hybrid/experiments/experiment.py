@@ -42,6 +42,7 @@ from hybrid.experiments.settings import (
     warn_redundancy,
 )
 from hybrid.experiments.start import check_seed
+from hybrid.experiments.walls import check_walls
 from hybrid.geometry.paths import Path
 from hybrid.geometry.surfaces import Surface
 from hybrid.geometry.task_axes import check_axes, frame_direction_of
@@ -57,8 +58,9 @@ from hybrid.validate import SINGULAR_TOL, _point, checked_keywords, shown
 #: the committed units that can run the closed-form plant and law (the same equations, two printers)
 BACKENDS = PRINTERS  # the closed form's units the plant and the law may take
 
-#: an experiment's physics: the controller's model error, the plant's sensor and contact. Of the
-#: experiment's checks only ``check_common_types``, ``check_sensing``, ``check_timing`` and ``check_stable`` read them
+#: an experiment's physics: the controller's model error, the plant's sensor and contact. Of the experiment's
+#: checks only ``check_common_types``, ``check_sensing``, ``check_timing``, ``check_walls`` and ``check_stable``
+#: read them
 #: (:meth:`Experiment.with_physics` runs those alone)
 PHYSICS = frozenset({"model_error", "viscous_compensation", "sensor", "contact"})
 
@@ -269,8 +271,8 @@ class Experiment(RunSettings, PathAndStart, metaclass=RenamedKeywords):
     step = renamed_attribute("step", "integration_step")
 
     def __post_init__(self):
-        # the checks that read PHYSICS are check_common_types, check_sensing, check_timing and check_stable: keep
-        # it so (with_physics runs them alone). check_stable, which judges the whole, comes last
+        # the checks that read PHYSICS are check_common_types, check_sensing, check_timing, check_walls and
+        # check_stable: keep it so (with_physics runs them alone). check_stable, which judges the whole, comes last
         task_references(self)
         check_common_types(self)
         if self.controller not in SCHEMES:
@@ -336,6 +338,7 @@ class Experiment(RunSettings, PathAndStart, metaclass=RenamedKeywords):
         self.fault_reaction.check_sampling(self.sample_time)
         if self.path_task is not None:
             self.path_task.check_sampling(self.sample_time)
+        check_walls(self)
         check_stable(self)
 
     def with_physics(self, **changes) -> Experiment:
@@ -370,6 +373,7 @@ class Experiment(RunSettings, PathAndStart, metaclass=RenamedKeywords):
         check_common_types(exp)  # in __post_init__'s order: the first refusal is the one it would raise
         check_sensing(exp)
         check_timing(exp)
+        check_walls(exp)
         check_stable(exp)
         return exp
 

@@ -24,6 +24,7 @@ import numpy as np
 
 from hybrid import files
 from hybrid.errors import HybridError
+from hybrid.geometry.clouds import check_spread, estimated_normals, sparsest
 from hybrid.geometry.meshes import (
     LARGEST_PART,
     SMALLEST_PART,
@@ -34,7 +35,9 @@ from hybrid.geometry.meshes import (
     read_mesh,
 )
 from hybrid.geometry.part_data import data_file
-from hybrid.geometry.part_fit import SMOOTHING, fit_signed_distance, kd_tree
+from hybrid.geometry.part_fit import OFFSET_STRIDE, SMOOTHING, fit_signed_distance, kd_tree
+from hybrid.geometry.part_walls import SOUND_SHARE, walls
+from hybrid.geometry.placement import placed
 from hybrid.geometry.surfaces import Surface, _unit_normal
 from hybrid.native import loader
 from hybrid.spec.part import PART_STATUSES
@@ -48,14 +51,15 @@ SAMPLES_PER_CELL = 2.0
 FEWEST_SAMPLES, MOST_SAMPLES = 2_000, 400_000
 #: the shortest spacing and band [m] a fit takes
 SHORTEST = 1e-4
-#: how far a transform's rotation may be from orthonormal (``|R^T R - I|``), in its numbers' machine epsilon,
-#: and at least (a rotation in single precision's digits, read as doubles)
-ROUNDING, ROUNDING_DOUBLE = 100, 1e-6
 #: a fit that follows the part poorly (warned, :class:`~hybrid.PartFitWarning`): the median point of the part
 #: farther from the smooth surface than this share of a cell, or the median normal more than this angle [deg] off.
 #: The tests' good fits keep within 0.1 of a cell and 2.4 degrees (the Panda's link at 5 mm, a noisy scan's
 #: estimated normals); a machined edge's or a cloud's rim's few points lie in the largest error, not the median
 POOR_DISTANCE_CELLS, POOR_ANGLE_DEG = 0.25, 4.0
+#: the most points of the part whose walls are measured (:mod:`hybrid.geometry.part_walls`), and how deep [bands]:
+#: a wall found that deep is up to twice as thick, and the arm tip (within the band) is refused no deeper than
+#: SOUND_SHARE of half a wall (a wall of 2 / SOUND_SHARE bands at most: twice as deep, for the far face's tilt)
+WALL_POINTS, WALL_BANDS = 50_000, 2.0 / SOUND_SHARE
 #: the Newton steps :meth:`PartSurface.project` takes at most
 PROJECTION_STEPS = 20
 #: how far from the part [m] its surface is defined by default (at least three cells): the arm tip reaches into
@@ -86,6 +90,11 @@ class PartFit:
         The typical point's distance [m] and normal's angle [deg] (their medians): a fit whose median distance
         exceeds :data:`POOR_DISTANCE_CELLS` of a cell, or whose median angle exceeds :data:`POOR_ANGLE_DEG`, is
         warned of (:class:`~hybrid.PartFitWarning`).
+    thinnest_wall_m : float
+        The part's thinnest wall [m]: at its points, the distance along the inward normal to its far face (a
+        plate's thickness; :mod:`hybrid.geometry.part_walls`), the least; inf where no point has a far face
+        within four bands (an open sheet, a part thicker than eight bands). A run whose arm tip would press past a
+        quarter of the wall it reaches is refused (:mod:`hybrid.experiments.walls`).
     """
 
     spacing_m: float
@@ -97,6 +106,7 @@ class PartFit:
     normal_angle_max_deg: float
     distance_median_m: float = math.nan
     normal_angle_median_deg: float = math.nan
+    thinnest_wall_m: float = math.inf
 
     def poor(self) -> str | None:
         """What makes the fit poor (:data:`POOR_DISTANCE_CELLS`, :data:`POOR_ANGLE_DEG`) and its fix, or None."""
@@ -143,6 +153,11 @@ class PartSurface(Surface):
     def _fitted(self, points: np.ndarray, normals: np.ndarray, what: str) -> None:
         """The fit to ``points`` and ``normals`` (its settings :meth:`_settings`'), and the evaluator's data."""
         self.grid = fit_signed_distance(points, normals, self.spacing, self.band, self.smoothing)
+        # the walls of one point in OFFSET_STRIDE (at most WALL_POINTS of them, evenly), against all the points
+        stride = max(OFFSET_STRIDE, -(-len(points) // WALL_POINTS))
+        reach = min(float(np.linalg.norm(np.ptp(points, axis=0))) / 2, WALL_BANDS * self.band)
+        self._walls = walls(points, normals, kd_tree(points), reach, stride, self.spacing)
+        self._wall_points = points[::stride].copy()
         self._what = what
         self._anchor = points[0].copy()
         self._grid_numbers, self._coefficients = self.grid.as_arrays()
@@ -174,7 +189,7 @@ class PartSurface(Surface):
         angle = np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
         self.fit = PartFit(self.spacing, self.band, samples, float(np.sqrt(np.mean(distance ** 2))),
                            float(distance.max()), float(np.sqrt(np.mean(angle ** 2))), float(angle.max()),
-                           float(np.median(distance)), float(np.median(angle)))
+                           float(np.median(distance)), float(np.median(angle)), float(self._walls.min()))
         poor = self.fit.poor()
         if poor is not None:
             warn(f"{self._what} follows the part poorly: {poor} (the numbers: its .fit)", PartFitWarning)
@@ -259,6 +274,41 @@ class PartSurface(Surface):
         """
         data = data_file(*self.data())
         return files.write_with(Path(path), lambda tmp: tmp.write_bytes(data), overwrite)
+
+    def thinnest_wall(self, near=None, within: float = math.inf) -> float:
+        """The part's thinnest wall [m] within ``within`` of ``near`` (:attr:`PartFit.thinnest_wall_m` of the
+        points there; inf where none has a far face: an open sheet).
+
+        Parameters
+        ----------
+        near : array_like, optional
+            A point [m] (3 coordinates); default: the whole part.
+        within : float
+            How far from ``near`` [m] the part's points count (default: all of them).
+
+        Returns
+        -------
+        float
+            The least wall [m] of the points within reach, or inf.
+
+        Examples
+        --------
+        A plate of 2 cm (its top face at z = 0.01 m):
+
+        >>> import hybrid, trimesh
+        >>> box = trimesh.creation.box(extents=(0.1, 0.1, 0.02))
+        >>> plate = hybrid.MeshSurface(box.vertices, box.faces,
+        ...                            spacing=0.004)
+        >>> round(plate.thinnest_wall((0.0, 0.0, 0.01), 0.02) * 1e3, 3)
+        20.0
+        """
+        if near is None:
+            return self.fit.thinnest_wall_m
+        point = np.array(_point(self._what, "near", near, (3,)))
+        if isinstance(within, bool) or not isinstance(within, (int, float, np.integer, np.floating)) or not within >= 0:
+            raise HybridError(f"{self._what}.thinnest_wall: within = {shown(within, 30)}; give a distance >= 0 [m]")
+        close = np.linalg.norm(self._wall_points - point, axis=1) <= within
+        return float(self._walls[close].min()) if close.any() else math.inf
 
     def project(self, p) -> np.ndarray | None:
         """The point of the part nearest ``p`` [m] (Newton steps along the normal; ``p`` within the band), or
@@ -385,7 +435,7 @@ class MeshSurface(PartSurface):
             raw = np.asarray(vertices, float) * scale
         except (TypeError, ValueError):
             raise HybridError(f"{what}: vertices must be V x 3 real numbers") from None
-        v, f = checked_mesh(_placed(raw, transform, what), faces, what)
+        v, f = checked_mesh(placed(raw, transform, what), faces, what)
         self.flip = bool(flip)
         if flip:
             f = f[:, ::-1].copy()
@@ -448,13 +498,13 @@ class PointCloudSurface(PartSurface):
     ------
     HybridError
         Too few points, points or normals that are not numbers, normals of zero length, no viewpoint without
-        normals, a cloud too sparse for its spacing.
+        normals, points on a line (within a tenth of a cell of it), a cloud too sparse for its spacing.
 
     Warns
     -----
     PartFitWarning
-        A fit that follows the cloud poorly (as :class:`MeshSurface`'s; also a cloud on a line or of two
-        layers, whose estimated normals scatter).
+        A fit that follows the cloud poorly (as :class:`MeshSurface`'s; also a cloud of two layers, whose
+        estimated normals scatter).
 
     Examples
     --------
@@ -485,7 +535,7 @@ class PointCloudSurface(PartSurface):
             if isinstance(neighbours, bool) or not isinstance(neighbours, (int, np.integer)) or neighbours < 6:
                 raise HybridError(f"{what}.neighbours = {shown(neighbours, 30)}; give a whole number >= 6")
             eye = np.array(_point(what, "viewpoint", viewpoint, (3,)))
-            n = _estimated_normals(p, int(neighbours), eye, what)
+            n = estimated_normals(p, int(neighbours), eye, what)
             given = {"viewpoint": eye.tolist(), "neighbours": int(neighbours)}
         else:
             n = _array(what, "normals", normals)
@@ -502,7 +552,8 @@ class PointCloudSurface(PartSurface):
             raise HybridError(f"{what} is {extent:.3g} m across; a part in a robot cell is {SMALLEST_PART:g} to "
                               f"{LARGEST_PART:g} m: give its points in metres")
         self._settings(p, spacing, band, smoothing, what)
-        gaps = _sparsest(p)  # before the fit: a cloud too sparse for its cells is refused at once
+        check_spread(p, self.spacing, what)
+        gaps = sparsest(p)  # before the fit: a cloud too sparse for its cells is refused at once
         if gaps > 2 * self.spacing:
             raise HybridError(f"{what}: points {gaps:.3g} m apart where the fit's cells are {self.spacing:.3g} m; "
                               f"give spacing >= {gaps / 2:.2g} m, or a denser cloud")
@@ -513,48 +564,6 @@ class PointCloudSurface(PartSurface):
         self._arguments = {"points": p.tolist(), **given, "spacing": self.spacing, "band": self.band,
                            "smoothing": self.smoothing}
         self._report(p, p, n, min(len(p), MOST_SAMPLES))
-
-
-def _placed(v: np.ndarray, transform, what: str) -> np.ndarray:
-    """``v`` (V x 3) moved by the rigid ``transform`` (4 x 4; None: as it is), its rotation re-orthonormalised
-    (:func:`_rotation`)."""
-    if transform is None:
-        return v
-    try:
-        given = np.asarray(transform)
-        T = given.astype(float)
-    except (TypeError, ValueError):
-        T = None
-    if T is None or T.shape != (4, 4) or not np.isfinite(T).all():
-        raise HybridError(f"{what}.transform = {shown(transform, 60)}; give the part's frame in the base as a 4 x 4 "
-                          "homogeneous matrix")
-    R = _rotation(T, given.dtype, what)
-    if v.ndim != 2 or v.shape[1:] != (3,):
-        return v  # checked_mesh says what is wrong
-    return v @ R.T + T[:3, 3]
-
-
-def _rotation(T: np.ndarray, dtype, what: str) -> np.ndarray:
-    """The rotation of the homogeneous ``T`` made orthonormal to double precision (the nearest rotation: ``U V^T``
-    of its singular value decomposition). Its numbers' rounding is allowed for: ``R^T R`` within
-    :data:`ROUNDING` machine epsilons of ``dtype`` of the identity, and at least :data:`ROUNDING_DOUBLE` (a
-    rotation in single precision's 7 digits, read from a file as doubles). Refused beyond: a scale, a shear, a
-    reflection, a last row that is not ``0 0 0 1``."""
-    floating = np.issubdtype(dtype, np.floating)
-    if floating and np.finfo(dtype).eps > np.finfo(np.float32).eps:
-        raise HybridError(f"{what}.transform is in {np.dtype(dtype).name}; give it in single or double precision")
-    tolerance = max(ROUNDING_DOUBLE, ROUNDING * float(np.finfo(dtype if floating else float).eps))
-    R = T[:3, :3]
-    off = float(np.abs(R.T @ R - np.eye(3)).max())
-    row = float(np.abs(T[3] - (0.0, 0.0, 0.0, 1.0)).max())
-    turned = np.linalg.det(R) <= 0
-    if off > tolerance or row > tolerance or turned:
-        raise HybridError(f"{what}.transform is not a rigid motion (a rotation and a translation, last row 0 0 0 1): "
-                          f"R^T R is {off:.2g} from the identity, its last row {row:.2g} from 0 0 0 1 (at most "
-                          f"{tolerance:.2g}, its numbers' rounding){', a reflection' if turned else ''}; give scale "
-                          "for a change of units")
-    U, _, Vt = np.linalg.svd(R)
-    return U @ Vt
 
 
 def _length(what: str, name: str, value) -> float:
@@ -579,20 +588,3 @@ def _array(what: str, name: str, value) -> np.ndarray:
         raise HybridError(f"{what}.{name}: row {int(np.flatnonzero(~np.isfinite(a).all(axis=1))[0])} is not finite; "
                           "give finite numbers")
     return a
-
-
-def _estimated_normals(p: np.ndarray, k: int, viewpoint: np.ndarray, what: str) -> np.ndarray:
-    """Each point's normal: the direction of least spread of its ``k`` nearest points, towards ``viewpoint``."""
-    if k < 6:
-        raise HybridError(f"{what}.neighbours = {k}; give at least 6")
-    _, near = kd_tree(p).query(p, k=min(k, len(p)))
-    local = p[near] - p[near].mean(axis=1, keepdims=True)
-    _, vectors = np.linalg.eigh(np.einsum("nki,nkj->nij", local, local))
-    n = vectors[:, :, 0]
-    return n * np.where(np.einsum("ij,ij->i", n, viewpoint - p) < 0, -1.0, 1.0)[:, None]
-
-
-def _sparsest(p: np.ndarray) -> float:
-    """The largest distance from a point to its nearest neighbour [m] (the cloud's gaps)."""
-    d, _ = kd_tree(p).query(p, k=2)
-    return float(d[:, 1].max())
