@@ -22,7 +22,6 @@ import dataclasses
 import hashlib
 import json
 import math
-import shutil
 import subprocess
 import zlib
 from pathlib import Path
@@ -30,10 +29,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 from test_closed_loop_c import (
-    EXAMPLE,
-    STRICT,
     CPlant,
     assert_metrics,
+    build_example,
     check_path_run,
     raster_experiment,
     run,
@@ -82,13 +80,9 @@ def link():
 
 
 def build(exp, folder: Path) -> Path:
-    """``exp`` generated as ``ur5`` into ``folder`` beside the example's loop, built strictly: the folder."""
-    written = {p.name for p in exp.generate(folder, "ur5")}
-    assert {"ur5_part.bin", "hybrid_part.h", "ur5_plant.c", "ur5_controller.c"} <= written
-    shutil.copy(EXAMPLE / "main.c", folder / "main.c")
-    done = subprocess.run(["gcc", *STRICT, "-O2", "main.c", "ur5_controller.c", "ur5_plant.c", "-lm", "-o",
-                           "closed_loop"], cwd=folder, capture_output=True, text=True)
-    assert done.returncode == 0, done.stderr
+    """:func:`build_example` of a part's experiment, which writes the part's data file and header too."""
+    build_example(exp, folder)
+    assert {"ur5_part.bin", "hybrid_part.h", "ur5_plant.c", "ur5_controller.c"} <= {p.name for p in folder.iterdir()}
     return folder
 
 

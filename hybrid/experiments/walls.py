@@ -53,11 +53,10 @@ def check_walls(exp) -> None:
     """Refuse a run whose arm tip would press deeper than :data:`SOUND_SHARE` of half the thinnest wall of the
     part it touches within its reach (module docstring), saying by how much and what to change."""
     surface = exp.told_surface()
-    thinnest = getattr(surface, "thinnest_wall", None)
-    if thinnest is None:
-        return  # a formula's surface (a plane, a sphere, ...) has no far face
+    if math.isinf(surface.thinnest_wall()):
+        return  # no far face anywhere (a formula's surface, an open sheet)
     depth, force = expected_depth(exp)
-    wall = thinnest(exp.start(), reach_of(exp) + surface.band)
+    wall = surface.thinnest_wall(exp.start(), reach_of(exp) + surface.band)
     sound = SOUND_SHARE * wall / 2
     if depth < sound:
         return

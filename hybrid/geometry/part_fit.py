@@ -156,7 +156,8 @@ def _offset_samples(points: np.ndarray, normals: np.ndarray, spacing: float, ban
     return (np.concatenate(at), np.concatenate(value)) if at else (np.empty((0, 3)), np.empty(0))
 
 
-def fit_signed_distance(points, normals, spacing: float, band: float, smoothing: float = SMOOTHING) -> SplineGrid:
+def fit_signed_distance(points, normals, spacing: float, band: float, smoothing: float = SMOOTHING,
+                        tree=None) -> SplineGrid:
     """The smooth signed distance of the oriented points (module docstring).
 
     Parameters
@@ -169,6 +170,8 @@ def fit_signed_distance(points, normals, spacing: float, band: float, smoothing:
         How far from the points [m] ``phi`` is defined.
     smoothing : float
         The weight of the second differences (:data:`SMOOTHING`).
+    tree : scipy.spatial.cKDTree, optional
+        :func:`kd_tree` of ``points``, where the caller has it already (default: built here).
 
     Returns
     -------
@@ -186,7 +189,8 @@ def fit_signed_distance(points, normals, spacing: float, band: float, smoothing:
     >>> round(float(phi[0]), 3), round(float(grad[0, 2]), 2)
     (0.005, 1.0)
     """
-    tree = kd_tree(np.asarray(points, float))  # (refused with the reason where SciPy is missing)
+    if tree is None:
+        tree = kd_tree(np.asarray(points, float))  # (refused with the reason where SciPy is missing)
     from scipy import ndimage, sparse
 
     points, normals = np.asarray(points, float), np.asarray(normals, float)

@@ -152,11 +152,12 @@ class PartSurface(Surface):
 
     def _fitted(self, points: np.ndarray, normals: np.ndarray, what: str) -> None:
         """The fit to ``points`` and ``normals`` (its settings :meth:`_settings`'), and the evaluator's data."""
-        self.grid = fit_signed_distance(points, normals, self.spacing, self.band, self.smoothing)
+        tree = kd_tree(points)  # (the fit's and the walls')
+        self.grid = fit_signed_distance(points, normals, self.spacing, self.band, self.smoothing, tree)
         # the walls of one point in OFFSET_STRIDE (at most WALL_POINTS of them, evenly), against all the points
         stride = max(OFFSET_STRIDE, -(-len(points) // WALL_POINTS))
         reach = min(float(np.linalg.norm(np.ptp(points, axis=0))) / 2, WALL_BANDS * self.band)
-        self._walls = walls(points, normals, kd_tree(points), reach, stride, self.spacing)
+        self._walls = walls(points, normals, tree, reach, stride, self.spacing)
         self._wall_points = points[::stride].copy()
         self._what = what
         self._anchor = points[0].copy()

@@ -102,6 +102,12 @@ class Surface:
     def project(self, p) -> np.ndarray | None:
         return None
 
+    def thinnest_wall(self, near=None, within: float = math.inf) -> float:
+        """The thinnest wall [m] of the solid behind the surface within ``within`` of ``near``: inf for a
+        surface given by a formula, whose ``phi`` measures from one face (a part's is measured,
+        :meth:`~hybrid.geometry.parts.PartSurface.thinnest_wall`)."""
+        return math.inf
+
     def cross_section(self) -> Section | None:
         """The cross-section by the base xy-plane where the paper's planar arm can run on it (a
         vertical cylinder's circle, a vertical plane's line), else None."""

@@ -15,11 +15,7 @@ from hybrid.control.path_task import PathFollower
 from hybrid.spec.metrics import PATH_AHEAD_M, PATH_BEHIND_M, PATH_END_TOL_M, PATH_METRICS, PATH_SETTLED_BAND
 from hybrid.spec.path_follow import PATH_OUTPUT, PATH_PHASES, PATH_SETTINGS, PATH_STATE
 
-#: how near [m] the path's end the sensor tip completes it (declared with the metrics, which the C reads too)
-END_TOL = PATH_END_TOL_M
 FOLLOW, UNLOAD = PATH_PHASES.index("follow"), PATH_PHASES.index("unload")
-#: the force error's window starts once the force is within this fraction of its reference
-SETTLED = PATH_SETTLED_BAND
 
 
 def follower_of(res) -> PathFollower:
@@ -77,19 +73,17 @@ def sampled_series(exp, names, rows: np.ndarray, states: np.ndarray, nq: int,
 
 
 _SEEDED = [PATH_STATE.index(k) for k in ("s", "row", "started", "phase")]
-#: where the sensor tip's nearest point is looked for: this far [m] behind the arm tip's progress and ahead of it
-BEHIND, AHEAD = PATH_BEHIND_M, PATH_AHEAD_M
 
 
 def _sensor_tip_errors(follower: PathFollower, tips: np.ndarray, s_arm: np.ndarray) -> np.ndarray:
     """The sensor tips' distances [m] from the path (in the surface's tangent plane), each from the node nearest
-    it within ``BEHIND`` and ``AHEAD`` of the arm tip's progress, then the follower's Newton steps."""
+    it within ``PATH_BEHIND_M`` and ``PATH_AHEAD_M`` of the arm tip's progress, then the follower's Newton steps."""
     nodes, points = follower.table[:, 0], follower.table[:, 1:4]
     state = np.zeros_like(follower.state)
     errors = np.empty(len(tips))
     error = PATH_OUTPUT.index("path_error")
     for k, (p, s) in enumerate(zip(tips, s_arm)):
-        lo, hi = np.searchsorted(nodes, [s - BEHIND, s + AHEAD])
+        lo, hi = np.searchsorted(nodes, [s - PATH_BEHIND_M, s + PATH_AHEAD_M])
         near = lo + int(np.argmin(np.linalg.norm(points[lo:max(hi, lo + 1)] - p, axis=1)))
         state[:] = 0.0
         state[_SEEDED] = nodes[near], min(near, len(nodes) - 2), 1.0, FOLLOW
@@ -120,12 +114,12 @@ def sampled_path_metrics(exp, names, rows: np.ndarray, states: np.ndarray, nq: i
     on = (phase == FOLLOW) | (phase == UNLOAD)
     follow = phase == FOLLOW
     distance = follower.settings[PATH_SETTINGS.index("distance")]
-    done = np.flatnonzero(series["travelled"] >= distance - END_TOL)
+    done = np.flatnonzero(series["travelled"] >= distance - PATH_END_TOL_M)
     err = series["path_error"][on] if on.any() else np.full(1, np.nan)
-    # once in contact: from the first time the force is within SETTLED of its reference (the touch's transient
+    # once in contact: from the first time the force is within PATH_SETTLED_BAND of its reference (the touch's transient
     # is the first-touch metrics')
     force_error = series["normal_force"] - series["normal_reference"]
-    settled = np.flatnonzero(follow & (np.abs(force_error) <= SETTLED * np.abs(series["normal_reference"])))
+    settled = np.flatnonzero(follow & (np.abs(force_error) <= PATH_SETTLED_BAND * np.abs(series["normal_reference"])))
     pressing = follow & (np.arange(len(t)) >= (settled[0] if len(settled) else len(t)))
     force_error = force_error[pressing]
     speed_error = (series["tip_speed"] - series["speed"])[follow]
