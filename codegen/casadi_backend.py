@@ -143,7 +143,7 @@ def kernel_sources(kernels: list[Kernel], prefix: str) -> tuple[str, dict[str, t
             head, rest = body.split("{", 1)
             body = f"{head}{{\n  (void)arg; (void)iw; (void)mem; (void)w;{rest}"
             body = _WRITE.sub("", _READ.sub(r"\2;", _SINCOS.sub(r"hybrid_\1(", body)))
-            kernels_c.append(reorder(body) if kernels[len(names) - 1].reordered else body)
+            kernels_c.append(reorder(body, kernels[len(names) - 1].order))
         else:
             helpers.append("static " + body)
     if len(names) != len(funcs):

@@ -416,10 +416,10 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
     per_state = CONTROLLER_STEP.per_sample
     step = Kernel("controller_step", inputs, outputs(tau),
                   what + f"the decoupling law (task axes {', '.join(axis_names)})", batched=per_state,
-                  guards=(*guards, conditioning_guard(cond, CONDITIONING)), reordered=True)
+                  guards=(*guards, conditioning_guard(cond, CONDITIONING)), order="fewest_alive")
     raibert_craig = Kernel("raibert_craig_step", inputs, outputs(tau_rc),
                            what + f"Raibert & Craig's scheme (task axes {', '.join(axis_names)})", batched=per_state,
-                           guards=(*guards, conditioning_guard(cond_rc, CONDITIONING)), reordered=True)
+                           guards=(*guards, conditioning_guard(cond_rc, CONDITIONING)), order="fewest_alive")
     posture_step = ()
     if m < n:  # a square task has no null space: its law ignores tau0
         tau0 = posture_torque(chain, arm, params, q, qd, posture)
@@ -427,7 +427,7 @@ def controller_kernels(chain: rb.Chain, spec: SurfaceSpec, axes: tuple[int, ...]
         posture_step = (Kernel("controller_posture_step", inputs, outputs(tau_posture),
                                what + f"the decoupling law with a posture task in its null space (task axes "
                                f"{', '.join(axis_names)})", batched=per_state,
-                               guards=(*guards, conditioning_guard(cond, CONDITIONING)), reordered=True),)
+                               guards=(*guards, conditioning_guard(cond, CONDITIONING)), order="fewest_alive"),)
     # an estimated surface's frame as the estimate stands (the measurement is of one instant)
     tf_now = normal_frame(ca.if_else(est[9], est[0:3], theta[8:11]), est[3:6], e) if spec.estimated else tf
     R6 = ca.diagcat(tf_now.R, tf_now.R)

@@ -54,7 +54,7 @@ def robot_kernels(chain: rb.Chain, defaults=None) -> tuple[Kernel, ...]:
         "inverse_dynamics", (a_q, a_qd, Arg("qdd", qdd, rb.joint_units(chain, "qdd"), names=names), a_p),
         (Arg("tau", bf.rnea(tree, params, qd, qdd), rb.joint_units(chain, "tau")),),
         "inverse dynamics tau = B(q) q'' + n(q, q') by recursive Newton-Euler", batched=("q", "qd", "qdd"),
-        reordered=True)
+        order="fewest_alive")
     forward = Kernel(
         "forward_dynamics", (a_q, a_qd, Arg("tau", tau, rb.joint_units(chain, "tau"), names=names), a_p),
         (Arg("qdd", ldl_solve(B, tau - bias), rb.joint_units(chain, "qdd")),),
@@ -81,7 +81,7 @@ def inertia_kernel(chain: rb.Chain) -> Kernel:
     return Kernel("inertia", (Arg("q", q, rb.joint_units(chain, "q"), names=names),
                               Arg("robot", params, rb.parameter_units(chain), names=rb.parameter_names(chain))),
                   (Arg("B", rb.row_major(B), "kg m^2", (chain.n, chain.n)),), "inertia B(q) (CRBA), row-major",
-                  reordered=True)
+                  order="fewest_alive")
 
 
 def build_inertia_unit(chain: rb.Chain, prefix: str, info: dict, values=None) -> Unit:

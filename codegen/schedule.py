@@ -17,6 +17,13 @@ gets its own name; the operations are CasADi's, unchanged: the results are the s
 compiler fuses a product and a sum into one multiply-add, which it may pair otherwise in the new
 order (a rounding).
 
+Two orders are on offer (:data:`ORDERS`, a kernel's ``order``): ``"fewest_alive"``, the choice as
+above, and ``"longest_chain"``, the longest chain first, then the fewest alive and the rest as above:
+more values alive, hence more spills, but every long chain begun as early as it can be. It is the faster
+where a kernel's time is its chains' (a redundant task's law: its two Cholesky factorisations, each a chain
+of square roots and divisions); the rounding is the same kind (the multiply-adds paired otherwise).
+``"printed"`` leaves the order CasADi printed.
+
 One rewrite comes first (:func:`_selects`): CasADi writes a choice ``if_else(c, a, b)`` as
 ``(c?a:0) + (!c?b:0)``, a negation, two selects and a sum, where C has the one select ``(c?a:b)``. Its
 value is the same for every ``c`` (a NaN or any non-zero ``c`` is true in both), ``a`` and ``b`` (the
@@ -39,12 +46,18 @@ _OPERAND = re.compile(r"@(\d+)@")
 #: a call to a sine, a cosine or a tanh, and the operations its latency is counted as
 _CALL, _CALL_COST = re.compile(r"\b(?:hybrid_sin|hybrid_cos|tanh)\("), 20
 _DECLARATION = re.compile(r"^  casadi_real a\d+.*;$")
+#: the orders a kernel's statements may be printed in (module docstring)
+ORDERS = ("printed", "fewest_alive", "longest_chain")
 
 
-def reorder(function: str) -> str:
-    """``function`` (one CasADi function's C) with its statements in the order :mod:`this module <.schedule>`
-    describes; unchanged where it holds any line but declarations of locals, the statements and what
-    CasADi puts before and after them."""
+def reorder(function: str, order: str = "fewest_alive") -> str:
+    """``function`` (one CasADi function's C) with its statements in ``order`` (:data:`ORDERS`, the module's
+    docstring); unchanged for ``"printed"`` or where it holds any line but declarations of locals, the
+    statements and what CasADi puts before and after them."""
+    if order not in ORDERS:
+        raise ValueError(f"order {order!r}: not one of {', '.join(ORDERS)}")
+    if order == "printed":
+        return function
     lines = function.split("\n")
     first = next((i for i, line in enumerate(lines) if _STATEMENT.match(line)), None)
     if first is None:
@@ -53,11 +66,11 @@ def reorder(function: str) -> str:
     if any(not _STATEMENT.match(line) for line in lines[first:last + 1]):
         return function
     nodes = _selects(_parse(lines[first:last + 1]))
-    order = _schedule(nodes)
+    chosen = _schedule(nodes, chains_first=order == "longest_chain")
     width = len(str(len(nodes)))
     name = {k: f"a{k:0{width}d}" for k, node in enumerate(nodes) if not node[0].startswith("res")}
     body = [f"  {name.get(k, nodes[k][0])}={_OPERAND.sub(lambda m: name[int(m.group(1))], nodes[k][1])};"
-            for k in order]
+            for k in chosen]
     head = [line for line in lines[:first] if not _DECLARATION.match(line)]
     declarations = [f"  casadi_real {', '.join(list(name.values())[i:i + 12])};" for i in range(0, len(name), 12)]
     return "\n".join(head + declarations + body + lines[last + 1:])
@@ -123,8 +136,9 @@ def _negates(expression: str, c: int) -> bool:
     return negation is not None and int(negation.group(1)) == c
 
 
-def _schedule(nodes: list[tuple[str, str, list[int]]]) -> list[int]:
-    """The statements' order: a list schedule that keeps the fewest values alive, greedily."""
+def _schedule(nodes: list[tuple[str, str, list[int]]], chains_first: bool) -> list[int]:
+    """The statements' order: a list schedule that keeps the fewest values alive, greedily; with
+    ``chains_first``, that starts the longest chain first."""
     users: list[list[int]] = [[] for _ in nodes]
     for k, (_, _, operands) in enumerate(nodes):
         for j in operands:
@@ -145,6 +159,8 @@ def _schedule(nodes: list[tuple[str, str, list[int]]]) -> list[int]:
         freed = sum(1 for j in operands if unread[j] == 1)
         alive = 0 if target.startswith("res") or not users[k] else 1
         recent = max((placed_at[j] for j in operands), default=-1)
+        if chains_first:
+            return -height[k], alive - freed, reads[k], -recent, k
         return alive - freed, reads[k], -height[k], -recent, k
 
     while ready:

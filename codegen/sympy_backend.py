@@ -37,6 +37,9 @@ def kernel_body(kernel: Kernel, indent: str = "    ") -> str:
     the shared subexpressions become locals ``x0, x1, ...``, and outputs are stored
     last, so an output array may alias nothing but must not alias an input.
     """
+    if kernel.order != "printed":
+        raise ValueError(f"kernel {kernel.name}: order {kernel.order!r} reorders CasADi's C; SymPy's printer keeps "
+                         "its common subexpressions in their own order")
     outputs = kernel.core_outputs()
     exprs = [e for a in outputs for e in a.expr]
     replacements, reduced = sp.cse(exprs, symbols=sp.numbered_symbols("x"), order="none")
