@@ -33,10 +33,25 @@ KINDS = ("ok", "nan_wrench", "nan_q", "late", "repeated")
 @pytest.fixture(scope="module")
 def pair(tmp_path_factory):
     """A UR5 controller on the sphere, its standalone C, and recorded samples ``(t, q, qd, wrench)``."""
+    return _pair(tmp_path_factory)
+
+
+#: a torque step limit [N m per sample] that binds in the safe state
+RATE = 0.5
+
+
+@pytest.fixture(scope="module")
+def rate_pair(tmp_path_factory):
+    """As ``pair``, with the torque step limit ``RATE``."""
+    return _pair(tmp_path_factory, torque_step_limit=RATE)
+
+
+def _pair(tmp_path_factory, **limits):
     exp = hybrid.tracing_experiment(duration=0.3)
     base = exp.build_controller()
     reaction = hybrid.FaultReaction(fault_samples=3, stop_time=0.04, unload_time=0.05)
-    py = hybrid.Controller(base.robot, base.surface, gains=exp.gains, torque_limit=LIMIT, fault_reaction=reaction)
+    py = hybrid.Controller(base.robot, base.surface, gains=exp.gains, torque_limit=LIMIT, fault_reaction=reaction,
+                           **limits)
     folder = tmp_path_factory.mktemp("fault")
     py.generate(folder, "fr")
     r, plant = hybrid.simulate(exp), exp.plant()
@@ -123,6 +138,54 @@ def test_the_safe_state_holds_until_reset(pair):
     assert not py.stopped
     assert np.isfinite(py(*samples[0])).all()
 
+
+
+def _held_states(py, c) -> tuple[bytes, bytes]:
+    """Every state the safe state keeps between samples, Python's and C's, as bytes (bitwise)."""
+    n = py.robot.n
+    c_tau = np.frombuffer(c.ffi.buffer(c.c.tau), float)
+    c_fault = np.frombuffer(c.ffi.buffer(c.c.fault_state), float)
+    return (py.fault_state.tobytes() + py._last.tobytes() + np.float64(py._clock).tobytes(),
+            c_fault.tobytes() + c_tau[:n].tobytes() + np.array([c.c.has_torque, c.c.t_last, c.c.has_clock]).tobytes())
+
+
+@pytest.mark.parametrize("when", [0.0, -1.0, -3.5])
+def test_no_time_passed_in_the_safe_state_changes_nothing(rate_pair, when):
+    """In the safe state as in the law, a sample at which no time passed (repeated, or before the last) changes
+    nothing, Python and C alike: its torque is the safe state's at that sample, rate-limited from the torque
+    last written; else a burst of such samples (new measurements at an old time) walks the torque by the rate
+    bound each, with no time passing."""
+    py, c, samples = rate_pair
+    n, T = py.robot.n, samples[1][0] - samples[0][0]
+    rng = np.random.default_rng(int(-when * 10))
+    py.reset()
+    c.lib.fr_controller_reset(c.c)
+    for k in range(2 + py.fault_reaction.fault_samples):
+        t, q, qd, w = samples[k]
+        w = np.resize(w, 6) if k < 2 else np.full(6, np.nan)
+        status, tau = python_status(py, t, q, qd, w)
+        code, tau_c = c.step(t, q, qd, w)
+        assert c.name(code) == status
+    assert status == "SAFE_STOP" and py.stopped
+    clock, last = t, tau.copy()
+    before = _held_states(py, c)
+    for _ in range(20):  # each a new measurement, its hold torque far from the torque last written
+        q_k, qd_k = q + rng.normal(0.0, 0.05, n), qd + rng.normal(0.0, 0.2, n)
+        status, tau = python_status(py, clock + when * T, q_k, qd_k, w)
+        code, tau_c = c.step(clock + when * T, q_k, qd_k, w)
+        assert status == c.name(code) == "SAFE_STOP"
+        np.testing.assert_allclose(tau_c, tau, rtol=1e-9, atol=1e-9)
+        assert np.all(np.abs(tau - last) <= RATE * (1 + 1e-12))
+        assert _held_states(py, c) == before
+    assert abs(tau - last).max() > 0.5 * RATE  # the bound binds: the torque would move on
+    # the next sample on time advances the release by one sample, in both
+    fs = FAULT_STATE.names(Dims.sized(py.robot.joint_names, py.axis_names, 0, 0))
+    released = py.fault_state[fs.index("samples")]
+    status, tau = python_status(py, clock + T, q, qd, w)
+    code, tau_c = c.step(clock + T, q, qd, w)
+    np.testing.assert_allclose(tau_c, tau, rtol=1e-9, atol=1e-9)
+    assert py.fault_state[fs.index("samples")] == released + 1
+    np.testing.assert_allclose(py.fault_state, np.frombuffer(c.ffi.buffer(c.c.fault_state), float), rtol=1e-9)
 
 def test_a_fault_shorter_than_the_count_is_served_as_before(pair):
     """A dropout of k refused samples is followed by a late one (timed from the last served): k + 1 faulted

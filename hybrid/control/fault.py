@@ -154,28 +154,31 @@ class FaultMonitor:
 
     def safe_sample(self, stop, q, qdot, last: np.ndarray, parameters: dict, passed: bool, cause: str):
         """One sample of the safe state: the error carrying its torque (the ``safe_stop`` kernel ``stop``
-        at ``q``, or the last finite positions, and ``qdot``, or 0, from the ``parameters`` by name); the
-        last torque ``last`` (the step's state) becomes it."""
+        at ``q``, or the last finite positions, and ``qdot``, or 0, from the ``parameters`` by name); when
+        time ``passed``, the last torque ``last`` (the step's state) becomes it and the release advances.
+        At a sample where no time passed nothing changes (as the law's own): else repeated samples would
+        walk the torque by the rate bound each, with no time passing."""
+        state = self.state if passed else self.state.copy()
         q_now = _finite_vector(q, self.n)
         qd_now = _finite_vector(qdot, self.n) if q_now is not None else None
-        qs = self.state[self.n:2 * self.n] if q_now is None else q_now
+        qs = state[self.n:2 * self.n] if q_now is None else q_now
         qds = np.zeros(self.n) if qd_now is None else qd_now
-        q_stop = self.state[2 * self.n:3 * self.n]
+        q_stop = state[2 * self.n:3 * self.n]
         if q_now is not None and not np.isfinite(q_stop).all():
             # entered before any finite joint positions: the arm stops at the first finite ones (until then the
             # kernel gives no torque, and the torque last written stays)
             q_stop[:] = q_now
         T = parameters["options"][OPTIONS.index("sample_time")]
         try:
-            got = stop(qs, qds, last, self.state, parameters["robot"], parameters["fault"], parameters["limits"],
+            got = stop(qs, qds, last, state, parameters["robot"], parameters["fault"], parameters["limits"],
                        np.array([T]))
             tau = np.asarray(got["tau"], float).ravel().copy()
-            self.state[:self.n] = np.asarray(got["tau_offset_next"], float).ravel()
+            state[:self.n] = np.asarray(got["tau_offset_next"], float).ravel()
             finite = True
         except HybridError:  # the model gives no torque: the torque last written, and the release waits
             tau, finite = last[:-1] * last[-1], False
-        last[:-1], last[-1] = tau, 1.0
         if passed:
+            last[:-1], last[-1] = tau, 1.0
             self.state[self._samples] += float(finite)
             self._hold(q)
         return SafeStopError(tau.copy(), self.faults, cause)
