@@ -246,6 +246,33 @@ def test_python_refuses_a_setting_changed_to_an_invalid_value(live):
     _run(py, c, samples[3:4])  # nothing of it changed the controller
 
 
+
+@pytest.mark.parametrize("name, value", [("torque_limit", 1.0), ("torque_step_limit", 0.1), ("integral_limit", 0.0)])
+def test_a_bound_assigned_after_construction_is_refused_not_ignored(paper, name, value):
+    """The compiled step holds the bounds it was built with: one assigned later (a tighter torque limit) would be
+    read back but not applied. It is refused, and the torques are a controller's built with the old bound."""
+    exp, _, samples = paper
+    ctrl, twin = exp.build_controller(), exp.build_controller()
+    built = getattr(ctrl, name)
+    with pytest.raises(hybrid.HybridError, match=name):
+        setattr(ctrl, name, value)
+    if isinstance(built, np.ndarray):
+        with pytest.raises(ValueError):  # nor changed in place: the array is read-only
+            getattr(ctrl, name)[0] = value
+    np.testing.assert_array_equal(getattr(ctrl, name), built)
+    for sample in samples[:4]:
+        np.testing.assert_array_equal(ctrl(*sample), twin(*sample))
+    # a controller built with the bound applies it
+    tight = hybrid.Controller(ctrl.robot, exp.surface, gains=exp.gains, sample_time=exp.sample_time,
+                              force_reference=exp.force_reference, velocity_reference=exp.speed_reference,
+                              **{name: value})
+    torques = np.array([tight(*sample) for sample in samples[:4]])
+    if name == "torque_limit":
+        assert np.abs(torques).max() <= value
+    elif name == "torque_step_limit":
+        assert np.abs(np.diff(torques, axis=0)).max() <= value * (1 + 1e-12)
+
+
 def test_python_refuses_invalid_parameters_at_construction(live):
     py = live[0]
     for kw, match in ((dict(torque_limit=NAN), "torque_limit"), (dict(torque_limit=-1.0), "torque_limit"),

@@ -96,7 +96,9 @@ class Controller(SampleReferences, StepBinding, GroupedSettings, CheckedParamete
     samples: a new ``sample_time`` is the period of everything from the next sample on (the timing check,
     the integrals, the filter, the estimate, a path task's progress), as for a controller built with it;
     one changed to an invalid value refuses the sample with a :class:`~hybrid.ParameterError`
-    (``status`` ``PARAMETER_INVALID``, ``torque`` the torque last written), nothing changed.
+    (``status`` ``PARAMETER_INVALID``, ``torque`` the torque last written), nothing changed. The
+    bounds ``torque_limit``, ``torque_step_limit`` and ``integral_limit`` are fixed when it is built:
+    assigning one is refused (build another controller).
 
     A controller copies (``copy.copy``, ``copy.deepcopy``) and pickles: the copy is built anew from the same
     arguments and takes over the run (the integrals, the last torque, the filter, the estimate, the sample

@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from hybrid.control.step_checks import FIXED_BOUNDS
 from hybrid.errors import HybridError
 
 
@@ -39,7 +40,9 @@ class CopiedRun:
         follower = None if self._path_task is None else self._path_task.follower
         outputs = getattr(self, "_out", None)  # the last sample's outputs (``last``), once the step is built
         # the settings as they are now: the public attributes, and the sample time (a property: it writes the step's)
-        attributes = {k: v for k, v in vars(self).items() if not k.startswith("_")} | {"sample_time": self.sample_time}
+        # (not the fixed bounds: the constructor gave the copy the same)
+        attributes = ({k: v for k, v in vars(self).items() if not k.startswith("_") and k not in FIXED_BOUNDS}
+                      | {"sample_time": self.sample_time})
         return {"attributes": attributes,
                 "held": self._held, "params": self._params, "start_params": self._start_params,
                 "clock": self._clock, "checked_settings": self._checked_settings, "sampled": self._sampled,

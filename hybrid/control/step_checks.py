@@ -50,6 +50,30 @@ def _retimed(params: tuple, T: float) -> tuple:
     return tuple(out)
 
 
+#: the bounds the step's numbers hold from the controller's construction: assigned later, they would be ignored
+FIXED_BOUNDS = ("torque_limit", "torque_step_limit", "integral_limit")
+
+
+def _fixed_bound(name: str) -> property:
+    """The controller's attribute ``name``, one of :data:`FIXED_BOUNDS`: set once by the constructor (an array
+    read-only), then refused, since the compiled step keeps the bound it was built with (a bound that reads one
+    value and applies another is no bound)."""
+
+    def get(self):
+        return self.__dict__[name]
+
+    def refuse(self, value) -> None:
+        if name in self.__dict__:
+            raise HybridError(f"Controller {name} is fixed when the controller is built (its step holds the bound); "
+                              f"build another controller with {name}=...")
+        if isinstance(value, np.ndarray):
+            value = value.copy()
+            value.flags.writeable = False
+        self.__dict__[name] = value
+
+    return property(get, refuse, doc=f"The ``{name}`` the controller was built with (fixed: its step holds it).")
+
+
 class CheckedParameters:
     """The checks of a controller's step numbers (its ``_params``, sized by its ``_dims``), and its sample time."""
 
@@ -63,6 +87,9 @@ class CheckedParameters:
     _checked_settings: tuple | None
     timing_tolerance: float | None
     singular_tol: float
+    torque_limit = _fixed_bound("torque_limit")
+    torque_step_limit = _fixed_bound("torque_step_limit")
+    integral_limit = _fixed_bound("integral_limit")
 
     @property
     def sample_time(self) -> float:
