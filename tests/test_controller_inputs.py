@@ -291,3 +291,20 @@ def test_every_controller_call_works_or_raises_a_hybrid_error(kwargs, which, Fc)
     finally:
         signal.alarm(0)
         signal.signal(signal.SIGALRM, previous)
+
+
+@pytest.mark.parametrize("port", ["q", "qdot", "Fc"])
+def test_a_number_beyond_any_double_at_a_sample_is_refused_as_a_nan_is(paper_ctrl, port):
+    """An integer beyond any double in a sample's input is no finite number: refused as a NaN there is (a
+    NonFiniteError carrying the torque last written, counted as a faulted sample), never a foreign error."""
+    ctrl, T = paper_ctrl, paper_ctrl.sample_time
+    given = {"q": np.array([2.2, 1.9]), "qdot": np.zeros(2), "Fc": np.zeros(2)}
+    tau = ctrl(0.0, *given.values())
+    faults = []
+    for k, bad in enumerate(([10**400, 0], [np.nan, 0.0]), start=1):
+        with pytest.raises(hybrid.NonFiniteError) as err:
+            ctrl(k * T, *{**given, port: bad}.values())
+        assert first_line(err.value).strip()
+        np.testing.assert_array_equal(err.value.torque, tau)
+        faults.append(ctrl.fault_state[-3])
+    assert faults == [1.0, 2.0]

@@ -329,7 +329,7 @@ class Controller(SampleReferences, StepBinding, GroupedSettings, CheckedParamete
         if torque is not None:
             try:
                 tau = np.asarray(torque, dtype=float)
-            except (TypeError, ValueError):
+            except (TypeError, ValueError, OverflowError):
                 tau = np.full(1, np.nan)
             if tau.shape != (self.robot.n,) or not np.isfinite(tau).all():
                 raise HybridError(f"reset(torque={shown(torque, 60)}); give the arm's present torque, {self.robot.n} "
@@ -345,7 +345,7 @@ class Controller(SampleReferences, StepBinding, GroupedSettings, CheckedParamete
     def state(self, value) -> None:
         try:
             arr = np.asarray(value, dtype=float)
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):
             arr = np.full(1, np.nan)
         if arr.shape != (len(self.axes), 2) or not np.isfinite(arr).all():
             raise HybridError(f"state must be {len(self.axes)} x 2 finite numbers (int e, int int e per axis "

@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from hybrid.errors import HybridError
+from hybrid.errors import HybridError, NonFiniteError
 from hybrid.validate import checked_keywords, shown
 
 
@@ -64,6 +64,8 @@ def wrench_of(Fc, force_size: int) -> np.ndarray:
     space) or a wrench (6), base axes, as the 6-vector ``(f, m)``."""
     try:
         arr = np.asarray(Fc, dtype=float)
+    except OverflowError:  # an integer beyond any double
+        raise NonFiniteError(f"Fc = {shown(Fc, 60)} is not finite; give the measured force or wrench") from None
     except (TypeError, ValueError):
         arr = None
     if arr is None or arr.shape not in ((force_size,), (6,)):
@@ -76,7 +78,7 @@ def padded_vector(name: str, v, size: int) -> np.ndarray:
     """``v`` as ``size`` finite numbers, padded to 3 (a planar point lies at z = 0)."""
     try:
         arr = np.asarray(v, dtype=float)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         arr = np.full(1, np.nan)
     if arr.shape != (size,) or not np.isfinite(arr).all():
         raise HybridError(f"the desired {name} {shown(v, 60)} must be {size} finite numbers [m, m/s or rad]")

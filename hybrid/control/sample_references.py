@@ -106,6 +106,9 @@ class SampleReferences:
         for name, v in (("q", q), ("qdot", qdot)):
             try:
                 arr = np.asarray(v, dtype=float)
+            except OverflowError:  # an integer beyond any double
+                raise NonFiniteError(f"{name} = {shown(v, 60)} is not finite; give finite joint positions and "
+                                     "velocities [rad, rad/s or m, m/s]") from None
             except (TypeError, ValueError):
                 arr = None
             if arr is None or arr.shape != (self.robot.n,):
