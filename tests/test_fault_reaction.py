@@ -81,7 +81,7 @@ def _sample(samples, k: int, kind: str, clock: float):
         q = q.copy()
         q[2] = np.nan
     elif kind == "late":
-        t = clock + 2.5 * T
+        t = clock + 2.3 * T
     elif kind == "repeated":
         t = clock
     return t, q, qd, np.resize(w, 6) if np.size(w) == 3 else w
@@ -94,7 +94,8 @@ def test_c_and_python_react_alike(pair, kinds):
     py.reset()
     c.lib.fr_controller_reset(c.c)
     reaction = py.fault_reaction
-    faults, stopped, clock = 0, False, 0.0
+    faults, stopped, clock, served = 0, False, 0.0, None
+    T = samples[1][0] - samples[0][0]
     for k, kind in enumerate(["ok", *kinds]):
         t, q, qd, w = _sample(samples, k, kind, clock)
         status, tau = python_status(py, t, q, qd, w)
@@ -102,11 +103,15 @@ def test_c_and_python_react_alike(pair, kinds):
         assert c.name(code) == status, (k, kind)
         np.testing.assert_allclose(tau_c, tau, rtol=1e-9, atol=1e-9)
         assert np.isfinite(tau).all() and np.all(np.abs(tau) <= LIMIT)
-        # the reaction's rule, stated independently: a faulted sample that moved time counts, one on time ends
-        # the count, and the count reaching fault_samples is the safe state for good
+        # the reaction's rule, stated independently: a faulted sample that moved time counts one more, or the
+        # sample instants since the last served where more; one on time ends the count, and the count reaching
+        # fault_samples is the safe state for good
         if not stopped and status not in HELD_STATUSES:
-            faults = 0 if status == "OK" else faults + 1
+            spanned = 0 if served is None else sum(served + i * T <= t + T / 2 for i in range(1, 10))
+            faults = 0 if status == "OK" else min(max(faults + 1, spanned), reaction.fault_samples)
             stopped = faults >= reaction.fault_samples
+        if status in ("OK", "SAMPLE_LATE", "SAMPLE_EARLY"):
+            served = t
         assert (status == "SAFE_STOP") == stopped, (k, kind, status, faults)
         assert py.stopped == stopped
         np.testing.assert_allclose(py.fault_state, np.frombuffer(c.ffi.buffer(c.c.fault_state), float), rtol=1e-9,
@@ -204,6 +209,64 @@ def test_a_fault_shorter_than_the_count_is_served_as_before(pair):
     assert py.fault_state[-3] == k and not py.stopped
     py((k + 1) * T, *samples[k + 1][1:])
     assert py.fault_state[-3] == 0 and not py.stopped
+
+
+@pytest.mark.parametrize("gap", [1.4, 1.7, 2.0, 2.4, 2.6, 3.0, 40.0, 1e9, 1e300])
+def test_a_gap_counts_the_samples_it_missed(pair, gap):
+    """A faulted sample after a gap counts the sample instants it spans (those at or before the sample's time
+    and half a period, counted one by one here),
+    C and Python alike: a timestamp far ahead is a long fault at once, and the safe state then holds through
+    every later sample, which its clock leaves behind; else a dropout after such a glitch was never counted."""
+    py, c, samples = pair
+    T, limit = samples[1][0] - samples[0][0], py.fault_reaction.fault_samples
+    py.reset()
+    c.lib.fr_controller_reset(c.c)
+    for k in range(2):
+        t, q, qd, w = _sample(samples, k, "ok", (k - 1) * T)
+        assert python_status(py, t, q, qd, w)[0] == c.name(c.step(t, q, qd, w)[0]) == "OK"
+    clock = t
+    t, q, qd, w = _sample(samples, 2, "ok", clock)
+    t = clock + gap * T
+    missed = next((k for k in range(1, limit + 1) if clock + (k + 1) * T > t + T / 2), limit)
+    status, tau = python_status(py, t, q, qd, w)
+    code, tau_c = c.step(t, q, qd, w)
+    assert status == c.name(code) == ("SAFE_STOP" if missed >= limit else "SAMPLE_LATE")
+    assert py.fault_state[-3] == min(missed, limit) and py.stopped == (missed >= limit)
+    np.testing.assert_allclose(py.fault_state, np.frombuffer(c.ffi.buffer(c.c.fault_state), float), rtol=1e-9)
+    np.testing.assert_allclose(tau_c, tau, rtol=1e-9, atol=1e-9)
+    if missed < limit:
+        return
+    for k in range(3, 3 + 2 * limit):  # the clock as it was, the sensor lost: the safe state holds
+        t, q, qd, w = _sample(samples, k, "nan_wrench", clock + (k - 3) * T)
+        status, tau = python_status(py, t, q, qd, w)
+        code, tau_c = c.step(t, q, qd, w)
+        assert status == c.name(code) == "SAFE_STOP"
+        np.testing.assert_allclose(tau_c, tau, rtol=1e-9, atol=1e-9)
+        assert np.isfinite(tau).all() and np.all(np.abs(tau) <= LIMIT)
+
+
+def test_without_the_timing_check_every_faulted_sample_counts(pair):
+    """With the timing check off the law serves every sample as one sample period, whatever its time, so
+    every faulted sample counts, C and Python alike: a dropout after the clock jumped ahead (every later
+    sample then before it) still ends in the safe state, after exactly ``fault_samples`` of them."""
+    py, c, samples = pair
+    T, limit = samples[1][0] - samples[0][0], py.fault_reaction.fault_samples
+    tolerances = py.timing_tolerance, c.c.timing_tolerance
+    py.timing_tolerance, c.c.timing_tolerance = None, -1.0
+    try:
+        for jump in (1e9, 0.0):  # the clock far ahead, and samples repeated at its time
+            py.reset()
+            c.lib.fr_controller_reset(c.c)
+            t, q, qd, w = _sample(samples, 0, "ok", jump - T)
+            assert python_status(py, t, q, qd, w)[0] == c.name(c.step(t, q, qd, w)[0]) == "OK"
+            for k in range(1, limit + 1):
+                t, q, qd, w = _sample(samples, k, "nan_wrench", (k - 1) * T if jump else -T)
+                status = python_status(py, t, q, qd, w)[0]
+                assert status == c.name(c.step(t, q, qd, w)[0])
+                assert status == ("SAFE_STOP" if k == limit else "INPUT_NONFINITE")
+                assert py.fault_state[-3] == k
+    finally:
+        py.timing_tolerance, c.c.timing_tolerance = tolerances
 
 
 def test_a_bad_fault_reaction_is_refused():

@@ -17,7 +17,7 @@ import numpy as np
 from hybrid.control.controller_binding import ADVANCED, StepBinding
 from hybrid.control.controller_copies import CopiedRun
 from hybrid.control.controller_settings import SETTINGS, GroupedSettings, check_settings, grouped
-from hybrid.control.fault import FaultMonitor, FaultReaction, finite_time, time_passed, timing_status
+from hybrid.control.fault import FaultMonitor, FaultReaction, finite_time, sample_periods, time_passed, timing_status
 from hybrid.control.loops import Gains
 from hybrid.control.measurement import Measurement, wrench_of
 from hybrid.control.options import ContactLoss, Posture, check_posture
@@ -378,11 +378,14 @@ class Controller(SampleReferences, StepBinding, GroupedSettings, CheckedParamete
             for a bad input, :class:`SingularConfigurationError` or :class:`TaskFrameError` where the law
             fails; :class:`SampleTimingError` off the sample clock (see ``timing_tolerance``). Every error a
             sample raises carries ``torque``, what to apply. After the ``fault_reaction``'s
-            ``fault_samples`` consecutive faulted samples (refused, late or early) every sample raises
+            ``fault_samples`` consecutive faulted samples (refused, late or early; one after a gap counts the
+            sample periods the gap spans) every sample raises
             :class:`SafeStopError` until :meth:`reset`, its torque the safe state's
             (:mod:`hybrid.control.fault`).
         """
-        passed = time_passed(t, self._clock)
+        # with the timing check off the law serves every sample as one sample period, whatever its time
+        passed = self.timing_tolerance is None or time_passed(t, self._clock)
+        periods = sample_periods(t, self._clock, self.sample_time)
         if self._fault.stopped:
             raise self._safe_sample(t, q, qdot, passed, "the safe state holds until reset()")
         try:
@@ -395,7 +398,7 @@ class Controller(SampleReferences, StepBinding, GroupedSettings, CheckedParamete
                 self._fault.served(q, on_time=False)
             if not hasattr(exc, "torque"):
                 exc.torque = self._last[:-1] * self._last[-1]
-            if self._fault.faulted(passed, self.fault_reaction, self._last[:-1] * self._last[-1], q):
+            if self._fault.faulted(passed, self.fault_reaction, self._last[:-1] * self._last[-1], q, periods):
                 raise self._safe_sample(t, q, qdot, passed, str(exc).partition("\n")[0]) from exc
             raise
         self._fault.served(q, on_time=True)

@@ -14,7 +14,12 @@ drives on (IEC 60204-1's stop category 2, as an industrial arm's protective stop
 rate, and the contact force the tool's compliance stores at the held position stays.
 
 A sample at which no time passed (repeated, or before the last) is no fault of its own: it counts
-nothing. A sample the law serves on time ends a count.
+nothing (with the timing check off, time passes at every sample: the law serves each as one sample
+period). A faulted sample counts one more, or the sample periods since the last sample served (to the
+nearest whole) where those are more (:func:`counted`): a gap counts the samples it missed, as a dropout's
+refused samples would have, so a clock jumped far ahead (a glitch, or a loop stalled longer than the fault
+window) enters the safe state at once rather than leaving every later sample behind its clock, none of
+them counted. A sample the law serves on time ends a count.
 
 :class:`FaultMonitor` is that bookkeeping for :class:`hybrid.Controller` (the standalone C's step does
 the same in its struct's ``fault_state``, element for element).
@@ -41,7 +46,8 @@ class FaultReaction:
     Parameters
     ----------
     fault_samples : int
-        Consecutive faulted samples that enter the safe state (a whole number >= 1).
+        Consecutive faulted samples that enter the safe state (a whole number >= 1); a faulted sample
+        after a gap counts the sample periods the gap spans.
     stop_time : float
         [s] > 0, the joints' velocities decay as ``q'' = -q' / stop_time`` in the safe state; a
         controller refuses one shorter than two of its sample times (:meth:`check_sampling`).
@@ -138,11 +144,12 @@ class FaultMonitor:
         if on_time:
             self.state[self._faults] = 0.0
 
-    def faulted(self, passed: bool, reaction: FaultReaction, torque: np.ndarray, q) -> bool:
-        """A faulted sample at ``q`` (counted when time ``passed``); True when it enters the safe state:
-        the arm then stops and holds where it is, and the torque it has (``torque``) is released from here."""
+    def faulted(self, passed: bool, reaction: FaultReaction, torque: np.ndarray, q, periods: float) -> bool:
+        """A faulted sample at ``q``, ``periods`` sample periods after the last served (counted when time
+        ``passed``, :func:`counted`); True when it enters the safe state: the arm then stops and holds where
+        it is, and the torque it has (``torque``) is released from here."""
         if passed:
-            self.state[self._faults] += 1.0
+            self.state[self._faults] = counted(self.state[self._faults], periods, reaction.fault_samples)
         if self.state[self._faults] < reaction.fault_samples:
             return False
         n = self.n
@@ -187,6 +194,26 @@ class FaultMonitor:
         got = _finite_vector(q, self.n)
         if got is not None:
             self.state[self.n:2 * self.n] = got
+
+
+def counted(count: float, periods: float, limit: float) -> float:
+    """The fault count after a faulted sample ``periods`` sample periods after the last served: ``count + 1``,
+    or the sample instants the gap spans where more (``periods`` to the nearest whole: a gap of whole
+    periods counts them whatever its rounding; a NaN counts none), at most ``limit`` (the standalone C's
+    ``counted``, the same numbers)."""
+    n, spanned = count + 1.0, float(np.floor(periods + 0.5))
+    if spanned > n:
+        n = spanned
+    return min(n, float(limit))
+
+
+def sample_periods(t, clock: float | None, T: float) -> float:
+    """The sample periods ``T`` from the last sample served at ``clock`` to ``t`` (0 without a clock, a
+    finite ``t`` or a valid ``T``)."""
+    t = finite_time(t)
+    if clock is None or t is None or not (isinstance(T, float) and isfinite(T) and T > 0):
+        return 0.0
+    return (t - clock) / T
 
 
 def finite_time(t) -> float | None:
