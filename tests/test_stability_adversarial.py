@@ -295,6 +295,28 @@ def test_bad_gain_requests_are_refused_in_words(kwargs, match):
         hybrid.suggest_gains(exp, **kwargs)
 
 
+@pytest.mark.parametrize("not_an_experiment", ["paper", None, {"sample_time": 0.01}, hybrid.paper_experiment])
+@pytest.mark.parametrize("call", [
+    lambda x: hybrid.stability(x),
+    lambda x: hybrid.stability_map(x, {"sample_time": [0.01]}),
+    lambda x: hybrid.suggest_gains(x, bandwidth_hz=3.0),
+    lambda x: hybrid.tune(x, "rms_force_error_N", [{"model_error": 0.1}]),
+], ids=["stability", "stability_map", "suggest_gains", "tune"])
+def test_what_is_not_an_experiment_is_refused_in_words(call, not_an_experiment):
+    # before anything reads its settings (an AttributeError otherwise)
+    with pytest.raises(hybrid.HybridError, match=f"takes an experiment.*got {type(not_an_experiment).__name__}"):
+        call(not_an_experiment)
+
+
+@pytest.mark.parametrize("margins", ["no", 0, None, np.float64(1.0)])
+def test_margins_asked_for_by_something_not_a_bool_are_refused(margins):
+    # "no" would read as true: the margins worked out though the caller asked for none
+    with pytest.raises(hybrid.HybridError, match="give True .* or False"):
+        hybrid.stability(hybrid.paper_experiment(), margins=margins)
+    for flag in (True, False, np.bool_(False)):
+        assert np.isnan(hybrid.stability(hybrid.paper_experiment(), margins=flag).loop("n").gain_margin_db) != flag
+
+
 def test_numpy_numbers_and_any_mapping_ask_for_the_same_gains():
     from types import MappingProxyType
 

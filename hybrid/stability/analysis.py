@@ -15,7 +15,14 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.stability.experiment_loops import MATRICES, arm_terms_at_start, axis_names, check_delay, loop_numbers
+from hybrid.stability.experiment_loops import (
+    MATRICES,
+    arm_terms_at_start,
+    axis_names,
+    check_delay,
+    check_experiment,
+    loop_numbers,
+)
 from hybrid.stability.model import Structure, closed_loop
 from hybrid.validate import checked_keywords
 
@@ -197,6 +204,9 @@ def stability(exp, *, margins: bool = True) -> Stability:
     >>> report.stable, round(report.loop("n").spectral_radius, 3)
     (True, 0.888)
     """
+    check_experiment(exp, "stability")
+    if not isinstance(margins, (bool, np.bool_)):
+        raise HybridError(f"margins = {margins!r}; give True (work out the margins) or False")
     st, p, names = _loops(exp)
     return stability_of(st, p, names, margins=margins)
 
