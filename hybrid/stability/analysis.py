@@ -8,6 +8,7 @@ whole closed loop, every axis coupled through the arm's inertia between samples,
 
 from __future__ import annotations
 
+import cmath
 import math
 import warnings
 from dataclasses import dataclass, replace
@@ -15,7 +16,14 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from hybrid.errors import HybridError
-from hybrid.stability.experiment_loops import MATRICES, arm_terms_at_start, axis_names, check_delay, loop_numbers
+from hybrid.stability.experiment_loops import (
+    MATRICES,
+    arm_terms_at_start,
+    axis_names,
+    check_delay,
+    check_experiment,
+    loop_numbers,
+)
 from hybrid.stability.model import Structure, closed_loop
 from hybrid.validate import checked_keywords
 
@@ -38,7 +46,7 @@ class LoopStability:
     damping, natural_frequency_hz : float
         The dominant pole's damping ratio and natural frequency [Hz] (of ``s = ln(z) / T``).
     gain_margin_db, phase_margin_deg : float
-        The loop's gain margin [dB] (how far its gain may rise: :func:`gain_margin`) and phase margin
+        The loop's gain margin [dB] (how far its gain may rise or fall: :func:`gain_margin`) and phase margin
         [deg], cut at the command ``a`` (``inf``: none; NaN for an unstable loop or without margins).
     delay_margin_samples : int
         How many more whole samples the force reading may be late with the loop still stable (the law's
@@ -197,6 +205,9 @@ def stability(exp, *, margins: bool = True) -> Stability:
     >>> report.stable, round(report.loop("n").spectral_radius, 3)
     (True, 0.888)
     """
+    check_experiment(exp, "stability")
+    if not isinstance(margins, (bool, np.bool_)):
+        raise HybridError(f"margins = {margins!r}; give True (work out the margins) or False")
     st, p, names = _loops(exp)
     return stability_of(st, p, names, margins=margins)
 
@@ -282,16 +293,46 @@ def _dominant(poles: np.ndarray, T: float) -> tuple[float, float]:
 
 
 def _phase_margin(m: dict, T: float) -> float:
-    """The phase margin [deg] of one axis's loop cut at its command (python-control); ``inf``: none."""
+    """The phase margin [deg] of one axis's loop cut at its command (python-control); ``inf``: none.
+
+    python-control finds the gain crossings as the roots of a polynomial, which for these loops (integrators,
+    a delay, a lightly damped sensor) holds spurious ones (``|L|`` = 13 there on the paper's velocity loop)
+    and inexact ones (``|L|`` = 0.985 at 1 ms): each is taken as a guess, refined on the loop's own response
+    (:func:`_crossing_near`), and dropped when no crossing is near it.
+    """
     import control
 
     A, B, C = m["A_open"], m["B_open"], m["command"][..., :m["A_open"].shape[-1]]
     loop = control.ss(A, -B, C, np.zeros((1, 1)), dt=T)  # the loop closes with u = C X: positive feedback
     with np.errstate(all="ignore"), warnings.catch_warnings():
         warnings.simplefilter("ignore")  # its note that it computes on the frequency response: the same margin
-        _, pm, _, _, _, _ = control.stability_margins(loop, returnall=True)
-    phases = [abs(p) for p in np.atleast_1d(pm) if np.isfinite(p)]
-    return min(phases) if phases else math.inf
+        _, _, _, _, guesses, _ = control.stability_margins(loop, returnall=True)
+
+        def response(w: float) -> complex:  # L(e^{jwT}) closed by negative feedback: margin = 180 - |phase|
+            return complex(np.asarray(loop(np.exp(1j * w * T))).reshape(-1)[0])
+
+        found = [_crossing_near(response, w, math.pi / T) for w in np.atleast_1d(guesses) if np.isfinite(w) and w > 0]
+        phases = [180.0 - abs(math.degrees(cmath.phase(response(w)))) for w in found if w is not None]
+    return float(min(phases)) if phases else math.inf
+
+
+def _crossing_near(response, w: float, nyquist: float) -> float | None:
+    """The frequency nearest ``w`` (within 30 %, below ``nyquist``) where ``|response|`` crosses 1, to
+    rounding; None when there is none."""
+    def above(x: float) -> bool:
+        return abs(response(x)) > 1.0
+
+    here = above(w)
+    for k in range(1, 15):  # outward in steps of 2 %, both ways
+        for other in (w * 1.02 ** k, w / 1.02 ** k):
+            if other < nyquist and above(other) != here:
+                lo, hi = sorted((w, other))
+                low_above = above(lo)
+                for _ in range(60):
+                    mid = 0.5 * (lo + hi)
+                    lo, hi = (mid, hi) if above(mid) == low_above else (lo, mid)
+                return lo
+    return None
 
 
 #: the largest loop gain factor :func:`gain_margin` looks for
@@ -299,24 +340,38 @@ MOST_GAIN = 1e3
 
 
 def gain_margin(st: Structure, p: dict) -> float:
-    """The factor by which the loop's gain may rise with the loop still stable: the command ``a`` times
-    it (``M``, a controller's model that much heavier than the arm); ``inf`` past :data:`MOST_GAIN`.
+    """The factor by which the loop's gain may rise, or fall, with the loop still stable (the smaller of the
+    two, as a factor >= 1): the command ``a`` times it (``M``, a controller's model that much heavier, or
+    lighter, than the arm); ``inf`` past :data:`MOST_GAIN` both ways.
 
-    Found on the model itself (bisection on the spectral radius), exact where a loop transfer
-    function's phase crossings (at the Nyquist frequency among them) are easily missed.
+    A loop with integrals is stable only above a gain too (a PI² loop needs ``KPv KIv`` above
+    ``KI2v``): a margin that looked up only would miss it. Found on the model itself (bisection on the
+    spectral radius), exact where a loop transfer function's phase crossings (at the Nyquist frequency
+    among them) are easily missed.
     """
-    def radius(k: float) -> float:
-        return loop_radius(st, dict(p, gain=np.asarray(p["gain"], float) * k))
+    def radius(k: np.ndarray) -> np.ndarray:  # of the loop at each gain factor of k, in one batch
+        q = {name: np.broadcast_to(np.asarray(v, float), k.shape + np.shape(v)) for name, v in p.items()}
+        gain = q["gain"] * k.reshape(k.shape + (1,) * np.ndim(p["gain"]))
+        return np.atleast_1d(loop_radius(st, dict(q, gain=gain)))
 
-    lo, hi = 1.0, 1.25
-    while radius(hi) < 1.0:
-        lo, hi = hi, hi * 1.25
-        if hi > MOST_GAIN:
-            return math.inf
-    for _ in range(40):
-        mid = math.sqrt(lo * hi)
-        lo, hi = (mid, hi) if radius(mid) < 1.0 else (lo, mid)
-    return lo
+    down = _stable_through(radius, 0.8)
+    return min(_stable_through(radius, 1.25), 1.0 / down if down > 0 else math.inf)
+
+
+def _stable_through(radius, step: float) -> float:
+    """The gain factor up to which (``step`` > 1) or down to which (``step`` < 1) the loop stays stable:
+    its powers of ``step``, then the bracket they find narrowed sixteenfold ten times (to about 1e-12);
+    ``inf`` (``0``) past :data:`MOST_GAIN` (its inverse)."""
+    steps = step ** np.arange(1, math.floor(math.log(MOST_GAIN) / abs(math.log(step))) + 1)
+    lost = np.flatnonzero(~(radius(steps) < 1.0))
+    if not lost.size:
+        return math.inf if step > 1 else 0.0
+    lo, hi = (steps[lost[0] - 1] if lost[0] else 1.0), steps[lost[0]]
+    for _ in range(10):
+        inner = lo * (hi / lo) ** (np.arange(1, 16) / 16)
+        lost = np.flatnonzero(~(radius(inner) < 1.0))
+        lo, hi = (inner[lost[0] - 1] if lost[0] else lo, inner[lost[0]]) if lost.size else (inner[-1], hi)
+    return float(lo)
 
 
 #: how many extra samples of the reading's delay :func:`delay_margin` tries

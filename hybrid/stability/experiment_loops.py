@@ -15,6 +15,7 @@ import numpy as np
 from hybrid.control.schemes import scheme_of
 from hybrid.control.wrench_sensor import filter_coefficients
 from hybrid.errors import HybridError
+from hybrid.experiments.settings import RunSettings
 from hybrid.geometry.task_axes import check_axes, frame_rows
 from hybrid.plants.contact import lag_pole
 from hybrid.stability.model import Structure
@@ -38,6 +39,14 @@ def check_delay(delay: int) -> None:
         raise HybridError(f"Sensor delay_samples = {delay} is beyond the {MOST_DELAY_SAMPLES} samples the sampled "
                           "loops' model takes (hybrid.stability, and the experiment's check: give a shorter delay, "
                           "or allow_unstable=True to run it unchecked)")
+
+
+def check_experiment(exp, what: str) -> None:
+    """Refuse an ``exp`` that is not an experiment, in words, before any of its settings is read (the
+    experiment's base, :class:`~hybrid.experiments.settings.RunSettings`: its own module imports this one)."""
+    if not isinstance(exp, RunSettings):
+        raise HybridError(f"{what}() takes an experiment (e.g. hybrid.paper_experiment()), got "
+                          f"{type(exp).__name__}; make one with a factory or hybrid.Experiment(...)")
 
 
 def arm_terms_at_start(exp) -> dict[str, np.ndarray]:

@@ -20,7 +20,7 @@ import numpy as np
 
 from hybrid.errors import HybridError
 from hybrid.stability.analysis import Stability, _poles, axis_alone, stability
-from hybrid.stability.experiment_loops import loop_numbers
+from hybrid.stability.experiment_loops import check_experiment, loop_numbers
 from hybrid.stability.model import closed_loop
 from hybrid.validate import checked_keywords, shown
 
@@ -95,6 +95,7 @@ def suggest_gains(exp, bandwidth_hz, damping: float = 0.7, integral_ratio: float
     >>> round(s.gains.KPf, 3), s.stability.stable
     (0.937, True)
     """
+    check_experiment(exp, "suggest_gains")
     wanted = _wanted(bandwidth_hz)
     if not _number(damping) or damping <= 0:
         raise HybridError(f"damping = {shown(damping, 40)}; give the pole pair's damping ratio, a number > 0")

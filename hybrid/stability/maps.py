@@ -20,7 +20,7 @@ from hybrid.errors import HybridError
 from hybrid.experiments.settings import setting_path
 from hybrid.plants.contact import fastest_mode, lag_pole
 from hybrid.stability.analysis import loop_radius
-from hybrid.stability.experiment_loops import check_delay, loop_numbers
+from hybrid.stability.experiment_loops import check_delay, check_experiment, loop_numbers
 from hybrid.sweeps.space import apply
 from hybrid.validate import check_size, checked_keywords, shown
 
@@ -119,6 +119,7 @@ def stability_map(exp, over: Mapping) -> StabilityMap:
     >>> m.table["stable"].tolist()
     [True, True, True, True, True, False]
     """
+    check_experiment(exp, "stability_map")
     if not isinstance(over, Mapping) or not over:
         raise HybridError(f"over = {shown(over, 60)}; give settings and their values, e.g. "
                           "{'sensor.stiffness': [1e3, 1e4, 1e5], 'sample_time': [0.001, 0.01]}")

@@ -1,9 +1,10 @@
 """Whether many candidate gains keep a stability margin on a set of settings, in a few batched evaluations.
 
-A loop keeps a gain margin of ``m`` dB when it stays stable with its gain raised by any factor up to
-``k_m = 10^(m/20)``; :func:`hybrid.stability` finds the factor at which it stops (its
-:func:`~hybrid.stability.analysis.gain_margin`, stepping by 1.25 then bisecting). Here the same loops, each
-task axis alone, are judged at the steps that search takes below ``k_m`` and at ``k_m`` itself, and with
+A loop keeps a gain margin of ``m`` dB when it stays stable with its gain raised or lowered by any factor up
+to ``k_m = 10^(m/20)``; :func:`hybrid.stability` finds the factors at which it stops (its
+:func:`~hybrid.stability.analysis.gain_margin`, stepping by 1.25 then bisecting, each way). Here the same
+loops, each task axis alone, are judged at the steps that search takes below ``k_m`` and at ``k_m`` itself
+(and at their inverses), and with
 their reading late by each whole sample up to the delay margin asked; the whole closed loop at the gains
 themselves. The largest spectral radius of all those is the *margin radius*: below 1, the margins hold.
 Every candidate on every setting of one model structure is one batch (:mod:`hybrid.stability.model`'s
@@ -72,12 +73,14 @@ class MarginCheck:
 
     @property
     def factors(self) -> np.ndarray:
-        """The gain factors each loop is judged at: 1, the search's steps below ``k_m``, ``k_m``."""
+        """The gain factors each loop is judged at: 1, the search's steps below ``k_m``, ``k_m``, and the
+        inverse of each (the margin holds both ways: a loop with integrals needs a gain high enough too)."""
         top = 10 ** (self.min_gain_margin_db / 20)
         steps = [1.0]
         while steps[-1] * STEP < top * (1 - 1e-12):
             steps.append(steps[-1] * STEP)
-        return np.array(steps + ([top] if top > 1.0 else []))
+        up = np.array(steps + ([top] if top > 1.0 else []))
+        return np.concatenate([up, 1.0 / up[1:]])
 
     def radius(self, gains: dict[str, np.ndarray]) -> np.ndarray:
         """The margin radius (module docstring) of each candidate on each setting.

@@ -27,6 +27,7 @@ import numpy as np
 
 from hybrid.control.loops import Gains
 from hybrid.errors import HybridError
+from hybrid.stability.experiment_loops import check_experiment
 from hybrid.stability.margin_check import MarginCheck
 from hybrid.stability.tuning_problem import (
     check_aggregate,
@@ -286,6 +287,7 @@ def tune(exp, objective, scenarios=None, *, distributions=None, samples: int = 1
     (True, True)
     """
     t0 = time.perf_counter()
+    check_experiment(exp, "tune")
     budget = _whole("budget", budget, 1)
     seed = _whole("seed", seed, 0)
     min_delay_margin_samples = _whole("min_delay_margin_samples", min_delay_margin_samples, 0)
