@@ -36,6 +36,13 @@ The choices, and why:
   a step (a missed sample, a clock's jump) are refused, with the fix (resample the log onto a uniform
   grid, or cut it at the gap); within it, the samples are taken as uniform at the mean step (a timing
   error of ``JITTER h`` is a position error of ``q' JITTER h``, 2e-5 rad at 1 rad/s and 1 kHz).
+- **The Coulomb friction's smooth sign filtered too** (given the joints' ``coulomb_speed``): the filter
+  takes from the measured torque the fast content of ``F_c tanh(q' / v_s)`` where a joint's speed
+  crosses zero (about ``v_s / |q''|`` long: 25 ms at 0.05 rad/s and 2 rad/s^2, content up to the
+  cutoff's 20 Hz), which ``tanh`` of the filtered ``q'`` keeps. Unmatched, an exact log of the UR5
+  with Coulomb friction of 2 % of its efforts gave its frictions 2-16 % off and an inertia many times
+  off; ``tanh(q' / v_s)`` filtered by the same filter (``sign``) matches the torques: every base
+  parameter within 2e-4 of its size, as without friction.
 
 ``smooth=False`` takes the log as it is (no filter, no thinning): signals already filtered, or exact
 ones (a simulation's); ``q'`` and ``q''`` not given are then differences of the raw ``q``.
@@ -92,6 +99,9 @@ class LogSignals:
         Every ``step``-th sample is kept.
     log_samples : int
         The log's samples.
+    sign : numpy.ndarray or None
+        ``(M, n)``: the Coulomb friction's smooth sign ``tanh(q' / v_s)`` filtered as the torques were;
+        None where the log is taken as it is (or no ``coulomb_speed`` was given).
     """
 
     q: np.ndarray
@@ -104,6 +114,7 @@ class LogSignals:
     edge: int
     step: int
     log_samples: int
+    sign: np.ndarray | None = None
 
 
 def _real(name: str, value, what: str) -> np.ndarray:
@@ -209,7 +220,7 @@ def _edge(sos: np.ndarray) -> int:
 
 
 def log_signals(robot_joints, t, q, tau, *, qd=None, qdd=None, cutoff_hz=None, smooth: bool = True,
-                least: int = 1) -> LogSignals:
+                least: int = 1, coulomb_speed=None) -> LogSignals:
     """The log's samples ready for a fit: checked, filtered, differentiated, edges dropped, thinned (see
     the module's description).
 
@@ -231,6 +242,9 @@ def log_signals(robot_joints, t, q, tau, *, qd=None, qdd=None, cutoff_hz=None, s
     least : int
         The samples the fit must keep at the least, after the edges and the thinning (the fit passes its
         base parameters' count: a margin over the ``p / n`` samples its ``p`` unknowns need).
+    coulomb_speed : sequence of float or None
+        The joints' smooth-sign speeds ``v_s`` [rad/s or m/s]: the Coulomb friction's sign
+        ``tanh(q' / v_s)`` is filtered as the torques are (``sign``); None: not.
 
     Returns
     -------
@@ -295,8 +309,23 @@ def log_signals(robot_joints, t, q, tau, *, qd=None, qdd=None, cutoff_hz=None, s
         picked["qd"] = derivative(arrays["q"], h, 1, rows)
     if "qdd" not in picked:
         picked["qdd"] = derivative(arrays["qd"], h, 1, rows) if qd is not None else derivative(arrays["q"], h, 2, rows)
+    sign = None
+    if sos is not None and coulomb_speed is not None:
+        sign = _filtered(signal, sos, np.tanh(_speed(arrays, h) / np.asarray(coulomb_speed, float)))[rows]
     return LogSignals(**picked, rows=rows, sample_time=h, cutoff_hz=fc, edge=edge, step=step,
-                      log_samples=N)
+                      log_samples=N, sign=sign)
+
+
+def _speed(arrays: dict, h: float) -> np.ndarray:
+    """The filtered log's ``q'`` at every sample: measured, or central differences of ``q`` (the ``m`` samples
+    at each end, which the stencil does not cover, take their neighbour's: the filter's error from them has
+    decayed at the rows kept, the edge's)."""
+    if "qd" in arrays:
+        return arrays["qd"]
+    qd = derivative(arrays["q"], h, 1)
+    m = STENCIL
+    qd[:m], qd[len(qd) - m:] = qd[m], qd[len(qd) - m - 1]
+    return qd
 
 
 def _filtered(signal, sos: np.ndarray, x: np.ndarray) -> np.ndarray:
