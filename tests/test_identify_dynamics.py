@@ -309,8 +309,10 @@ def test_bad_logs_are_refused_saying_what_to_do(arms, log):
             hybrid.identify_dynamics(nominal, *args, **kw)
         assert len(str(e.value).splitlines()[0]) <= 240
 
-    refused(r"the log has 400 samples; filtering at 20 Hz drops 292 at each end and the fit needs 54 more: give at "
-            r"least 638 samples \(a longer log\), or a higher cutoff_hz", t[:400], q[:400], tau[:400])
+    # 292 dropped at each end, then 54 samples 25 apart (1 kHz thinned to twice the 20 Hz cutoff)
+    refused(r"the log has 400 samples; filtering at 20 Hz drops 292 at each end and the fit needs 54 more 25 apart "
+            r"\(twice the cutoff\): give at least 1934 samples \(a longer log\), or a higher cutoff_hz",
+            t[:400], q[:400], tau[:400])
     refused(r"t, q, tau have 5000, 5000, 4999 samples; give one row of each per time", t, q, tau[:-1])
     bad = q.copy()
     bad[412, 2] = np.nan
@@ -383,6 +385,26 @@ def test_real_arms_far_from_their_urdf_are_not_refused_as_other_units(make):
             tau = torques(arm, q, qd, qdd)
             found = hybrid.identify_dynamics(nominal, t, q, tau, consistent=False)
             assert found.residual_rms.max() < 1e-2 * np.abs(tau).max()
+
+
+@pytest.mark.parametrize("seconds", [1.0, 1.5])
+def test_a_log_too_short_for_independent_samples_is_refused(arms, seconds):
+    """A log long enough for the filter's edges but not for the fit's samples twice the cutoff apart was
+    thinned closer: their noise correlated, the standard deviations came out several times too small (of the
+    UR5's 54 base parameters 23-32 more than 3 of them off, at 1 s; parameters not named poorly excited 30 %
+    off and more). Refused; at the length it asks for, the estimate is within its standard deviations."""
+    nominal, true = arms
+    rng = np.random.default_rng(0)
+    t, q, qd, qdd = multisine(nominal, 1000.0, seconds, seed=4)
+    effort = np.asarray(nominal.limits.effort)
+    tau = torques(true, q, qd, qdd) + rng.normal(0, 1, q.shape) * 0.005 * effort
+    with pytest.raises(hybrid.HybridError, match=r"the fit needs 54 more 25 apart .*: give at least 1934 samples"):
+        hybrid.identify_dynamics(nominal, t, q, tau, consistent=False)
+    t, q, qd, qdd = multisine(nominal, 1000.0, 1.934, seed=4)
+    tau = torques(true, q, qd, qdd) + rng.normal(0, 1, q.shape) * 0.005 * effort
+    found = hybrid.identify_dynamics(nominal, t, q, tau, consistent=False)
+    want = found.base.of(hybrid.linear_parameters(true))
+    assert (np.abs(found.estimate - want) > 3 * found.std).sum() <= 2
 
 
 @pytest.mark.parametrize("kind", ["complex", "bool", "text"])
@@ -516,7 +538,7 @@ def test_a_long_log_takes_a_few_times_its_own_memory():
     robot = hybrid.ur5()
     t, q, _, _ = multisine(robot, 20000.0, 10.0, seed=3)
     tau = q.copy()
-    log_signals.log_signals(robot.joint_names, t[:30000], q[:30000], tau[:30000], least=60)  # imports, caches
+    log_signals.log_signals(robot.joint_names, t[:50000], q[:50000], tau[:50000], least=60)  # imports, caches
     tracemalloc.start()
     try:
         signals = log_signals.log_signals(robot.joint_names, t, q, tau, least=60)
