@@ -29,7 +29,7 @@ from hybrid.errors import HybridError
 from hybrid.models.base_parameters import BaseParameters, base_parameters
 from hybrid.models.consistent_parameters import consistent_parameters, link_scales, link_sizes
 from hybrid.models.log_signals import LogSignals, log_signals
-from hybrid.models.regressor import linear_parameters, regressor, with_linear_parameters
+from hybrid.models.regressor import LINK_PARAMETERS, linear_parameters, regressor, with_linear_parameters
 from hybrid.models.robot import Robot, as_robot
 from hybrid.validate import checked_keywords, listed, listed_in_full
 
@@ -49,6 +49,14 @@ POORLY_EXCITED = 0.1
 SIZE_FLOOR = 1e-2
 #: samples per native regressor call and QR block: memory bounded whatever the log's length
 CHUNK = 8192
+#: the logged torques are refused as in other units when the factor that best scales the nominal model's
+#: torques onto them is not within this factor of 1 (an arm perturbed by 30 %, with friction its URDF lacks,
+#: measured 0.9-1.2; N mm or mN m give 1000, kN m 1e-3)
+UNITS_FACTOR = 10.0
+#: a joint's logged torques are refused as of the opposite sign when their correlation with the nominal
+#: model's is below this (measured on arms 30 % off with friction and payloads the model lacks: -0.06 at the
+#: least, on a wrist; a flip is caught on the joints the model predicts with a correlation above 0.5)
+AGAINST = -0.5
 
 
 @checked_keywords
@@ -177,6 +185,46 @@ def unexcited(W: np.ndarray, names, below: float = UNEXCITED) -> tuple[str, ...]
     return tuple(name for name, x in zip(names, share) if x > UNEXCITED_SHARE)
 
 
+def _against_nominal(robot: Robot, signals: LogSignals, factors: np.ndarray, nominal: np.ndarray) -> None:
+    """Refuse a log that is not the nominal arm's in the library's units: positions beyond the joints' limits
+    by more than their range (degrees, or another zero), torques scaled from the nominal model's by more than
+    :data:`UNITS_FACTOR` (other units), or a joint's torques running against the nominal model's (correlation
+    below :data:`AGAINST`: its sign flipped). ``factors``' inner products are those of the regressor's rows
+    and the torques."""
+    joints = robot.joint_names
+    if robot.limits is not None:
+        lower, upper = (np.asarray(x, float) for x in (robot.limits.lower, robot.limits.upper))
+        span = upper - lower
+        beyond = (signals.q < lower - span) | (signals.q > upper + span)
+        if beyond.any():
+            k, j = np.argwhere(beyond)[0]
+            raise HybridError(f"q[{signals.rows[k]}, {j}] = {signals.q[k, j]:.4g} (joint {joints[j]}) is beyond the "
+                              f"joint's limits [{lower[j]:.4g}, {upper[j]:.4g}] by more than their span; give the "
+                              "positions in radians and metres (numpy.radians of degrees), about the URDF's zero")
+    p = len(nominal)
+    predicted = factors[:, :, :p] @ nominal  # per joint, ||W_j pi_0|| and <W_j pi_0, tau_j> are these vectors'
+    measured = factors[:, :, p]
+    power = (predicted**2).sum(axis=1)
+    if power.sum() <= 0:
+        return
+    scale = float((predicted * measured).sum() / power.sum())
+    if scale < 0:
+        raise HybridError(f"the logged torques are {scale:.3g} times the nominal model's along the log's motion (their "
+                          "sign is flipped); give each joint's torque on its link, positive along its axis (-tau)")
+    if not 1 / UNITS_FACTOR <= scale <= UNITS_FACTOR:
+        raise HybridError(f"the logged torques are {scale:.3g} times the nominal model's along the log's motion; "
+                          "give them in N m and N, as the URDF's (N mm or mN m: / 1000), of the same arm and joints")
+    # a joint's correlation with the nominal model: 0.7-1 where the model holds, down to -0.1 on wrists whose
+    # torques are mostly friction or a payload the model lacks; a sign flipped where it holds gives -0.7 to -1
+    norms = np.sqrt(power * (measured**2).sum(axis=1))
+    correlation = (predicted * measured).sum(axis=1) / np.where(norms > 0, norms, np.inf)
+    against = (correlation < AGAINST) & (power > 1e-12 * power.max())  # (a joint the model gives no torque: rounding)
+    if against.any():
+        j = int(np.argmax(against))
+        raise HybridError(f"joint {joints[j]}'s logged torques run against the nominal model's along the log's motion "
+                          f"(their sign flipped?); give each joint's torque positive along its axis (-tau[:, {j}])")
+
+
 def joint_factors(robot: Robot, base: BaseParameters, signals: LogSignals) -> np.ndarray:
     """``(n, p + 1, p + 1)``: per joint ``j`` the triangular factor of ``[W_j t_j]`` (its rows of the
     base regressor and its torques), folded in a block of :data:`CHUNK` samples at a time; ``|F_j [x, -1]|``
@@ -186,6 +234,9 @@ def joint_factors(robot: Robot, base: BaseParameters, signals: LogSignals) -> np
     for start in range(0, len(signals.q), CHUNK):
         part = slice(start, start + CHUNK)
         Y, _ = regressor(robot, signals.q[part], signals.qd[part], signals.qdd[part])
+        if signals.sign is not None:  # the Coulomb columns filtered as the torques were (log_signals)
+            joints = np.arange(n)
+            Y[:, joints, LINK_PARAMETERS * n + n + joints] = signals.sign[part]
         rows = np.concatenate([base.regressor(Y).transpose(1, 0, 2), signals.tau[part].T[..., None]], axis=2)
         # one joint at a time: NumPy's batched QR is many times slower than its calls one by one
         factors = [np.linalg.qr(np.vstack([f, r]), mode="r") for f, r in zip(factors, rows)]
@@ -199,7 +250,7 @@ def _scales(robot: Robot, base: BaseParameters, signals: LogSignals, torque: np.
     in the log (its viscosity's RMS speed ``speed``, its Coulomb friction's RMS smooth sign, its offset's 1)."""
     per_link = link_scales(*link_sizes(linear_parameters(robot), robot.n)).ravel()
     n = robot.n
-    sign = np.tanh(signals.qd / np.asarray(robot.coulomb_speed))
+    sign = np.tanh(signals.qd / np.asarray(robot.coulomb_speed)) if signals.sign is None else signals.sign
     column = {"damping": speed, "coulomb": np.sqrt((sign**2).mean(axis=0)), "offset": np.ones(n)}
     joint = [torque[k % n] / max(column[name.partition("[")[0]][k % n], 1e-300)
              for k, name in enumerate(base.names[len(per_link):])]
@@ -266,8 +317,11 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
         Arrays of the wrong shape or lengths, or not of real numbers (complex, boolean, text), a table (a
         DataFrame) of the joints in another order than the robot's, a sample not finite (named by its row and
         joint), times not strictly increasing or not uniform or sampled below 10 Hz (times in milliseconds),
-        a cutoff not below the Nyquist frequency, a log too short for the filter and the parameters, or a
-        trajectory that does not excite every base parameter (named).
+        a cutoff not below the Nyquist frequency, a log too short for the filter and the parameters, a log
+        not in the nominal arm's units or conventions (positions beyond the joints' limits by more than
+        their span, as in degrees; torques more than 10 times larger or smaller than the nominal model's
+        along the log, or of the opposite sign, all or one joint's), or a trajectory that does not excite
+        every base parameter (named).
 
     Examples
     --------
@@ -304,9 +358,12 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
     base = base_parameters(robot)
     p, n = len(base.independent), robot.n
     names = tuple(base.names[i] for i in base.independent)
-    signals = log_signals(robot.joint_names, t, q, tau, qd=qd, qdd=qdd, cutoff_hz=cutoff_hz, smooth=smooth, least=p)
+    signals = log_signals(robot.joint_names, t, q, tau, qd=qd, qdd=qdd, cutoff_hz=cutoff_hz, smooth=smooth, least=p,
+                          coulomb_speed=robot.coulomb_speed)
     M = len(signals.q)
     factors = joint_factors(robot, base, signals)
+    nominal = base.of(linear_parameters(robot))
+    _against_nominal(robot, signals, factors, nominal)
     whole = np.linalg.qr(factors.reshape(-1, p + 1), mode="r")
     R, z = whole[:p, :p], whole[:p, p]
     s = np.linalg.svd(R, compute_uv=False)
@@ -339,7 +396,6 @@ def identify_dynamics(robot: Robot, t, q, tau, *, qd=None, qdd=None, cutoff_hz=N
     bread = inverse @ inverse.T
     meat = np.einsum("j,jai,jak->ik", variance * weights**4, factors[:, :, :p], factors[:, :, :p])
     std = np.sqrt(np.clip(np.diag(bread @ meat @ bread), 0.0, None))
-    nominal = base.of(linear_parameters(robot))
     floor = SIZE_FLOOR * _scales(robot, base, signals, torque_rms, speed_rms)
     size = np.maximum(np.maximum(np.abs(estimate), np.abs(nominal)), floor)
     poorly = tuple(name for name, sd, v in zip(names, std, size) if sd > POORLY_EXCITED * v)
