@@ -210,8 +210,8 @@ def counted(count: float, periods: float, limit: float) -> float:
 def sample_periods(t, clock: float | None, T: float) -> float:
     """The sample periods ``T`` from the last sample served at ``clock`` to ``t`` (0 without a clock, a
     finite ``t`` or a valid ``T``)."""
-    t = finite_time(t)
-    if clock is None or t is None or not (isinstance(T, float) and isfinite(T) and T > 0):
+    t, T = finite_time(t), finite_time(T)
+    if clock is None or t is None or T is None or T <= 0:
         return 0.0
     return (t - clock) / T
 
