@@ -213,8 +213,8 @@ def _against_nominal(robot: Robot, signals: LogSignals, factors: np.ndarray, nom
                           "sign is flipped); give each joint's torque on its link, positive along its axis (-tau)")
     if not 1 / UNITS_FACTOR <= scale <= UNITS_FACTOR:
         raise HybridError(f"the logged torques are {scale:.3g} times the nominal model's along the log's motion; "
-                          "give them in N m and N, as the URDF's (N mm or mN m: / 1000), of the same arm and joints "
-                          "(a URDF's placeholder masses: give the robot rough ones, robot.with_link(joint, mass=...))")
+                          "give them in N m and N (N mm or mN m: / 1000) of the URDF's arm and joints, or its "
+                          "placeholder masses rough values (robot.with_link)")
     # a joint's correlation with the nominal model: 0.7-1 where the model holds, down to -0.1 on wrists whose
     # torques are mostly friction or a payload the model lacks; a sign flipped where it holds gives -0.7 to -1
     norms = np.sqrt(power * (measured**2).sum(axis=1))
