@@ -269,6 +269,73 @@ def test_without_the_timing_check_every_faulted_sample_counts(pair):
         py.timing_tolerance, c.c.timing_tolerance = tolerances
 
 
+def _agree(py, c, samples, script) -> list[str]:
+    """Run ``script`` (``(t in sample periods, kind, settings)``; settings, if any, set on both sides first:
+    ``timing_tolerance`` None in Python is -1 in C) through both from a reset, the settings restored after;
+    every status, torque and fault state equal. Returns the statuses."""
+    T = samples[1][0] - samples[0][0]
+    kept = {name: getattr(py, name) for name in ("timing_tolerance", "sample_time")}
+    kept_c = {name: getattr(c.c, name) for name in ("timing_tolerance", "sample_time")}
+    py.reset()
+    c.lib.fr_controller_reset(c.c)
+    statuses = []
+    try:
+        for k, (at, kind, settings) in enumerate(script):
+            for name, value in (settings or {}).items():
+                setattr(py, name, value)
+                setattr(c.c, name, -1.0 if value is None else value)
+            t, q, qd, w = _sample(samples, k, kind, at * T - T)
+            status, tau = python_status(py, t, q, qd, w)
+            code, tau_c = c.step(t, q, qd, w)
+            assert c.name(code) == status, (k, status, c.name(code))
+            np.testing.assert_allclose(tau_c, tau, rtol=1e-9, atol=1e-9)
+            np.testing.assert_allclose(py.fault_state, np.frombuffer(c.ffi.buffer(c.c.fault_state), float),
+                                       rtol=1e-9, atol=1e-9)
+            statuses.append(status)
+    finally:
+        for name, value in kept.items():
+            setattr(py, name, value)
+        for name, value in kept_c.items():
+            setattr(c.c, name, value)
+    return statuses
+
+
+def test_the_gap_rule_holds_alike_where_the_timing_is_not_trusted(pair):
+    """The gap counts its periods only with the timing checked and every number valid, C and Python alike:
+    with the check off a timestamp far ahead counts one; a refused setting counts one whatever the gap; an
+    invalid negative tolerance keeps the check's rule (a repeated sample counts nothing); and with the check
+    off the safe state's clock moves forward only."""
+    py, c, samples = pair
+    limit = py.fault_reaction.fault_samples
+    off = {"timing_tolerance": None}
+    assert _agree(py, c, samples, [(0, "ok", off), (1e9, "nan_wrench", None)])[-1] == "INPUT_NONFINITE"
+    assert py.fault_state[-3] == 1
+    # a period too long for the stop (stop_time 0.04 s under two of 0.05 s): refused, counted once
+    statuses = _agree(py, c, samples, [(0, "ok", None), (4, "ok", {"sample_time": 0.05})])
+    assert statuses[-1] == "PARAMETER_INVALID" and py.fault_state[-3] == 1
+    statuses = _agree(py, c, samples, [(0, "ok", None), *[(0, "ok", {"timing_tolerance": -0.5})] * (limit + 1)])
+    assert set(statuses[1:]) == {"PARAMETER_INVALID"} and py.fault_state[-3] == 0
+    script = [(0, "ok", off), *[(k, "nan_wrench", None) for k in range(1, limit + 1)], (-5, "ok", None),
+              (limit + 1, "ok", {"timing_tolerance": 0.25}), (limit + 1, "ok", None), (limit + 2, "ok", None)]
+    assert _agree(py, c, samples, script)[limit:] == ["SAFE_STOP"] * (len(script) - limit)
+
+
+def test_a_tolerance_of_minus_one_is_refused_in_python(pair):
+    """-1 is the standalone C's "no timing check"; a Controller's is None: a -1 set on it refuses the next
+    sample (nothing changed), where it was taken as a tolerance that made every sample early."""
+    py, _, samples = pair
+    py.reset()
+    py(*samples[0])
+    kept = py.timing_tolerance
+    try:
+        py.timing_tolerance = -1.0
+        with pytest.raises(hybrid.ParameterError, match="timing_tolerance"):
+            py(*samples[1])
+    finally:
+        py.timing_tolerance = kept
+    assert np.isfinite(py(*samples[1])).all()
+
+
 def test_a_bad_fault_reaction_is_refused():
     for bad in ({"fault_samples": 0}, {"fault_samples": 2.5}, {"stop_time": 0.0}, {"unload_time": -1.0},
                 {"stop_time": float("nan")}, {"fault_samples": True}):

@@ -206,8 +206,8 @@ class Limits(_Group):
         :class:`~hybrid.SingularConfigurationError` (default 1e-3).
     fault_reaction : FaultReaction or None
         After its ``fault_samples`` consecutive faulted samples (refused, late or early; a dropout of
-        ``k`` samples followed by a late one counts ``k + 1``, and any faulted sample at least the sample
-        periods since the last one served) every sample raises
+        ``k`` samples followed by a late one counts ``k + 1``; with the timing check on, a faulted sample
+        counts at least the sample periods since the last one served) every sample raises
         :class:`~hybrid.SafeStopError` until a reset, carrying the safe state's torque: the arm stopped
         and held by its model, then the torque released. None: :class:`~hybrid.FaultReaction`'s
         defaults (5 samples, a 50 ms stop, 0.2 s of release). Its ``stop_time`` must be at least two

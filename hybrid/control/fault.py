@@ -209,11 +209,11 @@ def counted(count: float, periods: float, limit: float) -> float:
 
 def sample_periods(t, clock: float | None, T: float) -> float:
     """The sample periods ``T`` from the last sample served at ``clock`` to ``t`` (0 without a clock, a
-    finite ``t`` or a valid ``T``)."""
+    finite ``t`` or a valid ``T``; the caller gives 0 with the timing check off)."""
     t, T = finite_time(t), finite_time(T)
     if clock is None or t is None or T is None or T <= 0:
         return 0.0
-    return (t - clock) / T
+    return (t - float(clock)) / T  # Python floats: a difference past the largest double is inf, not a warning
 
 
 def finite_time(t) -> float | None:

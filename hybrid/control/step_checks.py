@@ -151,7 +151,9 @@ class CheckedParameters:
         if sampled is not None:
             return "sample_time", T, sampled
         tolerance = self.timing_tolerance
-        settings = {"timing_tolerance": -1.0 if tolerance is None else _number(tolerance),
+        # None turns the check off (the C's -1); a -1 given is a tolerance out of range here, refused
+        given = _number(tolerance) if tolerance is not None else None
+        settings = {"timing_tolerance": -1.0 if tolerance is None else None if given == -1.0 else given,
                     "singular_tol": _number(self.singular_tol)}
         for name, check in SETTING_CHECKS.items():
             if settings[name] is None or not CHECKS[check].valid(settings[name], T):

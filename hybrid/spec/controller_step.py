@@ -74,7 +74,7 @@ FAULT = ("fault_samples", "stop_time", "unload_time")
 #: what each of the fault reaction's numbers means (the standalone header documents its fields with these)
 FAULT_DOCS = {
     "fault_samples": "consecutive faulted samples (refused, late or early; one after a gap counts the sample "
-                     "periods the gap spans) that enter the safe state [1]",
+                     "periods the gap spans, the timing checked) that enter the safe state [1]",
     "stop_time": "the safe state's time constant: the joints stop and hold, critically damped [s]; at least two "
                  "sample times",
     "unload_time": "the safe state releases the torque the arm had at the fault over this time [s]; 0: at once",
