@@ -384,9 +384,8 @@ class Controller(SampleReferences, StepBinding, GroupedSettings, CheckedParamete
             (:mod:`hybrid.control.fault`).
         """
         # with the timing check off the law serves every sample as one sample period, whatever its time
-        checked = self.timing_tolerance is not None
-        passed = not checked or time_passed(t, self._clock)
-        periods = sample_periods(t, self._clock, self.sample_time) if checked else 0.0
+        checked, clock = self.timing_tolerance is not None, self._clock  # (the clock before a late sample moves it)
+        passed = not checked or time_passed(t, clock)
         if self._fault.stopped:
             raise self._safe_sample(t, q, qdot, passed, "the safe state holds until reset()")
         try:
@@ -399,8 +398,9 @@ class Controller(SampleReferences, StepBinding, GroupedSettings, CheckedParamete
                 self._fault.served(q, on_time=False)
             if not hasattr(exc, "torque"):
                 exc.torque = self._last[:-1] * self._last[-1]
-            if isinstance(exc, ParameterError):  # the sample time is not to be trusted: the C's (any field refused)
-                periods = 0.0
+            # a gap counts its periods where the timing is checked and the sample time trusted (no setting refused)
+            trusted = checked and not isinstance(exc, ParameterError)
+            periods = sample_periods(t, clock, self.sample_time) if trusted else 0.0
             if self._fault.faulted(passed, self.fault_reaction, self._last[:-1] * self._last[-1], q, periods):
                 raise self._safe_sample(t, q, qdot, passed, str(exc).partition("\n")[0]) from exc
             raise

@@ -29,7 +29,7 @@ from hybrid.errors import HybridError
 from hybrid.models.base_parameters import BaseParameters, base_parameters
 from hybrid.models.consistent_parameters import consistent_parameters, link_scales, link_sizes
 from hybrid.models.log_signals import LogSignals, log_signals
-from hybrid.models.regressor import LINK_PARAMETERS, linear_parameters, regressor, with_linear_parameters
+from hybrid.models.regressor import coulomb_columns, linear_parameters, regressor, with_linear_parameters
 from hybrid.models.robot import Robot, as_robot
 from hybrid.validate import checked_keywords, listed, listed_in_full
 
@@ -236,8 +236,7 @@ def joint_factors(robot: Robot, base: BaseParameters, signals: LogSignals) -> np
         part = slice(start, start + CHUNK)
         Y, _ = regressor(robot, signals.q[part], signals.qd[part], signals.qdd[part])
         if signals.sign is not None:  # the Coulomb columns filtered as the torques were (log_signals)
-            joints = np.arange(n)
-            Y[:, joints, LINK_PARAMETERS * n + n + joints] = signals.sign[part]
+            Y[:, np.arange(n), coulomb_columns(n)] = signals.sign[part]
         rows = np.concatenate([base.regressor(Y).transpose(1, 0, 2), signals.tau[part].T[..., None]], axis=2)
         # one joint at a time: NumPy's batched QR is many times slower than its calls one by one
         factors = [np.linalg.qr(np.vstack([f, r]), mode="r") for f, r in zip(factors, rows)]

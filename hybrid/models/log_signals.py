@@ -308,13 +308,13 @@ def log_signals(robot_joints, t, q, tau, *, qd=None, qdd=None, cutoff_hz=None, s
     rows = np.arange(edge, N - edge, step)
     picked = {name: np.ascontiguousarray(a[rows]) for name, a in arrays.items()}
     # differentiated at the rows kept alone (the edge covers the stencil): memory of the samples kept, not the log's
+    # the Coulomb friction's sign filtered needs q' at every sample: the rows' are then taken from it
+    speed = _speed(arrays, h) if sos is not None and coulomb_speed is not None else None
     if "qd" not in picked:
-        picked["qd"] = derivative(arrays["q"], h, 1, rows)
+        picked["qd"] = derivative(arrays["q"], h, 1, rows) if speed is None else speed[rows]
     if "qdd" not in picked:
         picked["qdd"] = derivative(arrays["qd"], h, 1, rows) if qd is not None else derivative(arrays["q"], h, 2, rows)
-    sign = None
-    if sos is not None and coulomb_speed is not None:
-        sign = _filtered(signal, sos, np.tanh(_speed(arrays, h) / np.asarray(coulomb_speed, float)))[rows]
+    sign = None if speed is None else _filtered(signal, sos, np.tanh(speed / np.asarray(coulomb_speed, float)))[rows]
     return LogSignals(**picked, rows=rows, sample_time=h, cutoff_hz=fc, edge=edge, step=step,
                       log_samples=N, sign=sign)
 

@@ -125,6 +125,12 @@ def regressor(robot: Robot, q, qd, qdd) -> tuple[np.ndarray, tuple[str, ...]]:
     return call(q, qd, qdd, np.array(robot.gravity), speeds)["Y"], linear_parameter_names(robot.chain)
 
 
+def coulomb_columns(n: int) -> np.ndarray:
+    """The columns of an ``n``-joint arm's :func:`regressor` that hold its joints' Coulomb friction's smooth
+    sign ``tanh(q'_i / v_s,i)`` (after the links' parameters and the viscosities)."""
+    return LINK_PARAMETERS * n + n + np.arange(n)
+
+
 @checked_keywords
 def with_linear_parameters(robot: Robot, pi) -> Robot:
     """``robot`` with the parameters ``pi`` of :func:`linear_parameters`: its inverse.

@@ -318,20 +318,18 @@ def _phase_margin(m: dict, T: float) -> float:
 
 def _crossing_near(response, w: float, nyquist: float) -> float | None:
     """The frequency nearest ``w`` (within 30 %, below ``nyquist``) where ``|response|`` crosses 1, to
-    rounding; None when there is none."""
-    def above(x: float) -> bool:
-        return abs(response(x)) > 1.0
+    rounding (Brent's method on the bracket found); None when there is none."""
+    from scipy.optimize import brentq
 
-    here = above(w)
+    def excess(x: float) -> float:
+        return abs(response(x)) - 1.0
+
+    here = excess(w) > 0
     for k in range(1, 15):  # outward in steps of 2 %, both ways
         for other in (w * 1.02 ** k, w / 1.02 ** k):
-            if other < nyquist and above(other) != here:
+            if other < nyquist and (excess(other) > 0) != here:
                 lo, hi = sorted((w, other))
-                low_above = above(lo)
-                for _ in range(60):
-                    mid = 0.5 * (lo + hi)
-                    lo, hi = (mid, hi) if above(mid) == low_above else (lo, mid)
-                return lo
+                return float(brentq(excess, lo, hi, xtol=1e-12 * hi))
     return None
 
 

@@ -2,7 +2,7 @@
 
 A loop keeps a gain margin of ``m`` dB when it stays stable with its gain raised or lowered by any factor up
 to ``k_m = 10^(m/20)``; :func:`hybrid.stability` finds the factors at which it stops (its
-:func:`~hybrid.stability.analysis.gain_margin`, stepping by 1.25 then bisecting, each way). Here the same
+:func:`~hybrid.stability.analysis.gain_margin`, stepping by 1.25 then narrowing, each way). Here the same
 loops, each task axis alone, are judged at the steps that search takes below ``k_m`` and at ``k_m`` itself
 (and at their inverses), and with
 their reading late by each whole sample up to the delay margin asked; the whole closed loop at the gains
