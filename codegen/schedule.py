@@ -45,7 +45,7 @@ _READ = re.compile(r"arg\[\d+\]\[\d+\]|-?[0-9.]+(?:e[-+]?\d+)?")
 _OPERAND = re.compile(r"@(\d+)@")
 #: a call to a sine, a cosine or a tanh, and the operations its latency is counted as
 _CALL, _CALL_COST = re.compile(r"\b(?:hybrid_sin|hybrid_cos|tanh)\("), 20
-_DECLARATION = re.compile(r"^  casadi_real a\d+.*;$")
+_DECLARATION = re.compile(r"^  casadi_real a\d+(?:, a\d+)*;$")
 #: the orders a kernel's statements may be printed in (module docstring)
 ORDERS = ("printed", "fewest_alive", "longest_chain")
 
@@ -53,7 +53,7 @@ ORDERS = ("printed", "fewest_alive", "longest_chain")
 def reorder(function: str, order: str = "fewest_alive") -> str:
     """``function`` (one CasADi function's C) with its statements in ``order`` (:data:`ORDERS`, the module's
     docstring); unchanged for ``"printed"`` or where it holds any line but declarations of locals, the
-    statements and what CasADi puts before and after them."""
+    statements and what CasADi puts before and after them (reading no local)."""
     if order not in ORDERS:
         raise ValueError(f"order {order!r}: not one of {', '.join(ORDERS)}")
     if order == "printed":
@@ -64,6 +64,10 @@ def reorder(function: str, order: str = "fewest_alive") -> str:
         return function
     last = max(i for i, line in enumerate(lines) if _STATEMENT.match(line))
     if any(not _STATEMENT.match(line) for line in lines[first:last + 1]):
+        return function
+    # a line around the statements that reads a local (CasADi's guarded write ``if (res[0]!=0) res[0][0]=a0;``)
+    # would read a value renamed or dropped
+    if any(_LOCAL.search(line) and not _DECLARATION.match(line) for line in lines[:first] + lines[last + 1:]):
         return function
     nodes = _selects(_parse(lines[first:last + 1]))
     chosen = _schedule(nodes, chains_first=order == "longest_chain")

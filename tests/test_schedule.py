@@ -60,6 +60,19 @@ def test_an_unfamiliar_statement_leaves_the_function_as_it_is():
     assert schedule.reorder(text) == text
 
 
+@pytest.mark.parametrize("order", schedule.ORDERS[1:])
+def test_a_line_after_the_statements_that_reads_a_local_leaves_the_function_as_it_is(order):
+    # CasADi's own guarded writes, as the backend's rewrite would leave them were CasADi to print them otherwise
+    x = ca.SX.sym("x", 2)
+    generator = ca.CodeGenerator("t.c", {"with_header": False})
+    generator.add(ca.Function("f", [x], [ca.sin(x[0]) * x[1]]))
+    dump = generator.dump()
+    text = dump[dump.index("static int casadi_f0"):]
+    text = text[:text.index("\n}\n") + 3]
+    assert "if (res[0]!=0) res[0][0]=a0;" in text
+    assert schedule.reorder(text, order) == text
+
+
 def test_the_orders_differ_and_an_unknown_one_is_refused():
     bodies = {order: statements(kernel_sources([kernel(order)], "p")[0]) for order in schedule.ORDERS}
     assert len({tuple(b) for b in bodies.values()}) == len(schedule.ORDERS)
